@@ -1,0 +1,179 @@
+//! Elastohydrodynamic film: Moes' central film thickness for a line contact (eq. 12),
+//! and its load-sharing form (eqs. 13–14), where the fluid carries `P_T/γ1`.
+//!
+//! Everything is evaluated in logarithms: at ω → 0 the dimensionless speed U_Σ spans
+//! dozens of decades, and γ1 goes to infinity.
+//!
+//! Dimensionless groups (eq. 12): `W = P_T/(E'R'B)`, `U_Σ = η0 u/(E'R')`, `G = α E'`,
+//! `M = W U_Σ^{-1/2}`, `L = G U_Σ^{1/4}`, `H_C = (h_c/R') U_Σ^{-1/2}`. Per MODEL_NOTES,
+//! `u` is Moes' sum velocity, which for a fixed bush equals the sliding speed |ω|R.
+
+/// Numerically stable ln(eᵃ + eᵇ), exact for infinite arguments.
+pub fn log_add_exp(a: f64, b: f64) -> f64 {
+    if a == b {
+        return a + std::f64::consts::LN_2;
+    }
+    let (hi, lo) = if a > b { (a, b) } else { (b, a) };
+    if lo == f64::NEG_INFINITY || hi == f64::INFINITY {
+        return hi;
+    }
+    hi + (lo - hi).exp().ln_1p()
+}
+
+const LN_3: f64 = 1.098_612_288_668_109_8; // ln 3
+const C_EI: f64 = 2.621;
+const C_RP: f64 = 1.287;
+const C_EP: f64 = 1.311;
+
+/// Moes' exponent s (eq. 12) from ln H_EI − ln H_RI.
+fn moes_s(ln_hei_over_hri: f64) -> f64 {
+    (7.0 + 8.0 * (-2.0 * ln_hei_over_hri.exp()).exp()) / 5.0
+}
+
+/// Unscaled Moes central film, eq. 12, in logarithms: returns (ln H_C, s) for (ln M, ln L).
+pub fn ln_moes(ln_m: f64, ln_l: f64) -> (f64, f64) {
+    let ln_hri = LN_3 - ln_m;
+    let ln_hei = C_EI.ln() - ln_m / 5.0;
+    let ln_hrp = C_RP.ln() + 2.0 / 3.0 * ln_l;
+    let ln_hep = C_EP.ln() - ln_m / 8.0 + 0.75 * ln_l;
+    let s = moes_s(ln_hei - ln_hri);
+    // ln(H_RI^{7/3} + H_EI^{7/3}) and ln(H_RP^{-7/2} + H_EP^{-7/2})
+    let a = log_add_exp(7.0 / 3.0 * ln_hri, 7.0 / 3.0 * ln_hei);
+    let b = log_add_exp(-3.5 * ln_hrp, -3.5 * ln_hep);
+    let ln_h = log_add_exp(3.0 * s / 7.0 * a, -2.0 * s / 7.0 * b) / s;
+    (ln_h, s)
+}
+
+/// Unscaled Moes central film H_C (eq. 12) and its exponent s.
+pub fn moes(m: f64, l: f64) -> (f64, f64) {
+    let (ln_h, s) = ln_moes(m.ln(), l.ln());
+    (ln_h.exp(), s)
+}
+
+/// Eq. 13 as a function of γ1, by the substitution the text states:
+/// eq. 12 with `E' → E'/γ1`, `P_T → P_T/γ1`, which maps `U_Σ → γ1 U_Σ`, `W → W`,
+/// `G → G/γ1`, hence `M → M γ1^{-1/2}`, `L → L γ1^{-3/4}`, and
+/// `(h_c/R') U_Σ^{-1/2} = γ1^{1/2} H_C(M γ1^{-1/2}, L γ1^{-3/4})`.
+///
+/// Returns ln[(h_c/R') U_Σ^{-1/2}] for `ln_x1 = ln(1/γ1)`.
+pub fn ln_scaled_moes(ln_m: f64, ln_l: f64, ln_x1: f64) -> (f64, f64) {
+    let (ln_h, s) = ln_moes(ln_m + 0.5 * ln_x1, ln_l + 0.75 * ln_x1);
+    (ln_h - 0.5 * ln_x1, s)
+}
+
+/// Eq. 13 in its closed form with the corrected exponents (errata 2 and 3):
+/// `[γ1^{s/2}(H_RI^{7/3} + γ1^{-14/15} H_EI^{7/3})^{3s/7} + γ1^{-s/2}(H_RP^{-7/2} + H_EP^{-7/2})^{-2s/7}]^{1/s} γ1^{1/2}`
+/// with `s = (7 + 8 exp(−2 (H_EI/H_RI) γ1^{-2/5}))/5` (eq. 14), H's of the unscaled M, L.
+/// `hei_exp` and `s_exp` are the exponents on γ1 (−14/15 and −2/5 corrected;
+/// the paper prints −14/5 and −7/5), so the tests can show the printed ones are wrong.
+pub fn eq13_closed_form(m: f64, l: f64, gamma1: f64, hei_exp: f64, s_exp: f64) -> f64 {
+    let hri = 3.0 / m;
+    let hei = C_EI * m.powf(-0.2);
+    let hrp = C_RP * l.powf(2.0 / 3.0);
+    let hep = C_EP * m.powf(-0.125) * l.powf(0.75);
+    let s = (7.0 + 8.0 * (-2.0 * hei / hri * gamma1.powf(s_exp)).exp()) / 5.0;
+    let t1 = gamma1.powf(s / 2.0) * (hri.powf(7.0 / 3.0) + gamma1.powf(hei_exp) * hei.powf(7.0 / 3.0)).powf(3.0 * s / 7.0);
+    let t2 = gamma1.powf(-s / 2.0) * (hrp.powf(-3.5) + hep.powf(-3.5)).powf(-2.0 * s / 7.0);
+    (t1 + t2).powf(1.0 / s) * gamma1.sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// MODEL_NOTES check values of eq. 12: (M, L, H, s).
+    const CHECK: [(f64, f64, f64, f64); 4] = [
+        (1.0, 1.0, 4.05598902635954, 1.678780734472748),
+        (10.0, 10.0, 5.464316870977172, 1.4000260648115448),
+        (100.0, 10.0, 4.296808913149384, 1.4),
+        (1000.0, 5.0, 2.110980706283332, 1.4),
+    ];
+
+    #[test]
+    fn moes_matches_model_notes() {
+        for (m, l, h, s) in CHECK {
+            let (gh, gs) = moes(m, l);
+            assert!(((gh - h) / h).abs() < 1e-13, "M={m} L={l}: {gh} vs {h}");
+            assert!((gs - s).abs() < 1e-13, "s at M={m}: {gs} vs {s}");
+        }
+    }
+
+    #[test]
+    fn moes_asymptotes() {
+        // Each regime's asymptote dominates far inside it.
+        // Rigid-isoviscous: M → 0, L → 0: H → H_RI = 3/M.
+        let (h, _) = moes(1e-6, 1e-6);
+        assert!((h / 3e6 - 1.0).abs() < 1e-6);
+        // Elastic-isoviscous: M → ∞, L → 0: H → H_EI = 2.621 M^{-1/5}.
+        let m: f64 = 1e8;
+        let (h, _) = moes(m, 1e-12);
+        assert!((h / (2.621 * m.powf(-0.2)) - 1.0).abs() < 1e-3, "{h}");
+        // Elastic-piezoviscous: M, L large: H → H_EP = 1.311 M^{-1/8} L^{3/4}.
+        let (m, l): (f64, f64) = (1e12, 1e6);
+        let (h, _) = moes(m, l);
+        assert!((h / (1.311 * m.powf(-0.125) * l.powf(0.75)) - 1.0).abs() < 1e-3, "{h}");
+    }
+
+    #[test]
+    fn substitution_identity_holds_for_corrected_exponents() {
+        // Erratum 2 and 3: eq. 13 must equal eq. 12 evaluated directly with E'/γ1 and
+        // P_T/γ1 times γ1^{1/2}. Evaluate eq. 12 *from the dimensional quantities* with
+        // E' and P replaced, independent of the algebra in ln_scaled_moes.
+        let (e, r, b, eta_u, alpha, p) = (165.9e9, 31.388, 0.0594, 12.45e-3 * 0.5, 16.9e-9, 20e3);
+        let groups = |e: f64, p: f64| {
+            let w = p / (e * r * b);
+            let u = eta_u / (e * r);
+            let g = alpha * e;
+            (w * u.powf(-0.5), g * u.powf(0.25), u)
+        };
+        let (m, l, u) = groups(e, p);
+        for gamma1 in [1.0, 1.5, 3.0, 10.0, 1e3, 1e6] {
+            let (ms, ls, us) = groups(e / gamma1, p / gamma1);
+            let (h_sub, _) = moes(ms, ls);
+            // h_c/R' from the substituted problem, re-expressed in the unscaled U_Σ, times γ1^{1/2} as printed:
+            // (h_c/R') U^{-1/2} = H(ms, ls) (us/u)^{1/2} = γ1^{1/2} H(ms, ls).
+            let direct = h_sub * (us / u).sqrt();
+            assert!((direct / (gamma1.sqrt() * h_sub) - 1.0).abs() < 1e-12);
+            let closed = eq13_closed_form(m, l, gamma1, -14.0 / 15.0, -0.4);
+            assert!((closed / direct - 1.0).abs() < 1e-12, "γ1={gamma1}: {closed} vs {direct}");
+            let (ln_code, _) = ln_scaled_moes(m.ln(), l.ln(), -gamma1.ln());
+            assert!((ln_code.exp() / direct - 1.0).abs() < 1e-12, "γ1={gamma1}");
+            if gamma1 > 1.0 && gamma1 < 1e5 {
+                // (At γ1 ≳ 1e5 the rigid term dominates both forms and they coincide.)
+                // The printed exponents (−14/5 and −7/5) fail the same test.
+                let printed = eq13_closed_form(m, l, gamma1, -14.0 / 5.0, -1.4);
+                assert!((printed / direct - 1.0).abs() > 1e-3, "γ1={gamma1}: printed form agrees?");
+            }
+        }
+    }
+
+    #[test]
+    fn corrected_film_is_monotone_in_gamma1_printed_is_not() {
+        // h_c must grow with γ1 (the fluid carries less load → thicker film).
+        // Over a range of conditions where eq. 12's elastic terms matter.
+        let (m, l) = (30.0, 8.0);
+        let mut prev = 0.0;
+        let mut printed_monotone = true;
+        let mut prev_p = 0.0;
+        for i in 0..400 {
+            let g = 1.0 + i as f64 * 0.05;
+            let v = eq13_closed_form(m, l, g, -14.0 / 15.0, -0.4);
+            assert!(v > prev, "corrected form not increasing at γ1={g}");
+            prev = v;
+            let vp = eq13_closed_form(m, l, g, -14.0 / 5.0, -1.4);
+            if vp <= prev_p {
+                printed_monotone = false;
+            }
+            prev_p = vp;
+        }
+        assert!(!printed_monotone, "printed exponents unexpectedly monotone");
+    }
+
+    #[test]
+    fn log_add_exp_edge_cases() {
+        assert_eq!(log_add_exp(f64::NEG_INFINITY, 1.0), 1.0);
+        assert_eq!(log_add_exp(f64::INFINITY, f64::INFINITY), f64::INFINITY);
+        assert!((log_add_exp(0.0, 0.0) - 2f64.ln()).abs() < 1e-15);
+        assert!((log_add_exp(1000.0, 999.0) - (1000.0 + (1.0 + (-1.0f64).exp()).ln())).abs() < 1e-12);
+    }
+}

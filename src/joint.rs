@@ -1,0 +1,212 @@
+//! The pin joint at one operating point: friction coefficient (eq. 10), torque (eq. 11),
+//! Sommerfeld number (eq. 20), λ (eq. 21) and everything the load-sharing solve gives.
+
+use crate::asperity::AsperityGroups;
+use crate::contact::{effective_modulus, hertz, reduced_radius};
+use crate::mixed::{solve, FilmGroups};
+use crate::params::{ParamError, Params};
+use crate::viscosity::{limiting_shear_stress, roelands};
+use serde::Serialize;
+use std::f64::consts::PI;
+use thiserror::Error;
+
+/// Share of the load below which a carrier counts as absent when naming the regime.
+pub const REGIME_SHARE: f64 = 0.01;
+
+/// Lubrication regime, named from the load shares.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Regime {
+    /// The fluid carries less than [`REGIME_SHARE`] of the load.
+    Boundary,
+    /// Both fluid and asperities carry at least [`REGIME_SHARE`].
+    Mixed,
+    /// The asperities carry less than [`REGIME_SHARE`].
+    FullFilm,
+}
+
+impl Regime {
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Regime::Boundary => "boundary",
+            Regime::Mixed => "mixed",
+            Regime::FullFilm => "full-film",
+        }
+    }
+    fn from_shares(fluid: f64, asperity: f64) -> Self {
+        if fluid < REGIME_SHARE {
+            Regime::Boundary
+        } else if asperity < REGIME_SHARE {
+            Regime::FullFilm
+        } else {
+            Regime::Mixed
+        }
+    }
+}
+
+/// An operating point the model cannot take.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ModelError {
+    #[error("load = {0} N is invalid: the load must be a finite number > 0 N")]
+    Load(f64),
+    #[error("angular velocity = {0} rad/s is invalid: it must be a finite number")]
+    Speed(f64),
+}
+
+/// Every quantity of the model at one operating point (SI units).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct OperatingPoint {
+    /// P_T, N.
+    pub load: f64,
+    /// ω as given, rad/s (the model depends on |ω|).
+    pub angular_velocity: f64,
+    /// u = |ω| R, sliding speed = Moes' sum velocity (bush fixed), m/s.
+    pub sliding_speed: f64,
+    /// μ, eq. 10.
+    pub friction_coefficient: f64,
+    /// T = μ R P_T, eq. 11: magnitude of the torque to articulate the joint, N·m.
+    pub torque: f64,
+    /// h_c, central film thickness, m.
+    pub film_thickness: f64,
+    /// λ = h_c/√(σ² + σ_b²), eq. 21 with the central film (MODEL_NOTES).
+    pub lambda_ratio: f64,
+    /// 1/γ1.
+    pub fluid_load_fraction: f64,
+    /// 1/γ2.
+    pub asperity_load_fraction: f64,
+    /// p_m, Hertz mean pressure, Pa (eq. 6).
+    pub mean_pressure: f64,
+    /// p0, Hertz peak pressure, Pa (eq. 6).
+    pub peak_pressure: f64,
+    /// a, Hertz half-width, m (eq. 6).
+    pub contact_half_width: f64,
+    /// S, eq. 20.
+    pub sommerfeld_number: f64,
+    /// Roelands viscosity at p_m (eq. 5), Pa·s.
+    pub contact_viscosity: f64,
+    /// Q_H/P_T: the fluid (Bair–Winer, eq. 3) part of μ.
+    pub fluid_friction_coefficient: f64,
+    /// μ_c/γ2: the asperity (eq. 8) part of μ.
+    pub asperity_friction_coefficient: f64,
+    /// ln(x1/x2) of the load-sharing solve (−∞ at rest): a warm start for the next call.
+    pub logit: f64,
+    pub regime: Regime,
+}
+
+impl OperatingPoint {
+    /// The friction torque on the pin with its sign: opposite to ω (eq. 11), zero at ω = 0.
+    pub fn signed_torque(&self) -> f64 {
+        if self.angular_velocity > 0.0 {
+            -self.torque
+        } else if self.angular_velocity < 0.0 {
+            self.torque
+        } else {
+            0.0
+        }
+    }
+}
+
+/// A validated parameter set with the load- and speed-independent groups precomputed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Joint {
+    params: Params,
+    r_red: f64,
+    e_eff: f64,
+    roughness: f64,
+}
+
+impl Joint {
+    /// Validate `params` and precompute R', E' and √(σ² + σ_b²).
+    pub fn new(params: &Params) -> Result<Self, ParamError> {
+        params.validate()?;
+        let s = &params.surface;
+        let roughness = s.pin_rms_roughness.hypot(s.bush_rms_roughness);
+        if roughness <= 0.0 {
+            return Err(ParamError::OutOfRange {
+                name: "surface.pin_rms_roughness".into(),
+                value: s.pin_rms_roughness,
+                unit: "m",
+                range: "> 0 when surface.bush_rms_roughness is 0 (lambda = h/sqrt(sigma^2 + sigma_b^2))".into(),
+            });
+        }
+        crate::gw::warm_up();
+        Ok(Self { params: *params, r_red: reduced_radius(&params.geometry), e_eff: effective_modulus(&params.materials), roughness })
+    }
+
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+    /// R' (m).
+    pub fn reduced_radius(&self) -> f64 {
+        self.r_red
+    }
+    /// E' (Pa).
+    pub fn effective_modulus(&self) -> f64 {
+        self.e_eff
+    }
+    /// The boundary-friction torque μ_c R P at `load` (N): the ω → 0 limit of eq. 11.
+    pub fn boundary_torque(&self, load: f64) -> f64 {
+        self.params.friction.boundary_friction_coefficient * self.params.geometry.pin_radius * load
+    }
+
+    /// The operating point at `load` (N, > 0) and angular velocity `omega` (rad/s).
+    pub fn evaluate(&self, load: f64, omega: f64) -> Result<OperatingPoint, ModelError> {
+        self.evaluate_from(load, omega, None)
+    }
+
+    /// As [`Joint::evaluate`], starting the solve from `guess` (the `logit` of a nearby
+    /// point); the answer is the same to the solver tolerance, only cheaper.
+    pub fn evaluate_from(&self, load: f64, omega: f64, guess: Option<f64>) -> Result<OperatingPoint, ModelError> {
+        if !(load.is_finite() && load > 0.0) {
+            return Err(ModelError::Load(load));
+        }
+        if !omega.is_finite() {
+            return Err(ModelError::Speed(omega));
+        }
+        let p = &self.params;
+        let (g, lub) = (&p.geometry, &p.lubricant);
+        let hz = hertz(load, self.r_red, self.e_eff, g.bush_length);
+        let u = omega.abs() * g.pin_radius;
+        let asp = AsperityGroups::new(&p.surface, load, self.r_red, self.e_eff, g.bush_length);
+        let film = (u > 0.0).then(|| {
+            FilmGroups::new(u, self.r_red, self.e_eff, g.bush_length, load, lub.viscosity, lub.pressure_viscosity_coefficient)
+        });
+        let ls = solve(film.as_ref(), &asp, &p.surface, guess);
+
+        // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
+        let eta = roelands(lub, hz.mean_pressure);
+        let tau_l = limiting_shear_stress(lub, hz.mean_pressure);
+        let mu_fluid = tau_l / hz.mean_pressure * -(-eta * u / (tau_l * ls.film_thickness)).exp_m1();
+        // Eq. 8: Q_C = μ_c P_C = μ_c P_T/γ2.
+        let mu_asperity = p.friction.boundary_friction_coefficient * ls.asperity_fraction;
+        let mu = mu_fluid + mu_asperity;
+        // Eq. 20 with the projected-area pressure and the radial clearance.
+        let p_l = load / (2.0 * g.pin_radius * g.bush_length);
+        let sommerfeld = lub.viscosity * omega.abs() / (2.0 * PI * p_l) * (g.pin_radius / self.params.radial_clearance()).powi(2);
+        Ok(OperatingPoint {
+            load,
+            angular_velocity: omega,
+            sliding_speed: u,
+            friction_coefficient: mu,
+            torque: mu * g.pin_radius * load,
+            film_thickness: ls.film_thickness,
+            lambda_ratio: ls.film_thickness / self.roughness,
+            fluid_load_fraction: ls.fluid_fraction,
+            asperity_load_fraction: ls.asperity_fraction,
+            mean_pressure: hz.mean_pressure,
+            peak_pressure: hz.peak_pressure,
+            contact_half_width: hz.half_width,
+            sommerfeld_number: sommerfeld,
+            contact_viscosity: eta,
+            fluid_friction_coefficient: mu_fluid,
+            asperity_friction_coefficient: mu_asperity,
+            logit: ls.logit,
+            regime: Regime::from_shares(ls.fluid_fraction, ls.asperity_fraction),
+        })
+    }
+}
+
+/// One-shot convenience: validate `params` and evaluate one point.
+pub fn evaluate(params: &Params, load: f64, omega: f64) -> Result<OperatingPoint, Box<dyn std::error::Error + Send + Sync>> {
+    Ok(Joint::new(params)?.evaluate(load, omega)?)
+}

@@ -1,0 +1,29 @@
+//! # pinjoint
+//!
+//! Frictional torque of a grease-lubricated aircraft landing-gear pin joint, after
+//! the mixed-lubrication model of the paper (`shared/paper/pin-joint-paper.md`):
+//! Greenwood–Williamson asperity contact, Moes central film thickness scaled by
+//! the load-sharing factors γ1/γ2, Roelands viscosity and Bair–Winer limiting shear.
+//!
+//! The physics modules are pure (no I/O, no FMI):
+//! [`params`] → [`contact`], [`viscosity`], [`gw`], [`film`], [`asperity`]
+//! → [`mixed`] (the load-sharing solve) → [`joint`] (μ, torque, every output).
+//!
+//! ```
+//! use pinjoint::{Joint, Params};
+//! let joint = Joint::new(&Params::default()).unwrap();
+//! let op = joint.evaluate(20e3, 0.2).unwrap(); // 20 kN, 0.2 rad/s
+//! assert!(op.friction_coefficient <= 0.12 && op.friction_coefficient > 0.11);
+//! ```
+
+pub mod asperity;
+pub mod contact;
+pub mod film;
+pub mod gw;
+pub mod joint;
+pub mod mixed;
+pub mod params;
+pub mod viscosity;
+
+pub use joint::{Joint, ModelError, OperatingPoint, Regime};
+pub use params::{ParamError, Params};

@@ -1,0 +1,429 @@
+//! The model's parameter set: every value of the paper's Tables 1–3 plus the
+//! boundary friction coefficient μ_c = 0.12 (section 3.1), in SI units.
+//!
+//! [`PARAMS`] is the one table of parameters: name, unit, symbol, range and
+//! accessors. TOML validation, the FMU's parameter variables and the
+//! documentation are all generated from it.
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+/// Pin and bush geometry (Table 1).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Geometry {
+    /// R, outer radius of the pin (m).
+    pub pin_radius: f64,
+    /// R_b, inner radius of the bush (m). The radial clearance is R_b − R.
+    pub bush_radius: f64,
+    /// B, length of the bush (m).
+    pub bush_length: f64,
+}
+
+/// Elastic properties of pin and bush (Table 1).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Materials {
+    /// E (Pa).
+    pub pin_elastic_modulus: f64,
+    /// ν (-).
+    pub pin_poisson_ratio: f64,
+    /// E_b (Pa).
+    pub bush_elastic_modulus: f64,
+    /// ν_b (-).
+    pub bush_poisson_ratio: f64,
+}
+
+/// Combined surface topography (Table 2).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Surface {
+    /// n, asperity density (1/m²).
+    pub asperity_density: f64,
+    /// β, mean asperity summit radius (m).
+    pub asperity_radius: f64,
+    /// σ_s, standard deviation of the summit heights (m).
+    pub summit_height_std: f64,
+    /// σ, RMS roughness of the pin (m).
+    pub pin_rms_roughness: f64,
+    /// σ_b, RMS roughness of the bush (m).
+    pub bush_rms_roughness: f64,
+    /// d_d, distance between the summit and surface mean planes (m).
+    pub summit_mean_plane_offset: f64,
+}
+
+/// Lubricant (Table 3): Roelands viscosity (eq. 5), Bair–Winer limiting shear (eq. 4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Lubricant {
+    /// η0, viscosity at inlet temperature (Pa·s).
+    pub viscosity: f64,
+    /// η∞, Roelands constant (Pa·s).
+    pub roelands_viscosity_limit: f64,
+    /// c_p, Roelands pressure constant (Pa).
+    pub roelands_pressure_constant: f64,
+    /// Z, Roelands pressure–viscosity index (-).
+    pub roelands_index: f64,
+    /// α, pressure–viscosity coefficient (1/Pa).
+    pub pressure_viscosity_coefficient: f64,
+    /// τ_L0, limiting shear stress at ambient pressure (Pa).
+    pub limiting_shear_stress: f64,
+    /// β0, slope of the limiting shear stress against pressure (-).
+    pub limiting_shear_stress_slope: f64,
+}
+
+/// Boundary friction (section 3.1).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Friction {
+    /// μ_c, friction coefficient of the asperity contacts (-).
+    pub boundary_friction_coefficient: f64,
+}
+
+/// The full parameter set. `Params::default()` is the paper's rig.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Params {
+    pub geometry: Geometry,
+    pub materials: Materials,
+    pub surface: Surface,
+    pub lubricant: Lubricant,
+    pub friction: Friction,
+}
+
+impl Default for Geometry {
+    fn default() -> Self {
+        Self { pin_radius: 28e-3, bush_radius: 28.025e-3, bush_length: 59.4e-3 }
+    }
+}
+impl Default for Materials {
+    fn default() -> Self {
+        Self {
+            pin_elastic_modulus: 205e9,
+            pin_poisson_ratio: 0.28,
+            bush_elastic_modulus: 117e9,
+            bush_poisson_ratio: 0.34,
+        }
+    }
+}
+impl Default for Surface {
+    fn default() -> Self {
+        Self {
+            asperity_density: 7.15e9,
+            asperity_radius: 3.4e-6,
+            summit_height_std: 1.09e-6,
+            pin_rms_roughness: 0.83e-6,
+            bush_rms_roughness: 1.35e-6,
+            summit_mean_plane_offset: 1.25e-6,
+        }
+    }
+}
+impl Default for Lubricant {
+    fn default() -> Self {
+        Self {
+            viscosity: 12.45e-3,
+            roelands_viscosity_limit: 6.31e-5,
+            roelands_pressure_constant: 1.96e8,
+            roelands_index: 0.63,
+            pressure_viscosity_coefficient: 16.9e-9,
+            limiting_shear_stress: 2.28e6,
+            limiting_shear_stress_slope: 0.047,
+        }
+    }
+}
+impl Default for Friction {
+    fn default() -> Self {
+        Self { boundary_friction_coefficient: 0.12 }
+    }
+}
+
+/// Admissible range of one parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Range {
+    /// value > 0
+    Positive,
+    /// value ≥ 0
+    NonNegative,
+    /// lo ≤ value < hi
+    HalfOpen(f64, f64),
+    /// lo < value ≤ hi
+    OpenClosed(f64, f64),
+}
+
+impl Range {
+    pub fn contains(&self, v: f64) -> bool {
+        match *self {
+            Range::Positive => v > 0.0,
+            Range::NonNegative => v >= 0.0,
+            Range::HalfOpen(lo, hi) => v >= lo && v < hi,
+            Range::OpenClosed(lo, hi) => v > lo && v <= hi,
+        }
+    }
+    /// Human-readable form, e.g. "> 0" or "in [0, 0.5)".
+    pub fn describe(&self) -> String {
+        match *self {
+            Range::Positive => "> 0".into(),
+            Range::NonNegative => ">= 0".into(),
+            Range::HalfOpen(lo, hi) => format!("in [{lo}, {hi})"),
+            Range::OpenClosed(lo, hi) => format!("in ({lo}, {hi}]"),
+        }
+    }
+    /// (min, max) for an FMU variable's attributes, where the bound is inclusive-or-open.
+    pub fn bounds(&self) -> (Option<f64>, Option<f64>) {
+        match *self {
+            Range::Positive | Range::NonNegative => (Some(0.0), None),
+            Range::HalfOpen(lo, hi) | Range::OpenClosed(lo, hi) => (Some(lo), Some(hi)),
+        }
+    }
+}
+
+/// One row of the parameter table.
+#[derive(Clone, Copy)]
+pub struct ParamSpec {
+    pub section: &'static str,
+    pub key: &'static str,
+    /// The paper's symbol.
+    pub symbol: &'static str,
+    /// SI unit as written in messages and the modelDescription ("" for dimensionless).
+    pub unit: &'static str,
+    pub description: &'static str,
+    /// Where the default comes from in the paper.
+    pub source: &'static str,
+    pub range: Range,
+    pub get: fn(&Params) -> f64,
+    pub set: fn(&mut Params, f64),
+}
+
+impl ParamSpec {
+    /// `section.key`, the name in messages and in the FMU.
+    pub fn name(&self) -> String {
+        format!("{}.{}", self.section, self.key)
+    }
+    pub fn default_value(&self) -> f64 {
+        (self.get)(&Params::default())
+    }
+}
+
+macro_rules! spec {
+    ($sec:ident . $key:ident, $sym:expr, $unit:expr, $range:expr, $src:expr, $desc:expr) => {
+        ParamSpec {
+            section: stringify!($sec),
+            key: stringify!($key),
+            symbol: $sym,
+            unit: $unit,
+            description: $desc,
+            source: $src,
+            range: $range,
+            get: |p: &Params| p.$sec.$key,
+            set: |p: &mut Params, v: f64| p.$sec.$key = v,
+        }
+    };
+}
+
+/// Every parameter, in file order.
+pub static PARAMS: [ParamSpec; 21] = [
+    spec!(geometry.pin_radius, "R", "m", Range::Positive, "Table 1", "Outer radius of the pin"),
+    spec!(geometry.bush_radius, "R_b", "m", Range::Positive, "Table 1", "Inner radius of the bush (must exceed the pin radius; the radial clearance is R_b - R)"),
+    spec!(geometry.bush_length, "B", "m", Range::Positive, "Table 1", "Length of the bush (contact length)"),
+    spec!(materials.pin_elastic_modulus, "E", "Pa", Range::Positive, "Table 1", "Elastic modulus of the pin"),
+    spec!(materials.pin_poisson_ratio, "nu", "1", Range::HalfOpen(0.0, 0.5), "Table 1", "Poisson's ratio of the pin"),
+    spec!(materials.bush_elastic_modulus, "E_b", "Pa", Range::Positive, "Table 1", "Elastic modulus of the bush"),
+    spec!(materials.bush_poisson_ratio, "nu_b", "1", Range::HalfOpen(0.0, 0.5), "Table 1", "Poisson's ratio of the bush"),
+    spec!(surface.asperity_density, "n", "1/m2", Range::Positive, "Table 2", "Density of asperity summits (combined surface)"),
+    spec!(surface.asperity_radius, "beta", "m", Range::Positive, "Table 2", "Mean radius of the asperity summits"),
+    spec!(surface.summit_height_std, "sigma_s", "m", Range::Positive, "Table 2", "Standard deviation of the summit heights"),
+    spec!(surface.pin_rms_roughness, "sigma", "m", Range::NonNegative, "Table 2", "RMS roughness of the pin (used in the lambda ratio, eq. 21)"),
+    spec!(surface.bush_rms_roughness, "sigma_b", "m", Range::NonNegative, "Table 2", "RMS roughness of the bush (used in the lambda ratio, eq. 21)"),
+    spec!(surface.summit_mean_plane_offset, "d_d", "m", Range::NonNegative, "Table 2", "Distance between the mean plane of the summits and that of the surface heights"),
+    spec!(lubricant.viscosity, "eta_0", "Pa.s", Range::Positive, "Table 3", "Lubricant viscosity at inlet temperature"),
+    spec!(lubricant.roelands_viscosity_limit, "eta_inf", "Pa.s", Range::Positive, "Table 3", "Roelands constant eta_inf (eq. 5)"),
+    spec!(lubricant.roelands_pressure_constant, "c_p", "Pa", Range::Positive, "Table 3", "Roelands pressure constant c_p (eq. 5)"),
+    spec!(lubricant.roelands_index, "Z", "1", Range::NonNegative, "Table 3", "Roelands pressure-viscosity index (eq. 5)"),
+    spec!(lubricant.pressure_viscosity_coefficient, "alpha", "1/Pa", Range::NonNegative, "Table 3", "Pressure-viscosity coefficient (Moes material parameter G = alpha E', eq. 12)"),
+    spec!(lubricant.limiting_shear_stress, "tau_L0", "Pa", Range::Positive, "Table 3", "Limiting shear stress at ambient pressure (eq. 4)"),
+    spec!(lubricant.limiting_shear_stress_slope, "beta_0", "1", Range::NonNegative, "Table 3", "Slope of the limiting shear stress against pressure (eq. 4)"),
+    spec!(friction.boundary_friction_coefficient, "mu_c", "1", Range::NonNegative, "Section 3.1", "Friction coefficient of the asperity contacts (boundary friction)"),
+];
+
+/// Look a parameter up by its `section.key` name.
+pub fn spec_by_name(name: &str) -> Option<&'static ParamSpec> {
+    PARAMS.iter().find(|s| s.name() == name)
+}
+
+/// A rejected parameter value or file.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ParamError {
+    #[error("parameter {name} = {value} {unit} is not a finite number")]
+    NotFinite { name: String, value: f64, unit: &'static str },
+    #[error("parameter {name} = {value} {unit} is out of range: it must be {range}")]
+    OutOfRange { name: String, value: f64, unit: &'static str, range: String },
+    #[error(
+        "parameter geometry.bush_radius = {bush_radius} m must exceed geometry.pin_radius = {pin_radius} m (the radial clearance R_b - R must be positive)"
+    )]
+    NoClearance { pin_radius: f64, bush_radius: f64 },
+    #[error("parameter file: {0}")]
+    Parse(String),
+}
+
+fn unit_text(unit: &'static str) -> &'static str {
+    if unit == "1" { "(dimensionless)" } else { unit }
+}
+
+impl Params {
+    /// Check every value against its range and the cross-constraints.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        for s in PARAMS.iter() {
+            let v = (s.get)(self);
+            if !v.is_finite() {
+                return Err(ParamError::NotFinite { name: s.name(), value: v, unit: unit_text(s.unit) });
+            }
+            if !s.range.contains(v) {
+                return Err(ParamError::OutOfRange {
+                    name: s.name(),
+                    value: v,
+                    unit: unit_text(s.unit),
+                    range: s.range.describe(),
+                });
+            }
+        }
+        let g = &self.geometry;
+        if g.bush_radius - g.pin_radius <= 0.0 {
+            return Err(ParamError::NoClearance { pin_radius: g.pin_radius, bush_radius: g.bush_radius });
+        }
+        Ok(())
+    }
+
+    /// Radial clearance c = R_b − R (m), derived, never an input.
+    pub fn radial_clearance(&self) -> f64 {
+        self.geometry.bush_radius - self.geometry.pin_radius
+    }
+
+    /// Parse a (partial) TOML parameter file; missing keys keep their defaults.
+    pub fn from_toml_str(text: &str) -> Result<Self, ParamError> {
+        let p: Params = toml::from_str(text).map_err(|e| ParamError::Parse(e.to_string()))?;
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// The full parameter file, with units as comments. Loads back unchanged.
+    pub fn to_toml_string(&self) -> String {
+        let mut out = String::from(
+            "# pinjoint parameter file (SI units). Defaults: Tables 1-3 of the paper.\n\
+             # Any subset of keys may be given; missing keys keep their defaults.\n",
+        );
+        let mut section = "";
+        for s in PARAMS.iter() {
+            if s.section != section {
+                section = s.section;
+                out.push_str(&format!("\n[{section}]\n"));
+            }
+            let unit = if s.unit == "1" { "-" } else { s.unit };
+            // `{:?}` prints the shortest representation that round-trips exactly.
+            out.push_str(&format!(
+                "{} = {:?}  # {} [{}], {}\n",
+                s.key,
+                (s.get)(self),
+                s.symbol,
+                unit,
+                s.description
+            ));
+        }
+        out
+    }
+
+    /// Set a parameter by its `section.key` name (no validation; call [`Params::validate`]).
+    pub fn set_by_name(&mut self, name: &str, value: f64) -> Option<()> {
+        spec_by_name(name).map(|s| (s.set)(self, value))
+    }
+
+    /// Get a parameter by its `section.key` name.
+    pub fn get_by_name(&self, name: &str) -> Option<f64> {
+        spec_by_name(name).map(|s| (s.get)(self))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid_and_roundtrip_through_toml() {
+        let p = Params::default();
+        p.validate().unwrap();
+        let text = p.to_toml_string();
+        let q = Params::from_toml_str(&text).unwrap();
+        assert_eq!(p, q);
+    }
+
+    #[test]
+    fn table_covers_every_field_once() {
+        // Serialising through serde lists the fields; the table must name each exactly once.
+        let v: toml::Table = toml::from_str(&toml::to_string(&Params::default()).unwrap()).unwrap();
+        let mut names: Vec<String> = v
+            .iter()
+            .flat_map(|(sec, t)| t.as_table().unwrap().keys().map(move |k| format!("{sec}.{k}")))
+            .collect();
+        names.sort();
+        let mut table: Vec<String> = PARAMS.iter().map(|s| s.name()).collect();
+        table.sort();
+        assert_eq!(names, table);
+        // And each accessor reads its own field: set a distinct value through the table, read back through serde.
+        let mut p = Params::default();
+        for (i, s) in PARAMS.iter().enumerate() {
+            (s.set)(&mut p, 1000.0 + i as f64);
+        }
+        let v: toml::Table = toml::from_str(&toml::to_string(&p).unwrap()).unwrap();
+        for (i, s) in PARAMS.iter().enumerate() {
+            assert_eq!(v[s.section][s.key].as_float().unwrap(), 1000.0 + i as f64, "{}", s.name());
+        }
+    }
+
+    #[test]
+    fn partial_file_keeps_defaults() {
+        let p = Params::from_toml_str("[geometry]\npin_radius = 0.02\nbush_radius = 0.0201\n").unwrap();
+        assert_eq!(p.geometry.pin_radius, 0.02);
+        assert_eq!(p.geometry.bush_length, 59.4e-3);
+        assert_eq!(p.lubricant, Lubricant::default());
+        assert!((p.radial_clearance() - 1e-4).abs() < 1e-15);
+    }
+
+    #[test]
+    fn unknown_key_is_rejected_by_name() {
+        let e = Params::from_toml_str("[geometry]\npin_radiuss = 0.02\n").unwrap_err();
+        assert!(e.to_string().contains("pin_radiuss"), "{e}");
+        let e = Params::from_toml_str("[geometryy]\npin_radius = 0.02\n").unwrap_err();
+        assert!(e.to_string().contains("geometryy"), "{e}");
+    }
+
+    #[test]
+    fn out_of_range_message_names_key_value_and_unit() {
+        let e = Params::from_toml_str("[materials]\npin_elastic_modulus = -5.0\n").unwrap_err();
+        let m = e.to_string();
+        assert!(m.contains("materials.pin_elastic_modulus") && m.contains("-5") && m.contains("Pa"), "{m}");
+        let e = Params::from_toml_str("[materials]\nbush_poisson_ratio = 0.5\n").unwrap_err();
+        assert!(e.to_string().contains("materials.bush_poisson_ratio = 0.5"), "{e}");
+        let e = Params::from_toml_str("[surface]\npin_rms_roughness = -1e-6\n").unwrap_err();
+        assert!(e.to_string().contains("surface.pin_rms_roughness = -0.000001 m"), "{e}");
+        let e = Params::from_toml_str("[geometry]\nbush_radius = 0.028\n").unwrap_err();
+        assert!(matches!(e, ParamError::NoClearance { .. }), "{e}");
+        assert!(e.to_string().contains("geometry.bush_radius"));
+    }
+
+    #[test]
+    fn non_finite_is_rejected() {
+        let e = Params::from_toml_str("[lubricant]\nviscosity = nan\n").unwrap_err();
+        assert!(matches!(e, ParamError::NotFinite { .. }), "{e}");
+        assert!(e.to_string().contains("lubricant.viscosity") && e.to_string().contains("Pa.s"));
+        let e = Params::from_toml_str("[lubricant]\nviscosity = inf\n").unwrap_err();
+        assert!(e.to_string().contains("inf"), "{e}");
+    }
+
+    #[test]
+    fn every_range_rejects_a_bad_value() {
+        for s in PARAMS.iter() {
+            let mut p = Params::default();
+            (s.set)(&mut p, -1.0);
+            assert!(p.validate().is_err(), "{} accepted -1", s.name());
+        }
+    }
+}
