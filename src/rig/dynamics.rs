@@ -1,9 +1,13 @@
 //! The rig's equations of motion in each phase, and the friction torque from the core.
 //!
-//! State vector y = (θ, ω, T_a, W, D):
+//! State vector y = (θ, ω, T_a, W, D, t):
 //! - θ (rad), ω (rad/s): pin angle and speed; T_a (N·m): actuator torque;
 //! - W = ∫ T_a·ω dt (J): work done by the actuator on the rotating parts;
-//! - D = ∫ −T_f·ω dt (J): energy dissipated by friction (T_f the friction torque on the pin).
+//! - D = ∫ −T_f·ω dt (J): energy dissipated by friction (T_f the friction torque on the pin);
+//! - t itself (ṫ = 1), so that the system is autonomous: `ode_solvers` 0.6.2's Dop853 evaluates
+//!   its 12th stage at x instead of x + h (its table has c₁₂ = 0, DOP853 has c₁₂ = 1), which
+//!   ruins its error estimate for time-dependent right-hand sides (it then crawls at ~1e-6 s
+//!   steps). With time as a state the method never uses its stage times.
 //!
 //! Energy balance: W − D = ½Jω² − ½Jω₀² exactly for the ODE, so the residual of the integrated
 //! W, D and ω measures the integration error.
@@ -25,12 +29,23 @@ use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 
 /// The integrated state (see the module documentation).
-pub type State = ode_solvers::SVector<f64, 5>;
+pub type State = ode_solvers::SVector<f64, 6>;
 pub(crate) const ANGLE: usize = 0;
 pub(crate) const SPEED: usize = 1;
 pub(crate) const TORQUE: usize = 2;
 pub(crate) const WORK: usize = 3;
 pub(crate) const DISSIPATION: usize = 4;
+pub(crate) const TIME: usize = 5;
+
+/// The integrated state from the five physical values and the time.
+pub(crate) fn to_state(v: &[f64; 5], t: f64) -> State {
+    State::from([v[0], v[1], v[2], v[3], v[4], t])
+}
+
+/// The five physical values of a state.
+pub(crate) fn physical(y: &State) -> [f64; 5] {
+    [y[0], y[1], y[2], y[3], y[4]]
+}
 
 /// Which equations hold.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -121,8 +136,9 @@ impl<'a> Dynamics<'a> {
         }
     }
 
-    /// dy/dt.
-    pub fn derivative(&self, t: f64, y: &State) -> State {
+    /// dy/dt. The time is taken from the state (y[TIME]), not from the integrator.
+    pub fn derivative(&self, _t: f64, y: &State) -> State {
+        let t = y[TIME];
         let load = match self.load(t) {
             Ok(p) => p,
             Err(p) => {
@@ -136,10 +152,10 @@ impl<'a> Dynamics<'a> {
         let (w, ta) = (y[SPEED], y[TORQUE]);
         let torque_rate = (self.demand(t, y[ANGLE], w) - ta) / r.servo_time_constant;
         if self.phase == Phase::Stick {
-            return State::from([0.0, 0.0, torque_rate, 0.0, 0.0]);
+            return State::from([0.0, 0.0, torque_rate, 0.0, 0.0, 1.0]);
         }
         let tf = self.friction(load, y).torque;
-        State::from([w, (ta + tf) / r.inertia, torque_rate, ta * w, -tf * w])
+        State::from([w, (ta + tf) / r.inertia, torque_rate, ta * w, -tf * w, 1.0])
     }
 }
 

@@ -14,7 +14,7 @@
 //!
 //! RK4 takes uniform steps of at most `rk4_step`, the step shortened so the segment end is hit.
 
-use super::dynamics::{Dynamics, State};
+use super::dynamics::{Dynamics, State, TIME};
 use super::params::{Method, RigParams};
 use super::RigError;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
@@ -75,6 +75,8 @@ pub(crate) fn segment(
     outside: &dyn Fn(f64, &State) -> bool,
 ) -> Result<Run, RigError> {
     let span = t1 - t0;
+    let mut y0 = y0;
+    y0[TIME] = t0;
     let mut hit = false;
     let nodes: Vec<(f64, State)> = match rig.method {
         Method::Rk4 => {
@@ -153,6 +155,8 @@ fn adaptive<S: System<f64, State>>(
 /// it if its error test rejects the full step).
 pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f64) -> Result<State, RigError> {
     let h = t1 - t0;
+    let mut y0 = y0;
+    y0[TIME] = t0;
     if h <= 0.0 {
         return Ok(y0);
     }

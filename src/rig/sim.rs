@@ -20,7 +20,7 @@
 //! At each event ω is set to exactly 0 (its located value is within the event tolerance of 0).
 
 use super::config::RigConfig;
-use super::dynamics::{Dynamics, Phase, State, ANGLE, DISSIPATION, SPEED, TORQUE, WORK};
+use super::dynamics::{physical, to_state, Dynamics, Phase, State, ANGLE, DISSIPATION, SPEED, TORQUE, WORK};
 use super::excitation::{Excitation, Held, Inputs, SineCommand, SineDrive, StepLoad};
 use super::integrate::{locate, segment, sub_step, TINY};
 use super::params::Formulation;
@@ -172,6 +172,18 @@ pub struct RigSim {
     burst: u64,
 }
 
+impl std::fmt::Debug for RigSim {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RigSim")
+            .field("config", &self.config)
+            .field("inputs", &self.inputs)
+            .field("node", &self.node)
+            .field("time", &self.time)
+            .field("stats", &self.stats)
+            .finish_non_exhaustive()
+    }
+}
+
 /// Consecutive near-coincident events beyond which the run is declared chattering.
 const MAX_BURST: u64 = 1000;
 
@@ -274,7 +286,7 @@ impl RigSim {
             // New held values: restart integration from the current time.
             if self.time > self.node.time {
                 let (y, phase, logit) = self.state_at(self.time)?;
-                self.node = Node { time: self.time, state: y.into(), phase, step: 0.0, logit };
+                self.node = Node { time: self.time, state: physical(&y), phase, step: 0.0, logit };
             }
             self.inputs = *inputs;
             self.segment = None;
@@ -364,7 +376,7 @@ impl RigSim {
         let t1 = (boundary * rig.segment_length).min(exc.next_discontinuity(t0));
         let phase = node.phase;
         let d = Dynamics::new(&self.joint, &rig, &exc, phase, node.logit);
-        let y0 = State::from(node.state);
+        let y0 = to_state(&node.state, t0);
         let breakaway = |t: f64| d.load(t).map_or(0.0, |p| d.breakaway_torque(p));
         let event = |t: f64, y: &State| -> (f64, bool) {
             match phase {
@@ -383,7 +395,7 @@ impl RigSim {
         if t1 - t0 <= TINY * t0.abs().max(1.0) {
             // A sliver between an event and a boundary: nothing to integrate, step across it.
             let y1 = sub_step(&rig, &d, t0, y0, t1)?;
-            let mut next = Node { time: t1, state: y1.into(), ..node };
+            let mut next = Node { time: t1, state: physical(&y1), ..node };
             next.phase = self.resolve(&next)?;
             return Ok(Segment { phase, logit: node.logit, nodes: vec![(t0, y0)], end: t1, next });
         }
@@ -418,13 +430,13 @@ impl RigSim {
             } else {
                 self.burst = 0;
             }
-            (te, Node { time: te, state: ye.into(), phase: new_phase, step: 0.0, logit: d.guess.get() })
+            (te, Node { time: te, state: physical(&ye), phase: new_phase, step: 0.0, logit: d.guess.get() })
         } else {
             let (t, y) = *nodes.last().unwrap();
             if nodes.len() > 1 {
                 nodes.pop();
             }
-            let mut next = Node { time: t, state: y.into(), phase, step: run.h_next, logit: d.guess.get() };
+            let mut next = Node { time: t, state: physical(&y), phase, step: run.h_next, logit: d.guess.get() };
             next.phase = self.resolve(&next)?;
             (t, next)
         };
