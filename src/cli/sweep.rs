@@ -62,20 +62,54 @@ fn is_stdio(p: &Path) -> bool {
     p.as_os_str() == "-"
 }
 
+/// 1-based line numbers from byte offsets, counting every line (blank and comment lines too).
+struct Lines<'a> {
+    text: &'a [u8],
+    /// Byte offset of each line's first character.
+    starts: Vec<usize>,
+}
+
+impl<'a> Lines<'a> {
+    fn new(text: &'a [u8]) -> Self {
+        let starts = std::iter::once(0).chain(text.iter().enumerate().filter(|(_, b)| **b == b'\n').map(|(i, _)| i + 1)).collect();
+        Self { text, starts }
+    }
+    /// The line of the record that the csv reader places at `byte`. The reader reports a
+    /// position before the line terminator, blank lines and comment lines it then skips,
+    /// so step over those to the record's first character.
+    fn of(&self, byte: u64) -> u64 {
+        let t = self.text;
+        let mut b = (byte as usize).min(t.len());
+        loop {
+            while b < t.len() && matches!(t[b], b'\r' | b'\n') {
+                b += 1;
+            }
+            let at_line_start = b == 0 || t[b - 1] == b'\n';
+            if b < t.len() && t[b] == b'#' && at_line_start {
+                b = t[b..].iter().position(|&c| c == b'\n').map_or(t.len(), |i| b + i + 1);
+                continue;
+            }
+            break;
+        }
+        self.starts.partition_point(|&start| start <= b) as u64
+    }
+}
+
 /// Parse and validate the whole input before anything is computed or written.
-pub fn parse(input: impl Read, file: &str) -> Result<Table> {
+pub fn parse(mut input: impl Read, file: &str) -> Result<Table> {
     let bad = |line: u64, message: String| CliError::Input { file: file.to_string(), line, message };
-    let csv_err = |e: csv::Error| {
-        let line = e.position().map_or(1, |p| p.line());
-        bad(line, format!("unreadable CSV: {e}"))
-    };
+    let mut text = Vec::new();
+    input.read_to_end(&mut text).map_err(|source| CliError::Read { path: file.into(), source })?;
+    let lines = Lines::new(&text);
+    let line_of = |pos: Option<&csv::Position>| pos.map_or(1, |p| lines.of(p.byte()));
+    let csv_err = |e: csv::Error| bad(line_of(e.position()), format!("unreadable CSV: {e}"));
     let mut rdr = csv::ReaderBuilder::new()
         .trim(csv::Trim::All)
         .flexible(true)
         .comment(Some(b'#'))
-        .from_reader(input);
+        .from_reader(text.as_slice());
     let header: Vec<String> = rdr.headers().map_err(csv_err)?.iter().map(str::to_string).collect();
-    let header_line = rdr.headers().ok().and_then(|h| h.position().map(|p| p.line())).unwrap_or(1);
+    let header_line = rdr.headers().ok().map_or(1, |h| line_of(h.position()));
     if header.is_empty() || header.iter().all(String::is_empty) {
         return Err(bad(header_line, "no header row: the first line must name the columns, e.g. `load,speed`".into()));
     }
@@ -95,11 +129,16 @@ pub fn parse(input: impl Read, file: &str) -> Result<Table> {
     let mut rows = Vec::new();
     for rec in rdr.records() {
         let rec = rec.map_err(csv_err)?;
-        let line = rec.position().map_or(0, |p| p.line());
+        let line = line_of(rec.position());
         if rec.len() != header.len() {
+            let detail = if rec.len() < header.len() {
+                format!("missing column(s) {}", header[rec.len()..].join(","))
+            } else {
+                format!("{} more field(s) than the header's columns", rec.len() - header.len())
+            };
             return Err(bad(
                 line,
-                format!("{} fields but the header has {} ({})", rec.len(), header.len(), header.join(",")),
+                format!("{detail}: the row has {} field(s), the header {} ({})", rec.len(), header.len(), header.join(",")),
             ));
         }
         let num = |i: usize, name: &str, unit: &str| -> Result<f64> {
