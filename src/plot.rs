@@ -97,6 +97,13 @@ pub struct Band {
     pub label: String,
 }
 
+/// Dashed vertical lines at `xs` (e.g. the ends of a range), one legend entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Marker {
+    pub xs: Vec<f64>,
+    pub label: String,
+}
+
 /// Where the legend sits.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Corner {
@@ -125,12 +132,13 @@ pub struct Chart {
     pub y: Axis,
     pub series: Vec<Series>,
     pub bands: Vec<Band>,
+    pub markers: Vec<Marker>,
     pub legend: Corner,
 }
 
 impl Chart {
     pub fn new(title: impl Into<String>, x: Axis, y: Axis) -> Self {
-        Self { title: title.into(), x, y, series: Vec::new(), bands: Vec::new(), legend: Corner::UpperRight }
+        Self { title: title.into(), x, y, series: Vec::new(), bands: Vec::new(), markers: Vec::new(), legend: Corner::UpperRight }
     }
     pub fn series(mut self, s: Series) -> Self {
         self.series.push(s);
@@ -138,6 +146,10 @@ impl Chart {
     }
     pub fn band(mut self, from: f64, to: f64, label: impl Into<String>) -> Self {
         self.bands.push(Band { from, to, label: label.into() });
+        self
+    }
+    pub fn marker(mut self, xs: &[f64], label: impl Into<String>) -> Self {
+        self.markers.push(Marker { xs: xs.to_vec(), label: label.into() });
         self
     }
     pub fn legend(mut self, corner: Corner) -> Self {
@@ -220,6 +232,39 @@ fn fit_range(axis: &Axis, values: impl Iterator<Item = f64>) -> (f64, f64) {
     }
 }
 
+/// Tick positions on a log axis over `lo..hi`: (labelled, light grid lines).
+/// 1-2-5 per decade up to 3 decades, powers of ten beyond (every n-th past 8 decades).
+pub fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
+    let (k0, k1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    let decades = (hi / lo).log10();
+    let mantissas: &[f64] = if decades <= 1.2 {
+        &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
+    } else if decades <= 3.2 {
+        &[1.0, 2.0, 5.0]
+    } else {
+        &[1.0]
+    };
+    let step = if decades > 8.0 { (decades / 8.0).ceil() as i32 } else { 1 };
+    let inside = |v: &f64| *v >= lo * (1.0 - 1e-9) && *v <= hi * (1.0 + 1e-9);
+    let mut bold = Vec::new();
+    let mut light = Vec::new();
+    for k in k0..=k1 {
+        let p = 10f64.powi(k);
+        if k.rem_euclid(step) == 0 {
+            bold.extend(mantissas.iter().map(|m| m * p).filter(inside));
+        }
+        if decades <= 8.0 {
+            light.extend((1..10).map(|m| m as f64 * p).filter(inside));
+        }
+    }
+    (bold, light)
+}
+
+fn log_axis(lo: f64, hi: f64) -> plotters::coord::combinators::WithKeyPoints<plotters::coord::combinators::LogCoord<f64>> {
+    let (bold, light) = log_ticks(lo, hi);
+    (lo..hi).log_scale().with_key_points(bold).with_light_points(light)
+}
+
 /// Runs `$body` with `$x`/`$y` bound to plotters range specs for the given scales.
 macro_rules! with_ranges {
     ($xs:expr, $xr:expr, $ys:expr, $yr:expr, |$x:ident, $y:ident| $body:expr) => {{
@@ -230,15 +275,15 @@ macro_rules! with_ranges {
                 $body
             }
             (Scale::Log, Scale::Linear) => {
-                let ($x, $y) = ((x0..x1).log_scale(), y0..y1);
+                let ($x, $y) = (log_axis(x0, x1), y0..y1);
                 $body
             }
             (Scale::Linear, Scale::Log) => {
-                let ($x, $y) = (x0..x1, (y0..y1).log_scale());
+                let ($x, $y) = (x0..x1, log_axis(y0, y1));
                 $body
             }
             (Scale::Log, Scale::Log) => {
-                let ($x, $y) = ((x0..x1).log_scale(), (y0..y1).log_scale());
+                let ($x, $y) = (log_axis(x0, x1), log_axis(y0, y1));
                 $body
             }
         }
@@ -318,6 +363,21 @@ where
             .legend(move |(px, py)| Rectangle::new([(px, py - 6), (px + 18, py + 6)], col.mix(0.5).filled()));
     }
 
+    for m in &c.markers {
+        let col = RGBColor(90, 90, 90);
+        let lines: Vec<_> = m.xs.iter().filter(|&&x| x >= xr.0 && x <= xr.1).map(|&x| vec![(x, yr.0), (x, yr.1)]).collect();
+        if lines.is_empty() {
+            continue;
+        }
+        let mut ann = None;
+        for l in lines {
+            ann = Some(ch.draw_series(DashedLineSeries::new(l, 6, 4, col.stroke_width(2))).map_err(err)?);
+        }
+        if let Some(a) = ann {
+            a.label(m.label.as_str()).legend(move |(px, py)| PathElement::new(vec![(px + 4, py - 6), (px + 4, py + 6)], col.stroke_width(2)));
+        }
+    }
+
     for (i, s) in c.series.iter().enumerate() {
         let col = PALETTE[i % PALETTE.len()];
         let style = col.stroke_width(2);
@@ -343,7 +403,7 @@ where
             }
         }
     }
-    if c.series.iter().any(|s| !s.name.is_empty()) || !c.bands.is_empty() {
+    if c.series.iter().any(|s| !s.name.is_empty()) || !c.bands.is_empty() || !c.markers.is_empty() {
         ch.configure_series_labels()
             .position(c.legend.position())
             .background_style(WHITE.mix(0.85))
@@ -507,7 +567,7 @@ pub fn heat_map(h: &HeatMap, size: (u32, u32)) -> Result<String, PlotError> {
     {
         let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        let (main, bar) = root.split_horizontally(size.0.saturating_sub(130));
+        let (main, bar) = root.split_horizontally(size.0.saturating_sub(150));
         with_ranges!(h.x.scale, xr, h.y.scale, yr, |x, y| draw_heat_in(&main, h, x, y, &xe, &ye, zr))?;
         with_ranges!(Scale::Linear, (0.0, 1.0), h.z_axis.scale, zr, |x, y| draw_colour_bar(&bar, h, x, y, zr))?;
         root.present().map_err(err)?;
@@ -549,46 +609,48 @@ where
         .draw()
         .map_err(err)?;
 
-    for &level in &h.contours {
+    // Labels at staggered heights so that converging contours keep readable labels.
+    const LABEL_HEIGHTS: [f64; 6] = [0.8, 0.55, 0.3, 0.67, 0.42, 0.18];
+    for (k, &level) in h.contours.iter().enumerate() {
         let segs = contour_segments(h, level);
         if segs.is_empty() {
             continue;
         }
         ch.draw_series(segs.iter().map(|s| PathElement::new(s.to_vec(), BLACK.stroke_width(1)))).map_err(err)?;
-        // Label the level at the segment nearest three quarters up the plot.
         let target = |s: &[(f64, f64); 2]| {
             let ym = 0.5 * (s[0].1 + s[1].1);
-            (normalise(ym, h.y.scale, (ye[0], ye[ye.len() - 1])) - 0.75).abs()
+            (normalise(ym, h.y.scale, (ye[0], ye[ye.len() - 1])) - LABEL_HEIGHTS[k % LABEL_HEIGHTS.len()]).abs()
         };
         if let Some(s) = segs.iter().min_by(|a, b| target(a).total_cmp(&target(b))) {
             let p = (0.5 * (s[0].0 + s[1].0), 0.5 * (s[0].1 + s[1].1));
-            ch.draw_series(std::iter::once(Text::new(tick_label(level), p, (FONT, 13).into_font().color(&BLACK))))
-                .map_err(err)?;
+            boxed_text(&ch, p, &tick_label(level), true)?;
         }
     }
     let region_colour = RGBColor(230, 30, 60);
     for r in &h.regions {
         let corners = vec![(r.x.0, r.y.0), (r.x.1, r.y.0), (r.x.1, r.y.1), (r.x.0, r.y.1), (r.x.0, r.y.0)];
-        ch.draw_series(std::iter::once(PathElement::new(corners, region_colour.stroke_width(3))))
-            .map_err(err)?
-            .label(r.label.as_str())
-            .legend(move |(px, py)| Rectangle::new([(px, py - 6), (px + 18, py + 6)], region_colour.stroke_width(3)));
+        ch.draw_series(std::iter::once(PathElement::new(corners, region_colour.stroke_width(3)))).map_err(err)?;
+        boxed_text(&ch, (r.x.0, r.y.1), &r.label, false)?;
     }
-    if !h.regions.is_empty() || !h.contours.is_empty() {
-        if !h.contours.is_empty() {
-            ch.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
-                .map_err(err)?
-                .label(format!("contours of {}", h.z_axis.label))
-                .legend(|(px, py)| PathElement::new(vec![(px, py), (px + 18, py)], BLACK.stroke_width(1)));
-        }
-        ch.configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(180, 180, 180))
-            .label_font((FONT, 13))
-            .draw()
-            .map_err(err)?;
-    }
+    Ok(())
+}
+
+/// Text on a translucent white box at data point `at`: centred on it, or just below-right
+/// of it (inside a region's top-left corner).
+fn boxed_text<X, Y>(ch: &ChartContext<'_, SVGBackend<'_>, Cartesian2d<X, Y>>, at: (f64, f64), text: &str, centred: bool) -> Result<(), PlotError>
+where
+    X: Ranged<ValueType = f64>,
+    Y: Ranged<ValueType = f64>,
+{
+    let area = ch.plotting_area().strip_coord_spec();
+    let (bx, by) = area.get_base_pixel();
+    let (px, py) = ch.backend_coord(&at);
+    let style = TextStyle::from((FONT, 13).into_font()).color(&BLACK);
+    let (w, th) = area.estimate_text_size(text, &style).map_err(err)?;
+    let (w, th) = (w as i32, th as i32);
+    let (x, y) = if centred { (px - bx - w / 2, py - by - th / 2) } else { (px - bx + 8, py - by + 8) };
+    area.draw(&Rectangle::new([(x - 3, y - 2), (x + w + 3, y + th + 2)], WHITE.mix(0.8).filled())).map_err(err)?;
+    area.draw(&Text::new(text.to_string(), (x, y), style)).map_err(err)?;
     Ok(())
 }
 
@@ -602,8 +664,8 @@ where
     let mut ch = ChartBuilder::on(area)
         .margin_top(42)
         .margin_bottom(57)
-        .margin_right(8)
-        .y_label_area_size(75)
+        .margin_right(40)
+        .y_label_area_size(85)
         .build_cartesian_2d(x, y)
         .map_err(err)?;
     const STEPS: usize = 128;
@@ -690,7 +752,16 @@ mod tests {
             }
         }
         let svg = heat_map(&h, (600, 400)).unwrap();
-        assert!(svg.contains("contours of z"));
+        assert!(svg.contains(">2</text>"), "contour label missing");
+    }
+
+    #[test]
+    fn log_ticks_label_every_decade_or_1_2_5() {
+        let (bold, _) = log_ticks(2.0, 62.0);
+        assert_eq!(bold, vec![2.0, 5.0, 10.0, 20.0, 50.0]);
+        let (bold, light) = log_ticks(4e-6, 0.4);
+        assert_eq!(bold, vec![1e-5, 1e-4, 1e-3, 1e-2, 0.1]);
+        assert!(light.contains(&4e-6) && light.contains(&0.4) && light.len() > 30);
     }
 
     #[test]

@@ -136,7 +136,9 @@ pub fn readable(v: f64) -> String {
         let s = format!("{v:.decimals$}");
         if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
     } else {
-        format!("{v:.5e}")
+        let s = format!("{v:.5e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
     }
 }
 
@@ -165,5 +167,6 @@ mod tests {
         assert_eq!(readable(0.118871234), "0.118871");
         assert_eq!(readable(20000.0), "20000");
         assert_eq!(readable(3.31024e-6), "3.31024e-6");
+        assert_eq!(readable(4.134e-4), "4.134e-4");
     }
 }

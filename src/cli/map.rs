@@ -141,8 +141,8 @@ pub fn write_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
         g,
         &ops,
         "(b) friction coefficient μ",
-        Axis::log("μ [-]"),
-        &[1e-3, 3e-3, 0.01, 0.03, 0.1, 0.11, 0.115],
+        Axis::linear("μ [-]"),
+        &[0.02, 0.05, 0.08, 0.1, 0.11, 0.115],
         |o| o.friction_coefficient,
     )?;
     let curves = curves_plot(joint, g)?;

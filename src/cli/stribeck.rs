@@ -88,7 +88,7 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
     let paper = (PAPER_RPM_RANGE.0 * RAD_S_PER_RPM * s_per_rad_s, PAPER_RPM_RANGE.1 * RAD_S_PER_RPM * s_per_rad_s);
     let rig = (s_min, rig_peak_speed() * s_per_rad_s);
     let marks = |c: Chart| {
-        c.band(paper.0, paper.1, "paper's simulated range, 1-800 rpm").band(rig.0, rig.1, "rig experiments, up to 41.9 rpm")
+        c.band(rig.0, rig.1, "rig experiments, up to 41.9 rpm").marker(&[paper.0, paper.1], "paper's simulated range, 1 and 800 rpm")
     };
     let mu = marks(Chart::new("(a) friction coefficient", x(), Axis::linear("μ [-]")))
         .series(Series::line("μ (eq. 10)", col(|o| o.friction_coefficient)))
