@@ -14,7 +14,7 @@ use thiserror::Error;
 pub const REGIME_SHARE: f64 = 0.01;
 
 /// Lubrication regime, named from the load shares.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Regime {
     /// The fluid carries less than [`REGIME_SHARE`] of the load.
