@@ -511,3 +511,23 @@ fn map_rejects_bad_grids() {
     fails(&["map", "--speeds", "1", "--output", o], None, 1, &["speeds = 1"]);
     fails(&["map", "--output", "/proc/no-such-place/x"], None, 1, &["cannot write /proc/no-such-place/x"]);
 }
+
+#[test]
+fn sweep_into_a_closed_pipe_ends_quietly() {
+    use std::io::{BufRead, BufReader};
+    let d = tempfile::tempdir().unwrap();
+    let inp = d.path().join("in.csv");
+    std::fs::write(&inp, points_csv(&regime_points())).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
+        .args(["sweep", "--input", inp.to_str().unwrap()])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap()).read_line(&mut first).unwrap(); // then the pipe closes
+    let o = child.wait_with_output().unwrap();
+    assert!(first.starts_with("case,load,speed,friction_coefficient"));
+    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(String::from_utf8_lossy(&o.stderr), "");
+}

@@ -104,6 +104,15 @@ pub const RESULT_COLUMNS: [&str; 10] = [
     "regime",
 ];
 
+/// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
+/// `BrokenPipe`, which ends the program quietly).
+pub fn csv_io(e: csv::Error) -> std::io::Error {
+    match e.into_kind() {
+        csv::ErrorKind::Io(e) => e,
+        other => std::io::Error::other(format!("{other:?}")),
+    }
+}
+
 /// A number in CSV: the shortest text that parses back to the same f64 (never rounded).
 pub fn exact(v: f64) -> String {
     format!("{v:?}")

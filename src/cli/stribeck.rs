@@ -1,7 +1,7 @@
 //! `pinjoint stribeck`: the paper's Figure 3 — μ, 1/γ1, 1/γ2 and λ against the Sommerfeld
 //! number at one load — as CSV and SVG.
 
-use super::common::{exact, log_space, positive, readable, result_fields, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM, RESULT_COLUMNS};
+use super::common::{csv_io, exact, log_space, positive, readable, result_fields, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM, RESULT_COLUMNS};
 use super::error::{CliError, Result};
 use super::output::{output_dir, report_written, write_atomic, write_text};
 use clap::Args;
@@ -69,10 +69,10 @@ pub fn curve(joint: &Joint, load: f64, speeds: &[f64]) -> Result<Vec<OperatingPo
 /// CSV: load, speed, speed_rpm, then the result columns.
 pub fn points_csv(w: &mut dyn std::io::Write, ops: &[OperatingPoint]) -> std::io::Result<()> {
     let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(["load", "speed", "speed_rpm"].into_iter().chain(RESULT_COLUMNS))?;
+    wtr.write_record(["load", "speed", "speed_rpm"].into_iter().chain(RESULT_COLUMNS)).map_err(csv_io)?;
     for op in ops {
         let head = [exact(op.load), exact(op.angular_velocity), exact(op.angular_velocity / RAD_S_PER_RPM)];
-        wtr.write_record(head.into_iter().chain(result_fields(op)))?;
+        wtr.write_record(head.into_iter().chain(result_fields(op))).map_err(csv_io)?;
     }
     wtr.flush()?;
     Ok(())

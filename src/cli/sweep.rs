@@ -1,6 +1,6 @@
 //! `pinjoint sweep`: evaluate every row of a CSV file, in parallel, order preserved.
 
-use super::common::{result_fields, ParamsArg, RESULT_COLUMNS};
+use super::common::{csv_io, result_fields, ParamsArg, RESULT_COLUMNS};
 use super::error::{CliError, Result};
 use super::output::{to_stdout, write_atomic};
 use clap::Args;
@@ -191,9 +191,9 @@ pub fn evaluate(joint: &Joint, rows: &[Row], file: &str) -> Result<Vec<Operating
 pub fn write_csv(w: &mut dyn Write, table: &Table, results: &[OperatingPoint]) -> io::Result<()> {
     let mut wtr = csv::Writer::from_writer(w);
     let header = table.header.iter().map(String::as_str).chain(RESULT_COLUMNS);
-    wtr.write_record(header)?;
+    wtr.write_record(header).map_err(csv_io)?;
     for (row, op) in table.rows.iter().zip(results) {
-        wtr.write_record(row.fields.iter().cloned().chain(result_fields(op)))?;
+        wtr.write_record(row.fields.iter().cloned().chain(result_fields(op))).map_err(csv_io)?;
     }
     wtr.flush()?;
     Ok(())
