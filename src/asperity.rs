@@ -60,6 +60,13 @@ impl AsperityGroups {
     pub fn required_ln_f32(&self, ln_x2: f64) -> f64 {
         self.ln_rhs(ln_x2) - self.ln_c
     }
+
+    /// [`Self::required_ln_f32`] and its derivative with respect to ln x2.
+    pub fn required_ln_f32_slope(&self, ln_x2: f64) -> (f64, f64) {
+        let z = A4 * (self.ln_k - A2 * ln_x2);
+        let sigmoid = 1.0 / (1.0 + (-z).exp());
+        (ln_x2 + softplus(z) / A4 - self.ln_c, 1.0 - A2 * sigmoid)
+    }
 }
 
 /// Greenwood–Williamson central asperity pressure of eq. 17 (Pa) at separation `h` (m).

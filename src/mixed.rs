@@ -20,8 +20,8 @@
 //! 1e-10 against a bisection to the last bit.
 
 use crate::asperity::{softplus, AsperityGroups};
-use crate::film::ln_scaled_moes;
-use crate::gw::{inverse_ln_f32, ln_f32};
+use crate::film::{ln_scaled_moes, ln_scaled_moes_slope};
+use crate::gw::ln_f32_slope;
 use crate::params::Surface;
 
 /// The speed-dependent film groups of eq. 12, in logarithms.
@@ -65,15 +65,15 @@ pub struct LoadSharing {
     pub evaluations: u32,
 }
 
-/// Bracket half-width tolerance on the logit.
+/// Step tolerance on the logit.
 pub fn y_tol(y: f64) -> f64 {
     1e-13 + 4.0 * f64::EPSILON * y.abs()
 }
 
 /// Solve eqs. 9, 13, 19. `film = None` means zero speed: then 1/γ1 = 0 exactly, 1/γ2 = 1,
 /// and h_c comes from eq. 19 alone (the limit of the moving case, MODEL_NOTES).
+/// `guess` is the logit of a nearby solution, if any.
 pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>) -> LoadSharing {
-    let t_of_h = |h: f64| (h - s.summit_mean_plane_offset) / s.summit_height_std;
     let Some(film) = film else {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
         return LoadSharing {
@@ -84,116 +84,93 @@ pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess
             evaluations: 0,
         };
     };
-    let mut evals = 0u32;
-    let mut r = |y: f64| {
-        evals += 1;
+    // r(y) and r'(y): every factor's derivative is analytic (film::ln_moes_slope,
+    // gw::ln_f32_slope, AsperityGroups::required_ln_f32_slope).
+    let residual = |y: f64| {
         let ln_x1 = -softplus(-y);
         let ln_x2 = -softplus(y);
-        ln_f32(t_of_h(film.ln_film(ln_x1).exp())) - asp.required_ln_f32(ln_x2)
+        let x1 = 1.0 / (1.0 + (-y).exp());
+        let x2 = 1.0 / (1.0 + y.exp());
+        let (ln_hs, dln_hs) = ln_scaled_moes_slope(film.ln_m, film.ln_l, ln_x1);
+        let h = (film.ln_scale + ln_hs).exp();
+        let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
+        let dt_dy = h / s.summit_height_std * x2 * dln_hs; // d ln x1/dy = x2
+        let (ln_f, dln_f) = ln_f32_slope(t);
+        let (req, dreq) = asp.required_ln_f32_slope(ln_x2); // d ln x2/dy = −x1
+        compress(ln_f - req, dln_f * dt_dy + dreq * x1)
     };
-    // Bracket by stepping outward from the guess.
-    let y0 = match guess {
-        Some(g) if g.is_finite() => g,
-        _ => 0.0,
-    };
-    let r0 = r(y0);
-    let (lo, hi) = if r0 == 0.0 {
-        (y0, y0)
-    } else {
-        let dir = if r0 > 0.0 { -1.0 } else { 1.0 };
-        let mut step = if guess.is_some() { 0.05 } else { 4.0 };
-        let mut a = y0;
-        // r is monotone and unbounded both ways, so the search ends; the root can sit far
-        // out (y ≈ t²/2 in deep full film, where x2 = e^{−y} underflows but ln x2 = −y does not).
-        loop {
-            let b = y0 + dir * step;
-            let rb = r(b);
-            if (rb > 0.0) != (r0 > 0.0) || rb == 0.0 || !b.is_finite() {
-                break if dir > 0.0 { (a, b) } else { (b, a) };
-            }
-            a = b;
-            step *= 4.0;
-        }
-    };
-    let y = if lo == hi { lo } else { brent(&mut r, lo, hi, y_tol(lo.abs().max(hi.abs()))) };
+    let y0 = guess.filter(|g| g.is_finite()).unwrap_or(0.0);
+    let (y, evaluations) = newton_increasing(residual, y0, y_tol);
     let ln_x1 = -softplus(-y);
     LoadSharing {
         fluid_fraction: 1.0 / (1.0 + (-y).exp()),
         asperity_fraction: 1.0 / (1.0 + y.exp()),
         logit: y,
         film_thickness: film.ln_film(ln_x1).exp(),
-        evaluations: evals,
+        evaluations,
     }
 }
 
-/// Brent's root finder (inverse quadratic interpolation, secant and bisection, Brent 1973
-/// ch. 4) on a sign-changing bracket [a, b]; returns a point of a final bracket narrower
-/// than 2·tol. Hand-written because a solve must cost well under a microsecond with no
-/// allocation or trait-object overhead; it is ~40 lines and tested below.
-pub fn brent<F: FnMut(f64) -> f64>(mut f: F, a: f64, b: f64, tol: f64) -> f64 {
-    let (mut a, mut b) = (a, b);
-    let (mut fa, mut fb) = (f(a), f(b));
-    if fa == 0.0 {
-        return a;
-    }
-    if fb == 0.0 {
-        return b;
-    }
-    let (mut c, mut fc) = (a, fa);
-    let (mut d, mut e) = (b - a, b - a);
-    for _ in 0..300 {
-        if (fb > 0.0) == (fc > 0.0) {
-            c = a;
-            fc = fa;
-            d = b - a;
-            e = d;
+/// g(r) = r for r ≥ 0, −ln(1 − r) for r < 0: monotone, C¹ at the root, same root.
+/// Towards zero speed r falls like −exp(e^{−1.2 y}) (ln F ≈ −t²/2 with t ∝ x1^{−0.6});
+/// g makes that side nearly linear in y, so Newton does not crawl.
+fn compress(r: f64, dr: f64) -> (f64, f64) {
+    if r >= 0.0 { (r, dr) } else { (-(-r).ln_1p(), dr / (1.0 - r)) }
+}
+
+/// Root of a strictly increasing function f (given with its derivative) that changes sign
+/// on the real line, by Newton's method safeguarded with a bracket.
+///
+/// Every evaluation narrows the bracket [lo, hi] (f(lo) < 0 < f(hi)), so the iteration
+/// cannot leave it. A Newton step that would leave the bracket is replaced by bisection
+/// once the bracket is finite, and by a doubling step (at least 8) while one end is
+/// still infinite. It stops when a step is below `tol(y)`: a Newton step of that size
+/// means an error of order tol² (quadratic convergence), a bisection step of that size
+/// means a bracket of width 2·tol. Returns the root and the number of evaluations.
+pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn(f64) -> f64) -> (f64, u32) {
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    let mut y = y0;
+    let mut evals = 0;
+    while evals < 400 {
+        let (r, dr) = f(y);
+        evals += 1;
+        if r == 0.0 {
+            break;
         }
-        if fc.abs() < fb.abs() {
-            a = b;
-            b = c;
-            c = a;
-            fa = fb;
-            fb = fc;
-            fc = fa;
-        }
-        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * tol;
-        let xm = 0.5 * (c - b);
-        if xm.abs() <= tol1 || fb == 0.0 {
-            return b;
-        }
-        if e.abs() >= tol1 && fa.abs() > fb.abs() {
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * xm * s;
-                q = 1.0 - s;
-            } else {
-                let qq = fa / fc;
-                let rr = fb / fc;
-                p = s * (2.0 * xm * qq * (qq - rr) - (b - a) * (rr - 1.0));
-                q = (qq - 1.0) * (rr - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            }
-            p = p.abs();
-            if 2.0 * p < (3.0 * xm * q - (tol1 * q).abs()).min((e * q).abs()) {
-                e = d;
-                d = p / q;
-            } else {
-                d = xm;
-                e = d;
-            }
+        if r > 0.0 {
+            hi = y;
         } else {
-            d = xm;
-            e = d;
+            lo = y;
         }
-        a = b;
-        fa = fb;
-        b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
-        fb = f(b);
+        // While the bracket is open on the side of the step, a step is capped at
+        // 1000·max(8, |y|), and a failed or flat Newton step becomes a doubling step.
+        let reach = 8f64.max(y.abs());
+        let newton = y - r / dr;
+        let next = if newton > lo && newton < hi && newton.is_finite() && (newton - y).abs() <= 1e3 * reach {
+            newton
+        } else if lo.is_finite() && hi.is_finite() {
+            0.5 * (lo + hi)
+        } else if r > 0.0 {
+            y - reach
+        } else {
+            y + reach
+        };
+        let step = next - y;
+        y = next;
+        if step.abs() <= tol(y) {
+            break;
+        }
     }
-    b
+    (y, evals)
+}
+
+/// Solve `ln F_{3/2}(t) = target` for t (F strictly decreasing: unique root).
+pub fn inverse_ln_f32(target: f64) -> f64 {
+    let f = |t: f64| {
+        let (v, d) = ln_f32_slope(t);
+        (target - v, -d)
+    };
+    newton_increasing(f, 1.0, |t| 1e-14 * (1.0 + t.abs())).0
 }
 
 #[cfg(test)]
@@ -201,13 +178,18 @@ mod tests {
     use super::*;
 
     #[test]
-    fn brent_finds_roots_to_tolerance() {
-        let r = brent(|x| x * x * x - 2.0, 0.0, 3.0, 1e-14);
+    fn newton_finds_roots_to_tolerance() {
+        let tol = |_: f64| 1e-14;
+        let (r, _) = newton_increasing(|x| (x * x * x - 2.0, 3.0 * x * x), 1.0, tol);
         assert!((r - 2f64.cbrt()).abs() < 1e-13);
-        let r = brent(|x| (x - 1e-3).tanh() * 1e6, -50.0, 50.0, 1e-14);
-        assert!((r - 1e-3).abs() < 1e-13);
-        // Step function: pure bisection must still converge.
-        let r = brent(|x| if x < 0.3 { -1.0 } else { 1.0 }, 0.0, 1.0, 1e-12);
+        // Far start, saturating function (Newton alone would diverge): the bracket saves it.
+        let (r, n) = newton_increasing(|x| ((x - 1e-3).atan(), 1.0 / (1.0 + (x - 1e-3).powi(2))), 50.0, tol);
+        assert!((r - 1e-3).abs() < 1e-13, "{r} after {n}");
+        // Step function with a useless derivative: pure bisection must still converge.
+        let (r, _) = newton_increasing(|x| (if x < 0.3 { -1.0 } else { 1.0 }, 1e-300), 0.0, |_| 1e-12);
         assert!((r - 0.3).abs() < 1e-11);
+        // Root far away: y ≈ 1e6 reached by doubling.
+        let (r, n) = newton_increasing(|x| ((x - 1e6) / (1.0 + (x - 1e6).abs()), 1e-9), 0.0, tol);
+        assert!((r - 1e6).abs() < 1e-6, "{r} {n}");
     }
 }
