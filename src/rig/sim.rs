@@ -248,7 +248,7 @@ impl RigSim {
 
     /// Resume from a state taken from a simulator with the same configuration and excitation.
     pub fn set_state(&mut self, state: &RigState) -> Result<(), RigError> {
-        if !(state.time >= state.node.time) || state.node.state.iter().any(|v| !v.is_finite()) {
+        if state.time.is_nan() || state.time < state.node.time || state.node.state.iter().any(|v| !v.is_finite()) {
             return Err(RigError::State(format!("inconsistent state {state:?}")));
         }
         self.node = state.node;
@@ -278,7 +278,7 @@ impl RigSim {
 
     /// Integrate to `t_next` (≥ the current time) with `inputs` held from the current time on.
     pub fn advance_to(&mut self, t_next: f64, inputs: &Inputs) -> Result<(), RigError> {
-        if !(t_next >= self.time) || !t_next.is_finite() {
+        if !t_next.is_finite() || t_next < self.time {
             return Err(RigError::Time { now: self.time, requested: t_next });
         }
         Self::check_inputs(inputs)?;
