@@ -101,17 +101,17 @@ pub struct StribeckTable {
 /// The tabulated variables at one solution.
 #[inline]
 fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
-    [op.fluid_friction_coefficient.ln(), op.logit.asinh(), op.film_thickness.ln()]
+    [op.fluid_friction_coefficient, op.logit.asinh(), op.film_thickness]
 }
 
 /// Weights turning errors in the three tabulated variables into errors of the outputs
 /// (relative μ, absolute shares; ln h_c is the relative error of h_c itself).
 #[inline]
-fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64) {
+fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
     let mu = op.friction_coefficient;
     let cosh_s = op.logit.hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
     let share = op.fluid_load_fraction * op.asperity_load_fraction * cosh_s;
-    (op.fluid_friction_coefficient / mu, mu_c * share / mu, share)
+    (1.0 / mu, mu_c * share / mu, share, 1.0 / op.film_thickness)
 }
 
 impl StribeckTable {
@@ -200,7 +200,7 @@ impl StribeckTable {
             }
         };
         let mut q = vec![[0.0f64; 3]; gx * gz];
-        let mut w = vec![(0.0f64, 0.0f64, 0.0f64); gx * gz];
+        let mut w = vec![(0.0f64, 0.0f64, 0.0f64, 0.0f64); gx * gz];
         for a in 0..gx {
             let load = at(a, nx, x0, hx, env.load_min, env.load_max);
             let mut guess = None;
@@ -237,8 +237,8 @@ impl StribeckTable {
         let (mut ex, mut ez) = (0.0f64, 0.0f64);
         for a in 2..=nx + 2 {
             for b in 2..=nz + 2 {
-                let (wf, wsm, wsx) = w[idx(a, b)];
-                let ind = |d: [f64; 3]| (wf * d[0].abs() + wsm * d[1].abs()).max(wsx * d[1].abs()).max(d[2].abs());
+                let (wf, wsm, wsx, wh) = w[idx(a, b)];
+                let ind = |d: [f64; 3]| (wf * d[0].abs() + wsm * d[1].abs()).max(wsx * d[1].abs()).max(wh * d[2].abs());
                 let dx: [f64; 3] = std::array::from_fn(|v| fourth_difference(std::array::from_fn(|k| q[idx(a + k - 2, b)][v])));
                 let dz: [f64; 3] = std::array::from_fn(|v| fourth_difference(std::array::from_fn(|k| q[idx(a, b + k - 2)][v])));
                 ex = ex.max(ind(dx));
@@ -323,9 +323,12 @@ impl StribeckTable {
         let j = (fz as usize).min(self.nz - 1);
         let (t, u) = (fx - i as f64, fz - j as f64);
         let c = &self.cells[i * self.nz + j].0;
-        let ln_muf = bicubic(&c[0], t, u);
-        let y = bicubic(&c[1], t, u).sinh();
-        let ln_h = bicubic(&c[2], t, u);
+        // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
+        let mu_f = bicubic(&c[0], t, u).max(0.0);
+        // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
+        let es = bicubic(&c[1], t, u).exp();
+        let y = 0.5 * (es - 1.0 / es);
+        let h = bicubic(&c[2], t, u);
         // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
         let (x1, x2) = if y <= 0.0 {
             let e = y.exp();
@@ -336,10 +339,8 @@ impl StribeckTable {
             let x1 = 1.0 / (1.0 + e);
             (x1, e * x1)
         };
-        let mu_f = ln_muf.exp();
         let mu_a = self.mu_c * x2;
         let mu = mu_f + mu_a;
-        let h = ln_h.exp();
         Evaluation {
             load,
             angular_velocity: omega,
