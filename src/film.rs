@@ -24,6 +24,10 @@ const LN_3: f64 = 1.098_612_288_668_109_8; // ln 3
 const C_EI: f64 = 2.621;
 const C_RP: f64 = 1.287;
 const C_EP: f64 = 1.311;
+// ln of the three constants (tests check them against C_*.ln()).
+const LN_C_EI: f64 = 0.9635559243412692;
+const LN_C_RP: f64 = 0.25231392861398955;
+const LN_C_EP: f64 = 0.27079020478156274;
 
 /// Unscaled Moes central film, eq. 12, in logarithms: returns (ln H_C, s) for (ln M, ln L).
 pub fn ln_moes(ln_m: f64, ln_l: f64) -> (f64, f64) {
@@ -36,9 +40,9 @@ pub fn ln_moes(ln_m: f64, ln_l: f64) -> (f64, f64) {
 /// the log-sum-exp weights and through s); it costs no extra transcendental function.
 pub fn ln_moes_slope(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) {
     let ln_hri = LN_3 - ln_m;
-    let ln_hei = C_EI.ln() - ln_m / 5.0;
-    let ln_hrp = C_RP.ln() + 2.0 / 3.0 * ln_l;
-    let ln_hep = C_EP.ln() - ln_m / 8.0 + 0.75 * ln_l;
+    let ln_hei = LN_C_EI - ln_m / 5.0;
+    let ln_hrp = LN_C_RP + 2.0 / 3.0 * ln_l;
+    let ln_hep = LN_C_EP - ln_m / 8.0 + 0.75 * ln_l;
     let q = (ln_hei - ln_hri).exp(); // H_EI/H_RI
     let e2q = (-2.0 * q).exp();
     let s = (7.0 + 8.0 * e2q) / 5.0;
@@ -61,11 +65,19 @@ pub fn ln_moes_slope(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) 
     (ln_h, s, d_ln_h)
 }
 
-/// ln(eᵃ + eᵇ) and the weight eᵃ/(eᵃ + eᵇ) of its first argument.
+/// ln(eᵃ + eᵇ) and the weight eᵃ/(eᵃ + eᵇ) of its first argument, from one exponential.
 fn log_add_exp_weight(a: f64, b: f64) -> (f64, f64) {
-    let l = log_add_exp(a, b);
-    let w = if a == b { 0.5 } else if a == f64::INFINITY { 1.0 } else if b == f64::INFINITY { 0.0 } else { (a - l).exp() };
-    (l, w)
+    if a == b {
+        return (a + std::f64::consts::LN_2, 0.5);
+    }
+    let a_hi = a > b;
+    let (hi, lo) = if a_hi { (a, b) } else { (b, a) };
+    if lo == f64::NEG_INFINITY || hi == f64::INFINITY {
+        return (hi, if a_hi { 1.0 } else { 0.0 });
+    }
+    let e = (lo - hi).exp(); // ≤ 1
+    let w_hi = 1.0 / (1.0 + e);
+    (hi + e.ln_1p(), if a_hi { w_hi } else { e * w_hi })
 }
 
 /// Unscaled Moes central film H_C (eq. 12) and its exponent s.
@@ -209,6 +221,14 @@ mod tests {
                 assert!((d - fd).abs() < 1e-7 * (1.0 + fd.abs()), "({lm},{ll}) dir ({dm},{dl}): {d} vs {fd}");
             }
         }
+    }
+
+    #[test]
+    fn log_constants() {
+        assert_eq!(LN_C_EI, C_EI.ln());
+        assert_eq!(LN_C_RP, C_RP.ln());
+        assert_eq!(LN_C_EP, C_EP.ln());
+        assert_eq!(LN_3, 3f64.ln());
     }
 
     #[test]

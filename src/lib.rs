@@ -24,6 +24,8 @@ pub mod gw;
 pub mod joint;
 pub mod mixed;
 pub mod params;
+pub mod plot;
+pub mod rig;
 pub mod viscosity;
 
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};

@@ -19,7 +19,7 @@
 //! relative, and μ (a smooth function of them) likewise; `tests/solver.rs` checks
 //! 1e-10 against a bisection to the last bit.
 
-use crate::asperity::{softplus, AsperityGroups};
+use crate::asperity::AsperityGroups;
 use crate::film::{ln_scaled_moes, ln_scaled_moes_slope};
 use crate::gw::ln_f32_slope;
 use crate::params::Surface;
@@ -42,6 +42,16 @@ impl FilmGroups {
         let ln_u = (eta0 / (e_eff * r_red)).ln() + u.ln();
         let ln_w = (p_t / (e_eff * r_red * b)).ln();
         Self { ln_m: ln_w - 0.5 * ln_u, ln_l: (alpha * e_eff).ln() + 0.25 * ln_u, ln_scale: r_red.ln() + 0.5 * ln_u }
+    }
+
+    /// The groups at another speed and load: `self` holds them at (u₀, P₀); the ratios are
+    /// given as logarithms. M ∝ P u^{−1/2}, L ∝ u^{1/4}, R' U_Σ^{1/2} ∝ u^{1/2}.
+    pub fn at_ratio(&self, ln_load_ratio: f64, ln_speed_ratio: f64) -> Self {
+        Self {
+            ln_m: self.ln_m + ln_load_ratio - 0.5 * ln_speed_ratio,
+            ln_l: self.ln_l + 0.25 * ln_speed_ratio,
+            ln_scale: self.ln_scale + 0.5 * ln_speed_ratio,
+        }
     }
 
     /// ln h_c (m) from eq. 13 when the fluid carries the share x1 (given as ln x1).
@@ -85,29 +95,49 @@ pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess
         };
     };
     // r(y) and r'(y): every factor's derivative is analytic (film::ln_moes_slope,
-    // gw::ln_f32_slope, AsperityGroups::required_ln_f32_slope).
+    // gw::ln_f32_slope, AsperityGroups::required_ln_f32_slope). The film at the last
+    // evaluated point is kept, so the final h_c costs no further film evaluation.
+    let mut last = (f64::NAN, f64::NAN, f64::NAN); // (y, ln h_c, d ln h_c/dy)
     let residual = |y: f64| {
-        let ln_x1 = -softplus(-y);
-        let ln_x2 = -softplus(y);
-        let x1 = 1.0 / (1.0 + (-y).exp());
-        let x2 = 1.0 / (1.0 + y.exp());
-        let (ln_hs, dln_hs) = ln_scaled_moes_slope(film.ln_m, film.ln_l, ln_x1);
-        let h = (film.ln_scale + ln_hs).exp();
+        let sh = Shares::new(y);
+        let (ln_hs, dln_hs) = ln_scaled_moes_slope(film.ln_m, film.ln_l, sh.ln_x1);
+        let ln_h = film.ln_scale + ln_hs;
+        let dln_h = sh.x2 * dln_hs; // d ln x1/dy = x2
+        last = (y, ln_h, dln_h);
+        let h = ln_h.exp();
         let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
-        let dt_dy = h / s.summit_height_std * x2 * dln_hs; // d ln x1/dy = x2
         let (ln_f, dln_f) = ln_f32_slope(t);
-        let (req, dreq) = asp.required_ln_f32_slope(ln_x2); // d ln x2/dy = −x1
-        compress(ln_f - req, dln_f * dt_dy + dreq * x1)
+        let (req, dreq) = asp.required_ln_f32_slope(sh.ln_x2); // d ln x2/dy = −x1
+        compress(ln_f - req, dln_f * h / s.summit_height_std * dln_h + dreq * sh.x1)
     };
     let y0 = guess.filter(|g| g.is_finite()).unwrap_or(0.0);
     let (y, evaluations) = newton_increasing(residual, y0, y_tol);
-    let ln_x1 = -softplus(-y);
-    LoadSharing {
-        fluid_fraction: 1.0 / (1.0 + (-y).exp()),
-        asperity_fraction: 1.0 / (1.0 + y.exp()),
-        logit: y,
-        film_thickness: film.ln_film(ln_x1).exp(),
-        evaluations,
+    // The last step is below tol (or zero), so first order is exact to O(tol²).
+    let ln_h = last.1 + last.2 * (y - last.0);
+    let sh = Shares::new(y);
+    LoadSharing { fluid_fraction: sh.x1, asperity_fraction: sh.x2, logit: y, film_thickness: ln_h.exp(), evaluations }
+}
+
+/// The two load shares and their logarithms from the logit y, with one exponential and
+/// no cancellation: x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}).
+#[derive(Debug, Clone, Copy)]
+struct Shares {
+    x1: f64,
+    x2: f64,
+    ln_x1: f64,
+    ln_x2: f64,
+}
+
+impl Shares {
+    fn new(y: f64) -> Self {
+        let e = (-y.abs()).exp();
+        let l = e.ln_1p();
+        let (big, small) = (1.0 / (1.0 + e), e / (1.0 + e));
+        if y >= 0.0 {
+            Shares { x1: big, x2: small, ln_x1: -l, ln_x2: -y - l }
+        } else {
+            Shares { x1: small, x2: big, ln_x1: y - l, ln_x2: -l }
+        }
     }
 }
 
@@ -123,14 +153,15 @@ fn compress(r: f64, dr: f64) -> (f64, f64) {
 ///
 /// Every evaluation narrows the bracket [lo, hi] (f(lo) < 0 < f(hi)), so the iteration
 /// cannot leave it. A Newton step that would leave the bracket is replaced by bisection
-/// once the bracket is finite, and by a doubling step (at least 8) while one end is
-/// still infinite. It stops when a step is below `tol(y)`: a Newton step of that size
+/// once the bracket is finite (also when it is not less than half the step before last),
+/// and by a doubling step (at least 8) while one end is still infinite. It stops when a step is below `tol(y)`: a Newton step of that size
 /// means an error of order tol² (quadratic convergence), a bisection step of that size
 /// means a bracket of width 2·tol. Returns the root and the number of evaluations.
 pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn(f64) -> f64) -> (f64, u32) {
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
     let mut y = y0;
     let mut evals = 0;
+    let (mut last_step, mut step_before_last) = (f64::INFINITY, f64::INFINITY);
     while evals < 400 {
         let (r, dr) = f(y);
         evals += 1;
@@ -144,11 +175,16 @@ pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn
         }
         // While the bracket is open on the side of the step, a step is capped at
         // 1000·max(8, |y|), and a failed or flat Newton step becomes a doubling step.
+        // Inside a finite bracket a Newton step must also be less than half the step before
+        // last (Numerical Recipes' rtsafe rule), or the bracket is bisected: the bracket then
+        // at least halves every two evaluations, whatever the shape of f.
         let reach = 8f64.max(y.abs());
         let newton = y - r / dr;
-        let next = if newton > lo && newton < hi && newton.is_finite() && (newton - y).abs() <= 1e3 * reach {
+        let in_bracket = newton > lo && newton < hi && newton.is_finite();
+        let bracketed = lo.is_finite() && hi.is_finite();
+        let next = if in_bracket && (newton - y).abs() <= 1e3 * reach && (!bracketed || (newton - y).abs() <= 0.5 * step_before_last.abs()) {
             newton
-        } else if lo.is_finite() && hi.is_finite() {
+        } else if bracketed {
             0.5 * (lo + hi)
         } else if r > 0.0 {
             y - reach
@@ -156,6 +192,8 @@ pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn
             y + reach
         };
         let step = next - y;
+        step_before_last = last_step;
+        last_step = step;
         y = next;
         if step.abs() <= tol(y) {
             break;
@@ -176,6 +214,30 @@ pub fn inverse_ln_f32(target: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shares_are_exact_complements() {
+        for y in [-800.0, -40.0, -1.0, -1e-300, 0.0, 1e-9, 3.0, 40.0, 800.0, 1e15] {
+            let sh = Shares::new(y);
+            assert!((sh.x1 + sh.x2 - 1.0).abs() <= f64::EPSILON, "{y}");
+            assert!((sh.ln_x1 - sh.ln_x2 - y).abs() <= 4.0 * f64::EPSILON * (1.0 + y.abs()), "{y}");
+            if sh.x1 > 1e-300 {
+                assert!((sh.x1.ln() - sh.ln_x1).abs() < 1e-14 * (1.0 + sh.ln_x1.abs()));
+            }
+            if sh.x2 > 1e-300 {
+                assert!((sh.x2.ln() - sh.ln_x2).abs() < 1e-14 * (1.0 + sh.ln_x2.abs()));
+            }
+        }
+    }
+
+    #[test]
+    fn newton_does_not_cycle_on_an_s_shaped_function() {
+        // Steep in the middle, flat at both ends: plain Newton bounces between the two flanks.
+        let f = |x: f64| (10.0 * (x + 2.0).tanh() + 0.5 * x, 10.0 / (x + 2.0).cosh().powi(2) + 0.5);
+        let (r, n) = newton_increasing(f, 2.0, |_| 1e-14);
+        assert!(f(r).0.abs() < 1e-12, "{r} after {n}");
+        assert!(n < 60, "{n} evaluations");
+    }
 
     #[test]
     fn newton_finds_roots_to_tolerance() {
