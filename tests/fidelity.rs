@@ -268,12 +268,16 @@ fn completed_operating_point_matches_the_full_one() {
         let (op, src) = ev.evaluate_point(load, omega).unwrap();
         let full = j.evaluate(load, omega).unwrap();
         assert!(matches!(src, Source::Table | Source::Rest));
-        // Load- and speed-only quantities are exact.
-        assert_eq!(op.mean_pressure, full.mean_pressure);
-        assert_eq!(op.peak_pressure, full.peak_pressure);
-        assert_eq!(op.contact_half_width, full.contact_half_width);
-        assert_eq!(op.contact_viscosity, full.contact_viscosity);
-        assert_eq!(op.sommerfeld_number, full.sommerfeld_number);
+        // Load- and speed-only quantities: the core's formulas, to rounding.
+        for (a, b) in [
+            (op.mean_pressure, full.mean_pressure),
+            (op.peak_pressure, full.peak_pressure),
+            (op.contact_half_width, full.contact_half_width),
+            (op.contact_viscosity, full.contact_viscosity),
+            (op.sommerfeld_number, full.sommerfeld_number),
+        ] {
+            assert!(a == b || ((a - b) / b).abs() < 1e-13, "{a} vs {b}");
+        }
         assert_eq!(op.sliding_speed, full.sliding_speed);
         assert_eq!(op.regime, full.regime);
         assert_eq!(op.signed_torque().signum(), full.signed_torque().signum());

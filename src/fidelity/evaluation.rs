@@ -124,7 +124,7 @@ pub(crate) fn composite_roughness(joint: &Joint) -> f64 {
 
 /// Complete an [`Evaluation`] into an [`OperatingPoint`]: the Hertz quantities (eq. 6),
 /// Roelands viscosity at p_m (eq. 5) and Sommerfeld number (eq. 20) depend on load and
-/// speed only and are computed exactly, as in [`Joint::evaluate_from`].
+/// speed only and are computed with the core's formulas (equal to [`Joint::evaluate_from`]'s to rounding).
 pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
     let p = joint.params();
     let g = &p.geometry;

@@ -265,7 +265,8 @@ impl Evaluator {
     }
 
     /// Complete an evaluation into an [`OperatingPoint`]: Hertz quantities, Roelands
-    /// viscosity and Sommerfeld number depend on load and speed only and are computed exactly.
+    /// viscosity and Sommerfeld number depend on load and speed only and are computed directly
+    /// (equal to the full solve's to rounding).
     pub fn operating_point(&self, e: &Evaluation) -> OperatingPoint {
         evaluation::complete(self.solver.joint(), e)
     }

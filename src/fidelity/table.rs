@@ -8,15 +8,19 @@
 //! that no polynomial of modest degree follows. The table therefore holds three smooth
 //! functions of (ln P, ln |ω|) and rebuilds the outputs from them exactly:
 //!
-//! * `ln μ_f`, the fluid (Bair–Winer) part of μ — smooth, and positive for ω > 0;
+//! * `μ_f`, the fluid (Bair–Winer) part of μ — smooth (∝ ω in boundary, saturating in
+//!   full film);
 //! * `s = asinh y`, the load sharing: ≈ y near the transition, ≈ ±ln 2|y| far from it,
 //!   so it stays of order ten where y runs from −20 (boundary) to 10⁶ (deep full film);
-//! * `ln h_c`.
+//! * `h_c`.
 //!
-//! and then `y = sinh s`, `x1 = 1/(1 + e^{−y})`, `x2 = 1/(1 + e^{y})` (each without
-//! cancellation), `μ = μ_f + μ_c·x2`, `T = μ·R·P`, `λ = h_c/σ`. The sigmoid, evaluated
-//! exactly, carries the corner; an error δs moves μ by `μ_c·x1·x2·cosh(s)·δs`, which
-//! vanishes both in boundary and in full film.
+//! and then `y = sinh s`, `x1 = 1/(1 + e^{−y})`, `x2 = 1/(1 + e^{y})` (the smaller one as
+//! e^{−|y|} times the larger, without cancellation), `μ = μ_f + μ_c·x2`, `T = μ·R·P`,
+//! `λ = h_c/σ`. The sigmoid, evaluated exactly, carries the corner; an error δs moves μ by
+//! `μ_c·x1·x2·cosh(s)·δs`, which vanishes both in boundary and in full film. (Tabulating
+//! ln μ_f and ln h_c instead gave the same grid sizes on the envelopes tried, but costs two more
+//! exponentials per call; μ_f and h_c vary by less than a few decades over an envelope and
+//! their relative error is what the refinement measures.)
 //!
 //! # Interpolation
 //! A uniform grid in x = ln P and z = ln |ω| covers the envelope exactly (the envelope
@@ -25,7 +29,9 @@
 //! ∂/∂z and ∂²/∂x∂z come from fourth-order central differences of the node values; each
 //! cell stores the 3 × 16 power coefficients of its bicubic Hermite patches
 //! ([`super::hermite`]), so that an evaluation is two logarithms, an index computation,
-//! three Horner evaluations and the exponentials of the reconstruction.
+//! three Horner evaluations and two exponentials (sinh s, the sigmoid). The patches share
+//! values and slopes at the nodes, so the interpolant is C¹ across cells (no jumps for an
+//! adaptive integrator to trip on).
 //!
 //! # Error control
 //! The error of a cubic Hermite patch falls like h⁴ and is largest near the middle of a
@@ -57,7 +63,7 @@ pub const RANDOM_CHECKS: usize = 256;
 /// Initial grid step in ln P and ln |ω|.
 const INITIAL_STEP: f64 = 0.5;
 
-/// One cell: the bicubic coefficients of ln μ_f, asinh y and ln h_c.
+/// One cell: the bicubic coefficients of μ_f, asinh y and h_c.
 #[derive(Debug, Clone, Copy)]
 #[repr(align(64))]
 struct Cell([[f64; 16]; 3]);
@@ -104,8 +110,8 @@ fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
     [op.fluid_friction_coefficient, op.logit.asinh(), op.film_thickness]
 }
 
-/// Weights turning errors in the three tabulated variables into errors of the outputs
-/// (relative μ, absolute shares; ln h_c is the relative error of h_c itself).
+/// Weights turning errors in the three tabulated variables into errors of the outputs:
+/// (1/μ for μ_f, μ_c·x1·x2·cosh s/μ and x1·x2·cosh s for s, 1/h_c for h_c).
 #[inline]
 fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
     let mu = op.friction_coefficient;
