@@ -25,5 +25,8 @@ pub mod mixed;
 pub mod params;
 pub mod viscosity;
 
+pub mod fmi2;
+pub mod fmu;
+
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};
 pub use params::{ParamError, Params};
