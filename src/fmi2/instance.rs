@@ -10,7 +10,7 @@
 //! cannot be computed) moves the instance to the `error` state, from which the
 //! standard allows getters, `fmi2SetFMUstate`, `fmi2Reset` and `fmi2FreeInstance`.
 
-use super::logging::{Category, Logger};
+use super::logging::{show, Category, Logger};
 use super::model::Model;
 use super::snapshot::Snapshot;
 use super::state::State;
@@ -189,24 +189,25 @@ impl Instance {
     /// `fmi2DoStep`: the step must be positive and continue the previous one.
     pub fn do_step(&mut self, t: f64, h: f64) -> CallResult {
         if !t.is_finite() {
-            return Err(format!("currentCommunicationPoint = {t} s is not a finite number"));
+            return Err(format!("currentCommunicationPoint = {} s is not a finite number", show(t)));
         }
         if !(h.is_finite() && h > 0.0) {
-            return Err(format!("communicationStepSize = {h} s must be a finite number > 0 s"));
+            return Err(format!("communicationStepSize = {} s must be a finite number > 0 s", show(h)));
         }
         // The host's time may differ from the sum of its steps by rounding only.
         let tol = 1e-6 * h + 16.0 * f64::EPSILON * t.abs().max(self.time.abs());
         if (t - self.time).abs() > tol {
             return Err(format!(
-                "currentCommunicationPoint = {t} s does not continue the last step, which ended at {} s \
+                "currentCommunicationPoint = {} s does not continue the last step, which ended at {} s \
                  (difference {:e} s exceeds the tolerance {tol:e} s)",
-                self.time,
+                show(t),
+                show(self.time),
                 t - self.time
             ));
         }
         if let Err(e) = self.update_outputs().and_then(|_| self.model.do_step(t, h)) {
             self.state = State::Error;
-            return Err(format!("step from t = {t} s over {h} s failed: {e}"));
+            return Err(format!("step from t = {} s over {} s failed: {e}", show(t), show(h)));
         }
         self.time = t + h;
         Ok(Status::Ok)

@@ -135,3 +135,24 @@ impl Logger {
 pub fn c_text(s: &str) -> CString {
     CString::new(s.replace('\0', "\u{fffd}")).expect("NULs were replaced")
 }
+
+/// A number for messages: plain decimal in the everyday range, scientific
+/// notation for very small or very large magnitudes (5e-324, not 323 zeros).
+pub fn show(v: f64) -> String {
+    if v != 0.0 && v.is_finite() && !(1e-4..1e15).contains(&v.abs()) { format!("{v:e}") } else { format!("{v}") }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::show;
+
+    #[test]
+    fn numbers_in_messages() {
+        assert_eq!(show(5e-324), "5e-324");
+        assert_eq!(show(-5e9), "-5000000000");
+        assert_eq!(show(0.25), "0.25");
+        assert_eq!(show(1e20), "1e20");
+        assert_eq!(show(f64::NAN), "NaN");
+        assert_eq!(show(-0.0), "-0");
+    }
+}

@@ -4,6 +4,7 @@
 use super::variables::{self as var, Output, ANGLE, ANGULAR_VELOCITY, FIRST_OUTPUT, FIRST_PARAM, LOAD, SPEED_BAND};
 use super::zero_speed::{check_band, friction_torque, DEFAULT_SPEED_BAND};
 use crate::fmi2::bytes::{ByteReader, ByteWriter};
+use crate::fmi2::logging::show;
 use crate::fmi2::model::{Model, ModelResult};
 use crate::params::PARAMS;
 use crate::{Joint, Params};
@@ -69,7 +70,10 @@ pub fn outputs(joint: &Joint, load: f64, omega: f64, band: f64) -> ModelResult<O
         if !v.is_finite() {
             let name = &super::INFO.variables[FIRST_OUTPUT + *o as usize].name;
             return Err(format!(
-                "the model gives {name} = {v} at load = {load} N, angular_velocity = {omega} rad/s (outside its numerical range)"
+                "the model gives {name} = {} at load = {} N, angular_velocity = {} rad/s (outside its numerical range)",
+                show(v),
+                show(load),
+                show(omega)
             ));
         }
     }
@@ -148,10 +152,10 @@ impl Model for PinJointModel {
 
     fn check_real(&self, i: usize, v: f64) -> ModelResult<()> {
         match i {
-            ANGLE if !v.is_finite() => Err(format!("input angle = {v} rad is not a finite number")),
-            ANGULAR_VELOCITY if !v.is_finite() => Err(format!("input angular_velocity = {v} rad/s is not a finite number")),
+            ANGLE if !v.is_finite() => Err(format!("input angle = {} rad is not a finite number", show(v))),
+            ANGULAR_VELOCITY if !v.is_finite() => Err(format!("input angular_velocity = {} rad/s is not a finite number", show(v))),
             LOAD if !(v.is_finite() && v >= 0.0) => {
-                Err(format!("input load = {v} N is invalid: the load is a magnitude, a finite number >= 0 N"))
+                Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(v)))
             }
             // Parameters are checked together at fmi2ExitInitializationMode.
             _ => Ok(()),

@@ -47,7 +47,10 @@ pub fn check_band(band: f64) -> Result<(), String> {
     if band.is_finite() && band >= 0.0 {
         Ok(())
     } else {
-        Err(format!("parameter zero_velocity.speed_band = {band} rad/s is out of range: it must be a finite number >= 0"))
+        Err(format!(
+            "parameter zero_velocity.speed_band = {} rad/s is out of range: it must be a finite number >= 0",
+            crate::fmi2::logging::show(band)
+        ))
     }
 }
 
