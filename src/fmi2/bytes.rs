@@ -107,7 +107,7 @@ mod tests {
         assert_eq!(r.f64("d").unwrap().to_bits(), (-0.0f64).to_bits());
         assert_eq!(r.f64("e").unwrap().to_bits(), 0x7ff8_0000_0000_0001);
         r.finish().unwrap();
-        let mut r = ByteReader::new(&w.buf[..5]);
+        let mut r = ByteReader::new(&w.buf[..4]);
         r.u8("a").unwrap();
         let e = r.u32("c").unwrap_err();
         assert!(e.contains("truncated") && e.contains('c'), "{e}");
