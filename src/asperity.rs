@@ -49,6 +49,12 @@ impl AsperityGroups {
         Self { ln_c, ln_k }
     }
 
+    /// The groups at another load: C ∝ P_T^{−1/2}, K ∝ W^{a2−a3} ∝ P_T^{a2−a3}.
+    /// `self` holds the groups at load P₀; `ln_ratio` = ln(P_T/P₀).
+    pub fn at_load_ratio(&self, ln_ratio: f64) -> Self {
+        Self { ln_c: self.ln_c - 0.5 * ln_ratio, ln_k: self.ln_k + (A2 - A3) * ln_ratio }
+    }
+
     /// ln of eq. 18's pressure ratio p_c/p0 with the asperities carrying P_T/γ2,
     /// times 1/γ2 (the right side of eq. 19), for `ln_x2 = ln(1/γ2)`.
     pub fn ln_rhs(&self, ln_x2: f64) -> f64 {
@@ -59,6 +65,13 @@ impl AsperityGroups {
     /// The value ln F_{3/2}((h_c − d_d)/σ_s) that eq. 19 requires when the asperities carry P_T·x2.
     pub fn required_ln_f32(&self, ln_x2: f64) -> f64 {
         self.ln_rhs(ln_x2) - self.ln_c
+    }
+
+    /// [`Self::required_ln_f32`] and its derivative with respect to ln x2.
+    pub fn required_ln_f32_slope(&self, ln_x2: f64) -> (f64, f64) {
+        let z = A4 * (self.ln_k - A2 * ln_x2);
+        let sigmoid = 1.0 / (1.0 + (-z).exp());
+        (ln_x2 + softplus(z) / A4 - self.ln_c, 1.0 - A2 * sigmoid)
     }
 }
 
@@ -121,6 +134,17 @@ mod tests {
             let lhs = gw_pressure(&s_sub, e / gamma2, h);
             let rhs = gelinck_schipper_pressure(&s_sub, p / gamma2, r, e / gamma2, b);
             assert!((lhs / rhs - 1.0).abs() < 1e-10, "γ2={gamma2}: {lhs} vs {rhs}");
+        }
+    }
+
+    #[test]
+    fn load_scaling_matches_direct_groups() {
+        let (s, r, e, b) = setup();
+        let g1 = AsperityGroups::new(&s, 1.0, r, e, b);
+        for p in [3.0, 20e3, 1e6] {
+            let direct = AsperityGroups::new(&s, p, r, e, b);
+            let scaled = g1.at_load_ratio(f64::ln(p));
+            assert!((direct.ln_c - scaled.ln_c).abs() < 1e-13 && (direct.ln_k - scaled.ln_k).abs() < 1e-13);
         }
     }
 

@@ -24,24 +24,60 @@ const LN_3: f64 = 1.098_612_288_668_109_8; // ln 3
 const C_EI: f64 = 2.621;
 const C_RP: f64 = 1.287;
 const C_EP: f64 = 1.311;
-
-/// Moes' exponent s (eq. 12) from ln H_EI − ln H_RI.
-fn moes_s(ln_hei_over_hri: f64) -> f64 {
-    (7.0 + 8.0 * (-2.0 * ln_hei_over_hri.exp()).exp()) / 5.0
-}
+// ln of the three constants (tests check them against C_*.ln()).
+const LN_C_EI: f64 = 0.9635559243412692;
+const LN_C_RP: f64 = 0.25231392861398955;
+const LN_C_EP: f64 = 0.27079020478156274;
 
 /// Unscaled Moes central film, eq. 12, in logarithms: returns (ln H_C, s) for (ln M, ln L).
 pub fn ln_moes(ln_m: f64, ln_l: f64) -> (f64, f64) {
-    let ln_hri = LN_3 - ln_m;
-    let ln_hei = C_EI.ln() - ln_m / 5.0;
-    let ln_hrp = C_RP.ln() + 2.0 / 3.0 * ln_l;
-    let ln_hep = C_EP.ln() - ln_m / 8.0 + 0.75 * ln_l;
-    let s = moes_s(ln_hei - ln_hri);
-    // ln(H_RI^{7/3} + H_EI^{7/3}) and ln(H_RP^{-7/2} + H_EP^{-7/2})
-    let a = log_add_exp(7.0 / 3.0 * ln_hri, 7.0 / 3.0 * ln_hei);
-    let b = log_add_exp(-3.5 * ln_hrp, -3.5 * ln_hep);
-    let ln_h = log_add_exp(3.0 * s / 7.0 * a, -2.0 * s / 7.0 * b) / s;
+    let (ln_h, s, _) = ln_moes_slope(ln_m, ln_l, 0.0, 0.0);
     (ln_h, s)
+}
+
+/// Eq. 12 in logarithms with its directional derivative: returns (ln H_C, s, d ln H_C) for
+/// a change (d ln M, d ln L) = (`dm`, `dl`). The derivative is exact (chain rule through
+/// the log-sum-exp weights and through s); it costs no extra transcendental function.
+pub fn ln_moes_slope(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) {
+    let ln_hri = LN_3 - ln_m;
+    let ln_hei = LN_C_EI - ln_m / 5.0;
+    let ln_hrp = LN_C_RP + 2.0 / 3.0 * ln_l;
+    let ln_hep = LN_C_EP - ln_m / 8.0 + 0.75 * ln_l;
+    let q = (ln_hei - ln_hri).exp(); // H_EI/H_RI
+    let e2q = (-2.0 * q).exp();
+    let s = (7.0 + 8.0 * e2q) / 5.0;
+    // A = ln(H_RI^{7/3} + H_EI^{7/3}), B = ln(H_RP^{-7/2} + H_EP^{-7/2}), with softmax weights.
+    let (a, va) = log_add_exp_weight(7.0 / 3.0 * ln_hri, 7.0 / 3.0 * ln_hei);
+    let (b, ub) = log_add_exp_weight(-3.5 * ln_hrp, -3.5 * ln_hep);
+    let (phi, w1) = log_add_exp_weight(3.0 * s / 7.0 * a, -2.0 * s / 7.0 * b);
+    let ln_h = phi / s;
+    // Directional derivatives of the four ln H's.
+    let d_hri = -dm;
+    let d_hei = -dm / 5.0;
+    let d_hrp = 2.0 / 3.0 * dl;
+    let d_hep = -dm / 8.0 + 0.75 * dl;
+    let ds = 8.0 / 5.0 * e2q * (-2.0 * q) * (d_hei - d_hri);
+    let w2 = 1.0 - w1;
+    let da_term = va * d_hri + (1.0 - va) * d_hei; // (3/7)·dA
+    let db_term = ub * d_hrp + (1.0 - ub) * d_hep; // −(2/7)·dB
+    let terms = if w1 > 0.0 { 3.0 / 7.0 * w1 * a } else { 0.0 } - if w2 > 0.0 { 2.0 / 7.0 * w2 * b } else { 0.0 };
+    let d_ln_h = if ds != 0.0 { ds * (-phi / (s * s) + terms / s) } else { 0.0 } + w1 * da_term + w2 * db_term;
+    (ln_h, s, d_ln_h)
+}
+
+/// ln(eᵃ + eᵇ) and the weight eᵃ/(eᵃ + eᵇ) of its first argument, from one exponential.
+fn log_add_exp_weight(a: f64, b: f64) -> (f64, f64) {
+    if a == b {
+        return (a + std::f64::consts::LN_2, 0.5);
+    }
+    let a_hi = a > b;
+    let (hi, lo) = if a_hi { (a, b) } else { (b, a) };
+    if lo == f64::NEG_INFINITY || hi == f64::INFINITY {
+        return (hi, if a_hi { 1.0 } else { 0.0 });
+    }
+    let e = (lo - hi).exp(); // ≤ 1
+    let w_hi = 1.0 / (1.0 + e);
+    (hi + e.ln_1p(), if a_hi { w_hi } else { e * w_hi })
 }
 
 /// Unscaled Moes central film H_C (eq. 12) and its exponent s.
@@ -59,6 +95,12 @@ pub fn moes(m: f64, l: f64) -> (f64, f64) {
 pub fn ln_scaled_moes(ln_m: f64, ln_l: f64, ln_x1: f64) -> (f64, f64) {
     let (ln_h, s) = ln_moes(ln_m + 0.5 * ln_x1, ln_l + 0.75 * ln_x1);
     (ln_h - 0.5 * ln_x1, s)
+}
+
+/// [`ln_scaled_moes`] and its derivative with respect to ln x1.
+pub fn ln_scaled_moes_slope(ln_m: f64, ln_l: f64, ln_x1: f64) -> (f64, f64) {
+    let (ln_h, _, d) = ln_moes_slope(ln_m + 0.5 * ln_x1, ln_l + 0.75 * ln_x1, 0.5, 0.75);
+    (ln_h - 0.5 * ln_x1, d - 0.5)
 }
 
 /// Eq. 13 in its closed form with the corrected exponents (errata 2 and 3):
@@ -167,6 +209,26 @@ mod tests {
             prev_p = vp;
         }
         assert!(!printed_monotone, "printed exponents unexpectedly monotone");
+    }
+
+    #[test]
+    fn slope_matches_central_differences() {
+        for (lm, ll) in [(0.0, 0.0), (2.3, 2.3), (4.6, 2.3), (6.9, 1.6), (-3.0, -5.0), (15.0, 4.0), (-0.5, 0.7)] {
+            for (dm, dl) in [(1.0, 0.0), (0.0, 1.0), (0.5, 0.75)] {
+                let (_, _, d) = ln_moes_slope(lm, ll, dm, dl);
+                let e = 1e-6;
+                let fd = (ln_moes(lm + e * dm, ll + e * dl).0 - ln_moes(lm - e * dm, ll - e * dl).0) / (2.0 * e);
+                assert!((d - fd).abs() < 1e-7 * (1.0 + fd.abs()), "({lm},{ll}) dir ({dm},{dl}): {d} vs {fd}");
+            }
+        }
+    }
+
+    #[test]
+    fn log_constants() {
+        assert_eq!(LN_C_EI, C_EI.ln());
+        assert_eq!(LN_C_RP, C_RP.ln());
+        assert_eq!(LN_C_EP, C_EP.ln());
+        assert_eq!(LN_3, 3f64.ln());
     }
 
     #[test]

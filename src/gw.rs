@@ -104,46 +104,51 @@ pub fn warm_up() {
     table();
 }
 
-fn ln_g_chebyshev(t: f64) -> f64 {
+/// ln G(t) and d ln G/dt on [T_LO, T_HI]: Clenshaw's recurrence and its derivative
+/// (b_k = 2x b_{k+1} − b_{k+2} + c_k, b'_k = 2 b_{k+1} + 2x b'_{k+1} − b'_{k+2}).
+fn ln_g_chebyshev(t: f64) -> (f64, f64) {
     let tab = table();
     let p = (((t - T_LO) / PANEL) as usize).min(PANELS - 1);
     let a = T_LO + p as f64 * PANEL;
     let x = 2.0 * (t - a) / PANEL - 1.0;
-    // Clenshaw recurrence.
     let c = &tab.coef[p];
-    let (mut b1, mut b2) = (0.0, 0.0);
+    let (mut b1, mut b2, mut d1, mut d2) = (0.0, 0.0, 0.0, 0.0);
     for &ck in c[1..].iter().rev() {
         let b0 = 2.0 * x * b1 - b2 + ck;
+        let d0 = 2.0 * b1 + 2.0 * x * d1 - d2;
         b2 = b1;
         b1 = b0;
+        d2 = d1;
+        d1 = d0;
     }
-    x * b1 - b2 + 0.5 * c[0]
+    (x * b1 - b2 + 0.5 * c[0], (b1 + x * d1 - d2) * 2.0 / PANEL)
 }
 
-/// ln G(t) for t > T_HI by Watson's lemma (relative error < 1e-16 there).
-fn ln_g_large(t: f64) -> f64 {
+/// ln G(t) and its derivative for t > T_HI by Watson's lemma (relative error < 1e-16 there).
+fn ln_g_large(t: f64) -> (f64, f64) {
     let inv_t2 = 1.0 / (t * t);
     let mut term = 1.0;
-    let mut sum = 1.0;
+    let (mut sum, mut dsum) = (1.0, 0.0); // S = Σ c_k t^{−2k}, −t·S' = Σ 2k c_k t^{−2k}
     for k in 0..40 {
         let kf = k as f64;
         term *= -0.5 / (kf + 1.0) * (2.5 + 2.0 * kf) * (3.5 + 2.0 * kf) * inv_t2;
         sum += term;
+        dsum += 2.0 * (kf + 1.0) * term;
         if term.abs() < 1e-17 * sum {
             break;
         }
     }
-    LN_GAMMA_5_2 - 2.5 * t.ln() + sum.ln()
+    (LN_GAMMA_5_2 - 2.5 * t.ln() + sum.ln(), (-2.5 - dsum / sum) / t)
 }
 
-/// ln F(t) for t < T_LO from the moments of the normal distribution.
-fn ln_f_very_negative(t: f64) -> f64 {
+/// ln F(t) and its derivative for t < T_LO from the moments of the normal distribution.
+fn ln_f_very_negative(t: f64) -> (f64, f64) {
     let inv_t2 = 1.0 / (t * t);
     // term_k = C(3/2, 2k)·(2k−1)!!·t^{−2k}
     let mut binom = 1.0; // C(3/2, 2k)
     let mut dfact = 1.0; // (2k−1)!!
     let mut pow = 1.0;
-    let mut sum = 1.0;
+    let (mut sum, mut dsum) = (1.0, 0.0);
     for k in 1..40 {
         let kf = k as f64;
         let m = 2.0 * kf; // C(3/2, m) = C(3/2, m−2)·(3/2−m+2)(3/2−m+1)/((m−1)m)
@@ -152,24 +157,32 @@ fn ln_f_very_negative(t: f64) -> f64 {
         pow *= inv_t2;
         let term = binom * dfact * pow;
         sum += term;
+        dsum += 2.0 * kf * term;
         if term.abs() < 1e-17 * sum {
             break;
         }
     }
-    1.5 * (-t).ln() + sum.ln()
+    (1.5 * (-t).ln() + sum.ln(), (1.5 - dsum / sum) / t)
 }
 
 /// ln F_{3/2}(t), eq. 16, for every finite t; −∞ for t = +∞.
 pub fn ln_f32(t: f64) -> f64 {
+    ln_f32_slope(t).0
+}
+
+/// ln F_{3/2}(t) and d ln F_{3/2}/dt (= −(3/2) F_{1/2}/F_{3/2}, always < 0).
+pub fn ln_f32_slope(t: f64) -> (f64, f64) {
     if t > T_HI {
         if t == f64::INFINITY {
-            return f64::NEG_INFINITY;
+            return (f64::NEG_INFINITY, f64::NEG_INFINITY);
         }
-        ln_g_large(t) - t * t / 2.0 - HALF_LN_2PI
+        let (g, dg) = ln_g_large(t);
+        (g - t * t / 2.0 - HALF_LN_2PI, dg - t)
     } else if t < T_LO {
         ln_f_very_negative(t)
     } else {
-        ln_g_chebyshev(t) - t * t / 2.0 - HALF_LN_2PI
+        let (g, dg) = ln_g_chebyshev(t);
+        (g - t * t / 2.0 - HALF_LN_2PI, dg - t)
     }
 }
 
@@ -178,20 +191,7 @@ pub fn f32(t: f64) -> f64 {
     ln_f32(t).exp()
 }
 
-/// Solve `ln F_{3/2}(t) = target` for t (F is strictly decreasing, so the root is unique).
-/// Bisection-safeguarded secant on a bracket grown from the asymptotes; |Δt| < 1e-13.
-pub fn inverse_ln_f32(target: f64) -> f64 {
-    // Bracket: F decreases from +∞ (t → −∞) to 0 (t → +∞).
-    let mut lo = -1.0;
-    while ln_f32(lo) < target {
-        lo = 2.0 * lo - 1.0;
-    }
-    let mut hi = 1.0;
-    while ln_f32(hi) > target {
-        hi = 2.0 * hi + 1.0;
-    }
-    crate::mixed::brent(|t| ln_f32(t) - target, lo, hi, 1e-13)
-}
+pub use crate::mixed::inverse_ln_f32;
 
 #[cfg(test)]
 mod tests {
@@ -278,6 +278,23 @@ mod tests {
             let reference = ln_f32_reference(t0 + 1e-6) - ln_f32_reference(t0 - 1e-6);
             assert!((fast - reference).abs() < 1e-12, "jump at {t0}: {fast} vs {reference}");
         }
+    }
+
+    #[test]
+    fn slope_matches_differences_and_half_order_identity() {
+        // The slope against central differences of the reference path, in every branch.
+        for t in [-30.0, -10.5, -9.99, -3.0, 0.0, 0.7, 5.5, 11.99, 12.01, 30.0, 200.0] {
+            let (_, d) = ln_f32_slope(t);
+            let e = 1e-5 * (1.0 + f64::abs(t));
+            let fd = (ln_f32_reference(t + e) - ln_f32_reference(t - e)) / (2.0 * e);
+            assert!((d - fd).abs() < 1e-6 * (1.0 + fd.abs()), "t={t}: {d} vs {fd}");
+        }
+        // Closed form at t = 0: F_{1/2}(0) = (2π)^{-1/2} ∫_0^∞ s^{1/2} e^{-s²/2} ds = 2^{-1/4} Γ(3/4)/√(2π).
+        let gamma_3_4 = 1.225_416_702_465_177_6;
+        let f_half_0 = 2f64.powf(-0.25) * gamma_3_4 / (2.0 * PI).sqrt();
+        let (lnf, d) = ln_f32_slope(0.0);
+        // A Chebyshev interpolant's derivative is ~N² less accurate than its values: 1e-12.
+        assert!((d * lnf.exp() / (-1.5 * f_half_0) - 1.0).abs() < 1e-12, "{} vs {}", d * lnf.exp(), -1.5 * f_half_0);
     }
 
     #[test]

@@ -5,7 +5,7 @@ use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
 use crate::mixed::{solve, FilmGroups};
 use crate::params::{ParamError, Params};
-use crate::viscosity::{limiting_shear_stress, roelands};
+use crate::viscosity::{limiting_shear_stress, roelands_with};
 use serde::Serialize;
 use std::f64::consts::PI;
 use thiserror::Error;
@@ -14,7 +14,7 @@ use thiserror::Error;
 pub const REGIME_SHARE: f64 = 0.01;
 
 /// Lubrication regime, named from the load shares.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Regime {
     /// The fluid carries less than [`REGIME_SHARE`] of the load.
@@ -113,6 +113,14 @@ pub struct Joint {
     r_red: f64,
     e_eff: f64,
     roughness: f64,
+    /// Eq. 19's groups at P_T = 1 N.
+    asp_unit: AsperityGroups,
+    /// Eq. 12's groups at u = 1 m/s, P_T = 1 N.
+    film_unit: FilmGroups,
+    /// Hertz quantities at P_T = 1 N (a, p_m and p0 all scale with √P_T).
+    hertz_unit: crate::contact::Hertz,
+    /// ln(η∞/η0) for eq. 5.
+    ln_eta_ratio: f64,
 }
 
 impl Joint {
@@ -130,7 +138,18 @@ impl Joint {
             });
         }
         crate::gw::warm_up();
-        Ok(Self { params: *params, r_red: reduced_radius(&params.geometry), e_eff: effective_modulus(&params.materials), roughness })
+        let (g, lub) = (&params.geometry, &params.lubricant);
+        let (r_red, e_eff) = (reduced_radius(g), effective_modulus(&params.materials));
+        Ok(Self {
+            params: *params,
+            r_red,
+            e_eff,
+            roughness,
+            asp_unit: AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length),
+            film_unit: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, lub.viscosity, lub.pressure_viscosity_coefficient),
+            hertz_unit: hertz(1.0, r_red, e_eff, g.bush_length),
+            ln_eta_ratio: (lub.roelands_viscosity_limit / lub.viscosity).ln(),
+        })
     }
 
     pub fn params(&self) -> &Params {
@@ -165,16 +184,21 @@ impl Joint {
         }
         let p = &self.params;
         let (g, lub) = (&p.geometry, &p.lubricant);
-        let hz = hertz(load, self.r_red, self.e_eff, g.bush_length);
+        // Eq. 6 scaled from 1 N: a, p_m, p0 ∝ √P_T.
+        let sqrt_p = load.sqrt();
+        let hz = crate::contact::Hertz {
+            half_width: self.hertz_unit.half_width * sqrt_p,
+            mean_pressure: self.hertz_unit.mean_pressure * sqrt_p,
+            peak_pressure: self.hertz_unit.peak_pressure * sqrt_p,
+        };
         let u = omega.abs() * g.pin_radius;
-        let asp = AsperityGroups::new(&p.surface, load, self.r_red, self.e_eff, g.bush_length);
-        let film = (u > 0.0).then(|| {
-            FilmGroups::new(u, self.r_red, self.e_eff, g.bush_length, load, lub.viscosity, lub.pressure_viscosity_coefficient)
-        });
+        let ln_p = load.ln();
+        let asp = self.asp_unit.at_load_ratio(ln_p);
+        let film = (u > 0.0).then(|| self.film_unit.at_ratio(ln_p, u.ln()));
         let ls = solve(film.as_ref(), &asp, &p.surface, guess);
 
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
-        let eta = roelands(lub, hz.mean_pressure);
+        let eta = roelands_with(lub, hz.mean_pressure, self.ln_eta_ratio);
         let tau_l = limiting_shear_stress(lub, hz.mean_pressure);
         let mu_fluid = tau_l / hz.mean_pressure * -(-eta * u / (tau_l * ls.film_thickness)).exp_m1();
         // Eq. 8: Q_C = μ_c P_C = μ_c P_T/γ2.

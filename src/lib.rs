@@ -23,6 +23,8 @@ pub mod gw;
 pub mod joint;
 pub mod mixed;
 pub mod params;
+pub mod plot;
+pub mod rig;
 pub mod viscosity;
 
 pub mod fmi2;

@@ -19,9 +19,9 @@
 //! relative, and μ (a smooth function of them) likewise; `tests/solver.rs` checks
 //! 1e-10 against a bisection to the last bit.
 
-use crate::asperity::{softplus, AsperityGroups};
-use crate::film::ln_scaled_moes;
-use crate::gw::{inverse_ln_f32, ln_f32};
+use crate::asperity::AsperityGroups;
+use crate::film::{ln_scaled_moes, ln_scaled_moes_slope};
+use crate::gw::ln_f32_slope;
 use crate::params::Surface;
 
 /// The speed-dependent film groups of eq. 12, in logarithms.
@@ -42,6 +42,16 @@ impl FilmGroups {
         let ln_u = (eta0 / (e_eff * r_red)).ln() + u.ln();
         let ln_w = (p_t / (e_eff * r_red * b)).ln();
         Self { ln_m: ln_w - 0.5 * ln_u, ln_l: (alpha * e_eff).ln() + 0.25 * ln_u, ln_scale: r_red.ln() + 0.5 * ln_u }
+    }
+
+    /// The groups at another speed and load: `self` holds them at (u₀, P₀); the ratios are
+    /// given as logarithms. M ∝ P u^{−1/2}, L ∝ u^{1/4}, R' U_Σ^{1/2} ∝ u^{1/2}.
+    pub fn at_ratio(&self, ln_load_ratio: f64, ln_speed_ratio: f64) -> Self {
+        Self {
+            ln_m: self.ln_m + ln_load_ratio - 0.5 * ln_speed_ratio,
+            ln_l: self.ln_l + 0.25 * ln_speed_ratio,
+            ln_scale: self.ln_scale + 0.5 * ln_speed_ratio,
+        }
     }
 
     /// ln h_c (m) from eq. 13 when the fluid carries the share x1 (given as ln x1).
@@ -65,15 +75,15 @@ pub struct LoadSharing {
     pub evaluations: u32,
 }
 
-/// Bracket half-width tolerance on the logit.
+/// Step tolerance on the logit.
 pub fn y_tol(y: f64) -> f64 {
     1e-13 + 4.0 * f64::EPSILON * y.abs()
 }
 
 /// Solve eqs. 9, 13, 19. `film = None` means zero speed: then 1/γ1 = 0 exactly, 1/γ2 = 1,
 /// and h_c comes from eq. 19 alone (the limit of the moving case, MODEL_NOTES).
+/// `guess` is the logit of a nearby solution, if any.
 pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>) -> LoadSharing {
-    let t_of_h = |h: f64| (h - s.summit_mean_plane_offset) / s.summit_height_std;
     let Some(film) = film else {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
         return LoadSharing {
@@ -84,118 +94,121 @@ pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess
             evaluations: 0,
         };
     };
-    let mut evals = 0u32;
-    let mut r = |y: f64| {
-        evals += 1;
-        let ln_x1 = -softplus(-y);
-        let ln_x2 = -softplus(y);
-        ln_f32(t_of_h(film.ln_film(ln_x1).exp())) - asp.required_ln_f32(ln_x2)
+    // r(y) and r'(y): every factor's derivative is analytic (film::ln_moes_slope,
+    // gw::ln_f32_slope, AsperityGroups::required_ln_f32_slope). The film at the last
+    // evaluated point is kept, so the final h_c costs no further film evaluation.
+    let mut last = (f64::NAN, f64::NAN, f64::NAN); // (y, ln h_c, d ln h_c/dy)
+    let residual = |y: f64| {
+        let sh = Shares::new(y);
+        let (ln_hs, dln_hs) = ln_scaled_moes_slope(film.ln_m, film.ln_l, sh.ln_x1);
+        let ln_h = film.ln_scale + ln_hs;
+        let dln_h = sh.x2 * dln_hs; // d ln x1/dy = x2
+        last = (y, ln_h, dln_h);
+        let h = ln_h.exp();
+        let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
+        let (ln_f, dln_f) = ln_f32_slope(t);
+        let (req, dreq) = asp.required_ln_f32_slope(sh.ln_x2); // d ln x2/dy = −x1
+        compress(ln_f - req, dln_f * h / s.summit_height_std * dln_h + dreq * sh.x1)
     };
-    // Bracket by stepping outward from the guess.
-    let y0 = match guess {
-        Some(g) if g.is_finite() => g,
-        _ => 0.0,
-    };
-    let r0 = r(y0);
-    let (lo, hi) = if r0 == 0.0 {
-        (y0, y0)
-    } else {
-        let dir = if r0 > 0.0 { -1.0 } else { 1.0 };
-        let mut step = if guess.is_some() { 0.05 } else { 4.0 };
-        let mut a = y0;
-        loop {
-            let b = y0 + dir * step;
-            let rb = r(b);
-            if (rb > 0.0) != (r0 > 0.0) || rb == 0.0 {
-                break if dir > 0.0 { (a, b) } else { (b, a) };
-            }
-            a = b;
-            step *= 4.0;
-            if step > 1e4 {
-                // |y| > 1e4 means a share below e^{-10000}: it is zero in f64.
-                break if dir > 0.0 { (b, b) } else { (b, b) };
-            }
+    let y0 = guess.filter(|g| g.is_finite()).unwrap_or(0.0);
+    let (y, evaluations) = newton_increasing(residual, y0, y_tol);
+    // The last step is below tol (or zero), so first order is exact to O(tol²).
+    let ln_h = last.1 + last.2 * (y - last.0);
+    let sh = Shares::new(y);
+    LoadSharing { fluid_fraction: sh.x1, asperity_fraction: sh.x2, logit: y, film_thickness: ln_h.exp(), evaluations }
+}
+
+/// The two load shares and their logarithms from the logit y, with one exponential and
+/// no cancellation: x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}).
+#[derive(Debug, Clone, Copy)]
+struct Shares {
+    x1: f64,
+    x2: f64,
+    ln_x1: f64,
+    ln_x2: f64,
+}
+
+impl Shares {
+    fn new(y: f64) -> Self {
+        let e = (-y.abs()).exp();
+        let l = e.ln_1p();
+        let (big, small) = (1.0 / (1.0 + e), e / (1.0 + e));
+        if y >= 0.0 {
+            Shares { x1: big, x2: small, ln_x1: -l, ln_x2: -y - l }
+        } else {
+            Shares { x1: small, x2: big, ln_x1: y - l, ln_x2: -l }
         }
-    };
-    let y = if lo == hi { lo } else { brent(&mut r, lo, hi, y_tol(lo.abs().max(hi.abs()))) };
-    let ln_x1 = -softplus(-y);
-    LoadSharing {
-        fluid_fraction: 1.0 / (1.0 + (-y).exp()),
-        asperity_fraction: 1.0 / (1.0 + y.exp()),
-        logit: y,
-        film_thickness: film.ln_film(ln_x1).exp(),
-        evaluations: evals,
     }
 }
 
-/// Brent's root finder (inverse quadratic interpolation, secant and bisection, Brent 1973
-/// ch. 4) on a sign-changing bracket [a, b]; returns a point of a final bracket narrower
-/// than 2·tol. Hand-written because a solve must cost well under a microsecond with no
-/// allocation or trait-object overhead; it is ~40 lines and tested below.
-pub fn brent<F: FnMut(f64) -> f64>(mut f: F, a: f64, b: f64, tol: f64) -> f64 {
-    let (mut a, mut b) = (a, b);
-    let (mut fa, mut fb) = (f(a), f(b));
-    if fa == 0.0 {
-        return a;
-    }
-    if fb == 0.0 {
-        return b;
-    }
-    let (mut c, mut fc) = (a, fa);
-    let (mut d, mut e) = (b - a, b - a);
-    for _ in 0..300 {
-        if (fb > 0.0) == (fc > 0.0) {
-            c = a;
-            fc = fa;
-            d = b - a;
-            e = d;
+/// g(r) = r for r ≥ 0, −ln(1 − r) for r < 0: monotone, C¹ at the root, same root.
+/// Towards zero speed r falls like −exp(e^{−1.2 y}) (ln F ≈ −t²/2 with t ∝ x1^{−0.6});
+/// g makes that side nearly linear in y, so Newton does not crawl.
+fn compress(r: f64, dr: f64) -> (f64, f64) {
+    if r >= 0.0 { (r, dr) } else { (-(-r).ln_1p(), dr / (1.0 - r)) }
+}
+
+/// Root of a strictly increasing function f (given with its derivative) that changes sign
+/// on the real line, by Newton's method safeguarded with a bracket.
+///
+/// Every evaluation narrows the bracket [lo, hi] (f(lo) < 0 < f(hi)), so the iteration
+/// cannot leave it. A Newton step that would leave the bracket is replaced by bisection
+/// once the bracket is finite (also when it is not less than half the step before last),
+/// and by a doubling step (at least 8) while one end is still infinite. It stops when a step is below `tol(y)`: a Newton step of that size
+/// means an error of order tol² (quadratic convergence), a bisection step of that size
+/// means a bracket of width 2·tol. Returns the root and the number of evaluations.
+pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn(f64) -> f64) -> (f64, u32) {
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    let mut y = y0;
+    let mut evals = 0;
+    let (mut last_step, mut step_before_last) = (f64::INFINITY, f64::INFINITY);
+    while evals < 400 {
+        let (r, dr) = f(y);
+        evals += 1;
+        if r == 0.0 {
+            break;
         }
-        if fc.abs() < fb.abs() {
-            a = b;
-            b = c;
-            c = a;
-            fa = fb;
-            fb = fc;
-            fc = fa;
-        }
-        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * tol;
-        let xm = 0.5 * (c - b);
-        if xm.abs() <= tol1 || fb == 0.0 {
-            return b;
-        }
-        if e.abs() >= tol1 && fa.abs() > fb.abs() {
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * xm * s;
-                q = 1.0 - s;
-            } else {
-                let qq = fa / fc;
-                let rr = fb / fc;
-                p = s * (2.0 * xm * qq * (qq - rr) - (b - a) * (rr - 1.0));
-                q = (qq - 1.0) * (rr - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            }
-            p = p.abs();
-            if 2.0 * p < (3.0 * xm * q - (tol1 * q).abs()).min((e * q).abs()) {
-                e = d;
-                d = p / q;
-            } else {
-                d = xm;
-                e = d;
-            }
+        if r > 0.0 {
+            hi = y;
         } else {
-            d = xm;
-            e = d;
+            lo = y;
         }
-        a = b;
-        fa = fb;
-        b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
-        fb = f(b);
+        // While the bracket is open on the side of the step, a step is capped at
+        // 1000·max(8, |y|), and a failed or flat Newton step becomes a doubling step.
+        // Inside a finite bracket a Newton step must also be less than half the step before
+        // last (Numerical Recipes' rtsafe rule), or the bracket is bisected: the bracket then
+        // at least halves every two evaluations, whatever the shape of f.
+        let reach = 8f64.max(y.abs());
+        let newton = y - r / dr;
+        let in_bracket = newton > lo && newton < hi && newton.is_finite();
+        let bracketed = lo.is_finite() && hi.is_finite();
+        let next = if in_bracket && (newton - y).abs() <= 1e3 * reach && (!bracketed || (newton - y).abs() <= 0.5 * step_before_last.abs()) {
+            newton
+        } else if bracketed {
+            0.5 * (lo + hi)
+        } else if r > 0.0 {
+            y - reach
+        } else {
+            y + reach
+        };
+        let step = next - y;
+        step_before_last = last_step;
+        last_step = step;
+        y = next;
+        if step.abs() <= tol(y) {
+            break;
+        }
     }
-    b
+    (y, evals)
+}
+
+/// Solve `ln F_{3/2}(t) = target` for t (F strictly decreasing: unique root).
+pub fn inverse_ln_f32(target: f64) -> f64 {
+    let f = |t: f64| {
+        let (v, d) = ln_f32_slope(t);
+        (target - v, -d)
+    };
+    newton_increasing(f, 1.0, |t| 1e-14 * (1.0 + t.abs())).0
 }
 
 #[cfg(test)]
@@ -203,13 +216,42 @@ mod tests {
     use super::*;
 
     #[test]
-    fn brent_finds_roots_to_tolerance() {
-        let r = brent(|x| x * x * x - 2.0, 0.0, 3.0, 1e-14);
+    fn shares_are_exact_complements() {
+        for y in [-800.0, -40.0, -1.0, -1e-300, 0.0, 1e-9, 3.0, 40.0, 800.0, 1e15] {
+            let sh = Shares::new(y);
+            assert!((sh.x1 + sh.x2 - 1.0).abs() <= f64::EPSILON, "{y}");
+            assert!((sh.ln_x1 - sh.ln_x2 - y).abs() <= 4.0 * f64::EPSILON * (1.0 + y.abs()), "{y}");
+            if sh.x1 > 1e-300 {
+                assert!((sh.x1.ln() - sh.ln_x1).abs() < 1e-14 * (1.0 + sh.ln_x1.abs()));
+            }
+            if sh.x2 > 1e-300 {
+                assert!((sh.x2.ln() - sh.ln_x2).abs() < 1e-14 * (1.0 + sh.ln_x2.abs()));
+            }
+        }
+    }
+
+    #[test]
+    fn newton_does_not_cycle_on_an_s_shaped_function() {
+        // Steep in the middle, flat at both ends: plain Newton bounces between the two flanks.
+        let f = |x: f64| (10.0 * (x + 2.0).tanh() + 0.5 * x, 10.0 / (x + 2.0).cosh().powi(2) + 0.5);
+        let (r, n) = newton_increasing(f, 2.0, |_| 1e-14);
+        assert!(f(r).0.abs() < 1e-12, "{r} after {n}");
+        assert!(n < 60, "{n} evaluations");
+    }
+
+    #[test]
+    fn newton_finds_roots_to_tolerance() {
+        let tol = |_: f64| 1e-14;
+        let (r, _) = newton_increasing(|x| (x * x * x - 2.0, 3.0 * x * x), 1.0, tol);
         assert!((r - 2f64.cbrt()).abs() < 1e-13);
-        let r = brent(|x| (x - 1e-3).tanh() * 1e6, -50.0, 50.0, 1e-14);
-        assert!((r - 1e-3).abs() < 1e-13);
-        // Step function: pure bisection must still converge.
-        let r = brent(|x| if x < 0.3 { -1.0 } else { 1.0 }, 0.0, 1.0, 1e-12);
+        // Far start, saturating function (Newton alone would diverge): the bracket saves it.
+        let (r, n) = newton_increasing(|x| ((x - 1e-3).atan(), 1.0 / (1.0 + (x - 1e-3).powi(2))), 50.0, tol);
+        assert!((r - 1e-3).abs() < 1e-13, "{r} after {n}");
+        // Step function with a useless derivative: pure bisection must still converge.
+        let (r, _) = newton_increasing(|x| (if x < 0.3 { -1.0 } else { 1.0 }, 1e-300), 0.0, |_| 1e-12);
         assert!((r - 0.3).abs() < 1e-11);
+        // Root far away: y ≈ 1e6 reached by doubling.
+        let (r, n) = newton_increasing(|x| ((x - 1e6) / (1.0 + (x - 1e6).abs()), 1e-9), 0.0, tol);
+        assert!((r - 1e6).abs() < 1e-6, "{r} {n}");
     }
 }

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Every test of the project, from a fresh machine: installs what it needs (Debian
+# packages, a Python virtualenv with the pinned harness), runs the Rust tests, builds
+# the FMUs and drives them from Python (fmpy) and under valgrind.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# --- system packages -------------------------------------------------------------
+debs=()
+dpkg -s libclang-dev >/dev/null 2>&1 || debs+=(libclang-dev)   # bindgen for the `fmi` crate (2nd importer)
+command -v valgrind >/dev/null 2>&1 || debs+=(valgrind)          # memory check of the FMU
+python3 -c 'import ensurepip' >/dev/null 2>&1 || debs+=(python3-venv)
+if [ ${#debs[@]} -gt 0 ]; then
+  SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${debs[@]}" >/dev/null
+fi
+
+# --- Rust: unit, integration, property and doc tests ------------------------------
+cargo test --workspace --release
+
+# --- FMUs ---------------------------------------------------------------------------
+cargo run --release -p fmu_build
+
+# --- Python harness (fmpy) ----------------------------------------------------------
+if [ -d tests/python ]; then
+  [ -x .venv/bin/python ] || python3 -m venv .venv
+  .venv/bin/pip install -q --disable-pip-version-check -r requirements-test.txt
+  .venv/bin/python -m pytest -q tests/python
+fi

@@ -1,0 +1,181 @@
+//! Pieces shared by the subcommands: the `--params` flag, speed flags (rad/s or rpm),
+//! the result columns of CSV output, number formatting and the rig's operating region.
+
+use super::error::{CliError, Result};
+use clap::Args;
+use pinjoint::{Joint, OperatingPoint, Params};
+use std::f64::consts::PI;
+use std::path::PathBuf;
+
+/// rad/s per rpm.
+pub const RAD_S_PER_RPM: f64 = 2.0 * PI / 60.0;
+
+/// The paper's rig experiments (section 4.4): ±40° sine strokes at up to 1 Hz under 5–60 kN.
+pub const RIG_AMPLITUDE_DEG: f64 = 40.0;
+pub const RIG_MAX_FREQUENCY_HZ: f64 = 1.0;
+pub const RIG_LOAD_RANGE_N: (f64, f64) = (5e3, 60e3);
+/// The paper's simulated range (section 3.2): 1 to 800 rpm.
+pub const PAPER_RPM_RANGE: (f64, f64) = (1.0, 800.0);
+
+/// Peak angular velocity of the fastest rig stroke, 2π f A (≈ 4.39 rad/s ≈ 41.9 rpm).
+pub fn rig_peak_speed() -> f64 {
+    2.0 * PI * RIG_MAX_FREQUENCY_HZ * RIG_AMPLITUDE_DEG.to_radians()
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct ParamsArg {
+    /// Parameter file (TOML, SI units; any subset of keys, the rest keep the paper's values).
+    /// `pinjoint params` prints a complete one to start from.
+    #[arg(long, value_name = "FILE")]
+    pub params: Option<PathBuf>,
+}
+
+impl ParamsArg {
+    pub fn load(&self) -> Result<Params> {
+        match &self.params {
+            None => Ok(Params::default()),
+            Some(path) => {
+                let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+                Params::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
+            }
+        }
+    }
+    pub fn joint(&self) -> Result<Joint> {
+        let params = self.load()?;
+        Joint::new(&params).map_err(|source| match &self.params {
+            Some(path) => CliError::ParamFile { path: path.clone(), source },
+            None => CliError::Params(source),
+        })
+    }
+}
+
+/// A value given on the command line must be finite.
+pub fn finite(name: &str, value: f64, unit: &str) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(CliError::Invalid(format!("{name} = {value} {unit} is not a finite number")))
+    }
+}
+
+/// A value given on the command line must be finite and > 0.
+pub fn positive(name: &str, value: f64, unit: &str) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(CliError::Invalid(format!("{name} = {value} {unit} is invalid: it must be a finite number > 0 {unit}")))
+    }
+}
+
+/// `n` values from `lo` to `hi` (both included), evenly spaced in log.
+pub fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![lo];
+    }
+    let (a, b) = (lo.ln(), hi.ln());
+    (0..n)
+        .map(|i| match i {
+            0 => lo,
+            _ if i == n - 1 => hi,
+            _ => (a + (b - a) * i as f64 / (n - 1) as f64).exp(),
+        })
+        .collect()
+}
+
+/// `n` values from `lo` to `hi` (both included), evenly spaced.
+pub fn lin_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![lo];
+    }
+    (0..n).map(|i| if i == n - 1 { hi } else { lo + (hi - lo) * i as f64 / (n - 1) as f64 }).collect()
+}
+
+/// The model's outputs in CSV files, after the input columns (SI units).
+pub const RESULT_COLUMNS: [&str; 10] = [
+    "friction_coefficient",
+    "torque",
+    "film_thickness",
+    "lambda_ratio",
+    "fluid_load_fraction",
+    "asperity_load_fraction",
+    "mean_pressure",
+    "contact_half_width",
+    "sommerfeld_number",
+    "regime",
+];
+
+/// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
+/// `BrokenPipe`, which ends the program quietly).
+pub fn csv_io(e: csv::Error) -> std::io::Error {
+    match e.into_kind() {
+        csv::ErrorKind::Io(e) => e,
+        other => std::io::Error::other(format!("{other:?}")),
+    }
+}
+
+/// A number in CSV: the shortest text that parses back to the same f64 (never rounded).
+pub fn exact(v: f64) -> String {
+    format!("{v:?}")
+}
+
+/// The values of [`RESULT_COLUMNS`] for one point, at full precision.
+pub fn result_fields(op: &OperatingPoint) -> [String; 10] {
+    [
+        exact(op.friction_coefficient),
+        exact(op.torque),
+        exact(op.film_thickness),
+        exact(op.lambda_ratio),
+        exact(op.fluid_load_fraction),
+        exact(op.asperity_load_fraction),
+        exact(op.mean_pressure),
+        exact(op.contact_half_width),
+        exact(op.sommerfeld_number),
+        op.regime.as_str().to_string(),
+    ]
+}
+
+/// A number for people: 6 significant digits, fixed or scientific as fits.
+pub fn readable(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let a = v.abs();
+    if (1e-3..1e7).contains(&a) {
+        let decimals = (5 - a.log10().floor() as i32).clamp(0, 8) as usize;
+        let s = format!("{v:.decimals$}");
+        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
+    } else {
+        let s = format!("{v:.5e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rig_peak_speed_is_about_42_rpm() {
+        assert!((rig_peak_speed() / RAD_S_PER_RPM - 41.888).abs() < 1e-3);
+    }
+
+    #[test]
+    fn spaces_hit_their_ends_exactly() {
+        let v = log_space(0.01, 1000.0, 6);
+        assert_eq!((v[0], v[5]), (0.01, 1000.0));
+        assert!((v[2] - 1.0).abs() < 1e-12);
+        assert_eq!(lin_space(5e3, 60e3, 12)[1], 10e3);
+    }
+
+    #[test]
+    fn exact_round_trips_and_readable_rounds() {
+        for v in [0.1 + 0.2, 1e-300, 123456.789e10, -2.5e-7] {
+            assert_eq!(exact(v).parse::<f64>().unwrap(), v);
+        }
+        assert_eq!(readable(0.118871234), "0.118871");
+        assert_eq!(readable(20000.0), "20000");
+        assert_eq!(readable(3.31024e-6), "3.31024e-6");
+        assert_eq!(readable(4.134e-4), "4.134e-4");
+    }
+}

@@ -1,0 +1,149 @@
+//! `pinjoint point`: one operating point as a table or one JSON object.
+
+use super::common::{finite, readable, ParamsArg, RAD_S_PER_RPM};
+use super::error::Result;
+use super::output::to_stdout;
+use clap::Args;
+use pinjoint::OperatingPoint;
+use serde::Serialize;
+
+#[derive(Args, Debug)]
+#[command(
+    about = "Evaluate the model at one load and speed",
+    long_about = "Evaluate the mixed-lubrication model at one operating point and print every \
+quantity (SI units) as a table, or with --json as one JSON object.\n\
+The speed is the pin's angular velocity, in rad/s (--speed) or rpm (--rpm); the model \
+depends on its magnitude.\n\n\
+Examples:\n  \
+pinjoint point --load 20000 --speed 0.2\n  \
+pinjoint point --load 60000 --rpm 42 --json\n  \
+pinjoint point --load 5000 --rpm 800 --params my-joint.toml"
+)]
+pub struct PointCmd {
+    /// Normal load on the joint P_T, in N (newtons; 20000 = 20 kN); must be > 0
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub load: f64,
+    #[command(flatten)]
+    pub speed: SpeedArg,
+    #[command(flatten)]
+    pub params: ParamsArg,
+    /// Print one JSON object (keys in SI units) instead of the table
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args, Debug, Clone)]
+#[group(required = true, multiple = false)]
+pub struct SpeedArg {
+    /// Angular velocity of the pin, in rad/s (the model uses its magnitude)
+    #[arg(long, value_name = "RAD/S", allow_negative_numbers = true)]
+    pub speed: Option<f64>,
+    /// Angular velocity of the pin, in rpm (revolutions per minute; 1 rpm = 2π/60 rad/s)
+    #[arg(long, value_name = "RPM", allow_negative_numbers = true)]
+    pub rpm: Option<f64>,
+}
+
+impl SpeedArg {
+    /// The angular velocity in rad/s.
+    pub fn rad_per_s(&self) -> Result<f64> {
+        match (self.speed, self.rpm) {
+            (Some(w), _) => finite("speed", w, "rad/s"),
+            (None, Some(n)) => Ok(finite("speed", n, "rpm")? * RAD_S_PER_RPM),
+            (None, None) => unreachable!("clap requires one of --speed and --rpm"),
+        }
+    }
+}
+
+/// The JSON form of a point: the documented keys first, then extras (all SI).
+#[derive(Serialize)]
+pub struct PointJson {
+    pub load: f64,
+    /// rad/s, as given (the model uses |speed|).
+    pub speed: f64,
+    pub friction_coefficient: f64,
+    pub torque: f64,
+    pub film_thickness: f64,
+    pub lambda_ratio: f64,
+    pub fluid_load_fraction: f64,
+    pub asperity_load_fraction: f64,
+    pub mean_pressure: f64,
+    pub contact_half_width: f64,
+    pub sommerfeld_number: f64,
+    pub regime: &'static str,
+    pub sliding_speed: f64,
+    pub peak_pressure: f64,
+    pub contact_viscosity: f64,
+    pub fluid_friction_coefficient: f64,
+    pub asperity_friction_coefficient: f64,
+}
+
+impl From<&OperatingPoint> for PointJson {
+    fn from(o: &OperatingPoint) -> Self {
+        Self {
+            load: o.load,
+            speed: o.angular_velocity,
+            friction_coefficient: o.friction_coefficient,
+            torque: o.torque,
+            film_thickness: o.film_thickness,
+            lambda_ratio: o.lambda_ratio,
+            fluid_load_fraction: o.fluid_load_fraction,
+            asperity_load_fraction: o.asperity_load_fraction,
+            mean_pressure: o.mean_pressure,
+            contact_half_width: o.contact_half_width,
+            sommerfeld_number: o.sommerfeld_number,
+            regime: o.regime.as_str(),
+            sliding_speed: o.sliding_speed,
+            peak_pressure: o.peak_pressure,
+            contact_viscosity: o.contact_viscosity,
+            fluid_friction_coefficient: o.fluid_friction_coefficient,
+            asperity_friction_coefficient: o.asperity_friction_coefficient,
+        }
+    }
+}
+
+/// The table rows: quantity, value, unit.
+pub fn table(o: &OperatingPoint) -> Vec<(&'static str, String, &'static str)> {
+    let r = readable;
+    vec![
+        ("load P_T", r(o.load), "N"),
+        ("angular velocity ω", r(o.angular_velocity), "rad/s"),
+        ("  (in rpm)", r(o.angular_velocity / RAD_S_PER_RPM), "rpm"),
+        ("sliding speed u = |ω|R", r(o.sliding_speed), "m/s"),
+        ("friction coefficient μ (eq. 10)", r(o.friction_coefficient), "-"),
+        ("  fluid part Q_H/P_T (eq. 3)", r(o.fluid_friction_coefficient), "-"),
+        ("  asperity part μ_c/γ2 (eq. 8)", r(o.asperity_friction_coefficient), "-"),
+        ("torque T = μRP_T (eq. 11)", r(o.torque), "N·m"),
+        ("central film thickness h_c", r(o.film_thickness), "m"),
+        ("lambda ratio h_c/√(σ²+σ_b²) (eq. 21)", r(o.lambda_ratio), "-"),
+        ("fluid load fraction 1/γ1", r(o.fluid_load_fraction), "-"),
+        ("asperity load fraction 1/γ2", r(o.asperity_load_fraction), "-"),
+        ("Hertz mean pressure p_m (eq. 6)", r(o.mean_pressure), "Pa"),
+        ("Hertz peak pressure p0 (eq. 6)", r(o.peak_pressure), "Pa"),
+        ("contact half-width a (eq. 6)", r(o.contact_half_width), "m"),
+        ("viscosity at p_m (Roelands, eq. 5)", r(o.contact_viscosity), "Pa·s"),
+        ("Sommerfeld number S (eq. 20)", r(o.sommerfeld_number), "-"),
+        ("regime", o.regime.as_str().to_string(), ""),
+    ]
+}
+
+pub fn run(cmd: &PointCmd) -> Result<()> {
+    let joint = cmd.params.joint()?;
+    let omega = cmd.speed.rad_per_s()?;
+    let op = joint.evaluate(cmd.load, omega)?;
+    if cmd.json {
+        let text = serde_json::to_string(&PointJson::from(&op)).expect("plain struct of numbers serialises");
+        return to_stdout(|w| writeln!(w, "{text}"));
+    }
+    let rows = table(&op);
+    let width = rows.iter().map(|r| r.0.chars().count()).max().unwrap_or(0);
+    let vwidth = rows.iter().map(|r| r.1.len()).max().unwrap_or(0);
+    to_stdout(|w| {
+        writeln!(w, "{:width$}  {:>vwidth$}  unit", "quantity", "value")?;
+        for (name, value, unit) in &rows {
+            // Pad by characters (names hold non-ASCII symbols).
+            let pad = width - name.chars().count();
+            writeln!(w, "{name}{:pad$}  {value:>vwidth$}  {unit}", "")?;
+        }
+        Ok(())
+    })
+}

@@ -1,0 +1,166 @@
+//! The rig's equations of motion in each phase, and the friction torque from the core.
+//!
+//! State vector y = (θ, ω, T_a, W, D, t):
+//! - θ (rad), ω (rad/s): pin angle and speed; T_a (N·m): actuator torque;
+//! - W = ∫ T_a·ω dt (J): work done by the actuator on the rotating parts;
+//! - D = ∫ −T_f·ω dt (J): energy dissipated by friction (T_f the friction torque on the pin);
+//! - t itself (ṫ = 1), so that the system is autonomous: `ode_solvers` 0.6.2's Dop853 evaluates
+//!   its 12th stage at x instead of x + h (its table has c₁₂ = 0, DOP853 has c₁₂ = 1), which
+//!   ruins its error estimate for time-dependent right-hand sides (it then crawls at ~1e-6 s
+//!   steps). With time as a state the method never uses its stage times.
+//!
+//! Energy balance: W − D = ½Jω² − ½Jω₀² exactly for the ODE, so the residual of the integrated
+//! W, D and ω measures the integration error.
+//!
+//! Phases:
+//! - `Slip(s)`, s = ±1: J ω̇ = T_a + T_f with T_f = −s·μ(P, max(s·ω, 0))·R·P. The friction is that
+//!   of motion in direction s, extended continuously (μ(P, 0) = μ_c) past ω = 0 so that the
+//!   integrator can step over the reversal, which is then located as an event (s·ω = 0).
+//! - `Stick`: θ̇ = ω̇ = 0; only the actuator lag evolves; the joint reacts T_f = −T_a.
+//! - `Smooth` (regularised formulation): T_f = −μ(P,|ω|)·R·P·tanh(ω/ω_reg), one ODE throughout.
+//!
+//! In every phase: T_d = clamp(K_p (θ_cmd − θ) + K_d (θ̇_cmd − ω), ±T_max), τ_s Ṫ_a = T_d − T_a.
+//! Zero load means no contact and no friction (the core needs P > 0).
+
+use super::excitation::Excitation;
+use super::params::RigParams;
+use crate::joint::{Joint, OperatingPoint};
+use serde::{Deserialize, Serialize};
+use std::cell::Cell;
+
+/// The integrated state (see the module documentation).
+pub type State = ode_solvers::SVector<f64, 6>;
+pub(crate) const ANGLE: usize = 0;
+pub(crate) const SPEED: usize = 1;
+pub(crate) const TORQUE: usize = 2;
+pub(crate) const WORK: usize = 3;
+pub(crate) const DISSIPATION: usize = 4;
+pub(crate) const TIME: usize = 5;
+
+/// The integrated state from the five physical values and the time.
+pub(crate) fn to_state(v: &[f64; 5], t: f64) -> State {
+    State::from([v[0], v[1], v[2], v[3], v[4], t])
+}
+
+/// The five physical values of a state.
+pub(crate) fn physical(y: &State) -> [f64; 5] {
+    [y[0], y[1], y[2], y[3], y[4]]
+}
+
+/// Which equations hold.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Phase {
+    /// Sliding in direction `s` (+1 or −1).
+    Slip(i8),
+    /// ω = 0, |T_a| within the breakaway torque.
+    Stick,
+    /// The regularised formulation's single phase.
+    Smooth,
+}
+
+/// The friction on the pin at one state.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Friction {
+    /// Signed friction torque on the pin (N·m).
+    pub torque: f64,
+    /// The core's operating point (None at zero load).
+    pub op: Option<OperatingPoint>,
+}
+
+/// The right-hand side for one phase.
+pub(crate) struct Dynamics<'a> {
+    pub joint: &'a Joint,
+    pub rig: &'a RigParams,
+    pub excitation: &'a dyn Excitation,
+    pub phase: Phase,
+    /// Warm start of the core's load-sharing solve (its last logit).
+    pub guess: Cell<f64>,
+    /// First invalid load met (time, value); the derivative is NaN from then on.
+    pub fault: Cell<Option<(f64, f64)>>,
+}
+
+impl<'a> Dynamics<'a> {
+    pub fn new(joint: &'a Joint, rig: &'a RigParams, excitation: &'a dyn Excitation, phase: Phase, guess: f64) -> Self {
+        Self { joint, rig, excitation, phase, guess: Cell::new(guess), fault: Cell::new(None) }
+    }
+
+    /// The load at `t`, checked (Err with the value if negative or not finite).
+    pub fn load(&self, t: f64) -> Result<f64, f64> {
+        let p = self.excitation.load(t);
+        if p.is_finite() && p >= 0.0 { Ok(p) } else { Err(p) }
+    }
+
+    /// The core at (P, speed ≥ 0), warm-started; None at zero load.
+    pub fn operating_point(&self, load: f64, speed: f64) -> Option<OperatingPoint> {
+        if load == 0.0 {
+            return None;
+        }
+        let g = self.guess.get();
+        let op = self
+            .joint
+            .evaluate_from(load, speed, g.is_finite().then_some(g))
+            .expect("load > 0 and finite speed were checked");
+        if op.logit.is_finite() {
+            self.guess.set(op.logit);
+        }
+        Some(op)
+    }
+
+    /// Breakaway torque k_b·μ_c·R·P.
+    pub fn breakaway_torque(&self, load: f64) -> f64 {
+        self.rig.breakaway_factor * self.joint.boundary_torque(load)
+    }
+
+    /// Torque demand of the position loop, saturated.
+    pub fn demand(&self, t: f64, angle: f64, speed: f64) -> f64 {
+        let (cmd, rate) = self.excitation.command(t);
+        let r = self.rig;
+        (r.position_gain * (cmd - angle) + r.velocity_gain * (rate - speed)).clamp(-r.torque_limit, r.torque_limit)
+    }
+
+    /// Friction on the pin in this phase at (t, y) with load P.
+    pub fn friction(&self, load: f64, y: &State) -> Friction {
+        let w = y[SPEED];
+        match self.phase {
+            Phase::Slip(s) => {
+                let s = s as f64;
+                let op = self.operating_point(load, (s * w).max(0.0));
+                Friction { torque: -s * op.map_or(0.0, |o| o.torque), op }
+            }
+            Phase::Stick => Friction { torque: -y[TORQUE], op: self.operating_point(load, 0.0) },
+            Phase::Smooth => {
+                let op = self.operating_point(load, w.abs());
+                let t = op.map_or(0.0, |o| o.torque);
+                Friction { torque: -t * (w / self.rig.regularisation_speed).tanh(), op }
+            }
+        }
+    }
+
+    /// dy/dt. The time is taken from the state (y[TIME]), not from the integrator.
+    pub fn derivative(&self, _t: f64, y: &State) -> State {
+        let t = y[TIME];
+        let load = match self.load(t) {
+            Ok(p) => p,
+            Err(p) => {
+                if self.fault.get().is_none() {
+                    self.fault.set(Some((t, p)));
+                }
+                return State::repeat(f64::NAN);
+            }
+        };
+        let r = self.rig;
+        let (w, ta) = (y[SPEED], y[TORQUE]);
+        let torque_rate = (self.demand(t, y[ANGLE], w) - ta) / r.servo_time_constant;
+        if self.phase == Phase::Stick {
+            return State::from([0.0, 0.0, torque_rate, 0.0, 0.0, 1.0]);
+        }
+        let tf = self.friction(load, y).torque;
+        State::from([w, (ta + tf) / r.inertia, torque_rate, ta * w, -tf * w, 1.0])
+    }
+}
+
+impl ode_solvers::System<f64, State> for &Dynamics<'_> {
+    fn system(&self, t: f64, y: &State, dy: &mut State) {
+        *dy = self.derivative(t, y);
+    }
+}

@@ -1,0 +1,238 @@
+//! Integrating one phase with `ode_solvers`, stopping at the first event, and locating it.
+//!
+//! A *segment* runs the chosen method from a node (t₀, y₀) towards t₁ and keeps every accepted
+//! step as a node. After each accepted step `solout` tests the phase's event predicate; the
+//! first node where it holds stops the run. The event time is then located inside the last
+//! step by the Illinois (modified regula falsi) method, each trial state being one
+//! *re-integration* from the step's start node to the trial time: for a one-step method a
+//! shorter step from the same node is as accurate as the accepted one, so event states and
+//! output states have the method's own accuracy (no lower-order interpolant, and Dop853 keeps
+//! its 8th order although `ode_solvers` 0.6 does not expose its dense output). Event times are
+//! located to `event_tolerance` and the state returned is the one just *past* the event, where
+//! the predicate holds — so a breakaway always starts with |T_a| above the breakaway torque and
+//! a stick never starts with the speed still in the old direction (no chattering).
+//!
+//! RK4 takes uniform steps of at most `rk4_step`, the step shortened so the segment end is hit.
+
+use super::dynamics::{Dynamics, State, TIME};
+use super::params::{Method, RigParams};
+use super::RigError;
+use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
+
+/// The accepted steps of one segment.
+#[derive(Debug, Clone)]
+pub(crate) struct Run {
+    /// (t, y) at the start and after every accepted step; the last one is where the run stopped.
+    pub nodes: Vec<(f64, State)>,
+    /// Whether the event predicate stopped the run (it holds at the last node).
+    pub stopped: bool,
+    /// Step size to start the next segment with.
+    pub h_next: f64,
+}
+
+/// Adapter giving `ode_solvers` the right-hand side and the stop test.
+struct Stepper<'a, 'b> {
+    dynamics: &'a Dynamics<'b>,
+    outside: &'a dyn Fn(f64, &State) -> bool,
+    hit: &'a mut bool,
+}
+
+impl System<f64, State> for Stepper<'_, '_> {
+    fn system(&self, t: f64, y: &State, dy: &mut State) {
+        *dy = self.dynamics.derivative(t, y);
+    }
+    fn solout(&mut self, t: f64, y: &State, _dy: &State) -> bool {
+        if (self.outside)(t, y) {
+            *self.hit = true;
+        }
+        *self.hit
+    }
+}
+
+fn check(d: &Dynamics, t: f64, y: &State) -> Result<(), RigError> {
+    if let Some((tf, p)) = d.fault.get() {
+        return Err(RigError::Load { time: tf, value: p });
+    }
+    if y.iter().any(|v| !v.is_finite()) {
+        return Err(RigError::Integration { time: t, message: "non-finite state".into() });
+    }
+    Ok(())
+}
+
+const N_MAX: u32 = 50_000_000;
+/// Relative time span below which a step is taken by forward Euler.
+pub(crate) const TINY: f64 = 1e-10;
+
+/// Integrate from (t0, y0) to t1 with `h0` as first step (0: automatic), stopping at the first
+/// accepted step where `outside` holds.
+pub(crate) fn segment(
+    rig: &RigParams,
+    d: &Dynamics,
+    t0: f64,
+    y0: State,
+    t1: f64,
+    h0: f64,
+    outside: &dyn Fn(f64, &State) -> bool,
+) -> Result<Run, RigError> {
+    let span = t1 - t0;
+    let mut y0 = y0;
+    y0[TIME] = t0;
+    let mut hit = false;
+    let nodes: Vec<(f64, State)> = match rig.method {
+        Method::Rk4 => {
+            let n = ((span / rig.rk4_step) * (1.0 - 1e-12)).ceil().max(1.0) as usize;
+            let mut nodes = Vec::with_capacity(n + 1);
+            nodes.push((t0, y0));
+            for k in 1..=n {
+                let (ta, ya) = *nodes.last().unwrap();
+                let tb = if k == n { t1 } else { t0 + span * (k as f64 / n as f64) };
+                let yb = sub_step(rig, d, ta, ya, tb)?;
+                nodes.push((tb, yb));
+                if outside(tb, &yb) {
+                    hit = true;
+                    break;
+                }
+            }
+            nodes
+        }
+        Method::Dopri5 | Method::Dop853 => {
+            let h = h0.min(span).max(0.0);
+            let stepper = Stepper { dynamics: d, outside, hit: &mut hit };
+            let (xs, ys) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
+                Err(e) => e,
+                Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
+            })?;
+            let mut nodes: Vec<(f64, State)> = xs.into_iter().zip(ys).collect();
+            if !hit {
+                // The last step was aimed at t1; remove rounding in its time.
+                nodes.last_mut().unwrap().0 = t1;
+            }
+            nodes
+        }
+    };
+    let (t_last, y_last) = *nodes.last().unwrap();
+    check(d, t_last, &y_last)?;
+    let n = nodes.len();
+    let h_next = match n {
+        0 | 1 => 0.0,
+        2 => nodes[1].0 - nodes[0].0,
+        _ => (nodes[n - 1].0 - nodes[n - 2].0).max(nodes[n - 2].0 - nodes[n - 3].0),
+    };
+    Ok(Run { nodes, stopped: hit, h_next })
+}
+
+/// Run Dopri5 or Dop853 in sparse mode; returns the accepted (t, y).
+fn adaptive<S: System<f64, State>>(
+    rig: &RigParams,
+    f: S,
+    t0: f64,
+    y0: State,
+    t1: f64,
+    h: f64,
+    h_max: f64,
+) -> Result<(Vec<f64>, Vec<State>), ode_solvers::dop_shared::IntegrationError> {
+    // n_stiff = u32::MAX disables the stiffness abort: the regularised formulation is stiff by
+    // design and must be integrated anyway (with small steps).
+    match rig.method {
+        Method::Dopri5 => {
+            let mut s = Dopri5::from_param(
+                f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, N_MAX, u32::MAX, OutputType::Sparse,
+            );
+            s.integrate()?;
+            Ok((s.x_out().clone(), s.y_out().clone()))
+        }
+        _ => {
+            let mut s = Dop853::from_param(
+                f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.0, 0.333, 6.0, h_max, h, N_MAX, u32::MAX, OutputType::Sparse,
+            );
+            s.integrate()?;
+            Ok((s.x_out().clone(), s.y_out().clone()))
+        }
+    }
+}
+
+/// The state at t1 ≥ t0 by one step of the method from (t0, y0) (an adaptive method may split
+/// it if its error test rejects the full step).
+pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f64) -> Result<State, RigError> {
+    let h = t1 - t0;
+    let mut y0 = y0;
+    y0[TIME] = t0;
+    if h <= 0.0 {
+        return Ok(y0);
+    }
+    if h <= TINY * t0.abs().max(1.0) {
+        // Below what an adaptive method can take at this t (it would report a step-size
+        // underflow): one Euler step, error O(h²·|y''|) far below any tolerance.
+        let y = y0 + d.derivative(t0, &y0) * h;
+        check(d, t1, &y)?;
+        return Ok(y);
+    }
+    let y = match rig.method {
+        Method::Rk4 => {
+            let mut s = Rk4::new(d, t0, y0, t1, h);
+            s.integrate().map_err(|e| RigError::Integration { time: t0, message: e.to_string() })?;
+            *s.y_out().last().unwrap()
+        }
+        _ => {
+            let never = |_: f64, _: &State| false;
+            let mut hit = false;
+            let stepper = Stepper { dynamics: d, outside: &never, hit: &mut hit };
+            let (_, ys) = adaptive(rig, stepper, t0, y0, t1, h, h)
+                .map_err(|e| RigError::Integration { time: t0, message: e.to_string() })?;
+            *ys.last().unwrap()
+        }
+    };
+    check(d, t1, &y)?;
+    Ok(y)
+}
+
+/// Locate the event in (ta, tb]: `g` is continuous, `outside` ⇔ the event has happened;
+/// `outside` is false at ta and true at tb. Returns the first trial time found with `outside`
+/// true within `tol` of the last time found with it false, and the state there.
+pub(crate) fn locate(
+    rig: &RigParams,
+    d: &Dynamics,
+    (ta, ya): (f64, State),
+    (tb, yb): (f64, State),
+    event: &dyn Fn(f64, &State) -> (f64, bool),
+) -> Result<(f64, State), RigError> {
+    let tol = rig.event_tolerance;
+    let (mut a, mut b, mut y_b) = (ta, tb, yb);
+    let mut ga = event(ta, &ya).0;
+    let mut gb = event(tb, &yb).0;
+    let mut side = 0i8;
+    let mut iterations = 0;
+    while b - a > tol {
+        iterations += 1;
+        if iterations > 200 {
+            return Err(RigError::Integration { time: a, message: "event location did not converge".into() });
+        }
+        let width = b - a;
+        // Illinois step, bisection when it would not shrink the bracket or lands on an end.
+        let mut t = if gb != ga && ga.is_finite() && gb.is_finite() { (a * gb - b * ga) / (gb - ga) } else { 0.5 * (a + b) };
+        if !(t > a && t < b) || iterations % 4 == 0 {
+            t = 0.5 * (a + b);
+        }
+        // Never closer than tol/4 to an end: each trial shrinks the bracket by at least that.
+        t = t.clamp(a + 0.25 * tol.min(0.5 * width), b - 0.25 * tol.min(0.5 * width));
+        let y = sub_step(rig, d, ta, ya, t)?;
+        let (g, out) = event(t, &y);
+        if out {
+            b = t;
+            gb = g;
+            y_b = y;
+            if side == 1 {
+                ga *= 0.5;
+            }
+            side = 1;
+        } else {
+            a = t;
+            ga = g;
+            if side == -1 {
+                gb *= 0.5;
+            }
+            side = -1;
+        }
+    }
+    Ok((b, y_b))
+}

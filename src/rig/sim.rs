@@ -1,0 +1,477 @@
+//! The stepping simulator: [`RigSim`], for the CLI and for a co-simulation host (the FMU).
+//!
+//! # Independence of the communication grid
+//! The simulator integrates *segments* of its own: each starts at a node (the initial state,
+//! an event, a multiple of `segment_length`, a jump of the excitation, or a change of the
+//! held inputs) and ends at the next of these. [`RigSim::advance_to`] only computes segments
+//! until one covers the requested time and moves a clock; the state reported at a time t is
+//! one re-integration step from the last accepted node before t. So neither the nodes nor the
+//! reported states depend on where the host puts its communication points: with the same
+//! inputs, a host stepping at 1e-5 s and one stepping at 1 s get the same numbers at shared
+//! points (bitwise, up to the core's warm-started solve, which is deterministic too).
+//! Setting an input to a *different* value starts a new segment at the current time.
+//!
+//! # Events
+//! Hybrid formulation (see [`super::dynamics`] for the phases):
+//! - Slip(s) → the speed reaches 0 (s·ω ≤ 0): if |T_a| ≤ k_b·μ_c·R·P the joint sticks,
+//!   otherwise it reverses at once into Slip(sign T_a).
+//! - Stick → |T_a| > k_b·μ_c·R·P: breakaway into Slip(sign T_a).
+//!
+//! At each event ω is set to exactly 0 (its located value is within the event tolerance of 0).
+
+use super::config::RigConfig;
+use super::dynamics::{physical, to_state, Dynamics, Phase, State, ANGLE, DISSIPATION, SPEED, TORQUE, WORK};
+use super::excitation::{Excitation, Held, Inputs, SineCommand, SineDrive, StepLoad};
+use super::integrate::{locate, segment, sub_step, TINY};
+use super::params::Formulation;
+use super::RigError;
+use crate::joint::Joint;
+use serde::{Deserialize, Serialize};
+use std::sync::Arc;
+
+/// One start point of integration.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Node {
+    pub time: f64,
+    /// (θ, ω, T_a, W, D), see [`super::dynamics`].
+    pub state: [f64; 5],
+    pub phase: Phase,
+    /// First step of the next segment (0: automatic).
+    pub step: f64,
+    /// Warm start of the core's solve.
+    pub logit: f64,
+}
+
+/// Everything needed to resume a simulation: with the same configuration and excitation,
+/// [`RigSim::set_state`] continues exactly as the original would.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RigState {
+    pub node: Node,
+    /// Communication time (≥ node.time).
+    pub time: f64,
+    pub inputs: Inputs,
+}
+
+/// Number of f64 in [`RigState::to_bytes`].
+const STATE_WORDS: usize = 14;
+
+impl RigState {
+    /// Compact little-endian encoding (14 × f64 = 112 bytes).
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let n = &self.node;
+        let phase = match n.phase {
+            Phase::Slip(s) => s as f64,
+            Phase::Stick => 0.0,
+            Phase::Smooth => 2.0,
+        };
+        let words: [f64; STATE_WORDS] = [
+            n.time,
+            n.state[0],
+            n.state[1],
+            n.state[2],
+            n.state[3],
+            n.state[4],
+            phase,
+            n.step,
+            n.logit,
+            self.time,
+            self.inputs.load.map_or(0.0, |_| 1.0),
+            self.inputs.load.unwrap_or(0.0),
+            self.inputs.command_angle.map_or(0.0, |_| 1.0),
+            self.inputs.command_angle.unwrap_or(0.0),
+        ];
+        words.iter().flat_map(|w| w.to_le_bytes()).collect()
+    }
+
+    /// Inverse of [`RigState::to_bytes`].
+    pub fn from_bytes(bytes: &[u8]) -> Result<Self, RigError> {
+        if bytes.len() != 8 * STATE_WORDS {
+            return Err(RigError::State(format!("expected {} bytes, got {}", 8 * STATE_WORDS, bytes.len())));
+        }
+        let w: Vec<f64> = bytes.chunks_exact(8).map(|c| f64::from_le_bytes(c.try_into().unwrap())).collect();
+        let phase = match w[6] {
+            1.0 => Phase::Slip(1),
+            -1.0 => Phase::Slip(-1),
+            0.0 => Phase::Stick,
+            2.0 => Phase::Smooth,
+            x => return Err(RigError::State(format!("bad phase code {x}"))),
+        };
+        Ok(Self {
+            node: Node { time: w[0], state: [w[1], w[2], w[3], w[4], w[5]], phase, step: w[7], logit: w[8] },
+            time: w[9],
+            inputs: Inputs { load: (w[10] != 0.0).then_some(w[11]), command_angle: (w[12] != 0.0).then_some(w[13]) },
+        })
+    }
+}
+
+/// The rig's outputs at one time (SI units).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    pub time: f64,
+    pub command_angle: f64,
+    pub angle: f64,
+    pub angular_velocity: f64,
+    /// What the actuator's torque transducer reads: the actuator torque T_a (= J ω̇ − T_f).
+    pub torque: f64,
+    /// Friction torque on the pin, signed (opposes ω; in stick the reaction −T_a).
+    pub friction_torque: f64,
+    /// The core's μ(P, |ω|) (μ_c in stick: the capacity, not the mobilised |T_a|/(R P)); 0 at zero load.
+    pub friction_coefficient: f64,
+    /// The core's central film thickness h_c (m); NaN at zero load (no contact).
+    pub film_thickness: f64,
+    /// The core's 1/γ1; NaN at zero load.
+    pub fluid_load_fraction: f64,
+    /// Hybrid: in a stick phase. Regularised: |ω| ≤ ω_reg.
+    pub stuck: bool,
+    /// Radial load P (N).
+    pub load: f64,
+    /// W = ∫T_a ω dt (J).
+    pub actuator_work: f64,
+    /// D = ∫|T_f ω| dt (J).
+    pub friction_dissipation: f64,
+    /// ½ J ω² (J).
+    pub kinetic_energy: f64,
+}
+
+/// Counters of what the integration did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct Stats {
+    pub segments: u64,
+    pub steps: u64,
+    /// Slip → stick.
+    pub sticks: u64,
+    /// Stick → slip.
+    pub breakaways: u64,
+    /// Slip → slip through ω = 0 without sticking.
+    pub reversals: u64,
+    /// Longest run of consecutive events closer than 10 event tolerances (chatter indicator).
+    pub max_event_burst: u64,
+}
+
+#[derive(Debug, Clone)]
+struct Segment {
+    phase: Phase,
+    logit: f64,
+    /// Accepted nodes from the segment start, all before `end`.
+    nodes: Vec<(f64, State)>,
+    end: f64,
+    next: Node,
+}
+
+/// The rig simulator.
+#[derive(Clone)]
+pub struct RigSim {
+    config: RigConfig,
+    joint: Joint,
+    base: Arc<dyn Excitation>,
+    inputs: Inputs,
+    node: Node,
+    time: f64,
+    segment: Option<Segment>,
+    stats: Stats,
+    burst: u64,
+}
+
+impl std::fmt::Debug for RigSim {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RigSim")
+            .field("config", &self.config)
+            .field("inputs", &self.inputs)
+            .field("node", &self.node)
+            .field("time", &self.time)
+            .field("stats", &self.stats)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Consecutive near-coincident events beyond which the run is declared chattering.
+const MAX_BURST: u64 = 1000;
+
+impl RigSim {
+    /// The paper's rig: θ_cmd = A sin(2πft) and the constant load of `config.rig`, starting at
+    /// rest on the command (θ = θ_cmd(0) = 0, ω = 0, T_a = 0) at t = 0.
+    pub fn new(config: &RigConfig) -> Result<Self, RigError> {
+        let r = &config.rig;
+        let drive = SineDrive {
+            command: SineCommand { amplitude: r.amplitude, frequency: r.frequency },
+            load: StepLoad::constant(r.load),
+        };
+        Self::with_excitation(config, Arc::new(drive))
+    }
+
+    /// A rig driven by any excitation, starting at rest on the command at t = 0.
+    pub fn with_excitation(config: &RigConfig, excitation: Arc<dyn Excitation>) -> Result<Self, RigError> {
+        config.validate()?;
+        let joint = Joint::new(&config.model)?;
+        let angle = excitation.command(0.0).0;
+        let phase = match config.rig.formulation {
+            Formulation::Hybrid => Phase::Stick,
+            Formulation::Regularised => Phase::Smooth,
+        };
+        let node = Node { time: 0.0, state: [angle, 0.0, 0.0, 0.0, 0.0], phase, step: 0.0, logit: f64::NAN };
+        let mut sim = Self {
+            config: *config,
+            joint,
+            base: excitation,
+            inputs: Inputs::default(),
+            node,
+            time: 0.0,
+            segment: None,
+            stats: Stats::default(),
+            burst: 0,
+        };
+        sim.node.phase = sim.resolve(&sim.node)?;
+        Ok(sim)
+    }
+
+    pub fn config(&self) -> &RigConfig {
+        &self.config
+    }
+    pub fn joint(&self) -> &Joint {
+        &self.joint
+    }
+    /// Current (communication) time.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+    pub fn inputs(&self) -> Inputs {
+        self.inputs
+    }
+
+    /// The resumable state.
+    pub fn state(&self) -> RigState {
+        RigState { node: self.node, time: self.time, inputs: self.inputs }
+    }
+
+    /// Resume from a state taken from a simulator with the same configuration and excitation.
+    pub fn set_state(&mut self, state: &RigState) -> Result<(), RigError> {
+        if state.time.is_nan() || state.time < state.node.time || state.node.state.iter().any(|v| !v.is_finite()) {
+            return Err(RigError::State(format!("inconsistent state {state:?}")));
+        }
+        self.node = state.node;
+        self.time = state.time;
+        self.inputs = state.inputs;
+        self.segment = None;
+        Ok(())
+    }
+
+    fn held(&self) -> Held {
+        Held { base: self.base.clone(), inputs: self.inputs }
+    }
+
+    fn check_inputs(inputs: &Inputs) -> Result<(), RigError> {
+        if let Some(p) = inputs.load
+            && !(p.is_finite() && p >= 0.0)
+        {
+            return Err(RigError::Load { time: f64::NAN, value: p });
+        }
+        if let Some(a) = inputs.command_angle
+            && !a.is_finite()
+        {
+            return Err(RigError::Command(a));
+        }
+        Ok(())
+    }
+
+    /// Integrate to `t_next` (≥ the current time) with `inputs` held from the current time on.
+    pub fn advance_to(&mut self, t_next: f64, inputs: &Inputs) -> Result<(), RigError> {
+        if !t_next.is_finite() || t_next < self.time {
+            return Err(RigError::Time { now: self.time, requested: t_next });
+        }
+        Self::check_inputs(inputs)?;
+        if *inputs != self.inputs {
+            // New held values: restart integration from the current time.
+            if self.time > self.node.time {
+                let (y, phase, logit) = self.state_at(self.time)?;
+                self.node = Node { time: self.time, state: physical(&y), phase, step: 0.0, logit };
+            }
+            self.inputs = *inputs;
+            self.segment = None;
+            self.node.phase = self.resolve(&self.node)?;
+        }
+        self.time = t_next;
+        self.cover(t_next)
+    }
+
+    /// The outputs at the current time.
+    pub fn sample(&mut self) -> Result<Sample, RigError> {
+        let t = self.time;
+        let (y, phase, logit) = self.state_at(t)?;
+        Ok(self.observe(t, &y, phase, logit))
+    }
+
+    /// Run on the built-in or given excitation and sample every `interval` from the current
+    /// time to `t_end` (both included when they fall on the grid), holding the current inputs.
+    pub fn run(&mut self, t_end: f64, interval: f64) -> Result<Vec<Sample>, RigError> {
+        let t0 = self.time;
+        let n = ((t_end - t0) / interval + 1e-9).floor() as usize;
+        let inputs = self.inputs;
+        let mut out = Vec::with_capacity(n + 1);
+        out.push(self.sample()?);
+        for k in 1..=n {
+            self.advance_to(t0 + k as f64 * interval, &inputs)?;
+            out.push(self.sample()?);
+        }
+        Ok(out)
+    }
+
+    /// Phase to start a segment with from `node` (re-checks stick against the current load).
+    fn resolve(&self, node: &Node) -> Result<Phase, RigError> {
+        if self.config.rig.formulation == Formulation::Regularised {
+            return Ok(Phase::Smooth);
+        }
+        let exc = self.held();
+        let d = Dynamics::new(&self.joint, &self.config.rig, &exc, node.phase, node.logit);
+        let load = d.load(node.time).map_err(|p| RigError::Load { time: node.time, value: p })?;
+        let (w, ta) = (node.state[SPEED], node.state[TORQUE]);
+        Ok(match node.phase {
+            Phase::Slip(s) if (s as f64) * w >= 0.0 => node.phase,
+            Phase::Slip(_) | Phase::Smooth => Phase::Slip(if w > 0.0 { 1 } else { -1 }),
+            Phase::Stick => {
+                if ta.abs() > d.breakaway_torque(load) {
+                    Phase::Slip(if ta > 0.0 { 1 } else { -1 })
+                } else {
+                    Phase::Stick
+                }
+            }
+        })
+    }
+
+    /// Make the current segment cover `t`.
+    fn cover(&mut self, t: f64) -> Result<(), RigError> {
+        loop {
+            if self.segment.is_none() {
+                self.segment = Some(self.compute_segment()?);
+            }
+            let seg = self.segment.as_ref().unwrap();
+            if t < seg.end {
+                return Ok(());
+            }
+            self.node = seg.next;
+            self.segment = None;
+        }
+    }
+
+    /// (y, phase, logit) at `t` inside the covering segment.
+    fn state_at(&mut self, t: f64) -> Result<(State, Phase, f64), RigError> {
+        self.cover(t)?;
+        let seg = self.segment.as_ref().unwrap();
+        let i = seg.nodes.partition_point(|(tn, _)| *tn <= t).max(1) - 1;
+        let (ti, yi) = seg.nodes[i];
+        let exc = self.held();
+        let d = Dynamics::new(&self.joint, &self.config.rig, &exc, seg.phase, seg.logit);
+        let y = sub_step(&self.config.rig, &d, ti, yi, t)?;
+        Ok((y, seg.phase, seg.logit))
+    }
+
+    fn compute_segment(&mut self) -> Result<Segment, RigError> {
+        let rig = self.config.rig;
+        let node = self.node;
+        let exc = self.held();
+        let t0 = node.time;
+        let boundary = ((t0 / rig.segment_length) * (1.0 + 1e-12)).floor() + 1.0;
+        let t1 = (boundary * rig.segment_length).min(exc.next_discontinuity(t0));
+        let phase = node.phase;
+        let d = Dynamics::new(&self.joint, &rig, &exc, phase, node.logit);
+        let y0 = to_state(&node.state, t0);
+        let breakaway = |t: f64| d.load(t).map_or(0.0, |p| d.breakaway_torque(p));
+        let event = |t: f64, y: &State| -> (f64, bool) {
+            match phase {
+                Phase::Slip(s) => {
+                    let g = -(s as f64) * y[SPEED];
+                    (g, g >= 0.0)
+                }
+                Phase::Stick => {
+                    let g = y[TORQUE].abs() - breakaway(t);
+                    (g, g > 0.0)
+                }
+                Phase::Smooth => (-1.0, false),
+            }
+        };
+        let outside = |t: f64, y: &State| event(t, y).1;
+        if t1 - t0 <= TINY * t0.abs().max(1.0) {
+            // A sliver between an event and a boundary: nothing to integrate, step across it.
+            let y1 = sub_step(&rig, &d, t0, y0, t1)?;
+            let mut next = Node { time: t1, state: physical(&y1), ..node };
+            next.phase = self.resolve(&next)?;
+            return Ok(Segment { phase, logit: node.logit, nodes: vec![(t0, y0)], end: t1, next });
+        }
+        let run = segment(&rig, &d, t0, y0, t1, node.step, &outside)?;
+        self.stats.segments += 1;
+        self.stats.steps += run.nodes.len() as u64 - 1;
+        let mut nodes = run.nodes;
+        let logit = node.logit;
+        let (end, next) = if run.stopped {
+            let b = nodes.pop().unwrap();
+            let a = *nodes.last().unwrap();
+            let (te, mut ye) = locate(&rig, &d, a, b, &event)?;
+            ye[SPEED] = 0.0;
+            let load = d.load(te).map_err(|p| RigError::Load { time: te, value: p })?;
+            let ta = ye[TORQUE];
+            let new_phase = if ta.abs() <= d.breakaway_torque(load) {
+                self.stats.sticks += 1;
+                Phase::Stick
+            } else {
+                match phase {
+                    Phase::Stick => self.stats.breakaways += 1,
+                    _ => self.stats.reversals += 1,
+                }
+                Phase::Slip(if ta > 0.0 { 1 } else { -1 })
+            };
+            if te - t0 < 10.0 * rig.event_tolerance {
+                self.burst += 1;
+                self.stats.max_event_burst = self.stats.max_event_burst.max(self.burst);
+                if self.burst > MAX_BURST {
+                    return Err(RigError::Chatter { time: te });
+                }
+            } else {
+                self.burst = 0;
+            }
+            (te, Node { time: te, state: physical(&ye), phase: new_phase, step: 0.0, logit: d.guess.get() })
+        } else {
+            let (t, y) = *nodes.last().unwrap();
+            if nodes.len() > 1 {
+                nodes.pop();
+            }
+            let mut next = Node { time: t, state: physical(&y), phase, step: run.h_next, logit: d.guess.get() };
+            next.phase = self.resolve(&next)?;
+            (t, next)
+        };
+        Ok(Segment { phase, logit, nodes, end, next })
+    }
+
+    /// The outputs at (t, y) in `phase`.
+    fn observe(&self, t: f64, y: &State, phase: Phase, logit: f64) -> Sample {
+        let exc = self.held();
+        let rig = &self.config.rig;
+        let d = Dynamics::new(&self.joint, rig, &exc, phase, logit);
+        let load = d.load(t).unwrap_or(f64::NAN);
+        let (command_angle, _) = exc.command(t);
+        let fr = if load.is_finite() { Some(d.friction(load, y)) } else { None };
+        let op = fr.and_then(|f| f.op);
+        let w = y[SPEED];
+        Sample {
+            time: t,
+            command_angle,
+            angle: y[ANGLE],
+            angular_velocity: w,
+            torque: y[TORQUE],
+            friction_torque: fr.map_or(f64::NAN, |f| f.torque),
+            friction_coefficient: op.map_or(0.0, |o| o.friction_coefficient),
+            film_thickness: op.map_or(f64::NAN, |o| o.film_thickness),
+            fluid_load_fraction: op.map_or(f64::NAN, |o| o.fluid_load_fraction),
+            stuck: match phase {
+                Phase::Stick => true,
+                Phase::Slip(_) => false,
+                Phase::Smooth => w.abs() <= rig.regularisation_speed,
+            },
+            load,
+            actuator_work: y[WORK],
+            friction_dissipation: y[DISSIPATION],
+            kinetic_energy: 0.5 * rig.inertia * w * w,
+        }
+    }
+}

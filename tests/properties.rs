@@ -1,0 +1,75 @@
+//! Property tests over random valid inputs: every output finite and in range, the
+//! load-sharing identity, and continuity in speed and load.
+
+use pinjoint::params::PARAMS;
+use pinjoint::{Joint, Params};
+use proptest::prelude::*;
+
+/// A random valid parameter set: each value scaled by 10^[-0.5, 0.5] from its default
+/// (Poisson ratios kept below 0.5, the bush kept larger than the pin).
+fn params() -> impl Strategy<Value = Params> {
+    (prop::collection::vec(-0.5f64..0.5, PARAMS.len()), 1e-5f64..1e-3).prop_map(|(scales, clearance_rel)| {
+        let mut p = Params::default();
+        for (s, k) in PARAMS.iter().zip(scales) {
+            let v = s.default_value() * 10f64.powf(k);
+            (s.set)(&mut p, v);
+        }
+        p.materials.pin_poisson_ratio = p.materials.pin_poisson_ratio.min(0.49);
+        p.materials.bush_poisson_ratio = p.materials.bush_poisson_ratio.min(0.49);
+        p.geometry.bush_radius = p.geometry.pin_radius * (1.0 + clearance_rel);
+        p
+    })
+}
+
+fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    (lo.log10()..hi.log10()).prop_map(|e| 10f64.powf(e))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn outputs_finite_and_in_range(p in params(), load in log_uniform(1.0, 1e6), omega in prop_oneof![Just(0.0), log_uniform(1e-12, 1e4)], sign in prop::bool::ANY) {
+        let j = Joint::new(&p).unwrap();
+        let omega = if sign { omega } else { -omega };
+        let o = j.evaluate(load, omega).unwrap();
+        let mu_c = p.friction.boundary_friction_coefficient;
+        for v in [o.friction_coefficient, o.torque, o.film_thickness, o.lambda_ratio, o.fluid_load_fraction,
+                  o.asperity_load_fraction, o.mean_pressure, o.contact_half_width, o.sommerfeld_number] {
+            prop_assert!(v.is_finite() && v >= 0.0, "{:?}", o);
+        }
+        prop_assert!(o.film_thickness > 0.0);
+        prop_assert!(o.fluid_load_fraction <= 1.0 && o.asperity_load_fraction <= 1.0);
+        prop_assert!((o.fluid_load_fraction + o.asperity_load_fraction - 1.0).abs() <= 2.0 * f64::EPSILON);
+        // μ is bounded by its two terms' maxima: μ_c·1 + τ_L/p_m (Bair–Winer saturates at τ_L).
+        let tau = p.lubricant.limiting_shear_stress + p.lubricant.limiting_shear_stress_slope * o.mean_pressure;
+        prop_assert!(o.friction_coefficient <= mu_c + tau / o.mean_pressure);
+        prop_assert!(o.asperity_friction_coefficient <= mu_c);
+        prop_assert!((o.torque - o.friction_coefficient * p.geometry.pin_radius * load).abs() <= 1e-12 * o.torque);
+        if omega == 0.0 {
+            prop_assert_eq!(o.friction_coefficient, mu_c);
+        }
+    }
+
+    #[test]
+    fn continuous_in_speed_and_load(p in params(), load in log_uniform(1.0, 1e6), omega in log_uniform(1e-9, 1e4)) {
+        let j = Joint::new(&p).unwrap();
+        let a = j.evaluate(load, omega).unwrap();
+        for (dl, dw) in [(1.0, 1.0 + 1e-7), (1.0 + 1e-7, 1.0)] {
+            let b = j.evaluate(load * dl, omega * dw).unwrap();
+            prop_assert!((b.film_thickness / a.film_thickness - 1.0).abs() < 1e-5, "{:?} {:?}", a, b);
+            prop_assert!((b.friction_coefficient - a.friction_coefficient).abs() < 1e-5 * a.friction_coefficient.max(1e-3),
+                "{:?} {:?}", a, b);
+            prop_assert!((b.fluid_load_fraction - a.fluid_load_fraction).abs() < 1e-5);
+        }
+    }
+
+    #[test]
+    fn more_speed_never_thins_the_film(p in params(), load in log_uniform(1.0, 1e6), omega in log_uniform(1e-9, 1e4)) {
+        let j = Joint::new(&p).unwrap();
+        let a = j.evaluate(load, omega).unwrap();
+        let b = j.evaluate(load, omega * 1.5).unwrap();
+        prop_assert!(b.fluid_load_fraction >= a.fluid_load_fraction);
+        prop_assert!(b.film_thickness >= a.film_thickness * (1.0 - 1e-12));
+    }
+}

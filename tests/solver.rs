@@ -1,0 +1,253 @@
+//! The load-sharing solve and the operating point in every regime: convergence,
+//! limits (MODEL_NOTES "Limits the solver must meet"), monotonicity and continuity.
+
+use pinjoint::asperity::{softplus, AsperityGroups};
+use pinjoint::gw::ln_f32;
+use pinjoint::mixed::FilmGroups;
+use pinjoint::{Joint, Params, Regime};
+
+fn joint() -> Joint {
+    Joint::new(&Params::default()).unwrap()
+}
+
+/// Residual of eq. 13 = eq. 19 in the logit y, rebuilt here from the public pieces.
+fn residual(j: &Joint, load: f64, omega: f64, y: f64) -> f64 {
+    let p = j.params();
+    let g = &p.geometry;
+    let film = FilmGroups::new(
+        omega.abs() * g.pin_radius,
+        j.reduced_radius(),
+        j.effective_modulus(),
+        g.bush_length,
+        load,
+        p.lubricant.viscosity,
+        p.lubricant.pressure_viscosity_coefficient,
+    );
+    let asp = AsperityGroups::new(&p.surface, load, j.reduced_radius(), j.effective_modulus(), g.bush_length);
+    let h = film.ln_film(-softplus(-y)).exp();
+    let t = (h - p.surface.summit_mean_plane_offset) / p.surface.summit_height_std;
+    ln_f32(t) - asp.required_ln_f32(-softplus(y))
+}
+
+/// Speeds from 1e-12 rad/s to 1e4 rad/s, log-spaced.
+fn speeds(n: usize) -> Vec<f64> {
+    (0..n).map(|i| 10f64.powf(-12.0 + 16.0 * i as f64 / (n - 1) as f64)).collect()
+}
+
+#[test]
+fn solution_is_bracketed_to_tolerance_and_mu_hc_converged_to_1e_10() {
+    let j = joint();
+    for load in [1.0, 5e3, 20e3, 60e3, 1e6] {
+        for omega in speeds(60) {
+            let op = j.evaluate(load, omega).unwrap();
+            let y = op.logit;
+            // A bracket of ±(a few × tolerance) around the returned logit has a sign change:
+            // the root is within it.
+            // The root itself is only defined to ~|y|·1e-15·(a few): in deep full film
+            // ln F ≈ −t²/2 ≈ −y, so a rounding δ in h moves the root by ≈ 2|y|δ. Hence the
+            // |y| term; the 1e-11 is 100× the solver's absolute tolerance.
+            let dy = 1e-11 + 1e-13 * y.abs();
+            let (lo, hi) = (residual(&j, load, omega, y - dy), residual(&j, load, omega, y + dy));
+            assert!(lo <= 0.0 && hi >= 0.0, "P={load} ω={omega}: root not bracketed near y={y}: {lo} {hi}");
+            // Anywhere in that bracket μ and h_c agree with the returned ones to 1e-10.
+            for yy in [y - dy, y + dy] {
+                let x2 = 1.0 / (1.0 + yy.exp());
+                let mu_c = j.params().friction.boundary_friction_coefficient;
+                let mu_asp = mu_c * x2;
+                let rel_mu = ((mu_asp + op.fluid_friction_coefficient) - op.friction_coefficient).abs() / op.friction_coefficient;
+                assert!(rel_mu < 1e-10, "P={load} ω={omega}: μ moves by {rel_mu}");
+            }
+        }
+    }
+}
+
+#[test]
+fn shares_sum_to_one_to_rounding() {
+    let j = joint();
+    for load in [1.0, 20e3, 1e6] {
+        for omega in speeds(50) {
+            let op = j.evaluate(load, omega).unwrap();
+            let s = op.fluid_load_fraction + op.asperity_load_fraction;
+            assert!((s - 1.0).abs() <= 2.0 * f64::EPSILON, "P={load} ω={omega}: {s}");
+        }
+    }
+}
+
+#[test]
+fn zero_speed_is_the_boundary_limit_exactly() {
+    let j = joint();
+    for load in [1.0, 5e3, 20e3, 60e3, 1e6] {
+        let op = j.evaluate(load, 0.0).unwrap();
+        assert_eq!(op.fluid_load_fraction, 0.0);
+        assert_eq!(op.asperity_load_fraction, 1.0);
+        assert_eq!(op.friction_coefficient, 0.12);
+        assert_eq!(op.regime, Regime::Boundary);
+        assert_eq!(op.sommerfeld_number, 0.0);
+        assert!(op.film_thickness > 0.0 && op.film_thickness.is_finite());
+        // Tiny speeds approach it continuously.
+        for omega in [1e-12, 1e-9, 1e-6] {
+            let o = j.evaluate(load, omega).unwrap();
+            assert!((o.friction_coefficient - 0.12).abs() < 1e-4 * (omega / 1e-6).sqrt().max(1e-6), "P={load} ω={omega}");
+            assert!((o.film_thickness / op.film_thickness - 1.0).abs() < 1e-2 * (omega / 1e-6).sqrt().max(1e-6));
+        }
+        let tiny = j.evaluate(load, 1e-12).unwrap();
+        assert!((tiny.friction_coefficient - 0.12).abs() < 1e-9);
+        assert!((tiny.film_thickness / op.film_thickness - 1.0).abs() < 1e-9);
+        // Negative speed is the same joint turning the other way.
+        let neg = j.evaluate(load, -0.3).unwrap();
+        let pos = j.evaluate(load, 0.3).unwrap();
+        assert_eq!(neg.friction_coefficient, pos.friction_coefficient);
+        assert_eq!(neg.signed_torque(), -pos.signed_torque());
+        assert!(pos.signed_torque() < 0.0);
+    }
+}
+
+#[test]
+fn boundary_torque_check_values() {
+    // MODEL_NOTES: μ_c R P_T = 67.2 N·m at 20 kN and 201.6 N·m at 60 kN at low speed.
+    let j = joint();
+    let t20 = j.evaluate(20e3, 1e-6).unwrap().torque;
+    let t60 = j.evaluate(60e3, 1e-6).unwrap().torque;
+    assert!((t20 - 67.2).abs() < 1e-3, "{t20}");
+    assert!((t60 - 201.6).abs() < 1e-3, "{t60}");
+    assert!((j.boundary_torque(20e3) - 67.2).abs() < 1e-9);
+}
+
+#[test]
+fn fluid_share_rises_and_mu_falls_with_speed_until_the_stribeck_minimum() {
+    let j = joint();
+    for load in [1.0, 5e3, 20e3, 60e3, 1e6] {
+        let ops: Vec<_> = speeds(400).into_iter().map(|w| j.evaluate(load, w).unwrap()).collect();
+        // 1/γ1 non-decreasing over the whole range.
+        for w in ops.windows(2) {
+            assert!(w[1].fluid_load_fraction >= w[0].fluid_load_fraction, "P={load}: 1/γ1 falls at ω={}", w[1].angular_velocity);
+            assert!(w[1].film_thickness >= w[0].film_thickness * (1.0 - 1e-12), "P={load}: h_c falls at ω={}", w[1].angular_velocity);
+        }
+        // μ non-increasing up to its minimum (the Stribeck minimum); past it, in full film,
+        // the Bair–Winer fluid term rises with speed (the hydrodynamic branch).
+        let imin = (0..ops.len()).min_by(|&a, &b| ops[a].friction_coefficient.total_cmp(&ops[b].friction_coefficient)).unwrap();
+        for w in ops[..=imin].windows(2) {
+            assert!(w[1].friction_coefficient <= w[0].friction_coefficient, "P={load}: μ rises at ω={}", w[1].angular_velocity);
+        }
+        assert!(ops[imin].asperity_load_fraction < 0.05, "P={load}: minimum before full film");
+        for w in ops[imin..].windows(2) {
+            assert!(w[1].friction_coefficient >= w[0].friction_coefficient);
+        }
+    }
+}
+
+#[test]
+fn full_film_limit_is_the_fluid_term_alone() {
+    // At high speed 1/γ2 → 0 and μ is eq. 3 alone with h_c from the unscaled eq. 12 (γ1 = 1).
+    let j = joint();
+    let p = j.params();
+    for (load, omega) in [(20e3, 300.0), (5e3, 1e3), (1.0, 1e4)] {
+        let op = j.evaluate(load, omega).unwrap();
+        assert!(op.asperity_load_fraction < 1e-30, "P={load} ω={omega}: {}", op.asperity_load_fraction);
+        assert_eq!(op.regime, Regime::FullFilm);
+        // Independent: eq. 12 in plain (non-log) form.
+        let (r, e, b) = (j.reduced_radius(), j.effective_modulus(), p.geometry.bush_length);
+        let u = omega * p.geometry.pin_radius;
+        let uu = p.lubricant.viscosity * u / (e * r);
+        let w = load / (e * r * b);
+        let (m, l) = (w / uu.sqrt(), p.lubricant.pressure_viscosity_coefficient * e * uu.powf(0.25));
+        let (hh, _) = pinjoint::film::moes(m, l);
+        let h = hh * r * uu.sqrt();
+        assert!((op.film_thickness / h - 1.0).abs() < 1e-12, "h_c {} vs {h}", op.film_thickness);
+        let pm = op.mean_pressure;
+        let eta = pinjoint::viscosity::roelands(&p.lubricant, pm);
+        let tau = p.lubricant.limiting_shear_stress + p.lubricant.limiting_shear_stress_slope * pm;
+ // 1 − e^{−x} written as −expm1(−x): x is ~1e-8 at 1 N, where the plain form loses 8 digits.
+        let mu = tau / pm * -(-eta * u / (tau * h)).exp_m1();
+        assert!((op.friction_coefficient / mu - 1.0).abs() < 1e-12, "P={load} ω={omega}: {} vs {mu}", op.friction_coefficient);
+    }
+}
+
+#[test]
+fn continuous_across_regime_changes() {
+    // Dense sweep through boundary → mixed → full film: no jumps. A jump would show as a
+    // relative change between neighbours far larger than the local trend.
+    let j = joint();
+    for load in [5e3, 20e3, 60e3] {
+        let n = 4000;
+        let ws: Vec<f64> = (0..n).map(|i| 10f64.powf(-3.0 + 5.0 * i as f64 / (n - 1) as f64)).collect();
+        let ops: Vec<_> = ws.iter().map(|&w| j.evaluate(load, w).unwrap()).collect();
+        let mut regimes = std::collections::HashSet::new();
+        for k in 1..n - 1 {
+            regimes.insert(ops[k].regime);
+            for f in [|o: &pinjoint::OperatingPoint| o.friction_coefficient, |o: &pinjoint::OperatingPoint| o.film_thickness] {
+                let (a, b, c) = (f(&ops[k - 1]), f(&ops[k]), f(&ops[k + 1]));
+                // Second difference small compared with first differences (smooth curve on this grid).
+                let d1 = (c - a).abs() + 1e-12 * b.abs();
+                assert!((c - 2.0 * b + a).abs() <= 0.5 * d1 + 1e-4 * b.abs(), "P={load}: kink at ω={}: {a} {b} {c}", ws[k]);
+            }
+            // No step between neighbours (0.3 % apart in speed) larger than 1.5 % of μ_c, or 1 % in h_c.
+            assert!((ops[k + 1].friction_coefficient - ops[k].friction_coefficient).abs() < 1.8e-3, "P={load}: μ jump at ω={}", ws[k]);
+            assert!((ops[k + 1].film_thickness / ops[k].film_thickness - 1.0).abs() < 0.01, "P={load}: h jump at ω={}", ws[k]);
+        }
+        // At the steepest step, a 10× finer grid gives ~10× smaller steps (continuity, not a jump).
+        let k = (0..n - 1)
+            .max_by(|&a, &b| {
+                let d = |i: usize| (ops[i + 1].friction_coefficient - ops[i].friction_coefficient).abs();
+                d(a).total_cmp(&d(b))
+            })
+            .unwrap();
+        let coarse = (ops[k + 1].friction_coefficient - ops[k].friction_coefficient).abs();
+        let fine: Vec<f64> = (0..=10)
+            .map(|i| j.evaluate(load, ws[k] * (ws[k + 1] / ws[k]).powf(i as f64 / 10.0)).unwrap().friction_coefficient)
+            .collect();
+        let fine_max = fine.windows(2).map(|w| (w[1] - w[0]).abs()).fold(0.0, f64::max);
+        assert!(fine_max < 0.2 * coarse, "P={load}: refining does not shrink the step at ω={}", ws[k]);
+        assert_eq!(regimes.len(), 3, "P={load}: sweep should visit all three regimes");
+    }
+}
+
+#[test]
+fn warm_start_gives_the_same_answer() {
+    let j = joint();
+    let mut prev: Option<f64> = None;
+    for omega in speeds(300) {
+        let cold = j.evaluate(20e3, omega).unwrap();
+        let warm = j.evaluate_from(20e3, omega, prev).unwrap();
+        assert!((warm.friction_coefficient / cold.friction_coefficient - 1.0).abs() < 1e-12);
+        assert!((warm.film_thickness / cold.film_thickness - 1.0).abs() < 1e-12);
+        prev = Some(cold.logit);
+    }
+    // A poor guess still converges.
+    let far = j.evaluate_from(20e3, 1.0, Some(500.0)).unwrap();
+    let cold = j.evaluate(20e3, 1.0).unwrap();
+    assert!((far.friction_coefficient / cold.friction_coefficient - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn invalid_operating_points_are_named() {
+    let j = joint();
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let e = j.evaluate(bad, 1.0).unwrap_err().to_string();
+        assert!(e.contains("load") && e.contains(" N"), "{e}");
+    }
+    let e = j.evaluate(1e3, f64::NAN).unwrap_err().to_string();
+    assert!(e.contains("angular velocity") && e.contains("rad/s"), "{e}");
+}
+
+#[test]
+fn extreme_operating_range_is_finite() {
+    let j = joint();
+    for load in [1.0, 10.0, 1e3, 1e5, 1e6, 1e7] {
+        for omega in [0.0, 5e-324, 1e-300, 1e-12, 1.0, 1e3, 1e4, 1e6] {
+            let o = j.evaluate(load, omega).unwrap();
+            for (name, v) in [
+                ("mu", o.friction_coefficient),
+                ("h", o.film_thickness),
+                ("x1", o.fluid_load_fraction),
+                ("x2", o.asperity_load_fraction),
+                ("torque", o.torque),
+                ("S", o.sommerfeld_number),
+                ("lambda", o.lambda_ratio),
+            ] {
+                assert!(v.is_finite() && v >= 0.0, "P={load} ω={omega}: {name} = {v}");
+            }
+            assert!(o.film_thickness > 0.0);
+        }
+    }
+}
