@@ -83,7 +83,6 @@ fn serialize_round_trip_across_instances_is_bit_exact() {
     assert_eq!(serialize(b, s2), bytes);
     let mut s2 = s2;
     assert_eq!(unsafe { fmi2FreeFMUstate(b, &mut s2) }, OK);
-    let mut s = s;
     assert_eq!(unsafe { fmi2FreeFMUstate(a, &mut s) }, OK);
     unsafe { fmi2FreeInstance(a) };
     unsafe { fmi2FreeInstance(b) };

@@ -156,10 +156,10 @@ impl Instance {
         if !start.is_finite() {
             return Err(format!("startTime = {start} s is not a finite number"));
         }
-        if let Some(stop) = stop {
-            if !(stop.is_finite() && stop >= start) {
-                return Err(format!("stopTime = {stop} s must be a finite number >= startTime = {start} s"));
-            }
+        if let Some(stop) = stop
+            && !(stop.is_finite() && stop >= start)
+        {
+            return Err(format!("stopTime = {stop} s must be a finite number >= startTime = {start} s"));
         }
         self.start_time = start;
         self.time = start;

@@ -106,10 +106,10 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
     for (i, v) in info.variables.iter().enumerate() {
         if let Some(u) = v.unit {
             let def = info.unit(u).ok_or_else(|| format!("variable {}: unit {u} is not in the unit table", v.name))?;
-            if let Some(d) = v.display_unit {
-                if !def.display.iter().any(|x| x.name == d) {
-                    return Err(format!("variable {}: display unit {d} is not defined for unit {u}", v.name));
-                }
+            if let Some(d) = v.display_unit
+                && !def.display.iter().any(|x| x.name == d)
+            {
+                return Err(format!("variable {}: display unit {d} is not defined for unit {u}", v.name));
             }
         }
         let initial = match v.causality {

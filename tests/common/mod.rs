@@ -3,7 +3,6 @@
 #![allow(dead_code)]
 
 use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
 use pinjoint::fmi2::types::*;
 use std::ffi::{c_char, CStr, CString};
 use std::sync::Mutex;

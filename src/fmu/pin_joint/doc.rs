@@ -37,7 +37,7 @@ fn check_values() -> String {
     let j = Joint::new(&Params::default()).expect("defaults are valid");
     let mut s = String::new();
     for &load in &[5e3, 20e3, 60e3] {
-        for &w in &[0.0, 0.21, 6.28, 83.8] {
+        for &w in &[0.0, 0.21, 6.0, 83.8] {
             let op = j.evaluate(load, w).expect("valid point");
             writeln!(
                 s,

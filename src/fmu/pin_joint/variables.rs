@@ -109,9 +109,12 @@ fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>,
     }
 }
 
+/// (name, unit, display unit, min, max, inputs it depends on, description) of an output.
+type OutputRow = (&'static str, Option<&'static str>, Option<&'static str>, Option<f64>, Option<f64>, &'static [&'static str], &'static str);
+
 fn output(o: Output) -> Variable {
     const SPEED_LOAD: [&str; 2] = ["angular_velocity", "load"];
-    let (name, unit, display, min, max, deps, d): (&str, Option<&'static str>, Option<&'static str>, Option<f64>, Option<f64>, &[&'static str], &str) = match o {
+    let (name, unit, display, min, max, deps, d): OutputRow = match o {
         Output::Torque => ("torque", Some("N.m"), None, None, None, &SPEED_LOAD,
             "Friction torque on the pin, opposite to the angular velocity: -sign(omega) mu R P_T (eq. 11); linear in omega inside the zero-velocity band"),
         Output::FrictionCoefficient => ("friction_coefficient", None, None, Some(0.0), None, &SPEED_LOAD,
