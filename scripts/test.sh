@@ -19,12 +19,5 @@ fi
 # --- Rust: unit, integration, property and doc tests ------------------------------
 cargo test --workspace --release
 
-# --- FMUs ---------------------------------------------------------------------------
-cargo run --release -p fmu_build
-
-# --- Python harness (fmpy) ----------------------------------------------------------
-if [ -d tests/python ]; then
-  [ -x .venv/bin/python ] || python3 -m venv .venv
-  .venv/bin/pip install -q --disable-pip-version-check -r requirements-test.txt
-  .venv/bin/python -m pytest -q tests/python
-fi
+# --- FMUs and the Python harness (fmpy), then the Rust `fmi` crate against the packaged FMU
+PINJOINT_SKIP_APT=1 bash tests/python/run.sh

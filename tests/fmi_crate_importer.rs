@@ -21,9 +21,10 @@ fn fmu_path() -> PathBuf {
     if let Some(p) = std::env::var_os("PINJOINT_FMU") {
         return PathBuf::from(p);
     }
-    // target/<profile>/deps/<test> -> target/<profile>/libpinjoint.so
+    // The cdylib of this very build is target/<profile>/deps/libpinjoint.so, beside the test
+    // executable; `cargo test` does not refresh the copy in target/<profile>/, which may be stale.
     let exe = std::env::current_exe().unwrap();
-    let lib = exe.parent().unwrap().parent().unwrap().join("libpinjoint.so");
+    let lib = exe.parent().unwrap().join("libpinjoint.so");
     assert!(lib.is_file(), "{} not found (the cdylib of this build)", lib.display());
     let path = std::env::temp_dir().join(format!("pinjoint-test-{}.fmu", std::process::id()));
     let mut zip = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
