@@ -4,6 +4,7 @@
 
 pub mod common;
 pub mod error;
+pub mod fidelity_args;
 pub mod map;
 pub mod output;
 pub mod params_cmd;
