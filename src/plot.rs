@@ -77,14 +77,21 @@ pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,
     pub style: Style,
+    /// Index into [`PALETTE`]; `None`: the series' position in the chart.
+    pub colour: Option<usize>,
 }
 
 impl Series {
     pub fn line(name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        Self { name: name.into(), points, style: Style::Line }
+        Self { name: name.into(), points, style: Style::Line, colour: None }
     }
     pub fn styled(mut self, style: Style) -> Self {
         self.style = style;
+        self
+    }
+    /// Draw in `PALETTE[index % 10]`, e.g. to give a model curve and its data points one colour.
+    pub fn coloured(mut self, index: usize) -> Self {
+        self.colour = Some(index);
         self
     }
 }
@@ -379,7 +386,7 @@ where
     }
 
     for (i, s) in c.series.iter().enumerate() {
-        let col = PALETTE[i % PALETTE.len()];
+        let col = PALETTE[s.colour.unwrap_or(i) % PALETTE.len()];
         let style = col.stroke_width(2);
         let segments = split_segments(&s.points, c.x.scale, c.y.scale);
         let mut first = true;

@@ -3,6 +3,9 @@
 //! variant of [`Command`].
 
 pub mod common;
+pub mod cycle;
+pub mod cycle_plots;
+pub mod cycle_run;
 pub mod error;
 pub mod map;
 pub mod output;
@@ -47,6 +50,7 @@ pub enum Command {
     Sweep(sweep::SweepCmd),
     Stribeck(stribeck::StribeckCmd),
     Map(map::MapCmd),
+    Cycle(cycle::CycleCmd),
 }
 
 pub fn run(cli: &Cli) -> error::Result<()> {
@@ -56,6 +60,7 @@ pub fn run(cli: &Cli) -> error::Result<()> {
         Command::Sweep(c) => sweep::run(c),
         Command::Stribeck(c) => stribeck::run(c),
         Command::Map(c) => map::run(c),
+        Command::Cycle(c) => cycle::run(c),
     }
 }
 
