@@ -18,6 +18,7 @@
 
 pub mod asperity;
 pub mod contact;
+pub mod fidelity;
 pub mod film;
 pub mod gw;
 pub mod joint;

@@ -1,0 +1,123 @@
+//! The `boundary` level: μ = μ_c, the fluid carrying nothing.
+//!
+//! Valid where the fluid's share of the load is negligible. The answer at any speed is
+//! the rest state of the same load: μ = μ_c (exact at ω = 0), 1/γ1 = 0, 1/γ2 = 1, and the
+//! film h_c of the rest solution (eq. 19 alone), from the 1-D rest table. Its error grows
+//! with speed (the fluid's share 1/γ1 grows roughly like ω in the boundary regime) and
+//! falls with load, so over an envelope it is largest near the fast, light corner — or, if
+//! the envelope reaches past the Stribeck minimum, near that minimum.
+//!
+//! # Error measurement
+//! The level is compared with the complete solve on a 17 × 49 grid uniform in
+//! (ln P, ln |ω|) that includes the envelope's edges and corners, then on a 9 × 9 grid
+//! spanning the two grid steps around the worst point, which pins an interior maximum.
+//! The errors are smooth in (ln P, ln |ω|); the advertised bound is [`SAFETY`] × the
+//! largest measured error.
+
+use super::check::ErrorReport;
+use super::envelope::{lerp_log, Envelope};
+use super::evaluation::{composite_roughness, Evaluation, Source};
+use super::rest::RestTable;
+use super::table::rest_evaluation;
+use crate::joint::Joint;
+
+/// Advertised bound = `SAFETY` × the largest measured error.
+pub const SAFETY: f64 = 1.25;
+const GRID_LOADS: usize = 17;
+const GRID_SPEEDS: usize = 49;
+const LOCAL: usize = 9;
+
+/// The boundary level over an envelope.
+#[derive(Debug, Clone)]
+pub struct BoundaryLevel {
+    envelope: Envelope,
+    rest: RestTable,
+    mu_c: f64,
+    radius: f64,
+    roughness: f64,
+    report: ErrorReport,
+}
+
+impl BoundaryLevel {
+    /// Build the rest table (h_c to `film_target` relative) and measure the level's error
+    /// over `envelope` against the complete solve.
+    pub fn build(joint: &Joint, envelope: &Envelope, film_target: f64) -> Self {
+        let p = joint.params();
+        let rest = RestTable::build(joint, envelope.load_min, envelope.load_max, film_target);
+        let mut level = Self {
+            envelope: *envelope,
+            rest,
+            mu_c: p.friction.boundary_friction_coefficient,
+            radius: p.geometry.pin_radius,
+            roughness: composite_roughness(joint),
+            report: ErrorReport::default(),
+        };
+        level.report = level.measure(joint);
+        level
+    }
+
+    fn measure(&self, joint: &Joint) -> ErrorReport {
+        let env = &self.envelope;
+        let mut report = ErrorReport::default();
+        let (mut worst, mut wa, mut wb) = (-1.0, 0, 0);
+        for a in 0..GRID_LOADS {
+            let load = lerp_log(env.load_min, env.load_max, a as f64 / (GRID_LOADS - 1) as f64);
+            let mut guess = None;
+            for b in 0..GRID_SPEEDS {
+                let omega = lerp_log(env.speed_min, env.speed_max, b as f64 / (GRID_SPEEDS - 1) as f64);
+                let op = joint.evaluate_from(load, omega, guess).expect("inside a validated envelope");
+                guess = Some(op.logit);
+                let e = report.add(&self.interior(load, omega), &op);
+                if e > worst {
+                    (worst, wa, wb) = (e, a, b);
+                }
+            }
+        }
+        // Local grid over the two steps around the worst point, in fractions of the envelope.
+        let (fa, fb) = (wa as f64 / (GRID_LOADS - 1) as f64, wb as f64 / (GRID_SPEEDS - 1) as f64);
+        let (da, db) = (1.0 / (GRID_LOADS - 1) as f64, 1.0 / (GRID_SPEEDS - 1) as f64);
+        for a in 0..LOCAL {
+            let load = lerp_log(env.load_min, env.load_max, fa - da + 2.0 * da * a as f64 / (LOCAL - 1) as f64);
+            for b in 0..LOCAL {
+                let omega = lerp_log(env.speed_min, env.speed_max, fb - db + 2.0 * db * b as f64 / (LOCAL - 1) as f64);
+                let op = joint.evaluate(load, omega).expect("inside a validated envelope");
+                report.add(&self.interior(load, omega), &op);
+            }
+        }
+        let rest_error = self.rest.measured_error();
+        report.film_thickness = report.film_thickness.max(rest_error);
+        report
+    }
+
+    #[inline(always)]
+    fn interior(&self, load: f64, omega: f64) -> Evaluation {
+        let h = self.rest.film(load).expect("load inside the envelope");
+        let mut e = rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Boundary);
+        e.angular_velocity = omega;
+        e
+    }
+
+    /// The boundary answer, or `None` outside the envelope (ω = 0 with the load in range
+    /// is the rest state, answered exactly for μ).
+    #[inline]
+    pub fn evaluate(&self, load: f64, omega: f64) -> Option<Evaluation> {
+        if self.envelope.contains(load, omega) {
+            Some(self.interior(load, omega))
+        } else if omega == 0.0 && self.envelope.contains_load(load) {
+            let h = self.rest.film(load)?;
+            Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Rest))
+        } else {
+            None
+        }
+    }
+
+    /// Largest errors measured against the complete solve over the envelope.
+    pub fn measured(&self) -> &ErrorReport {
+        &self.report
+    }
+
+    /// The advertised bound: [`SAFETY`] × the largest measured error.
+    pub fn error_bound(&self) -> f64 {
+        SAFETY * self.report.max()
+    }
+}

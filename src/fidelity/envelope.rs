@@ -1,0 +1,107 @@
+//! The operating envelope a scene declares: the load and speed-magnitude ranges it visits.
+
+use super::error::FidelityError;
+use serde::{Deserialize, Serialize};
+
+/// The load range (N) and speed-magnitude range (|ω|, rad/s) a scene will visit.
+///
+/// Both ranges are closed and strictly positive: the table levels are built in
+/// (ln P, ln |ω|), and ω = 0 (rest) is handled separately and exactly, so the speed
+/// range is that of the *moving* joint. The model depends on |ω| only, so one range
+/// covers both directions of motion.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Envelope {
+    /// Smallest load, N (> 0).
+    pub load_min: f64,
+    /// Largest load, N (> load_min).
+    pub load_max: f64,
+    /// Smallest speed magnitude |ω|, rad/s (> 0).
+    pub speed_min: f64,
+    /// Largest speed magnitude |ω|, rad/s (> speed_min).
+    pub speed_max: f64,
+}
+
+impl Envelope {
+    /// A validated envelope: loads in N, speed magnitudes in rad/s.
+    pub fn new(load_min: f64, load_max: f64, speed_min: f64, speed_max: f64) -> Result<Self, FidelityError> {
+        let e = Self { load_min, load_max, speed_min, speed_max };
+        e.validate()?;
+        Ok(e)
+    }
+
+    /// Check every bound: finite, > 0, min < max. Errors name the quantity, value and unit.
+    pub fn validate(&self) -> Result<(), FidelityError> {
+        for (quantity, unit, min, max) in
+            [("load", "N", self.load_min, self.load_max), ("speed magnitude |omega|", "rad/s", self.speed_min, self.speed_max)]
+        {
+            for (end, value) in [("minimum", min), ("maximum", max)] {
+                if !(value.is_finite() && value > 0.0) {
+                    return Err(FidelityError::EnvelopeBound { quantity, end, value, unit });
+                }
+            }
+            if min >= max {
+                return Err(FidelityError::EnvelopeOrder { quantity, min, max, unit });
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether `load` (N) and |`omega`| (rad/s) are inside the envelope (ends included).
+    #[inline]
+    pub fn contains(&self, load: f64, omega: f64) -> bool {
+        let w = omega.abs();
+        load >= self.load_min && load <= self.load_max && w >= self.speed_min && w <= self.speed_max
+    }
+
+    /// Whether `load` (N) is inside the load range (ends included).
+    #[inline]
+    pub fn contains_load(&self, load: f64) -> bool {
+        load >= self.load_min && load <= self.load_max
+    }
+
+    /// The point at fractions (a, b) ∈ [0, 1]² of the envelope in (ln P, ln |ω|).
+    pub fn at_log_fraction(&self, a: f64, b: f64) -> (f64, f64) {
+        (lerp_log(self.load_min, self.load_max, a), lerp_log(self.speed_min, self.speed_max, b))
+    }
+}
+
+/// The point at fraction `a` of [lo, hi] in logarithmic coordinates, ends exact.
+pub(crate) fn lerp_log(lo: f64, hi: f64, a: f64) -> f64 {
+    if a <= 0.0 {
+        lo
+    } else if a >= 1.0 {
+        hi
+    } else {
+        (lo.ln() + a * (hi.ln() - lo.ln())).exp().clamp(lo, hi)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validation_names_quantity_value_and_unit() {
+        assert!(Envelope::new(5e3, 60e3, 0.01, 10.0).is_ok());
+        let e = Envelope::new(60e3, 5e3, 0.01, 10.0).unwrap_err().to_string();
+        assert!(e.contains("load") && e.contains("60000") && e.contains(" N"), "{e}");
+        let e = Envelope::new(5e3, 60e3, 0.0, 10.0).unwrap_err().to_string();
+        assert!(e.contains("speed") && e.contains("minimum = 0") && e.contains("rad/s"), "{e}");
+        let e = Envelope::new(5e3, f64::NAN, 0.01, 10.0).unwrap_err().to_string();
+        assert!(e.contains("load maximum = NaN N"), "{e}");
+        assert!(Envelope::new(-1.0, 60e3, 0.01, 10.0).is_err());
+        assert!(Envelope::new(5e3, 60e3, 1.0, 1.0).is_err());
+        assert!(Envelope::new(5e3, 60e3, 1.0, f64::INFINITY).is_err());
+    }
+
+    #[test]
+    fn contains_uses_the_speed_magnitude_and_includes_the_ends() {
+        let e = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
+        assert!(e.contains(5e3, -10.0) && e.contains(60e3, 0.01));
+        assert!(!e.contains(4999.0, 1.0) && !e.contains(20e3, 0.0) && !e.contains(20e3, -10.5));
+        let (p, w) = e.at_log_fraction(1.0, 0.0);
+        assert_eq!((p, w), (60e3, 0.01));
+        let (p, _) = e.at_log_fraction(0.5, 0.5);
+        assert!((p - (5e3f64 * 60e3).sqrt()).abs() < 1e-6);
+    }
+}

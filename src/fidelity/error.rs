@@ -1,0 +1,39 @@
+//! Everything that can go wrong when building or using a fidelity level.
+
+use crate::joint::ModelError;
+use crate::params::ParamError;
+use thiserror::Error;
+
+/// A rejected fidelity setting, or an evaluation the model cannot take.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FidelityError {
+    /// The fidelity name is not one of `full | table | boundary | auto`.
+    #[error("fidelity = \"{0}\" is not a fidelity level: it must be one of full, table, boundary, auto")]
+    UnknownFidelity(String),
+    /// Tolerance not a finite number > 0.
+    #[error("tolerance = {0} (relative error, dimensionless) is invalid: it must be a finite number > 0")]
+    Tolerance(f64),
+    /// Tolerance below what the reference (the full solve) itself guarantees.
+    #[error(
+        "tolerance = {value} (relative error, dimensionless) is below the accuracy of the full solve itself ({floor}): no level can be shown to meet it"
+    )]
+    ToleranceBelowModelAccuracy { value: f64, floor: f64 },
+    /// One end of an envelope range is not a finite number > 0.
+    #[error("envelope {quantity} {end} = {value} {unit} is invalid: it must be a finite number > 0 {unit}")]
+    EnvelopeBound { quantity: &'static str, end: &'static str, value: f64, unit: &'static str },
+    /// An envelope range whose minimum is not below its maximum.
+    #[error("envelope {quantity}: minimum = {min} {unit} must be below maximum = {max} {unit}")]
+    EnvelopeOrder { quantity: &'static str, min: f64, max: f64, unit: &'static str },
+    /// The table would need more cells than allowed to meet the tolerance.
+    #[error(
+        "table: meeting tolerance = {tolerance} (relative error) over the envelope needs more than {limit} cells \
+         (reached {cells} cells with a measured error of {measured}); use a larger tolerance, a smaller envelope, or fidelity full"
+    )]
+    TableTooLarge { tolerance: f64, cells: usize, limit: usize, measured: f64 },
+    /// The parameter set is invalid.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// The operating point is invalid (load ≤ 0, non-finite speed).
+    #[error(transparent)]
+    Model(#[from] ModelError),
+}

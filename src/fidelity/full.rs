@@ -1,0 +1,41 @@
+//! The `full` level: the complete solve at every call, warm-started from the previous one.
+
+use crate::joint::{Joint, ModelError, OperatingPoint};
+
+/// Accuracy of the complete solve itself, relative in μ and h_c: the bracket test of
+/// `tests/solver.rs` (the root is bracketed to ±1e-11 in the logit and μ, h_c move by
+/// less than 1e-10 inside that bracket). No level can be verified below it.
+pub const FULL_ERROR_BOUND: f64 = 1e-10;
+
+/// The complete solve, warm-started from the last solution's logit.
+///
+/// The warm start changes only the iteration count, not the answer (same root to the
+/// solver's step tolerance, ~1e-12); a rest point (logit −∞) leaves the next call cold.
+#[derive(Debug, Clone)]
+pub struct WarmSolver {
+    joint: Joint,
+    last: Option<f64>,
+}
+
+impl WarmSolver {
+    pub fn new(joint: Joint) -> Self {
+        Self { joint, last: None }
+    }
+
+    /// The complete operating point at `load` (N) and `omega` (rad/s).
+    #[inline]
+    pub fn evaluate(&mut self, load: f64, omega: f64) -> Result<OperatingPoint, ModelError> {
+        let op = self.joint.evaluate_from(load, omega, self.last)?;
+        self.last = op.logit.is_finite().then_some(op.logit);
+        Ok(op)
+    }
+
+    /// Forget the previous solution (the next call starts cold).
+    pub fn reset(&mut self) {
+        self.last = None;
+    }
+
+    pub fn joint(&self) -> &Joint {
+        &self.joint
+    }
+}

@@ -1,0 +1,331 @@
+//! Fidelity levels: speed against error, with the error always known (issue 6).
+//!
+//! | level | per call | error |
+//! |---|---|---|
+//! | [`Fidelity::Full`] | the complete solve, warm-started from the previous call | the solver's, [`FULL_ERROR_BOUND`] |
+//! | [`Fidelity::Table`] | bicubic interpolation of the Stribeck map in (ln P, ln \|ω\|) ([`table`]) | measured over the envelope, ≤ tolerance |
+//! | [`Fidelity::Boundary`] | μ = μ_c, film of the rest state ([`boundary`]) | measured over the envelope |
+//! | [`Fidelity::Auto`] | the cheapest of boundary < table < full whose bound is ≤ tolerance | that level's |
+//!
+//! Errors are measured against the complete solve: relative in μ, torque and h_c,
+//! absolute in the load shares 1/γ1, 1/γ2 ([`ErrorReport`]). The table and boundary levels
+//! hold over a declared [`Envelope`] of loads and speed magnitudes; outside it they answer
+//! with the complete solve ([`Source::Fallback`]), flag the first such call
+//! ([`Evaluation::first_fallback`]) and count them ([`Evaluator::fallbacks`]), so the
+//! caller can say so once in its log (the library does no I/O). ω = 0 (a stuck joint) is
+//! answered by every level with μ = μ_c exactly and the rest film (1-D table in load for
+//! table and boundary).
+//!
+//! ```
+//! use pinjoint::Params;
+//! use pinjoint::fidelity::{Envelope, Evaluator, Fidelity, Level};
+//! let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap(); // N, rad/s
+//! let mut ev = Evaluator::new(&Params::default(), "auto".parse().unwrap(), 1e-4, env).unwrap();
+//! assert_eq!(ev.chosen(), Level::Table);
+//! assert!(ev.error_bound() <= 1e-4);
+//! let e = ev.evaluate(20e3, 0.2).unwrap();
+//! assert!((e.friction_coefficient - 0.1183).abs() < 1e-3);
+//! assert_eq!(ev.evaluate(20e3, 0.0).unwrap().friction_coefficient, 0.12); // rest: μ_c exactly
+//! ```
+
+pub mod boundary;
+pub mod check;
+pub mod envelope;
+pub mod error;
+pub mod evaluation;
+pub mod full;
+mod hermite;
+pub mod rest;
+pub mod table;
+
+pub use boundary::BoundaryLevel;
+pub use check::ErrorReport;
+pub use envelope::Envelope;
+pub use error::FidelityError;
+pub use evaluation::{Evaluation, Source};
+pub use full::{WarmSolver, FULL_ERROR_BOUND};
+pub use table::{StribeckTable, TableStats};
+
+use crate::joint::{Joint, OperatingPoint};
+use crate::params::Params;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::str::FromStr;
+
+/// The fidelity a caller asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Fidelity {
+    Full,
+    Table,
+    Boundary,
+    Auto,
+}
+
+impl Fidelity {
+    pub const ALL: [Fidelity; 4] = [Fidelity::Full, Fidelity::Table, Fidelity::Boundary, Fidelity::Auto];
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Fidelity::Full => "full",
+            Fidelity::Table => "table",
+            Fidelity::Boundary => "boundary",
+            Fidelity::Auto => "auto",
+        }
+    }
+}
+
+impl fmt::Display for Fidelity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl FromStr for Fidelity {
+    type Err = FidelityError;
+    /// `full | table | boundary | auto`, ASCII case-insensitive, surrounding blanks ignored.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let t = s.trim();
+        Fidelity::ALL.into_iter().find(|f| f.as_str().eq_ignore_ascii_case(t)).ok_or_else(|| FidelityError::UnknownFidelity(s.to_string()))
+    }
+}
+
+/// The level an [`Evaluator`] actually runs (what `auto` resolved to).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Level {
+    Full,
+    Table,
+    Boundary,
+}
+
+impl Level {
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Level::Full => "full",
+            Level::Table => "table",
+            Level::Boundary => "boundary",
+        }
+    }
+}
+
+impl fmt::Display for Level {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// What `auto` (or an explicit level) found for one level over the envelope.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Assessment {
+    pub level: Level,
+    /// The level's advertised bound, when it could be built.
+    pub error_bound: Option<f64>,
+    /// Whether the bound is within the tolerance.
+    pub accepted: bool,
+    /// Why not, when it was not (e.g. the table would be too large).
+    pub note: String,
+}
+
+#[derive(Debug, Clone)]
+enum Backend {
+    Full,
+    Table(Box<StribeckTable>),
+    Boundary(Box<BoundaryLevel>),
+}
+
+/// One joint at a chosen fidelity: build once per parameter set and envelope, then call
+/// [`Evaluator::evaluate`] at every step.
+#[derive(Debug, Clone)]
+pub struct Evaluator {
+    requested: Fidelity,
+    tolerance: f64,
+    envelope: Envelope,
+    backend: Backend,
+    solver: WarmSolver,
+    error_bound: f64,
+    measured: ErrorReport,
+    assessments: Vec<Assessment>,
+    fallbacks: u64,
+}
+
+/// Check a tolerance: a finite number > 0.
+pub fn validate_tolerance(tolerance: f64) -> Result<(), FidelityError> {
+    if tolerance.is_finite() && tolerance > 0.0 { Ok(()) } else { Err(FidelityError::Tolerance(tolerance)) }
+}
+
+impl Evaluator {
+    /// Build the level `fidelity` for `params` over `envelope`, with `tolerance` the
+    /// largest relative error wanted (in μ, torque and h_c; absolute in the shares).
+    ///
+    /// * `Full`: nothing to build; the bound is [`FULL_ERROR_BOUND`].
+    /// * `Table`: tabulated and refined until its bound is ≤ `tolerance`
+    ///   ([`FidelityError::TableTooLarge`] if that needs more than [`table::MAX_CELLS`]).
+    /// * `Boundary`: built and measured; its bound is reported even when it exceeds
+    ///   `tolerance` (the caller asked for this level: see [`Evaluator::within_tolerance`]).
+    /// * `Auto`: boundary if its bound is ≤ `tolerance`, else table if it can meet it,
+    ///   else full. [`Evaluator::assessments`] says what each candidate measured.
+    ///
+    /// The envelope is validated for every level (so a caller's flags are checked early),
+    /// though `Full` does not use it.
+    pub fn new(params: &Params, fidelity: Fidelity, tolerance: f64, envelope: Envelope) -> Result<Self, FidelityError> {
+        validate_tolerance(tolerance)?;
+        envelope.validate()?;
+        let joint = Joint::new(params)?;
+        if matches!(fidelity, Fidelity::Table | Fidelity::Auto) && tolerance < FULL_ERROR_BOUND {
+            return Err(FidelityError::ToleranceBelowModelAccuracy { value: tolerance, floor: FULL_ERROR_BOUND });
+        }
+        let mut assessments = Vec::new();
+        let full_assessment = || Assessment {
+            level: Level::Full,
+            error_bound: Some(FULL_ERROR_BOUND),
+            accepted: FULL_ERROR_BOUND <= tolerance,
+            note: String::new(),
+        };
+        let mut chosen: Option<(Backend, f64, ErrorReport)> = None;
+        if fidelity == Fidelity::Full {
+            assessments.push(full_assessment());
+            chosen = Some((Backend::Full, FULL_ERROR_BOUND, ErrorReport::default()));
+        }
+        if matches!(fidelity, Fidelity::Boundary | Fidelity::Auto) {
+            let b = BoundaryLevel::build(&joint, &envelope, (0.1 * tolerance).max(FULL_ERROR_BOUND));
+            let bound = b.error_bound();
+            let accepted = bound <= tolerance;
+            assessments.push(Assessment {
+                level: Level::Boundary,
+                error_bound: Some(bound),
+                accepted,
+                note: if accepted { String::new() } else { format!("measured bound {bound:.3e} exceeds the tolerance") },
+            });
+            if accepted || fidelity == Fidelity::Boundary {
+                chosen = Some((Backend::Boundary(Box::new(b.clone())), bound, *b.measured()));
+            }
+        }
+        if chosen.is_none() && matches!(fidelity, Fidelity::Table | Fidelity::Auto) {
+            match StribeckTable::build(&joint, &envelope, tolerance) {
+                Ok(t) => {
+                    let bound = t.error_bound();
+                    assessments.push(Assessment { level: Level::Table, error_bound: Some(bound), accepted: true, note: String::new() });
+                    chosen = Some((Backend::Table(Box::new(t.clone())), bound, *t.measured()));
+                }
+                Err(e @ FidelityError::TableTooLarge { .. }) if fidelity == Fidelity::Auto => {
+                    assessments.push(Assessment { level: Level::Table, error_bound: None, accepted: false, note: e.to_string() });
+                }
+                Err(e) => return Err(e),
+            }
+        }
+        let (backend, error_bound, measured) = match chosen {
+            Some(c) => c,
+            None => {
+                assessments.push(full_assessment());
+                (Backend::Full, FULL_ERROR_BOUND, ErrorReport::default())
+            }
+        };
+        Ok(Self {
+            requested: fidelity,
+            tolerance,
+            envelope,
+            backend,
+            solver: WarmSolver::new(joint),
+            error_bound,
+            measured,
+            assessments,
+            fallbacks: 0,
+        })
+    }
+
+    /// The outputs at `load` (N, > 0) and `omega` (rad/s, finite).
+    #[inline]
+    pub fn evaluate(&mut self, load: f64, omega: f64) -> Result<Evaluation, FidelityError> {
+        let hit = match &self.backend {
+            Backend::Table(t) => t.evaluate(load, omega),
+            Backend::Boundary(b) => b.evaluate(load, omega),
+            Backend::Full => {
+                let op = self.solver.evaluate(load, omega)?;
+                return Ok(Evaluation::from_point(&op, Source::Full));
+            }
+        };
+        match hit {
+            Some(e) => Ok(e),
+            None => {
+                // Also the path of invalid inputs (NaN fails every comparison): the solver rejects them.
+                let op = self.solver.evaluate(load, omega)?;
+                let mut e = Evaluation::from_point(&op, Source::Fallback);
+                e.first_fallback = self.fallbacks == 0;
+                self.fallbacks += 1;
+                Ok(e)
+            }
+        }
+    }
+
+    /// As [`Evaluator::evaluate`], completed into every output of the model
+    /// ([`Evaluator::operating_point`]).
+    pub fn evaluate_point(&mut self, load: f64, omega: f64) -> Result<(OperatingPoint, Source), FidelityError> {
+        let e = self.evaluate(load, omega)?;
+        Ok((self.operating_point(&e), e.source))
+    }
+
+    /// Complete an evaluation into an [`OperatingPoint`]: Hertz quantities, Roelands
+    /// viscosity and Sommerfeld number depend on load and speed only and are computed directly
+    /// (equal to the full solve's to rounding).
+    pub fn operating_point(&self, e: &Evaluation) -> OperatingPoint {
+        evaluation::complete(self.solver.joint(), e)
+    }
+
+    /// What the caller asked for.
+    pub fn requested(&self) -> Fidelity {
+        self.requested
+    }
+    /// The level in use (what `auto` picked).
+    pub fn chosen(&self) -> Level {
+        match self.backend {
+            Backend::Full => Level::Full,
+            Backend::Table(_) => Level::Table,
+            Backend::Boundary(_) => Level::Boundary,
+        }
+    }
+    /// The advertised error bound of the level in use inside the envelope: relative in μ,
+    /// torque and h_c, absolute in the shares. Outside the envelope the answer is the full
+    /// solve's ([`FULL_ERROR_BOUND`]).
+    pub fn error_bound(&self) -> f64 {
+        self.error_bound
+    }
+    /// The largest errors measured over the envelope for the level in use (all zero for full).
+    pub fn measured(&self) -> &ErrorReport {
+        &self.measured
+    }
+    /// Whether [`Evaluator::error_bound`] is within the tolerance (always for table and
+    /// auto; for an explicit boundary level, only if the envelope is deep enough in boundary).
+    pub fn within_tolerance(&self) -> bool {
+        self.error_bound <= self.tolerance
+    }
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+    pub fn envelope(&self) -> &Envelope {
+        &self.envelope
+    }
+    /// Every level considered, in order, with its bound (for auto: why it chose).
+    pub fn assessments(&self) -> &[Assessment] {
+        &self.assessments
+    }
+    /// Out-of-envelope evaluations so far (answered by the complete solve).
+    pub fn fallbacks(&self) -> u64 {
+        self.fallbacks
+    }
+    /// The table, when the level in use is `table`.
+    pub fn table(&self) -> Option<&StribeckTable> {
+        match &self.backend {
+            Backend::Table(t) => Some(t),
+            _ => None,
+        }
+    }
+    /// The model behind the evaluator.
+    pub fn joint(&self) -> &Joint {
+        self.solver.joint()
+    }
+    /// Forget the warm start (e.g. after a jump in the inputs); the answers do not change.
+    pub fn reset(&mut self) {
+        self.solver.reset();
+    }
+}
+

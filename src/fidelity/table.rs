@@ -1,0 +1,433 @@
+//! The `table` level: the Stribeck map tabulated once over the envelope and interpolated
+//! bicubically in (ln P, ln |ω|).
+//!
+//! # What is tabulated
+//! The map is steep in its natural variables: across the mixed → full-film transition the
+//! asperity share 1/γ2 falls from ~10⁻² to 10⁻²² within a third of a decade of speed (the
+//! solver's logit y = ln(x1/x2) grows like ω² there), so μ = μ_f + μ_c/γ2 has a corner
+//! that no polynomial of modest degree follows. The table therefore holds three smooth
+//! functions of (ln P, ln |ω|) and rebuilds the outputs from them exactly:
+//!
+//! * `μ_f`, the fluid (Bair–Winer) part of μ — smooth (∝ ω in boundary, saturating in
+//!   full film);
+//! * `s = asinh y`, the load sharing: ≈ y near the transition, ≈ ±ln 2|y| far from it,
+//!   so it stays of order ten where y runs from −20 (boundary) to 10⁶ (deep full film);
+//! * `h_c`.
+//!
+//! and then `y = sinh s`, `x1 = 1/(1 + e^{−y})`, `x2 = 1/(1 + e^{y})` (the smaller one as
+//! e^{−|y|} times the larger, without cancellation), `μ = μ_f + μ_c·x2`, `T = μ·R·P`,
+//! `λ = h_c/σ`. The sigmoid, evaluated exactly, carries the corner; an error δs moves μ by
+//! `μ_c·x1·x2·cosh(s)·δs`, which vanishes both in boundary and in full film. (Tabulating
+//! ln μ_f and ln h_c instead gave the same grid sizes on the envelopes tried, but costs two more
+//! exponentials per call; μ_f and h_c vary by less than a few decades over an envelope and
+//! their relative error is what the refinement measures.)
+//!
+//! # Interpolation
+//! A uniform grid in x = ln P and z = ln |ω| covers the envelope exactly (the envelope
+//! ends are nodes), plus two rings of ghost nodes outside it. At every node the three
+//! values come from the complete solve (warm-started along each row); the slopes ∂/∂x,
+//! ∂/∂z and ∂²/∂x∂z come from fourth-order central differences of the node values; each
+//! cell stores the 3 × 16 power coefficients of its bicubic Hermite patches
+//! ([`super::hermite`]), so that an evaluation is two logarithms, an index computation,
+//! three Horner evaluations and two exponentials (sinh s, the sigmoid). The patches share
+//! values and slopes at the nodes, so the interpolant is C¹ across cells (no jumps for an
+//! adaptive integrator to trip on).
+//!
+//! # Error control
+//! The error of a cubic Hermite patch falls like h⁴ and is largest near the middle of a
+//! cell. After each build the table is compared with the complete solve at the centre of
+//! *every* cell and at random points of the envelope; the largest error over those (relative
+//! in μ, torque and h_c; absolute in the shares) is the measured error. The grid is refined
+//! until `SAFETY × measured ≤ tolerance`, i.e. the measured error is at most half the
+//! tolerance, and `SAFETY × measured` is the bound the table advertises. Each axis is
+//! refined separately: the fourth differences Δ⁴ of the node values along x and along z
+//! (≈ h⁴·∂⁴/∂x⁴, weighted by how much each tabulated variable moves μ, h_c and the shares)
+//! split the measured error between the two directions, and each step is chosen from the
+//! h⁴ law so that each direction contributes half the target.
+
+use super::check::{CheckRng, ErrorReport};
+use super::envelope::Envelope;
+use super::error::FidelityError;
+use super::evaluation::{composite_roughness, regime_from_shares, Evaluation, Source};
+use super::hermite::{bicubic, bicubic_coefficients, central_slope, fourth_difference};
+use super::rest::RestTable;
+use crate::joint::Joint;
+use serde::Serialize;
+
+/// Advertised bound = `SAFETY` × the largest error measured on the check points.
+pub const SAFETY: f64 = 2.0;
+/// Largest table, in cells (each cell holds 3 × 16 coefficients, 384 bytes).
+pub const MAX_CELLS: usize = 1 << 16;
+/// Random check points per build, besides every cell centre.
+pub const RANDOM_CHECKS: usize = 256;
+/// Initial grid step in ln P and ln |ω|.
+const INITIAL_STEP: f64 = 0.5;
+
+/// One cell: the bicubic coefficients of μ_f, asinh y and h_c.
+#[derive(Debug, Clone, Copy)]
+#[repr(align(64))]
+struct Cell([[f64; 16]; 3]);
+
+/// What a table build cost and produced.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TableStats {
+    /// Cells along ln P and along ln |ω|.
+    pub load_cells: usize,
+    pub speed_cells: usize,
+    /// Refinement passes.
+    pub passes: usize,
+    /// Complete solves at the nodes and at the check points, all passes.
+    pub node_solves: usize,
+    pub check_solves: usize,
+    /// Cells of the 1-D rest table.
+    pub rest_cells: usize,
+    /// Wall time of the build, s (measured with `std::time::Instant`).
+    pub build_seconds: f64,
+}
+
+/// The Stribeck map over an envelope, interpolated bicubically in (ln P, ln |ω|).
+#[derive(Debug, Clone)]
+pub struct StribeckTable {
+    x0: f64,
+    inv_hx: f64,
+    nx: usize,
+    z0: f64,
+    inv_hz: f64,
+    nz: usize,
+    cells: Vec<Cell>,
+    envelope: Envelope,
+    mu_c: f64,
+    radius: f64,
+    roughness: f64,
+    rest: RestTable,
+    report: ErrorReport,
+    stats: TableStats,
+}
+
+/// The tabulated variables at one solution.
+#[inline]
+fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
+    [op.fluid_friction_coefficient, op.logit.asinh(), op.film_thickness]
+}
+
+/// Weights turning errors in the three tabulated variables into errors of the outputs:
+/// (1/μ for μ_f, μ_c·x1·x2·cosh s/μ and x1·x2·cosh s for s, 1/h_c for h_c).
+#[inline]
+fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
+    let mu = op.friction_coefficient;
+    let cosh_s = op.logit.hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
+    let share = op.fluid_load_fraction * op.asperity_load_fraction * cosh_s;
+    (1.0 / mu, mu_c * share / mu, share, 1.0 / op.film_thickness)
+}
+
+impl StribeckTable {
+    /// Tabulate the map of `joint` over `envelope`, refined until the error measured against
+    /// the complete solve, times [`SAFETY`], is at most `tolerance`.
+    pub fn build(joint: &Joint, envelope: &Envelope, tolerance: f64) -> Result<Self, FidelityError> {
+        envelope.validate()?;
+        if !(tolerance.is_finite() && tolerance > 0.0) {
+            return Err(FidelityError::Tolerance(tolerance));
+        }
+        let start = std::time::Instant::now();
+        let target = tolerance / SAFETY;
+        let lx = envelope.load_max.ln() - envelope.load_min.ln();
+        let lz = envelope.speed_max.ln() - envelope.speed_min.ln();
+        let mut nx = ((lx / INITIAL_STEP).ceil() as usize).max(2);
+        let mut nz = ((lz / INITIAL_STEP).ceil() as usize).max(2);
+        let rest = RestTable::build(joint, envelope.load_min, envelope.load_max, target);
+        let (mut node_solves, mut check_solves, mut passes) = (0, 0, 0);
+        loop {
+            passes += 1;
+            let (mut table, ex, ez) = Self::tabulate(joint, envelope, nx, nz, rest.clone());
+            node_solves += (nx + 5) * (nz + 5);
+            let mut report = table.check_centres(joint);
+            check_solves += report.points;
+            if SAFETY * report.max() <= tolerance {
+                let mut rng = CheckRng::new(0x5eed_0000 + passes as u64);
+                report.merge(&table.check_random(joint, &mut rng, RANDOM_CHECKS));
+                check_solves += RANDOM_CHECKS;
+            }
+            let measured = report.max();
+            if SAFETY * measured <= tolerance {
+                let rest_measured = table.rest.measured_error();
+                table.report = report;
+                table.report.film_thickness = table.report.film_thickness.max(rest_measured);
+                table.stats = TableStats {
+                    load_cells: nx,
+                    speed_cells: nz,
+                    passes,
+                    node_solves,
+                    check_solves,
+                    rest_cells: table.rest.cells(),
+                    build_seconds: start.elapsed().as_secs_f64(),
+                };
+                return Ok(table);
+            }
+            // Split the measured error between the directions by the fourth differences and
+            // choose each step from the h⁴ law so that each direction contributes target/2.
+            let (ex, ez) = if ex + ez > 0.0 && measured.is_finite() { (ex, ez) } else { (1.0, 1.0) };
+            let c = if measured.is_finite() { measured / (ex + ez) } else { 16.0 * target / (ex + ez) };
+            let grow = |n: usize, e: f64| {
+                let f = (2.0 * c * e / target).powf(0.25) * 1.05;
+                ((n as f64 * f.clamp(1.0, 4.0)).ceil() as usize).max(n)
+            };
+            let (mut mx, mut mz) = (grow(nx, ex), grow(nz, ez));
+            if mx == nx && mz == nz {
+                if ex >= ez {
+                    mx = nx + nx.div_ceil(4);
+                } else {
+                    mz = nz + nz.div_ceil(4);
+                }
+            }
+            if mx * mz > MAX_CELLS {
+                return Err(FidelityError::TableTooLarge { tolerance, cells: mx * mz, limit: MAX_CELLS, measured });
+            }
+            (nx, nz) = (mx, mz);
+        }
+    }
+
+    /// Solve at the nodes, build the cells; returns the table and the fourth-difference
+    /// error indicators along ln P and ln |ω|.
+    fn tabulate(joint: &Joint, env: &Envelope, nx: usize, nz: usize, rest: RestTable) -> (Self, f64, f64) {
+        let p = joint.params();
+        let mu_c = p.friction.boundary_friction_coefficient;
+        let (x0, z0) = (env.load_min.ln(), env.speed_min.ln());
+        let hx = (env.load_max.ln() - x0) / nx as f64;
+        let hz = (env.speed_max.ln() - z0) / nz as f64;
+        let (gx, gz) = (nx + 5, nz + 5); // nodes −2 ..= n + 2
+        let at = |k: usize, n: usize, v0: f64, h: f64, lo: f64, hi: f64| {
+            // Envelope ends exactly, for the nodes on them.
+            if k == 2 {
+                lo
+            } else if k == n + 2 {
+                hi
+            } else {
+                (v0 + (k as f64 - 2.0) * h).exp()
+            }
+        };
+        let mut q = vec![[0.0f64; 3]; gx * gz];
+        let mut w = vec![(0.0f64, 0.0f64, 0.0f64, 0.0f64); gx * gz];
+        for a in 0..gx {
+            let load = at(a, nx, x0, hx, env.load_min, env.load_max);
+            let mut guess = None;
+            for b in 0..gz {
+                let omega = at(b, nz, z0, hz, env.speed_min, env.speed_max);
+                let op = joint.evaluate_from(load, omega, guess).expect("envelope validated: load > 0, speed finite");
+                guess = Some(op.logit);
+                q[a * gz + b] = variables(&op);
+                w[a * gz + b] = weights(&op, mu_c);
+            }
+        }
+        let idx = |a: usize, b: usize| a * gz + b;
+        // Slopes (per unit local coordinate) at nodes a ∈ 1..gx−1, b ∈ 1..gz−1 as needed.
+        let mut sx = vec![[0.0f64; 3]; gx * gz];
+        let mut sz = vec![[0.0f64; 3]; gx * gz];
+        let mut sxz = vec![[0.0f64; 3]; gx * gz];
+        for a in 0..gx {
+            for b in 2..gz - 2 {
+                for v in 0..3 {
+                    sz[idx(a, b)][v] = central_slope(q[idx(a, b - 2)][v], q[idx(a, b - 1)][v], q[idx(a, b + 1)][v], q[idx(a, b + 2)][v]);
+                }
+            }
+        }
+        for a in 2..gx - 2 {
+            for b in 2..gz - 2 {
+                for v in 0..3 {
+                    sx[idx(a, b)][v] = central_slope(q[idx(a - 2, b)][v], q[idx(a - 1, b)][v], q[idx(a + 1, b)][v], q[idx(a + 2, b)][v]);
+                    sxz[idx(a, b)][v] =
+                        central_slope(sz[idx(a - 2, b)][v], sz[idx(a - 1, b)][v], sz[idx(a + 1, b)][v], sz[idx(a + 2, b)][v]);
+                }
+            }
+        }
+        // Error indicators: weighted fourth differences at the envelope's nodes.
+        let (mut ex, mut ez) = (0.0f64, 0.0f64);
+        for a in 2..=nx + 2 {
+            for b in 2..=nz + 2 {
+                let (wf, wsm, wsx, wh) = w[idx(a, b)];
+                let ind = |d: [f64; 3]| (wf * d[0].abs() + wsm * d[1].abs()).max(wsx * d[1].abs()).max(wh * d[2].abs());
+                let dx: [f64; 3] = std::array::from_fn(|v| fourth_difference(std::array::from_fn(|k| q[idx(a + k - 2, b)][v])));
+                let dz: [f64; 3] = std::array::from_fn(|v| fourth_difference(std::array::from_fn(|k| q[idx(a, b + k - 2)][v])));
+                ex = ex.max(ind(dx));
+                ez = ez.max(ind(dz));
+            }
+        }
+        let mut cells = Vec::with_capacity(nx * nz);
+        for i in 0..nx {
+            for j in 0..nz {
+                let (a, b) = (i + 2, j + 2);
+                let corner = |s: &[[f64; 3]], v: usize| {
+                    [[s[idx(a, b)][v], s[idx(a, b + 1)][v]], [s[idx(a + 1, b)][v], s[idx(a + 1, b + 1)][v]]]
+                };
+                cells.push(Cell(std::array::from_fn(|v| {
+                    bicubic_coefficients(corner(&q, v), corner(&sx, v), corner(&sz, v), corner(&sxz, v))
+                })));
+            }
+        }
+        let table = Self {
+            x0,
+            inv_hx: 1.0 / hx,
+            nx,
+            z0,
+            inv_hz: 1.0 / hz,
+            nz,
+            cells,
+            envelope: *env,
+            mu_c,
+            radius: p.geometry.pin_radius,
+            roughness: composite_roughness(joint),
+            rest,
+            report: ErrorReport::default(),
+            stats: TableStats {
+                load_cells: nx,
+                speed_cells: nz,
+                passes: 0,
+                node_solves: 0,
+                check_solves: 0,
+                rest_cells: 0,
+                build_seconds: 0.0,
+            },
+        };
+        (table, ex / 384.0, ez / 384.0)
+    }
+
+    /// Errors at the centre of every cell (solves warm-started along each row).
+    fn check_centres(&self, joint: &Joint) -> ErrorReport {
+        let mut r = ErrorReport::default();
+        let hx = 1.0 / self.inv_hx;
+        let hz = 1.0 / self.inv_hz;
+        for i in 0..self.nx {
+            let load = (self.x0 + (i as f64 + 0.5) * hx).exp();
+            let mut guess = None;
+            for j in 0..self.nz {
+                let omega = (self.z0 + (j as f64 + 0.5) * hz).exp();
+                let op = joint.evaluate_from(load, omega, guess).expect("inside a validated envelope");
+                guess = Some(op.logit);
+                r.add(&self.interpolate(load, omega), &op);
+            }
+        }
+        r
+    }
+
+    /// Errors at `n` random points of the envelope, uniform in (ln P, ln |ω|).
+    fn check_random(&self, joint: &Joint, rng: &mut CheckRng, n: usize) -> ErrorReport {
+        let mut r = ErrorReport::default();
+        for _ in 0..n {
+            let (load, omega) = self.envelope.at_log_fraction(rng.uniform(), rng.uniform());
+            let op = joint.evaluate(load, omega).expect("inside a validated envelope");
+            r.add(&self.interpolate(load, omega), &op);
+        }
+        r
+    }
+
+    /// Interpolate at (load, |ω|) inside the envelope (not checked here).
+    #[inline(always)]
+    fn interpolate(&self, load: f64, omega: f64) -> Evaluation {
+        let fx = (load.ln() - self.x0) * self.inv_hx;
+        let fz = (omega.abs().ln() - self.z0) * self.inv_hz;
+        // `as usize` saturates, so a rounding to just below 0 gives cell 0.
+        let i = (fx as usize).min(self.nx - 1);
+        let j = (fz as usize).min(self.nz - 1);
+        let (t, u) = (fx - i as f64, fz - j as f64);
+        let c = &self.cells[i * self.nz + j].0;
+        // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
+        let mu_f = bicubic(&c[0], t, u).max(0.0);
+        // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
+        let es = bicubic(&c[1], t, u).exp();
+        let y = 0.5 * (es - 1.0 / es);
+        let h = bicubic(&c[2], t, u);
+        // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
+        let (x1, x2) = if y <= 0.0 {
+            let e = y.exp();
+            let x2 = 1.0 / (1.0 + e);
+            (e * x2, x2)
+        } else {
+            let e = (-y).exp();
+            let x1 = 1.0 / (1.0 + e);
+            (x1, e * x1)
+        };
+        let mu_a = self.mu_c * x2;
+        let mu = mu_f + mu_a;
+        Evaluation {
+            load,
+            angular_velocity: omega,
+            friction_coefficient: mu,
+            torque: mu * self.radius * load,
+            film_thickness: h,
+            lambda_ratio: h / self.roughness,
+            fluid_load_fraction: x1,
+            asperity_load_fraction: x2,
+            fluid_friction_coefficient: mu_f,
+            asperity_friction_coefficient: mu_a,
+            logit: y,
+            regime: regime_from_shares(x1, x2),
+            source: Source::Table,
+            first_fallback: false,
+        }
+    }
+
+    /// The interpolated point, or `None` outside the envelope. At ω = 0 exactly: the rest
+    /// state (μ = μ_c exactly, h_c from the rest table) when the load is inside the range.
+    #[inline]
+    pub fn evaluate(&self, load: f64, omega: f64) -> Option<Evaluation> {
+        if self.envelope.contains(load, omega) {
+            Some(self.interpolate(load, omega))
+        } else if omega == 0.0 {
+            self.rest(load)
+        } else {
+            None
+        }
+    }
+
+    /// The rest state at `load` (N) from the rest table, or `None` outside the load range.
+    #[inline]
+    pub fn rest(&self, load: f64) -> Option<Evaluation> {
+        let h = self.rest.film(load)?;
+        Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Rest))
+    }
+
+    /// Largest errors measured against the complete solve on the check points (every cell
+    /// centre, random points; h_c includes the rest table's).
+    pub fn measured(&self) -> &ErrorReport {
+        &self.report
+    }
+
+    /// The advertised bound: [`SAFETY`] × the largest measured error (≤ the tolerance).
+    pub fn error_bound(&self) -> f64 {
+        SAFETY * self.report.max()
+    }
+
+    pub fn stats(&self) -> &TableStats {
+        &self.stats
+    }
+
+    pub fn envelope(&self) -> &Envelope {
+        &self.envelope
+    }
+
+    /// Memory held by the cells, bytes.
+    pub fn size_bytes(&self) -> usize {
+        self.cells.len() * std::mem::size_of::<Cell>()
+    }
+}
+
+/// The rest state (ω = 0): 1/γ1 = 0, 1/γ2 = 1, μ = μ_c, film `h`. Also the boundary level's
+/// answer at any speed (with `omega` as given).
+#[inline(always)]
+pub(crate) fn rest_evaluation(load: f64, h: f64, mu_c: f64, radius: f64, roughness: f64, source: Source) -> Evaluation {
+    Evaluation {
+        load,
+        angular_velocity: 0.0,
+        friction_coefficient: mu_c,
+        torque: mu_c * radius * load,
+        film_thickness: h,
+        lambda_ratio: h / roughness,
+        fluid_load_fraction: 0.0,
+        asperity_load_fraction: 1.0,
+        fluid_friction_coefficient: 0.0,
+        asperity_friction_coefficient: mu_c,
+        logit: f64::NEG_INFINITY,
+        regime: crate::Regime::Boundary,
+        source,
+        first_fallback: false,
+    }
+}
