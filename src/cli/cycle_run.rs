@@ -88,18 +88,24 @@ impl CycleRun {
         Ok(joint.evaluate(self.load(), self.peak_command_speed())?.friction_coefficient)
     }
 
-    /// What eq. 11 gives for a perfect rig: the time-mean over a stroke of the core's
-    /// μ(P, |θ̇_cmd(t)|) (midpoint rule, 512 points of the cycle).
+    /// What eq. 11 gives for a perfect rig: [`stroke_average`] at this run's load and stroke.
     pub fn quasi_static_average(&self, joint: &Joint) -> Result<f64> {
-        const N: usize = 512;
-        let peak = self.peak_command_speed();
-        let mut sum = 0.0;
-        for k in 0..N {
-            let phase = TAU * (k as f64 + 0.5) / N as f64;
-            sum += joint.evaluate(self.load(), (peak * phase.cos()).abs())?.friction_coefficient;
-        }
-        Ok(sum / N as f64)
+        stroke_average(joint, self.load(), self.config.rig.frequency, self.config.rig.amplitude)
     }
+}
+
+/// The core's μ(P, |θ̇_cmd(t)|) averaged over a sine stroke θ_cmd = A·sin(2πft) (midpoint
+/// rule, 512 points a stroke): the cycle-average of eq. 11 for a rig that follows its command
+/// exactly and never sticks.
+pub fn stroke_average(joint: &Joint, load: f64, frequency: f64, amplitude: f64) -> Result<f64> {
+    const N: usize = 512;
+    let peak = TAU * frequency * amplitude;
+    let mut sum = 0.0;
+    for k in 0..N {
+        let phase = TAU * (k as f64 + 0.5) / N as f64;
+        sum += joint.evaluate(load, (peak * phase.cos()).abs())?.friction_coefficient;
+    }
+    Ok(sum / N as f64)
 }
 
 /// Trapezoidal time-mean of `f` over consecutive samples (NaN if fewer than two).

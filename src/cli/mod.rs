@@ -7,6 +7,10 @@ pub mod cycle;
 pub mod cycle_plots;
 pub mod cycle_run;
 pub mod error;
+pub mod figures;
+pub mod figures_index;
+pub mod figures_plots;
+pub mod figures_rig;
 pub mod map;
 pub mod output;
 pub mod params_cmd;
@@ -51,6 +55,7 @@ pub enum Command {
     Stribeck(stribeck::StribeckCmd),
     Map(map::MapCmd),
     Cycle(cycle::CycleCmd),
+    Figures(figures::FiguresCmd),
 }
 
 pub fn run(cli: &Cli) -> error::Result<()> {
@@ -61,6 +66,7 @@ pub fn run(cli: &Cli) -> error::Result<()> {
         Command::Stribeck(c) => stribeck::run(c),
         Command::Map(c) => map::run(c),
         Command::Cycle(c) => cycle::run(c),
+        Command::Figures(c) => figures::run(c),
     }
 }
 
