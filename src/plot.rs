@@ -394,9 +394,9 @@ where
             let ann = match s.style {
                 Style::Line => ch.draw_series(LineSeries::new(seg, style)).map_err(err)?,
                 Style::Dashed => ch.draw_series(DashedLineSeries::new(seg, 8, 5, style)).map_err(err)?,
-                Style::Points => ch.draw_series(seg.into_iter().map(|p| Circle::new(p, 3, col.filled()))).map_err(err)?,
+                Style::Points => ch.draw_series(seg.into_iter().map(|p| Circle::new(p, 5, col.filled()))).map_err(err)?,
                 Style::LinePoints => {
-                    ch.draw_series(seg.iter().map(|&p| Circle::new(p, 3, col.filled()))).map_err(err)?;
+                    ch.draw_series(seg.iter().map(|&p| Circle::new(p, 4, col.filled()))).map_err(err)?;
                     ch.draw_series(LineSeries::new(seg, style)).map_err(err)?
                 }
             };

@@ -17,12 +17,19 @@ fn points(samples: &[Sample], t0: f64, f: impl Fn(&Sample) -> f64) -> Vec<(f64, 
     samples.iter().map(|s| (s.time - t0, f(s))).collect()
 }
 
+/// A torque axis with room below the traces for a legend in the lower left corner.
+pub fn torque_axis(samples: &[Sample]) -> Axis {
+    let m = samples.iter().map(|s| s.torque.abs()).filter(|t| t.is_finite()).fold(0.0, f64::max);
+    let axis = Axis::linear("torque [N·m]");
+    if m > 0.0 { axis.with_range(-1.5 * m, 1.1 * m) } else { axis }
+}
+
 /// Recorded torque against time over `samples` (time counted from `t0`), with the core's
 /// quasi-static torque at each sample's speed dashed beside it.
 pub fn torque_time_chart(run: &CycleRun, samples: &[Sample], t0: f64, title: &str) -> Chart {
     let r = run.config.model.geometry.pin_radius;
     let x = if t0 == 0.0 { "time t [s]".to_string() } else { format!("time t − {} s [s]", readable(t0)) };
-    Chart::new(title, Axis::linear(x), Axis::linear("torque [N·m]"))
+    Chart::new(title, Axis::linear(x), torque_axis(samples))
         .series(Series::line("recorded torque (actuator transducer)", points(samples, t0, |s| s.torque)))
         .series(Series::line("core μ(P, |ω|)·R·P at the sample's speed", points(samples, t0, |s| core_torque(s, r))).styled(Style::Dashed))
         .legend(Corner::LowerLeft)
@@ -31,9 +38,7 @@ pub fn torque_time_chart(run: &CycleRun, samples: &[Sample], t0: f64, title: &st
 /// Recorded torque against the pin angle (degrees) over `samples`.
 pub fn torque_angle_chart(samples: &[Sample], title: &str) -> Chart {
     let pts = samples.iter().map(|s| (s.angle.to_degrees(), s.torque)).collect();
-    Chart::new(title, Axis::linear("pin angle θ [deg]"), Axis::linear("torque [N·m]"))
-        .series(Series::line("recorded torque", pts))
-        .legend(Corner::LowerLeft)
+    Chart::new(title, Axis::linear("pin angle θ [deg]"), Axis::linear("torque [N·m]")).series(Series::line("", pts))
 }
 
 /// `torque_time.svg` of `pinjoint cycle`: every sample of the run.

@@ -30,12 +30,17 @@ fn pct(x: f64) -> String {
     format!("{} %", readable((x * 1000.0).round() / 10.0))
 }
 
-fn r3(x: f64) -> String {
-    readable((x * 1000.0).round() / 1000.0)
+/// `x` rounded to `n` significant digits, for reading.
+fn sig(x: f64, n: i32) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return readable(x);
+    }
+    let scale = 10f64.powi(n - 1 - x.abs().log10().floor() as i32);
+    readable((x * scale).round() / scale)
 }
 
 fn r4(x: f64) -> String {
-    readable((x * 10000.0).round() / 10000.0)
+    sig(x, 4)
 }
 
 fn nm(x: f64) -> String {
@@ -60,10 +65,31 @@ fn extremes(joint: &Joint, loads: &[f64], rpm: (f64, f64)) -> Result<(f64, f64)>
     Ok((mu, lambda))
 }
 
+/// The speed (rpm) at which μ(P, ω) falls to `mu` (μ decreases with speed), by bisection in
+/// log speed over `rpm`; the range's end if μ does not cross `mu` inside it.
+fn speed_where(joint: &Joint, load: f64, mu: f64, rpm: (f64, f64)) -> Result<f64> {
+    let f = |n: f64| joint.evaluate(load, n * RAD_S_PER_RPM).map(|o| o.friction_coefficient - mu);
+    let (mut a, mut b) = (rpm.0.ln(), rpm.1.ln());
+    if f(rpm.0)? <= 0.0 {
+        return Ok(rpm.0);
+    }
+    if f(rpm.1)? > 0.0 {
+        return Ok(rpm.1);
+    }
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        if f(m.exp())? > 0.0 { a = m } else { b = m }
+    }
+    Ok((0.5 * (a + b)).exp())
+}
+
 fn fig3(joint: &Joint) -> Result<Entry> {
     let p = 20e3;
     let at = |rpm: f64| joint.evaluate(p, rpm * RAD_S_PER_RPM);
-    let (a, b, c) = (at(1.0)?, at(rig_peak_speed() / RAD_S_PER_RPM)?, at(800.0)?);
+    let rig_rpm = rig_peak_speed() / RAD_S_PER_RPM;
+    let (a, b, c) = (at(1.0)?, at(rig_rpm)?, at(800.0)?);
+    let light = joint.evaluate(RIG_LOAD_RANGE_N.0, 800.0 * RAD_S_PER_RPM)?;
+    let half = speed_where(joint, p, 0.5 * joint.params().friction.boundary_friction_coefficient, (1.0, 800.0))?;
     Ok(Entry {
         title: "Figure 3 — Stribeck curve at 20 kN".into(),
         images: vec!["stribeck.svg".into()],
@@ -71,26 +97,34 @@ fn fig3(joint: &Joint) -> Result<Entry> {
         caption: format!(
             "The core model at P_T = 20 kN (mean Hertz pressure {} MPa; paper: 13 MPa): (a) μ, (b) the load \
 fractions 1/γ1 (fluid) and 1/γ2 (asperities), (c) λ against the Sommerfeld number (eq. 20). \
-Shaded: the rig's speeds (up to 41.9 rpm); dashed: the paper's simulated range 1 and 800 rpm. \
-Over that range S goes from {} to {} (paper: \"0 to 0.15\"), μ falls from {} (1 rpm) through {} \
-(41.9 rpm) to {} (800 rpm), 1/γ1 reaches {} and λ {} at 800 rpm: as the paper says, solid contact \
-dominates and the film plays little part, μ decreasing with S as 1/γ1 grows.",
-            r3(a.mean_pressure / 1e6),
-            readable(a.sommerfeld_number),
-            r4(c.sommerfeld_number),
-            r4(a.friction_coefficient),
-            r4(b.friction_coefficient),
-            r4(c.friction_coefficient),
-            r3(c.fluid_load_fraction),
-            r3(c.lambda_ratio),
+Shaded: the rig's speeds (up to 41.9 rpm); dashed: the paper's simulated range, 1 and 800 rpm, \
+where S runs from {} to {} at 20 kN and up to {} at 5 kN (paper: \"0 to 0.15\" over its loads). \
+As S grows the film takes a growing share of the load and μ falls, as the paper describes. Over \
+the rig's speeds the asperities still carry at least {} of the load and μ stays between {} and {} \
+(paper: \"the dominant mechanism is one of solid contact\"); μ halves only at {} rpm, and at 800 rpm \
+the film carries {} of the load (μ = {}, λ = {}).",
+            sig(a.mean_pressure / 1e6, 3),
+            sig(a.sommerfeld_number, 3),
+            sig(c.sommerfeld_number, 3),
+            sig(light.sommerfeld_number, 3),
+            pct(b.asperity_load_fraction),
+            sig(b.friction_coefficient, 3),
+            sig(a.friction_coefficient, 4),
+            sig(half, 3),
+            pct(c.fluid_load_fraction),
+            sig(c.friction_coefficient, 2),
+            sig(c.lambda_ratio, 3),
         ),
     })
 }
 
 fn fig4(joint: &Joint) -> Result<Entry> {
     let loads = lin_space(RIG_LOAD_RANGE_N.0, RIG_LOAD_RANGE_N.1, 12);
-    let (mu_rig, lambda_rig) = extremes(joint, &loads, (1.0, rig_peak_speed() / RAD_S_PER_RPM))?;
-    let (mu_all, lambda_all) = extremes(joint, &loads, (1.0, 800.0))?;
+    let rig_rpm = rig_peak_speed() / RAD_S_PER_RPM;
+    let (mu_rig, lambda_rig) = extremes(joint, &loads, (1.0, rig_rpm))?;
+    let lambda_min = joint.evaluate(RIG_LOAD_RANGE_N.1, RAD_S_PER_RPM)?.lambda_ratio;
+    let light = speed_where(joint, RIG_LOAD_RANGE_N.0, 0.11, (1.0, 800.0))?;
+    let heavy = speed_where(joint, RIG_LOAD_RANGE_N.1, 0.11, (1.0, 800.0))?;
     Ok(Entry {
         title: "Figure 4 — maps of λ and μ over load and speed".into(),
         images: vec!["map_lambda.svg".into(), "map_friction.svg".into(), "map_curves.svg".into()],
@@ -98,13 +132,17 @@ fn fig4(joint: &Joint) -> Result<Entry> {
         caption: format!(
             "(a) λ and (b) μ over 5–60 kN and 1–800 rpm, with contour lines; the red box is the rig \
 experiments' region (5–60 kN, up to the 1 Hz stroke's peak speed 41.9 rpm); the third plot shows \
-μ and λ against speed at the paper's five loads. In the rig's region μ ≥ {} and λ ≤ {} (paper: \
-\"friction coefficients do not fall below 0.11 as lambda ratios stay below 2\"); over the whole \
-1–800 rpm map μ reaches down to {} and λ up to {}, at the lightest load and highest speed.",
-            r4(mu_rig),
-            r3(lambda_rig),
-            r4(mu_all),
-            r3(lambda_all),
+μ and λ against speed at the paper's five loads. The paper: \"friction coefficients do not fall \
+below 0.11 as lambda ratios stay below 2\" in the operating region. Here μ ≥ 0.11 holds up to \
+{} rpm at 5 kN and {} rpm at 60 kN, which covers the landing gear's own articulation speed \
+(12 °/s ≈ 2 rpm, section 4.4) at every load; over the whole rig box μ goes down to {} (5 kN, \
+41.9 rpm). λ lies between {} (60 kN, 1 rpm) and {} in the rig box: about 2, not below it at the \
+light loads, since the core reports λ from the central film h_c (see MODEL_NOTES).",
+            sig(light, 3),
+            sig(heavy, 3),
+            sig(mu_rig, 3),
+            sig(lambda_min, 3),
+            sig(lambda_rig, 3),
         ),
     })
 }
@@ -120,74 +158,98 @@ fn fig7(results: &[RigResult]) -> Option<Entry> {
         caption: format!(
             "The second stroke of the simulated rig at 1 Hz, ±40°, 20 kN: (a) pin angle and command (a \
 smooth sine; the pin lags by at most {}°), (b) speed (peak {} rad/s; the paper derived it from the \
-angle record), (c) torque against time and (d) against angle. As in the paper's Figure 7, the \
-torque is highest at the stroke ends where the speed is zero ({} at 70–80 % of the stroke) and \
-lowest near zero degrees ({} at mid-stroke), where the speed peaks and the entrained grease \
-lifts part of the load. The model's boundary friction has no static peak (breakaway factor 1); \
-raise rig.breakaway_factor to add the paper's slightly higher torque at the start and stop points.",
-            r3(s.tracking_error_deg),
-            r3(peak),
+angle record; the flat parts at zero are the stick at each reversal), (c) torque against time and \
+(d) against angle. As in the paper's Figure 7, the torque is higher towards the stroke ends where \
+the speed is low ({} at 70–80 % of the stroke) and lowest near zero degrees ({} at mid-stroke), \
+where the speed peaks and the entrained grease lifts part of the load. The model's boundary \
+friction has no static peak (rig.breakaway_factor = 1); raising it adds the paper's slightly \
+higher torque at the start and stop points.",
+            sig(s.tracking_error_deg, 2),
+            sig(peak, 3),
             nm(s.outer_torque),
             nm(s.mid_torque),
         ),
     })
 }
 
-fn fig8_10(results: &[RigResult]) -> Vec<Entry> {
+/// How one frequency's rig averages go with load: "rises from a at 5 kN to b at 60 kN",
+/// "falls …", or "goes from a at 5 kN through a maximum b at 20 kN to c at 60 kN".
+fn trend(results: &[RigResult], f: f64) -> String {
+    let v: Vec<(f64, f64)> = at_frequency(results, f).iter().map(|r| (r.run.load(), r.run.average_friction_coefficient)).collect();
+    let (Some(first), Some(last)) = (v.first(), v.last()) else { return String::new() };
+    let at = |p: &(f64, f64)| format!("{} at {} kN", r4(p.1), readable(p.0 / 1e3));
+    let rising = v.windows(2).all(|w| w[1].1 > w[0].1);
+    let falling = v.windows(2).all(|w| w[1].1 < w[0].1);
+    if rising || falling {
+        return format!("{} from {} to {}", if rising { "rises" } else { "falls" }, at(first), at(last));
+    }
+    let max = v.iter().copied().fold(*first, |m, p| if p.1 > m.1 { p } else { m });
+    let min = v.iter().copied().fold(*first, |m, p| if p.1 < m.1 { p } else { m });
+    let turn = if max != *first && max != *last { ("a maximum", max) } else { ("a minimum", min) };
+    format!("goes from {} through {} of {} to {}", at(first), turn.0, at(&turn.1), at(last))
+}
+
+fn fig8_10(joint: &Joint, results: &[RigResult]) -> Result<Vec<Entry>> {
     let at = |f: f64| at_frequency(results, f);
     let (lo_slow, hi_slow) = range(at(0.03).iter().map(|r| r.run.average_friction_coefficient));
     let (qlo, qhi) = range(at(0.03).iter().map(|r| r.quasi_static_average));
     let (lo_fast, hi_fast) = range(at(1.0).iter().map(|r| r.run.average_friction_coefficient));
-    let light = find(results, 1.0, 5e3).map_or(f64::NAN, |r| r.run.average_friction_coefficient);
-    let heavy = find(results, 1.0, 60e3).map_or(f64::NAN, |r| r.run.average_friction_coefficient);
     let below = at(0.03).iter().map(|r| 1.0 - r.run.average_friction_coefficient / r.quasi_static_average).fold(0.0, f64::max);
+    let (stuck_lo, stuck_hi) = range(at(0.03).iter().map(|r| r.shape.stuck_fraction));
     let speeds = |f: f64| range(at(f).iter().map(|r| r.run.mean_speed));
     let (s03, s1) = (speeds(0.03), speeds(1.0));
+    let mut asperity = f64::INFINITY;
+    for r in results {
+        asperity = asperity.min(joint.evaluate(r.run.load(), r.run.peak_command_speed())?.asperity_load_fraction);
+    }
     let common = format!(
         "Each dot is one rig run (5, 10, 20, 40, 60 kN × 0.03, 0.3, 1 Hz, ±40°): the paper's eq. 11 \
 average, mean |recorded torque| over the second stroke divided by R·P. Its x value is the stroke's \
 characteristic speed, the time-mean of |ω| over that stroke (≈ 4·A·f: {}–{} rad/s at 0.03 Hz, \
 {}–{} rad/s at 1 Hz); the paper labels its runs by 60·f rpm (1.8, 18, 60 rpm) instead. Lines are \
 the core's steady μ(P, ω) at the same loads.",
-        r4(s03.0),
-        r4(s03.1),
-        r3(s1.0),
-        r3(s1.1)
+        sig(s03.0, 3),
+        sig(s03.1, 3),
+        sig(s1.0, 3),
+        sig(s1.1, 3)
     );
     let slow = format!(
         "At 0.03 Hz the rig averages are {}–{} over the loads (paper: measured {PAPER_LOW_SPEED_MU} \
 at low speed against the assumed μ_c = 0.12). They sit up to {} below the core's own stroke average \
-({}–{}) because the recorded torque passes through zero while the joint sticks at each reversal \
-(the actuator must wind its angle error through 2·μ_c·R·P/K_p), which lowers the mean |torque| just \
-as it would on the real rig. At 1 Hz the averages fall to {}–{}.",
+({}–{}) because the joint sticks at each reversal for {}–{} of the time while the actuator winds \
+its angle error through 2·μ_c·R·P/K_p, and the recorded torque passes through zero meanwhile; \
+this lowers the mean |torque| most at the highest load. At 1 Hz the averages are {}–{}. Even at \
+the stroke's peak speed the asperities carry at least {} of the load in every run (the paper: \
+\"pin joint is working in boundary lubrication regime on most occasions\").",
         r4(lo_slow),
         r4(hi_slow),
         pct(below),
         r4(qlo),
         r4(qhi),
+        pct(stuck_lo),
+        pct(stuck_hi),
         r4(lo_fast),
-        r4(hi_fast)
+        r4(hi_fast),
+        pct(asperity)
     );
-    vec![
+    let trends: Vec<String> = PAPER_FREQUENCIES.iter().map(|&f| format!("{} at {} Hz", trend(results, f), readable(f))).collect();
+    Ok(vec![
         Entry {
             title: "Figure 8 — friction coefficient against Sommerfeld number".into(),
             images: vec!["fig08_mu_sommerfeld.svg".into()],
             data: vec!["rig_averages.csv".into(), "core_curves.csv".into()],
-            caption: format!(
-                "{common} S (eq. 20) is the core's at the run's load and mean |ω|. {slow} As in the \
-paper's Figure 8, the joint works in the boundary regime at every test condition: μ stays \
-within a few per cent of μ_c."
-            ),
+            caption: format!("{common} S (eq. 20) is the core's at the run's load and mean |ω|. {slow}"),
         },
         Entry {
             title: "Figure 9 — friction coefficient against sliding speed".into(),
             images: vec!["fig09_mu_sliding_speed.svg".into()],
             data: vec!["rig_averages.csv".into(), "core_curves.csv".into()],
             caption: format!(
-                "{common} Sliding speed u = R·mean|ω| (R = 28 mm). The model's load effect is \
-mild: at the same speed a heavier load gives a thinner film and a higher μ. The paper finds the \
-load effect in its experiments more pronounced than the theory (grease squeezed out at high load, \
-starved inlet), which a fully flooded model cannot show."
+                "{common} Sliding speed u = R·mean|ω| (R = 28 mm). In the core a heavier load gives a \
+thinner film and so a higher μ at the same speed; how the rig averages order with load, where the \
+longer stick at high load works the other way, is under Figure 10. The paper finds the load effect in its \
+experiments more pronounced than its theory (grease squeezed out at high load and slow to flow \
+back), which a fully flooded model cannot show."
             ),
         },
         Entry {
@@ -197,23 +259,30 @@ starved inlet), which a fully flooded model cannot show."
             caption: format!(
                 "Solid: the rig's eq. 11 averages at 0.03, 0.3 and 1 Hz against load; dashed: the \
 core's μ(P, |θ̇_cmd|) averaged over the same sine stroke (a rig that follows its command and \
-never sticks). μ rises with load at every frequency (at 1 Hz from {} at 5 kN to {} at 60 kN) and \
-falls with frequency; the paper's higher loads agree closely with its model while its low-load \
-measurements lie below it.",
-                r4(light),
-                r4(heavy)
+never sticks). The rig average {}. The gap between solid and dashed is the reversal wind-up \
+described under Figure 8. The paper's experiments agree closely with its model at the higher \
+loads and lie below it at the low loads."
+                ,
+                trends.join("; ")
             ),
         },
-    ]
+    ])
 }
 
 fn fig11_13(results: &[RigResult]) -> Vec<Entry> {
     let spread = range(at_frequency(results, 0.03).iter().map(|r| r.shape.spread)).1;
     let ring_slow = range(at_frequency(results, 0.03).iter().map(|r| r.shape.ringing)).1;
-    let dip = |f: f64, p: f64| find(results, f, p).map(|r| (r.shape.outer_torque - r.shape.mid_torque, r.shape.dip()));
-    let (d03, d03p) = dip(0.3, 20e3).unwrap_or((f64::NAN, f64::NAN));
-    let (d1, d1p) = dip(1.0, 20e3).unwrap_or((f64::NAN, f64::NAN));
-    let (d60, d60p) = dip(1.0, 60e3).unwrap_or((f64::NAN, f64::NAN));
+    let dip = |f: f64, p: f64| find(results, f, p).map(|r| r.shape);
+    let describe = |f: f64, p: f64| match dip(f, p) {
+        Some(s) => format!(
+            "by {} ({}) at {} kN (core: {})",
+            nm(s.outer_torque - s.mid_torque),
+            pct(s.dip()),
+            readable(p / 1e3),
+            nm(s.outer_core - s.mid_core)
+        ),
+        None => String::new(),
+    };
     let r1 = find(results, 1.0, 20e3);
     let (ring, settled) = r1.map_or((f64::NAN, f64::NAN), |r| (r.shape.ringing, r.shape.settled));
     let panels = "(a) the recorded torque over the second stroke at each of the paper's loads; (b) the 20 kN \
@@ -224,27 +293,24 @@ run with the core's quasi-static torque μ(P, |ω|)·R·P at each sample's speed
             "f = 0.03 Hz (1.8 rpm nominal). {panels} Between the reversals |torque| varies by at most \
 {} of its mean over the inner 80 % of the stroke at any load, and deviates from the quasi-static \
 core torque by at most {}: the torque remains virtually constant during rotation, as the paper \
-observes (hydrodynamic lift negligible), and there is no servo oscillation.",
+observes (hydrodynamic lift negligible), with no servo oscillation. The sloped reversals are the \
+stick phases, during which the actuator winds up the reversed torque.",
             pct(spread),
             nm(ring_slow)
         ),
         format!(
-            "f = 0.3 Hz (18 rpm nominal). {panels} A shallow dip appears at mid-stroke: at 20 kN the \
-|torque| there is {} ({}) below its value at 70–80 % of the stroke.",
-            nm(d03),
-            pct(d03p)
+            "f = 0.3 Hz (18 rpm nominal). {panels} A shallow dip appears at mid-stroke: |torque| falls \
+{}, from 70–80 % of the stroke to mid-stroke. A short ringing follows each breakaway.",
+            describe(0.3, 20e3)
         ),
         format!(
-            "f = 1 Hz (60 rpm nominal). {panels} The torque dips at mid-stroke where the speed peaks: \
-by {} ({}) at 20 kN and {} ({}) at 60 kN, the amount the core predicts at that speed (paper: \"at \
-the higher speeds there is a reduction in torque as the joint articulates at its maximum velocity\"). \
-After each reversal the recorded torque rings (up to {} from the quasi-static torque at 20 kN, \
-decaying to {} later in the stroke): the limited response of the hydraulic servo the paper blames \
-for the oscillation in its 1 Hz record.",
-            nm(d1),
-            pct(d1p),
-            nm(d60),
-            pct(d60p),
+            "f = 1 Hz (60 rpm nominal). {panels} The torque dips at mid-stroke where the speed peaks, \
+{} and {} (paper: \"at the higher speeds there is a reduction in torque as the joint articulates at \
+its maximum velocity\"). After each reversal the recorded torque rings, up to {} away from the \
+quasi-static torque at 20 kN, decaying to within {} later in the stroke: the limited response of \
+the hydraulic servo that the paper blames for the oscillation in its 1 Hz record.",
+            describe(1.0, 20e3),
+            describe(1.0, 60e3),
             nm(ring),
             nm(settled)
         ),
@@ -267,7 +333,7 @@ for the oscillation in its 1 Hz record.",
 pub fn entries(joint: &Joint, results: &[RigResult]) -> Result<Vec<Entry>> {
     let mut out = vec![fig3(joint)?, fig4(joint)?];
     out.extend(fig7(results));
-    out.extend(fig8_10(results));
+    out.extend(fig8_10(joint, results)?);
     out.extend(fig11_13(results));
     Ok(out)
 }
@@ -281,7 +347,7 @@ Figures 7–13 come from 15 simulations of the torsion rig (loads 5, 10, 20, 40,
 first (start-up) is left out."
             .into(),
         format!(
-            "Rig integration: Dopri5, rtol {}, atol {}, {} samples per stroke{}.",
+            "Rig integration: Dopri5, rtol {:e}, atol {:e}, {} samples per stroke{}.",
             info.rtol,
             info.atol,
             info.samples_per_cycle,

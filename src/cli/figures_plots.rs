@@ -15,9 +15,9 @@ use rayon::prelude::*;
 /// The paper's measured friction coefficient at low speed (section 5).
 pub const PAPER_LOW_SPEED_MU: f64 = 0.117;
 
-/// Speeds of the core's steady curves in Figures 8 and 9 (rad/s): a decade either side of
-/// the rig runs' mean speeds (0.08 to 2.8 rad/s).
-pub const CURVE_SPEEDS: (f64, f64) = (0.01, 30.0);
+/// Speeds of the core's steady curves in Figures 8 and 9 (rad/s): a factor of 4 below and 3
+/// above the rig runs' mean speeds (0.08 to 2.8 rad/s).
+pub const CURVE_SPEEDS: (f64, f64) = (0.02, 8.0);
 
 /// The core's steady μ(P, ω) at the paper's loads, for Figures 8 and 9.
 #[derive(Debug, Clone)]

@@ -59,6 +59,11 @@ pub struct StrokeShape {
     pub mid_torque: f64,
     /// Mean |T| where 70 % < |θ|/A < 80 % (towards the stroke ends, past the reversal), N·m.
     pub outer_torque: f64,
+    /// The same two means of the core's quasi-static torque μ(P, |ω|)·R·P at those samples.
+    pub mid_core: f64,
+    pub outer_core: f64,
+    /// Fraction of the time stuck (at the reversals).
+    pub stuck_fraction: f64,
     /// (max − min)/mean of |T| in slip where |θ| < 80 % of A.
     pub spread: f64,
     /// Largest |T − core torque| in slip within 0.2 s after a reversal or breakaway, N·m.
@@ -79,12 +84,16 @@ impl StrokeShape {
         let a = run.config.rig.amplitude;
         let r = run.config.model.geometry.pin_radius;
         let w = run.window();
-        let mean_abs = |keep: &dyn Fn(&Sample) -> bool| {
-            let v: Vec<f64> = w.iter().filter(|s| !s.stuck && keep(s)).map(|s| s.torque.abs()).collect();
+        let mean_abs = |keep: &dyn Fn(&Sample) -> bool, value: &dyn Fn(&Sample) -> f64| {
+            let v: Vec<f64> = w.iter().filter(|s| !s.stuck && keep(s)).map(|s| value(s).abs()).collect();
             v.iter().sum::<f64>() / v.len() as f64
         };
-        let mid_torque = mean_abs(&|s| s.angle.abs() < 0.05 * a);
-        let outer_torque = mean_abs(&|s| (0.7 * a..0.8 * a).contains(&s.angle.abs()));
+        let mid = |s: &Sample| s.angle.abs() < 0.05 * a;
+        let outer = |s: &Sample| (0.7 * a..0.8 * a).contains(&s.angle.abs());
+        let (recorded, core) = (|s: &Sample| s.torque, |s: &Sample| core_torque(s, r));
+        let (mid_torque, outer_torque) = (mean_abs(&mid, &recorded), mean_abs(&outer, &recorded));
+        let (mid_core, outer_core) = (mean_abs(&mid, &core), mean_abs(&outer, &core));
+        let stuck_fraction = w.iter().filter(|s| s.stuck).count() as f64 / w.len() as f64;
         let inner: Vec<f64> = w.iter().filter(|s| !s.stuck && s.angle.abs() < 0.8 * a).map(|s| s.torque.abs()).collect();
         let (lo, hi) = inner.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
         let spread = (hi - lo) / (inner.iter().sum::<f64>() / inner.len() as f64);
@@ -107,7 +116,17 @@ impl StrokeShape {
             prev = Some(s);
         }
         let tracking = w.iter().map(|s| (s.angle - s.command_angle).abs()).fold(0.0, f64::max);
-        Self { mid_torque, outer_torque, spread, ringing, settled, tracking_error_deg: tracking.to_degrees() }
+        Self {
+            mid_torque,
+            outer_torque,
+            mid_core,
+            outer_core,
+            stuck_fraction,
+            spread,
+            ringing,
+            settled,
+            tracking_error_deg: tracking.to_degrees(),
+        }
     }
 }
 
@@ -151,7 +170,7 @@ pub fn find(results: &[RigResult], f: f64, load: f64) -> Option<&RigResult> {
 }
 
 /// The columns of `rig_averages.csv` (SI units; see the figures' README for each).
-pub const AVERAGE_COLUMNS: [&str; 17] = [
+pub const AVERAGE_COLUMNS: [&str; 18] = [
     "frequency",
     "load",
     "amplitude",
@@ -169,6 +188,7 @@ pub const AVERAGE_COLUMNS: [&str; 17] = [
     "reversal_ringing_torque",
     "settled_deviation_torque",
     "max_tracking_error_deg",
+    "stuck_fraction",
 ];
 
 /// One row per run: what Figures 8–10 plot and the captions quote.
@@ -195,6 +215,7 @@ pub fn averages_csv(w: &mut dyn std::io::Write, results: &[RigResult]) -> std::i
             s.ringing,
             s.settled,
             s.tracking_error_deg,
+            s.stuck_fraction,
         ];
         wtr.write_record(row.iter().map(|&v| exact(v))).map_err(csv_io)?;
     }
