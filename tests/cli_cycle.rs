@@ -321,3 +321,15 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
     let mu = printed(&o.stdout, "cycle-average");
     assert!((mu - r[col("cycle_average_friction_coefficient")]).abs() < 1e-3 * mu, "{mu} vs {r:?}");
 }
+
+#[test]
+fn params_rig_prints_a_file_that_cycle_reads_back() {
+    let text = ok(&["params", "--rig"]).stdout;
+    assert!(text.contains("[rig]") && text.contains("position_gain") && text.contains("[friction]"), "{text}");
+    let tmp = tempfile::tempdir().unwrap();
+    let file = tmp.path().join("rig.toml");
+    std::fs::write(&file, text.replace("frequency = 1.0", "frequency = 4.0")).unwrap();
+    let out = tmp.path().join("o");
+    ok(&["cycle", "--params", file.to_str().unwrap(), "--cycles", "1", "--samples-per-cycle", "40", "--output", out.to_str().unwrap()]);
+    assert!((read_cycle(&out).last().unwrap()[0] - 0.25).abs() < 1e-12, "the file's frequency (4 Hz) was not used");
+}

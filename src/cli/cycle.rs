@@ -27,7 +27,7 @@ and print the cycle-average friction coefficient the paper's way (section 5, eq.
 whole cycles divided by R·P), leaving out the first (start-up) stroke when there is more than one, \
 beside the core's quasi-static μ at the stroke's peak speed 2πfA.\n\
 The run starts from rest at θ = 0 at t = 0. Rig constants come from the [rig] section of --params \
-(`pinjoint params` prints the model's sections; see src/rig/params.rs for [rig]); the flags override the file.\n\n\
+(`pinjoint params --rig` prints a complete file to start from); the flags override the file.\n\n\
 Examples:\n  \
 pinjoint cycle --frequency 1 --amplitude 40 --load 20000 --cycles 3 --output out/1Hz\n  \
 pinjoint cycle --frequency 0.03 --amplitude 40 --load 60000 --cycles 2 --method dop853 --output out/slow"

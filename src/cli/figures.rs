@@ -105,10 +105,13 @@ fn core_figures(dir: &Path, joint: &Joint, s: &CoreSettings) -> Result<Vec<PathB
     Ok(paths)
 }
 
+/// Writes one CSV's content.
+type CsvFill<'a> = Box<dyn Fn(&mut dyn std::io::Write) -> std::io::Result<()> + 'a>;
+
 /// Render and write Figures 7–13 and their data.
 fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius: f64) -> Result<Vec<PathBuf>> {
     let mut files: Vec<(String, String)> = Vec::new();
-    let mut csvs: Vec<(&str, Box<dyn Fn(&mut dyn std::io::Write) -> std::io::Result<()> + '_>)> = Vec::new();
+    let mut csvs: Vec<(&str, CsvFill<'_>)> = Vec::new();
     if let Some(r) = find(results, 1.0, 20e3) {
         files.push(("fig07_cycle_1Hz_20kN.svg".into(), fig7_svg(r)?));
         csvs.push(("fig07_cycle_1Hz_20kN.csv", Box::new(move |w| traces_csv(w, &[&r.run]))));

@@ -31,11 +31,14 @@ Model parameters default to the paper's rig (Tables 1-3, μ_c = 0.12); change th
 file passed as --params (start from `pinjoint params`).
 
 Examples:
+  pinjoint figures --output figures/                the paper's figures 3, 4, 7-13 and an index.html
   pinjoint point --load 20000 --rpm 10              one operating point, as a table
   pinjoint point --load 20000 --speed 1.05 --json   the same as JSON
   pinjoint sweep --input pts.csv --output out.csv   many points (columns load,speed) in parallel
   pinjoint stribeck --load 20000 --output out/      the paper's Figure 3 (CSV + SVG)
   pinjoint map --output out/                        the paper's Figure 4 (CSV + SVG)
+  pinjoint cycle --frequency 1 --amplitude 40 --load 20000 --cycles 3 --output out/
+                                                    rig strokes (Figures 7, 11-13), eq. 11 average
   pinjoint params > joint.toml                      a parameter file to edit
 
 Run `pinjoint <command> --help` for each command's details.";
