@@ -17,9 +17,17 @@ pub const A2: f64 = 0.0337;
 pub const A3: f64 = -0.442;
 pub const A4: f64 = -1.7;
 
-/// `ln(1 + eˣ)` without overflow or cancellation.
+/// `ln(1 + eˣ)` without overflow, to an absolute error of a few ε (it is only ever added
+/// to logarithms, where that is a relative error of a few ε in the quantity).
 pub fn softplus(x: f64) -> f64 {
-    if x > 0.0 { x + (-x).exp().ln_1p() } else { x.exp().ln_1p() }
+    softplus_sigmoid(x).0
+}
+
+/// `ln(1 + eˣ)` and its derivative `1/(1 + e^{−x})`, from one exponential.
+pub fn softplus_sigmoid(x: f64) -> (f64, f64) {
+    let e = (-x.abs()).exp();
+    let l = (1.0 + e).ln();
+    if x > 0.0 { (x + l, 1.0 / (1.0 + e)) } else { (l, e / (1.0 + e)) }
 }
 
 /// The two load-dependent groups of eq. 19 for one load, in logarithms.
@@ -70,8 +78,8 @@ impl AsperityGroups {
     /// [`Self::required_ln_f32`] and its derivative with respect to ln x2.
     pub fn required_ln_f32_slope(&self, ln_x2: f64) -> (f64, f64) {
         let z = A4 * (self.ln_k - A2 * ln_x2);
-        let sigmoid = 1.0 / (1.0 + (-z).exp());
-        (ln_x2 + softplus(z) / A4 - self.ln_c, 1.0 - A2 * sigmoid)
+        let (sp, sigmoid) = softplus_sigmoid(z);
+        (ln_x2 + sp / A4 - self.ln_c, 1.0 - A2 * sigmoid)
     }
 }
 
@@ -172,5 +180,10 @@ mod tests {
         assert_eq!(softplus(1000.0), 1000.0);
         assert_eq!(softplus(-1000.0), 0.0);
         assert!((softplus(0.0) - 2f64.ln()).abs() < 1e-16);
+        for x in [-30.0, -3.0, -0.1, 0.2, 4.0, 35.0] {
+            let (sp, sg) = softplus_sigmoid(x);
+            assert!((sp - (1.0 + f64::exp(x)).ln()).abs() < 4.0 * f64::EPSILON * (1.0 + f64::abs(x)));
+            assert!((sg - 1.0 / (1.0 + f64::exp(-x))).abs() < 4.0 * f64::EPSILON);
+        }
     }
 }

@@ -77,7 +77,9 @@ fn log_add_exp_weight(a: f64, b: f64) -> (f64, f64) {
     }
     let e = (lo - hi).exp(); // ≤ 1
     let w_hi = 1.0 / (1.0 + e);
-    (hi + e.ln_1p(), if a_hi { w_hi } else { e * w_hi })
+    // ln(1 + e) rather than ln_1p(e): an absolute error of ε in a logarithm is a relative
+    // error of ε in the quantity, and ln is about half the cost of ln_1p (callgrind).
+    (hi + (1.0 + e).ln(), if a_hi { w_hi } else { e * w_hi })
 }
 
 /// Unscaled Moes central film H_C (eq. 12) and its exponent s.

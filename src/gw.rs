@@ -27,9 +27,9 @@ pub const T_LO: f64 = -10.0;
 /// Upper end of the Chebyshev-interpolated interval.
 pub const T_HI: f64 = 12.0;
 /// Width of one Chebyshev panel.
-const PANEL: f64 = 1.0;
+const PANEL: f64 = 0.5;
 /// Chebyshev nodes (= polynomial degree + 1) per panel.
-const NODES: usize = 20;
+const NODES: usize = 12;
 const PANELS: usize = ((T_HI - T_LO) / PANEL) as usize;
 
 /// ln Γ(5/2) = ln(3√π/4).

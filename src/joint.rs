@@ -33,7 +33,8 @@ impl Regime {
             Regime::FullFilm => "full-film",
         }
     }
-    fn from_shares(fluid: f64, asperity: f64) -> Self {
+    /// The regime of a point whose fluid and asperity shares are `fluid` and `asperity`.
+    pub fn from_shares(fluid: f64, asperity: f64) -> Self {
         if fluid < REGIME_SHARE {
             Regime::Boundary
         } else if asperity < REGIME_SHARE {
@@ -106,6 +107,21 @@ impl OperatingPoint {
     }
 }
 
+/// The quantities that depend on load and speed only, not on the load-sharing solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadSpeed {
+    /// Eq. 6 under the whole load.
+    pub hertz: crate::contact::Hertz,
+    /// u = |ω| R, m/s.
+    pub sliding_speed: f64,
+    /// S, eq. 20, with P_L = P/(2RB) and c = R_b − R.
+    pub sommerfeld_number: f64,
+    /// Roelands viscosity at p_m (eq. 5), Pa·s.
+    pub contact_viscosity: f64,
+    /// Bair–Winer limiting shear stress at p_m (eq. 4), Pa.
+    pub limiting_shear_stress: f64,
+}
+
 /// A validated parameter set with the load- and speed-independent groups precomputed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Joint {
@@ -163,6 +179,32 @@ impl Joint {
     pub fn effective_modulus(&self) -> f64 {
         self.e_eff
     }
+    /// √(σ² + σ_b²), the composite roughness of λ (eq. 21), m.
+    pub fn composite_roughness(&self) -> f64 {
+        self.roughness
+    }
+
+    /// Hertz quantities, sliding speed, Sommerfeld number and the rheology at p_m: the parts
+    /// of an operating point that do not need the load-sharing solve.
+    pub fn load_speed(&self, load: f64, omega: f64) -> LoadSpeed {
+        let (g, lub) = (&self.params.geometry, &self.params.lubricant);
+        // Eq. 6 scaled from 1 N: a, p_m, p0 ∝ √P_T.
+        let sqrt_p = load.sqrt();
+        let hertz = crate::contact::Hertz {
+            half_width: self.hertz_unit.half_width * sqrt_p,
+            mean_pressure: self.hertz_unit.mean_pressure * sqrt_p,
+            peak_pressure: self.hertz_unit.peak_pressure * sqrt_p,
+        };
+        let p_l = load / (2.0 * g.pin_radius * g.bush_length);
+        LoadSpeed {
+            hertz,
+            sliding_speed: omega.abs() * g.pin_radius,
+            sommerfeld_number: lub.viscosity * omega.abs() / (2.0 * PI * p_l) * (g.pin_radius / self.params.radial_clearance()).powi(2),
+            contact_viscosity: roelands_with(lub, hertz.mean_pressure, self.ln_eta_ratio),
+            limiting_shear_stress: limiting_shear_stress(lub, hertz.mean_pressure),
+        }
+    }
+
     /// The boundary-friction torque μ_c R P at `load` (N): the ω → 0 limit of eq. 11.
     pub fn boundary_torque(&self, load: f64) -> f64 {
         self.params.friction.boundary_friction_coefficient * self.params.geometry.pin_radius * load
@@ -183,30 +225,21 @@ impl Joint {
             return Err(ModelError::Speed(omega));
         }
         let p = &self.params;
-        let (g, lub) = (&p.geometry, &p.lubricant);
-        // Eq. 6 scaled from 1 N: a, p_m, p0 ∝ √P_T.
-        let sqrt_p = load.sqrt();
-        let hz = crate::contact::Hertz {
-            half_width: self.hertz_unit.half_width * sqrt_p,
-            mean_pressure: self.hertz_unit.mean_pressure * sqrt_p,
-            peak_pressure: self.hertz_unit.peak_pressure * sqrt_p,
-        };
-        let u = omega.abs() * g.pin_radius;
+        let g = &p.geometry;
+        let ls_q = self.load_speed(load, omega);
+        let (hz, u) = (ls_q.hertz, ls_q.sliding_speed);
         let ln_p = load.ln();
         let asp = self.asp_unit.at_load_ratio(ln_p);
         let film = (u > 0.0).then(|| self.film_unit.at_ratio(ln_p, u.ln()));
         let ls = solve(film.as_ref(), &asp, &p.surface, guess);
 
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
-        let eta = roelands_with(lub, hz.mean_pressure, self.ln_eta_ratio);
-        let tau_l = limiting_shear_stress(lub, hz.mean_pressure);
+        let (eta, tau_l) = (ls_q.contact_viscosity, ls_q.limiting_shear_stress);
         let mu_fluid = tau_l / hz.mean_pressure * -(-eta * u / (tau_l * ls.film_thickness)).exp_m1();
         // Eq. 8: Q_C = μ_c P_C = μ_c P_T/γ2.
         let mu_asperity = p.friction.boundary_friction_coefficient * ls.asperity_fraction;
         let mu = mu_fluid + mu_asperity;
-        // Eq. 20 with the projected-area pressure and the radial clearance.
-        let p_l = load / (2.0 * g.pin_radius * g.bush_length);
-        let sommerfeld = lub.viscosity * omega.abs() / (2.0 * PI * p_l) * (g.pin_radius / self.params.radial_clearance()).powi(2);
+        let sommerfeld = ls_q.sommerfeld_number;
         Ok(OperatingPoint {
             load,
             angular_velocity: omega,

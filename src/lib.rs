@@ -28,5 +28,8 @@ pub mod plot;
 pub mod rig;
 pub mod viscosity;
 
+pub mod fmi2;
+pub mod fmu;
+
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};
 pub use params::{ParamError, Params};

@@ -131,7 +131,7 @@ struct Shares {
 impl Shares {
     fn new(y: f64) -> Self {
         let e = (-y.abs()).exp();
-        let l = e.ln_1p();
+        let l = (1.0 + e).ln(); // absolute accuracy ε suffices for logarithms (see film.rs)
         let (big, small) = (1.0 / (1.0 + e), e / (1.0 + e));
         if y >= 0.0 {
             Shares { x1: big, x2: small, ln_x1: -l, ln_x2: -y - l }
@@ -162,6 +162,7 @@ pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn
     let mut y = y0;
     let mut evals = 0;
     let (mut last_step, mut step_before_last) = (f64::INFINITY, f64::INFINITY);
+    let mut last_was_newton = false;
     while evals < 400 {
         let (r, dr) = f(y);
         evals += 1;
@@ -192,12 +193,22 @@ pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn
             y + reach
         };
         let step = next - y;
-        step_before_last = last_step;
-        last_step = step;
+        let newton_step = next == newton;
         y = next;
         if step.abs() <= tol(y) {
             break;
         }
+        // Quadratic convergence: after two shrinking Newton steps s_{k−1}, s_k the error left
+        // after s_k is ≈ C·s_k² with C ≈ |s_k|/s_{k−1}². Stop when that is 100× below tol.
+        if newton_step && last_was_newton && step.abs() < 0.1 * last_step.abs() {
+            let predicted = step.abs().powi(3) / (last_step * last_step);
+            if predicted <= 0.01 * tol(y) {
+                break;
+            }
+        }
+        last_was_newton = newton_step;
+        step_before_last = last_step;
+        last_step = step;
     }
     (y, evals)
 }

@@ -16,7 +16,7 @@
 
 use super::check::ErrorReport;
 use super::envelope::{lerp_log, Envelope};
-use super::evaluation::{composite_roughness, Evaluation, Source};
+use super::evaluation::{Evaluation, Source};
 use super::rest::RestTable;
 use super::table::rest_evaluation;
 use crate::joint::Joint;
@@ -49,7 +49,7 @@ impl BoundaryLevel {
             rest,
             mu_c: p.friction.boundary_friction_coefficient,
             radius: p.geometry.pin_radius,
-            roughness: composite_roughness(joint),
+            roughness: joint.composite_roughness(),
             report: ErrorReport::default(),
         };
         level.report = level.measure(joint);

@@ -1,10 +1,7 @@
 //! The result of one evaluation at any fidelity, and how it was obtained.
 
-use crate::contact::hertz;
-use crate::joint::{Joint, OperatingPoint, REGIME_SHARE, Regime};
-use crate::viscosity::roelands;
+use crate::joint::{Joint, OperatingPoint, Regime};
 use serde::Serialize;
-use std::f64::consts::PI;
 
 /// How an [`Evaluation`] was obtained.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
@@ -104,48 +101,32 @@ impl Evaluation {
     }
 }
 
-/// Regime from the shares, as the core names it ([`REGIME_SHARE`]).
+/// Regime from the shares, as the core names it.
 #[inline]
 pub(crate) fn regime_from_shares(fluid: f64, asperity: f64) -> Regime {
-    if fluid < REGIME_SHARE {
-        Regime::Boundary
-    } else if asperity < REGIME_SHARE {
-        Regime::FullFilm
-    } else {
-        Regime::Mixed
-    }
-}
-
-/// √(σ² + σ_b²), the composite roughness of λ (as in the core).
-pub(crate) fn composite_roughness(joint: &Joint) -> f64 {
-    let s = &joint.params().surface;
-    s.pin_rms_roughness.hypot(s.bush_rms_roughness)
+    Regime::from_shares(fluid, asperity)
 }
 
 /// Complete an [`Evaluation`] into an [`OperatingPoint`]: the Hertz quantities (eq. 6),
 /// Roelands viscosity at p_m (eq. 5) and Sommerfeld number (eq. 20) depend on load and
-/// speed only and are computed with the core's formulas (equal to [`Joint::evaluate_from`]'s to rounding).
+/// speed only and come from the core ([`Joint::load_speed`]).
 pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
-    let p = joint.params();
-    let g = &p.geometry;
-    let hz = hertz(e.load, joint.reduced_radius(), joint.effective_modulus(), g.bush_length);
-    let p_l = e.load / (2.0 * g.pin_radius * g.bush_length);
-    let w = e.angular_velocity.abs();
+    let q = joint.load_speed(e.load, e.angular_velocity);
     OperatingPoint {
         load: e.load,
         angular_velocity: e.angular_velocity,
-        sliding_speed: w * g.pin_radius,
+        sliding_speed: q.sliding_speed,
         friction_coefficient: e.friction_coefficient,
         torque: e.torque,
         film_thickness: e.film_thickness,
         lambda_ratio: e.lambda_ratio,
         fluid_load_fraction: e.fluid_load_fraction,
         asperity_load_fraction: e.asperity_load_fraction,
-        mean_pressure: hz.mean_pressure,
-        peak_pressure: hz.peak_pressure,
-        contact_half_width: hz.half_width,
-        sommerfeld_number: p.lubricant.viscosity * w / (2.0 * PI * p_l) * (g.pin_radius / p.radial_clearance()).powi(2),
-        contact_viscosity: roelands(&p.lubricant, hz.mean_pressure),
+        mean_pressure: q.hertz.mean_pressure,
+        peak_pressure: q.hertz.peak_pressure,
+        contact_half_width: q.hertz.half_width,
+        sommerfeld_number: q.sommerfeld_number,
+        contact_viscosity: q.contact_viscosity,
         fluid_friction_coefficient: e.fluid_friction_coefficient,
         asperity_friction_coefficient: e.asperity_friction_coefficient,
         logit: e.logit,

@@ -48,7 +48,7 @@
 use super::check::{CheckRng, ErrorReport};
 use super::envelope::Envelope;
 use super::error::FidelityError;
-use super::evaluation::{composite_roughness, regime_from_shares, Evaluation, Source};
+use super::evaluation::{regime_from_shares, Evaluation, Source};
 use super::hermite::{bicubic, bicubic_coefficients, central_slope, fourth_difference};
 use super::rest::RestTable;
 use crate::joint::Joint;
@@ -274,7 +274,7 @@ impl StribeckTable {
             envelope: *env,
             mu_c,
             radius: p.geometry.pin_radius,
-            roughness: composite_roughness(joint),
+            roughness: joint.composite_roughness(),
             rest,
             report: ErrorReport::default(),
             stats: TableStats {

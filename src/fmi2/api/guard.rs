@@ -1,0 +1,127 @@
+//! The wrapper of every exported function: NULL and dead instances, the state mask,
+//! logging of errors, and containment of panics (no panic crosses the C boundary;
+//! one that happens inside a call returns `fmi2Fatal` and puts the instance in the
+//! `fatal` state, in which only `fmi2FreeInstance` is accepted).
+
+use crate::fmi2::instance::{CallResult, Instance};
+use crate::fmi2::logging::Category;
+use crate::fmi2::state::{Mask, State};
+use crate::fmi2::types::{Fmi2Component, Fmi2StatusC, Status};
+use std::cell::Cell;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+thread_local! {
+    static FORCED_PANIC: Cell<Option<&'static str>> = const { Cell::new(None) };
+}
+
+/// Test hook: the next call of the FMI function `name` (e.g. `"fmi2DoStep"`) on this
+/// thread panics inside its guard, so that tests can check the containment.
+#[doc(hidden)]
+pub fn force_panic_in(name: &'static str) {
+    FORCED_PANIC.with(|p| p.set(Some(name)));
+}
+
+pub(crate) fn maybe_forced_panic(name: &str) {
+    if FORCED_PANIC.with(|p| p.get()) == Some(name) {
+        FORCED_PANIC.with(|p| p.set(None));
+        panic!("forced panic in {name} (test hook)");
+    }
+}
+
+pub(crate) fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
+    if let Some(s) = payload.downcast_ref::<&str>() {
+        (*s).to_owned()
+    } else if let Some(s) = payload.downcast_ref::<String>() {
+        s.clone()
+    } else {
+        "unknown panic payload".to_owned()
+    }
+}
+
+/// Run `body` for the instance `c` if `mask` allows its state.
+pub(crate) fn call(
+    c: Fmi2Component,
+    name: &'static str,
+    mask: Mask,
+    body: impl FnOnce(&mut Instance) -> CallResult,
+) -> Fmi2StatusC {
+    if c.is_null() {
+        return Status::Error.c();
+    }
+    let ptr = c as *mut Instance;
+    let outcome = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: a non-NULL component is the pointer fmi2Instantiate returned; the
+        // tag check catches most foreign or freed pointers.
+        let inst = unsafe { &mut *ptr };
+        if !inst.is_live() {
+            return Status::Error;
+        }
+        if inst.logger.is_enabled(Category::All) {
+            inst.logger.log(Status::Ok, Category::All, &format!("{name} called in state {}", inst.state.name()));
+        }
+        if !mask.allows(inst.state) {
+            inst.log(
+                Status::Error,
+                &format!(
+                    "{name}: illegal call sequence: not allowed in state {} (allowed in: {})",
+                    inst.state.name(),
+                    mask.describe()
+                ),
+            );
+            return Status::Error;
+        }
+        maybe_forced_panic(name);
+        match body(inst) {
+            Ok(s) => s,
+            Err(msg) => {
+                inst.log(Status::Error, &format!("{name}: {msg}"));
+                Status::Error
+            }
+        }
+    }));
+    match outcome {
+        Ok(s) => s.c(),
+        Err(payload) => {
+            let text = panic_text(payload.as_ref());
+            let _ = catch_unwind(AssertUnwindSafe(|| {
+                // SAFETY: as above; the instance memory is still owned by the host.
+                let inst = unsafe { &mut *ptr };
+                if inst.is_live() {
+                    inst.state = State::Fatal;
+                    inst.log(Status::Fatal, &format!("{name}: internal error (panic: {text}); the instance can only be freed"));
+                }
+            }));
+            Status::Fatal.c()
+        }
+    }
+}
+
+/// Convert a `(pointer, count)` pair from the host into a slice.
+///
+/// # Safety
+/// For `n > 0` a non-NULL `p` must point to `n` readable values.
+pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&'a [T], String> {
+    if n == 0 {
+        return Ok(&[]);
+    }
+    if p.is_null() {
+        return Err(format!("{what} is NULL but its length is {n}"));
+    }
+    // SAFETY: per the contract above.
+    Ok(unsafe { std::slice::from_raw_parts(p, n) })
+}
+
+/// As [`slice`], for an output array.
+///
+/// # Safety
+/// For `n > 0` a non-NULL `p` must point to `n` writable values.
+pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &str) -> Result<&'a mut [T], String> {
+    if n == 0 {
+        return Ok(&mut []);
+    }
+    if p.is_null() {
+        return Err(format!("{what} is NULL but its length is {n}"));
+    }
+    // SAFETY: per the contract above.
+    Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
+}

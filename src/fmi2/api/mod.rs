@@ -1,0 +1,8 @@
+//! Every `fmi2*` function of the FMI 2.0 standard, exported with C linkage.
+
+pub mod common;
+pub mod cosim;
+pub(crate) mod guard;
+pub mod model_exchange;
+
+pub use guard::force_panic_in;

@@ -1,0 +1,115 @@
+//! Little-endian byte writer/reader and CRC-32 for the serialized FMU state.
+
+/// Appends fixed-width little-endian values.
+#[derive(Debug, Default)]
+pub struct ByteWriter {
+    pub buf: Vec<u8>,
+}
+
+impl ByteWriter {
+    pub fn u8(&mut self, v: u8) {
+        self.buf.push(v);
+    }
+    pub fn u16(&mut self, v: u16) {
+        self.buf.extend_from_slice(&v.to_le_bytes());
+    }
+    pub fn u32(&mut self, v: u32) {
+        self.buf.extend_from_slice(&v.to_le_bytes());
+    }
+    /// The exact bit pattern, so that NaN payloads and −0.0 survive.
+    pub fn f64(&mut self, v: f64) {
+        self.buf.extend_from_slice(&v.to_bits().to_le_bytes());
+    }
+    pub fn bytes(&mut self, v: &[u8]) {
+        self.buf.extend_from_slice(v);
+    }
+}
+
+/// Reads what [`ByteWriter`] wrote; every read checks the remaining length.
+#[derive(Debug)]
+pub struct ByteReader<'a> {
+    data: &'a [u8],
+    pos: usize,
+}
+
+impl<'a> ByteReader<'a> {
+    pub fn new(data: &'a [u8]) -> Self {
+        Self { data, pos: 0 }
+    }
+    pub fn take(&mut self, n: usize, what: &str) -> Result<&'a [u8], String> {
+        if self.data.len() - self.pos < n {
+            return Err(format!(
+                "truncated: {what} needs {n} bytes at offset {} but only {} remain",
+                self.pos,
+                self.data.len() - self.pos
+            ));
+        }
+        let s = &self.data[self.pos..self.pos + n];
+        self.pos += n;
+        Ok(s)
+    }
+    pub fn u8(&mut self, what: &str) -> Result<u8, String> {
+        Ok(self.take(1, what)?[0])
+    }
+    pub fn u16(&mut self, what: &str) -> Result<u16, String> {
+        Ok(u16::from_le_bytes(self.take(2, what)?.try_into().unwrap()))
+    }
+    pub fn u32(&mut self, what: &str) -> Result<u32, String> {
+        Ok(u32::from_le_bytes(self.take(4, what)?.try_into().unwrap()))
+    }
+    pub fn f64(&mut self, what: &str) -> Result<f64, String> {
+        Ok(f64::from_bits(u64::from_le_bytes(self.take(8, what)?.try_into().unwrap())))
+    }
+    /// Fail unless every byte was read.
+    pub fn finish(&self) -> Result<(), String> {
+        if self.pos != self.data.len() {
+            return Err(format!("{} unexpected trailing bytes", self.data.len() - self.pos));
+        }
+        Ok(())
+    }
+}
+
+/// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320), as in zip and PNG.
+pub fn crc32(data: &[u8]) -> u32 {
+    let mut crc = !0u32;
+    for &b in data {
+        crc ^= b as u32;
+        for _ in 0..8 {
+            crc = if crc & 1 != 0 { (crc >> 1) ^ 0xEDB8_8320 } else { crc >> 1 };
+        }
+    }
+    !crc
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crc32_check_value() {
+        // The standard check value of CRC-32/ISO-HDLC.
+        assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
+        assert_eq!(crc32(b""), 0);
+    }
+
+    #[test]
+    fn round_trip_and_truncation() {
+        let mut w = ByteWriter::default();
+        w.u8(7);
+        w.u16(513);
+        w.u32(70000);
+        w.f64(-0.0);
+        w.f64(f64::from_bits(0x7ff8_0000_0000_0001));
+        let mut r = ByteReader::new(&w.buf);
+        assert_eq!(r.u8("a").unwrap(), 7);
+        assert_eq!(r.u16("b").unwrap(), 513);
+        assert_eq!(r.u32("c").unwrap(), 70000);
+        assert_eq!(r.f64("d").unwrap().to_bits(), (-0.0f64).to_bits());
+        assert_eq!(r.f64("e").unwrap().to_bits(), 0x7ff8_0000_0000_0001);
+        r.finish().unwrap();
+        let mut r = ByteReader::new(&w.buf[..4]);
+        r.u8("a").unwrap();
+        let e = r.u32("c").unwrap_err();
+        assert!(e.contains("truncated") && e.contains('c'), "{e}");
+    }
+}

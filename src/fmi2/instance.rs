@@ -1,0 +1,261 @@
+//! One FMU instance: life-cycle state, time, logger and the model behind the
+//! [`Model`] trait. The methods here hold the standard's rules in safe Rust; the
+//! `extern "C"` functions in [`super::api`] only convert pointers and call them.
+//!
+//! Errors: a method returns `Err(message)`; the caller logs it with status
+//! `fmi2Error`. Argument errors (NULL arrays, unknown value references, a set on an
+//! output, a non-finite input, a discontinuous communication point) leave the
+//! instance exactly as it was, so the host may correct the call. A failure of the
+//! model itself (invalid parameters at `fmi2ExitInitializationMode`, a step that
+//! cannot be computed) moves the instance to the `error` state, from which the
+//! standard allows getters, `fmi2SetFMUstate`, `fmi2Reset` and `fmi2FreeInstance`.
+
+use super::logging::{show, Category, Logger};
+use super::model::Model;
+use super::snapshot::Snapshot;
+use super::state::State;
+use super::types::Status;
+use super::variables::{Causality, ModelInfo, Variability};
+
+const TAG: u64 = 0x504a_464d_4932_4f4b;
+
+pub type CallResult = Result<Status, String>;
+
+pub struct Instance {
+    tag: u64,
+    pub info: &'static ModelInfo,
+    pub guid: String,
+    pub name: String,
+    pub logger: Logger,
+    pub state: State,
+    /// End of the last communication step (or the start time).
+    pub time: f64,
+    pub start_time: f64,
+    model: Box<dyn Model>,
+    /// The model's outputs match its current inputs and parameters.
+    outputs_current: bool,
+}
+
+impl Instance {
+    pub fn new(info: &'static ModelInfo, name: &str, logger: Logger) -> Self {
+        Instance {
+            tag: TAG,
+            info,
+            guid: info.guid(),
+            name: name.to_owned(),
+            logger,
+            state: State::Instantiated,
+            time: 0.0,
+            start_time: 0.0,
+            model: (info.create)(),
+            outputs_current: false,
+        }
+    }
+
+    /// False for memory that is not (or no longer) a live instance.
+    pub fn is_live(&self) -> bool {
+        self.tag == TAG
+    }
+
+    pub fn kill(&mut self) {
+        self.tag = 0;
+    }
+
+    pub fn log(&self, status: Status, message: &str) {
+        self.logger.log(status, Category::for_status(status), message);
+    }
+
+    pub fn event(&self, message: &str) {
+        self.logger.log(Status::Ok, Category::Events, message);
+    }
+
+    fn lookup(&self, vr: u32) -> Result<usize, String> {
+        self.info.index_of(vr).ok_or_else(|| {
+            format!("unknown value reference {vr}: {} has no variable with this value reference", self.info.model_name)
+        })
+    }
+
+    fn describe(&self, i: usize) -> String {
+        let v = &self.info.variables[i];
+        format!("{} '{}' (value reference {})", v.causality.as_str(), v.name, v.value_reference)
+    }
+
+    fn check_settable(&self, i: usize) -> Result<(), String> {
+        let v = &self.info.variables[i];
+        match (v.causality, v.variability) {
+            (Causality::Output, _) => Err(format!("{} cannot be set: outputs are computed by the FMU", self.describe(i))),
+            (Causality::Parameter, Variability::Fixed)
+                if !matches!(self.state, State::Instantiated | State::InitializationMode) =>
+            {
+                Err(format!(
+                    "{} has variability 'fixed': it can only be set before fmi2ExitInitializationMode (state is {})",
+                    self.describe(i),
+                    self.state.name()
+                ))
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// `fmi2SetReal`: all values are checked before any is stored.
+    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> CallResult {
+        let mut idx = Vec::with_capacity(vrs.len());
+        for (&vr, &value) in vrs.iter().zip(values) {
+            let i = self.lookup(vr)?;
+            self.check_settable(i)?;
+            self.model.check_real(i, value)?;
+            idx.push(i);
+        }
+        for (&i, &value) in idx.iter().zip(values) {
+            self.model.set_real(i, value);
+        }
+        if !idx.is_empty() {
+            self.outputs_current = false;
+        }
+        Ok(Status::Ok)
+    }
+
+    fn update_outputs(&mut self) -> Result<(), String> {
+        if !self.outputs_current {
+            self.model.compute_outputs()?;
+            self.outputs_current = true;
+        }
+        Ok(())
+    }
+
+    /// `fmi2GetReal`: outputs are brought up to date with the inputs first.
+    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> CallResult {
+        let mut idx = Vec::with_capacity(vrs.len());
+        for &vr in vrs {
+            idx.push(self.lookup(vr)?);
+        }
+        if idx.iter().any(|&i| self.info.variables[i].causality == Causality::Output) {
+            self.update_outputs()?;
+        }
+        for (&i, out) in idx.iter().zip(values.iter_mut()) {
+            *out = self.model.get_real(i);
+        }
+        Ok(Status::Ok)
+    }
+
+    /// Getters and setters of the types this layer's models do not have.
+    pub fn reject_type(&self, type_name: &str, vrs: &[u32]) -> CallResult {
+        match vrs.first() {
+            None => Ok(Status::Ok),
+            Some(&vr) => Err(match self.info.index_of(vr) {
+                Some(i) => format!("{} is a Real variable, not {type_name}", self.describe(i)),
+                None => format!(
+                    "unknown value reference {vr}: {} has no {type_name} variables",
+                    self.info.model_name
+                ),
+            }),
+        }
+    }
+
+    pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> CallResult {
+        if !start.is_finite() {
+            return Err(format!("startTime = {start} s is not a finite number"));
+        }
+        if let Some(stop) = stop
+            && !(stop.is_finite() && stop >= start)
+        {
+            return Err(format!("stopTime = {stop} s must be a finite number >= startTime = {start} s"));
+        }
+        self.start_time = start;
+        self.time = start;
+        Ok(Status::Ok)
+    }
+
+    pub fn enter_initialization_mode(&mut self) -> CallResult {
+        self.state = State::InitializationMode;
+        self.event("entered initialization mode");
+        Ok(Status::Ok)
+    }
+
+    pub fn exit_initialization_mode(&mut self) -> CallResult {
+        let checked = self.model.exit_initialization().and_then(|_| {
+            self.outputs_current = false;
+            self.update_outputs()
+        });
+        if let Err(e) = checked {
+            self.state = State::Error;
+            return Err(e);
+        }
+        self.state = State::StepComplete;
+        self.event(&format!("initialization done at t = {} s", self.time));
+        Ok(Status::Ok)
+    }
+
+    /// `fmi2DoStep`: the step must be positive and continue the previous one.
+    pub fn do_step(&mut self, t: f64, h: f64) -> CallResult {
+        if !t.is_finite() {
+            return Err(format!("currentCommunicationPoint = {} s is not a finite number", show(t)));
+        }
+        if !(h.is_finite() && h > 0.0) {
+            return Err(format!("communicationStepSize = {} s must be a finite number > 0 s", show(h)));
+        }
+        // The host's time may differ from the sum of its steps by rounding only.
+        let tol = 1e-6 * h + 16.0 * f64::EPSILON * t.abs().max(self.time.abs());
+        if (t - self.time).abs() > tol {
+            return Err(format!(
+                "currentCommunicationPoint = {} s does not continue the last step, which ended at {} s \
+                 (difference {:e} s exceeds the tolerance {tol:e} s)",
+                show(t),
+                show(self.time),
+                t - self.time
+            ));
+        }
+        if let Err(e) = self.update_outputs().and_then(|_| self.model.do_step(t, h)) {
+            self.state = State::Error;
+            return Err(format!("step from t = {} s over {} s failed: {e}", show(t), show(h)));
+        }
+        self.time = t + h;
+        Ok(Status::Ok)
+    }
+
+    pub fn terminate(&mut self) -> CallResult {
+        self.state = State::Terminated;
+        self.event(&format!("terminated at t = {} s", self.time));
+        Ok(Status::Ok)
+    }
+
+    pub fn reset(&mut self) -> CallResult {
+        self.model.set_start_values();
+        self.state = State::Instantiated;
+        self.time = 0.0;
+        self.start_time = 0.0;
+        self.outputs_current = false;
+        self.event("reset to the start values");
+        Ok(Status::Ok)
+    }
+
+    /// The current state as an FMU state object.
+    pub fn snapshot(&self) -> Snapshot {
+        let mut model = Vec::new();
+        self.model.serialize(&mut model);
+        Snapshot::new(&self.guid, self.state, self.time, self.start_time, model)
+    }
+
+    /// `fmi2SetFMUstate`: the model checks its part before anything changes.
+    pub fn restore(&mut self, s: &Snapshot) -> CallResult {
+        if s.guid != self.guid {
+            return Err(format!("FMU state belongs to GUID {} but this instance is {}", s.guid, self.guid));
+        }
+        self.model.deserialize(&s.model).map_err(|e| format!("FMU state rejected: {e}"))?;
+        self.state = s.state;
+        self.time = s.time;
+        self.start_time = s.start_time;
+        self.outputs_current = false;
+        self.event(&format!("FMU state restored: {} at t = {} s", s.state.name(), s.time));
+        Ok(Status::Ok)
+    }
+
+    /// `fmi2DeSerializeFMUstate`: the container and the model part are both checked
+    /// (the latter on a scratch model, so that this instance is not touched).
+    pub fn decode_state(&self, bytes: &[u8]) -> Result<Snapshot, String> {
+        let s = Snapshot::decode(bytes, &self.guid)?;
+        let mut scratch = (self.info.create)();
+        scratch.deserialize(&s.model).map_err(|e| format!("serialized FMU state rejected: {e}"))?;
+        Ok(s)
+    }
+}

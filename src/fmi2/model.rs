@@ -1,0 +1,45 @@
+//! The one trait through which a model plugs into the generic FMI 2.0 layer.
+//!
+//! The layer owns everything the standard prescribes (state machine, argument
+//! checks, value-reference lookup, logging, FMU state format); a model only
+//! stores values, computes its outputs and advances over a communication step.
+//! Variables are addressed by their index in the model's [`ModelInfo::variables`]
+//! table (`super::variables::ModelInfo`), never by value reference.
+
+/// A model error, reported through the logger with status `fmi2Error`.
+pub type ModelResult<T> = Result<T, String>;
+
+pub trait Model {
+    /// Restore every variable to its start value (called at instantiation and by `fmi2Reset`).
+    fn set_start_values(&mut self);
+
+    /// The current value of variable `index`. Outputs are read after
+    /// [`Model::compute_outputs`] has run for the current inputs.
+    fn get_real(&self, index: usize) -> f64;
+
+    /// Check a value before it is stored; the layer calls this for every element of
+    /// an `fmi2SetReal` array before storing any, so a rejected call changes nothing.
+    /// The message names the variable, the value and its unit.
+    fn check_real(&self, index: usize, value: f64) -> ModelResult<()>;
+
+    /// Store a value that passed [`Model::check_real`].
+    fn set_real(&mut self, index: usize, value: f64);
+
+    /// Validate the parameters at `fmi2ExitInitializationMode`.
+    fn exit_initialization(&mut self) -> ModelResult<()>;
+
+    /// Recompute the outputs from the current inputs and parameters.
+    fn compute_outputs(&mut self) -> ModelResult<()>;
+
+    /// Advance from `time` over `step` (> 0) with the inputs held; outputs are current.
+    fn do_step(&mut self, time: f64, step: f64) -> ModelResult<()>;
+
+    /// Append the model's complete state (parameters, inputs, internal states) in a
+    /// self-describing, versioned byte form of the model's own.
+    fn serialize(&self, out: &mut Vec<u8>);
+
+    /// Replace the state by one written by [`Model::serialize`]; reject anything
+    /// else (wrong version, wrong length, values the model could never hold)
+    /// without changing the model.
+    fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()>;
+}

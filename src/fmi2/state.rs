@@ -1,0 +1,146 @@
+//! The FMI 2.0 Co-Simulation state machine (FMI 2.0.4, section 4.2.4), with one
+//! bit mask per function naming the states in which the standard allows the call.
+//!
+//! The masks follow the standard's state chart (and the modelica/Reference-FMUs
+//! layout). One deliberate difference: `fmi2FreeInstance` is also accepted in
+//! the `Fatal` state, so that a host can always release the memory.
+
+/// One state of the instance's life cycle, as a single bit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[repr(u32)]
+pub enum State {
+    /// Before `fmi2Instantiate` / after `fmi2FreeInstance` (never held by an instance).
+    StartAndEnd = 1 << 0,
+    Instantiated = 1 << 1,
+    InitializationMode = 1 << 2,
+    StepComplete = 1 << 3,
+    /// Only reached by asynchronous slaves; this FMU steps synchronously.
+    StepInProgress = 1 << 4,
+    StepFailed = 1 << 5,
+    StepCanceled = 1 << 6,
+    Terminated = 1 << 7,
+    Error = 1 << 8,
+    Fatal = 1 << 9,
+}
+
+impl State {
+    pub const ALL: [State; 10] = [
+        State::StartAndEnd,
+        State::Instantiated,
+        State::InitializationMode,
+        State::StepComplete,
+        State::StepInProgress,
+        State::StepFailed,
+        State::StepCanceled,
+        State::Terminated,
+        State::Error,
+        State::Fatal,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            State::StartAndEnd => "startAndEnd",
+            State::Instantiated => "instantiated",
+            State::InitializationMode => "initializationMode",
+            State::StepComplete => "stepComplete",
+            State::StepInProgress => "stepInProgress",
+            State::StepFailed => "stepFailed",
+            State::StepCanceled => "stepCanceled",
+            State::Terminated => "terminated",
+            State::Error => "error",
+            State::Fatal => "fatal",
+        }
+    }
+
+    /// A small code for the serialized FMU state.
+    pub fn code(self) -> u8 {
+        (self as u32).trailing_zeros() as u8
+    }
+
+    pub fn from_code(code: u8) -> Option<State> {
+        State::ALL.iter().copied().find(|s| s.code() == code)
+    }
+}
+
+/// A set of states.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Mask(pub u32);
+
+impl Mask {
+    const fn of(states: &[State]) -> Mask {
+        let mut bits = 0;
+        let mut i = 0;
+        while i < states.len() {
+            bits |= states[i] as u32;
+            i += 1;
+        }
+        Mask(bits)
+    }
+
+    pub fn allows(self, s: State) -> bool {
+        self.0 & (s as u32) != 0
+    }
+
+    /// The allowed states, for messages: "instantiated, initializationMode".
+    pub fn describe(self) -> String {
+        let names: Vec<&str> = State::ALL.iter().filter(|s| self.allows(**s)).map(|s| s.name()).collect();
+        if names.is_empty() { "no state".into() } else { names.join(", ") }
+    }
+}
+
+use State::*;
+
+pub const GET_TYPES_PLATFORM: Mask = Mask::of(&[
+    StartAndEnd, Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled,
+    Terminated, Error, Fatal,
+]);
+pub const GET_VERSION: Mask = GET_TYPES_PLATFORM;
+pub const SET_DEBUG_LOGGING: Mask = Mask::of(&[
+    Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled, Terminated, Error,
+]);
+pub const INSTANTIATE: Mask = Mask::of(&[StartAndEnd]);
+/// Every state an instance can be in, `Fatal` included (see the module doc).
+pub const FREE_INSTANCE: Mask = Mask::of(&[
+    Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, Fatal,
+]);
+pub const SETUP_EXPERIMENT: Mask = Mask::of(&[Instantiated]);
+pub const ENTER_INITIALIZATION_MODE: Mask = Mask::of(&[Instantiated]);
+pub const EXIT_INITIALIZATION_MODE: Mask = Mask::of(&[InitializationMode]);
+pub const TERMINATE: Mask = Mask::of(&[StepComplete, StepFailed]);
+pub const RESET: Mask =
+    Mask::of(&[Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error]);
+pub const GET_VALUE: Mask =
+    Mask::of(&[InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error]);
+pub const SET_VALUE: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete]);
+pub const FMU_STATE: Mask = RESET;
+pub const GET_DIRECTIONAL_DERIVATIVE: Mask = GET_VALUE;
+pub const SET_REAL_INPUT_DERIVATIVES: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete]);
+pub const GET_REAL_OUTPUT_DERIVATIVES: Mask = Mask::of(&[StepComplete, StepFailed, StepCanceled, Terminated, Error]);
+pub const DO_STEP: Mask = Mask::of(&[StepComplete]);
+pub const CANCEL_STEP: Mask = Mask::of(&[StepInProgress]);
+pub const GET_STATUS: Mask = Mask::of(&[StepComplete, StepInProgress, StepFailed, Terminated]);
+/// Model Exchange functions: checked for a live instance, then always rejected.
+pub const MODEL_EXCHANGE: Mask = RESET;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_round_trip_and_are_distinct() {
+        for s in State::ALL {
+            assert_eq!(State::from_code(s.code()), Some(s));
+        }
+        assert_eq!(State::from_code(10), None);
+    }
+
+    #[test]
+    fn masks_follow_the_standard() {
+        assert!(DO_STEP.allows(StepComplete) && !DO_STEP.allows(InitializationMode));
+        assert!(!SET_VALUE.allows(Terminated) && !SET_VALUE.allows(Error));
+        assert!(!GET_VALUE.allows(Instantiated) && GET_VALUE.allows(Error));
+        assert!(TERMINATE.allows(StepFailed) && !TERMINATE.allows(Terminated));
+        assert!(FREE_INSTANCE.allows(Fatal) && !RESET.allows(Fatal));
+        assert_eq!(EXIT_INITIALIZATION_MODE.describe(), "initializationMode");
+    }
+}

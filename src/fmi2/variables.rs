@@ -1,0 +1,186 @@
+//! The description of a model's interface: its variables and units. One table per
+//! model feeds both the modelDescription.xml generator ([`super::xml`]) and the
+//! get/set dispatch of the instance, so the two cannot drift apart.
+
+use super::model::Model;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Causality {
+    Parameter,
+    Input,
+    Output,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Variability {
+    /// Set before `fmi2ExitInitializationMode` only.
+    Fixed,
+    /// May also be set in `stepComplete`.
+    Tunable,
+    Continuous,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Initial {
+    Exact,
+    Calculated,
+}
+
+impl Causality {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Causality::Parameter => "parameter",
+            Causality::Input => "input",
+            Causality::Output => "output",
+        }
+    }
+}
+impl Variability {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Variability::Fixed => "fixed",
+            Variability::Tunable => "tunable",
+            Variability::Continuous => "continuous",
+        }
+    }
+}
+impl Initial {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Initial::Exact => "exact",
+            Initial::Calculated => "calculated",
+        }
+    }
+}
+
+/// One Real scalar variable. (Both models of this crate only have Real variables;
+/// the Integer/Boolean/String getters and setters reject every value reference.)
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variable {
+    /// Structured name, e.g. `geometry.pin_radius`.
+    pub name: String,
+    pub value_reference: u32,
+    pub causality: Causality,
+    pub variability: Variability,
+    pub initial: Initial,
+    /// SI unit name from the model's unit table; `None` for dimensionless.
+    pub unit: Option<&'static str>,
+    pub display_unit: Option<&'static str>,
+    /// Start value (required for inputs and parameters, absent for calculated outputs).
+    pub start: Option<f64>,
+    pub min: Option<f64>,
+    pub max: Option<f64>,
+    pub description: String,
+    /// Outputs: the names of the inputs the output depends on directly (ModelStructure).
+    pub depends_on: Vec<&'static str>,
+}
+
+impl Variable {
+    /// The unit for messages: "N", "rad/s", or "(dimensionless)".
+    pub fn unit_text(&self) -> &'static str {
+        self.unit.unwrap_or("(dimensionless)")
+    }
+}
+
+/// A display unit: `value_display = factor * value + offset`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DisplayUnit {
+    pub name: &'static str,
+    pub factor: f64,
+    pub offset: f64,
+}
+
+/// A unit with its SI base-unit exponents (kg, m, s, A, K, mol, cd, rad).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct UnitDef {
+    pub name: &'static str,
+    pub kg: i32,
+    pub m: i32,
+    pub s: i32,
+    pub rad: i32,
+    pub display: &'static [DisplayUnit],
+}
+
+/// Co-Simulation capabilities written to the modelDescription. The generic layer
+/// implements exactly these: variable step size, get/set and serialized FMU state.
+pub const CAPABILITIES: &[(&str, &str)] = &[
+    ("needsExecutionTool", "false"),
+    ("canHandleVariableCommunicationStepSize", "true"),
+    ("canInterpolateInputs", "false"),
+    ("maxOutputDerivativeOrder", "0"),
+    ("canRunAsynchronuously", "false"),
+    ("canBeInstantiatedOnlyOncePerProcess", "false"),
+    ("canNotUseMemoryManagementFunctions", "true"),
+    ("canGetAndSetFMUstate", "true"),
+    ("canSerializeFMUstate", "true"),
+    ("providesDirectionalDerivative", "false"),
+];
+
+/// Everything the FMI layer needs to know about one model.
+pub struct ModelInfo {
+    pub model_name: &'static str,
+    /// The shared library's base name and the `modelIdentifier`.
+    pub model_identifier: &'static str,
+    pub description: &'static str,
+    pub version: &'static str,
+    pub units: &'static [UnitDef],
+    pub variables: Vec<Variable>,
+    /// (startTime, stopTime, stepSize) of `<DefaultExperiment>`.
+    pub default_experiment: (f64, f64, f64),
+    /// A fresh model with its start values set.
+    pub create: fn() -> Box<dyn Model>,
+    /// The FMU's `documentation/index.html`.
+    pub documentation: fn() -> String,
+}
+
+impl ModelInfo {
+    /// The GUID: a hash of everything that defines the interface (name, identifier,
+    /// and each variable's name, value reference, causality, variability, unit), so
+    /// that any change of the interface changes the GUID and a stale
+    /// modelDescription.xml is refused by `fmi2Instantiate`.
+    pub fn guid(&self) -> String {
+        let mut text = format!("{}|{}|{}", self.model_name, self.model_identifier, self.version);
+        for v in &self.variables {
+            text.push_str(&format!(
+                "|{}:{}:{}:{}:{}",
+                v.name,
+                v.value_reference,
+                v.causality.as_str(),
+                v.variability.as_str(),
+                v.unit.unwrap_or("")
+            ));
+        }
+        let a = fnv1a64(text.as_bytes(), 0xcbf2_9ce4_8422_2325);
+        let b = fnv1a64(text.as_bytes(), 0x6c62_272e_07bb_0142);
+        format!(
+            "{{{:08x}-{:04x}-{:04x}-{:04x}-{:012x}}}",
+            a >> 32,
+            (a >> 16) & 0xffff,
+            a & 0xffff,
+            b >> 48,
+            b & 0xffff_ffff_ffff
+        )
+    }
+
+    /// Index of the variable with value reference `vr`.
+    pub fn index_of(&self, vr: u32) -> Option<usize> {
+        self.variables.iter().position(|v| v.value_reference == vr)
+    }
+
+    pub fn index_by_name(&self, name: &str) -> Option<usize> {
+        self.variables.iter().position(|v| v.name == name)
+    }
+
+    pub fn unit(&self, name: &str) -> Option<&UnitDef> {
+        self.units.iter().find(|u| u.name == name)
+    }
+}
+
+fn fnv1a64(bytes: &[u8], seed: u64) -> u64 {
+    let mut h = seed;
+    for &b in bytes {
+        h ^= b as u64;
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}

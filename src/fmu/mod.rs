@@ -1,0 +1,11 @@
+//! The models this crate packages as FMUs, each plugged into the generic
+//! [`crate::fmi2`] layer. `fmi2Instantiate` finds a model here by its GUID.
+
+pub mod pin_joint;
+
+use crate::fmi2::variables::ModelInfo;
+
+/// Every model the shared library serves.
+pub fn registry() -> Vec<&'static ModelInfo> {
+    vec![&*pin_joint::INFO]
+}

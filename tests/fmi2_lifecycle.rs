@@ -1,0 +1,289 @@
+//! Instantiation, the state machine (masks), logging and the functions this FMU
+//! rejects, through the exported C functions.
+
+mod common;
+use common::*;
+use pinjoint::fmi2::api::common::*;
+use pinjoint::fmi2::api::cosim::*;
+use pinjoint::fmi2::api::model_exchange::*;
+use pinjoint::fmi2::types::*;
+use std::ffi::CStr;
+use std::ptr::{null, null_mut};
+
+const OK: i32 = 0;
+const WARNING: i32 = 1;
+const ERROR: i32 = 3;
+
+#[test]
+fn version_and_platform() {
+    assert_eq!(unsafe { CStr::from_ptr(fmi2GetVersion()) }.to_str().unwrap(), "2.0");
+    assert_eq!(unsafe { CStr::from_ptr(fmi2GetTypesPlatform()) }.to_str().unwrap(), "default");
+}
+
+#[test]
+fn instantiate_rejects_bad_arguments_with_a_message() {
+    let h = Host::new();
+    // Wrong GUID.
+    assert!(h.instantiate_with("a", FMI2_CO_SIMULATION, "{nope}", None, false).is_null());
+    assert!(h.last().contains("{nope}") && h.last().contains("GUID"), "{}", h.last());
+    // Model Exchange.
+    assert!(h.instantiate_with("a", FMI2_MODEL_EXCHANGE, &guid(), None, false).is_null());
+    assert!(h.last().contains("Co-Simulation"), "{}", h.last());
+    assert!(h.instantiate_with("a", 7, &guid(), None, false).is_null());
+    // Empty instance name.
+    assert!(h.instantiate_with("", FMI2_CO_SIMULATION, &guid(), None, false).is_null());
+    assert!(h.last().contains("instanceName"), "{}", h.last());
+    assert!(h.messages().iter().all(|m| m.status == ERROR && m.category == "logStatusError"));
+    // NULL callbacks, NULL logger, NULL GUID.
+    let g = std::ffi::CString::new(guid()).unwrap();
+    let c = unsafe { fmi2Instantiate(c"a".as_ptr(), 1, g.as_ptr(), null(), null(), 0, 0) };
+    assert!(c.is_null());
+    let no_logger = Fmi2CallbackFunctions {
+        logger: None,
+        allocate_memory: None,
+        free_memory: None,
+        step_finished: None,
+        component_environment: null_mut(),
+    };
+    assert!(unsafe { fmi2Instantiate(c"a".as_ptr(), 1, g.as_ptr(), null(), &no_logger, 0, 0) }.is_null());
+    h.clear();
+    assert!(unsafe { fmi2Instantiate(c"a".as_ptr(), 1, null(), null(), &*h.callbacks, 0, 0) }.is_null());
+    assert!(h.last().contains("fmuGUID is NULL"));
+}
+
+#[test]
+fn missing_resource_location_is_only_a_warning() {
+    let h = Host::new();
+    let c = h.instantiate_with("a", FMI2_CO_SIMULATION, &guid(), None, true);
+    assert!(!c.is_null());
+    assert!(h.messages().iter().any(|m| m.status == WARNING && m.text.contains("fmuResourceLocation")));
+    unsafe { fmi2FreeInstance(c) };
+    let c = h.instantiate_with("a", FMI2_CO_SIMULATION, &guid(), Some("C:\\x"), true);
+    assert!(!c.is_null());
+    assert!(h.last().contains("not a URI") || h.messages().iter().any(|m| m.text.contains("not a URI")));
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn null_instance_is_an_error_everywhere() {
+    let n = null_mut();
+    assert_eq!(fmi2EnterInitializationMode(n), ERROR);
+    assert_eq!(fmi2DoStep(n, 0.0, 0.1, 0), ERROR);
+    assert_eq!(unsafe { fmi2GetReal(n, null(), 0, null_mut()) }, ERROR);
+    assert_eq!(fmi2Reset(n), ERROR);
+    assert_eq!(fmi2SetTime(n, 0.0), ERROR);
+    unsafe { fmi2FreeInstance(n) }; // no-op
+}
+
+#[test]
+fn illegal_call_sequences_are_refused_and_logged() {
+    let h = Host::new();
+    let c = h.instantiate();
+    // Instantiated: no step, no exit, no get, no terminate.
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), ERROR);
+    assert!(h.last().contains("fmi2DoStep: illegal call sequence") && h.last().contains("instantiated"), "{}", h.last());
+    assert_eq!(fmi2ExitInitializationMode(c), ERROR);
+    assert_eq!(try_get(c, "torque"), Err(ERROR));
+    assert_eq!(fmi2Terminate(c), ERROR);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    // Initialization mode: no setup, no second enter, no step; get works.
+    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), ERROR);
+    assert_eq!(fmi2EnterInitializationMode(c), ERROR);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), ERROR);
+    assert!(get(c, "torque").is_finite());
+    assert_eq!(fmi2ExitInitializationMode(c), OK);
+    // Step complete.
+    assert_eq!(fmi2EnterInitializationMode(c), ERROR);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), OK);
+    assert_eq!(fmi2Terminate(c), OK);
+    // Terminated: get yes, set/step/terminate no.
+    assert!(get(c, "torque").is_finite());
+    assert_eq!(set(c, "load", 1e3), ERROR);
+    assert_eq!(fmi2DoStep(c, 0.1, 0.1, 0), ERROR);
+    assert_eq!(fmi2Terminate(c), ERROR, "terminate twice");
+    assert!(h.last().contains("terminated"), "{}", h.last());
+    // Reset returns to instantiated.
+    assert_eq!(fmi2Reset(c), OK);
+    assert_eq!(try_get(c, "torque"), Err(ERROR));
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn free_without_terminate_and_in_initialization_mode() {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), OK);
+    unsafe { fmi2FreeInstance(c) };
+    let c = h.instantiate();
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn reset_then_a_fresh_run_equals_the_first() {
+    let h = Host::new();
+    let c = h.ready(&[("load", 40e3), ("geometry.bush_length", 0.05)]);
+    let run = |c| {
+        let mut out = Vec::new();
+        for k in 0..50 {
+            let t = k as f64 * 0.01;
+            assert_eq!(set(c, "angular_velocity", (3.0 * t).sin() * 0.3), OK);
+            assert_eq!(fmi2DoStep(c, t, 0.01, 0), OK);
+            out.extend(all_outputs(c));
+        }
+        out
+    };
+    let first = run(c);
+    assert_eq!(fmi2Terminate(c), OK);
+    assert_eq!(fmi2Reset(c), OK);
+    // After reset the start values are back: the parameter change is gone.
+    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert_eq!(get(c, "geometry.bush_length"), 59.4e-3);
+    assert_eq!(get(c, "load"), 20e3);
+    assert_eq!(set(c, "load", 40e3), OK);
+    assert_eq!(set(c, "geometry.bush_length", 0.05), OK);
+    assert_eq!(fmi2ExitInitializationMode(c), OK);
+    let second = run(c);
+    assert_eq!(first.iter().map(|x| x.to_bits()).collect::<Vec<_>>(), second.iter().map(|x| x.to_bits()).collect::<Vec<_>>());
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    let mut x = [0.0; 2];
+    let mut b = 0;
+    let calls: Vec<(&str, i32)> = vec![
+        ("fmi2EnterEventMode", fmi2EnterEventMode(c)),
+        ("fmi2NewDiscreteStates", fmi2NewDiscreteStates(c, null_mut())),
+        ("fmi2EnterContinuousTimeMode", fmi2EnterContinuousTimeMode(c)),
+        ("fmi2CompletedIntegratorStep", fmi2CompletedIntegratorStep(c, 0, &mut b, &mut b)),
+        ("fmi2SetTime", fmi2SetTime(c, 1.0)),
+        ("fmi2SetContinuousStates", fmi2SetContinuousStates(c, x.as_ptr(), 0)),
+        ("fmi2GetDerivatives", fmi2GetDerivatives(c, x.as_mut_ptr(), 0)),
+        ("fmi2GetEventIndicators", fmi2GetEventIndicators(c, x.as_mut_ptr(), 0)),
+        ("fmi2GetContinuousStates", fmi2GetContinuousStates(c, x.as_mut_ptr(), 0)),
+        ("fmi2GetNominalsOfContinuousStates", fmi2GetNominalsOfContinuousStates(c, x.as_mut_ptr(), 0)),
+    ];
+    for (name, status) in calls {
+        assert_eq!(status, ERROR, "{name}");
+        assert!(h.messages().iter().any(|m| m.text.starts_with(name) && m.text.contains("Co-Simulation only")), "{name}");
+    }
+    let r = [vr("torque")];
+    let order = [1];
+    assert_eq!(fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, r.as_ptr(), 1, x.as_ptr(), x.as_mut_ptr()), ERROR);
+    assert!(h.last().contains("providesDirectionalDerivative"));
+    assert_eq!(fmi2SetRealInputDerivatives(c, r.as_ptr(), 1, order.as_ptr(), x.as_ptr()), ERROR);
+    assert!(h.last().contains("canInterpolateInputs"));
+    assert_eq!(fmi2GetRealOutputDerivatives(c, r.as_ptr(), 1, order.as_ptr(), x.as_mut_ptr()), ERROR);
+    assert_eq!(fmi2CancelStep(c), ERROR);
+    // The instance is still usable.
+    assert_eq!(fmi2DoStep(c, 0.0, 0.5, 0), OK);
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn status_functions() {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.25, 0), OK);
+    assert_eq!(fmi2DoStep(c, 0.25, 0.5, 0), OK);
+    let mut t = 0.0;
+    assert_eq!(unsafe { fmi2GetRealStatus(c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) }, OK);
+    assert_eq!(t, 0.75);
+    let mut b = 1;
+    assert_eq!(unsafe { fmi2GetBooleanStatus(c, FMI2_TERMINATED, &mut b) }, OK);
+    assert_eq!(b, FMI2_FALSE);
+    let mut s = 0;
+    assert_eq!(unsafe { fmi2GetStatus(c, FMI2_DO_STEP_STATUS, &mut s) }, ERROR);
+    assert_eq!(unsafe { fmi2GetRealStatus(c, 99, &mut t) }, ERROR);
+    assert!(h.last().contains("status kind 99"), "{}", h.last());
+    let mut i = 0;
+    assert_eq!(unsafe { fmi2GetIntegerStatus(c, 0, &mut i) }, ERROR);
+    assert_eq!(unsafe { fmi2GetRealStatus(c, FMI2_LAST_SUCCESSFUL_TIME, null_mut()) }, ERROR);
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn debug_logging_categories() {
+    let h = Host::new();
+    let c = h.instantiate(); // logging off
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert!(h.messages().is_empty(), "no debug output with logging off: {:?}", h.messages());
+    // Errors are reported with debug logging off.
+    assert_eq!(fmi2EnterInitializationMode(c), ERROR);
+    assert_eq!(h.messages().len(), 1);
+    // Switch on logEvents only.
+    let cats = [c"logEvents".as_ptr()];
+    assert_eq!(unsafe { fmi2SetDebugLogging(c, 1, 1, cats.as_ptr()) }, OK);
+    h.clear();
+    assert_eq!(fmi2ExitInitializationMode(c), OK);
+    assert!(h.messages().iter().any(|m| m.category == "logEvents" && m.text.contains("initialization done")));
+    // logAll traces calls.
+    let all = [c"logAll".as_ptr()];
+    assert_eq!(unsafe { fmi2SetDebugLogging(c, 1, 1, all.as_ptr()) }, OK);
+    h.clear();
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), OK);
+    assert!(h.messages().iter().any(|m| m.category == "logAll" && m.text.contains("fmi2DoStep")));
+    // Everything off with nCategories = 0 still reports errors.
+    assert_eq!(unsafe { fmi2SetDebugLogging(c, 0, 0, null()) }, OK);
+    h.clear();
+    assert_eq!(fmi2DoStep(c, 0.1, 0.1, 0), OK);
+    assert!(h.messages().is_empty());
+    assert_eq!(fmi2DoStep(c, 5.0, 0.1, 0), ERROR);
+    assert_eq!(h.messages().len(), 1);
+    // Errors can be silenced explicitly.
+    let err = [c"logStatusError".as_ptr()];
+    assert_eq!(unsafe { fmi2SetDebugLogging(c, 0, 1, err.as_ptr()) }, OK);
+    h.clear();
+    assert_eq!(fmi2DoStep(c, 5.0, 0.1, 0), ERROR);
+    assert!(h.messages().is_empty());
+    assert_eq!(unsafe { fmi2SetDebugLogging(c, 1, 1, err.as_ptr()) }, OK);
+    // Unknown category, NULL array.
+    let bad = [c"logEverything".as_ptr()];
+    assert_eq!(unsafe { fmi2SetDebugLogging(c, 1, 1, bad.as_ptr()) }, ERROR);
+    assert!(h.last().contains("logEverything") && h.last().contains("logEvents"), "{}", h.last());
+    assert_eq!(unsafe { fmi2SetDebugLogging(c, 1, 2, null()) }, ERROR);
+    assert!(h.last().contains("categories[] is NULL"), "{}", h.last());
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn invalid_parameter_at_exit_initialization_names_it_and_enters_error_state() {
+    let h = Host::new();
+    let c = h.instantiate();
+    assert_eq!(set(c, "materials.pin_elastic_modulus", -5e9), OK, "parameters are checked at exit");
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    // A getter of an output in initialization mode already reports it.
+    assert_eq!(try_get(c, "torque"), Err(ERROR));
+    assert!(h.last().contains("materials.pin_elastic_modulus = -5000000000 Pa"), "{}", h.last());
+    assert_eq!(fmi2ExitInitializationMode(c), ERROR);
+    let m = h.last();
+    assert!(m.starts_with("fmi2ExitInitializationMode") && m.contains("materials.pin_elastic_modulus = -5000000000 Pa") && m.contains("out of range"), "{m}");
+    // Error state: step refused, parameters readable, reset allowed.
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), ERROR);
+    assert!(h.last().contains("state error"), "{}", h.last());
+    assert_eq!(get(c, "materials.pin_elastic_modulus"), -5e9);
+    assert_eq!(fmi2Reset(c), OK);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert_eq!(fmi2ExitInitializationMode(c), OK);
+    unsafe { fmi2FreeInstance(c) };
+
+    for (name, v, expect) in [
+        ("geometry.bush_radius", 0.027, "geometry.bush_radius"),
+        ("materials.bush_poisson_ratio", 0.5, "materials.bush_poisson_ratio = 0.5"),
+        ("lubricant.viscosity", f64::NAN, "lubricant.viscosity = NaN Pa.s"),
+        ("zero_velocity.speed_band", -0.1, "zero_velocity.speed_band = -0.1 rad/s"),
+        ("zero_velocity.speed_band", f64::INFINITY, "zero_velocity.speed_band = inf rad/s"),
+    ] {
+        let c = h.instantiate();
+        assert_eq!(set(c, name, v), OK);
+        assert_eq!(fmi2EnterInitializationMode(c), OK);
+        assert_eq!(fmi2ExitInitializationMode(c), ERROR, "{name}");
+        assert!(h.last().contains(expect), "{name}: {}", h.last());
+        unsafe { fmi2FreeInstance(c) };
+    }
+}

@@ -1,0 +1,178 @@
+//! FMU state: get/set/free, serialize/deserialize round trips (bit-exact, mid-run
+//! and after reversals) and rejection of truncated, corrupted or foreign states.
+
+mod common;
+use common::*;
+use pinjoint::fmi2::api::common::*;
+use pinjoint::fmi2::api::cosim::*;
+use pinjoint::fmi2::bytes::crc32;
+use pinjoint::fmi2::types::*;
+use std::ptr::null_mut;
+
+const OK: i32 = 0;
+const ERROR: i32 = 3;
+
+fn drive(c: Fmi2Component, from: usize, to: usize) -> Vec<u64> {
+    let mut out = Vec::new();
+    for k in from..to {
+        let t = k as f64 * 0.01;
+        assert_eq!(set(c, "angular_velocity", 0.5 * (2.0 * t).sin()), OK);
+        assert_eq!(set(c, "angle", -0.25 * (2.0 * t).cos()), OK);
+        assert_eq!(set(c, "load", 5e3 + 1e3 * k as f64), OK);
+        assert_eq!(fmi2DoStep(c, t, 0.01, 0), OK);
+        out.extend(all_outputs(c).iter().map(|x| x.to_bits()));
+    }
+    out
+}
+
+fn serialize(c: Fmi2Component, s: Fmi2FmuState) -> Vec<u8> {
+    let mut n = 0usize;
+    assert_eq!(unsafe { fmi2SerializedFMUstateSize(c, s, &mut n) }, OK);
+    let mut buf = vec![0u8; n];
+    assert_eq!(unsafe { fmi2SerializeFMUstate(c, s, buf.as_mut_ptr() as *mut Fmi2Byte, n) }, OK);
+    buf
+}
+
+fn deserialize(c: Fmi2Component, bytes: &[u8]) -> Result<Fmi2FmuState, i32> {
+    let mut s: Fmi2FmuState = null_mut();
+    let st = unsafe { fmi2DeSerializeFMUstate(c, bytes.as_ptr() as *const Fmi2Byte, bytes.len(), &mut s) };
+    if st == OK { Ok(s) } else { Err(st) }
+}
+
+#[test]
+fn get_set_round_trip_is_bit_exact_after_reversals() {
+    let h = Host::new();
+    let c = h.ready(&[("zero_velocity.speed_band", 0.05)]);
+    drive(c, 0, 300); // passes two reversals
+    let mut s: Fmi2FmuState = null_mut();
+    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    let first = drive(c, 300, 500);
+    assert_eq!(unsafe { fmi2SetFMUstate(c, s) }, OK);
+    assert_eq!(get(c, "zero_velocity.speed_band"), 0.05);
+    let again = drive(c, 300, 500);
+    assert_eq!(first, again);
+    // Reuse of the same state object (the standard allows passing it back).
+    let s_before = s;
+    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    assert_eq!(s, s_before);
+    assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
+    assert!(s.is_null());
+    assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK, "freeing NULL is a no-op");
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn serialize_round_trip_across_instances_is_bit_exact() {
+    let h = Host::new();
+    let a = h.ready(&[("friction.boundary_friction_coefficient", 0.1)]);
+    drive(a, 0, 250);
+    let mut s: Fmi2FmuState = null_mut();
+    assert_eq!(unsafe { fmi2GetFMUstate(a, &mut s) }, OK);
+    let bytes = serialize(a, s);
+    assert!(bytes.len() < 400, "small: {} bytes", bytes.len());
+    assert_eq!(&bytes[..8], b"FMI2STAT");
+    let expect = drive(a, 250, 400);
+
+    // A second instance, never initialized with these parameters, continues identically.
+    let b = h.ready(&[]);
+    let s2 = deserialize(b, &bytes).unwrap();
+    assert_eq!(unsafe { fmi2SetFMUstate(b, s2) }, OK);
+    assert_eq!(get(b, "friction.boundary_friction_coefficient"), 0.1);
+    assert_eq!(drive(b, 250, 400), expect);
+    // The re-serialized state is byte-identical.
+    assert_eq!(serialize(b, s2), bytes);
+    let mut s2 = s2;
+    assert_eq!(unsafe { fmi2FreeFMUstate(b, &mut s2) }, OK);
+    assert_eq!(unsafe { fmi2FreeFMUstate(a, &mut s) }, OK);
+    unsafe { fmi2FreeInstance(a) };
+    unsafe { fmi2FreeInstance(b) };
+}
+
+#[test]
+fn truncated_corrupted_and_wrong_version_states_are_rejected() {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    drive(c, 0, 100);
+    let mut s: Fmi2FmuState = null_mut();
+    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    let bytes = serialize(c, s);
+    let before = all_outputs(c);
+
+    for n in 0..bytes.len() {
+        assert_eq!(deserialize(c, &bytes[..n]), Err(ERROR), "truncated to {n}");
+    }
+    assert!(h.last().contains("truncated") || h.last().contains("header says"), "{}", h.last());
+    for i in 0..bytes.len() {
+        for bit in 0..8 {
+            let mut b = bytes.clone();
+            b[i] ^= 1 << bit;
+            assert_eq!(deserialize(c, &b), Err(ERROR), "bit {bit} of byte {i}");
+        }
+    }
+    // Wrong container version with a valid checksum.
+    let fix_crc = |b: &mut Vec<u8>| {
+        let n = b.len();
+        let crc = crc32(&b[..n - 4]);
+        b[n - 4..].copy_from_slice(&crc.to_le_bytes());
+    };
+    let mut b = bytes.clone();
+    b[8] = 9;
+    fix_crc(&mut b);
+    assert_eq!(deserialize(c, &b), Err(ERROR));
+    assert!(h.last().contains("format version 9"), "{}", h.last());
+    // Wrong model-state version with a valid checksum: the model part starts after
+    // magic(8) version(2) length(4) guid(1+38) state(1) times(16) length(4).
+    let model_at = 8 + 2 + 4 + 1 + guid().len() + 1 + 16 + 4;
+    let mut b = bytes.clone();
+    b[model_at] = 7;
+    fix_crc(&mut b);
+    assert_eq!(deserialize(c, &b), Err(ERROR));
+    assert!(h.last().contains("PinJoint state version 7"), "{}", h.last());
+    // A valid checksum over an impossible value (negative load).
+    let load_at = model_at + 1 + 2 + 8 * (21 + 1 + 2);
+    let mut b = bytes.clone();
+    b[load_at..load_at + 8].copy_from_slice(&(-1.0f64).to_bits().to_le_bytes());
+    fix_crc(&mut b);
+    assert_eq!(deserialize(c, &b), Err(ERROR));
+    assert!(h.last().contains("input load = -1 N"), "{}", h.last());
+    // Wrong serialize buffer size.
+    let mut buf = vec![0u8; bytes.len() + 1];
+    assert_eq!(unsafe { fmi2SerializeFMUstate(c, s, buf.as_mut_ptr() as *mut Fmi2Byte, buf.len()) }, ERROR);
+    // Nothing of this touched the instance.
+    assert_eq!(all_outputs(c), before);
+    assert_eq!(unsafe { fmi2SetFMUstate(c, null_mut()) }, ERROR);
+    assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
+    unsafe { fmi2FreeInstance(c) };
+}
+
+#[test]
+fn set_state_restores_the_life_cycle_state_and_recovers_from_error() {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    drive(c, 0, 10);
+    let mut s: Fmi2FmuState = null_mut();
+    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    // Provoke the error state with a step whose dissipated energy overflows.
+    assert_eq!(set(c, "load", 1e9), OK);
+    assert_eq!(set(c, "angular_velocity", 1e6), OK);
+    assert_eq!(fmi2DoStep(c, 0.1, 1e300, 0), ERROR);
+    assert_eq!(fmi2DoStep(c, 0.1, 0.01, 0), ERROR, "error state");
+    // The standard allows fmi2SetFMUstate in the error state: back to stepComplete.
+    assert_eq!(unsafe { fmi2SetFMUstate(c, s) }, OK);
+    assert_eq!(fmi2DoStep(c, 0.1, 0.01, 0), OK);
+    // A state taken before initialization takes the instance back there.
+    let h2 = Host::new();
+    let d = h2.instantiate();
+    let mut early: Fmi2FmuState = null_mut();
+    assert_eq!(unsafe { fmi2GetFMUstate(d, &mut early) }, OK);
+    assert_eq!(fmi2EnterInitializationMode(d), OK);
+    assert_eq!(fmi2ExitInitializationMode(d), OK);
+    assert_eq!(unsafe { fmi2SetFMUstate(d, early) }, OK);
+    assert_eq!(fmi2DoStep(d, 0.0, 0.1, 0), ERROR, "instantiated again");
+    assert_eq!(fmi2EnterInitializationMode(d), OK);
+    // A state of another instance's life works across instances of one model.
+    assert_eq!(unsafe { fmi2FreeFMUstate(d, &mut early) }, OK);
+    assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
+    unsafe { fmi2FreeInstance(c) };
+    unsafe { fmi2FreeInstance(d) };
+}

@@ -1,0 +1,125 @@
+"""Shared fixtures of the PinJoint FMU harness.
+
+The FMU is target/fmu/PinJoint.fmu (or $PINJOINT_FMU), built by
+`cargo run --release -p fmu_build`; the library reference is the example binary
+target/release/examples/reference_points (`cargo build --release --example
+reference_points`). tests/python/run.sh builds both.
+"""
+
+import os
+import subprocess
+from ctypes import byref
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+TARGET = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
+if not TARGET.is_absolute():
+    TARGET = ROOT / TARGET
+FMU = Path(os.environ.get("PINJOINT_FMU", TARGET / "fmu" / "PinJoint.fmu"))
+REFERENCE = TARGET / "release" / "examples" / "reference_points"
+
+OUTPUTS = [
+    "torque", "friction_coefficient", "film_thickness", "lambda_ratio",
+    "fluid_load_fraction", "asperity_load_fraction", "mean_pressure",
+    "sommerfeld_number", "power_loss", "dissipated_energy",
+]
+DEFAULT_BAND = 0.01  # rad/s, zero_velocity.speed_band
+
+
+@pytest.fixture(scope="session")
+def fmu_path():
+    assert FMU.is_file(), f"{FMU} is missing: run `cargo run --release -p fmu_build` (or tests/python/run.sh)"
+    return str(FMU)
+
+
+@pytest.fixture(scope="session")
+def unzipped(fmu_path, tmp_path_factory):
+    from fmpy import extract
+    return extract(fmu_path, str(tmp_path_factory.mktemp("fmu")))
+
+
+@pytest.fixture(scope="session")
+def model_description(fmu_path):
+    from fmpy import read_model_description
+    return read_model_description(fmu_path)
+
+
+def reference(load, omega, params=None):
+    """The library's values at each (load, omega) pair, from the Rust example binary.
+
+    `params` is a dict of `section.key` -> value written as a TOML parameter file."""
+    assert REFERENCE.is_file(), f"{REFERENCE} is missing: cargo build --release --example reference_points"
+    args = [str(REFERENCE)]
+    if params:
+        sections = {}
+        for name, value in params.items():
+            section, key = name.split(".")
+            sections.setdefault(section, []).append(f"{key} = {float(value)!r}")
+        toml = "".join(f"[{s}]\n" + "\n".join(lines) + "\n" for s, lines in sections.items())
+        path = Path(os.environ.get("TMPDIR", "/tmp")) / f"pinjoint-params-{os.getpid()}.toml"
+        path.write_text(toml)
+        args.append(str(path))
+    text = "".join(f"{float(p)!r},{float(w)!r}\n" for p, w in zip(load, omega))
+    out = subprocess.run(args, input=text, capture_output=True, text=True, check=True).stdout
+    return np.genfromtxt(out.splitlines(), delimiter=",", names=True)
+
+
+def expected_torque(load, omega, band=DEFAULT_BAND, params=None):
+    """The FMU's documented torque: the library's -sign(w) T outside |w| < band,
+    -T(P, band) * w / band inside, 0 at zero load."""
+    load = np.asarray(load, float)
+    omega = np.asarray(omega, float)
+    loaded = load > 0
+    torque = np.zeros_like(omega)
+    if loaded.any():
+        at = reference(load[loaded], omega[loaded], params)
+        edge = reference(load[loaded], np.full(loaded.sum(), band), params)
+        inside = np.abs(omega[loaded]) < band
+        t = np.where(inside, -edge["torque"] * (omega[loaded] / band) if band > 0 else 0.0, at["signed_torque"])
+        torque[loaded] = t
+    return torque
+
+
+def assert_close(actual, expected, rel=1e-12, what=""):
+    actual = np.asarray(actual, float)
+    expected = np.asarray(expected, float)
+    err = np.abs(actual - expected)
+    bad = err > rel * np.abs(expected)
+    assert not bad.any(), (
+        f"{what}: {bad.sum()} of {len(bad)} points differ by more than {rel} relative; "
+        f"first at index {np.argmax(bad)}: {actual[bad][0]!r} vs {expected[bad][0]!r}"
+    )
+
+
+class LogCapture:
+    """An fmi2 logger that records (status, category, message); fmpy's native proxy
+    formats the variadic message before it reaches Python."""
+
+    def __init__(self):
+        self.messages = []
+
+    def __call__(self, env, name, status, category, message):
+        self.messages.append((status, category.decode(), message.decode()))
+
+    def callbacks(self):
+        from fmpy.fmi2 import fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, fmi2CallbackAllocateMemoryTYPE, \
+            fmi2CallbackFreeMemoryTYPE, fmi2StepFinishedTYPE
+        from fmpy.fmi1 import calloc, free
+        from fmpy.logging import addLoggerProxy
+        cb = fmi2CallbackFunctions()
+        cb.logger = fmi2CallbackLoggerTYPE(self)
+        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        cb.stepFinished = fmi2StepFinishedTYPE()
+        addLoggerProxy(byref(cb))
+        self._keep = cb  # the FMU keeps the pointer
+        return cb
+
+    def last(self):
+        return self.messages[-1][2] if self.messages else ""
+
+    def text(self):
+        return "\n".join(m[2] for m in self.messages)

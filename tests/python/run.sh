@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The FMU harness: builds target/fmu/PinJoint.fmu and the library reference binary,
+# installs requirements-test.txt into .venv (once), runs pytest on tests/python and
+# the Rust `fmi` crate importer against the packaged FMU.
+#
+# Needs: cargo, python3 with venv (Debian: python3-venv), and for the fmi crate's
+# bindgen step Debian's libclang-dev. Set PINJOINT_SKIP_APT=1 to skip the apt step.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+cd "$ROOT"
+
+if [[ -z "${PINJOINT_SKIP_APT:-}" ]] && ! ls /usr/lib/llvm-*/lib/libclang*.so* >/dev/null 2>&1; then
+    if command -v apt-get >/dev/null && [[ "$(id -u)" == 0 ]]; then
+        apt-get update -qq && apt-get install -y -qq libclang-dev python3-venv >/dev/null
+    else
+        echo "run.sh: libclang-dev is missing (needed by the fmi crate's bindgen)" >&2
+    fi
+fi
+
+cargo run --release -q -p fmu_build
+cargo build --release -q --example reference_points
+
+VENV="${PINJOINT_VENV:-$ROOT/.venv}"
+if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest" 2>/dev/null; then
+    python3 -m venv "$VENV"
+    "$VENV/bin/pip" install -q -r requirements-test.txt
+fi
+
+export PINJOINT_FMU="$ROOT/target/fmu/PinJoint.fmu"
+"$VENV/bin/python" -m pytest -q tests/python "$@"
+cargo test --release -q --test fmi_crate_importer

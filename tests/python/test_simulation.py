@@ -1,0 +1,84 @@
+"""fmpy.simulate_fmu against the library: every output at every output point."""
+
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+
+from conftest import OUTPUTS, DEFAULT_BAND, assert_close, expected_torque, reference
+
+DT = 0.005
+
+
+def input_signal(stop=4.0):
+    """Sine angular velocity through reversals whose amplitude sweeps the boundary and
+    the mixed regimes (0.3 -> 80 rad/s), a load step 5 -> 60 kN at t = 2 s (a ramp
+    over one output interval, so that fmpy takes no extra input-event steps)."""
+    t = np.arange(0.0, stop + DT / 2, DT / 5)
+    amplitude = 0.3 + 80.0 * (t / stop) ** 3
+    omega = amplitude * np.sin(2 * np.pi * 1.0 * t)
+    load = np.interp(t, [0.0, 2.0, 2.0 + DT, stop], [5e3, 5e3, 60e3, 60e3])
+    signal = np.zeros(len(t), dtype=[("time", float), ("angular_velocity", float), ("load", float), ("angle", float)])
+    signal["time"], signal["angular_velocity"], signal["load"] = t, omega, load
+    signal["angle"] = np.cumsum(omega) * DT / 5
+    return signal
+
+
+def simulate(fmu_path, **kw):
+    return simulate_fmu(fmu_path, stop_time=4.0, output_interval=DT, input=input_signal(),
+                        output=["angular_velocity", "load", "angle"] + OUTPUTS, **kw)
+
+
+def check_against_library(r, params=None, band=DEFAULT_BAND):
+    load, omega = r["load"], r["angular_velocity"]
+    ref = reference(load, omega, params)
+    torque = expected_torque(load, omega, band, params)
+    assert_close(r["torque"], torque, what="torque")
+    for name in ("friction_coefficient", "film_thickness", "lambda_ratio", "fluid_load_fraction",
+                 "asperity_load_fraction", "mean_pressure", "sommerfeld_number"):
+        assert_close(r[name], ref[name], what=name)
+    assert_close(r["power_loss"], np.abs(torque * omega), what="power_loss")
+    # Each recorded row holds the inputs of the step that ended there, so the energy
+    # is the running sum of the recorded power times the step.
+    h = np.diff(r["time"])
+    energy = np.concatenate([[0.0], np.cumsum(r["power_loss"][1:] * h)])
+    assert_close(r["dissipated_energy"], energy, rel=1e-12, what="dissipated_energy")
+    return ref
+
+
+def test_outputs_equal_the_library_at_every_output_point(fmu_path):
+    r = simulate(fmu_path)
+    assert len(r) == 801
+    omega = r["angular_velocity"]
+    ref = check_against_library(r)
+    # The signal does what it claims: reversals, points inside the band, both loads,
+    # boundary and mixed lubrication.
+    assert np.sum(np.diff(np.sign(omega[omega != 0])) != 0) >= 7
+    assert np.sum((np.abs(omega) < DEFAULT_BAND) & (omega != 0)) >= 2
+    assert set(np.unique(r["load"])) >= {5e3, 60e3}
+    assert ref["fluid_load_fraction"].max() > 0.3 and ref["fluid_load_fraction"].min() < 0.01
+    # Outside the band the torque is exactly the library's signed torque.
+    out = np.abs(omega) >= DEFAULT_BAND
+    assert np.array_equal(r["torque"][out], ref["signed_torque"][out])
+    assert np.all(r["torque"][omega > 0] < 0) and np.all(r["torque"][omega < 0] > 0)
+
+
+def test_start_values_change_parameters(fmu_path):
+    params = {"friction.boundary_friction_coefficient": 0.08, "geometry.bush_length": 0.05,
+              "lubricant.viscosity": 0.03}
+    band = 0.05
+    r = simulate(fmu_path, start_values={**params, "zero_velocity.speed_band": band})
+    check_against_library(r, params, band)
+    default = simulate(fmu_path)
+    assert not np.allclose(r["torque"], default["torque"])
+    # The boundary torque follows mu_c: at low speed mu -> 0.08.
+    slow = (np.abs(r["angular_velocity"]) > band) & (np.abs(r["angular_velocity"]) < 0.2)
+    assert slow.any() and np.all(np.abs(r["friction_coefficient"][slow] - 0.08) < 0.005)
+
+
+def test_invalid_parameter_fails_initialization_with_its_name(fmu_path):
+    messages = []
+    with pytest.raises(Exception) as e:
+        simulate_fmu(fmu_path, stop_time=0.1, start_values={"geometry.bush_radius": 0.027},
+                     logger=lambda env, name, status, cat, msg: messages.append(msg.decode()))
+    assert "fmi2ExitInitializationMode" in str(e.value)
+    assert any("geometry.bush_radius = 0.027 m must exceed geometry.pin_radius = 0.028 m" in m for m in messages), messages

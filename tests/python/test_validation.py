@@ -1,0 +1,47 @@
+"""The packaged FMU: validation by fmpy, contents, units and documentation."""
+
+import zipfile
+
+from fmpy.validation import validate_fmu
+
+from conftest import OUTPUTS
+
+
+def test_validate_fmu_reports_no_problem(fmu_path):
+    assert validate_fmu(fmu_path) == []
+
+
+def test_archive_layout(fmu_path):
+    names = set(zipfile.ZipFile(fmu_path).namelist())
+    assert {"modelDescription.xml", "binaries/linux64/PinJoint.so", "documentation/index.html"} <= names
+
+
+def test_interface(model_description):
+    md = model_description
+    assert md.fmiVersion == "2.0" and md.coSimulation.modelIdentifier == "PinJoint"
+    assert md.variableNamingConvention == "structured"
+    cs = md.coSimulation
+    assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
+    v = {x.name: x for x in md.modelVariables}
+    assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load"]
+    assert [n for n in v if v[n].causality == "output"] == OUTPUTS
+    params = [n for n in v if v[n].causality == "parameter"]
+    assert len(params) == 22 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    assert float(v["geometry.pin_radius"].start) == 0.028
+    assert float(v["friction.boundary_friction_coefficient"].start) == 0.12
+    assert v["torque"].unit == "N.m" and v["load"].unit == "N" and v["angular_velocity"].unit == "rad/s"
+    assert all(x.description for x in md.modelVariables)
+    display = {d.name for u in md.unitDefinitions for d in u.displayUnits}
+    assert {"deg", "rpm", "kN", "MPa", "µm"} <= display
+    outputs = {u.variable.name: sorted(d.name for d in u.dependencies) for u in md.outputs}
+    assert outputs["torque"] == ["angular_velocity", "load"]
+    assert outputs["mean_pressure"] == ["load"]
+    assert outputs["dissipated_energy"] == []
+
+
+def test_documentation_lists_every_variable(fmu_path, model_description):
+    html = zipfile.ZipFile(fmu_path).read("documentation/index.html").decode()
+    for v in model_description.modelVariables:
+        assert f"<code>{v.name}</code>" in html, v.name
+    for text in ("Zero velocity", "Validity", "eq. 11", "201.6"):
+        assert text in html, text
