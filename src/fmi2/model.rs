@@ -25,6 +25,27 @@ pub trait Model {
     /// Store a value that passed [`Model::check_real`].
     fn set_real(&mut self, index: usize, value: f64);
 
+    /// The value of Integer variable `index` (models without Integer variables keep the default).
+    fn get_integer(&self, index: usize) -> i32 {
+        unreachable!("variable {index} is not an Integer variable of this model")
+    }
+
+    /// Check an Integer value before it is stored (as [`Model::check_real`]).
+    fn check_integer(&self, index: usize, _value: i32) -> ModelResult<()> {
+        Err(format!("variable {index} is not an Integer variable of this model"))
+    }
+
+    /// Store an Integer value that passed [`Model::check_integer`].
+    fn set_integer(&mut self, index: usize, _value: i32) {
+        unreachable!("variable {index} is not an Integer variable of this model")
+    }
+
+    /// A message for the host's log (category logEvents), taken once; the layer asks after
+    /// [`Model::exit_initialization`] and [`Model::compute_outputs`].
+    fn take_message(&mut self) -> Option<String> {
+        None
+    }
+
     /// Validate the parameters at `fmi2ExitInitializationMode`.
     fn exit_initialization(&mut self) -> ModelResult<()>;
 

@@ -53,8 +53,26 @@ impl Initial {
     }
 }
 
-/// One Real scalar variable. (Both models of this crate only have Real variables;
-/// the Integer/Boolean/String getters and setters reject every value reference.)
+/// The FMI type of a variable: Real, or Integer (a code such as a fidelity level; its
+/// start/min/max are stored as whole f64 values). Boolean and String variables do not exist
+/// in this crate's models: their getters and setters reject every value reference.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Kind {
+    #[default]
+    Real,
+    Integer,
+}
+
+impl Kind {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Kind::Real => "Real",
+            Kind::Integer => "Integer",
+        }
+    }
+}
+
+/// One scalar variable.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Variable {
     /// Structured name, e.g. `geometry.pin_radius`.
@@ -73,6 +91,8 @@ pub struct Variable {
     pub description: String,
     /// Outputs: the names of the inputs the output depends on directly (ModelStructure).
     pub depends_on: Vec<&'static str>,
+    /// Real or Integer.
+    pub kind: Kind,
 }
 
 impl Variable {

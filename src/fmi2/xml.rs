@@ -10,7 +10,7 @@
 //! initialization every output may depend on every parameter.
 
 use super::logging::Category;
-use super::variables::{Causality, ModelInfo, Variable, CAPABILITIES};
+use super::variables::{Causality, Kind, ModelInfo, Variable, CAPABILITIES};
 use std::fmt::Write;
 
 /// Escape text for an XML attribute value.
@@ -35,6 +35,9 @@ pub fn num(v: f64) -> String {
 }
 
 fn real_element(v: &Variable) -> String {
+    if v.kind == Kind::Integer {
+        return integer_element(v);
+    }
     let mut a = String::new();
     if let Some(u) = v.unit {
         write!(a, " unit=\"{}\"", escape(u)).unwrap();
@@ -52,6 +55,16 @@ fn real_element(v: &Variable) -> String {
         write!(a, " start=\"{}\"", num(s)).unwrap();
     }
     format!("<Real{a}/>")
+}
+
+fn integer_element(v: &Variable) -> String {
+    let mut a = String::new();
+    for (k, x) in [("min", v.min), ("max", v.max), ("start", v.start)] {
+        if let Some(x) = x {
+            write!(a, " {k}=\"{}\"", x as i64).unwrap();
+        }
+    }
+    format!("<Integer{a}/>")
 }
 
 /// The complete modelDescription.xml of `info`.

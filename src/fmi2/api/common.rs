@@ -285,7 +285,38 @@ macro_rules! no_such_type {
     };
 }
 
-no_such_type!(fmi2GetInteger, fmi2SetInteger, Fmi2Integer, "Integer");
+/// # Safety
+/// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2GetInteger(
+    c: Fmi2Component,
+    vr: *const Fmi2ValueReference,
+    nvr: usize,
+    value: *mut Fmi2Integer,
+) -> Fmi2StatusC {
+    call(c, "fmi2GetInteger", state::GET_VALUE, |inst| {
+        // SAFETY: per the contract.
+        let (vrs, vals) = unsafe { (slice(vr, nvr, "vr[]")?, slice_mut(value, nvr, "value[]")?) };
+        inst.get_integer(vrs, vals)
+    })
+}
+
+/// # Safety
+/// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2SetInteger(
+    c: Fmi2Component,
+    vr: *const Fmi2ValueReference,
+    nvr: usize,
+    value: *const Fmi2Integer,
+) -> Fmi2StatusC {
+    call(c, "fmi2SetInteger", state::SET_VALUE, |inst| {
+        // SAFETY: per the contract.
+        let (vrs, vals) = unsafe { (slice(vr, nvr, "vr[]")?, slice(value, nvr, "value[]")?) };
+        inst.set_integer(vrs, vals)
+    })
+}
+
 no_such_type!(fmi2GetBoolean, fmi2SetBoolean, Fmi2Boolean, "Boolean");
 no_such_type!(fmi2GetString, fmi2SetString, Fmi2String, "String");
 

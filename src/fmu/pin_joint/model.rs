@@ -1,8 +1,12 @@
 //! The PinJoint co-simulation model: library outputs at the held inputs, the
 //! zero-velocity treatment of the torque, and the dissipated energy.
 
-use super::variables::{self as var, Output, ANGLE, ANGULAR_VELOCITY, FIRST_OUTPUT, FIRST_PARAM, LOAD, SPEED_BAND};
-use super::zero_speed::{check_band, friction_torque, DEFAULT_SPEED_BAND};
+use super::variables::{
+    self as var, fidelity_of_code, Output, ANGLE, ANGULAR_VELOCITY, ENVELOPE_LOAD_MIN, ENVELOPE_SPEED_MAX, FIDELITY, FIRST_OUTPUT,
+    FIRST_PARAM, LOAD, SPEED_BAND, TOLERANCE,
+};
+use super::zero_speed::{check_band, DEFAULT_SPEED_BAND};
+use crate::fidelity::{Envelope, Evaluator};
 use crate::fmi2::bytes::{ByteReader, ByteWriter};
 use crate::fmi2::logging::show;
 use crate::fmi2::model::{Model, ModelResult};
@@ -10,9 +14,10 @@ use crate::params::PARAMS;
 use crate::{Joint, Params};
 
 /// Version of [`PinJointModel::serialize`]'s layout.
-const STATE_VERSION: u8 = 1;
-/// f64 values in the serialized state: parameters, band, three inputs, energy.
-const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1;
+const STATE_VERSION: u8 = 2;
+/// f64 values in the serialized state: parameters, band, three inputs, energy, fidelity code,
+/// tolerance, envelope, warm start of the full solve (NaN: cold).
+const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1 + 2 + 4 + 1;
 
 /// Every output but the energy, from one evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -45,15 +50,25 @@ impl Outputs {
     }
 }
 
-/// The outputs at (`load`, `omega`) with band ω_b = `band`. At zero load the joint
-/// is unloaded and every output is 0. An error names the inputs when the library
-/// rejects them or returns a non-finite value.
-pub fn outputs(joint: &Joint, load: f64, omega: f64, band: f64) -> ModelResult<Outputs> {
+/// The outputs at (`load`, `omega`) with band ω_b = `band`, from `ev` at its fidelity. At
+/// zero load the joint is unloaded and every output is 0. Inside the band the torque is the
+/// band-edge torque ramped linearly ([`super::zero_speed`]). An error names the inputs when
+/// the library rejects them or returns a non-finite value. Also returns whether this call
+/// was the first to fall outside the envelope.
+pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelResult<(Outputs, bool)> {
     if load == 0.0 {
-        return Ok(Outputs::default());
+        return Ok((Outputs::default(), false));
     }
-    let op = joint.evaluate(load, omega).map_err(|e| e.to_string())?;
-    let torque = friction_torque(joint, load, omega, band, &op).map_err(|e| e.to_string())?;
+    let e = ev.evaluate(load, omega).map_err(|e| e.to_string())?;
+    let mut first = e.first_fallback;
+    let torque = if omega.abs() >= band {
+        e.signed_torque()
+    } else {
+        let edge = ev.evaluate(load, band).map_err(|e| e.to_string())?;
+        first |= edge.first_fallback;
+        -edge.torque * (omega / band)
+    };
+    let op = ev.operating_point(&e);
     let out = Outputs {
         torque,
         friction_coefficient: op.friction_coefficient,
@@ -77,7 +92,50 @@ pub fn outputs(joint: &Joint, load: f64, omega: f64, band: f64) -> ModelResult<O
             ));
         }
     }
-    Ok(out)
+    Ok((out, first))
+}
+
+/// The fidelity settings of the FMU: the `fidelity` code, `tolerance` and the envelope.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FidelitySettings {
+    pub code: i32,
+    pub tolerance: f64,
+    /// load_min, load_max (N), speed_min, speed_max (rad/s).
+    pub envelope: [f64; 4],
+}
+
+impl Default for FidelitySettings {
+    fn default() -> Self {
+        Self { code: var::DEFAULT_FIDELITY, tolerance: var::DEFAULT_TOLERANCE, envelope: var::DEFAULT_ENVELOPE }
+    }
+}
+
+impl FidelitySettings {
+    /// Build the evaluator; errors name the parameter, its value and unit.
+    pub fn build(&self, params: &Params) -> ModelResult<Evaluator> {
+        let level = fidelity_of_code(self.code).ok_or_else(|| {
+            format!("parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)", self.code)
+        })?;
+        let [a, b, c, d] = self.envelope;
+        let env = Envelope::new(a, b, c, d).map_err(|e| format!("parameter {e}"))?;
+        Evaluator::new(params, level, self.tolerance, env).map_err(|e| format!("parameter {e}"))
+    }
+}
+
+/// What the log says about a built evaluator: the level (what auto picked) and its bound.
+fn describe(ev: &Evaluator) -> String {
+    let e = ev.envelope();
+    format!(
+        "fidelity {} -> {}: measured error bound {:e} (tolerance {:e}) over load {}..{} N, |omega| {}..{} rad/s",
+        ev.requested(),
+        ev.chosen(),
+        ev.error_bound(),
+        ev.tolerance(),
+        e.load_min,
+        e.load_max,
+        e.speed_min,
+        e.speed_max
+    )
 }
 
 #[derive(Debug, Clone)]
@@ -89,8 +147,14 @@ pub struct PinJointModel {
     load: f64,
     energy: f64,
     out: Outputs,
-    /// Built from `params` on first use; dropped when a parameter changes.
-    joint: Option<Joint>,
+    fidelity: FidelitySettings,
+    /// Built from `params` and `fidelity` on first use (at exit of initialization); dropped
+    /// when a parameter changes.
+    evaluator: Option<Evaluator>,
+    /// For the host's log (fidelity chosen; first fallback).
+    message: Option<String>,
+    /// Warm start to give the evaluator when it is next built (from a restored state).
+    pending_warm: Option<f64>,
 }
 
 impl PinJointModel {
@@ -103,18 +167,30 @@ impl PinJointModel {
             load: var::DEFAULT_LOAD,
             energy: 0.0,
             out: Outputs::default(),
-            joint: None,
+            fidelity: FidelitySettings::default(),
+            evaluator: None,
+            message: None,
+            pending_warm: None,
         };
         m.set_start_values();
         m
     }
 
-    fn joint(&mut self) -> ModelResult<&Joint> {
+    fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
         check_band(self.band)?;
-        if self.joint.is_none() {
-            self.joint = Some(Joint::new(&self.params).map_err(|e| e.to_string())?);
+        if self.evaluator.is_none() {
+            Joint::new(&self.params).map_err(|e| e.to_string())?;
+            let mut ev = self.fidelity.build(&self.params)?;
+            ev.set_warm_start(self.pending_warm.take());
+            self.message = Some(describe(&ev));
+            self.evaluator = Some(ev);
         }
-        Ok(self.joint.as_ref().expect("just built"))
+        Ok(self.evaluator.as_mut().expect("just built"))
+    }
+
+    /// The evaluator in use (after initialization).
+    pub fn current_evaluator(&self) -> Option<&Evaluator> {
+        self.evaluator.as_ref()
     }
 }
 
@@ -133,7 +209,10 @@ impl Model for PinJointModel {
         self.load = var::DEFAULT_LOAD;
         self.energy = 0.0;
         self.out = Outputs::default();
-        self.joint = None;
+        self.fidelity = FidelitySettings::default();
+        self.evaluator = None;
+        self.message = None;
+        self.pending_warm = None;
     }
 
     fn get_real(&self, i: usize) -> f64 {
@@ -142,6 +221,8 @@ impl Model for PinJointModel {
             ANGULAR_VELOCITY => self.omega,
             LOAD => self.load,
             SPEED_BAND => self.band,
+            TOLERANCE => self.fidelity.tolerance,
+            i if (ENVELOPE_LOAD_MIN..=ENVELOPE_SPEED_MAX).contains(&i) => self.fidelity.envelope[i - ENVELOPE_LOAD_MIN],
             i if i >= FIRST_PARAM => (PARAMS[i - FIRST_PARAM].get)(&self.params),
             i => match Output::ALL[i - FIRST_OUTPUT] {
                 Output::DissipatedEnergy => self.energy,
@@ -168,21 +249,69 @@ impl Model for PinJointModel {
             ANGULAR_VELOCITY => self.omega = v,
             LOAD => self.load = v,
             SPEED_BAND => self.band = v,
+            TOLERANCE => {
+                self.fidelity.tolerance = v;
+                self.evaluator = None;
+            }
+            i if (ENVELOPE_LOAD_MIN..=ENVELOPE_SPEED_MAX).contains(&i) => {
+                self.fidelity.envelope[i - ENVELOPE_LOAD_MIN] = v;
+                self.evaluator = None;
+            }
             i if i >= FIRST_PARAM => {
                 (PARAMS[i - FIRST_PARAM].set)(&mut self.params, v);
-                self.joint = None;
+                self.evaluator = None;
             }
             _ => unreachable!("the FMI layer never sets outputs"),
         }
     }
 
+    fn get_integer(&self, i: usize) -> i32 {
+        debug_assert_eq!(i, FIDELITY);
+        self.fidelity.code
+    }
+
+    fn check_integer(&self, i: usize, v: i32) -> ModelResult<()> {
+        match i {
+            FIDELITY if fidelity_of_code(v).is_none() => Err(format!(
+                "parameter fidelity = {v} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)"
+            )),
+            FIDELITY => Ok(()),
+            _ => Err(format!("variable {i} is not an Integer variable")),
+        }
+    }
+
+    fn set_integer(&mut self, i: usize, v: i32) {
+        debug_assert_eq!(i, FIDELITY);
+        self.fidelity.code = v;
+        self.evaluator = None;
+    }
+
+    fn take_message(&mut self) -> Option<String> {
+        self.message.take()
+    }
+
     fn exit_initialization(&mut self) -> ModelResult<()> {
-        self.joint().map(|_| ())
+        self.evaluator().map(|_| ())
     }
 
     fn compute_outputs(&mut self) -> ModelResult<()> {
         let (load, omega, band) = (self.load, self.omega, self.band);
-        let out = outputs(self.joint()?, load, omega, band)?;
+        let (out, first_fallback) = outputs(self.evaluator()?, load, omega, band)?;
+        if first_fallback {
+            let ev = self.evaluator.as_ref().expect("built above");
+            let e = ev.envelope();
+            self.message = Some(format!(
+                "fidelity {}: load = {} N, angular_velocity = {} rad/s is outside the envelope (load {}..{} N, |omega| {}..{} rad/s); \
+                 the full solve answers there (said once)",
+                ev.chosen(),
+                show(load),
+                show(omega),
+                e.load_min,
+                e.load_max,
+                e.speed_min,
+                e.speed_max
+            ));
+        }
         self.out = out;
         Ok(())
     }
@@ -203,7 +332,12 @@ impl Model for PinJointModel {
         for s in PARAMS.iter() {
             w.f64((s.get)(&self.params));
         }
-        for v in [self.band, self.angle, self.omega, self.load, self.energy] {
+        let f = &self.fidelity;
+        let warm = self.evaluator.as_ref().map_or(self.pending_warm, |e| e.warm_start()).unwrap_or(f64::NAN);
+        for v in [self.band, self.angle, self.omega, self.load, self.energy, f.code as f64, f.tolerance] {
+            w.f64(v);
+        }
+        for v in f.envelope.into_iter().chain([warm]) {
             w.f64(v);
         }
         out.extend_from_slice(&w.buf);
@@ -225,6 +359,17 @@ impl Model for PinJointModel {
         }
         let band = r.f64("zero_velocity.speed_band")?;
         let (angle, omega, load, energy) = (r.f64("angle")?, r.f64("angular_velocity")?, r.f64("load")?, r.f64("dissipated_energy")?);
+        let code = r.f64("fidelity")?;
+        let tolerance = r.f64("tolerance")?;
+        let mut envelope = [0.0; 4];
+        for (k, name) in ["envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"].iter().enumerate() {
+            envelope[k] = r.f64(name)?;
+        }
+        if code.fract() != 0.0 || fidelity_of_code(code as i32).is_none() {
+            return Err(format!("fidelity = {code} in the state is not a fidelity code (0..3)"));
+        }
+        let fidelity = FidelitySettings { code: code as i32, tolerance, envelope };
+        let warm = Some(r.f64("warm start")?).filter(|w| w.is_finite());
         r.finish()?;
         for (i, v) in [(ANGLE, angle), (ANGULAR_VELOCITY, omega), (LOAD, load)] {
             self.check_real(i, v)?;
@@ -232,7 +377,24 @@ impl Model for PinJointModel {
         if !(energy.is_finite() && energy >= 0.0) {
             return Err(format!("dissipated_energy = {energy} J is not a finite number >= 0"));
         }
-        *self = PinJointModel { params, band, angle, omega, load, energy, out: Outputs::default(), joint: None };
+        // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
+        let mut evaluator = if params == self.params && fidelity == self.fidelity && band == self.band { self.evaluator.take() } else { None };
+        if let Some(ev) = evaluator.as_mut() {
+            ev.set_warm_start(warm);
+        }
+        *self = PinJointModel {
+            params,
+            band,
+            angle,
+            omega,
+            load,
+            energy,
+            out: Outputs::default(),
+            fidelity,
+            evaluator,
+            message: None,
+            pending_warm: warm,
+        };
         Ok(())
     }
 }
