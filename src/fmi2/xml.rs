@@ -88,23 +88,26 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
     }
     writeln!(w, "/>").unwrap();
 
-    writeln!(w, "  <UnitDefinitions>").unwrap();
-    for u in info.units {
-        writeln!(w, r#"    <Unit name="{}">"#, escape(u.name)).unwrap();
-        let mut b = String::new();
-        for (k, e) in [("kg", u.kg), ("m", u.m), ("s", u.s), ("rad", u.rad)] {
-            if e != 0 {
-                write!(b, r#" {k}="{e}""#).unwrap();
+    // The schema requires at least one <Unit> inside <UnitDefinitions>.
+    if !info.units.is_empty() {
+        writeln!(w, "  <UnitDefinitions>").unwrap();
+        for u in info.units {
+            writeln!(w, r#"    <Unit name="{}">"#, escape(u.name)).unwrap();
+            let mut b = String::new();
+            for (k, e) in [("kg", u.kg), ("m", u.m), ("s", u.s), ("rad", u.rad)] {
+                if e != 0 {
+                    write!(b, r#" {k}="{e}""#).unwrap();
+                }
             }
+            writeln!(w, "      <BaseUnit{b}/>").unwrap();
+            for d in u.display {
+                let off = if d.offset != 0.0 { format!(r#" offset="{}""#, num(d.offset)) } else { String::new() };
+                writeln!(w, r#"      <DisplayUnit name="{}" factor="{}"{off}/>"#, escape(d.name), num(d.factor)).unwrap();
+            }
+            writeln!(w, "    </Unit>").unwrap();
         }
-        writeln!(w, "      <BaseUnit{b}/>").unwrap();
-        for d in u.display {
-            let off = if d.offset != 0.0 { format!(r#" offset="{}""#, num(d.offset)) } else { String::new() };
-            writeln!(w, r#"      <DisplayUnit name="{}" factor="{}"{off}/>"#, escape(d.name), num(d.factor)).unwrap();
-        }
-        writeln!(w, "    </Unit>").unwrap();
+        writeln!(w, "  </UnitDefinitions>").unwrap();
     }
-    writeln!(w, "  </UnitDefinitions>").unwrap();
 
     writeln!(w, "  <LogCategories>").unwrap();
     for c in Category::ALL {
