@@ -125,3 +125,27 @@ fn bad_fidelity_flags_name_quantity_value_and_unit() {
         }
     }
 }
+
+/// The eq. 11 average printed by `cycle`.
+fn average(stdout: &str) -> f64 {
+    let line = stdout.lines().find(|l| l.starts_with("cycle-average friction coefficient")).expect("average printed");
+    line.rsplit(' ').next().unwrap().parse().unwrap()
+}
+
+#[test]
+fn cycle_with_the_table_level_agrees_with_full_and_reports_the_level() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("full"), dir.path().join("table"));
+    let base = ["cycle", "--cycles", "2", "--samples-per-cycle", "200", "--output"];
+    let (code, full_out, err) = run(&[&base[..], &[a.to_str().unwrap()]].concat());
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("fidelity:"), "{err}");
+    let (code, table_out, err) = run(&[&base[..], &[b.to_str().unwrap(), "--fidelity", "table", "--tolerance", "1e-5"]].concat());
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("fidelity: table -> table") && err.contains("over load 18000..22000 N"), "{err}");
+    let (f, t) = (average(&full_out), average(&table_out));
+    assert!(f != t && rel(t, f) < 1e-4, "{f} vs {t}");
+    let (code, _, err) = run(&[&base[..], &[b.to_str().unwrap(), "--fidelity", "table", "--envelope-load", "1:0.5"]].concat());
+    assert_eq!(code, 1);
+    assert!(err.contains("--envelope-load") && err.contains(" N"), "{err}");
+}

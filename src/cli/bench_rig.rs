@@ -90,7 +90,7 @@ pub fn cases(quick: bool) -> Vec<RigCase> {
         let extra = table.map_or(String::new(), |t| format!(", table {t:.0e}"));
         RigCase {
             family: family.into(),
-            label: format!("{family} {what}, {samples}/cycle{extra}"),
+            label: format!("{family}, {what}{extra}"),
             method,
             formulation,
             setting,
@@ -101,18 +101,22 @@ pub fn cases(quick: bool) -> Vec<RigCase> {
     use Formulation::{Hybrid, Regularised};
     use Method::{Dop853, Dopri5, Rk4};
     if quick {
-        return vec![c("Dopri5", Dopri5, Hybrid, 1e-6, 100, None), c("RK4", Rk4, Hybrid, 1e-3, 100, None), c("Dopri5 + table", Dopri5, Hybrid, 1e-6, 100, Some(1e-5))];
+        return vec![
+            c("Dopri5, 100 samples/cycle", Dopri5, Hybrid, 1e-6, 100, None),
+            c("RK4, 100 samples/cycle", Rk4, Hybrid, 1e-3, 100, None),
+            c("Dopri5 + table, 100 samples/cycle", Dopri5, Hybrid, 1e-6, 100, Some(1e-5)),
+        ];
     }
     let mut v = Vec::new();
     for tol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10] {
-        v.push(c("Dopri5", Dopri5, Hybrid, tol, 2000, None));
-        v.push(c("Dop853", Dop853, Hybrid, tol, 2000, None));
+        v.push(c("Dopri5, 2000 samples/cycle", Dopri5, Hybrid, tol, 2000, None));
+        v.push(c("Dop853, 2000 samples/cycle", Dop853, Hybrid, tol, 2000, None));
     }
     for h in [1e-3, 5e-4, 2e-4, 1e-4, 5e-5] {
-        v.push(c("RK4", Rk4, Hybrid, h, 2000, None));
+        v.push(c("RK4, 2000 samples/cycle", Rk4, Hybrid, h, 2000, None));
     }
     for tol in [1e-5, 1e-7] {
-        v.push(c("Dopri5 regularised", Dopri5, Regularised, tol, 2000, None));
+        v.push(c("Dopri5 regularised, 2000 samples/cycle", Dopri5, Regularised, tol, 2000, None));
     }
     for tol in [1e-5, 1e-6, 1e-7, 1e-8] {
         v.push(c("Dopri5, 100 samples/cycle", Dopri5, Hybrid, tol, 100, None));

@@ -56,9 +56,10 @@ def test_outputs_equal_the_library_at_every_output_point(fmu_path):
     assert np.sum((np.abs(omega) < DEFAULT_BAND) & (omega != 0)) >= 2
     assert set(np.unique(r["load"])) >= {5e3, 60e3}
     assert ref["fluid_load_fraction"].max() > 0.3 and ref["fluid_load_fraction"].min() < 0.01
-    # Outside the band the torque is exactly the library's signed torque.
+    # Outside the band the torque is the library's signed torque (the FMU's default fidelity,
+    # full, is the warm-started complete solve: equal to the cold one to rounding).
     out = np.abs(omega) >= DEFAULT_BAND
-    assert np.array_equal(r["torque"][out], ref["signed_torque"][out])
+    assert_close(r["torque"][out], ref["signed_torque"][out], rel=1e-12, what="torque outside the band")
     assert np.all(r["torque"][omega > 0] < 0) and np.all(r["torque"][omega < 0] > 0)
 
 
