@@ -17,7 +17,7 @@ fn json(stdout: &str) -> serde_json::Value {
 /// The measured bound printed on standard error.
 fn bound(stderr: &str) -> f64 {
     let s = stderr.split("measured error bound ").nth(1).expect("bound reported");
-    s.split(|c: char| c == ',' || c == ' ').next().unwrap().parse().unwrap()
+    s.split([',', ' ']).next().unwrap().parse().unwrap()
 }
 
 fn rel(a: f64, b: f64) -> f64 {

@@ -21,13 +21,13 @@ fn set_fidelity(c: Fmi2Component, code: i32) -> i32 {
 /// Instantiate with `fidelity` = `code` and real parameters `sets`, initialize with debug logging.
 fn ready(h: &Host, code: i32, sets: &[(&str, f64)]) -> Fmi2Component {
     let c = h.instantiate_with("joint", 1, &guid(), Some("file:///tmp"), true);
-    assert_eq!(unsafe { fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0) }, OK);
+    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
     assert_eq!(set_fidelity(c, code), OK, "{}", h.last());
     for (n, v) in sets {
         assert_eq!(set(c, n, *v), OK, "{n}: {}", h.last());
     }
-    assert_eq!(unsafe { fmi2EnterInitializationMode(c) }, OK);
-    assert_eq!(unsafe { fmi2ExitInitializationMode(c) }, OK, "{}", h.last());
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert_eq!(fmi2ExitInitializationMode(c), OK, "{}", h.last());
     c
 }
 
@@ -80,12 +80,10 @@ fn auto_logs_its_choice_and_a_fallback_is_logged_once() {
     let c = ready(&h, 3, &[("tolerance", 1e-4)]);
     let log: Vec<String> = h.messages().into_iter().map(|m| m.text).collect();
     assert!(log.iter().any(|m| m.contains("fidelity auto -> table") && m.contains("measured error bound")), "{log:?}");
-    let mut i = 0;
-    for w in [50.0, 60.0, 0.5, 70.0] {
+    for (i, w) in [50.0, 60.0, 0.5, 70.0].into_iter().enumerate() {
         assert_eq!(set(c, "angular_velocity", w), OK);
         let _ = get(c, "torque");
-        assert_eq!(unsafe { fmi2DoStep(c, 0.001 * i as f64, 0.001, 1) }, OK);
-        i += 1;
+        assert_eq!(fmi2DoStep(c, 0.001 * i as f64, 0.001, 1), OK);
     }
     let falls = h.messages().iter().filter(|m| m.text.contains("outside the envelope")).count();
     assert_eq!(falls, 1, "{:?}", h.messages());
@@ -100,8 +98,8 @@ fn fidelity_parameters_are_checked_and_readable() {
     let h = Host::new();
     let c = h.instantiate();
     let r = [vr("fidelity")];
-    assert_eq!(unsafe { fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0) }, OK);
-    assert_eq!(unsafe { fmi2EnterInitializationMode(c) }, OK);
+    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
     let mut v = [9];
     assert_eq!(unsafe { fmi2GetInteger(c, r.as_ptr(), 1, v.as_mut_ptr()) }, OK);
     assert_eq!(v[0], 0, "default: full");
@@ -115,15 +113,15 @@ fn fidelity_parameters_are_checked_and_readable() {
     assert_eq!(unsafe { fmi2GetInteger(c, r.as_ptr(), 1, v.as_mut_ptr()) }, OK);
     assert_eq!(v[0], 1);
     assert_eq!(set(c, "envelope.load_min", 70e3), OK);
-    assert_eq!(unsafe { fmi2ExitInitializationMode(c) }, ERROR);
+    assert_eq!(fmi2ExitInitializationMode(c), ERROR);
     assert!(h.last().contains("load") && h.last().contains("70000 N"), "{}", h.last());
     unsafe { fmi2FreeInstance(c) };
     let c = h.instantiate();
-    assert_eq!(unsafe { fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0) }, OK);
+    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
     assert_eq!(set_fidelity(c, 1), OK);
     assert_eq!(set(c, "tolerance", 0.0), OK);
-    assert_eq!(unsafe { fmi2EnterInitializationMode(c) }, OK);
-    assert_eq!(unsafe { fmi2ExitInitializationMode(c) }, ERROR);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert_eq!(fmi2ExitInitializationMode(c), ERROR);
     assert!(h.last().contains("tolerance = 0"), "{}", h.last());
     unsafe { fmi2FreeInstance(c) };
 }
