@@ -12,7 +12,9 @@ use rig_host::*;
 fn life_cycle_swings_the_pin_and_resets() {
     let h = Host::new();
     let c = instantiate(&h);
-    // Start values are readable before initialization.
+    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 1, 2.0), OK);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    // Start values are readable in initialization mode.
     assert_eq!(get(c, "frequency"), 1.0);
     assert_eq!(get(c, "amplitude"), 40f64.to_radians());
     assert_eq!(get(c, "load"), 20e3);
@@ -20,8 +22,6 @@ fn life_cycle_swings_the_pin_and_resets() {
     assert_eq!(get(c, "rig.method"), 0.0);
     assert_eq!(get(c, "rig.inertia"), 0.05);
     assert_eq!(get(c, "geometry.pin_radius"), 0.028);
-    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 1, 2.0), OK);
-    assert_eq!(fmi2EnterInitializationMode(c), OK);
     assert_eq!(fmi2ExitInitializationMode(c), OK, "{}", h.last());
     // At rest on the command at t = 0, stuck.
     assert_eq!(get(c, "angle"), 0.0);
@@ -36,7 +36,11 @@ fn life_cycle_swings_the_pin_and_resets() {
         t += 0.01;
         let (angle, speed, cmd) = (o[0], o[1], o[8]);
         max_lag = max_lag.max((angle - cmd).abs());
-        max_speed = max_speed.max(speed.abs());
+        if t > 0.5 {
+            // After the start-up transient (the stroke starts at rest while the command
+            // already moves at its peak rate).
+            max_speed = max_speed.max(speed.abs());
+        }
         slipped |= o[7] == 0.0;
         // Slipping, the friction torque opposes the motion.
         if o[7] == 0.0 && speed.abs() > 1e-6 {
@@ -47,7 +51,7 @@ fn life_cycle_swings_the_pin_and_resets() {
     assert!(slipped);
     let a = 40f64.to_radians();
     assert!(max_lag.to_degrees() < 3.0 && max_lag.to_degrees() > 0.2, "tracks within a few degrees: {}", max_lag.to_degrees());
-    assert!((max_speed / (std::f64::consts::TAU * a) - 1.0).abs() < 0.05, "peak speed {max_speed}");
+    assert!((max_speed / (std::f64::consts::TAU * a) - 1.0).abs() < 0.05, "peak speed {max_speed} vs 2 pi f A");
     // Energy balance W - D = kinetic energy (from rest).
     let (w, d, k) = (get(c, "actuator_work"), get(c, "friction_dissipation"), get(c, "kinetic_energy"));
     assert!(d > 100.0, "a 1 Hz cycle at 20 kN dissipates about 4 * 67 N.m * 0.7 rad: {d}");
@@ -57,10 +61,10 @@ fn life_cycle_swings_the_pin_and_resets() {
     assert!((last - 1.0).abs() < 1e-12);
     assert_eq!(fmi2Terminate(c), OK);
     assert_eq!(fmi2Reset(c), OK);
-    assert_eq!(get(c, "frequency"), 1.0);
-    // A fresh run after reset starts again at rest.
+    // A fresh run after reset starts again at rest, with the start values.
     assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
     assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert_eq!(get(c, "frequency"), 1.0);
     assert_eq!(fmi2ExitInitializationMode(c), OK);
     assert_eq!(get(c, "actuator_work"), 0.0);
     free(c);
