@@ -11,7 +11,7 @@ from rig_support import RIG_OUTPUTS, expected_outputs, max_relative_difference, 
 def load_step(stop, at=0.5):
     """Load 5 kN, then 60 kN from `at` (a step, both values at `at`: fmpy cuts the
     step there and sets the new value from `at` on)."""
-    signal = np.zeros(4, dtype=[("time", float), ("load", float)])
+    signal = np.zeros(4, dtype=[("time", float), ("load", float), ("command_angle", float)])
     signal["time"] = [0.0, at, at, stop]
     signal["load"] = [5e3, 5e3, 60e3, 60e3]
     return signal
@@ -91,6 +91,9 @@ def test_command_input_through_fmpy(rig_fmu_path):
 
 @pytest.mark.parametrize("interval,stop", [(1e-5, 0.05), (1.0, 3.0)])
 def test_extreme_host_steps(rig_fmu_path, interval, stop):
+    # No input signal: the load keeps its start value exactly. (fmpy's linear
+    # interpolation of a constant signal wobbles by an ulp, e.g. 19999.999999999996 N,
+    # and every new input value restarts the integration, a legitimate difference.)
     r = simulate(rig_fmu_path, interval, stop=stop, input=None)
     ref = simulate(rig_fmu_path, 0.01, stop=stop, input=None)
     idx = [int(np.argmin(np.abs(r["time"] - t))) for t in ref["time"]] if interval < 0.01 else None
@@ -113,6 +116,9 @@ def test_invalid_parameter_fails_initialization_with_its_name(rig_fmu_path):
 
 
 def test_zero_load(rig_fmu_path):
-    r = simulate(rig_fmu_path, 0.01, stop=0.5, start_values={"load": 0.0}, input=None)
-    assert np.all(r["friction_torque"] == 0) and np.all(r["film_thickness"] == 0) and not np.any(r["stuck"])
+    r = simulate(rig_fmu_path, 0.01, stop=0.5, input=None, start_values={"load": 0.0})
+    assert np.all(r["friction_torque"] == 0) and np.all(r["film_thickness"] == 0)
+    # At rest with no torque at t = 0 the joint counts as stuck; once moving it never sticks.
+    assert not np.any(r["stuck"][1:])
+    assert r["angle"].max() > 0.6
     check_library(r)
