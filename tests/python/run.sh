@@ -30,4 +30,4 @@ fi
 export PINJOINT_FMU="$ROOT/target/fmu/PinJoint.fmu"
 export PINJOINT_RIG_FMU="$ROOT/target/fmu/PinJointRig.fmu"
 "$VENV/bin/python" -m pytest -q tests/python "$@"
-cargo test --release -q --test fmi_crate_importer
+cargo test --release -q --test fmi_crate_importer --test fmi_crate_rig_importer
