@@ -113,7 +113,9 @@ re-integration step from the last node before it. So, with the same inputs, a ho
 get the same numbers at their shared points (the test suite compares 1 ms and 100 ms hosts through fmpy).</li>
 <li>Inputs are held over each step (zero-order hold, as FMI Co-Simulation defines them). A held <code>command_angle</code> has rate 0,
 so the derivative term acts on &minus;&omega; only. Setting an input to a <em>different</em> value restarts the integration at the
-current time; setting the same value changes nothing.</li>
+current time; setting the same value changes nothing. (A host that interpolates a constant signal may pass values
+that differ in the last bit, e.g. 19999.999999999996 N: each is a new value and restarts the integration, which
+changes the results at the level of the integration tolerance.)</li>
 <li>The rig's clock is t &minus; t<sub>start</sub>: the stroke starts at rest on the command at the start time.</li>
 <li>Direct feedthrough: <code>friction_torque</code>, <code>friction_coefficient</code>, <code>film_thickness</code>,
 <code>fluid_load_fraction</code> and <code>stuck</code> follow a new <code>load</code> at once; <code>commanded_angle</code> follows
