@@ -2,10 +2,11 @@
 //! [`crate::fmi2`] layer. `fmi2Instantiate` finds a model here by its GUID.
 
 pub mod pin_joint;
+pub mod pin_joint_rig;
 
 use crate::fmi2::variables::ModelInfo;
 
 /// Every model the shared library serves.
 pub fn registry() -> Vec<&'static ModelInfo> {
-    vec![&*pin_joint::INFO]
+    vec![&*pin_joint::INFO, &*pin_joint_rig::INFO]
 }

@@ -176,7 +176,7 @@ impl Model for PinJointModel {
         }
     }
 
-    fn exit_initialization(&mut self) -> ModelResult<()> {
+    fn exit_initialization(&mut self, _start_time: f64) -> ModelResult<()> {
         self.joint().map(|_| ())
     }
 

@@ -9,7 +9,7 @@
 //! | 34 | 200 | `zero_velocity.speed_band` |
 
 use super::zero_speed::DEFAULT_SPEED_BAND;
-use crate::fmi2::variables::{Causality, DisplayUnit, Initial, UnitDef, Variability, Variable};
+use crate::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
 use crate::params::{ParamSpec, PARAMS};
 
 pub const ANGLE: usize = 0;
@@ -95,6 +95,7 @@ pub static UNITS: &[UnitDef] = &[
 fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>, start: f64, min: Option<f64>, d: &str) -> Variable {
     Variable {
         name: name.into(),
+        kind: Kind::Real,
         value_reference: vr,
         causality: Causality::Input,
         variability: Variability::Continuous,
@@ -138,6 +139,7 @@ fn output(o: Output) -> Variable {
     };
     Variable {
         name: name.into(),
+        kind: Kind::Real,
         value_reference: 10 + o as u32,
         causality: Causality::Output,
         variability: Variability::Continuous,
@@ -153,7 +155,7 @@ fn output(o: Output) -> Variable {
 }
 
 /// Display unit a user expects for a parameter.
-fn param_display(s: &ParamSpec) -> Option<&'static str> {
+pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
     match (s.section, s.unit) {
         ("geometry", "m") => Some("mm"),
         (_, "m") => Some("µm"),
@@ -165,10 +167,11 @@ fn param_display(s: &ParamSpec) -> Option<&'static str> {
     }
 }
 
-fn parameter(i: usize, s: &ParamSpec) -> Variable {
+pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
     let (min, max) = s.range.bounds();
     Variable {
         name: s.name(),
+        kind: Kind::Real,
         value_reference: 100 + i as u32,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -197,6 +200,7 @@ pub fn table() -> Vec<Variable> {
     v.extend(PARAMS.iter().enumerate().map(|(i, s)| parameter(i, s)));
     v.push(Variable {
         name: "zero_velocity.speed_band".into(),
+        kind: Kind::Real,
         value_reference: 200,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
