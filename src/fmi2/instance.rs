@@ -107,41 +107,12 @@ impl Instance {
         Ok(i)
     }
 
-    /// `fmi2SetInteger`: all values are checked before any is stored.
-    pub fn set_integer(&mut self, vrs: &[u32], values: &[i32]) -> CallResult {
+    /// `fmi2SetReal`/`Integer`/`Boolean` (values as f64, Booleans as 0.0/1.0): all
+    /// values are checked before any is stored.
+    pub fn set_values(&mut self, kind: Kind, vrs: &[u32], values: &[f64]) -> CallResult {
         let mut idx = Vec::with_capacity(vrs.len());
         for (&vr, &value) in vrs.iter().zip(values) {
-            let i = self.lookup_kind(vr, Kind::Integer)?;
-            self.check_settable(i)?;
-            self.model.check_integer(i, value)?;
-            idx.push(i);
-        }
-        for (&i, &value) in idx.iter().zip(values) {
-            self.model.set_integer(i, value);
-        }
-        if !idx.is_empty() {
-            self.outputs_current = false;
-        }
-        Ok(Status::Ok)
-    }
-
-    /// `fmi2GetInteger` (this layer's models have Integer parameters only).
-    pub fn get_integer(&mut self, vrs: &[u32], values: &mut [i32]) -> CallResult {
-        let mut idx = Vec::with_capacity(vrs.len());
-        for &vr in vrs {
-            idx.push(self.lookup_kind(vr, Kind::Integer)?);
-        }
-        for (&i, out) in idx.iter().zip(values.iter_mut()) {
-            *out = self.model.get_integer(i);
-        }
-        Ok(Status::Ok)
-    }
-
-    /// `fmi2SetReal`: all values are checked before any is stored.
-    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> CallResult {
-        let mut idx = Vec::with_capacity(vrs.len());
-        for (&vr, &value) in vrs.iter().zip(values) {
-            let i = self.lookup_kind(vr, Kind::Real)?;
+            let i = self.lookup_kind(vr, kind)?;
             self.check_settable(i)?;
             self.model.check_real(i, value)?;
             idx.push(i);
@@ -155,6 +126,10 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> CallResult {
+        self.set_values(Kind::Real, vrs, values)
+    }
+
     fn update_outputs(&mut self) -> Result<(), String> {
         if !self.outputs_current {
             let r = self.model.compute_outputs();
@@ -165,17 +140,19 @@ impl Instance {
         Ok(())
     }
 
+    /// Log what the model has to say ([`Model::take_message`]) under logEvents.
     fn log_model_message(&mut self) {
         if let Some(m) = self.model.take_message() {
             self.event(&m);
         }
     }
 
-    /// `fmi2GetReal`: outputs are brought up to date with the inputs first.
-    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> CallResult {
+    /// `fmi2GetReal`/`Integer`/`Boolean` (values as f64): outputs are brought up to
+    /// date with the inputs first.
+    pub fn get_values(&mut self, kind: Kind, vrs: &[u32], values: &mut [f64]) -> CallResult {
         let mut idx = Vec::with_capacity(vrs.len());
         for &vr in vrs {
-            idx.push(self.lookup_kind(vr, Kind::Real)?);
+            idx.push(self.lookup_kind(vr, kind)?);
         }
         if idx.iter().any(|&i| self.info.variables[i].causality == Causality::Output) {
             self.update_outputs()?;
@@ -186,13 +163,16 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> CallResult {
+        self.get_values(Kind::Real, vrs, values)
+    }
+
     /// Getters and setters of the types this layer's models do not have.
     pub fn reject_type(&self, type_name: &str, vrs: &[u32]) -> CallResult {
         match vrs.first() {
             None => Ok(Status::Ok),
             Some(&vr) => Err(match self.info.index_of(vr) {
-                Some(i) => format!("{} is a{} {} variable, not {type_name}", self.describe(i),
-                    if self.info.variables[i].kind == Kind::Integer { "n" } else { "" }, self.info.variables[i].kind.as_str()),
+                Some(i) => format!("{} is a {} variable, not {type_name}", self.describe(i), self.info.variables[i].kind.as_str()),
                 None => format!(
                     "unknown value reference {vr}: {} has no {type_name} variables",
                     self.info.model_name
@@ -222,7 +202,7 @@ impl Instance {
     }
 
     pub fn exit_initialization_mode(&mut self) -> CallResult {
-        let init = self.model.exit_initialization();
+        let init = self.model.exit_initialization(self.start_time);
         self.log_model_message();
         let checked = init.and_then(|_| {
             self.outputs_current = false;

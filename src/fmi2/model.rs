@@ -13,7 +13,8 @@ pub trait Model {
     /// Restore every variable to its start value (called at instantiation and by `fmi2Reset`).
     fn set_start_values(&mut self);
 
-    /// The current value of variable `index`. Outputs are read after
+    /// The current value of variable `index` (Integer and Boolean variables as f64,
+    /// a Boolean as 0.0 or 1.0). Outputs are read after
     /// [`Model::compute_outputs`] has run for the current inputs.
     fn get_real(&self, index: usize) -> f64;
 
@@ -25,29 +26,16 @@ pub trait Model {
     /// Store a value that passed [`Model::check_real`].
     fn set_real(&mut self, index: usize, value: f64);
 
-    /// The value of Integer variable `index` (models without Integer variables keep the default).
-    fn get_integer(&self, index: usize) -> i32 {
-        unreachable!("variable {index} is not an Integer variable of this model")
-    }
-
-    /// Check an Integer value before it is stored (as [`Model::check_real`]).
-    fn check_integer(&self, index: usize, _value: i32) -> ModelResult<()> {
-        Err(format!("variable {index} is not an Integer variable of this model"))
-    }
-
-    /// Store an Integer value that passed [`Model::check_integer`].
-    fn set_integer(&mut self, index: usize, _value: i32) {
-        unreachable!("variable {index} is not an Integer variable of this model")
-    }
-
     /// A message for the host's log (category logEvents), taken once; the layer asks after
-    /// [`Model::exit_initialization`] and [`Model::compute_outputs`].
+    /// [`Model::exit_initialization`] and [`Model::compute_outputs`] (e.g. which fidelity
+    /// level was built, a first evaluation outside its envelope).
     fn take_message(&mut self) -> Option<String> {
         None
     }
 
-    /// Validate the parameters at `fmi2ExitInitializationMode`.
-    fn exit_initialization(&mut self) -> ModelResult<()>;
+    /// Validate the parameters at `fmi2ExitInitializationMode`; `start_time` is the
+    /// experiment's start time (`fmi2SetupExperiment`, 0 if it was not called).
+    fn exit_initialization(&mut self, start_time: f64) -> ModelResult<()>;
 
     /// Recompute the outputs from the current inputs and parameters.
     fn compute_outputs(&mut self) -> ModelResult<()>;

@@ -34,37 +34,34 @@ pub fn num(v: f64) -> String {
     format!("{v:?}")
 }
 
-fn real_element(v: &Variable) -> String {
-    if v.kind == Kind::Integer {
-        return integer_element(v);
-    }
+/// The type element of a variable: `<Real .../>`, `<Integer .../>` or `<Boolean .../>`.
+fn type_element(v: &Variable) -> String {
     let mut a = String::new();
-    if let Some(u) = v.unit {
-        write!(a, " unit=\"{}\"", escape(u)).unwrap();
-    }
-    if let Some(d) = v.display_unit {
-        write!(a, " displayUnit=\"{}\"", escape(d)).unwrap();
-    }
-    if let Some(m) = v.min {
-        write!(a, " min=\"{}\"", num(m)).unwrap();
-    }
-    if let Some(m) = v.max {
-        write!(a, " max=\"{}\"", num(m)).unwrap();
-    }
-    if let Some(s) = v.start {
-        write!(a, " start=\"{}\"", num(s)).unwrap();
-    }
-    format!("<Real{a}/>")
-}
-
-fn integer_element(v: &Variable) -> String {
-    let mut a = String::new();
-    for (k, x) in [("min", v.min), ("max", v.max), ("start", v.start)] {
-        if let Some(x) = x {
-            write!(a, " {k}=\"{}\"", x as i64).unwrap();
+    if v.kind == Kind::Real {
+        if let Some(u) = v.unit {
+            write!(a, " unit=\"{}\"", escape(u)).unwrap();
+        }
+        if let Some(d) = v.display_unit {
+            write!(a, " displayUnit=\"{}\"", escape(d)).unwrap();
         }
     }
-    format!("<Integer{a}/>")
+    let value = |x: f64| match v.kind {
+        Kind::Real => num(x),
+        Kind::Integer => format!("{}", x as i64),
+        Kind::Boolean => (x != 0.0).to_string(),
+    };
+    if v.kind != Kind::Boolean {
+        if let Some(m) = v.min {
+            write!(a, " min=\"{}\"", value(m)).unwrap();
+        }
+        if let Some(m) = v.max {
+            write!(a, " max=\"{}\"", value(m)).unwrap();
+        }
+    }
+    if let Some(s) = v.start {
+        write!(a, " start=\"{}\"", value(s)).unwrap();
+    }
+    format!("<{}{a}/>", v.kind.as_str())
 }
 
 /// The complete modelDescription.xml of `info`.
@@ -120,6 +117,9 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
 
     writeln!(w, "  <ModelVariables>").unwrap();
     for (i, v) in info.variables.iter().enumerate() {
+        if v.kind != Kind::Real && (v.unit.is_some() || v.display_unit.is_some()) {
+            return Err(format!("variable {}: only Real variables have units", v.name));
+        }
         if let Some(u) = v.unit {
             let def = info.unit(u).ok_or_else(|| format!("variable {}: unit {u} is not in the unit table", v.name))?;
             if let Some(d) = v.display_unit
@@ -143,7 +143,7 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
             v.variability.as_str()
         )
         .unwrap();
-        writeln!(w, "      {}", real_element(v)).unwrap();
+        writeln!(w, "      {}", type_element(v)).unwrap();
         writeln!(w, "    </ScalarVariable>").unwrap();
     }
     writeln!(w, "  </ModelVariables>").unwrap();

@@ -4,10 +4,11 @@
 
 pub mod pass_through;
 pub mod pin_joint;
+pub mod pin_joint_rig;
 
 use crate::fmi2::variables::ModelInfo;
 
 /// Every model the shared library serves.
 pub fn registry() -> Vec<&'static ModelInfo> {
-    vec![&*pin_joint::INFO, &*pass_through::INFO]
+    vec![&*pin_joint::INFO, &*pin_joint_rig::INFO, &*pass_through::INFO]
 }

@@ -66,7 +66,7 @@ impl Model for PassThrough {
     fn set_real(&mut self, i: usize, v: f64) {
         self.u[i] = v;
     }
-    fn exit_initialization(&mut self) -> ModelResult<()> {
+    fn exit_initialization(&mut self, _start_time: f64) -> ModelResult<()> {
         Ok(())
     }
     fn compute_outputs(&mut self) -> ModelResult<()> {

@@ -221,6 +221,7 @@ impl Model for PinJointModel {
             ANGULAR_VELOCITY => self.omega,
             LOAD => self.load,
             SPEED_BAND => self.band,
+            FIDELITY => self.fidelity.code as f64,
             TOLERANCE => self.fidelity.tolerance,
             i if (ENVELOPE_LOAD_MIN..=ENVELOPE_SPEED_MAX).contains(&i) => self.fidelity.envelope[i - ENVELOPE_LOAD_MIN],
             i if i >= FIRST_PARAM => (PARAMS[i - FIRST_PARAM].get)(&self.params),
@@ -238,6 +239,10 @@ impl Model for PinJointModel {
             LOAD if !(v.is_finite() && v >= 0.0) => {
                 Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(v)))
             }
+            FIDELITY if fidelity_of_code(v as i32).is_none() || v.fract() != 0.0 => Err(format!(
+                "parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)",
+                show(v)
+            )),
             // Parameters are checked together at fmi2ExitInitializationMode.
             _ => Ok(()),
         }
@@ -249,6 +254,10 @@ impl Model for PinJointModel {
             ANGULAR_VELOCITY => self.omega = v,
             LOAD => self.load = v,
             SPEED_BAND => self.band = v,
+            FIDELITY => {
+                self.fidelity.code = v as i32;
+                self.evaluator = None;
+            }
             TOLERANCE => {
                 self.fidelity.tolerance = v;
                 self.evaluator = None;
@@ -265,32 +274,11 @@ impl Model for PinJointModel {
         }
     }
 
-    fn get_integer(&self, i: usize) -> i32 {
-        debug_assert_eq!(i, FIDELITY);
-        self.fidelity.code
-    }
-
-    fn check_integer(&self, i: usize, v: i32) -> ModelResult<()> {
-        match i {
-            FIDELITY if fidelity_of_code(v).is_none() => Err(format!(
-                "parameter fidelity = {v} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)"
-            )),
-            FIDELITY => Ok(()),
-            _ => Err(format!("variable {i} is not an Integer variable")),
-        }
-    }
-
-    fn set_integer(&mut self, i: usize, v: i32) {
-        debug_assert_eq!(i, FIDELITY);
-        self.fidelity.code = v;
-        self.evaluator = None;
-    }
-
     fn take_message(&mut self) -> Option<String> {
         self.message.take()
     }
 
-    fn exit_initialization(&mut self) -> ModelResult<()> {
+    fn exit_initialization(&mut self, _start_time: f64) -> ModelResult<()> {
         self.evaluator().map(|_| ())
     }
 

@@ -115,6 +115,7 @@ pub static UNITS: &[UnitDef] = &[
 fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>, start: f64, min: Option<f64>, d: &str) -> Variable {
     Variable {
         name: name.into(),
+        kind: Kind::Real,
         value_reference: vr,
         causality: Causality::Input,
         variability: Variability::Continuous,
@@ -126,7 +127,6 @@ fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>,
         max: None,
         description: d.into(),
         depends_on: vec![],
-        kind: Kind::Real,
     }
 }
 
@@ -159,6 +159,7 @@ fn output(o: Output) -> Variable {
     };
     Variable {
         name: name.into(),
+        kind: Kind::Real,
         value_reference: 10 + o as u32,
         causality: Causality::Output,
         variability: Variability::Continuous,
@@ -170,12 +171,11 @@ fn output(o: Output) -> Variable {
         max,
         description: d.into(),
         depends_on: deps.to_vec(),
-        kind: Kind::Real,
     }
 }
 
 /// Display unit a user expects for a parameter.
-fn param_display(s: &ParamSpec) -> Option<&'static str> {
+pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
     match (s.section, s.unit) {
         ("geometry", "m") => Some("mm"),
         (_, "m") => Some("µm"),
@@ -187,10 +187,11 @@ fn param_display(s: &ParamSpec) -> Option<&'static str> {
     }
 }
 
-fn parameter(i: usize, s: &ParamSpec) -> Variable {
+pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
     let (min, max) = s.range.bounds();
     Variable {
         name: s.name(),
+        kind: Kind::Real,
         value_reference: 100 + i as u32,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -202,7 +203,6 @@ fn parameter(i: usize, s: &ParamSpec) -> Variable {
         max,
         description: format!("{} ({}, {}; must be {})", s.description, s.symbol, s.source, s.range.describe()),
         depends_on: vec![],
-        kind: Kind::Real,
     }
 }
 
@@ -220,6 +220,7 @@ pub fn table() -> Vec<Variable> {
     v.extend(PARAMS.iter().enumerate().map(|(i, s)| parameter(i, s)));
     v.push(Variable {
         name: "zero_velocity.speed_band".into(),
+        kind: Kind::Real,
         value_reference: 200,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -233,10 +234,10 @@ pub fn table() -> Vec<Variable> {
                       T = -T(P, omega_b) omega/omega_b; outside it the torque is exactly the model's. 0 switches the ramp off"
             .into(),
         depends_on: vec![],
-        kind: Kind::Real,
     });
     v.push(Variable {
         name: "fidelity".into(),
+        kind: Kind::Integer,
         value_reference: 300,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -252,10 +253,10 @@ pub fn table() -> Vec<Variable> {
                       Outside the envelope table and boundary answer with the full solve (logged once)"
             .into(),
         depends_on: vec![],
-        kind: Kind::Integer,
     });
     let real = |name: &str, vr: u32, unit: Option<&'static str>, start: f64, d: &str| Variable {
         name: name.into(),
+        kind: Kind::Real,
         value_reference: vr,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -267,7 +268,6 @@ pub fn table() -> Vec<Variable> {
         max: None,
         description: d.into(),
         depends_on: vec![],
-        kind: Kind::Real,
     };
     let [l0, l1, w0, w1] = DEFAULT_ENVELOPE;
     v.push(real("tolerance", 301, None, DEFAULT_TOLERANCE,
