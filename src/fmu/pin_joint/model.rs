@@ -14,10 +14,10 @@ use crate::params::PARAMS;
 use crate::{Joint, Params};
 
 /// Version of [`PinJointModel::serialize`]'s layout.
-const STATE_VERSION: u8 = 2;
+const STATE_VERSION: u8 = 3;
 /// f64 values in the serialized state: parameters, band, three inputs, energy, fidelity code,
-/// tolerance, envelope, warm start of the full solve (NaN: cold).
-const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1 + 2 + 4 + 1;
+/// tolerance, envelope. (The outputs depend on the current inputs only: no solver history.)
+const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1 + 2 + 4;
 
 /// Every output but the energy, from one evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -55,15 +55,22 @@ impl Outputs {
 /// band-edge torque ramped linearly ([`super::zero_speed`]). An error names the inputs when
 /// the library rejects them or returns a non-finite value. Also returns whether this call
 /// was the first to fall outside the envelope.
+///
+/// The full level is evaluated cold (no warm start): the outputs are then a function of the
+/// current inputs alone, bit-identical to [`crate::Joint::evaluate`], whatever the history
+/// (a host that rolls back with get/set FMU state, or re-steps, gets the same numbers). It
+/// costs ~1.2× a warm solve per step; `table` is the level for speed.
 pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelResult<(Outputs, bool)> {
     if load == 0.0 {
         return Ok((Outputs::default(), false));
     }
+    ev.reset();
     let e = ev.evaluate(load, omega).map_err(|e| e.to_string())?;
     let mut first = e.first_fallback;
     let torque = if omega.abs() >= band {
         e.signed_torque()
     } else {
+        ev.reset();
         let edge = ev.evaluate(load, band).map_err(|e| e.to_string())?;
         first |= edge.first_fallback;
         -edge.torque * (omega / band)
@@ -153,8 +160,6 @@ pub struct PinJointModel {
     evaluator: Option<Evaluator>,
     /// For the host's log (fidelity chosen; first fallback).
     message: Option<String>,
-    /// Warm start to give the evaluator when it is next built (from a restored state).
-    pending_warm: Option<f64>,
 }
 
 impl PinJointModel {
@@ -170,7 +175,6 @@ impl PinJointModel {
             fidelity: FidelitySettings::default(),
             evaluator: None,
             message: None,
-            pending_warm: None,
         };
         m.set_start_values();
         m
@@ -181,7 +185,6 @@ impl PinJointModel {
         if self.evaluator.is_none() {
             Joint::new(&self.params).map_err(|e| e.to_string())?;
             let mut ev = self.fidelity.build(&self.params)?;
-            ev.set_warm_start(self.pending_warm.take());
             self.message = Some(describe(&ev));
             self.evaluator = Some(ev);
         }
@@ -212,7 +215,6 @@ impl Model for PinJointModel {
         self.fidelity = FidelitySettings::default();
         self.evaluator = None;
         self.message = None;
-        self.pending_warm = None;
     }
 
     fn get_real(&self, i: usize) -> f64 {
@@ -321,11 +323,10 @@ impl Model for PinJointModel {
             w.f64((s.get)(&self.params));
         }
         let f = &self.fidelity;
-        let warm = self.evaluator.as_ref().map_or(self.pending_warm, |e| e.warm_start()).unwrap_or(f64::NAN);
         for v in [self.band, self.angle, self.omega, self.load, self.energy, f.code as f64, f.tolerance] {
             w.f64(v);
         }
-        for v in f.envelope.into_iter().chain([warm]) {
+        for v in f.envelope {
             w.f64(v);
         }
         out.extend_from_slice(&w.buf);
@@ -357,7 +358,6 @@ impl Model for PinJointModel {
             return Err(format!("fidelity = {code} in the state is not a fidelity code (0..3)"));
         }
         let fidelity = FidelitySettings { code: code as i32, tolerance, envelope };
-        let warm = Some(r.f64("warm start")?).filter(|w| w.is_finite());
         r.finish()?;
         for (i, v) in [(ANGLE, angle), (ANGULAR_VELOCITY, omega), (LOAD, load)] {
             self.check_real(i, v)?;
@@ -366,10 +366,7 @@ impl Model for PinJointModel {
             return Err(format!("dissipated_energy = {energy} J is not a finite number >= 0"));
         }
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
-        let mut evaluator = if params == self.params && fidelity == self.fidelity && band == self.band { self.evaluator.take() } else { None };
-        if let Some(ev) = evaluator.as_mut() {
-            ev.set_warm_start(warm);
-        }
+        let evaluator = if params == self.params && fidelity == self.fidelity && band == self.band { self.evaluator.take() } else { None };
         *self = PinJointModel {
             params,
             band,
@@ -381,7 +378,6 @@ impl Model for PinJointModel {
             fidelity,
             evaluator,
             message: None,
-            pending_warm: warm,
         };
         Ok(())
     }

@@ -247,7 +247,7 @@ pub fn table() -> Vec<Variable> {
         start: Some(DEFAULT_FIDELITY as f64),
         min: Some(0.0),
         max: Some(3.0),
-        description: "Fidelity of the friction evaluation: 0 = full (complete solve, warm-started), 1 = table \
+        description: "Fidelity of the friction evaluation: 0 = full (complete solve, cold: outputs depend on the current inputs only), 1 = table \
                       (Stribeck map tabulated over the envelope at exit of initialization, interpolated, within \
                       tolerance of full), 2 = boundary (mu = mu_c), 3 = auto (the cheapest level within tolerance). \
                       Outside the envelope table and boundary answer with the full solve (logged once)"
