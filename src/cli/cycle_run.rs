@@ -152,23 +152,27 @@ pub fn core_torque(s: &Sample, pin_radius: f64) -> f64 {
 }
 
 /// The trace as CSV with [`CYCLE_COLUMNS`], every number at full precision.
+/// One sample as the CSV fields of [`CYCLE_COLUMNS`], in full precision.
+pub fn sample_fields(s: &Sample) -> [String; 10] {
+    [
+        exact(s.time),
+        exact(s.command_angle),
+        exact(s.angle),
+        exact(s.angular_velocity),
+        exact(s.torque),
+        exact(s.friction_torque),
+        exact(s.friction_coefficient),
+        exact(s.film_thickness),
+        exact(s.fluid_load_fraction),
+        u8::from(s.stuck).to_string(),
+    ]
+}
+
 pub fn cycle_csv(w: &mut dyn std::io::Write, samples: &[Sample]) -> std::io::Result<()> {
     let mut wtr = csv::Writer::from_writer(w);
     wtr.write_record(CYCLE_COLUMNS).map_err(csv_io)?;
     for s in samples {
-        let row = [
-            exact(s.time),
-            exact(s.command_angle),
-            exact(s.angle),
-            exact(s.angular_velocity),
-            exact(s.torque),
-            exact(s.friction_torque),
-            exact(s.friction_coefficient),
-            exact(s.film_thickness),
-            exact(s.fluid_load_fraction),
-            u8::from(s.stuck).to_string(),
-        ];
-        wtr.write_record(&row).map_err(csv_io)?;
+        wtr.write_record(sample_fields(s)).map_err(csv_io)?;
     }
     wtr.flush()?;
     Ok(())

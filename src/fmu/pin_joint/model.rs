@@ -184,7 +184,7 @@ impl PinJointModel {
         check_band(self.band)?;
         if self.evaluator.is_none() {
             Joint::new(&self.params).map_err(|e| e.to_string())?;
-            let mut ev = self.fidelity.build(&self.params)?;
+            let ev = self.fidelity.build(&self.params)?;
             self.message = Some(describe(&ev));
             self.evaluator = Some(ev);
         }
