@@ -200,7 +200,9 @@ pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn
         }
         // Quadratic convergence: after two shrinking Newton steps s_{k−1}, s_k the error left
         // after s_k is ≈ C·s_k² with C ≈ |s_k|/s_{k−1}². Stop when that is 100× below tol.
-        if newton_step && last_was_newton && step.abs() < 0.1 * last_step.abs() {
+        // Only in the asymptotic regime (|s_{k−1}| < 1e-2): a first step from a far guess says
+        // nothing about C (a guess of 1e6 once stopped the solve 7e-8 short; fuzzing).
+        if newton_step && last_was_newton && last_step.abs() < 1e-2 && step.abs() < 0.1 * last_step.abs() {
             let predicted = step.abs().powi(3) / (last_step * last_step);
             if predicted <= 0.01 * tol(y) {
                 break;
