@@ -236,7 +236,9 @@ impl Instance {
                 t - self.time
             ));
         }
-        if let Err(e) = self.update_outputs().and_then(|_| self.model.do_step(t, h)) {
+        let stepped = self.update_outputs().and_then(|_| self.model.do_step(t, h));
+        self.log_model_message();
+        if let Err(e) = stepped {
             self.state = State::Error;
             return Err(format!("step from t = {} s over {} s failed: {e}", show(t), show(h)));
         }

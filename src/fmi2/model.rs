@@ -27,7 +27,7 @@ pub trait Model {
     fn set_real(&mut self, index: usize, value: f64);
 
     /// A message for the host's log (category logEvents), taken once; the layer asks after
-    /// [`Model::exit_initialization`] and [`Model::compute_outputs`] (e.g. which fidelity
+    /// [`Model::exit_initialization`], [`Model::compute_outputs`] and [`Model::do_step`] (e.g. which fidelity
     /// level was built, a first evaluation outside its envelope).
     fn take_message(&mut self) -> Option<String> {
         None

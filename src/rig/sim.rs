@@ -247,6 +247,24 @@ impl RigSim {
         self.fidelity.as_deref()
     }
 
+    /// The level set by [`RigSim::set_fidelity`], shared (a clone of the handle, not of the table).
+    pub fn shared_fidelity(&self) -> Option<Arc<Evaluator>> {
+        self.fidelity.clone()
+    }
+
+    /// Use a level another simulator built with [`RigSim::set_fidelity`], without building it
+    /// again (the evaluator is read-only here, so sharing it changes no result). It must have
+    /// been built for the same model parameters (`config.model`): checked by the evaluator's
+    /// parameter set.
+    pub fn share_fidelity(&mut self, evaluator: Arc<Evaluator>) -> Result<(), RigError> {
+        if evaluator.joint().params() != &self.config.model {
+            return Err(RigError::State("the shared fidelity level was built for other model parameters".into()));
+        }
+        self.fidelity = Some(evaluator);
+        self.segment = None;
+        Ok(())
+    }
+
     /// A level answering inside its envelope, for the dynamics (None at full).
     fn level(&self) -> Option<&Evaluator> {
         self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full)

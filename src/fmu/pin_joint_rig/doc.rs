@@ -140,6 +140,25 @@ R<sub>b</sub> &gt; R); the error message names the parameter, its value and unit
 <li>A step that cannot be computed (integration failure, stick/slip chattering) returns fmi2Error and names the time.</li>
 </ul>
 
+<h2>Fidelity</h2>
+<ul>
+<li><code>fidelity</code> (Integer) chooses how the friction law is evaluated inside the rig, as in the PinJoint FMU: 0 = full (the
+complete solve, warm-started; the default, and the rig exactly as without this parameter), 1 = table (the Stribeck map tabulated
+over the envelope at fmi2ExitInitializationMode and interpolated, refined until its error checked against full is below
+<code>tolerance</code>), 2 = boundary (&mu; = &mu;<sub>c</sub>), 3 = auto (the cheapest of boundary, table, full whose measured bound
+is within <code>tolerance</code>).</li>
+<li>The envelope (<code>envelope.load_min</code>..<code>envelope.load_max</code> in N, <code>envelope.speed_min</code>..<code>envelope.speed_max</code>
+in rad/s, speed magnitudes) defaults to 1&ndash;100 kN and 1e-3&ndash;10 rad/s: every load and stroke of the defaults and well beyond
+(the default stroke peaks at 2&pi;fA = 4.4 rad/s). Outside it, and at speeds below <code>envelope.speed_min</code> that the joint
+passes through at every reversal, the full solve answers. A smaller envelope builds a smaller table faster.</li>
+<li>The log (category logEvents) says once which level was built (what auto picked) with its measured error bound, and once when a
+friction evaluation first fell outside the envelope.</li>
+<li>Bad values (a code other than 0&ndash;3, a tolerance not &gt; 0 or, for table and auto, below the full solve's own 1e-10, an envelope
+bound not &gt; 0 or a minimum not below its maximum) are refused at fmi2ExitInitializationMode with the parameter's name, value and
+unit; a code out of range already by fmi2SetInteger.</li>
+<li>The settings are part of the FMU state; a restored state rebuilds the same table (deterministically) and continues bit for bit.</li>
+</ul>
+
 <h2>Inputs</h2><table>{HEAD}{inputs}</table>
 <h2>Outputs</h2><table>{HEAD}{outputs}</table>
 <h2>Parameters</h2>
@@ -154,7 +173,7 @@ sections are <code>section.key</code> as in the PinJoint FMU (Tables 1&ndash;3 o
 magic, version, length and CRC-32, holding this model's versioned part: every setting, the start time and the simulator's
 112-byte state). A restored state continues bit for bit.</li>
 <li><code>stuck</code> is a Boolean output (variability discrete), <code>use_command_input</code> a Boolean parameter,
-<code>rig.formulation</code> and <code>rig.method</code> Integer parameters; everything else is Real.</li>
+<code>rig.formulation</code>, <code>rig.method</code> and <code>fidelity</code> Integer parameters; everything else is Real.</li>
 </ul>
 </body></html>
 "#,

@@ -7,13 +7,22 @@
 //! A sin(2 pi f (t - t_start)) starts at rest on the command at the start time.
 //! Inputs are held over each step; setting an input to a new value restarts the
 //! integration at the current time (see [`crate::rig::sim`]).
+//!
+//! Fidelity: `fidelity` (0 full, 1 table, 2 boundary, 3 auto), `tolerance` and the envelope
+//! are checked at fmi2ExitInitializationMode and, unless full, applied with
+//! [`RigSim::set_fidelity`]; the log says once which level was built (what auto picked) and
+//! its measured bound, and once when a friction evaluation first fell outside the envelope.
+//! At full (the default) the simulator is built exactly as without these parameters.
 
 use super::state::{decode, encode};
-use super::variables::{default_load, rig_spec, Output, Var, LAYOUT};
+use super::variables::{default_load, rig_spec, Output, Var, DEFAULT_ENVELOPE, DEFAULT_TOLERANCE, ENVELOPE_NAMES, LAYOUT};
+use crate::fidelity::{Envelope, Evaluator, Fidelity};
 use crate::fmi2::logging::show;
 use crate::fmi2::model::{Model, ModelResult};
+use crate::fmu::pin_joint::variables::fidelity_of_code;
 use crate::params::PARAMS;
 use crate::rig::{Formulation, Inputs, Method, RigConfig, RigSim, Sample, RIG_PARAMS};
+use std::sync::Arc;
 
 /// Every value a host can set, as the model holds it (Booleans and Integers as f64).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -26,11 +35,26 @@ pub struct Settings {
     pub method: f64,
     pub load: f64,
     pub command_angle: f64,
+    /// Integer code of `fidelity`, checked when set and at initialization.
+    pub fidelity: f64,
+    pub tolerance: f64,
+    /// load_min, load_max (N), speed_min, speed_max (rad/s).
+    pub envelope: [f64; 4],
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { cfg: RigConfig::default(), use_command_input: false, formulation: 0.0, method: 0.0, load: default_load(), command_angle: 0.0 }
+        Settings {
+            cfg: RigConfig::default(),
+            use_command_input: false,
+            formulation: 0.0,
+            method: 0.0,
+            load: default_load(),
+            command_angle: 0.0,
+            fidelity: 0.0,
+            tolerance: DEFAULT_TOLERANCE,
+            envelope: DEFAULT_ENVELOPE,
+        }
     }
 }
 
@@ -48,6 +72,9 @@ impl Settings {
             Var::Formulation => self.formulation,
             Var::Method => self.method,
             Var::Model(i) => (PARAMS[i].get)(&self.cfg.model),
+            Var::Fidelity => self.fidelity,
+            Var::Tolerance => self.tolerance,
+            Var::Envelope(k) => self.envelope[k],
             Var::Out(_) => unreachable!("outputs are not settings"),
         }
     }
@@ -64,6 +91,9 @@ impl Settings {
             Var::Formulation => self.formulation = x,
             Var::Method => self.method = x,
             Var::Model(i) => (PARAMS[i].set)(&mut self.cfg.model, x),
+            Var::Fidelity => self.fidelity = x,
+            Var::Tolerance => self.tolerance = x,
+            Var::Envelope(k) => self.envelope[k] = x,
             Var::Out(_) => unreachable!("the FMI layer never sets outputs"),
         }
     }
@@ -80,6 +110,7 @@ impl Settings {
                 Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(x)))
             }
             Var::CommandAngle if !x.is_finite() => Err(format!("input command_angle = {} rad is not a finite number", show(x))),
+            Var::Fidelity if x.fract() != 0.0 || fidelity_of_code(x as i32).is_none() => Err(fidelity_range(x)),
             _ => Ok(()),
         }
     }
@@ -109,6 +140,68 @@ impl Settings {
         cfg.validate().map_err(|e| e.to_string())?;
         Ok(cfg)
     }
+
+    /// The validated fidelity settings: the level, the tolerance and the envelope. They are
+    /// checked whatever the level (as PinJoint does), though `full` uses neither tolerance nor
+    /// envelope. An error names the parameter, its value and unit.
+    pub fn fidelity(&self) -> ModelResult<(Fidelity, f64, Envelope)> {
+        let level = (self.fidelity.fract() == 0.0).then(|| fidelity_of_code(self.fidelity as i32)).flatten();
+        let level = level.ok_or_else(|| fidelity_range(self.fidelity))?;
+        let t = self.tolerance;
+        if !(t.is_finite() && t > 0.0) {
+            return Err(format!("parameter tolerance = {} (relative error, dimensionless) is invalid: it must be a finite number > 0", show(t)));
+        }
+        for (k, (name, unit)) in ENVELOPE_NAMES.iter().enumerate() {
+            let x = self.envelope[k];
+            if !(x.is_finite() && x > 0.0) {
+                return Err(format!("parameter {name} = {} {unit} is invalid: it must be a finite number > 0 {unit}", show(x)));
+            }
+        }
+        for k in [0, 2] {
+            let ((lo_name, unit), (hi_name, _)) = (ENVELOPE_NAMES[k], ENVELOPE_NAMES[k + 1]);
+            let (lo, hi) = (self.envelope[k], self.envelope[k + 1]);
+            if lo >= hi {
+                return Err(format!(
+                    "parameter {lo_name} = {} {unit} is invalid: it must be below {hi_name} = {} {unit}",
+                    show(lo),
+                    show(hi)
+                ));
+            }
+        }
+        let [a, b, c, d] = self.envelope;
+        let env = Envelope::new(a, b, c, d).map_err(|e| format!("parameter {e}"))?;
+        Ok((level, t, env))
+    }
+}
+
+impl Settings {
+    /// The fidelity settings as stored (code, tolerance, envelope), for comparisons.
+    pub fn fidelity_key(&self) -> [f64; 6] {
+        let [a, b, c, d] = self.envelope;
+        [self.fidelity, self.tolerance, a, b, c, d]
+    }
+}
+
+fn fidelity_range(x: f64) -> String {
+    format!("parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)", show(x))
+}
+
+/// What the log says about the level built: what was asked, what runs (auto's pick), the
+/// measured bound, the tolerance and the envelope.
+fn describe(ev: &Evaluator) -> String {
+    let e = ev.envelope();
+    format!(
+        "fidelity {} -> {}: measured error bound {:e} (tolerance {:e}) over load {}..{} N, |omega| {}..{} rad/s; \
+         outside it the full solve answers",
+        ev.requested(),
+        ev.chosen(),
+        ev.error_bound(),
+        ev.tolerance(),
+        e.load_min,
+        e.load_max,
+        e.speed_min,
+        e.speed_max
+    )
 }
 
 /// The outputs as the FMU reports them: the sample, with the core's film quantities
@@ -152,34 +245,98 @@ pub struct RigModel {
     /// during initialization); dropped when a parameter changes.
     pub(super) sim: Option<RigSim>,
     out: [f64; Output::ALL.len()],
+    /// For the host's log ([`Model::take_message`]): the level built; the first fallback.
+    message: Option<String>,
+    /// Whether the first evaluation outside the envelope has been logged (once per instance
+    /// and fidelity setting; kept across a restore with the same settings).
+    fallback_logged: bool,
 }
 
 impl RigModel {
     pub fn new() -> Self {
-        RigModel { settings: Settings::default(), start_time: 0.0, sim: None, out: [0.0; Output::ALL.len()] }
+        RigModel {
+            settings: Settings::default(),
+            start_time: 0.0,
+            sim: None,
+            out: [0.0; Output::ALL.len()],
+            message: None,
+            fallback_logged: false,
+        }
     }
 
-    /// A model with these settings and, if given, a simulator resumed from `state`.
-    pub(super) fn restored(settings: Settings, start_time: f64, state: Option<crate::rig::RigState>) -> ModelResult<Self> {
-        let mut m = RigModel { settings, start_time, sim: None, out: [0.0; Output::ALL.len()] };
+    /// A model with these settings and, if given, a simulator resumed from `state`; `reuse`
+    /// is a fidelity level already built, used if it matches the settings (not rebuilt).
+    pub(super) fn restored(
+        settings: Settings,
+        start_time: f64,
+        state: Option<crate::rig::RigState>,
+        reuse: Option<Arc<Evaluator>>,
+    ) -> ModelResult<Self> {
+        let mut m = RigModel { settings, start_time, ..RigModel::new() };
         if let Some(st) = state {
-            let mut sim = m.build()?;
+            let mut sim = m.build(reuse)?;
             sim.set_state(&st).map_err(|e| e.to_string())?;
             m.sim = Some(sim);
         }
         Ok(m)
     }
 
-    fn build(&self) -> ModelResult<RigSim> {
+    /// The simulator for the settings, at their fidelity. At `full` it is exactly
+    /// [`RigSim::new`]; otherwise [`RigSim::set_fidelity`], or `reuse` when it is the same
+    /// level, tolerance and envelope built for the same model parameters.
+    fn build(&self, reuse: Option<Arc<Evaluator>>) -> ModelResult<RigSim> {
         let cfg = self.settings.config()?;
-        RigSim::new(&cfg).map_err(|e| e.to_string())
+        let (level, tolerance, envelope) = self.settings.fidelity()?;
+        let mut sim = RigSim::new(&cfg).map_err(|e| e.to_string())?;
+        if level != Fidelity::Full {
+            let same = |e: &Evaluator| {
+                e.requested() == level && e.tolerance() == tolerance && *e.envelope() == envelope && e.joint().params() == &cfg.model
+            };
+            match reuse.filter(|e| same(e)) {
+                Some(ev) => sim.share_fidelity(ev).map_err(|e| e.to_string())?,
+                None => {
+                    sim.set_fidelity(level, tolerance, envelope).map_err(|e| format!("fidelity {level}: {e}"))?;
+                }
+            }
+        }
+        Ok(sim)
     }
 
     fn sim(&mut self) -> ModelResult<&mut RigSim> {
         if self.sim.is_none() {
-            self.sim = Some(self.build()?);
+            self.sim = Some(self.build(None)?);
         }
         Ok(self.sim.as_mut().expect("just built"))
+    }
+
+    /// The simulator in use (after initialization).
+    pub fn simulator(&self) -> Option<&RigSim> {
+        self.sim.as_ref()
+    }
+
+    /// Say once when a friction evaluation first fell outside the envelope.
+    fn note_fallback(&mut self) {
+        if self.fallback_logged {
+            return;
+        }
+        let Some(sim) = self.sim.as_ref() else { return };
+        let (Some(ev), n) = (sim.fidelity(), sim.stats().fallbacks) else { return };
+        if n == 0 {
+            return;
+        }
+        let e = ev.envelope();
+        self.message = Some(format!(
+            "fidelity {}: by t = {} s (rig clock) a friction evaluation fell outside the envelope (load {}..{} N, |omega| {}..{} rad/s; \
+             e.g. speeds below {} rad/s around a reversal); the full solve answers there (said once)",
+            ev.chosen(),
+            show(sim.time()),
+            e.load_min,
+            e.load_max,
+            e.speed_min,
+            e.speed_max,
+            e.speed_min
+        ));
+        self.fallback_logged = true;
     }
 
     /// Apply the held inputs at the current time and sample.
@@ -189,6 +346,7 @@ impl RigModel {
         let t = rig_time.unwrap_or(sim.time()).max(sim.time());
         sim.advance_to(t, &inputs).map_err(|e| e.to_string())?;
         let s = sim.sample().map_err(|e| e.to_string())?;
+        self.note_fallback();
         self.out = outputs(&s)?;
         Ok(())
     }
@@ -222,11 +380,22 @@ impl Model for RigModel {
         if !matches!(v, Var::Load | Var::CommandAngle) {
             self.sim = None;
         }
+        if matches!(v, Var::Fidelity | Var::Tolerance | Var::Envelope(_)) {
+            self.fallback_logged = false;
+        }
+    }
+
+    fn take_message(&mut self) -> Option<String> {
+        self.message.take()
     }
 
     fn exit_initialization(&mut self, start_time: f64) -> ModelResult<()> {
         self.start_time = start_time;
-        self.sim = Some(self.build()?);
+        // A level built for outputs read during initialization is reused, not rebuilt.
+        let reuse = self.sim.as_ref().and_then(RigSim::shared_fidelity);
+        let sim = self.build(reuse)?;
+        self.message = sim.fidelity().map(describe);
+        self.sim = Some(sim);
         Ok(())
     }
 
@@ -244,7 +413,10 @@ impl Model for RigModel {
 
     fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()> {
         let (settings, start_time, state) = decode(bytes)?;
-        *self = RigModel::restored(settings, start_time, state)?;
+        let reuse = self.sim.as_ref().and_then(RigSim::shared_fidelity);
+        let mut m = RigModel::restored(settings, start_time, state, reuse)?;
+        m.fallback_logged = self.fallback_logged && m.settings.fidelity_key() == self.settings.fidelity_key();
+        *self = m;
         Ok(())
     }
 }

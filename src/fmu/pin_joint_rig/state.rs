@@ -1,11 +1,11 @@
 //! The PinJointRig part of the serialized FMU state (inside the generic layer's
-//! container, [`crate::fmi2::snapshot`]), little-endian, version 1:
+//! container, [`crate::fmi2::snapshot`]), little-endian, version 2:
 //!
 //! | bytes | content |
 //! |---|---|
-//! | 1 | version (1) |
+//! | 1 | version (2) |
 //! | 2 | n, number of settings |
-//! | 8·n | every input and parameter value in table order (Booleans 0/1, Integers as f64) |
+//! | 8·n | every input and parameter value in table order (Booleans 0/1, Integers as f64), the fidelity settings (`fidelity`, `tolerance`, envelope) last |
 //! | 8 | start time (s) |
 //! | 1 | 1 if the rig simulator exists (after initialization), else 0 |
 //! | 2 + m | m, then the simulator's [`RigState::to_bytes`] (m = 112) |
@@ -14,7 +14,11 @@
 //! [`RigState`] holds the integration node, the clock and the held inputs, from
 //! which the simulator continues bit for bit (its segment cache is recomputed from
 //! the same node). Not stored: the integration counters and the chatter detector's
-//! run length, which do not affect the results.
+//! run length, which do not affect the results. The fidelity level (a table) is rebuilt from
+//! the stored settings (deterministically: the same table) unless the instance already holds
+//! one built from the same settings.
+//!
+//! Version 1 (before the fidelity parameters) is refused: its settings count differs.
 
 use super::model::Settings;
 use super::variables::{Var, LAYOUT};
@@ -22,7 +26,7 @@ use crate::fmi2::bytes::{ByteReader, ByteWriter};
 use crate::fmi2::model::ModelResult;
 use crate::rig::RigState;
 
-const VERSION: u8 = 1;
+const VERSION: u8 = 2;
 
 fn settings_vars() -> impl Iterator<Item = Var> {
     LAYOUT.iter().copied().filter(|v| !matches!(v, Var::Out(_)))
@@ -69,7 +73,7 @@ pub fn decode(bytes: &[u8]) -> ModelResult<(Settings, f64, Option<RigState>)> {
         let whole = x.fract() == 0.0;
         match v {
             Var::UseCommandInput if x != 0.0 && x != 1.0 => return Err(format!("use_command_input = {x} is not a Boolean")),
-            Var::Formulation | Var::Method if !whole => return Err(format!("an Integer parameter holds {x}")),
+            Var::Formulation | Var::Method | Var::Fidelity if !whole => return Err(format!("an Integer parameter holds {x}")),
             _ => {}
         }
         s.set(v, x);

@@ -9,6 +9,8 @@
 //! | 200 + i | `rig.<key>` for row i of [`RIG_PARAMS`] (all but `amplitude`, `frequency`, `load`) |
 //! | 230, 231 | Integer `rig.formulation`, `rig.method` |
 //! | 300 + i | `section.key` for row i of [`crate::params::PARAMS`] |
+//! | 400 | Integer `fidelity` (0 full, 1 table, 2 boundary, 3 auto), as PinJoint's |
+//! | 401–405 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
 //!
 //! The `[rig]` file keys `frequency` and `amplitude` are the stroke parameters
 //! `frequency` and `amplitude`; the key `load` is the `load` input.
@@ -42,7 +44,24 @@ pub enum Var {
     Method,
     /// Row of [`PARAMS`].
     Model(usize),
+    /// Integer code of the friction fidelity ([`pj::fidelity_of_code`]).
+    Fidelity,
+    Tolerance,
+    /// load_min, load_max, speed_min, speed_max.
+    Envelope(usize),
 }
+
+/// Names of the envelope parameters, in [`Var::Envelope`] order, with their units.
+pub const ENVELOPE_NAMES: [(&str, &str); 4] =
+    [("envelope.load_min", "N"), ("envelope.load_max", "N"), ("envelope.speed_min", "rad/s"), ("envelope.speed_max", "rad/s")];
+
+/// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
+/// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
+/// 1-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s).
+/// Speeds below speed_min (around every reversal) and points outside it are answered by
+/// the full solve (logged once).
+pub const DEFAULT_TOLERANCE: f64 = pj::DEFAULT_TOLERANCE;
+pub const DEFAULT_ENVELOPE: [f64; 4] = [1e3, 100e3, 1e-3, 10.0];
 
 /// The outputs, in table order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -86,6 +105,8 @@ pub static LAYOUT: LazyLock<Vec<Var>> = LazyLock::new(|| {
     v.extend(rig_rows().map(Var::Rig));
     v.extend([Var::Formulation, Var::Method]);
     v.extend((0..PARAMS.len()).map(Var::Model));
+    v.extend([Var::Fidelity, Var::Tolerance]);
+    v.extend((0..4).map(Var::Envelope));
     v
 });
 
@@ -260,6 +281,25 @@ pub fn table() -> Vec<Variable> {
     v.push(integer("rig.method", 231, 2.0,
         "Integrator: 0 = Dopri5 (adaptive, rig.rtol/rig.atol), 1 = Dop853 (adaptive), 2 = RK4 (fixed step rig.rk4_step); [rig] method = \"dopri5\" | \"dop853\" | \"rk4\""));
     v.extend(PARAMS.iter().enumerate().map(|(i, s)| Variable { value_reference: 300 + i as u32, ..pj::parameter(i, s) }));
+    v.push(integer("fidelity", 400, 3.0,
+        "Fidelity of the friction evaluation inside the rig: 0 = full (the complete solve, warm-started: the rig as without this parameter, bit for bit), \
+         1 = table (Stribeck map tabulated over the envelope at exit of initialization, interpolated, within tolerance of full), \
+         2 = boundary (mu = mu_c), 3 = auto (the cheapest level within tolerance; the choice and its measured bound are logged). \
+         Outside the envelope (e.g. speeds below envelope.speed_min around reversals) table and boundary answer with the full solve (logged once)"));
+    let fid = |name: &str, vr: u32, unit: Option<&'static str>, start: f64, d: &str| {
+        let mut x = real(name, vr, Causality::Parameter, Variability::Fixed, unit, None, d);
+        x.start = Some(start);
+        x.min = Some(0.0);
+        x
+    };
+    let [l0, l1, w0, w1] = DEFAULT_ENVELOPE;
+    v.push(fid("tolerance", 401, None, DEFAULT_TOLERANCE,
+        "Largest relative error accepted in mu, torque and film thickness (absolute in the load shares) for fidelity table, boundary and auto; must be > 0 (table and auto: >= 1e-10, the full solve's own accuracy)"));
+    v.push(fid("envelope.load_min", 402, Some("N"), l0, "Smallest load of the envelope the scene visits (> 0)"));
+    v.push(fid("envelope.load_max", 403, Some("N"), l1, "Largest load of the envelope (> envelope.load_min)"));
+    v.push(fid("envelope.speed_min", 404, Some("rad/s"), w0,
+        "Smallest speed magnitude |omega| of the envelope (> 0; slower speeds, around every reversal, are answered by the full solve)"));
+    v.push(fid("envelope.speed_max", 405, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
     debug_assert_eq!(v.len(), LAYOUT.len());
     v
 }
