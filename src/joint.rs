@@ -5,7 +5,7 @@ use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
 use crate::mixed::{solve, FilmGroups};
 use crate::params::{ParamError, Params};
-use crate::viscosity::{limiting_shear_stress, roelands_with};
+use crate::viscosity::{limiting_shear_stress, ln_roelands_with};
 use serde::Serialize;
 use std::f64::consts::PI;
 use thiserror::Error;
@@ -52,6 +52,16 @@ pub enum ModelError {
     Load(f64),
     #[error("angular velocity = {0} rad/s is invalid: it must be a finite number")]
     Speed(f64),
+    #[error(
+        "load = {load} N is beyond the asperity model's capacity of {capacity:.6e} N for these parameters: \
+         at rest eq. 19 would put the mean planes of the surfaces through each other (h_c <= 0)"
+    )]
+    BeyondCapacity { load: f64, capacity: f64 },
+    #[error(
+        "the model gives {quantity} = {value} at load = {load} N, angular velocity = {omega} rad/s: \
+         outside its numerical range for these parameters"
+    )]
+    NotFinite { quantity: &'static str, value: f64, load: f64, omega: f64 },
 }
 
 /// Every quantity of the model at one operating point (SI units).
@@ -83,7 +93,8 @@ pub struct OperatingPoint {
     pub contact_half_width: f64,
     /// S, eq. 20.
     pub sommerfeld_number: f64,
-    /// Roelands viscosity at p_m (eq. 5), Pa·s.
+    /// Roelands viscosity at p_m (eq. 5), Pa·s; +∞ where eq. 5 overflows (Z of several
+    /// units at GPa pressures): μ is computed from ln η and stays finite.
     pub contact_viscosity: f64,
     /// Q_H/P_T: the fluid (Bair–Winer, eq. 3) part of μ.
     pub fluid_friction_coefficient: f64,
@@ -124,6 +135,8 @@ pub struct LoadSpeed {
     pub sommerfeld_number: f64,
     /// Roelands viscosity at p_m (eq. 5), Pa·s.
     pub contact_viscosity: f64,
+    /// Its logarithm (finite where η overflows).
+    pub ln_contact_viscosity: f64,
     /// Bair–Winer limiting shear stress at p_m (eq. 4), Pa.
     pub limiting_shear_stress: f64,
 }
@@ -143,6 +156,8 @@ pub struct Joint {
     hertz_unit: crate::contact::Hertz,
     /// ln(η∞/η0) for eq. 5.
     ln_eta_ratio: f64,
+    /// The load (N) at which the rest film of eq. 19 reaches zero (see [`Joint::capacity`]).
+    capacity: f64,
 }
 
 impl Joint {
@@ -171,6 +186,7 @@ impl Joint {
             film_unit: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, lub.viscosity, lub.pressure_viscosity_coefficient),
             hertz_unit: hertz(1.0, r_red, e_eff, g.bush_length),
             ln_eta_ratio: (lub.roelands_viscosity_limit / lub.viscosity).ln(),
+            capacity: asperity_capacity(&params.surface, &AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length)),
         })
     }
 
@@ -185,6 +201,14 @@ impl Joint {
     pub fn effective_modulus(&self) -> f64 {
         self.e_eff
     }
+    /// The largest load (N) the asperity model can take: at rest (1/γ2 = 1) eq. 19 gives
+    /// h_c = d_d + σ_s·t with F_{3/2}(t) growing with the load, and at this load h_c reaches 0
+    /// (the mean planes of the surfaces would pass through each other). Loads at or beyond it
+    /// are a [`ModelError::BeyondCapacity`]. 5.05e8 N for the paper's joint.
+    pub fn capacity(&self) -> f64 {
+        self.capacity
+    }
+
     /// √(σ² + σ_b²), the composite roughness of λ (eq. 21), m.
     pub fn composite_roughness(&self) -> f64 {
         self.roughness
@@ -202,11 +226,13 @@ impl Joint {
             peak_pressure: self.hertz_unit.peak_pressure * sqrt_p,
         };
         let p_l = load / (2.0 * g.pin_radius * g.bush_length);
+        let ln_eta = ln_roelands_with(lub, hertz.mean_pressure, self.ln_eta_ratio);
         LoadSpeed {
             hertz,
             sliding_speed: omega.abs() * g.pin_radius,
             sommerfeld_number: lub.viscosity * omega.abs() / (2.0 * PI * p_l) * (g.pin_radius / self.params.radial_clearance()).powi(2),
-            contact_viscosity: roelands_with(lub, hertz.mean_pressure, self.ln_eta_ratio),
+            contact_viscosity: ln_eta.exp(),
+            ln_contact_viscosity: ln_eta,
             limiting_shear_stress: limiting_shear_stress(lub, hertz.mean_pressure),
         }
     }
@@ -230,6 +256,9 @@ impl Joint {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
         }
+        if load >= self.capacity {
+            return Err(ModelError::BeyondCapacity { load, capacity: self.capacity });
+        }
         let p = &self.params;
         let g = &p.geometry;
         let ls_q = self.load_speed(load, omega);
@@ -240,13 +269,20 @@ impl Joint {
         let ls = solve(film.as_ref(), &asp, &p.surface, guess);
 
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
+        // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (MODEL_NOTES), whatever η.
+        // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
         let (eta, tau_l) = (ls_q.contact_viscosity, ls_q.limiting_shear_stress);
-        let mu_fluid = tau_l / hz.mean_pressure * -(-eta * u / (tau_l * ls.film_thickness)).exp_m1();
+        let mu_fluid = if u > 0.0 {
+            let ln_x = ls_q.ln_contact_viscosity + u.ln() - tau_l.ln() - ls.film_thickness.ln();
+            tau_l / hz.mean_pressure * -(-ln_x.exp()).exp_m1()
+        } else {
+            0.0
+        };
         // Eq. 8: Q_C = μ_c P_C = μ_c P_T/γ2.
         let mu_asperity = p.friction.boundary_friction_coefficient * ls.asperity_fraction;
         let mu = mu_fluid + mu_asperity;
         let sommerfeld = ls_q.sommerfeld_number;
-        Ok(OperatingPoint {
+        let op = OperatingPoint {
             load,
             angular_velocity: omega,
             sliding_speed: u,
@@ -265,8 +301,55 @@ impl Joint {
             asperity_friction_coefficient: mu_asperity,
             logit: ls.logit,
             regime: Regime::from_shares(ls.fluid_fraction, ls.asperity_fraction),
-        })
+        };
+        check_finite(&op)?;
+        Ok(op)
     }
+}
+
+/// Solve eq. 19 at rest for the load at which h_c = 0, i.e. t = −d_d/σ_s. The required
+/// ln F_{3/2} at rest, −ln C(P) + softplus(a4 ln K(P))/a4 with ln C = ln C₁ − ½ ln P and
+/// ln K = ln K₁ + (a2 − a3) ln P, increases with ln P, so the root is unique. +∞ when it
+/// lies beyond f64 loads.
+fn asperity_capacity(s: &crate::params::Surface, unit: &AsperityGroups) -> f64 {
+    let target = crate::gw::ln_f32(-s.summit_mean_plane_offset / s.summit_height_std);
+    let g = |ln_p: f64| unit.at_load_ratio(ln_p).required_ln_f32(0.0) - target;
+    let (mut lo, mut hi) = (-745.0, 709.0);
+    if g(hi) < 0.0 {
+        return f64::INFINITY;
+    }
+    if g(lo) >= 0.0 {
+        return 0.0;
+    }
+    while hi - lo > 1e-12 * (1.0 + hi.abs()) {
+        let mid = 0.5 * (lo + hi);
+        if g(mid) < 0.0 { lo = mid } else { hi = mid }
+    }
+    lo.exp()
+}
+
+/// An operating point with a non-finite number is an error naming the quantity (possible only
+/// for parameter sets far outside any real joint; found by fuzzing). `contact_viscosity` is
+/// exempt: it may be +∞ where eq. 5 overflows, which is harmless (μ uses ln η).
+fn check_finite(op: &OperatingPoint) -> Result<(), ModelError> {
+    let fields = [
+        ("friction_coefficient", op.friction_coefficient),
+        ("torque", op.torque),
+        ("film_thickness", op.film_thickness),
+        ("lambda_ratio", op.lambda_ratio),
+        ("fluid_load_fraction", op.fluid_load_fraction),
+        ("asperity_load_fraction", op.asperity_load_fraction),
+        ("mean_pressure", op.mean_pressure),
+        ("peak_pressure", op.peak_pressure),
+        ("contact_half_width", op.contact_half_width),
+        ("sommerfeld_number", op.sommerfeld_number),
+    ];
+    for (quantity, value) in fields {
+        if !value.is_finite() || (quantity == "film_thickness" && value <= 0.0) {
+            return Err(ModelError::NotFinite { quantity, value, load: op.load, omega: op.angular_velocity });
+        }
+    }
+    Ok(())
 }
 
 /// One-shot convenience: validate `params` and evaluate one point.

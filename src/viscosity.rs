@@ -11,8 +11,13 @@ pub fn roelands(l: &Lubricant, p: f64) -> f64 {
 
 /// [`roelands`] with ln(η∞/η0) precomputed.
 pub fn roelands_with(l: &Lubricant, p: f64, ln_eta_ratio: f64) -> f64 {
+    ln_roelands_with(l, p, ln_eta_ratio).exp()
+}
+
+/// ln η of eq. 5, which stays finite where η itself overflows (large Z at GPa pressures).
+pub fn ln_roelands_with(l: &Lubricant, p: f64, ln_eta_ratio: f64) -> f64 {
     let expo = -((l.roelands_index * (p / l.roelands_pressure_constant).ln_1p()).exp_m1());
-    l.viscosity * (expo * ln_eta_ratio).exp()
+    l.viscosity.ln() + expo * ln_eta_ratio
 }
 
 /// Limiting shear stress at pressure `p` (Pa), eq. 4: `τ_L = τ_L0 + β0 p`, Pa.
@@ -27,8 +32,8 @@ mod tests {
     #[test]
     fn roelands_limits() {
         let l = Lubricant::default();
-        // Ambient pressure: η0 exactly.
-        assert_eq!(roelands(&l, 0.0), l.viscosity);
+        // Ambient pressure: η0 (to the ulp of exp(ln η0): eq. 5 is evaluated in logarithms).
+        assert!((roelands(&l, 0.0) / l.viscosity - 1.0).abs() <= 4.0 * f64::EPSILON);
         // Low pressure: η ≈ η0 exp(α* p) with α* = Z ln(η0/η∞)/c_p (the Roelands pressure-viscosity coefficient).
         let alpha_star = l.roelands_index * (l.viscosity / l.roelands_viscosity_limit).ln() / l.roelands_pressure_constant;
         let p = 1e5;

@@ -98,7 +98,13 @@ fn extreme_but_valid_inputs_give_finite_outputs_or_an_error_never_nan() {
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), OK);
     assert!(all_outputs(c).iter().all(|&x| x == 0.0), "{:?}", all_outputs(c));
     let mut t = 0.1;
-    for (load, w) in [(1e9, 1.0), (20e3, 1e6), (1e9, 1e6), (1e-30, 1e6), (60e3, 1e-300), (1e9, -1e6), (1.0, 0.0)] {
+    // A load beyond the asperity model's capacity (5.05e8 N here) is refused, naming it,
+    // and the instance goes on.
+    let before = all_outputs(c);
+    assert_ne!(set(c, "load", 1e9), OK);
+    assert!(h.last().contains("load = 1000000000 N") && h.last().contains("capacity"), "{}", h.last());
+    assert_eq!(all_outputs(c), before);
+    for (load, w) in [(5e8, 1.0), (20e3, 1e6), (5e8, 1e6), (1e-30, 1e6), (60e3, 1e-300), (5e8, -1e6), (1.0, 0.0)] {
         assert_eq!(set(c, "load", load), OK);
         assert_eq!(set(c, "angular_velocity", w), OK);
         assert_eq!(fmi2DoStep(c, t, 0.1, 0), OK, "load {load} w {w}: {}", h.last());
@@ -106,17 +112,24 @@ fn extreme_but_valid_inputs_give_finite_outputs_or_an_error_never_nan() {
         let out = all_outputs(c);
         assert!(out.iter().all(|x| x.is_finite()), "load {load} w {w}: {out:?}");
     }
-    // Denormal loads are within the library's range too.
-    assert_eq!(set(c, "load", 5e-324), OK);
+    // A load of 1e-300 N is within the library's range.
+    assert_eq!(set(c, "load", 1e-300), OK);
     assert_eq!(set(c, "angular_velocity", 0.0), OK);
     assert_eq!(fmi2DoStep(c, t, 0.1, 0), OK);
     t += 0.1;
     assert!(all_outputs(c).iter().all(|x| x.is_finite()), "{:?}", all_outputs(c));
     // A step whose energy would overflow fails instead of returning inf.
-    assert_eq!(set(c, "load", 1e9), OK);
+    assert_eq!(set(c, "load", 5e8), OK);
     assert_eq!(set(c, "angular_velocity", 1e6), OK);
     assert_eq!(fmi2DoStep(c, t, 1e300, 0), ERROR);
     assert!(h.last().starts_with("fmi2DoStep: step from") && h.last().contains("dissipated_energy overflows"), "{}", h.last());
+    unsafe { fmi2FreeInstance(c) };
+    // A subnormal load: the band-edge film thickness overflows f64; the step fails naming it.
+    let c = h.ready(&[]);
+    assert_eq!(set(c, "load", 5e-324), OK);
+    assert_eq!(set(c, "angular_velocity", 0.0), OK);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), ERROR);
+    assert!(h.last().contains("film_thickness"), "{}", h.last());
     unsafe { fmi2FreeInstance(c) };
 }
 

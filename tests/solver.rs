@@ -251,3 +251,64 @@ fn extreme_operating_range_is_finite() {
         }
     }
 }
+
+#[test]
+fn asperity_capacity_bounds_the_load() {
+    // Fuzz finding 2: at rest eq. 19 gives h_c = d_d + σ_s t < 0 above ≈ 5.05e8 N for the
+    // paper's joint. Such loads are an error naming the load and the capacity.
+    let j = joint();
+    let cap = j.capacity();
+    assert!(cap > 5.0e8 && cap < 5.1e8, "capacity {cap}");
+    let below = j.evaluate(cap * (1.0 - 1e-6), 0.0).unwrap();
+    assert!(below.film_thickness > 0.0 && below.film_thickness < 1e-11, "{}", below.film_thickness);
+    for omega in [0.0, 1e-300, 1.0] {
+        let e = j.evaluate(cap * 1.01, omega).unwrap_err().to_string();
+        assert!(e.contains("load = ") && e.contains(" N") && e.contains("capacity"), "{e}");
+    }
+    // The capacity is where the rest film crosses zero: continuity of h_c in load below it.
+    let h1 = j.evaluate(cap * 0.5, 0.0).unwrap().film_thickness;
+    let h2 = j.evaluate(cap * 0.9, 0.0).unwrap().film_thickness;
+    assert!(h1 > h2 && h2 > 0.0);
+}
+
+#[test]
+fn overflowing_viscosity_is_harmless_at_rest_and_named_elsewhere() {
+    // Fuzz finding 7: with Z = 4× its default the Roelands viscosity at p_m overflows at
+    // 2.3e8 N; at rest μ must still be μ_c exactly (no ∞·0), and a moving point gives a
+    // finite μ (the Bair–Winer exponent is formed from ln η).
+    let mut p = Params::default();
+    p.lubricant.roelands_index *= 4.0;
+    let j = Joint::new(&p).unwrap();
+    let load = 2.3e8_f64.min(0.9 * j.capacity());
+    let rest = j.evaluate(load, 0.0).unwrap();
+    assert_eq!(rest.contact_viscosity, f64::INFINITY, "the case must overflow to test anything");
+    assert_eq!(rest.friction_coefficient, p.friction.boundary_friction_coefficient);
+    match j.evaluate(load, 1.0) {
+        Ok(op) => assert!(op.friction_coefficient.is_finite()),
+        Err(e) => panic!("{e}"),
+    }
+}
+
+#[test]
+fn degenerate_but_valid_parameters_never_give_nan() {
+    // Fuzz finding 1: subnormal lengths and moduli pass `validate` (they are > 0); the
+    // evaluation must then be an error that names a quantity, never a NaN.
+    for (name, v) in [("geometry.pin_radius", 8.5e-322), ("materials.pin_elastic_modulus", 5e-324), ("geometry.bush_length", 1e-300)] {
+        let mut p = Params::default();
+        p.set_by_name(name, v).unwrap();
+        if name == "geometry.pin_radius" {
+            p.geometry.bush_radius = 1e-3;
+        }
+        let Ok(j) = Joint::new(&p) else { continue };
+        for omega in [0.0, 1.0] {
+            match j.evaluate(20e3, omega) {
+                Ok(op) => {
+                    for v in [op.friction_coefficient, op.film_thickness, op.torque, op.lambda_ratio] {
+                        assert!(v.is_finite(), "{name}: {op:?}");
+                    }
+                }
+                Err(e) => assert!(!e.to_string().is_empty()),
+            }
+        }
+    }
+}

@@ -241,6 +241,13 @@ impl Model for PinJointModel {
             LOAD if !(v.is_finite() && v >= 0.0) => {
                 Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(v)))
             }
+            // Beyond the asperity model's capacity (pinjoint::Joint::capacity) the load is
+            // refused here, leaving the instance and its outputs as they were.
+            LOAD if self.evaluator.as_ref().is_some_and(|e| v >= e.joint().capacity()) => Err(format!(
+                "input load = {} N is beyond the asperity model's capacity of {:.6e} N for these parameters",
+                show(v),
+                self.evaluator.as_ref().map_or(f64::NAN, |e| e.joint().capacity())
+            )),
             FIDELITY if fidelity_of_code(v as i32).is_none() || v.fract() != 0.0 => Err(format!(
                 "parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)",
                 show(v)
