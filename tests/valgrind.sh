@@ -24,5 +24,5 @@ cc -std=c99 -D_POSIX_C_SOURCE=200809L -O1 -g -Wall -Werror -o "$work/fmu_cycles"
 
 echo "valgrind: $CYCLES instantiate/step/free cycles of $(basename "$FMU")"
 valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite --show-leak-kinds=definite \
-    --track-origins=yes --quiet \
+    --track-origins=yes --keep-debuginfo=yes --quiet \
     "$work/fmu_cycles" "$work/fmu/binaries/linux64/PinJoint.so" "$guid" "$CYCLES"

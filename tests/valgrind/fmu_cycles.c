@@ -39,6 +39,24 @@ static void logger(void *env, const char *name, int status, const char *category
     if (buf[0] == 0) { fprintf(stderr, "empty log message\n"); exit(2); }
 }
 
+typedef C (*fmi2Instantiate_t)(const char *, int, const char *, const char *, const Callbacks *, int, int);
+typedef void (*fmi2FreeInstance_t)(C);
+typedef int (*fmi2SetupExperiment_t)(C, int, double, double, int, double);
+typedef int (*fmi2EnterInitializationMode_t)(C);
+typedef int (*fmi2ExitInitializationMode_t)(C);
+typedef int (*fmi2Terminate_t)(C);
+typedef int (*fmi2Reset_t)(C);
+typedef int (*fmi2SetReal_t)(C, const VR *, size_t, const double *);
+typedef int (*fmi2GetReal_t)(C, const VR *, size_t, double *);
+typedef int (*fmi2DoStep_t)(C, double, double, int);
+typedef int (*fmi2GetFMUstate_t)(C, void **);
+typedef int (*fmi2SetFMUstate_t)(C, void *);
+typedef int (*fmi2FreeFMUstate_t)(C, void **);
+typedef int (*fmi2SerializedFMUstateSize_t)(C, void *, size_t *);
+typedef int (*fmi2SerializeFMUstate_t)(C, void *, char *, size_t);
+typedef int (*fmi2DeSerializeFMUstate_t)(C, const char *, size_t, void **);
+typedef int (*fmi2SetDebugLogging_t)(C, int, size_t, const char *const *);
+
 #define LOAD(T, name) T name = (T)dlsym(lib, #name); if (!name) { fprintf(stderr, "missing %s\n", #name); return 2; }
 #define EXPECT(call, want) do { int s_ = (call); if (s_ != (want)) { fprintf(stderr, "cycle %d: %s returned %d, expected %d\n", k, #call, s_, want); return 1; } } while (0)
 
@@ -49,23 +67,23 @@ int main(int argc, char **argv) {
     const char *guid = argv[2];
     int cycles = atoi(argv[3]);
 
-    LOAD(C (*)(const char *, int, const char *, const char *, const Callbacks *, int, int), fmi2Instantiate)
-    LOAD(void (*)(C), fmi2FreeInstance)
-    LOAD(int (*)(C, int, double, double, int, double), fmi2SetupExperiment)
-    LOAD(int (*)(C), fmi2EnterInitializationMode)
-    LOAD(int (*)(C), fmi2ExitInitializationMode)
-    LOAD(int (*)(C), fmi2Terminate)
-    LOAD(int (*)(C), fmi2Reset)
-    LOAD(int (*)(C, const VR *, size_t, const double *), fmi2SetReal)
-    LOAD(int (*)(C, const VR *, size_t, double *), fmi2GetReal)
-    LOAD(int (*)(C, double, double, int), fmi2DoStep)
-    LOAD(int (*)(C, void **), fmi2GetFMUstate)
-    LOAD(int (*)(C, void *), fmi2SetFMUstate)
-    LOAD(int (*)(C, void **), fmi2FreeFMUstate)
-    LOAD(int (*)(C, void *, size_t *), fmi2SerializedFMUstateSize)
-    LOAD(int (*)(C, void *, char *, size_t), fmi2SerializeFMUstate)
-    LOAD(int (*)(C, const char *, size_t, void **), fmi2DeSerializeFMUstate)
-    LOAD(int (*)(C, int, size_t, const char *const *), fmi2SetDebugLogging)
+    LOAD(fmi2Instantiate_t, fmi2Instantiate)
+    LOAD(fmi2FreeInstance_t, fmi2FreeInstance)
+    LOAD(fmi2SetupExperiment_t, fmi2SetupExperiment)
+    LOAD(fmi2EnterInitializationMode_t, fmi2EnterInitializationMode)
+    LOAD(fmi2ExitInitializationMode_t, fmi2ExitInitializationMode)
+    LOAD(fmi2Terminate_t, fmi2Terminate)
+    LOAD(fmi2Reset_t, fmi2Reset)
+    LOAD(fmi2SetReal_t, fmi2SetReal)
+    LOAD(fmi2GetReal_t, fmi2GetReal)
+    LOAD(fmi2DoStep_t, fmi2DoStep)
+    LOAD(fmi2GetFMUstate_t, fmi2GetFMUstate)
+    LOAD(fmi2SetFMUstate_t, fmi2SetFMUstate)
+    LOAD(fmi2FreeFMUstate_t, fmi2FreeFMUstate)
+    LOAD(fmi2SerializedFMUstateSize_t, fmi2SerializedFMUstateSize)
+    LOAD(fmi2SerializeFMUstate_t, fmi2SerializeFMUstate)
+    LOAD(fmi2DeSerializeFMUstate_t, fmi2DeSerializeFMUstate)
+    LOAD(fmi2SetDebugLogging_t, fmi2SetDebugLogging)
 
     Callbacks cb = {logger, NULL, NULL, NULL, NULL};
     const VR in[3] = {1, 2, 3};             /* angle, angular_velocity, load */
