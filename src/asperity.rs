@@ -135,7 +135,7 @@ mod tests {
         let p = 20e3;
         for gamma2 in [1.0, 1.3, 2.0, 10.0, 1e4] {
             let g = AsperityGroups::new(&s, p, r, e, b);
-            let ln_f = g.required_ln_f32(-(gamma2 as f64).ln());
+            let ln_f = g.required_ln_f32(-f64::ln(gamma2));
             let t = crate::gw::inverse_ln_f32(ln_f);
             let h = s.summit_mean_plane_offset + t * s.summit_height_std;
             let s_sub = Surface { asperity_density: s.asperity_density * gamma2, ..s };

@@ -246,7 +246,7 @@ mod tests {
         // (removes the (s−t)^{3/2} kink), on a fine grid. Independent of the w-substitution.
         for t in [-2.0, 0.3, 1.7, 5.0] {
             let n = 200_000;
-            let vmax = 12.0 + (-t as f64).max(0.0).sqrt() * 2.0;
+            let vmax = 12.0 + f64::max(-t, 0.0).sqrt() * 2.0;
             let h = vmax / n as f64;
             let f = |v: f64| 2.0 * v.powi(4) * (-(v * v + t).powi(2) / 2.0).exp();
             let mut s = f(0.0) + f(vmax);

@@ -77,14 +77,21 @@ pub struct Series {
     pub name: String,
     pub points: Vec<(f64, f64)>,
     pub style: Style,
+    /// Index into [`PALETTE`]; `None`: the series' position in the chart.
+    pub colour: Option<usize>,
 }
 
 impl Series {
     pub fn line(name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        Self { name: name.into(), points, style: Style::Line }
+        Self { name: name.into(), points, style: Style::Line, colour: None }
     }
     pub fn styled(mut self, style: Style) -> Self {
         self.style = style;
+        self
+    }
+    /// Draw in `PALETTE[index % 10]`, e.g. to give a model curve and its data points one colour.
+    pub fn coloured(mut self, index: usize) -> Self {
+        self.colour = Some(index);
         self
     }
 }
@@ -379,7 +386,7 @@ where
     }
 
     for (i, s) in c.series.iter().enumerate() {
-        let col = PALETTE[i % PALETTE.len()];
+        let col = PALETTE[s.colour.unwrap_or(i) % PALETTE.len()];
         let style = col.stroke_width(2);
         let segments = split_segments(&s.points, c.x.scale, c.y.scale);
         let mut first = true;
@@ -387,9 +394,9 @@ where
             let ann = match s.style {
                 Style::Line => ch.draw_series(LineSeries::new(seg, style)).map_err(err)?,
                 Style::Dashed => ch.draw_series(DashedLineSeries::new(seg, 8, 5, style)).map_err(err)?,
-                Style::Points => ch.draw_series(seg.into_iter().map(|p| Circle::new(p, 3, col.filled()))).map_err(err)?,
+                Style::Points => ch.draw_series(seg.into_iter().map(|p| Circle::new(p, 5, col.filled()))).map_err(err)?,
                 Style::LinePoints => {
-                    ch.draw_series(seg.iter().map(|&p| Circle::new(p, 3, col.filled()))).map_err(err)?;
+                    ch.draw_series(seg.iter().map(|&p| Circle::new(p, 4, col.filled()))).map_err(err)?;
                     ch.draw_series(LineSeries::new(seg, style)).map_err(err)?
                 }
             };
@@ -654,6 +661,9 @@ where
     Ok(())
 }
 
+/// Tick mark length on the colour bar (px); labels sit twice as far from the bar.
+const COLOUR_BAR_TICK: i32 = 5;
+
 fn draw_colour_bar<X, Y>(area: &Area<'_>, h: &HeatMap, x: X, y: Y, zr: (f64, f64)) -> Result<(), PlotError>
 where
     X: AsRangedCoord<Value = f64>,
@@ -678,9 +688,13 @@ where
         Rectangle::new([(0.0, at(t0)), (1.0, at(t1))], viridis(0.5 * (t0 + t1)).filled())
     }))
     .map_err(err)?;
+    // The bar's plotting area is only ~25 px wide, and plotters' default tick mark is 5 % of
+    // it (1 px) with the labels 2 px from the axis: a label's last glyph then merges with the
+    // axis line ("0.11" reads "0.1|"). Fixed-size ticks keep the labels clear of the bar.
     ch.configure_mesh()
         .disable_mesh()
         .disable_x_axis()
+        .set_all_tick_mark_size(COLOUR_BAR_TICK)
         .y_desc(h.z_axis.label.as_str())
         .y_label_formatter(&|v| tick_label(*v))
         .label_style((FONT, 13))
@@ -753,6 +767,75 @@ mod tests {
         }
         let svg = heat_map(&h, (600, 400)).unwrap();
         assert!(svg.replace('\n', "").contains(">2</text>"), "contour label missing");
+    }
+
+    /// (x, anchor, font size, text) of every horizontal `<text>` element of an SVG from plotters.
+    fn texts(svg: &str) -> Vec<(f64, String, f64, String)> {
+        let attr = |tag: &str, name: &str| -> String {
+            let key = format!("{name}=\"");
+            let i = tag.find(&key).map(|i| i + key.len()).unwrap_or(0);
+            tag[i..].split('"').next().unwrap_or("").to_string()
+        };
+        svg.split("<text ")
+            .skip(1)
+            .filter_map(|t| {
+                let (tag, rest) = t.split_once('>').unwrap();
+                if tag.contains("rotate(") {
+                    return None;
+                }
+                let body = rest.split("</text>").next().unwrap().trim().to_string();
+                Some((attr(tag, "x").parse().unwrap(), attr(tag, "text-anchor"), attr(tag, "font-size").parse().unwrap(), body))
+            })
+            .collect()
+    }
+
+    #[test]
+    fn colour_bar_labels_stand_clear_of_the_bar_and_inside_the_image() {
+        let xs: Vec<f64> = (0..20).map(|i| 1.0 + i as f64).collect();
+        let ys: Vec<f64> = (0..10).map(|j| 5.0 + 6.0 * j as f64).collect();
+        let h = HeatMap {
+            title: "mu".into(),
+            x: Axis::log("speed [rpm]"),
+            y: Axis::linear("load [kN]"),
+            xs: xs.clone(),
+            ys: ys.clone(),
+            z: ys.iter().map(|_| xs.iter().map(|&x| 0.12 - 0.005 * x).collect()).collect(),
+            z_axis: Axis::linear("μ [-]"),
+            contours: vec![],
+            regions: vec![],
+        };
+        let width = 960.0;
+        let svg = heat_map(&h, (960, 640)).unwrap();
+        // The colour bar's vertical axis line: the right-most vertical polyline.
+        let axis_x = svg
+            .split("points=\"")
+            .skip(1)
+            .filter_map(|p| {
+                let pts: Vec<(f64, f64)> = p.split('"').next()?.split_whitespace().filter_map(|xy| {
+                    let (a, b) = xy.split_once(',')?;
+                    Some((a.parse().ok()?, b.parse().ok()?))
+                }).collect();
+                (pts.len() == 2 && pts[0].0 == pts[1].0 && (pts[0].1 - pts[1].1).abs() > 300.0).then_some(pts[0].0)
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert!(axis_x > width - 150.0, "{axis_x}");
+        let labels: Vec<_> = texts(&svg).into_iter().filter(|t| t.0 > width - 150.0 && t.1 == "end").collect();
+        assert!(labels.iter().any(|t| t.3 == "0.11"), "{labels:?}");
+        for (x, _, size, text) in &labels {
+            // A generous width estimate for digits in a sans-serif font: 0.6 em each.
+            let left = x - 0.6 * size * text.chars().count() as f64;
+            assert!(axis_x - x >= 8.0, "label {text} ends {} px from the bar", axis_x - x);
+            assert!(left > width - 150.0 && *x < width, "label {text} spans {left}..{x}");
+        }
+        for (x, anchor, size, text) in texts(&svg) {
+            let w = 0.6 * size * text.chars().count() as f64;
+            let (lo, hi) = match anchor.as_str() {
+                "end" => (x - w, x),
+                "middle" => (x - w / 2.0, x + w / 2.0),
+                _ => (x, x + w),
+            };
+            assert!(lo >= 0.0 && hi <= width, "{text} spans {lo}..{hi}");
+        }
     }
 
     #[test]

@@ -2,6 +2,7 @@
 //! file and line, so the user can fix the input without reading the source.
 
 use pinjoint::plot::PlotError;
+use pinjoint::rig::RigError;
 use pinjoint::{ModelError, ParamError};
 use std::io;
 use std::path::PathBuf;
@@ -27,6 +28,9 @@ pub enum CliError {
     Invalid(String),
     #[error(transparent)]
     Plot(#[from] PlotError),
+    /// A rig simulation (`cycle`, `figures`) that could not go on.
+    #[error("rig simulation: {0}")]
+    Rig(#[from] RigError),
     #[error("writing to standard output: {0}")]
     Stdout(io::Error),
 }

@@ -3,7 +3,14 @@
 //! variant of [`Command`].
 
 pub mod common;
+pub mod cycle;
+pub mod cycle_plots;
+pub mod cycle_run;
 pub mod error;
+pub mod figures;
+pub mod figures_index;
+pub mod figures_plots;
+pub mod figures_rig;
 pub mod map;
 pub mod output;
 pub mod params_cmd;
@@ -24,11 +31,14 @@ Model parameters default to the paper's rig (Tables 1-3, μ_c = 0.12); change th
 file passed as --params (start from `pinjoint params`).
 
 Examples:
+  pinjoint figures --output figures/                the paper's figures 3, 4, 7-13 and an index.html
   pinjoint point --load 20000 --rpm 10              one operating point, as a table
   pinjoint point --load 20000 --speed 1.05 --json   the same as JSON
   pinjoint sweep --input pts.csv --output out.csv   many points (columns load,speed) in parallel
   pinjoint stribeck --load 20000 --output out/      the paper's Figure 3 (CSV + SVG)
   pinjoint map --output out/                        the paper's Figure 4 (CSV + SVG)
+  pinjoint cycle --frequency 1 --amplitude 40 --load 20000 --cycles 3 --output out/
+                                                    rig strokes (Figures 7, 11-13), eq. 11 average
   pinjoint params > joint.toml                      a parameter file to edit
 
 Run `pinjoint <command> --help` for each command's details.";
@@ -47,6 +57,8 @@ pub enum Command {
     Sweep(sweep::SweepCmd),
     Stribeck(stribeck::StribeckCmd),
     Map(map::MapCmd),
+    Cycle(cycle::CycleCmd),
+    Figures(figures::FiguresCmd),
 }
 
 pub fn run(cli: &Cli) -> error::Result<()> {
@@ -56,6 +68,8 @@ pub fn run(cli: &Cli) -> error::Result<()> {
         Command::Sweep(c) => sweep::run(c),
         Command::Stribeck(c) => stribeck::run(c),
         Command::Map(c) => map::run(c),
+        Command::Cycle(c) => cycle::run(c),
+        Command::Figures(c) => figures::run(c),
     }
 }
 

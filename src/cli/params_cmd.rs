@@ -1,6 +1,7 @@
 //! `pinjoint params`: print the complete parameter file (defaults, or a file's values filled up).
 
 use super::common::ParamsArg;
+use super::cycle::load_rig_config;
 use super::error::Result;
 use super::output::to_stdout;
 use clap::Args;
@@ -11,17 +12,22 @@ use clap::Args;
     long_about = "Print the complete parameter file: every key of Tables 1-3 of the paper plus the \
 boundary friction coefficient, in SI units, with symbol, unit and meaning as comments.\n\
 What it prints loads back unchanged. With --params, prints that file's values with every \
-missing key filled in by its default.\n\n\
+missing key filled in by its default. With --rig, adds the [rig] section of the simulated test rig \
+(`pinjoint cycle`; constants and their reasoning in src/rig/params.rs).\n\n\
 Examples:\n  \
 pinjoint params > my-joint.toml        # start a parameter file, then edit it\n  \
-pinjoint point --load 20000 --rpm 10 --params my-joint.toml"
+pinjoint point --load 20000 --rpm 10 --params my-joint.toml\n  \
+pinjoint params --rig > rig.toml       # model and rig, for `pinjoint cycle --params rig.toml`"
 )]
 pub struct ParamsCmd {
     #[command(flatten)]
     pub params: ParamsArg,
+    /// Also print the [rig] section (the file then suits `pinjoint cycle --params`)
+    #[arg(long)]
+    pub rig: bool,
 }
 
 pub fn run(cmd: &ParamsCmd) -> Result<()> {
-    let text = cmd.params.load()?.to_toml_string();
+    let text = if cmd.rig { load_rig_config(cmd.params.params.as_ref())?.to_toml_string() } else { cmd.params.load()?.to_toml_string() };
     to_stdout(|w| w.write_all(text.as_bytes()))
 }

@@ -1,0 +1,184 @@
+//! `pinjoint cycle`: whole articulation strokes on the simulated rig (the paper's Figures 7,
+//! 11–13): the trace as CSV, torque against time and angle as SVG, and the paper's
+//! cycle-average friction coefficient (eq. 11).
+
+use super::common::{positive, readable, RAD_S_PER_RPM};
+use super::cycle_plots::{torque_angle_svg, torque_time_svg};
+use super::cycle_run::{cycle_csv, default_skip, CycleRun};
+use super::error::{CliError, Result};
+use super::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
+use clap::{Args, ValueEnum};
+use pinjoint::rig::{Formulation, Method, RigConfig};
+use pinjoint::Joint;
+use std::path::PathBuf;
+
+#[derive(Args, Debug)]
+#[command(
+    about = "Simulate whole strokes on the paper's torsion-actuator rig (Figures 7, 11-13): CSV, SVG, eq. 11 average",
+    long_about = "Swing the pin through sine strokes θ_cmd = A·sin(2πft) on the simulated rig (servo-hydraulic \
+torsional actuator in angle control, stick at reversal, the friction core at each speed) and write:\n  \
+DIR/cycle.csv         every sample: time [s], command_angle [rad], angle [rad], angular_velocity [rad/s], \
+torque [N·m] (the actuator's transducer), friction_torque [N·m] (on the pin, signed), \
+friction_coefficient [-] (the core's μ(P,|ω|)), film_thickness [m] (h_c), fluid_load_fraction [-] (1/γ1), \
+stuck [0/1]\n  \
+DIR/torque_time.svg   recorded torque against time (Figures 11-13), the core's quasi-static torque dashed\n  \
+DIR/torque_angle.svg  recorded torque against the pin angle over the averaged cycles (Figure 7d)\n\
+and print the cycle-average friction coefficient the paper's way (section 5, eq. 11: mean |torque| over \
+whole cycles divided by R·P), leaving out the first (start-up) stroke when there is more than one, \
+beside the core's quasi-static μ at the stroke's peak speed 2πfA.\n\
+The run starts from rest at θ = 0 at t = 0. Rig constants come from the [rig] section of --params \
+(`pinjoint params --rig` prints a complete file to start from); the flags override the file.\n\n\
+Examples:\n  \
+pinjoint cycle --frequency 1 --amplitude 40 --load 20000 --cycles 3 --output out/1Hz\n  \
+pinjoint cycle --frequency 0.03 --amplitude 40 --load 60000 --cycles 2 --method dop853 --output out/slow"
+)]
+pub struct CycleCmd {
+    /// Stroke frequency f, in Hz [default: the file's rig.frequency, else 1 Hz]
+    #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
+    pub frequency: Option<f64>,
+    /// Stroke amplitude A, in degrees (±A) [default: the file's rig.amplitude, else 40°]
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
+    pub amplitude: Option<f64>,
+    /// Radial load P on the pin, in N (> 0) [default: the file's rig.load, else 20000 N]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub load: Option<f64>,
+    /// Number of whole strokes to simulate (>= 1)
+    #[arg(long, value_name = "COUNT", default_value_t = 3)]
+    pub cycles: usize,
+    /// Strokes left out of the average at the start [default: 1 if --cycles >= 2, else 0]
+    #[arg(long, value_name = "COUNT")]
+    pub skip_cycles: Option<usize>,
+    /// Samples written per stroke (>= 8)
+    #[arg(long, value_name = "COUNT", default_value_t = 2000)]
+    pub samples_per_cycle: usize,
+    /// Stick/slip hybrid system, or one smooth regularised ODE [default: the file's, else hybrid]
+    #[arg(long, value_enum)]
+    pub formulation: Option<FormulationArg>,
+    /// ODE integrator [default: the file's, else dopri5]
+    #[arg(long, value_enum)]
+    pub method: Option<MethodArg>,
+    /// Parameter file (TOML): the model's sections and [rig], any subset of keys
+    #[arg(long, value_name = "FILE")]
+    pub params: Option<PathBuf>,
+    /// Output directory (created if needed)
+    #[arg(long, value_name = "DIR")]
+    pub output: PathBuf,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum FormulationArg {
+    Hybrid,
+    Regularised,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum MethodArg {
+    Dopri5,
+    Dop853,
+    Rk4,
+}
+
+/// Most strokes and samples one run may hold in memory.
+pub const MAX_CYCLES: usize = 100_000;
+pub const MAX_SAMPLES: usize = 20_000_000;
+
+/// The model and rig parameters of a file (model sections + `[rig]`), or the defaults.
+pub fn load_rig_config(path: Option<&PathBuf>) -> Result<RigConfig> {
+    match path {
+        None => Ok(RigConfig::default()),
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+            RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
+        }
+    }
+}
+
+/// The configuration of this run: the file, overridden by the flags, validated.
+fn config(cmd: &CycleCmd) -> Result<RigConfig> {
+    let mut cfg = load_rig_config(cmd.params.as_ref())?;
+    if let Some(f) = cmd.frequency {
+        cfg.rig.frequency = positive("frequency", f, "Hz")?;
+    }
+    if let Some(a) = cmd.amplitude {
+        if !(a.is_finite() && a >= 0.0) {
+            return Err(CliError::Invalid(format!("amplitude = {a} deg is invalid: it must be a finite number >= 0 deg")));
+        }
+        cfg.rig.amplitude = a.to_radians();
+    }
+    if let Some(p) = cmd.load {
+        cfg.rig.load = positive("load", p, "N")?;
+    }
+    if let Some(m) = cmd.formulation {
+        cfg.rig.formulation = match m {
+            FormulationArg::Hybrid => Formulation::Hybrid,
+            FormulationArg::Regularised => Formulation::Regularised,
+        };
+    }
+    if let Some(m) = cmd.method {
+        cfg.rig.method = match m {
+            MethodArg::Dopri5 => Method::Dopri5,
+            MethodArg::Dop853 => Method::Dop853,
+            MethodArg::Rk4 => Method::Rk4,
+        };
+    }
+    if cfg.rig.load <= 0.0 {
+        return Err(CliError::Invalid(format!(
+            "load = {} N is invalid: the cycle-average friction coefficient needs a load > 0 N",
+            cfg.rig.load
+        )));
+    }
+    cfg.validate()?;
+    Ok(cfg)
+}
+
+/// Stroke and sample counts: (cycles, skip, samples per cycle).
+fn counts(cmd: &CycleCmd) -> Result<(usize, usize, usize)> {
+    let n = cmd.cycles;
+    if !(1..=MAX_CYCLES).contains(&n) {
+        return Err(CliError::Invalid(format!("cycles = {n} is invalid: it must be between 1 and {MAX_CYCLES}")));
+    }
+    let skip = cmd.skip_cycles.unwrap_or_else(|| default_skip(n));
+    if skip >= n {
+        return Err(CliError::Invalid(format!("skip-cycles = {skip} is invalid: it must be < cycles = {n}")));
+    }
+    let k = cmd.samples_per_cycle;
+    if k < 8 || k.saturating_mul(n) > MAX_SAMPLES {
+        return Err(CliError::Invalid(format!(
+            "samples-per-cycle = {k} is invalid: it must be >= 8, and cycles × samples-per-cycle <= {MAX_SAMPLES}"
+        )));
+    }
+    Ok((n, skip, k))
+}
+
+pub fn run(cmd: &CycleCmd) -> Result<()> {
+    let cfg = config(cmd)?;
+    let (cycles, skip, per_cycle) = counts(cmd)?;
+    let joint = Joint::new(&cfg.model)?;
+    let run = CycleRun::simulate(&cfg, cycles, per_cycle, skip)?;
+    let peak = run.peak_command_speed();
+    let mu_peak = run.quasi_static_at_peak(&joint)?;
+    let (time_svg, angle_svg) = (torque_time_svg(&run)?, torque_angle_svg(&run)?);
+    let dir = output_dir(&cmd.output)?;
+    let paths = [dir.join("cycle.csv"), dir.join("torque_time.svg"), dir.join("torque_angle.svg")];
+    write_atomic(&paths[0], |w| cycle_csv(w, &run.samples))?;
+    write_text(&paths[1], &time_svg)?;
+    write_text(&paths[2], &angle_svg)?;
+    report_written(&paths)?;
+    to_stdout(|w| {
+        writeln!(
+            w,
+            "cycle-average friction coefficient (eq. 11: mean |torque| over cycles {}-{} / (R·P)): {:?}",
+            skip + 1,
+            cycles,
+            run.average_friction_coefficient
+        )?;
+        writeln!(
+            w,
+            "quasi-static core friction coefficient at the stroke's peak speed {} rad/s ({} rpm): {}",
+            readable(peak),
+            readable(peak / RAD_S_PER_RPM),
+            readable(mu_peak)
+        )?;
+        writeln!(w, "mean |ω| over those cycles: {} rad/s", readable(run.mean_speed))
+    })
+}

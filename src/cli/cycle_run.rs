@@ -1,0 +1,153 @@
+//! One rig simulation as the front ends use it (`cycle`, `figures`): run whole strokes, the
+//! paper's cycle-average friction coefficient (eq. 11) and the cycle's characteristic speeds,
+//! the quasi-static core values to compare with, and the trace as CSV.
+
+use super::common::{csv_io, exact};
+use super::error::Result;
+use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, RigConfig, Sample};
+use pinjoint::Joint;
+use std::f64::consts::TAU;
+
+/// The columns of `cycle.csv` (SI units: s, rad, rad, rad/s, N·m, N·m, -, m, -, 0/1).
+pub const CYCLE_COLUMNS: [&str; 10] = [
+    "time",
+    "command_angle",
+    "angle",
+    "angular_velocity",
+    "torque",
+    "friction_torque",
+    "friction_coefficient",
+    "film_thickness",
+    "fluid_load_fraction",
+    "stuck",
+];
+
+/// A finished rig run of whole strokes and what the paper computes from it.
+#[derive(Debug, Clone)]
+pub struct CycleRun {
+    pub config: RigConfig,
+    /// Strokes simulated (from rest at t = 0).
+    pub cycles: usize,
+    /// Strokes left out of the averages (start-up transient).
+    pub skip: usize,
+    pub samples: Vec<Sample>,
+    /// Eq. 11: mean |recorded torque| over cycles skip+1..=cycles, divided by R·P.
+    pub average_friction_coefficient: f64,
+    /// Time-mean of |ω| over the same cycles (rad/s): the characteristic speed of Figures 8, 9.
+    pub mean_speed: f64,
+    /// Root mean square of ω over the same cycles (rad/s).
+    pub rms_speed: f64,
+}
+
+/// The default number of start-up strokes left out: the first when there is more than one.
+pub fn default_skip(cycles: usize) -> usize {
+    usize::from(cycles >= 2)
+}
+
+impl CycleRun {
+    /// Simulate `cycles` strokes of `config` with `samples_per_cycle` samples each and average
+    /// over the strokes after the first `skip` (which must be < `cycles`).
+    pub fn simulate(config: &RigConfig, cycles: usize, samples_per_cycle: usize, skip: usize) -> Result<Self> {
+        debug_assert!(skip < cycles);
+        let samples = run_cycles(config, cycles as f64, samples_per_cycle)?;
+        let (f, r) = (config.rig.frequency, config.model.geometry.pin_radius);
+        let average_friction_coefficient = cycle_average_friction_coefficient(&samples, f, r, skip).unwrap_or(f64::NAN);
+        let mut run = Self { config: *config, cycles, skip, samples, average_friction_coefficient, mean_speed: f64::NAN, rms_speed: f64::NAN };
+        let w = run.window();
+        let (mean, rms) = (time_mean(w, |s| s.angular_velocity.abs()), time_mean(w, |s| s.angular_velocity * s.angular_velocity).sqrt());
+        (run.mean_speed, run.rms_speed) = (mean, rms);
+        Ok(run)
+    }
+
+    pub fn period(&self) -> f64 {
+        self.config.rig.period()
+    }
+
+    /// The samples of the averaged cycles (both ends included).
+    pub fn window(&self) -> &[Sample] {
+        let p = self.period();
+        let (t0, t1) = (self.skip as f64 * p, self.cycles as f64 * p);
+        let tol = 1e-9 * p;
+        let a = self.samples.partition_point(|s| s.time < t0 - tol);
+        let b = self.samples.partition_point(|s| s.time <= t1 + tol);
+        &self.samples[a..b]
+    }
+
+    /// Peak speed of the command, 2π f A (rad/s).
+    pub fn peak_command_speed(&self) -> f64 {
+        TAU * self.config.rig.frequency * self.config.rig.amplitude
+    }
+
+    pub fn load(&self) -> f64 {
+        self.config.rig.load
+    }
+
+    /// The core's μ(P, ω) at the stroke's peak speed: the lowest friction a quasi-static stroke
+    /// reaches (mid-stroke).
+    pub fn quasi_static_at_peak(&self, joint: &Joint) -> Result<f64> {
+        Ok(joint.evaluate(self.load(), self.peak_command_speed())?.friction_coefficient)
+    }
+
+    /// What eq. 11 gives for a perfect rig: [`stroke_average`] at this run's load and stroke.
+    pub fn quasi_static_average(&self, joint: &Joint) -> Result<f64> {
+        stroke_average(joint, self.load(), self.config.rig.frequency, self.config.rig.amplitude)
+    }
+}
+
+/// The core's μ(P, |θ̇_cmd(t)|) averaged over a sine stroke θ_cmd = A·sin(2πft) (midpoint
+/// rule, 512 points a stroke): the cycle-average of eq. 11 for a rig that follows its command
+/// exactly and never sticks.
+pub fn stroke_average(joint: &Joint, load: f64, frequency: f64, amplitude: f64) -> Result<f64> {
+    const N: usize = 512;
+    let peak = TAU * frequency * amplitude;
+    let mut sum = 0.0;
+    for k in 0..N {
+        let phase = TAU * (k as f64 + 0.5) / N as f64;
+        sum += joint.evaluate(load, (peak * phase.cos()).abs())?.friction_coefficient;
+    }
+    Ok(sum / N as f64)
+}
+
+/// Trapezoidal time-mean of `f` over consecutive samples (NaN if fewer than two).
+pub fn time_mean(samples: &[Sample], f: impl Fn(&Sample) -> f64) -> f64 {
+    let (mut sum, mut span) = (0.0, 0.0);
+    for p in samples.windows(2) {
+        let dt = p[1].time - p[0].time;
+        sum += 0.5 * dt * (f(&p[0]) + f(&p[1]));
+        span += dt;
+    }
+    if span > 0.0 { sum / span } else { f64::NAN }
+}
+
+/// The core's quasi-static torque at a sample's speed, signed like the recorded torque
+/// (sign ω · μ(P, |ω|) · R · P); NaN while stuck (no speed to evaluate at).
+pub fn core_torque(s: &Sample, pin_radius: f64) -> f64 {
+    if s.stuck || s.angular_velocity == 0.0 {
+        f64::NAN
+    } else {
+        s.angular_velocity.signum() * s.friction_coefficient * pin_radius * s.load
+    }
+}
+
+/// The trace as CSV with [`CYCLE_COLUMNS`], every number at full precision.
+pub fn cycle_csv(w: &mut dyn std::io::Write, samples: &[Sample]) -> std::io::Result<()> {
+    let mut wtr = csv::Writer::from_writer(w);
+    wtr.write_record(CYCLE_COLUMNS).map_err(csv_io)?;
+    for s in samples {
+        let row = [
+            exact(s.time),
+            exact(s.command_angle),
+            exact(s.angle),
+            exact(s.angular_velocity),
+            exact(s.torque),
+            exact(s.friction_torque),
+            exact(s.friction_coefficient),
+            exact(s.film_thickness),
+            exact(s.fluid_load_fraction),
+            u8::from(s.stuck).to_string(),
+        ];
+        wtr.write_record(&row).map_err(csv_io)?;
+    }
+    wtr.flush()?;
+    Ok(())
+}

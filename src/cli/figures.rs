@@ -1,0 +1,185 @@
+//! `pinjoint figures`: the paper's Figures 3, 4, 7, 8–10 (simulated side) and 11–13 in one run,
+//! on the built-in parameters, with an index page and a README in the output directory.
+
+use super::common::{csv_io, exact, lin_space, log_space, readable, PAPER_RPM_RANGE, RAD_S_PER_RPM};
+use super::error::Result;
+use super::figures_index::{entries, html, markdown, RunInfo};
+use super::figures_plots::{fig10_svg, fig7_svg, fig8_svg, fig9_svg, torque_cycle_svg, CoreCurves};
+use super::figures_rig::{at_frequency, averages_csv, conditions, find, simulate_all, traces_csv, RigResult, RigSettings, PAPER_FREQUENCIES};
+use super::map::{write_map, Grid, PAPER_LOADS};
+use super::output::{output_dir, to_stdout, write_atomic, write_text};
+use super::stribeck::{write_stribeck, DEFAULT_SPEED_RANGE};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use pinjoint::rig::RigConfig;
+use pinjoint::Joint;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+#[derive(Args, Debug)]
+#[command(
+    about = "Reproduce the paper's figures (3, 4, 7, 8-10 simulated, 11-13) in one run, with index.html",
+    long_about = "Reproduce the paper's figures on the built-in parameters and write them, with the data \
+behind each, into DIR:\n  \
+stribeck.svg/.csv                 Figure 3: μ, 1/γ1, 1/γ2, λ against Sommerfeld number at 20 kN\n  \
+map_lambda.svg, map_friction.svg, map_curves.svg, map.csv   Figure 4: λ and μ over 5-60 kN, 1-800 rpm\n  \
+fig07_cycle_1Hz_20kN.svg/.csv     Figure 7: one 1 Hz stroke (angle, speed, torque against time and angle)\n  \
+fig08_mu_sommerfeld.svg           Figure 8: cycle-average μ (eq. 11) against Sommerfeld number\n  \
+fig09_mu_sliding_speed.svg        Figure 9: ... against sliding speed\n  \
+fig10_mu_load.svg                 Figure 10: ... against load\n  \
+rig_averages.csv, core_curves.csv the data of Figures 8-10\n  \
+fig11_torque_0.03Hz.svg/.csv, fig12_torque_0.3Hz.svg/.csv, fig13_torque_1Hz.svg/.csv   Figures 11-13\n  \
+index.html, README.md             every figure with a caption comparing it with the paper\n\
+The rig side is 15 simulations (loads 5, 10, 20, 40, 60 kN × 0.03, 0.3, 1 Hz, ±40°), two strokes \
+each from rest, the first left out, run on every core. The x value of a run in Figures 8 and 9 is \
+the time-mean of |ω| over the averaged stroke. Progress is shown on standard error when it is a \
+terminal. A full run takes a few seconds in a release build; --quick is coarser still.\n\n\
+Example:\n  pinjoint figures --output figures"
+)]
+pub struct FiguresCmd {
+    /// Output directory (created if needed)
+    #[arg(long, value_name = "DIR")]
+    pub output: PathBuf,
+    /// Coarser sweeps, fewer samples, looser tolerances: every file, a fraction of the time
+    #[arg(long)]
+    pub quick: bool,
+}
+
+/// Sizes of the core sweeps.
+struct CoreSettings {
+    stribeck_points: usize,
+    map_loads: usize,
+    map_speeds: usize,
+    curve_points: usize,
+}
+
+impl CoreSettings {
+    fn new(quick: bool) -> Self {
+        if quick {
+            Self { stribeck_points: 41, map_loads: 12, map_speeds: 30, curve_points: 30 }
+        } else {
+            Self { stribeck_points: 121, map_loads: 56, map_speeds: 100, curve_points: 120 }
+        }
+    }
+}
+
+/// `core_curves.csv`: the lines of Figures 8–10.
+fn core_csv(w: &mut dyn std::io::Write, core: &CoreCurves, pin_radius: f64) -> std::io::Result<()> {
+    let mut wtr = csv::Writer::from_writer(w);
+    wtr.write_record(["curve", "frequency", "load", "speed", "sliding_speed", "sommerfeld_number", "friction_coefficient"]).map_err(csv_io)?;
+    for (&p, curve) in PAPER_LOADS.iter().zip(&core.curves) {
+        for &(w, s, mu) in curve {
+            let row = [exact(f64::NAN), exact(p), exact(w), exact(w * pin_radius), exact(s), exact(mu)];
+            wtr.write_record(std::iter::once("steady".to_string()).chain(row)).map_err(csv_io)?;
+        }
+    }
+    for (&f, averages) in PAPER_FREQUENCIES.iter().zip(&core.stroke_averages) {
+        for (&p, &mu) in core.loads.iter().zip(averages) {
+            let row = [exact(f), exact(p), exact(f64::NAN), exact(f64::NAN), exact(f64::NAN), exact(mu)];
+            wtr.write_record(std::iter::once("stroke_average".to_string()).chain(row)).map_err(csv_io)?;
+        }
+    }
+    wtr.flush()?;
+    Ok(())
+}
+
+fn progress(total: u64) -> ProgressBar {
+    if !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(total);
+    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg} [{elapsed}]").expect("valid template"));
+    bar
+}
+
+/// The core figures (3, 4) into `dir`.
+fn core_figures(dir: &Path, joint: &Joint, s: &CoreSettings) -> Result<Vec<PathBuf>> {
+    let (lo, hi) = DEFAULT_SPEED_RANGE;
+    let mut paths = write_stribeck(dir, joint, 20e3, &log_space(lo, hi, s.stribeck_points))?;
+    let grid = Grid {
+        loads: lin_space(PAPER_LOADS[0], PAPER_LOADS[PAPER_LOADS.len() - 1], s.map_loads),
+        speeds: log_space(PAPER_RPM_RANGE.0 * RAD_S_PER_RPM, PAPER_RPM_RANGE.1 * RAD_S_PER_RPM, s.map_speeds),
+    };
+    paths.extend(write_map(dir, joint, &grid)?);
+    Ok(paths)
+}
+
+/// Writes one CSV's content.
+type CsvFill<'a> = Box<dyn Fn(&mut dyn std::io::Write) -> std::io::Result<()> + 'a>;
+
+/// Render and write Figures 7–13 and their data.
+fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius: f64) -> Result<Vec<PathBuf>> {
+    let mut files: Vec<(String, String)> = Vec::new();
+    let mut csvs: Vec<(&str, CsvFill<'_>)> = Vec::new();
+    if let Some(r) = find(results, 1.0, 20e3) {
+        files.push(("fig07_cycle_1Hz_20kN.svg".into(), fig7_svg(r)?));
+        csvs.push(("fig07_cycle_1Hz_20kN.csv", Box::new(move |w| traces_csv(w, &[&r.run]))));
+    }
+    files.push(("fig08_mu_sommerfeld.svg".into(), fig8_svg(results, core)?));
+    files.push(("fig09_mu_sliding_speed.svg".into(), fig9_svg(results, core, pin_radius)?));
+    files.push(("fig10_mu_load.svg".into(), fig10_svg(results, core)?));
+    csvs.push(("rig_averages.csv", Box::new(|w| averages_csv(w, results))));
+    csvs.push(("core_curves.csv", Box::new(|w| core_csv(w, core, pin_radius))));
+    let names = ["fig11_torque_0.03Hz", "fig12_torque_0.3Hz", "fig13_torque_1Hz"];
+    for ((i, &f), name) in PAPER_FREQUENCIES.iter().enumerate().zip(names) {
+        files.push((format!("{name}.svg"), torque_cycle_svg(results, f, 20e3, 11 + i as u32)?));
+        let runs: Vec<_> = at_frequency(results, f).into_iter().map(|r| &r.run).collect();
+        csvs.push((["fig11_torque_0.03Hz.csv", "fig12_torque_0.3Hz.csv", "fig13_torque_1Hz.csv"][i], Box::new(move |w| traces_csv(w, &runs))));
+    }
+    let mut paths = Vec::new();
+    for (name, svg) in &files {
+        let p = dir.join(name);
+        write_text(&p, svg)?;
+        paths.push(p);
+    }
+    for (name, fill) in &csvs {
+        let p = dir.join(name);
+        write_atomic(&p, |w| fill(w))?;
+        paths.push(p);
+    }
+    Ok(paths)
+}
+
+pub fn run(cmd: &FiguresCmd) -> Result<()> {
+    let start = Instant::now();
+    let cfg = RigConfig::default();
+    let joint = Joint::new(&cfg.model)?;
+    let pin_radius = cfg.model.geometry.pin_radius;
+    let core_settings = CoreSettings::new(cmd.quick);
+    let rig_settings = if cmd.quick { RigSettings::quick() } else { RigSettings::full() };
+    let dir = output_dir(&cmd.output)?;
+
+    let bar = progress(conditions().len() as u64 + 3);
+    bar.set_message("rig runs and core sweeps");
+    let (core_paths, rig) = rayon::join(
+        || {
+            let paths = core_figures(&dir, &joint, &core_settings);
+            bar.inc(1);
+            let curves = CoreCurves::compute(&joint, cfg.rig.amplitude, core_settings.curve_points);
+            bar.inc(1);
+            paths.and_then(|p| curves.map(|c| (p, c)))
+        },
+        || simulate_all(&joint, &cfg, rig_settings, &bar),
+    );
+    let (mut paths, core) = core_paths?;
+    let results = rig?;
+    bar.set_message("figures");
+    paths.extend(rig_figures(&dir, &results, &core, pin_radius)?);
+    let info = RunInfo { quick: cmd.quick, samples_per_cycle: rig_settings.samples_per_cycle, rtol: rig_settings.rtol, atol: rig_settings.atol };
+    let list = entries(&joint, &results)?;
+    for (name, text) in [("index.html", html(&list, &info)), ("README.md", markdown(&list, &info))] {
+        let p = dir.join(name);
+        write_text(&p, &text)?;
+        paths.push(p);
+    }
+    bar.inc(1);
+    bar.finish_and_clear();
+    let elapsed = start.elapsed().as_secs_f64();
+    to_stdout(|w| {
+        for p in &paths {
+            writeln!(w, "wrote {}", p.display())?;
+        }
+        writeln!(w, "figures: {} files in {} ({} s); open {}", paths.len(), dir.display(), readable((elapsed * 10.0).round() / 10.0), dir.join("index.html").display())
+    })
+}
