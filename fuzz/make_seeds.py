@@ -46,6 +46,19 @@ def set_real(k, vr_index, special):  # one value of SPECIAL at variables[vr_inde
     return [8, k, 1, 2, vr_index, 5, special, 3]
 
 
+def set_reals(k, pairs):  # [(variable index, float)] as raw bits
+    b = [8, k, len(pairs)]
+    for idx, _ in pairs:
+        b += [2, idx]
+    for _, v in pairs:
+        b += [4] + list(struct.pack("<d", v))
+    return b + [3]
+
+
+# Parameters the core accepts but for which it returns a negative film (fuzz/README.md):
+# asperity_density, asperity_radius, summit_height_std, viscosity (table indices 20, 21, 22, 26).
+SPARSE = [(20, 2.79296875e7), (21, 1.328125e-8), (22, 1.8331541852530975e-6), (26, 6.593932009391239e-5)]
+
 out = Path(__file__).parent / "regressions"
 seeds = {
     "core/seed-default-20kN-0.2rads": core(),
@@ -58,6 +71,11 @@ seeds = {
                                        + set_real(0, 2, 15) + step() + set_real(0, 1, 16) + step()),
     "fmi_calls/seed-state-serialize-deserialize": bytes(fmi_setup() + step() + [18, 0, 1, 21, 0, 1, 1, 23, 0, 1, 0, 5, 2, 1]
                                                         + [19, 0, 2] + step()),
+    # Regressions of the FMU fix: before it, these returned fmi2OK with film_thickness < 0.
+    "fmi_calls/regression-negative-film-at-initialization": bytes([0, 0, 34, 0, 1, 2, 2, 0, 1, 0, 1, 0, 7, 7, 0]
+                                                                  + set_reals(0, SPARSE) + [2, 0, 4, 0, 12, 0, 1, 2, 5]),
+    "fmi_calls/regression-1e9-newton-at-rest": bytes(fmi_setup() + step() + set_real(0, 2, 15) + set_real(0, 1, 0) + step()
+                                                     + [11, 0, 1, 2, 5]),
     "fmi_calls/seed-two-instances-reset": bytes(fmi_setup(0) + fmi_setup(1) + step(0) + step(1) + [6, 0, 7, 0]
                                                 + [18, 1, 3, 30, 1, 3, 2] + step(0)),
 }

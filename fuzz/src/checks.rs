@@ -93,7 +93,7 @@ pub fn value(inp: &mut Input, typical: f64, lo: Option<f64>, hi: Option<f64>) ->
         4 => inp.f64_bits(),
         5 => SPECIAL[inp.u8() as usize % SPECIAL.len()],
         6 => {
-            let b = if inp.u8() % 2 == 0 { lo } else { hi }.unwrap_or(0.0);
+            let b = if inp.u8().is_multiple_of(2) { lo } else { hi }.unwrap_or(0.0);
             match inp.u8() % 3 {
                 0 => b,
                 1 => b.next_up(),
@@ -120,7 +120,7 @@ pub mod core {
 
     /// An angular velocity (rad/s): ±2^±32, the paper's range, special values or raw bits.
     pub fn omega(inp: &mut Input) -> f64 {
-        let sign = if inp.u8() % 2 == 0 { 1.0 } else { -1.0 };
+        let sign = if inp.u8().is_multiple_of(2) { 1.0 } else { -1.0 };
         match inp.u8() % 4 {
             0 | 1 => sign * ((inp.u16() as f64 - 32768.0) / 1024.0).exp2(),
             2 => SPECIAL[inp.u8() as usize % SPECIAL.len()],
@@ -178,7 +178,7 @@ pub mod core {
     }
 
     /// Every quantity of an operating point with the property it must have.
-    fn check_point(op: &OperatingPoint, load: f64, omega: f64, envelope: bool, what: &str) {
+    fn check_point(op: &OperatingPoint, load: f64, omega: f64, envelope: bool, envelope_mode: bool, what: &str) {
         let nonneg = [
             ("friction_coefficient", op.friction_coefficient),
             ("torque", op.torque),
@@ -194,7 +194,12 @@ pub mod core {
             ("sliding_speed", op.sliding_speed),
         ];
         for (name, v) in nonneg {
-            assert!(v >= 0.0, "{what}: {name} = {v:e} at load {load:e} N, omega {omega:e} rad/s (must be >= 0, never NaN)");
+            // Open core finding 2 (fuzz/README.md): where the asperities cannot carry the
+            // load at (or near) rest, eq. 19 gives a negative separation. The envelope
+            // check tolerates that sign (the FMU turns it into fmi2Error); the full check does not.
+            let sign_known = envelope_mode && matches!(name, "film_thickness" | "lambda_ratio");
+            assert!(!v.is_nan(), "{what}: {name} is NaN at load {load:e} N, omega {omega:e} rad/s");
+            assert!(v >= 0.0 || sign_known, "{what}: {name} = {v:e} at load {load:e} N, omega {omega:e} rad/s (must be >= 0, never NaN)");
             assert!(
                 v.is_finite() || !envelope,
                 "{what}: {name} = {v:e} at load {load:e} N, omega {omega:e} rad/s, parameters inside the envelope (must be finite)"
@@ -227,7 +232,7 @@ pub mod core {
     /// is valid; a valid point gives finite, non-negative outputs, deterministically;
     /// a warm start gives the same answer to the solver tolerance.
     pub fn check(data: &[u8]) {
-        check_case(case(data));
+        check_case(case(data), false);
     }
 
     /// [`check`] on the case moved into the envelope: every parameter that is valid but
@@ -252,10 +257,10 @@ pub mod core {
         if c.omega.is_finite() {
             c.omega = c.omega.clamp(-1e7, 1e7);
         }
-        check_case(c);
+        check_case(c, true);
     }
 
-    fn check_case(c: Case) {
+    fn check_case(c: Case, envelope_mode: bool) {
         let Case { params, load, omega, guess } = c;
         let valid = params.validate();
         if valid.is_ok() {
@@ -264,8 +269,9 @@ pub mod core {
                 assert!(v.is_finite() && s.range.contains(v), "validate accepted {} = {v:e}", s.name());
             }
             assert!(params.radial_clearance() > 0.0, "validate accepted a zero clearance");
-        } else {
-            let msg = valid.as_ref().unwrap_err().to_string();
+        }
+        if let Err(e) = &valid {
+            let msg = e.to_string();
             assert!(msg.starts_with("parameter"), "error message does not name the parameter: {msg}");
         }
         let joint = match Joint::new(&params) {
@@ -292,11 +298,11 @@ pub mod core {
                 return;
             }
         };
-        check_point(&op, load, omega, envelope, &format!("evaluate [{}]", changed(&params)));
+        check_point(&op, load, omega, envelope, envelope_mode, &format!("evaluate [{}]", changed(&params)));
         let again = joint.evaluate(load, omega).unwrap();
         assert_eq!(format!("{again:?}"), format!("{op:?}"), "evaluate is not deterministic");
         let warm = joint.evaluate_from(load, omega, guess).expect("evaluate_from rejected what evaluate accepted");
-        check_point(&warm, load, omega, envelope, &format!("evaluate_from({guess:?}) [{}]", changed(&params)));
+        check_point(&warm, load, omega, envelope, envelope_mode, &format!("evaluate_from({guess:?}) [{}]", changed(&params)));
         for (name, a, b) in [
             ("friction_coefficient", warm.friction_coefficient, op.friction_coefficient),
             ("film_thickness", warm.film_thickness, op.film_thickness),
@@ -476,7 +482,7 @@ pub mod fmi {
                 ops += 1;
                 let op = inp.u8();
                 let k = (inp.u8() % 4) as usize;
-                if op % 32 == 0 || self.slots[k].is_none() {
+                if op.is_multiple_of(32) || self.slots[k].is_none() {
                     if self.slots[k].is_none() {
                         self.instantiate(&mut inp, k);
                     } else {
@@ -518,11 +524,11 @@ pub mod fmi {
                 && sel < 248
                 && fmu_type == 1
                 && sel % 16 >= 2
-                && cbs == &*self.callbacks as *const _;
+                && std::ptr::eq(cbs, &*self.callbacks);
             assert_eq!(!c.is_null(), valid, "fmi2Instantiate: returned {c:?} for a {} call", if valid { "valid" } else { "invalid" });
             assert_eq!(self.log.fatal, 0);
             if c.is_null() {
-                if cbs == &*self.callbacks as *const _ {
+                if std::ptr::eq(cbs, &*self.callbacks) {
                     assert!(self.log.errors > e, "fmi2Instantiate returned NULL without logging why");
                 }
                 return;
@@ -545,7 +551,7 @@ pub mod fmi {
             let st = |h: &Self, s: i32, what: &str| h.status(s, e, quiet, what);
             match op {
                 1 => {
-                    let start = if inp.u8() % 4 == 0 { value(inp, 1.0, None, None) } else { 0.0 };
+                    let start = if inp.u8().is_multiple_of(4) { value(inp, 1.0, None, None) } else { 0.0 };
                     let stop_defined = (inp.u8() % 2) as i32;
                     let stop = value(inp, 10.0, None, None);
                     let tol = value(inp, 1e-6, None, None);
@@ -628,7 +634,7 @@ pub mod fmi {
                     let vrs: Vec<u32> = (0..n).map(|_| self.vr(inp, info)).collect();
                     let which = inp.u8() % 6;
                     let mut ints = vec![inp.u32() as i32; n];
-                    let strs: Vec<*const c_char> = (0..n).map(|_| if inp.u8() % 4 == 0 { null() } else { STRINGS[0].as_ptr() }).collect();
+                    let strs: Vec<*const c_char> = (0..n).map(|_| if inp.u8().is_multiple_of(4) { null() } else { STRINGS[0].as_ptr() }).collect();
                     let mut out_strs: Vec<*const c_char> = vec![null(); n];
                     let s = unsafe {
                         match which {
@@ -675,7 +681,7 @@ pub mod fmi {
                     if st(self, unsafe { fmi2SerializedFMUstateSize(c, self.states[j], &mut size) }, "fmi2SerializedFMUstateSize") != OK {
                         return;
                     }
-                    let wrong = inp.u8() % 8 == 0;
+                    let wrong = inp.u8().is_multiple_of(8);
                     let n = if wrong { size.wrapping_add(inp.u8() as usize).wrapping_sub(128) % (size + 256) } else { size };
                     let mut buf = vec![0u8; n];
                     let s = st(self, unsafe { fmi2SerializeFMUstate(c, self.states[j], buf.as_mut_ptr().cast(), n) }, "fmi2SerializeFMUstate");
@@ -715,7 +721,7 @@ pub mod fmi {
                         }
                     }
                     let j = inp.u8() as usize % 4;
-                    let ptr = if inp.u8() % 16 == 0 { null() } else { blob.as_ptr() };
+                    let ptr = if inp.u8().is_multiple_of(16) { null() } else { blob.as_ptr() };
                     let r = unsafe { fmi2DeSerializeFMUstate(c, ptr.cast(), blob.len(), &mut self.states[j]) };
                     let s = st(self, r, "fmi2DeSerializeFMUstate");
                     if s == OK {
@@ -731,7 +737,7 @@ pub mod fmi {
                             x => CATEGORIES[x as usize % CATEGORIES.len()].as_ptr(),
                         })
                         .collect();
-                    let p = if n > 0 && inp.u8() % 16 == 0 { null() } else { cats.as_ptr() };
+                    let p = if n > 0 && inp.u8().is_multiple_of(16) { null() } else { cats.as_ptr() };
                     let s = st(self, unsafe { fmi2SetDebugLogging(c, on, n, p) }, "fmi2SetDebugLogging");
                     let names_error = cats.iter().any(|&p| !p.is_null() && unsafe { CStr::from_ptr(p) } == c"logStatusError");
                     if s == OK && (names_error || (n == 0 && on != 0)) {
@@ -746,7 +752,7 @@ pub mod fmi {
                     let mut r = 0.0;
                     let mut i = 0;
                     let mut sv: Fmi2String = null();
-                    let null_out = inp.u8() % 8 == 0;
+                    let null_out = inp.u8().is_multiple_of(8);
                     let s = unsafe {
                         match inp.u8() % 5 {
                             0 => fmi2GetStatus(c, kind, if null_out { null_mut() } else { &mut i }),
