@@ -94,16 +94,22 @@ pub struct OperatingPoint {
     pub regime: Regime,
 }
 
+/// A friction torque of magnitude `torque` given its sign: opposite to `omega` (eq. 11), zero
+/// at ω = 0 (where it has no direction).
+pub fn opposing(torque: f64, omega: f64) -> f64 {
+    if omega > 0.0 {
+        -torque
+    } else if omega < 0.0 {
+        torque
+    } else {
+        0.0
+    }
+}
+
 impl OperatingPoint {
     /// The friction torque on the pin with its sign: opposite to ω (eq. 11), zero at ω = 0.
     pub fn signed_torque(&self) -> f64 {
-        if self.angular_velocity > 0.0 {
-            -self.torque
-        } else if self.angular_velocity < 0.0 {
-            self.torque
-        } else {
-            0.0
-        }
+        opposing(self.torque, self.angular_velocity)
     }
 }
 

@@ -158,6 +158,7 @@ fn outputs_equal_the_library_exactly_and_energy_integrates_power() {
     p.lubricant.viscosity = 0.02;
     let c = h.ready(&[("surface.asperity_radius", 5e-6), ("lubricant.viscosity", 0.02)]);
     let j = Joint::new(&p).unwrap();
+    // The FMU's full level is the library's complete solve, cold at every call: bit for bit.
     let mut energy = 0.0;
     let mut t = 0.0;
     for k in 0..400 {

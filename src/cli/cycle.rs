@@ -6,6 +6,7 @@ use super::common::{positive, readable, RAD_S_PER_RPM};
 use super::cycle_plots::{torque_angle_svg, torque_time_svg};
 use super::cycle_run::{cycle_csv, default_skip, CycleRun};
 use super::error::{CliError, Result};
+use super::fidelity_args::{describe, FidelityArgs};
 use super::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
 use clap::{Args, ValueEnum};
 use pinjoint::rig::{Formulation, Method, RigConfig};
@@ -63,6 +64,11 @@ pub struct CycleCmd {
     /// Output directory (created if needed)
     #[arg(long, value_name = "DIR")]
     pub output: PathBuf,
+    /// Friction fidelity (table/boundary/auto over the envelope, by default the stroke's:
+    /// load ±10 %, 1e-3 rad/s to twice the peak command speed; slower speeds near reversals
+    /// fall back to the full solve)
+    #[command(flatten)]
+    pub fidelity: FidelityArgs,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -154,7 +160,22 @@ pub fn run(cmd: &CycleCmd) -> Result<()> {
     let cfg = config(cmd)?;
     let (cycles, skip, per_cycle) = counts(cmd)?;
     let joint = Joint::new(&cfg.model)?;
-    let run = CycleRun::simulate(&cfg, cycles, per_cycle, skip)?;
+    let run = if cmd.fidelity.is_full()? {
+        CycleRun::simulate(&cfg, cycles, per_cycle, skip)?
+    } else {
+        let d = pinjoint::rig::RigSim::drive_envelope(&cfg)?;
+        let env = cmd.fidelity.envelope((d.load_min, d.load_max), (d.speed_min, d.speed_max))?;
+        let report = |ev: &pinjoint::fidelity::Evaluator, fallbacks: Option<u64>| match fallbacks {
+            None => eprintln!("{}", describe(ev)),
+            Some(0) => {}
+            Some(n) => eprintln!(
+                "fidelity: {n} friction evaluations fell outside the envelope (e.g. speeds below {} rad/s around reversals) \
+                 and were answered by the full solve",
+                ev.envelope().speed_min
+            ),
+        };
+        CycleRun::simulate_at(&cfg, (cycles, per_cycle, skip), (cmd.fidelity.level()?, cmd.fidelity.tolerance, env), &report)?
+    };
     let peak = run.peak_command_speed();
     let mu_peak = run.quasi_static_at_peak(&joint)?;
     let (time_svg, angle_svg) = (torque_time_svg(&run)?, torque_angle_svg(&run)?);

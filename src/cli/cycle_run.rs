@@ -4,7 +4,8 @@
 
 use super::common::{csv_io, exact};
 use super::error::Result;
-use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, RigConfig, Sample};
+use pinjoint::fidelity::{Envelope, Fidelity};
+use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, RigConfig, RigSim, Sample};
 use pinjoint::Joint;
 use std::f64::consts::TAU;
 
@@ -48,8 +49,29 @@ impl CycleRun {
     /// Simulate `cycles` strokes of `config` with `samples_per_cycle` samples each and average
     /// over the strokes after the first `skip` (which must be < `cycles`).
     pub fn simulate(config: &RigConfig, cycles: usize, samples_per_cycle: usize, skip: usize) -> Result<Self> {
-        debug_assert!(skip < cycles);
         let samples = run_cycles(config, cycles as f64, samples_per_cycle)?;
+        Self::from_samples(config, cycles, skip, samples)
+    }
+
+    /// As [`CycleRun::simulate`] with the friction at `fidelity` over `envelope` (see
+    /// `RigSim::set_fidelity`); `report` receives the built evaluator's description and,
+    /// after the run, the number of evaluations outside the envelope.
+    pub fn simulate_at(
+        config: &RigConfig,
+        (cycles, samples_per_cycle, skip): (usize, usize, usize),
+        (fidelity, tolerance, envelope): (Fidelity, f64, Envelope),
+        report: &dyn Fn(&pinjoint::fidelity::Evaluator, Option<u64>),
+    ) -> Result<Self> {
+        let mut sim = RigSim::new(config)?;
+        report(sim.set_fidelity(fidelity, tolerance, envelope)?, None);
+        let period = config.rig.period();
+        let samples = sim.run(cycles as f64 * period, period / samples_per_cycle as f64)?;
+        report(sim.fidelity().expect("set above"), Some(sim.stats().fallbacks));
+        Self::from_samples(config, cycles, skip, samples)
+    }
+
+    fn from_samples(config: &RigConfig, cycles: usize, skip: usize, samples: Vec<Sample>) -> Result<Self> {
+        debug_assert!(skip < cycles);
         let (f, r) = (config.rig.frequency, config.model.geometry.pin_radius);
         let average_friction_coefficient = cycle_average_friction_coefficient(&samples, f, r, skip).unwrap_or(f64::NAN);
         let mut run = Self { config: *config, cycles, skip, samples, average_friction_coefficient, mean_speed: f64::NAN, rms_speed: f64::NAN };
@@ -130,23 +152,27 @@ pub fn core_torque(s: &Sample, pin_radius: f64) -> f64 {
 }
 
 /// The trace as CSV with [`CYCLE_COLUMNS`], every number at full precision.
+/// One sample as the CSV fields of [`CYCLE_COLUMNS`], in full precision.
+pub fn sample_fields(s: &Sample) -> [String; 10] {
+    [
+        exact(s.time),
+        exact(s.command_angle),
+        exact(s.angle),
+        exact(s.angular_velocity),
+        exact(s.torque),
+        exact(s.friction_torque),
+        exact(s.friction_coefficient),
+        exact(s.film_thickness),
+        exact(s.fluid_load_fraction),
+        u8::from(s.stuck).to_string(),
+    ]
+}
+
 pub fn cycle_csv(w: &mut dyn std::io::Write, samples: &[Sample]) -> std::io::Result<()> {
     let mut wtr = csv::Writer::from_writer(w);
     wtr.write_record(CYCLE_COLUMNS).map_err(csv_io)?;
     for s in samples {
-        let row = [
-            exact(s.time),
-            exact(s.command_angle),
-            exact(s.angle),
-            exact(s.angular_velocity),
-            exact(s.torque),
-            exact(s.friction_torque),
-            exact(s.friction_coefficient),
-            exact(s.film_thickness),
-            exact(s.fluid_load_fraction),
-            u8::from(s.stuck).to_string(),
-        ];
-        wtr.write_record(&row).map_err(csv_io)?;
+        wtr.write_record(sample_fields(s)).map_err(csv_io)?;
     }
     wtr.flush()?;
     Ok(())

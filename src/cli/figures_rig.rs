@@ -231,21 +231,8 @@ pub fn traces_csv(w: &mut dyn std::io::Write, runs: &[&CycleRun]) -> std::io::Re
     for run in runs {
         let t0 = run.skip as f64 * run.period();
         for s in run.window() {
-            let row = [
-                exact(run.load()),
-                exact(s.time - t0),
-                exact(s.time),
-                exact(s.command_angle),
-                exact(s.angle),
-                exact(s.angular_velocity),
-                exact(s.torque),
-                exact(s.friction_torque),
-                exact(s.friction_coefficient),
-                exact(s.film_thickness),
-                exact(s.fluid_load_fraction),
-                u8::from(s.stuck).to_string(),
-            ];
-            wtr.write_record(&row).map_err(csv_io)?;
+            let row = [exact(run.load()), exact(s.time - t0)].into_iter().chain(super::cycle_run::sample_fields(s));
+            wtr.write_record(row).map_err(csv_io)?;
         }
     }
     wtr.flush()?;

@@ -2,11 +2,16 @@
 //! `error` and `output`. New subcommands (`cycle`, `figures`, `bench`) add a file and a
 //! variant of [`Command`].
 
+pub mod bench;
+pub mod bench_eval;
+pub mod bench_report;
+pub mod bench_rig;
 pub mod common;
 pub mod cycle;
 pub mod cycle_plots;
 pub mod cycle_run;
 pub mod error;
+pub mod fidelity_args;
 pub mod figures;
 pub mod figures_index;
 pub mod figures_plots;
@@ -52,6 +57,7 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    Bench(bench::BenchCmd),
     Params(params_cmd::ParamsCmd),
     Point(point::PointCmd),
     Sweep(sweep::SweepCmd),
@@ -63,6 +69,7 @@ pub enum Command {
 
 pub fn run(cli: &Cli) -> error::Result<()> {
     match &cli.command {
+        Command::Bench(c) => bench::run(c),
         Command::Params(c) => params_cmd::run(c),
         Command::Point(c) => point::run(c),
         Command::Sweep(c) => sweep::run(c),

@@ -2,6 +2,7 @@
 
 use super::common::{finite, readable, ParamsArg, RAD_S_PER_RPM};
 use super::error::Result;
+use super::fidelity_args::{note_fallback, FidelityArgs};
 use super::output::to_stdout;
 use clap::Args;
 use pinjoint::OperatingPoint;
@@ -17,7 +18,11 @@ depends on its magnitude.\n\n\
 Examples:\n  \
 pinjoint point --load 20000 --speed 0.2\n  \
 pinjoint point --load 60000 --rpm 42 --json\n  \
-pinjoint point --load 5000 --rpm 800 --params my-joint.toml"
+pinjoint point --load 5000 --rpm 800 --params my-joint.toml\n  \
+pinjoint point --load 20000 --speed 0.2 --fidelity auto --tolerance 1e-3 --envelope-load 5000:60000 --envelope-speed 0.01:10\n\n\
+With --fidelity other than full, the level is built over the envelope (by default [P/2, 2P] x \
+[|ω|/2, 2|ω|] around the point) and standard error says which level answered and its measured \
+error bound."
 )]
 pub struct PointCmd {
     /// Normal load on the joint P_T, in N (newtons; 20000 = 20 kN); must be > 0
@@ -27,6 +32,8 @@ pub struct PointCmd {
     pub speed: SpeedArg,
     #[command(flatten)]
     pub params: ParamsArg,
+    #[command(flatten)]
+    pub fidelity: FidelityArgs,
     /// Print one JSON object (keys in SI units) instead of the table
     #[arg(long)]
     pub json: bool,
@@ -129,7 +136,18 @@ pub fn table(o: &OperatingPoint) -> Vec<(&'static str, String, &'static str)> {
 pub fn run(cmd: &PointCmd) -> Result<()> {
     let joint = cmd.params.joint()?;
     let omega = cmd.speed.rad_per_s()?;
-    let op = joint.evaluate(cmd.load, omega)?;
+    let op = if cmd.fidelity.is_full()? {
+        joint.evaluate(cmd.load, omega)?
+    } else {
+        super::common::positive("load", cmd.load, "N")?;
+        let w = omega.abs();
+        let speeds = if w > 0.0 { (0.5 * w, 2.0 * w) } else { (1e-3, 1.0) };
+        let mut ev = cmd.fidelity.build(&cmd.params.load()?, (0.5 * cmd.load, 2.0 * cmd.load), speeds)?;
+        let e = ev.evaluate(cmd.load, omega).map_err(|e| super::error::CliError::Invalid(e.to_string()))?;
+        note_fallback(&e, &ev, &Default::default());
+        eprintln!("fidelity: answered by {}", e.source.as_str());
+        ev.operating_point(&e)
+    };
     if cmd.json {
         let text = serde_json::to_string(&PointJson::from(&op)).expect("plain struct of numbers serialises");
         return to_stdout(|w| writeln!(w, "{text}"));

@@ -2,10 +2,13 @@
 
 use super::common::{csv_io, result_fields, ParamsArg, RESULT_COLUMNS};
 use super::error::{CliError, Result};
+use super::fidelity_args::{note_fallback, range_of, FidelityArgs};
 use super::output::{to_stdout, write_atomic};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
+use pinjoint::fidelity::Evaluator;
 use pinjoint::{Joint, OperatingPoint};
+use std::sync::atomic::AtomicBool;
 use rayon::prelude::*;
 use std::io::{self, Read, Write};
 use std::path::{Path, PathBuf};
@@ -29,7 +32,12 @@ name beside it and renamed only on success).\n\n\
 Examples:\n  \
 printf 'load,speed\\n20000,0.2\\n60000,4.39\\n' > pts.csv\n  \
 pinjoint sweep --input pts.csv\n  \
-pinjoint sweep --input pts.csv --output results.csv --params my-joint.toml"
+pinjoint sweep --input pts.csv --output results.csv --params my-joint.toml\n  \
+pinjoint sweep --input pts.csv --fidelity auto --tolerance 1e-4\n\n\
+FIDELITY: --fidelity table|boundary|auto builds that level once over the envelope, by default \
+the input's own load range and |speed| range (or --envelope-load/--envelope-speed), and \
+standard error says which level answered (what auto picked) and the error bound it measured. \
+Rows outside a given envelope are answered by the full solve (said once on standard error)."
 )]
 pub struct SweepCmd {
     /// Input CSV with columns `load` (N) and `speed` (rad/s); `-` reads standard input
@@ -40,6 +48,8 @@ pub struct SweepCmd {
     pub output: Option<PathBuf>,
     #[command(flatten)]
     pub params: ParamsArg,
+    #[command(flatten)]
+    pub fidelity: FidelityArgs,
 }
 
 /// One validated input row.
@@ -187,6 +197,32 @@ pub fn evaluate(joint: &Joint, rows: &[Row], file: &str) -> Result<Vec<Operating
     Ok(out.into_iter().flatten().collect())
 }
 
+/// Evaluate every row through (clones of) `ev`, on every core; results in row order.
+pub fn evaluate_with(ev: &Evaluator, rows: &[Row], file: &str) -> Result<Vec<OperatingPoint>> {
+    let said = AtomicBool::new(false);
+    let out = rows
+        .par_chunks(256)
+        .map_init(
+            || ev.clone(),
+            |ev, chunk| {
+                chunk
+                    .iter()
+                    .map(|row| {
+                        let e = ev.evaluate(row.load, row.speed).map_err(|e| CliError::Input {
+                            file: file.to_string(),
+                            line: row.line,
+                            message: e.to_string(),
+                        })?;
+                        note_fallback(&e, ev, &said);
+                        Ok(ev.operating_point(&e))
+                    })
+                    .collect::<Result<Vec<_>>>()
+            },
+        )
+        .collect::<Result<Vec<Vec<_>>>>()?;
+    Ok(out.into_iter().flatten().collect())
+}
+
 /// Write the header and rows: input columns, then the results.
 pub fn write_csv(w: &mut dyn Write, table: &Table, results: &[OperatingPoint]) -> io::Result<()> {
     let mut wtr = csv::Writer::from_writer(w);
@@ -207,7 +243,15 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         let f = std::fs::File::open(&cmd.input).map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
         parse(io::BufReader::new(f), &cmd.input.display().to_string())?
     };
-    let results = evaluate(&joint, &table.rows, &cmd.input.display().to_string())?;
+    let file = cmd.input.display().to_string();
+    let results = if cmd.fidelity.is_full()? {
+        evaluate(&joint, &table.rows, &file)?
+    } else {
+        let loads = range_of(table.rows.iter().map(|r| r.load), (1.0, 2.0));
+        let speeds = range_of(table.rows.iter().map(|r| r.speed.abs()), (1e-3, 1.0));
+        let ev = cmd.fidelity.build(&cmd.params.load()?, loads, speeds)?;
+        evaluate_with(&ev, &table.rows, &file)?
+    };
     match &cmd.output {
         Some(path) if !is_stdio(path) => write_atomic(path, |w| write_csv(w, &table, &results)),
         _ => to_stdout(|w| write_csv(w, &table, &results)),

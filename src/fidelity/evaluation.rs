@@ -71,13 +71,7 @@ pub struct Evaluation {
 impl Evaluation {
     /// The friction torque on the pin with its sign: opposite to ω (eq. 11), zero at ω = 0.
     pub fn signed_torque(&self) -> f64 {
-        if self.angular_velocity > 0.0 {
-            -self.torque
-        } else if self.angular_velocity < 0.0 {
-            self.torque
-        } else {
-            0.0
-        }
+        crate::joint::opposing(self.torque, self.angular_velocity)
     }
 
     /// The outputs of a complete solve.

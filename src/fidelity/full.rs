@@ -30,6 +30,17 @@ impl WarmSolver {
         Ok(op)
     }
 
+    /// The logit the next call starts from (None: cold). With [`WarmSolver::set_warm_start`]
+    /// a caller can save and restore it, so a restored run repeats bit for bit.
+    pub fn warm_start(&self) -> Option<f64> {
+        self.last
+    }
+
+    /// Start the next call from `logit` (None or non-finite: cold).
+    pub fn set_warm_start(&mut self, logit: Option<f64>) {
+        self.last = logit.filter(|l| l.is_finite());
+    }
+
     /// Forget the previous solution (the next call starts cold).
     pub fn reset(&mut self) {
         self.last = None;

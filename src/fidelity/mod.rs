@@ -257,6 +257,19 @@ impl Evaluator {
         }
     }
 
+    /// The table or boundary level's answer when (`load`, `omega`) is inside the envelope (or
+    /// `omega` = 0 inside the load range); `None` otherwise and always for `full`. Takes `&self`
+    /// and keeps no history, so a caller with its own warm-started solve (the rig) can use the
+    /// level and do the fallback itself.
+    #[inline]
+    pub fn evaluate_inside(&self, load: f64, omega: f64) -> Option<Evaluation> {
+        match &self.backend {
+            Backend::Table(t) => t.evaluate(load, omega),
+            Backend::Boundary(b) => b.evaluate(load, omega),
+            Backend::Full => None,
+        }
+    }
+
     /// As [`Evaluator::evaluate`], completed into every output of the model
     /// ([`Evaluator::operating_point`]).
     pub fn evaluate_point(&mut self, load: f64, omega: f64) -> Result<(OperatingPoint, Source), FidelityError> {
@@ -323,6 +336,15 @@ impl Evaluator {
     pub fn joint(&self) -> &Joint {
         self.solver.joint()
     }
+    /// The warm start of the full solve (see [`WarmSolver::warm_start`]).
+    pub fn warm_start(&self) -> Option<f64> {
+        self.solver.warm_start()
+    }
+    /// Restore a warm start saved by [`Evaluator::warm_start`].
+    pub fn set_warm_start(&mut self, logit: Option<f64>) {
+        self.solver.set_warm_start(logit);
+    }
+
     /// Forget the warm start (e.g. after a jump in the inputs); the answers do not change.
     pub fn reset(&mut self) {
         self.solver.reset();

@@ -15,7 +15,7 @@ use super::model::Model;
 use super::snapshot::Snapshot;
 use super::state::State;
 use super::types::Status;
-use super::variables::{Causality, ModelInfo, Variability};
+use super::variables::{Causality, Kind, ModelInfo, Variability};
 
 const TAG: u64 = 0x504a_464d_4932_4f4b;
 
@@ -97,11 +97,22 @@ impl Instance {
         }
     }
 
-    /// `fmi2SetReal`: all values are checked before any is stored.
-    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> CallResult {
+    /// The index of `vr`, which must be a variable of type `kind`.
+    fn lookup_kind(&self, vr: u32, kind: Kind) -> Result<usize, String> {
+        let i = self.lookup(vr)?;
+        let k = self.info.variables[i].kind;
+        if k != kind {
+            return Err(format!("{} is a{} {} variable, not {}", self.describe(i), if k == Kind::Integer { "n" } else { "" }, k.as_str(), kind.as_str()));
+        }
+        Ok(i)
+    }
+
+    /// `fmi2SetReal`/`Integer`/`Boolean` (values as f64, Booleans as 0.0/1.0): all
+    /// values are checked before any is stored.
+    pub fn set_values(&mut self, kind: Kind, vrs: &[u32], values: &[f64]) -> CallResult {
         let mut idx = Vec::with_capacity(vrs.len());
         for (&vr, &value) in vrs.iter().zip(values) {
-            let i = self.lookup(vr)?;
+            let i = self.lookup_kind(vr, kind)?;
             self.check_settable(i)?;
             self.model.check_real(i, value)?;
             idx.push(i);
@@ -115,19 +126,33 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> CallResult {
+        self.set_values(Kind::Real, vrs, values)
+    }
+
     fn update_outputs(&mut self) -> Result<(), String> {
         if !self.outputs_current {
-            self.model.compute_outputs()?;
+            let r = self.model.compute_outputs();
+            self.log_model_message();
+            r?;
             self.outputs_current = true;
         }
         Ok(())
     }
 
-    /// `fmi2GetReal`: outputs are brought up to date with the inputs first.
-    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> CallResult {
+    /// Log what the model has to say ([`Model::take_message`]) under logEvents.
+    fn log_model_message(&mut self) {
+        if let Some(m) = self.model.take_message() {
+            self.event(&m);
+        }
+    }
+
+    /// `fmi2GetReal`/`Integer`/`Boolean` (values as f64): outputs are brought up to
+    /// date with the inputs first.
+    pub fn get_values(&mut self, kind: Kind, vrs: &[u32], values: &mut [f64]) -> CallResult {
         let mut idx = Vec::with_capacity(vrs.len());
         for &vr in vrs {
-            idx.push(self.lookup(vr)?);
+            idx.push(self.lookup_kind(vr, kind)?);
         }
         if idx.iter().any(|&i| self.info.variables[i].causality == Causality::Output) {
             self.update_outputs()?;
@@ -138,12 +163,16 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> CallResult {
+        self.get_values(Kind::Real, vrs, values)
+    }
+
     /// Getters and setters of the types this layer's models do not have.
     pub fn reject_type(&self, type_name: &str, vrs: &[u32]) -> CallResult {
         match vrs.first() {
             None => Ok(Status::Ok),
             Some(&vr) => Err(match self.info.index_of(vr) {
-                Some(i) => format!("{} is a Real variable, not {type_name}", self.describe(i)),
+                Some(i) => format!("{} is a {} variable, not {type_name}", self.describe(i), self.info.variables[i].kind.as_str()),
                 None => format!(
                     "unknown value reference {vr}: {} has no {type_name} variables",
                     self.info.model_name
@@ -173,7 +202,9 @@ impl Instance {
     }
 
     pub fn exit_initialization_mode(&mut self) -> CallResult {
-        let checked = self.model.exit_initialization().and_then(|_| {
+        let init = self.model.exit_initialization(self.start_time);
+        self.log_model_message();
+        let checked = init.and_then(|_| {
             self.outputs_current = false;
             self.update_outputs()
         });

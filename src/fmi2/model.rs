@@ -13,7 +13,8 @@ pub trait Model {
     /// Restore every variable to its start value (called at instantiation and by `fmi2Reset`).
     fn set_start_values(&mut self);
 
-    /// The current value of variable `index`. Outputs are read after
+    /// The current value of variable `index` (Integer and Boolean variables as f64,
+    /// a Boolean as 0.0 or 1.0). Outputs are read after
     /// [`Model::compute_outputs`] has run for the current inputs.
     fn get_real(&self, index: usize) -> f64;
 
@@ -25,8 +26,16 @@ pub trait Model {
     /// Store a value that passed [`Model::check_real`].
     fn set_real(&mut self, index: usize, value: f64);
 
-    /// Validate the parameters at `fmi2ExitInitializationMode`.
-    fn exit_initialization(&mut self) -> ModelResult<()>;
+    /// A message for the host's log (category logEvents), taken once; the layer asks after
+    /// [`Model::exit_initialization`] and [`Model::compute_outputs`] (e.g. which fidelity
+    /// level was built, a first evaluation outside its envelope).
+    fn take_message(&mut self) -> Option<String> {
+        None
+    }
+
+    /// Validate the parameters at `fmi2ExitInitializationMode`; `start_time` is the
+    /// experiment's start time (`fmi2SetupExperiment`, 0 if it was not called).
+    fn exit_initialization(&mut self, start_time: f64) -> ModelResult<()>;
 
     /// Recompute the outputs from the current inputs and parameters.
     fn compute_outputs(&mut self) -> ModelResult<()>;

@@ -17,7 +17,30 @@ pub enum Variability {
     Fixed,
     /// May also be set in `stepComplete`.
     Tunable,
+    /// Changes only at communication points (FMI 2.0: required for Integer and
+    /// Boolean outputs, which may not be continuous).
+    Discrete,
     Continuous,
+}
+
+/// The FMI type of a variable. The model stores every value as an f64; the layer
+/// converts at the C boundary (Integer as the exact integer value, Boolean as 0.0
+/// or 1.0), so the [`Model`] trait has one getter and one setter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    Real,
+    Integer,
+    Boolean,
+}
+
+impl Kind {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Kind::Real => "Real",
+            Kind::Integer => "Integer",
+            Kind::Boolean => "Boolean",
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -40,6 +63,7 @@ impl Variability {
         match self {
             Variability::Fixed => "fixed",
             Variability::Tunable => "tunable",
+            Variability::Discrete => "discrete",
             Variability::Continuous => "continuous",
         }
     }
@@ -53,12 +77,13 @@ impl Initial {
     }
 }
 
-/// One Real scalar variable. (Both models of this crate only have Real variables;
-/// the Integer/Boolean/String getters and setters reject every value reference.)
+/// One scalar variable (Real, Integer or Boolean; no model of this crate has String
+/// variables, so the String getters and setters reject every value reference).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Variable {
     /// Structured name, e.g. `geometry.pin_radius`.
     pub name: String,
+    pub kind: Kind,
     pub value_reference: u32,
     pub causality: Causality,
     pub variability: Variability,
@@ -66,7 +91,8 @@ pub struct Variable {
     /// SI unit name from the model's unit table; `None` for dimensionless.
     pub unit: Option<&'static str>,
     pub display_unit: Option<&'static str>,
-    /// Start value (required for inputs and parameters, absent for calculated outputs).
+    /// Start value (required for inputs and parameters, absent for calculated outputs);
+    /// for a Boolean 0.0 (false) or 1.0 (true).
     pub start: Option<f64>,
     pub min: Option<f64>,
     pub max: Option<f64>,
@@ -135,7 +161,8 @@ pub struct ModelInfo {
 
 impl ModelInfo {
     /// The GUID: a hash of everything that defines the interface (name, identifier,
-    /// and each variable's name, value reference, causality, variability, unit), so
+    /// and each variable's name, value reference, causality, variability, unit and,
+    /// for a non-Real variable, its type), so
     /// that any change of the interface changes the GUID and a stale
     /// modelDescription.xml is refused by `fmi2Instantiate`.
     pub fn guid(&self) -> String {
@@ -149,6 +176,9 @@ impl ModelInfo {
                 v.variability.as_str(),
                 v.unit.unwrap_or("")
             ));
+            if v.kind != Kind::Real {
+                text.push_str(&format!(":{}", v.kind.as_str()));
+            }
         }
         let a = fnv1a64(text.as_bytes(), 0xcbf2_9ce4_8422_2325);
         let b = fnv1a64(text.as_bytes(), 0x6c62_272e_07bb_0142);

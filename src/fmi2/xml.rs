@@ -10,7 +10,7 @@
 //! initialization every output may depend on every parameter.
 
 use super::logging::Category;
-use super::variables::{Causality, ModelInfo, Variable, CAPABILITIES};
+use super::variables::{Causality, Kind, ModelInfo, Variable, CAPABILITIES};
 use std::fmt::Write;
 
 /// Escape text for an XML attribute value.
@@ -34,24 +34,34 @@ pub fn num(v: f64) -> String {
     format!("{v:?}")
 }
 
-fn real_element(v: &Variable) -> String {
+/// The type element of a variable: `<Real .../>`, `<Integer .../>` or `<Boolean .../>`.
+fn type_element(v: &Variable) -> String {
     let mut a = String::new();
-    if let Some(u) = v.unit {
-        write!(a, " unit=\"{}\"", escape(u)).unwrap();
+    if v.kind == Kind::Real {
+        if let Some(u) = v.unit {
+            write!(a, " unit=\"{}\"", escape(u)).unwrap();
+        }
+        if let Some(d) = v.display_unit {
+            write!(a, " displayUnit=\"{}\"", escape(d)).unwrap();
+        }
     }
-    if let Some(d) = v.display_unit {
-        write!(a, " displayUnit=\"{}\"", escape(d)).unwrap();
-    }
-    if let Some(m) = v.min {
-        write!(a, " min=\"{}\"", num(m)).unwrap();
-    }
-    if let Some(m) = v.max {
-        write!(a, " max=\"{}\"", num(m)).unwrap();
+    let value = |x: f64| match v.kind {
+        Kind::Real => num(x),
+        Kind::Integer => format!("{}", x as i64),
+        Kind::Boolean => (x != 0.0).to_string(),
+    };
+    if v.kind != Kind::Boolean {
+        if let Some(m) = v.min {
+            write!(a, " min=\"{}\"", value(m)).unwrap();
+        }
+        if let Some(m) = v.max {
+            write!(a, " max=\"{}\"", value(m)).unwrap();
+        }
     }
     if let Some(s) = v.start {
-        write!(a, " start=\"{}\"", num(s)).unwrap();
+        write!(a, " start=\"{}\"", value(s)).unwrap();
     }
-    format!("<Real{a}/>")
+    format!("<{}{a}/>", v.kind.as_str())
 }
 
 /// The complete modelDescription.xml of `info`.
@@ -75,23 +85,26 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
     }
     writeln!(w, "/>").unwrap();
 
-    writeln!(w, "  <UnitDefinitions>").unwrap();
-    for u in info.units {
-        writeln!(w, r#"    <Unit name="{}">"#, escape(u.name)).unwrap();
-        let mut b = String::new();
-        for (k, e) in [("kg", u.kg), ("m", u.m), ("s", u.s), ("rad", u.rad)] {
-            if e != 0 {
-                write!(b, r#" {k}="{e}""#).unwrap();
+    // The schema requires at least one <Unit> inside <UnitDefinitions>.
+    if !info.units.is_empty() {
+        writeln!(w, "  <UnitDefinitions>").unwrap();
+        for u in info.units {
+            writeln!(w, r#"    <Unit name="{}">"#, escape(u.name)).unwrap();
+            let mut b = String::new();
+            for (k, e) in [("kg", u.kg), ("m", u.m), ("s", u.s), ("rad", u.rad)] {
+                if e != 0 {
+                    write!(b, r#" {k}="{e}""#).unwrap();
+                }
             }
+            writeln!(w, "      <BaseUnit{b}/>").unwrap();
+            for d in u.display {
+                let off = if d.offset != 0.0 { format!(r#" offset="{}""#, num(d.offset)) } else { String::new() };
+                writeln!(w, r#"      <DisplayUnit name="{}" factor="{}"{off}/>"#, escape(d.name), num(d.factor)).unwrap();
+            }
+            writeln!(w, "    </Unit>").unwrap();
         }
-        writeln!(w, "      <BaseUnit{b}/>").unwrap();
-        for d in u.display {
-            let off = if d.offset != 0.0 { format!(r#" offset="{}""#, num(d.offset)) } else { String::new() };
-            writeln!(w, r#"      <DisplayUnit name="{}" factor="{}"{off}/>"#, escape(d.name), num(d.factor)).unwrap();
-        }
-        writeln!(w, "    </Unit>").unwrap();
+        writeln!(w, "  </UnitDefinitions>").unwrap();
     }
-    writeln!(w, "  </UnitDefinitions>").unwrap();
 
     writeln!(w, "  <LogCategories>").unwrap();
     for c in Category::ALL {
@@ -104,6 +117,9 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
 
     writeln!(w, "  <ModelVariables>").unwrap();
     for (i, v) in info.variables.iter().enumerate() {
+        if v.kind != Kind::Real && (v.unit.is_some() || v.display_unit.is_some()) {
+            return Err(format!("variable {}: only Real variables have units", v.name));
+        }
         if let Some(u) = v.unit {
             let def = info.unit(u).ok_or_else(|| format!("variable {}: unit {u} is not in the unit table", v.name))?;
             if let Some(d) = v.display_unit
@@ -127,7 +143,7 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
             v.variability.as_str()
         )
         .unwrap();
-        writeln!(w, "      {}", real_element(v)).unwrap();
+        writeln!(w, "      {}", type_element(v)).unwrap();
         writeln!(w, "    </ScalarVariable>").unwrap();
     }
     writeln!(w, "  </ModelVariables>").unwrap();

@@ -24,7 +24,8 @@
 
 use super::excitation::Excitation;
 use super::params::RigParams;
-use crate::joint::{Joint, OperatingPoint};
+use crate::fidelity::{Evaluation, Evaluator, Source};
+use crate::joint::Joint;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 
@@ -63,8 +64,8 @@ pub enum Phase {
 pub(crate) struct Friction {
     /// Signed friction torque on the pin (N·m).
     pub torque: f64,
-    /// The core's operating point (None at zero load).
-    pub op: Option<OperatingPoint>,
+    /// The friction core's outputs (None at zero load).
+    pub op: Option<Evaluation>,
 }
 
 /// The right-hand side for one phase.
@@ -77,11 +78,15 @@ pub(crate) struct Dynamics<'a> {
     pub guess: Cell<f64>,
     /// First invalid load met (time, value); the derivative is NaN from then on.
     pub fault: Cell<Option<(f64, f64)>>,
+    /// A table or boundary level answering inside its envelope (None: the full solve always).
+    pub level: Option<&'a Evaluator>,
+    /// Evaluations outside that level's envelope, answered by the full solve.
+    pub fallbacks: Cell<u64>,
 }
 
 impl<'a> Dynamics<'a> {
     pub fn new(joint: &'a Joint, rig: &'a RigParams, excitation: &'a dyn Excitation, phase: Phase, guess: f64) -> Self {
-        Self { joint, rig, excitation, phase, guess: Cell::new(guess), fault: Cell::new(None) }
+        Self { joint, rig, excitation, phase, guess: Cell::new(guess), fault: Cell::new(None), level: None, fallbacks: Cell::new(0) }
     }
 
     /// The load at `t`, checked (Err with the value if negative or not finite).
@@ -90,10 +95,17 @@ impl<'a> Dynamics<'a> {
         if p.is_finite() && p >= 0.0 { Ok(p) } else { Err(p) }
     }
 
-    /// The core at (P, speed ≥ 0), warm-started; None at zero load.
-    pub fn operating_point(&self, load: f64, speed: f64) -> Option<OperatingPoint> {
+    /// The core at (P, speed ≥ 0): the fidelity level inside its envelope, else the full
+    /// solve warm-started; None at zero load.
+    pub fn operating_point(&self, load: f64, speed: f64) -> Option<Evaluation> {
         if load == 0.0 {
             return None;
+        }
+        if let Some(level) = self.level {
+            if let Some(e) = level.evaluate_inside(load, speed) {
+                return Some(e);
+            }
+            self.fallbacks.set(self.fallbacks.get() + 1);
         }
         let g = self.guess.get();
         let op = self
@@ -103,7 +115,8 @@ impl<'a> Dynamics<'a> {
         if op.logit.is_finite() {
             self.guess.set(op.logit);
         }
-        Some(op)
+        let source = if self.level.is_some() { Source::Fallback } else { Source::Full };
+        Some(Evaluation::from_point(&op, source))
     }
 
     /// Breakaway torque k_b·μ_c·R·P.

@@ -57,4 +57,7 @@ pub enum RigError {
     Chatter { time: f64 },
     #[error("invalid rig state: {0}")]
     State(String),
+    /// The fidelity level asked for could not be built ([`RigSim::set_fidelity`]).
+    #[error(transparent)]
+    Fidelity(#[from] crate::fidelity::FidelityError),
 }

@@ -25,6 +25,7 @@ use super::excitation::{Excitation, Held, Inputs, SineCommand, SineDrive, StepLo
 use super::integrate::{locate, segment, sub_step, TINY};
 use super::params::Formulation;
 use super::RigError;
+use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
 use crate::joint::Joint;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
@@ -146,6 +147,9 @@ pub struct Stats {
     pub reversals: u64,
     /// Longest run of consecutive events closer than 10 event tolerances (chatter indicator).
     pub max_event_burst: u64,
+    /// Friction evaluations outside the envelope of the fidelity level ([`RigSim::set_fidelity`]),
+    /// answered by the full solve.
+    pub fallbacks: u64,
 }
 
 #[derive(Debug, Clone)]
@@ -170,6 +174,8 @@ pub struct RigSim {
     segment: Option<Segment>,
     stats: Stats,
     burst: u64,
+    /// The friction fidelity ([`RigSim::set_fidelity`]); None: the full solve.
+    fidelity: Option<Arc<Evaluator>>,
 }
 
 impl std::fmt::Debug for RigSim {
@@ -219,9 +225,41 @@ impl RigSim {
             segment: None,
             stats: Stats::default(),
             burst: 0,
+            fidelity: None,
         };
         sim.node.phase = sim.resolve(&sim.node)?;
         Ok(sim)
+    }
+
+    /// Evaluate the friction at `fidelity` (built over `envelope` to `tolerance`, see
+    /// [`Evaluator::new`]) from now on. `table` and `boundary` answer inside the envelope; outside
+    /// it (and always at `full`) the warm-started full solve answers, as without this call;
+    /// [`Stats::fallbacks`] counts those calls. Returns the evaluator (what `auto` picked, its bound).
+    pub fn set_fidelity(&mut self, fidelity: Fidelity, tolerance: f64, envelope: Envelope) -> Result<&Evaluator, RigError> {
+        let ev = Evaluator::new(&self.config.model, fidelity, tolerance, envelope)?;
+        self.fidelity = Some(Arc::new(ev));
+        self.segment = None;
+        Ok(self.fidelity.as_deref().expect("just set"))
+    }
+
+    /// The fidelity level set by [`RigSim::set_fidelity`].
+    pub fn fidelity(&self) -> Option<&Evaluator> {
+        self.fidelity.as_deref()
+    }
+
+    /// A level answering inside its envelope, for the dynamics (None at full).
+    fn level(&self) -> Option<&Evaluator> {
+        self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full)
+    }
+
+    /// The envelope the built-in sine drive of `config` visits: the load ±10 % (at least
+    /// ±1 N) and speeds from 1e-3 rad/s to twice the command's peak speed 2πfA (at least
+    /// 1e-2 rad/s). Slower speeds occur only around reversals and fall back to the full solve.
+    pub fn drive_envelope(config: &RigConfig) -> Result<Envelope, RigError> {
+        let r = &config.rig;
+        let p = r.load.max(10.0);
+        let peak = (std::f64::consts::TAU * r.frequency * r.amplitude).max(5e-3);
+        Ok(Envelope::new((0.9 * p).min(p - 1.0), (1.1 * p).max(p + 1.0), 1e-3, 2.0 * peak)?)
     }
 
     pub fn config(&self) -> &RigConfig {
@@ -362,8 +400,10 @@ impl RigSim {
         let i = seg.nodes.partition_point(|(tn, _)| *tn <= t).max(1) - 1;
         let (ti, yi) = seg.nodes[i];
         let exc = self.held();
-        let d = Dynamics::new(&self.joint, &self.config.rig, &exc, seg.phase, seg.logit);
+        let mut d = Dynamics::new(&self.joint, &self.config.rig, &exc, seg.phase, seg.logit);
+        d.level = self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full);
         let y = sub_step(&self.config.rig, &d, ti, yi, t)?;
+        self.stats.fallbacks += d.fallbacks.get();
         Ok((y, seg.phase, seg.logit))
     }
 
@@ -375,7 +415,8 @@ impl RigSim {
         let boundary = ((t0 / rig.segment_length) * (1.0 + 1e-12)).floor() + 1.0;
         let t1 = (boundary * rig.segment_length).min(exc.next_discontinuity(t0));
         let phase = node.phase;
-        let d = Dynamics::new(&self.joint, &rig, &exc, phase, node.logit);
+        let mut d = Dynamics::new(&self.joint, &rig, &exc, phase, node.logit);
+        d.level = self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full);
         let y0 = to_state(&node.state, t0);
         let breakaway = |t: f64| d.load(t).map_or(0.0, |p| d.breakaway_torque(p));
         let event = |t: f64, y: &State| -> (f64, bool) {
@@ -397,6 +438,7 @@ impl RigSim {
             let y1 = sub_step(&rig, &d, t0, y0, t1)?;
             let mut next = Node { time: t1, state: physical(&y1), ..node };
             next.phase = self.resolve(&next)?;
+            self.stats.fallbacks += d.fallbacks.get();
             return Ok(Segment { phase, logit: node.logit, nodes: vec![(t0, y0)], end: t1, next });
         }
         let run = segment(&rig, &d, t0, y0, t1, node.step, &outside)?;
@@ -440,6 +482,7 @@ impl RigSim {
             next.phase = self.resolve(&next)?;
             (t, next)
         };
+        self.stats.fallbacks += d.fallbacks.get();
         Ok(Segment { phase, logit, nodes, end, next })
     }
 
@@ -447,7 +490,8 @@ impl RigSim {
     fn observe(&self, t: f64, y: &State, phase: Phase, logit: f64) -> Sample {
         let exc = self.held();
         let rig = &self.config.rig;
-        let d = Dynamics::new(&self.joint, rig, &exc, phase, logit);
+        let mut d = Dynamics::new(&self.joint, rig, &exc, phase, logit);
+        d.level = self.level();
         let load = d.load(t).unwrap_or(f64::NAN);
         let (command_angle, _) = exc.command(t);
         let fr = if load.is_finite() { Some(d.friction(load, y)) } else { None };

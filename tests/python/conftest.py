@@ -1,4 +1,5 @@
-"""Shared fixtures of the PinJoint FMU harness.
+"""Shared fixtures of the PinJoint and PinJointRig FMU harness (the rig's helpers
+are in rig_support.py).
 
 The FMU is target/fmu/PinJoint.fmu (or $PINJOINT_FMU), built by
 `cargo run --release -p fmu_build`; the library reference is the example binary
@@ -45,6 +46,25 @@ def unzipped(fmu_path, tmp_path_factory):
 def model_description(fmu_path):
     from fmpy import read_model_description
     return read_model_description(fmu_path)
+
+
+@pytest.fixture(scope="session")
+def rig_fmu_path():
+    from rig_support import RIG_FMU
+    assert RIG_FMU.is_file(), f"{RIG_FMU} is missing: run `cargo run --release -p fmu_build` (or tests/python/run.sh)"
+    return str(RIG_FMU)
+
+
+@pytest.fixture(scope="session")
+def rig_unzipped(rig_fmu_path, tmp_path_factory):
+    from fmpy import extract
+    return extract(rig_fmu_path, str(tmp_path_factory.mktemp("rigfmu")))
+
+
+@pytest.fixture(scope="session")
+def rig_model_description(rig_fmu_path):
+    from fmpy import read_model_description
+    return read_model_description(rig_fmu_path)
 
 
 def reference(load, omega, params=None):

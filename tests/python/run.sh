@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The FMU harness: builds target/fmu/PinJoint.fmu and the library reference binary,
+# The FMU harness: builds target/fmu/PinJoint.fmu and PinJointRig.fmu and the library
+# reference binaries (reference_points, rig_reference),
 # installs requirements-test.txt into .venv (once), runs pytest on tests/python and
 # the Rust `fmi` crate importer against the packaged FMU.
 #
@@ -19,7 +20,7 @@ if [[ -z "${PINJOINT_SKIP_APT:-}" ]] && { ! ls /usr/lib/llvm-*/lib/libclang*.so*
 fi
 
 cargo run --release -q -p fmu_build
-cargo build --release -q --example reference_points
+cargo build --release -q --example reference_points --example rig_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"
 if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy" 2>/dev/null; then
@@ -28,5 +29,6 @@ if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy" 2>/dev/null; the
 fi
 
 export PINJOINT_FMU="$ROOT/target/fmu/PinJoint.fmu"
+export PINJOINT_RIG_FMU="$ROOT/target/fmu/PinJointRig.fmu"
 "$VENV/bin/python" -m pytest -q tests/python "$@"
-cargo test --release -q --test fmi_crate_importer --test fmi_crate_misuse
+cargo test --release -q --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse

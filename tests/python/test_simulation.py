@@ -7,6 +7,9 @@ from fmpy import simulate_fmu
 from conftest import OUTPUTS, DEFAULT_BAND, assert_close, expected_torque, reference
 
 DT = 0.005
+# The FMU's default fidelity (full) is the library's complete solve, evaluated cold at every
+# call, so its outputs are the library's for the same inputs (issue: to 1e-12 relative).
+FULL_ACCURACY = 1e-12
 
 
 def input_signal(stop=4.0):
@@ -32,10 +35,10 @@ def check_against_library(r, params=None, band=DEFAULT_BAND):
     load, omega = r["load"], r["angular_velocity"]
     ref = reference(load, omega, params)
     torque = expected_torque(load, omega, band, params)
-    assert_close(r["torque"], torque, what="torque")
+    assert_close(r["torque"], torque, rel=FULL_ACCURACY, what="torque")
     for name in ("friction_coefficient", "film_thickness", "lambda_ratio", "fluid_load_fraction",
                  "asperity_load_fraction", "mean_pressure", "sommerfeld_number"):
-        assert_close(r[name], ref[name], what=name)
+        assert_close(r[name], ref[name], rel=FULL_ACCURACY, what=name)
     assert_close(r["power_loss"], np.abs(torque * omega), what="power_loss")
     # Each recorded row holds the inputs of the step that ended there, so the energy
     # is the running sum of the recorded power times the step.
@@ -56,9 +59,9 @@ def test_outputs_equal_the_library_at_every_output_point(fmu_path):
     assert np.sum((np.abs(omega) < DEFAULT_BAND) & (omega != 0)) >= 2
     assert set(np.unique(r["load"])) >= {5e3, 60e3}
     assert ref["fluid_load_fraction"].max() > 0.3 and ref["fluid_load_fraction"].min() < 0.01
-    # Outside the band the torque is exactly the library's signed torque.
+    # Outside the band the torque is the library's signed torque.
     out = np.abs(omega) >= DEFAULT_BAND
-    assert np.array_equal(r["torque"][out], ref["signed_torque"][out])
+    assert_close(r["torque"][out], ref["signed_torque"][out], rel=FULL_ACCURACY, what="torque outside the band")
     assert np.all(r["torque"][omega > 0] < 0) and np.all(r["torque"][omega < 0] > 0)
 
 

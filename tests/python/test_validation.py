@@ -26,7 +26,8 @@ def test_interface(model_description):
     assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load"]
     assert [n for n in v if v[n].causality == "output"] == OUTPUTS
     params = [n for n in v if v[n].causality == "parameter"]
-    assert len(params) == 22 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    assert len(params) == 28 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    assert {"fidelity", "tolerance", "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"} <= set(params)
     assert float(v["geometry.pin_radius"].start) == 0.028
     assert float(v["friction.boundary_friction_coefficient"].start) == 0.12
     assert v["torque"].unit == "N.m" and v["load"].unit == "N" and v["angular_velocity"].unit == "rad/s"

@@ -8,7 +8,7 @@ use crate::fmi2::logging::{Category, Logger};
 use crate::fmi2::snapshot::Snapshot;
 use crate::fmi2::state;
 use crate::fmi2::types::*;
-use crate::fmi2::variables::ModelInfo;
+use crate::fmi2::variables::{Kind, ModelInfo};
 use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::ptr::null_mut;
@@ -256,7 +256,7 @@ pub unsafe extern "C" fn fmi2SetReal(
 
 macro_rules! no_such_type {
     ($get:ident, $set:ident, $t:ty, $name:literal) => {
-        /// This layer's models have no variables of this type: every value reference is rejected.
+        /// No model of this layer has variables of this type: every value reference is rejected.
         ///
         /// # Safety
         /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
@@ -285,8 +285,45 @@ macro_rules! no_such_type {
     };
 }
 
-no_such_type!(fmi2GetInteger, fmi2SetInteger, Fmi2Integer, "Integer");
-no_such_type!(fmi2GetBoolean, fmi2SetBoolean, Fmi2Boolean, "Boolean");
+macro_rules! int_type {
+    ($get:ident, $set:ident, $kind:expr, $from:expr) => {
+        /// Integer-valued variables (the model holds them as f64; see [`Kind`]).
+        ///
+        /// # Safety
+        /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $get(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut c_int) -> Fmi2StatusC {
+            call(c, stringify!($get), state::GET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let (vrs, out) = unsafe { (slice(vr, nvr, "vr[]")?, slice_mut(value, nvr, "value[]")?) };
+                let mut vals = vec![0.0; vrs.len()];
+                let status = inst.get_values($kind, vrs, &mut vals)?;
+                for (o, v) in out.iter_mut().zip(vals) {
+                    *o = v as c_int;
+                }
+                Ok(status)
+            })
+        }
+        /// Integer-valued variables (the model holds them as f64; see [`Kind`]).
+        ///
+        /// # Safety
+        /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $set(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const c_int) -> Fmi2StatusC {
+            call(c, stringify!($set), state::SET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let (vrs, vals) = unsafe { (slice(vr, nvr, "vr[]")?, slice(value, nvr, "value[]")?) };
+                let from: fn(c_int) -> f64 = $from;
+                let vals: Vec<f64> = vals.iter().map(|&v| from(v)).collect();
+                inst.set_values($kind, vrs, &vals)
+            })
+        }
+    };
+}
+
+int_type!(fmi2GetInteger, fmi2SetInteger, Kind::Integer, |v| v as f64);
+// Any non-zero fmi2Boolean is true.
+int_type!(fmi2GetBoolean, fmi2SetBoolean, Kind::Boolean, |v| if v != FMI2_FALSE { 1.0 } else { 0.0 });
 no_such_type!(fmi2GetString, fmi2SetString, Fmi2String, "String");
 
 /// # Safety

@@ -1,8 +1,12 @@
 //! The PinJoint co-simulation model: library outputs at the held inputs, the
 //! zero-velocity treatment of the torque, and the dissipated energy.
 
-use super::variables::{self as var, Output, ANGLE, ANGULAR_VELOCITY, FIRST_OUTPUT, FIRST_PARAM, LOAD, SPEED_BAND};
-use super::zero_speed::{check_band, friction_torque, DEFAULT_SPEED_BAND};
+use super::variables::{
+    self as var, fidelity_of_code, Output, ANGLE, ANGULAR_VELOCITY, ENVELOPE_LOAD_MIN, ENVELOPE_SPEED_MAX, FIDELITY, FIRST_OUTPUT,
+    FIRST_PARAM, LOAD, SPEED_BAND, TOLERANCE,
+};
+use super::zero_speed::{check_band, DEFAULT_SPEED_BAND};
+use crate::fidelity::{Envelope, Evaluator};
 use crate::fmi2::bytes::{ByteReader, ByteWriter};
 use crate::fmi2::logging::show;
 use crate::fmi2::model::{Model, ModelResult};
@@ -10,9 +14,10 @@ use crate::params::PARAMS;
 use crate::{Joint, Params};
 
 /// Version of [`PinJointModel::serialize`]'s layout.
-const STATE_VERSION: u8 = 1;
-/// f64 values in the serialized state: parameters, band, three inputs, energy.
-const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1;
+const STATE_VERSION: u8 = 3;
+/// f64 values in the serialized state: parameters, band, three inputs, energy, fidelity code,
+/// tolerance, envelope. (The outputs depend on the current inputs only: no solver history.)
+const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1 + 2 + 4;
 
 /// Every output but the energy, from one evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -45,15 +50,32 @@ impl Outputs {
     }
 }
 
-/// The outputs at (`load`, `omega`) with band ω_b = `band`. At zero load the joint
-/// is unloaded and every output is 0. An error names the inputs when the library
-/// rejects them or returns a non-finite value.
-pub fn outputs(joint: &Joint, load: f64, omega: f64, band: f64) -> ModelResult<Outputs> {
+/// The outputs at (`load`, `omega`) with band ω_b = `band`, from `ev` at its fidelity. At
+/// zero load the joint is unloaded and every output is 0. Inside the band the torque is the
+/// band-edge torque ramped linearly ([`super::zero_speed`]). An error names the inputs when
+/// the library rejects them or returns a non-finite value. Also returns whether this call
+/// was the first to fall outside the envelope.
+///
+/// The full level is evaluated cold (no warm start): the outputs are then a function of the
+/// current inputs alone, bit-identical to [`crate::Joint::evaluate`], whatever the history
+/// (a host that rolls back with get/set FMU state, or re-steps, gets the same numbers). It
+/// costs ~1.2× a warm solve per step; `table` is the level for speed.
+pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelResult<(Outputs, bool)> {
     if load == 0.0 {
-        return Ok(Outputs::default());
+        return Ok((Outputs::default(), false));
     }
-    let op = joint.evaluate(load, omega).map_err(|e| e.to_string())?;
-    let torque = friction_torque(joint, load, omega, band, &op).map_err(|e| e.to_string())?;
+    ev.reset();
+    let e = ev.evaluate(load, omega).map_err(|e| e.to_string())?;
+    let mut first = e.first_fallback;
+    let torque = if omega.abs() >= band {
+        e.signed_torque()
+    } else {
+        ev.reset();
+        let edge = ev.evaluate(load, band).map_err(|e| e.to_string())?;
+        first |= edge.first_fallback;
+        -edge.torque * (omega / band)
+    };
+    let op = ev.operating_point(&e);
     let out = Outputs {
         torque,
         friction_coefficient: op.friction_coefficient,
@@ -96,7 +118,50 @@ pub fn outputs(joint: &Joint, load: f64, omega: f64, band: f64) -> ModelResult<O
             ));
         }
     }
-    Ok(out)
+    Ok((out, first))
+}
+
+/// The fidelity settings of the FMU: the `fidelity` code, `tolerance` and the envelope.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FidelitySettings {
+    pub code: i32,
+    pub tolerance: f64,
+    /// load_min, load_max (N), speed_min, speed_max (rad/s).
+    pub envelope: [f64; 4],
+}
+
+impl Default for FidelitySettings {
+    fn default() -> Self {
+        Self { code: var::DEFAULT_FIDELITY, tolerance: var::DEFAULT_TOLERANCE, envelope: var::DEFAULT_ENVELOPE }
+    }
+}
+
+impl FidelitySettings {
+    /// Build the evaluator; errors name the parameter, its value and unit.
+    pub fn build(&self, params: &Params) -> ModelResult<Evaluator> {
+        let level = fidelity_of_code(self.code).ok_or_else(|| {
+            format!("parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)", self.code)
+        })?;
+        let [a, b, c, d] = self.envelope;
+        let env = Envelope::new(a, b, c, d).map_err(|e| format!("parameter {e}"))?;
+        Evaluator::new(params, level, self.tolerance, env).map_err(|e| format!("parameter {e}"))
+    }
+}
+
+/// What the log says about a built evaluator: the level (what auto picked) and its bound.
+fn describe(ev: &Evaluator) -> String {
+    let e = ev.envelope();
+    format!(
+        "fidelity {} -> {}: measured error bound {:e} (tolerance {:e}) over load {}..{} N, |omega| {}..{} rad/s",
+        ev.requested(),
+        ev.chosen(),
+        ev.error_bound(),
+        ev.tolerance(),
+        e.load_min,
+        e.load_max,
+        e.speed_min,
+        e.speed_max
+    )
 }
 
 #[derive(Debug, Clone)]
@@ -108,8 +173,12 @@ pub struct PinJointModel {
     load: f64,
     energy: f64,
     out: Outputs,
-    /// Built from `params` on first use; dropped when a parameter changes.
-    joint: Option<Joint>,
+    fidelity: FidelitySettings,
+    /// Built from `params` and `fidelity` on first use (at exit of initialization); dropped
+    /// when a parameter changes.
+    evaluator: Option<Evaluator>,
+    /// For the host's log (fidelity chosen; first fallback).
+    message: Option<String>,
 }
 
 impl PinJointModel {
@@ -122,18 +191,28 @@ impl PinJointModel {
             load: var::DEFAULT_LOAD,
             energy: 0.0,
             out: Outputs::default(),
-            joint: None,
+            fidelity: FidelitySettings::default(),
+            evaluator: None,
+            message: None,
         };
         m.set_start_values();
         m
     }
 
-    fn joint(&mut self) -> ModelResult<&Joint> {
+    fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
         check_band(self.band)?;
-        if self.joint.is_none() {
-            self.joint = Some(Joint::new(&self.params).map_err(|e| e.to_string())?);
+        if self.evaluator.is_none() {
+            Joint::new(&self.params).map_err(|e| e.to_string())?;
+            let ev = self.fidelity.build(&self.params)?;
+            self.message = Some(describe(&ev));
+            self.evaluator = Some(ev);
         }
-        Ok(self.joint.as_ref().expect("just built"))
+        Ok(self.evaluator.as_mut().expect("just built"))
+    }
+
+    /// The evaluator in use (after initialization).
+    pub fn current_evaluator(&self) -> Option<&Evaluator> {
+        self.evaluator.as_ref()
     }
 }
 
@@ -152,7 +231,9 @@ impl Model for PinJointModel {
         self.load = var::DEFAULT_LOAD;
         self.energy = 0.0;
         self.out = Outputs::default();
-        self.joint = None;
+        self.fidelity = FidelitySettings::default();
+        self.evaluator = None;
+        self.message = None;
     }
 
     fn get_real(&self, i: usize) -> f64 {
@@ -161,6 +242,9 @@ impl Model for PinJointModel {
             ANGULAR_VELOCITY => self.omega,
             LOAD => self.load,
             SPEED_BAND => self.band,
+            FIDELITY => self.fidelity.code as f64,
+            TOLERANCE => self.fidelity.tolerance,
+            i if (ENVELOPE_LOAD_MIN..=ENVELOPE_SPEED_MAX).contains(&i) => self.fidelity.envelope[i - ENVELOPE_LOAD_MIN],
             i if i >= FIRST_PARAM => (PARAMS[i - FIRST_PARAM].get)(&self.params),
             i => match Output::ALL[i - FIRST_OUTPUT] {
                 Output::DissipatedEnergy => self.energy,
@@ -176,6 +260,10 @@ impl Model for PinJointModel {
             LOAD if !(v.is_finite() && v >= 0.0) => {
                 Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(v)))
             }
+            FIDELITY if fidelity_of_code(v as i32).is_none() || v.fract() != 0.0 => Err(format!(
+                "parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)",
+                show(v)
+            )),
             // Parameters are checked together at fmi2ExitInitializationMode.
             _ => Ok(()),
         }
@@ -187,21 +275,52 @@ impl Model for PinJointModel {
             ANGULAR_VELOCITY => self.omega = v,
             LOAD => self.load = v,
             SPEED_BAND => self.band = v,
+            FIDELITY => {
+                self.fidelity.code = v as i32;
+                self.evaluator = None;
+            }
+            TOLERANCE => {
+                self.fidelity.tolerance = v;
+                self.evaluator = None;
+            }
+            i if (ENVELOPE_LOAD_MIN..=ENVELOPE_SPEED_MAX).contains(&i) => {
+                self.fidelity.envelope[i - ENVELOPE_LOAD_MIN] = v;
+                self.evaluator = None;
+            }
             i if i >= FIRST_PARAM => {
                 (PARAMS[i - FIRST_PARAM].set)(&mut self.params, v);
-                self.joint = None;
+                self.evaluator = None;
             }
             _ => unreachable!("the FMI layer never sets outputs"),
         }
     }
 
-    fn exit_initialization(&mut self) -> ModelResult<()> {
-        self.joint().map(|_| ())
+    fn take_message(&mut self) -> Option<String> {
+        self.message.take()
+    }
+
+    fn exit_initialization(&mut self, _start_time: f64) -> ModelResult<()> {
+        self.evaluator().map(|_| ())
     }
 
     fn compute_outputs(&mut self) -> ModelResult<()> {
         let (load, omega, band) = (self.load, self.omega, self.band);
-        let out = outputs(self.joint()?, load, omega, band)?;
+        let (out, first_fallback) = outputs(self.evaluator()?, load, omega, band)?;
+        if first_fallback {
+            let ev = self.evaluator.as_ref().expect("built above");
+            let e = ev.envelope();
+            self.message = Some(format!(
+                "fidelity {}: load = {} N, angular_velocity = {} rad/s is outside the envelope (load {}..{} N, |omega| {}..{} rad/s); \
+                 the full solve answers there (said once)",
+                ev.chosen(),
+                show(load),
+                show(omega),
+                e.load_min,
+                e.load_max,
+                e.speed_min,
+                e.speed_max
+            ));
+        }
         self.out = out;
         Ok(())
     }
@@ -222,7 +341,11 @@ impl Model for PinJointModel {
         for s in PARAMS.iter() {
             w.f64((s.get)(&self.params));
         }
-        for v in [self.band, self.angle, self.omega, self.load, self.energy] {
+        let f = &self.fidelity;
+        for v in [self.band, self.angle, self.omega, self.load, self.energy, f.code as f64, f.tolerance] {
+            w.f64(v);
+        }
+        for v in f.envelope {
             w.f64(v);
         }
         out.extend_from_slice(&w.buf);
@@ -244,6 +367,16 @@ impl Model for PinJointModel {
         }
         let band = r.f64("zero_velocity.speed_band")?;
         let (angle, omega, load, energy) = (r.f64("angle")?, r.f64("angular_velocity")?, r.f64("load")?, r.f64("dissipated_energy")?);
+        let code = r.f64("fidelity")?;
+        let tolerance = r.f64("tolerance")?;
+        let mut envelope = [0.0; 4];
+        for (k, name) in ["envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"].iter().enumerate() {
+            envelope[k] = r.f64(name)?;
+        }
+        if code.fract() != 0.0 || fidelity_of_code(code as i32).is_none() {
+            return Err(format!("fidelity = {code} in the state is not a fidelity code (0..3)"));
+        }
+        let fidelity = FidelitySettings { code: code as i32, tolerance, envelope };
         r.finish()?;
         for (i, v) in [(ANGLE, angle), (ANGULAR_VELOCITY, omega), (LOAD, load)] {
             self.check_real(i, v)?;
@@ -251,7 +384,20 @@ impl Model for PinJointModel {
         if !(energy.is_finite() && energy >= 0.0) {
             return Err(format!("dissipated_energy = {energy} J is not a finite number >= 0"));
         }
-        *self = PinJointModel { params, band, angle, omega, load, energy, out: Outputs::default(), joint: None };
+        // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
+        let evaluator = if params == self.params && fidelity == self.fidelity && band == self.band { self.evaluator.take() } else { None };
+        *self = PinJointModel {
+            params,
+            band,
+            angle,
+            omega,
+            load,
+            energy,
+            out: Outputs::default(),
+            fidelity,
+            evaluator,
+            message: None,
+        };
         Ok(())
     }
 }

@@ -7,9 +7,11 @@
 //! | 3–12 | 10–19 | outputs ([`Output`] order) |
 //! | 13–33 | 100–120 | the 21 parameters of [`crate::params::PARAMS`], `section.key` |
 //! | 34 | 200 | `zero_velocity.speed_band` |
+//! | 35 | 300 | `fidelity` (Integer: 0 full, 1 table, 2 boundary, 3 auto) |
+//! | 36–40 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
 
 use super::zero_speed::DEFAULT_SPEED_BAND;
-use crate::fmi2::variables::{Causality, DisplayUnit, Initial, UnitDef, Variability, Variable};
+use crate::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
 use crate::params::{ParamSpec, PARAMS};
 
 pub const ANGLE: usize = 0;
@@ -18,7 +20,25 @@ pub const LOAD: usize = 2;
 pub const FIRST_OUTPUT: usize = 3;
 pub const FIRST_PARAM: usize = FIRST_OUTPUT + Output::ALL.len();
 pub const SPEED_BAND: usize = FIRST_PARAM + PARAMS.len();
-pub const COUNT: usize = SPEED_BAND + 1;
+pub const FIDELITY: usize = SPEED_BAND + 1;
+pub const TOLERANCE: usize = FIDELITY + 1;
+pub const ENVELOPE_LOAD_MIN: usize = TOLERANCE + 1;
+pub const ENVELOPE_LOAD_MAX: usize = TOLERANCE + 2;
+pub const ENVELOPE_SPEED_MIN: usize = TOLERANCE + 3;
+pub const ENVELOPE_SPEED_MAX: usize = TOLERANCE + 4;
+pub const COUNT: usize = ENVELOPE_SPEED_MAX + 1;
+
+/// Start values of the fidelity parameters: full solve; tolerance 1e-4; the paper's rig
+/// envelope 5–60 kN, 0.01–10 rad/s.
+pub const DEFAULT_FIDELITY: i32 = 0;
+pub const DEFAULT_TOLERANCE: f64 = 1e-4;
+pub const DEFAULT_ENVELOPE: [f64; 4] = [5e3, 60e3, 0.01, 10.0];
+
+/// The fidelity level of an Integer code of the `fidelity` parameter.
+pub fn fidelity_of_code(code: i32) -> Option<crate::fidelity::Fidelity> {
+    use crate::fidelity::Fidelity::*;
+    [Full, Table, Boundary, Auto].get(usize::try_from(code).ok()?).copied()
+}
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -95,6 +115,7 @@ pub static UNITS: &[UnitDef] = &[
 fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>, start: f64, min: Option<f64>, d: &str) -> Variable {
     Variable {
         name: name.into(),
+        kind: Kind::Real,
         value_reference: vr,
         causality: Causality::Input,
         variability: Variability::Continuous,
@@ -138,6 +159,7 @@ fn output(o: Output) -> Variable {
     };
     Variable {
         name: name.into(),
+        kind: Kind::Real,
         value_reference: 10 + o as u32,
         causality: Causality::Output,
         variability: Variability::Continuous,
@@ -153,7 +175,7 @@ fn output(o: Output) -> Variable {
 }
 
 /// Display unit a user expects for a parameter.
-fn param_display(s: &ParamSpec) -> Option<&'static str> {
+pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
     match (s.section, s.unit) {
         ("geometry", "m") => Some("mm"),
         (_, "m") => Some("µm"),
@@ -165,10 +187,11 @@ fn param_display(s: &ParamSpec) -> Option<&'static str> {
     }
 }
 
-fn parameter(i: usize, s: &ParamSpec) -> Variable {
+pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
     let (min, max) = s.range.bounds();
     Variable {
         name: s.name(),
+        kind: Kind::Real,
         value_reference: 100 + i as u32,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -197,6 +220,7 @@ pub fn table() -> Vec<Variable> {
     v.extend(PARAMS.iter().enumerate().map(|(i, s)| parameter(i, s)));
     v.push(Variable {
         name: "zero_velocity.speed_band".into(),
+        kind: Kind::Real,
         value_reference: 200,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -211,6 +235,47 @@ pub fn table() -> Vec<Variable> {
             .into(),
         depends_on: vec![],
     });
+    v.push(Variable {
+        name: "fidelity".into(),
+        kind: Kind::Integer,
+        value_reference: 300,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        initial: Initial::Exact,
+        unit: None,
+        display_unit: None,
+        start: Some(DEFAULT_FIDELITY as f64),
+        min: Some(0.0),
+        max: Some(3.0),
+        description: "Fidelity of the friction evaluation: 0 = full (complete solve, cold: outputs depend on the current inputs only), 1 = table \
+                      (Stribeck map tabulated over the envelope at exit of initialization, interpolated, within \
+                      tolerance of full), 2 = boundary (mu = mu_c), 3 = auto (the cheapest level within tolerance). \
+                      Outside the envelope table and boundary answer with the full solve (logged once)"
+            .into(),
+        depends_on: vec![],
+    });
+    let real = |name: &str, vr: u32, unit: Option<&'static str>, start: f64, d: &str| Variable {
+        name: name.into(),
+        kind: Kind::Real,
+        value_reference: vr,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        initial: Initial::Exact,
+        unit,
+        display_unit: None,
+        start: Some(start),
+        min: Some(0.0),
+        max: None,
+        description: d.into(),
+        depends_on: vec![],
+    };
+    let [l0, l1, w0, w1] = DEFAULT_ENVELOPE;
+    v.push(real("tolerance", 301, None, DEFAULT_TOLERANCE,
+        "Largest relative error accepted in mu, torque and film thickness (absolute in the load shares) for fidelity table, boundary and auto; must be > 0"));
+    v.push(real("envelope.load_min", 302, Some("N"), l0, "Smallest load of the envelope the scene visits (> 0)"));
+    v.push(real("envelope.load_max", 303, Some("N"), l1, "Largest load of the envelope (> envelope.load_min)"));
+    v.push(real("envelope.speed_min", 304, Some("rad/s"), w0, "Smallest speed magnitude |omega| of the envelope (> 0; omega = 0 is handled exactly)"));
+    v.push(real("envelope.speed_max", 305, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
     debug_assert_eq!(v.len(), COUNT);
     v
 }

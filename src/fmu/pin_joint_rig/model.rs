@@ -1,0 +1,250 @@
+//! The PinJointRig co-simulation model: the rig simulator [`RigSim`] behind the
+//! FMI layer. It integrates internally across communication steps (its own
+//! segments and events, independent of the host's grid); a communication step only
+//! moves the simulator's clock and samples it.
+//!
+//! Time: the rig's clock is the FMU time minus the start time, so the stroke
+//! A sin(2 pi f (t - t_start)) starts at rest on the command at the start time.
+//! Inputs are held over each step; setting an input to a new value restarts the
+//! integration at the current time (see [`crate::rig::sim`]).
+
+use super::state::{decode, encode};
+use super::variables::{default_load, rig_spec, Output, Var, LAYOUT};
+use crate::fmi2::logging::show;
+use crate::fmi2::model::{Model, ModelResult};
+use crate::params::PARAMS;
+use crate::rig::{Formulation, Inputs, Method, RigConfig, RigSim, Sample, RIG_PARAMS};
+
+/// Every value a host can set, as the model holds it (Booleans and Integers as f64).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    /// Model and rig parameters (`cfg.rig.load` is unused: the load is the input).
+    pub cfg: RigConfig,
+    pub use_command_input: bool,
+    /// Integer codes of `rig.formulation` and `rig.method`, checked at initialization.
+    pub formulation: f64,
+    pub method: f64,
+    pub load: f64,
+    pub command_angle: f64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings { cfg: RigConfig::default(), use_command_input: false, formulation: 0.0, method: 0.0, load: default_load(), command_angle: 0.0 }
+    }
+}
+
+impl Settings {
+    /// The value of table entry `v` (not an output).
+    pub fn get(&self, v: Var) -> f64 {
+        let rig = &self.cfg.rig;
+        match v {
+            Var::Load => self.load,
+            Var::CommandAngle => self.command_angle,
+            Var::Frequency => rig.frequency,
+            Var::Amplitude => rig.amplitude,
+            Var::UseCommandInput => self.use_command_input as u8 as f64,
+            Var::Rig(i) => (RIG_PARAMS[i].get)(rig),
+            Var::Formulation => self.formulation,
+            Var::Method => self.method,
+            Var::Model(i) => (PARAMS[i].get)(&self.cfg.model),
+            Var::Out(_) => unreachable!("outputs are not settings"),
+        }
+    }
+
+    pub fn set(&mut self, v: Var, x: f64) {
+        let rig = &mut self.cfg.rig;
+        match v {
+            Var::Load => self.load = x,
+            Var::CommandAngle => self.command_angle = x,
+            Var::Frequency => rig.frequency = x,
+            Var::Amplitude => rig.amplitude = x,
+            Var::UseCommandInput => self.use_command_input = x != 0.0,
+            Var::Rig(i) => (RIG_PARAMS[i].set)(rig, x),
+            Var::Formulation => self.formulation = x,
+            Var::Method => self.method = x,
+            Var::Model(i) => (PARAMS[i].set)(&mut self.cfg.model, x),
+            Var::Out(_) => unreachable!("the FMI layer never sets outputs"),
+        }
+    }
+
+    /// The inputs as the simulator takes them.
+    pub fn inputs(&self) -> Inputs {
+        Inputs { load: Some(self.load), command_angle: self.use_command_input.then_some(self.command_angle) }
+    }
+
+    /// Check an input value (parameters are checked together by [`Settings::config`]).
+    pub fn check_input(v: Var, x: f64) -> ModelResult<()> {
+        match v {
+            Var::Load if !(x.is_finite() && x >= 0.0) => {
+                Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(x)))
+            }
+            Var::CommandAngle if !x.is_finite() => Err(format!("input command_angle = {} rad is not a finite number", show(x))),
+            _ => Ok(()),
+        }
+    }
+
+    /// The validated configuration; an error names the parameter, its value and unit.
+    pub fn config(&self) -> ModelResult<RigConfig> {
+        let mut cfg = self.cfg;
+        for key in ["frequency", "amplitude"] {
+            let s = rig_spec(key);
+            let x = (s.get)(&cfg.rig);
+            if !(x.is_finite() && s.range.contains(x)) {
+                return Err(format!("parameter {key} = {} {} is invalid: it must be a finite number {}", show(x), s.unit, s.range.describe()));
+            }
+        }
+        cfg.rig.formulation = match self.formulation {
+            0.0 => Formulation::Hybrid,
+            1.0 => Formulation::Regularised,
+            x => return Err(format!("parameter rig.formulation = {x} is invalid: it must be 0 (hybrid) or 1 (regularised)")),
+        };
+        cfg.rig.method = match self.method {
+            0.0 => Method::Dopri5,
+            1.0 => Method::Dop853,
+            2.0 => Method::Rk4,
+            x => return Err(format!("parameter rig.method = {x} is invalid: it must be 0 (Dopri5), 1 (Dop853) or 2 (RK4)")),
+        };
+        cfg.rig.load = self.load;
+        cfg.validate().map_err(|e| e.to_string())?;
+        Ok(cfg)
+    }
+}
+
+/// The outputs as the FMU reports them: the sample, with the core's film quantities
+/// set to 0 at zero load (no contact) where the library has NaN.
+pub fn outputs(s: &Sample) -> ModelResult<[f64; Output::ALL.len()]> {
+    let contact = s.load > 0.0;
+    let out = Output::ALL.map(|o| match o {
+        Output::Angle => s.angle,
+        Output::AngularVelocity => s.angular_velocity,
+        Output::Torque => s.torque,
+        Output::FrictionTorque => s.friction_torque,
+        Output::FrictionCoefficient => s.friction_coefficient,
+        Output::FilmThickness => if contact { s.film_thickness } else { 0.0 },
+        Output::FluidLoadFraction => if contact { s.fluid_load_fraction } else { 0.0 },
+        Output::Stuck => s.stuck as u8 as f64,
+        Output::CommandedAngle => s.command_angle,
+        Output::ActuatorWork => s.actuator_work,
+        Output::FrictionDissipation => s.friction_dissipation,
+        Output::KineticEnergy => s.kinetic_energy,
+    });
+    if let Some((o, v)) = Output::ALL.iter().zip(out).find(|(_, v)| !v.is_finite()) {
+        let name = &super::INFO.variables[LAYOUT.iter().position(|x| *x == Var::Out(*o)).expect("in the table")].name;
+        return Err(format!(
+            "the rig gives {name} = {} at t = {} s (load {} N, angle {} rad, speed {} rad/s)",
+            show(v),
+            show(s.time),
+            show(s.load),
+            show(s.angle),
+            show(s.angular_velocity)
+        ));
+    }
+    Ok(out)
+}
+
+#[derive(Debug, Clone)]
+pub struct RigModel {
+    pub(super) settings: Settings,
+    /// The experiment's start time: the rig's clock is t - start_time.
+    pub(super) start_time: f64,
+    /// The simulator, built at fmi2ExitInitializationMode (or for outputs read
+    /// during initialization); dropped when a parameter changes.
+    pub(super) sim: Option<RigSim>,
+    out: [f64; Output::ALL.len()],
+}
+
+impl RigModel {
+    pub fn new() -> Self {
+        RigModel { settings: Settings::default(), start_time: 0.0, sim: None, out: [0.0; Output::ALL.len()] }
+    }
+
+    /// A model with these settings and, if given, a simulator resumed from `state`.
+    pub(super) fn restored(settings: Settings, start_time: f64, state: Option<crate::rig::RigState>) -> ModelResult<Self> {
+        let mut m = RigModel { settings, start_time, sim: None, out: [0.0; Output::ALL.len()] };
+        if let Some(st) = state {
+            let mut sim = m.build()?;
+            sim.set_state(&st).map_err(|e| e.to_string())?;
+            m.sim = Some(sim);
+        }
+        Ok(m)
+    }
+
+    fn build(&self) -> ModelResult<RigSim> {
+        let cfg = self.settings.config()?;
+        RigSim::new(&cfg).map_err(|e| e.to_string())
+    }
+
+    fn sim(&mut self) -> ModelResult<&mut RigSim> {
+        if self.sim.is_none() {
+            self.sim = Some(self.build()?);
+        }
+        Ok(self.sim.as_mut().expect("just built"))
+    }
+
+    /// Apply the held inputs at the current time and sample.
+    fn refresh(&mut self, rig_time: Option<f64>) -> ModelResult<()> {
+        let inputs = self.settings.inputs();
+        let sim = self.sim()?;
+        let t = rig_time.unwrap_or(sim.time()).max(sim.time());
+        sim.advance_to(t, &inputs).map_err(|e| e.to_string())?;
+        let s = sim.sample().map_err(|e| e.to_string())?;
+        self.out = outputs(&s)?;
+        Ok(())
+    }
+}
+
+impl Default for RigModel {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Model for RigModel {
+    fn set_start_values(&mut self) {
+        *self = RigModel::new();
+    }
+
+    fn get_real(&self, i: usize) -> f64 {
+        match LAYOUT[i] {
+            Var::Out(o) => self.out[o as usize],
+            v => self.settings.get(v),
+        }
+    }
+
+    fn check_real(&self, i: usize, x: f64) -> ModelResult<()> {
+        Settings::check_input(LAYOUT[i], x)
+    }
+
+    fn set_real(&mut self, i: usize, x: f64) {
+        let v = LAYOUT[i];
+        self.settings.set(v, x);
+        if !matches!(v, Var::Load | Var::CommandAngle) {
+            self.sim = None;
+        }
+    }
+
+    fn exit_initialization(&mut self, start_time: f64) -> ModelResult<()> {
+        self.start_time = start_time;
+        self.sim = Some(self.build()?);
+        Ok(())
+    }
+
+    fn compute_outputs(&mut self) -> ModelResult<()> {
+        self.refresh(None)
+    }
+
+    fn do_step(&mut self, time: f64, step: f64) -> ModelResult<()> {
+        self.refresh(Some(time + step - self.start_time))
+    }
+
+    fn serialize(&self, out: &mut Vec<u8>) {
+        encode(&self.settings, self.start_time, self.sim.as_ref().map(|s| s.state()), out);
+    }
+
+    fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()> {
+        let (settings, start_time, state) = decode(bytes)?;
+        *self = RigModel::restored(settings, start_time, state)?;
+        Ok(())
+    }
+}

@@ -1,0 +1,58 @@
+//! `pinjoint bench --quick`: the report and its plots are written (timings are not asserted).
+
+use std::process::Command;
+
+#[test]
+fn bench_quick_writes_the_report_and_plots() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
+        .args(["bench", "--quick", "--no-fmu", "--output"])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    let md = std::fs::read_to_string(dir.path().join("BENCHMARKS.md")).unwrap();
+    for needle in [
+        "## Targets",
+        "`full` warm-started < 1 µs",
+        "`table` < 50 ns",
+        "within 1.1 × the pass-through",
+        "10 strokes of the 1 Hz rig",
+        "## Per evaluation",
+        "| full, warm |",
+        "| table 1e-3 |",
+        "| boundary |",
+        "## Per cycle simulation",
+        "Dopri5 + table",
+        "RK4, 100 samples/cycle, h = 1e-3 s",
+        "Not measured in this run: skipped (--no-fmu)",
+        "--quick",
+    ] {
+        assert!(md.contains(needle), "BENCHMARKS.md lacks {needle:?}:\n{md}");
+    }
+    // Measured numbers, not placeholders: the boundary level's μ error over the rig envelope is
+    // large (the envelope reaches mixed lubrication) and the table's is within its tolerance.
+    let row = md.lines().find(|l| l.contains("| rig: 5-60 kN, 0.01-10 rad/s | table 1e-3 |")).expect("table row");
+    let mu: f64 = row.split('|').nth(4).unwrap().trim().parse().unwrap();
+    assert!(mu > 0.0 && mu <= 1e-3, "{row}");
+    for svg in ["bench_evaluation.svg", "bench_rig.svg"] {
+        let s = std::fs::read_to_string(dir.path().join(svg)).unwrap();
+        assert!(s.starts_with("<svg") && s.contains("</svg>") && s.len() > 2000, "{svg}");
+    }
+    assert!(md.contains("(bench_evaluation.svg)") && md.contains("(bench_rig.svg)"));
+}
+
+#[test]
+fn bench_without_python_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
+        .args(["bench", "--quick", "--python", "/nonexistent/python", "--output"])
+        .arg(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let md = std::fs::read_to_string(dir.path().join("BENCHMARKS.md")).unwrap();
+    // Either the FMUs are not built in this tree, or Python is missing: the report names it.
+    assert!(md.contains("Not measured in this run:") && (md.contains("/nonexistent/python") || md.contains("fmu_build")), "{md}");
+}

@@ -1,0 +1,53 @@
+"""PinJointRig.fmu: validation by fmpy, archive, interface and documentation."""
+
+import zipfile
+
+from fmpy.validation import validate_fmu
+
+from rig_support import RIG_OUTPUTS
+
+
+def test_validate_fmu_reports_no_problem(rig_fmu_path):
+    assert validate_fmu(rig_fmu_path) == []
+
+
+def test_archive_layout(rig_fmu_path):
+    names = set(zipfile.ZipFile(rig_fmu_path).namelist())
+    assert names == {"modelDescription.xml", "binaries/linux64/PinJointRig.so", "documentation/index.html"}
+
+
+def test_interface(rig_model_description):
+    md = rig_model_description
+    assert md.fmiVersion == "2.0" and md.coSimulation.modelIdentifier == "PinJointRig"
+    cs = md.coSimulation
+    assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
+    v = {x.name: x for x in md.modelVariables}
+    assert [n for n in v if v[n].causality == "input"] == ["load", "command_angle"]
+    assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS
+    assert v["stuck"].type == "Boolean" and v["stuck"].variability == "discrete"
+    assert v["use_command_input"].type == "Boolean" and v["use_command_input"].start in ("false", False)
+    assert v["rig.method"].type == "Integer" and v["rig.formulation"].type == "Integer"
+    assert v["amplitude"].unit == "rad" and v["amplitude"].displayUnit == "deg"
+    assert abs(float(v["amplitude"].start) - 0.6981317007977318) < 1e-16
+    assert v["frequency"].unit == "Hz" and float(v["frequency"].start) == 1.0
+    params = [n for n in v if v[n].causality == "parameter"]
+    rig = [n for n in params if n.startswith("rig.")]
+    assert len(rig) == 14 and "rig.inertia" in rig and "rig.velocity_gain" in rig
+    assert "rig.load" not in rig and "rig.frequency" not in rig
+    model = [n for n in params if n.split(".")[0] in ("geometry", "materials", "surface", "lubricant", "friction")]
+    assert len(model) == 21 and float(v["geometry.pin_radius"].start) == 0.028
+    assert v["torque"].unit == "N.m" and v["load"].unit == "N" and v["angular_velocity"].unit == "rad/s"
+    assert v["rig.position_gain"].unit == "N.m/rad" and v["rig.inertia"].unit == "kg.m2"
+    assert all(x.description for x in md.modelVariables)
+    deps = {u.variable.name: sorted(d.name for d in u.dependencies) for u in md.outputs}
+    assert deps["angle"] == [] and deps["torque"] == [] and deps["actuator_work"] == []
+    assert deps["friction_torque"] == ["load"] and deps["stuck"] == ["load"]
+    assert deps["commanded_angle"] == ["command_angle"]
+
+
+def test_documentation_lists_every_variable(rig_fmu_path, rig_model_description):
+    html = zipfile.ZipFile(rig_fmu_path).read("documentation/index.html").decode()
+    for v in rig_model_description.modelVariables:
+        assert f"<code>{v.name}</code>" in html, v.name
+    for text in ("Routh", "breakaway", "Defaults and why", "0.05 kg", "tau_s dT_a/dt = T_d - T_a", "67.2"):
+        assert text in html, text

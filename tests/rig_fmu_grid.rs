@@ -1,0 +1,133 @@
+//! PinJointRig integrates across communication steps: results at shared points do
+//! not depend on the host's grid, and equal the rig library's, bit for bit, for the
+//! same held inputs.
+
+mod rig_host;
+use pinjoint::rig::{Inputs, RigConfig, RigSim, Sample};
+use rig_host::*;
+
+/// The FMU's outputs (table order) from a library sample.
+fn expected(s: &Sample) -> Vec<f64> {
+    let contact = s.load > 0.0;
+    vec![
+        s.angle,
+        s.angular_velocity,
+        s.torque,
+        s.friction_torque,
+        s.friction_coefficient,
+        if contact { s.film_thickness } else { 0.0 },
+        if contact { s.fluid_load_fraction } else { 0.0 },
+        s.stuck as u8 as f64,
+        s.command_angle,
+        s.actuator_work,
+        s.friction_dissipation,
+        s.kinetic_energy,
+    ]
+}
+
+fn bits(v: &[f64]) -> Vec<u64> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+/// Run the FMU on the grid `times` with `load(t)` set at each point before the step
+/// (held over it); outputs at every point.
+fn fmu_run(sets: &[(&str, f64)], times: &[f64], load: &dyn Fn(f64) -> f64) -> Vec<Vec<f64>> {
+    let h = Host::new();
+    let c = ready(&h, sets);
+    assert_eq!(set(c, "load", load(times[0])), OK);
+    let mut rows = vec![outputs(c)];
+    for w in times.windows(2) {
+        assert_eq!(set(c, "load", load(w[0])), OK);
+        rows.push(step(&h, c, w[0], w[1]));
+    }
+    free(c);
+    rows
+}
+
+fn library_run(cfg: &RigConfig, times: &[f64], load: &dyn Fn(f64) -> f64) -> Vec<Vec<f64>> {
+    let mut sim = RigSim::new(cfg).unwrap();
+    let mut rows = Vec::new();
+    let mut held = load(times[0]);
+    for &t in times {
+        sim.advance_to(t, &Inputs { load: Some(held), command_angle: None }).unwrap();
+        rows.push(expected(&sim.sample().unwrap()));
+        held = load(t);
+    }
+    rows
+}
+
+fn grid(h: f64, stop: f64) -> Vec<f64> {
+    let n = (stop / h).round() as usize;
+    (0..=n).map(|k| k as f64 * h).collect()
+}
+
+/// 5 -> 60 kN at t = 0.5 s (a point of both grids), through reversals at 1 Hz.
+fn load_step(t: f64) -> f64 {
+    if t < 0.5 { 5e3 } else { 60e3 }
+}
+
+#[test]
+fn one_ms_and_100_ms_hosts_agree_at_shared_points() {
+    let fine = grid(1e-3, 1.5);
+    let coarse = grid(0.1, 1.5);
+    let a = fmu_run(&[], &fine, &load_step);
+    let b = fmu_run(&[], &coarse, &load_step);
+    let mut worst: f64 = 0.0;
+    let mut exact = 0;
+    for (j, t) in coarse.iter().enumerate() {
+        let k = fine.iter().position(|x| (x - t).abs() < 1e-9).unwrap();
+        if fine[k] == *t {
+            // The same time bits: the same numbers.
+            assert_eq!(bits(&a[k]), bits(&b[j]), "t = {t}");
+            exact += 1;
+        }
+        for (x, y) in a[k].iter().zip(&b[j]) {
+            let scale = x.abs().max(1e-3);
+            worst = worst.max((x - y).abs() / scale);
+        }
+    }
+    // Points whose times differ in the last bit (e.g. 3 * 0.1 vs 300 * 0.001) agree to 1e-12.
+    assert!(worst <= 1e-12, "worst relative difference {worst:e}");
+    assert!(exact >= 8, "{exact} bitwise-equal shared times");
+    eprintln!("1 ms vs 100 ms: {exact} of {} shared points bit-identical, worst relative difference {worst:e}", coarse.len());
+}
+
+#[test]
+fn outputs_equal_the_library_bit_for_bit() {
+    let times: Vec<f64> = grid(0.01, 1.6).into_iter().chain([1.6137, 1.7, 2.2]).collect();
+    let sets = [("rig.breakaway_factor", 1.2), ("friction.boundary_friction_coefficient", 0.1), ("frequency", 0.8)];
+    let mut cfg = RigConfig::default();
+    cfg.rig.breakaway_factor = 1.2;
+    cfg.model.friction.boundary_friction_coefficient = 0.1;
+    cfg.rig.frequency = 0.8;
+    let fmu = fmu_run(&sets, &times, &load_step);
+    let lib = library_run(&cfg, &times, &load_step);
+    for (k, (x, y)) in fmu.iter().zip(&lib).enumerate() {
+        assert_eq!(bits(x), bits(y), "t = {}: {x:?} vs {y:?}", times[k]);
+    }
+    // The run covers stick phases and slip in both directions.
+    assert!(fmu.iter().any(|r| r[7] == 1.0) && fmu.iter().any(|r| r[1] > 0.5) && fmu.iter().any(|r| r[1] < -0.5));
+}
+
+#[test]
+fn host_steps_of_1e_5_s_and_of_1_s_work_and_agree() {
+    // 1 s steps over 3 s, against 0.1 s steps: same numbers at 1, 2, 3 s.
+    let a = fmu_run(&[], &grid(1.0, 3.0), &|_| 20e3);
+    let b = fmu_run(&[], &grid(0.1, 3.0), &|_| 20e3);
+    for (j, k) in [(1, 10), (2, 20), (3, 30)] {
+        for (x, y) in a[j].iter().zip(&b[k]) {
+            assert!((x - y).abs() <= 1e-12 * x.abs().max(1e-3), "t = {j}: {x} vs {y}");
+        }
+    }
+    // 1e-5 s steps over 0.12 s, against 0.01 s steps.
+    let fine = grid(1e-5, 0.12);
+    let c = fmu_run(&[], &fine, &|_| 20e3);
+    let d = fmu_run(&[], &grid(0.01, 0.12), &|_| 20e3);
+    for (j, row) in d.iter().enumerate() {
+        let k = j * 1000;
+        for (x, y) in c[k].iter().zip(row) {
+            assert!((x - y).abs() <= 1e-12 * x.abs().max(1e-3), "t = {}: {x} vs {y}", fine[k]);
+        }
+    }
+    assert!(c.iter().all(|r| r.iter().all(|x| x.is_finite())));
+}
