@@ -4,17 +4,18 @@
 # installs requirements-test.txt into .venv (once), runs pytest on tests/python and
 # the Rust `fmi` crate importer against the packaged FMU.
 #
-# Needs: cargo, python3 with venv (Debian: python3-venv), and for the fmi crate's
-# bindgen step Debian's libclang-dev. Set PINJOINT_SKIP_APT=1 to skip the apt step.
+# Needs: cargo, python3 with venv (Debian: python3-venv), for the fmi crate's
+# bindgen step Debian's libclang-dev, and for Ecos (ecospy) Debian's libtbb12.
+# Set PINJOINT_SKIP_APT=1 to skip the apt step.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
 
-if [[ -z "${PINJOINT_SKIP_APT:-}" ]] && ! ls /usr/lib/llvm-*/lib/libclang*.so* >/dev/null 2>&1; then
+if [[ -z "${PINJOINT_SKIP_APT:-}" ]] && { ! ls /usr/lib/llvm-*/lib/libclang*.so* >/dev/null 2>&1 || ! ldconfig -p | grep -q 'libtbb\.so\.12'; }; then
     if command -v apt-get >/dev/null && [[ "$(id -u)" == 0 ]]; then
-        apt-get update -qq && apt-get install -y -qq libclang-dev python3-venv >/dev/null
+        apt-get update -qq && apt-get install -y -qq libclang-dev python3-venv libtbb12 >/dev/null
     else
-        echo "run.sh: libclang-dev is missing (needed by the fmi crate's bindgen)" >&2
+        echo "run.sh: libclang-dev or libtbb12 is missing (needed by the fmi crate's bindgen, by ecospy)" >&2
     fi
 fi
 
@@ -22,7 +23,7 @@ cargo run --release -q -p fmu_build
 cargo build --release -q --example reference_points --example rig_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"
-if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest" 2>/dev/null; then
+if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy" 2>/dev/null; then
     python3 -m venv "$VENV"
     "$VENV/bin/pip" install -q -r requirements-test.txt
 fi
@@ -30,4 +31,4 @@ fi
 export PINJOINT_FMU="$ROOT/target/fmu/PinJoint.fmu"
 export PINJOINT_RIG_FMU="$ROOT/target/fmu/PinJointRig.fmu"
 "$VENV/bin/python" -m pytest -q tests/python "$@"
-cargo test --release -q --test fmi_crate_importer --test fmi_crate_rig_importer
+cargo test --release -q --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse

@@ -114,7 +114,10 @@ components (under 10 %); the contact is assumed fully flooded and isothermal.</l
 <li>Inputs: <code>angle</code> and <code>angular_velocity</code> must be finite; <code>load</code> finite and &ge; 0 N (0 = unloaded: every output
 but the energy is 0). Other values are rejected by fmi2SetReal with a message naming the variable, value and unit.
 Parameters are checked at fmi2ExitInitializationMode against the ranges below; an invalid one is named in the error message.
-A step whose outputs would not be finite fails with fmi2Error instead of returning NaN.</li>
+A step whose outputs would not be finite, or would leave their declared min/max (a negative film_thickness: with the
+default parameters at rest above 5.05e8 N, where the asperity model's mean planes would interpenetrate), fails with
+fmi2Error naming the output, instead of returning NaN or an impossible value. tests/python/README.md tabulates the
+defined behaviour of every bad input.</li>
 </ul>
 
 <h2>Model values (default parameters)</h2>

@@ -98,6 +98,25 @@ pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelRes
                 show(omega)
             ));
         }
+        // The modelDescription promises min/max (e.g. film_thickness >= 0); an output
+        // outside them is a model failure, not a value to pass on.
+        let var = &super::INFO.variables[FIRST_OUTPUT + *o as usize];
+        let below = var.min.is_some_and(|m| v < m);
+        let above = var.max.is_some_and(|m| v > m);
+        if below || above {
+            return Err(format!(
+                "the model gives {} = {} {}, {} its declared {} {}, at load = {} N, angular_velocity = {} rad/s: \
+                 the parameters are outside the range in which the model is defined",
+                var.name,
+                show(v),
+                var.unit.unwrap_or(""),
+                if below { "below" } else { "above" },
+                if below { "minimum" } else { "maximum" },
+                show(if below { var.min.unwrap() } else { var.max.unwrap() }),
+                show(load),
+                show(omega)
+            ));
+        }
     }
     Ok((out, first))
 }
