@@ -6,7 +6,7 @@ use super::variables::{
     FIRST_PARAM, LOAD, SPEED_BAND, TOLERANCE,
 };
 use super::zero_speed::{check_band, DEFAULT_SPEED_BAND};
-use crate::fidelity::{Envelope, Evaluator};
+use crate::fidelity::Evaluator;
 use crate::fmi2::bytes::{ByteReader, ByteWriter};
 use crate::fmi2::logging::show;
 use crate::fmi2::model::{Model, ModelResult};
@@ -142,8 +142,7 @@ impl FidelitySettings {
         let level = fidelity_of_code(self.code).ok_or_else(|| {
             format!("parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)", self.code)
         })?;
-        let [a, b, c, d] = self.envelope;
-        let env = Envelope::new(a, b, c, d).map_err(|e| format!("parameter {e}"))?;
+        let env = crate::fmu::envelope_from_parameters(self.envelope)?;
         Evaluator::new(params, level, self.tolerance, env).map_err(|e| format!("parameter {e}"))
     }
 }

@@ -15,7 +15,7 @@
 //! At full (the default) the simulator is built exactly as without these parameters.
 
 use super::state::{decode, encode};
-use super::variables::{default_load, rig_spec, Output, Var, DEFAULT_ENVELOPE, DEFAULT_TOLERANCE, ENVELOPE_NAMES, LAYOUT};
+use super::variables::{default_load, rig_spec, Output, Var, DEFAULT_ENVELOPE, DEFAULT_TOLERANCE, LAYOUT};
 use crate::fidelity::{Envelope, Evaluator, Fidelity};
 use crate::fmi2::logging::show;
 use crate::fmi2::model::{Model, ModelResult};
@@ -151,25 +151,7 @@ impl Settings {
         if !(t.is_finite() && t > 0.0) {
             return Err(format!("parameter tolerance = {} (relative error, dimensionless) is invalid: it must be a finite number > 0", show(t)));
         }
-        for (k, (name, unit)) in ENVELOPE_NAMES.iter().enumerate() {
-            let x = self.envelope[k];
-            if !(x.is_finite() && x > 0.0) {
-                return Err(format!("parameter {name} = {} {unit} is invalid: it must be a finite number > 0 {unit}", show(x)));
-            }
-        }
-        for k in [0, 2] {
-            let ((lo_name, unit), (hi_name, _)) = (ENVELOPE_NAMES[k], ENVELOPE_NAMES[k + 1]);
-            let (lo, hi) = (self.envelope[k], self.envelope[k + 1]);
-            if lo >= hi {
-                return Err(format!(
-                    "parameter {lo_name} = {} {unit} is invalid: it must be below {hi_name} = {} {unit}",
-                    show(lo),
-                    show(hi)
-                ));
-            }
-        }
-        let [a, b, c, d] = self.envelope;
-        let env = Envelope::new(a, b, c, d).map_err(|e| format!("parameter {e}"))?;
+        let env = crate::fmu::envelope_from_parameters(self.envelope)?;
         Ok((level, t, env))
     }
 }
@@ -371,7 +353,13 @@ impl Model for RigModel {
     }
 
     fn check_real(&self, i: usize, x: f64) -> ModelResult<()> {
-        Settings::check_input(LAYOUT[i], x)
+        Settings::check_input(LAYOUT[i], x)?;
+        // Beyond the asperity model's capacity (pinjoint::Joint::capacity) the load is refused
+        // here, leaving the simulation as it was.
+        match (LAYOUT[i], &self.sim) {
+            (Var::Load, Some(sim)) => check_capacity(x, sim.joint().capacity()),
+            _ => Ok(()),
+        }
     }
 
     fn set_real(&mut self, i: usize, x: f64) {
@@ -394,6 +382,7 @@ impl Model for RigModel {
         // A level built for outputs read during initialization is reused, not rebuilt.
         let reuse = self.sim.as_ref().and_then(RigSim::shared_fidelity);
         let sim = self.build(reuse)?;
+        check_capacity(self.settings.load, sim.joint().capacity())?;
         self.message = sim.fidelity().map(describe);
         self.sim = Some(sim);
         Ok(())
@@ -417,6 +406,15 @@ impl Model for RigModel {
         let mut m = RigModel::restored(settings, start_time, state, reuse)?;
         m.fallback_logged = self.fallback_logged && m.settings.fidelity_key() == self.settings.fidelity_key();
         *self = m;
+        Ok(())
+    }
+}
+
+/// A load at or beyond the joint's asperity capacity is an error naming both.
+fn check_capacity(load: f64, capacity: f64) -> ModelResult<()> {
+    if load >= capacity {
+        Err(format!("input load = {load} N is beyond the asperity model's capacity of {capacity:.6e} N for these parameters"))
+    } else {
         Ok(())
     }
 }

@@ -52,8 +52,7 @@ pub enum Var {
 }
 
 /// Names of the envelope parameters, in [`Var::Envelope`] order, with their units.
-pub const ENVELOPE_NAMES: [(&str, &str); 4] =
-    [("envelope.load_min", "N"), ("envelope.load_max", "N"), ("envelope.speed_min", "rad/s"), ("envelope.speed_max", "rad/s")];
+pub use crate::fmu::ENVELOPE_NAMES;
 
 /// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
 /// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
