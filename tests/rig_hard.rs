@@ -299,3 +299,20 @@ fn methods_agree() {
         assert!(worst < tol, "{method:?}: {worst}");
     }
 }
+
+/// Fuzz finding E: one advance over an absurd interval must not run for minutes; it stops
+/// after `ADVANCE_STEP_LIMIT` integrator steps with an error saying so.
+#[test]
+fn one_advance_is_bounded_in_work() {
+    let cfg = pinjoint::rig::RigConfig::default();
+    let mut sim = pinjoint::rig::RigSim::new(&cfg).unwrap();
+    let e = sim.advance_to(1e300, &pinjoint::rig::Inputs::default()).unwrap_err();
+    match e {
+        pinjoint::rig::RigError::WorkLimit { requested, reached, steps } => {
+            assert_eq!(requested, 1e300);
+            assert!(reached > 100.0 && reached < 1e5, "{reached}");
+            assert!(steps >= pinjoint::rig::sim::ADVANCE_STEP_LIMIT && steps < pinjoint::rig::sim::ADVANCE_STEP_LIMIT + 100_000, "{steps}");
+        }
+        e => panic!("{e}"),
+    }
+}

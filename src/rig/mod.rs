@@ -57,6 +57,12 @@ pub enum RigError {
     Chatter { time: f64 },
     #[error("invalid rig state: {0}")]
     State(String),
+    /// One advance took more integrator steps than [`sim::ADVANCE_STEP_LIMIT`].
+    #[error(
+        "advancing to t = {requested} s stopped at t = {reached} s after {steps} integrator steps (the limit of one advance): \
+         take shorter communication steps, or looser tolerances / a longer rk4_step"
+    )]
+    WorkLimit { requested: f64, reached: f64, steps: u64 },
     /// The fidelity level asked for could not be built ([`RigSim::set_fidelity`]).
     #[error(transparent)]
     Fidelity(#[from] crate::fidelity::FidelityError),

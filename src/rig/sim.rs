@@ -134,6 +134,12 @@ pub struct Sample {
     pub kinetic_energy: f64,
 }
 
+/// Integrator steps one [`RigSim::advance_to`] may take (≈ 1000 strokes of the 1 Hz rig at
+/// the default tolerances; tens of seconds of work at most). Beyond it the advance fails with
+/// [`RigError::WorkLimit`] instead of running on for minutes (an FMU host would hang); the
+/// simulation is then left part-way and must be restored from a saved state or rebuilt.
+pub const ADVANCE_STEP_LIMIT: u64 = 2_000_000;
+
 /// Counters of what the integration did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct Stats {
@@ -348,8 +354,14 @@ impl RigSim {
             self.segment = None;
             self.node.phase = self.resolve(&self.node)?;
         }
+        // Integrate first (bounded), then move the clock: a refused advance leaves `time`.
+        let start = self.stats.steps;
+        self.cover_within(t_next, Some(start + ADVANCE_STEP_LIMIT)).map_err(|e| match e {
+            RigError::WorkLimit { reached, steps, .. } => RigError::WorkLimit { requested: t_next, reached, steps: steps - start },
+            e => e,
+        })?;
         self.time = t_next;
-        self.cover(t_next)
+        Ok(())
     }
 
     /// The outputs at the current time.
@@ -398,8 +410,17 @@ impl RigSim {
 
     /// Make the current segment cover `t`.
     fn cover(&mut self, t: f64) -> Result<(), RigError> {
+        self.cover_within(t, None)
+    }
+
+    /// [`Self::cover`], refusing to go on once the step count passes `limit` (checked per
+    /// segment, which is at most `segment_length` long): a host must never hang in one call.
+    fn cover_within(&mut self, t: f64, limit: Option<u64>) -> Result<(), RigError> {
         loop {
             if self.segment.is_none() {
+                if limit.is_some_and(|l| self.stats.steps > l) {
+                    return Err(RigError::WorkLimit { requested: t, reached: self.node.time, steps: self.stats.steps });
+                }
                 self.segment = Some(self.compute_segment()?);
             }
             let seg = self.segment.as_ref().unwrap();
