@@ -143,7 +143,26 @@ impl FidelitySettings {
             format!("parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)", self.code)
         })?;
         let [a, b, c, d] = self.envelope;
-        let env = Envelope::new(a, b, c, d).map_err(|e| format!("parameter {e}"))?;
+        // Name the FMU variable (envelope.load_min, ...), not only the quantity.
+        let var = |quantity: &str, end: &str| {
+            let q = if quantity == "load" { "load" } else { "speed" };
+            format!("envelope.{q}_{}", if end == "minimum" { "min" } else { "max" })
+        };
+        let env = Envelope::new(a, b, c, d).map_err(|e| match e {
+            crate::fidelity::error::FidelityError::EnvelopeBound { quantity, end, value, unit } => format!(
+                "parameter {} = {} {unit} is invalid: it must be a finite number > 0 {unit}",
+                var(quantity, end),
+                show(value)
+            ),
+            crate::fidelity::error::FidelityError::EnvelopeOrder { quantity, min, max, unit } => format!(
+                "parameter {} = {} {unit} must be below {} = {} {unit}",
+                var(quantity, "minimum"),
+                show(min),
+                var(quantity, "maximum"),
+                show(max)
+            ),
+            e => format!("parameter {e}"),
+        })?;
         Evaluator::new(params, level, self.tolerance, env).map_err(|e| format!("parameter {e}"))
     }
 }
