@@ -340,7 +340,7 @@ pub mod fmi {
     use pinjoint::fmi2::api::model_exchange::*;
     use pinjoint::fmi2::bytes::crc32;
     use pinjoint::fmi2::types::*;
-    use pinjoint::fmi2::variables::{Causality, Kind, ModelInfo};
+    use pinjoint::fmi2::variables::{Causality, Kind, ModelInfo, Variable};
     use std::ffi::{c_char, CStr};
     use std::ptr::{null, null_mut};
 
@@ -350,6 +350,8 @@ pub mod fmi {
     /// What the logger saw.
     #[derive(Default)]
     pub struct Log {
+        /// The last error message, for the assertion messages.
+        pub last_error: String,
         pub errors: usize,
         pub fatal: usize,
         pub total: usize,
@@ -378,6 +380,7 @@ pub mod fmi {
         log.total += 1;
         if status == 3 {
             log.errors += 1;
+            log.last_error = String::from_utf8_lossy(msg).into_owned();
         }
         if status == 4 {
             log.fatal += 1;
@@ -453,28 +456,55 @@ pub mod fmi {
 
         fn outputs_finite(&mut self, k: usize, what: &str) {
             let slot = self.slots[k].as_ref().unwrap();
-            let outs: Vec<(u32, &str)> = slot
-                .info
-                .variables
-                .iter()
-                .filter(|v| v.causality == Causality::Output && v.kind == Kind::Real)
-                .map(|v| (v.value_reference, v.name.as_str()))
-                .collect();
-            let vrs: Vec<u32> = outs.iter().map(|o| o.0).collect();
-            let mut vals = vec![f64::NAN; vrs.len()];
-            let e = self.log.errors;
-            let s = unsafe { fmi2GetReal(slot.c, vrs.as_ptr(), vrs.len(), vals.as_mut_ptr()) };
-            self.status(s, e, slot.quiet, "fmi2GetReal of the outputs");
-            assert_eq!(s, OK, "{what} returned fmi2OK but reading the outputs of {} then failed", slot.info.model_identifier);
-            for ((vr, name), v) in outs.iter().zip(&vals) {
-                assert!(v.is_finite(), "{what} returned fmi2OK and then output {name} = {v}");
-                let var = &slot.info.variables[slot.info.index_of(*vr).unwrap()];
-                assert!(
-                    var.min.is_none_or(|m| *v >= m) && var.max.is_none_or(|m| *v <= m),
-                    "{what} returned fmi2OK and then output {name} = {v:e}, outside its declared [{:?}, {:?}]",
-                    var.min,
-                    var.max
+            let outs: Vec<&Variable> = slot.info.variables.iter().filter(|v| v.causality == Causality::Output).collect();
+            for kind in [Kind::Real, Kind::Integer, Kind::Boolean] {
+                let vars: Vec<&Variable> = outs.iter().copied().filter(|v| v.kind == kind).collect();
+                if vars.is_empty() {
+                    continue;
+                }
+                let vrs: Vec<u32> = vars.iter().map(|v| v.value_reference).collect();
+                let e = self.log.errors;
+                let (s, vals) = match kind {
+                    Kind::Real => {
+                        let mut vals = vec![f64::NAN; vrs.len()];
+                        let s = unsafe { fmi2GetReal(slot.c, vrs.as_ptr(), vrs.len(), vals.as_mut_ptr()) };
+                        (s, vals)
+                    }
+                    Kind::Integer | Kind::Boolean => {
+                        let mut ints = vec![i32::MIN; vrs.len()];
+                        let s = unsafe {
+                            if kind == Kind::Integer {
+                                fmi2GetInteger(slot.c, vrs.as_ptr(), vrs.len(), ints.as_mut_ptr())
+                            } else {
+                                fmi2GetBoolean(slot.c, vrs.as_ptr(), vrs.len(), ints.as_mut_ptr())
+                            }
+                        };
+                        if kind == Kind::Boolean && s == OK {
+                            assert!(ints.iter().all(|b| *b == 0 || *b == 1), "{what}: a Boolean output is {ints:?}");
+                        }
+                        (s, ints.iter().map(|&i| i as f64).collect())
+                    }
+                };
+                self.status(s, e, slot.quiet, "reading the outputs");
+                assert_eq!(
+                    s,
+                    OK,
+                    "{what} returned fmi2OK on {} but reading its {} outputs then failed: {}",
+                    slot.info.model_name,
+                    kind.as_str(),
+                    self.log.last_error
                 );
+                for (var, v) in vars.iter().zip(&vals) {
+                    assert!(v.is_finite(), "{what} returned fmi2OK on {} and then output {} = {v}", slot.info.model_name, var.name);
+                    assert!(
+                        var.min.is_none_or(|m| *v >= m) && var.max.is_none_or(|m| *v <= m),
+                        "{what} returned fmi2OK on {} and then output {} = {v:e}, outside its declared [{:?}, {:?}]",
+                        slot.info.model_name,
+                        var.name,
+                        var.min,
+                        var.max
+                    );
+                }
             }
         }
 
@@ -617,6 +647,7 @@ pub mod fmi {
                     if s == OK {
                         for (vr, v) in vrs.iter().zip(&vals) {
                             let var = &info.variables[info.index_of(*vr).expect("fmi2GetReal accepted an unknown value reference")];
+                            assert_eq!(var.kind, Kind::Real, "fmi2GetReal accepted the {} variable {}", var.kind.as_str(), var.name);
                             if var.causality == Causality::Output {
                                 assert!(v.is_finite(), "fmi2GetReal returned fmi2OK with output {} = {v}", var.name);
                                 assert!(
@@ -664,8 +695,22 @@ pub mod fmi {
                         }
                     };
                     let s = st(self, s, "fmi2Get/Set Integer/Boolean/String");
-                    if n > 0 {
-                        assert_eq!(s, ERROR, "these models have only Real variables");
+                    // OK only if every reference is a variable of that type (no String
+                    // variables exist), and a setter never accepts an output.
+                    if s == OK && n > 0 {
+                        let want = match which {
+                            0 | 1 => Some(Kind::Integer),
+                            2 | 3 => Some(Kind::Boolean),
+                            _ => None,
+                        };
+                        for vr in &vrs {
+                            let var = info.index_of(*vr).map(|i| &info.variables[i]);
+                            assert!(
+                                var.is_some_and(|v| Some(v.kind) == want && (which % 2 == 0 || v.causality != Causality::Output)),
+                                "typed call {which} returned fmi2OK for value reference {vr} ({:?})",
+                                var.map(|v| (&v.name, v.kind, v.causality))
+                            );
+                        }
                     }
                 }
                 18 => {

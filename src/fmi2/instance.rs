@@ -135,7 +135,37 @@ impl Instance {
             let r = self.model.compute_outputs();
             self.log_model_message();
             r?;
+            self.check_outputs()?;
             self.outputs_current = true;
+        }
+        Ok(())
+    }
+
+    /// Every output is finite and within the min/max its modelDescription declares: a
+    /// model that computes anything else (e.g. a negative film thickness, found by
+    /// fuzzing, fuzz/README.md) fails the call with a message naming the output,
+    /// instead of handing the host a value the interface rules out.
+    fn check_outputs(&self) -> Result<(), String> {
+        for (i, v) in self.info.variables.iter().enumerate() {
+            if v.causality != Causality::Output {
+                continue;
+            }
+            let x = self.model.get_real(i);
+            let bound = if !x.is_finite() {
+                Some("is not a finite number".to_owned())
+            } else if let Some(m) = v.min.filter(|m| x < *m) {
+                Some(format!("is below its declared minimum {}", show(m)))
+            } else {
+                v.max.filter(|m| x > *m).map(|m| format!("is above its declared maximum {}", show(m)))
+            };
+            if let Some(b) = bound {
+                return Err(format!(
+                    "the model gives output {} = {} {} which {b}: the inputs or parameters are outside the range in which the model is defined",
+                    v.name,
+                    show(x),
+                    v.unit_text()
+                ));
+            }
         }
         Ok(())
     }
@@ -236,7 +266,7 @@ impl Instance {
                 t - self.time
             ));
         }
-        let stepped = self.update_outputs().and_then(|_| self.model.do_step(t, h));
+        let stepped = self.update_outputs().and_then(|_| self.model.do_step(t, h)).and_then(|_| self.check_outputs());
         self.log_model_message();
         if let Err(e) = stepped {
             self.state = State::Error;

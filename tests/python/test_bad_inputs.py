@@ -69,7 +69,7 @@ def parameter_cases(model_description):
     cases = []
     for v in model_description.modelVariables:
         if v.causality != "parameter" or v.type != "Real":
-            continue
+            continue  # the Integer `fidelity` is checked by fmi2SetInteger itself
         for value in (math.nan, math.inf, -math.inf, -1.0):
             cases.append((v.name, v.valueReference, value))
         if v.max is not None and v.name != "zero_velocity.speed_band":
