@@ -8,33 +8,16 @@
 //! the test packages the shared library of this very test build the same way, so
 //! that a plain `cargo test` checks the current code and never a stale archive.
 
+mod packaged;
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};
 use fmi::traits::FmiImport;
-use pinjoint::fmi2::xml::model_description;
 use pinjoint::fmu::pin_joint::INFO;
 use pinjoint::{Joint, Params};
-use std::io::Write;
 use std::path::PathBuf;
 
 fn fmu_path() -> PathBuf {
-    if let Some(p) = std::env::var_os("PINJOINT_FMU") {
-        return PathBuf::from(p);
-    }
-    // The cdylib of this very build is target/<profile>/deps/libpinjoint.so, beside the test
-    // executable; `cargo test` does not refresh the copy in target/<profile>/, which may be stale.
-    let exe = std::env::current_exe().unwrap();
-    let lib = exe.parent().unwrap().join("libpinjoint.so");
-    assert!(lib.is_file(), "{} not found (the cdylib of this build)", lib.display());
-    let path = std::env::temp_dir().join(format!("pinjoint-test-{}.fmu", std::process::id()));
-    let mut zip = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
-    let opts = zip::write::SimpleFileOptions::default();
-    zip.start_file("modelDescription.xml", opts).unwrap();
-    zip.write_all(model_description(&INFO).unwrap().as_bytes()).unwrap();
-    zip.start_file("binaries/linux64/PinJoint.so", opts).unwrap();
-    zip.write_all(&std::fs::read(&lib).unwrap()).unwrap();
-    zip.finish().unwrap();
-    path
+    packaged::fmu_path("PINJOINT_FMU", &INFO, "test")
 }
 
 fn vr(name: &str) -> u32 {

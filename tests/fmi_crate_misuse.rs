@@ -10,18 +10,16 @@
 //! calls on a Co-Simulation instance cannot be expressed through this crate's safe
 //! API (it refuses them itself); `tests/fmi2_*.rs` and the fmpy suite cover them.
 
+mod packaged;
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common, InstanceCS};
 use fmi::fmi2::Fmi2Error;
 use fmi::traits::FmiStatus;
 use pinjoint::fmi2::bytes::crc32;
-use pinjoint::fmi2::xml::model_description;
 use pinjoint::fmu::pin_joint::INFO;
 use pinjoint::params::PARAMS;
 use pinjoint::{Joint, Params};
 use std::collections::HashMap;
-use std::io::Write;
-use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, OnceLock};
 
@@ -32,23 +30,7 @@ use std::sync::{Mutex, OnceLock};
 fn import() -> &'static Fmi2Import {
     static IMPORT: OnceLock<Fmi2Import> = OnceLock::new();
     IMPORT.get_or_init(|| {
-        let path = match std::env::var_os("PINJOINT_FMU") {
-            Some(p) => PathBuf::from(p),
-            None => {
-                let exe = std::env::current_exe().unwrap();
-                let lib = exe.parent().unwrap().join("libpinjoint.so");
-                assert!(lib.is_file(), "{} not found (the cdylib of this build)", lib.display());
-                let path = std::env::temp_dir().join(format!("pinjoint-misuse-{}.fmu", std::process::id()));
-                let mut zip = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
-                let opts = zip::write::SimpleFileOptions::default();
-                zip.start_file("modelDescription.xml", opts).unwrap();
-                zip.write_all(model_description(&INFO).unwrap().as_bytes()).unwrap();
-                zip.start_file("binaries/linux64/PinJoint.so", opts).unwrap();
-                zip.write_all(&std::fs::read(&lib).unwrap()).unwrap();
-                zip.finish().unwrap();
-                path
-            }
-        };
+        let path = packaged::fmu_path("PINJOINT_FMU", &INFO, "misuse");
         let imp = fmi::import::from_path(&path).expect("the fmi crate imports the FMU");
         if std::env::var_os("PINJOINT_FMU").is_none() {
             let _ = std::fs::remove_file(&path);

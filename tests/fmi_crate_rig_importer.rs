@@ -7,31 +7,16 @@
 //! target/fmu/PinJointRig.fmu); otherwise the test packages the cdylib of this very
 //! build, as tests/fmi_crate_importer.rs does for PinJoint.
 
+mod packaged;
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};
 use fmi::traits::FmiImport;
-use pinjoint::fmi2::xml::model_description;
 use pinjoint::fmu::pin_joint_rig::INFO;
 use pinjoint::rig::{Inputs, Method, RigConfig, RigSim};
-use std::io::Write;
 use std::path::PathBuf;
 
 fn fmu_path() -> PathBuf {
-    if let Some(p) = std::env::var_os("PINJOINT_RIG_FMU") {
-        return PathBuf::from(p);
-    }
-    let exe = std::env::current_exe().unwrap();
-    let lib = exe.parent().unwrap().join("libpinjoint.so");
-    assert!(lib.is_file(), "{} not found (the cdylib of this build)", lib.display());
-    let path = std::env::temp_dir().join(format!("pinjoint-rig-test-{}.fmu", std::process::id()));
-    let mut zip = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
-    let opts = zip::write::SimpleFileOptions::default();
-    zip.start_file("modelDescription.xml", opts).unwrap();
-    zip.write_all(model_description(&INFO).unwrap().as_bytes()).unwrap();
-    zip.start_file("binaries/linux64/PinJointRig.so", opts).unwrap();
-    zip.write_all(&std::fs::read(&lib).unwrap()).unwrap();
-    zip.finish().unwrap();
-    path
+    packaged::fmu_path("PINJOINT_RIG_FMU", &INFO, "rig-test")
 }
 
 fn vr(name: &str) -> u32 {

@@ -1,0 +1,27 @@
+//! The FMU the importer tests load: `$<env_var>` when set (tests/python/run.sh points it at
+//! target/fmu/…), else the cdylib of this very build packaged as an FMU. That cdylib is
+//! target/<profile>/deps/libpinjoint.so, beside the test executable; `cargo test` does not
+//! refresh the copy in target/<profile>/, which may be stale.
+
+use pinjoint::fmi2::variables::ModelInfo;
+use pinjoint::fmi2::xml::model_description;
+use std::io::Write;
+use std::path::PathBuf;
+
+pub fn fmu_path(env_var: &str, info: &ModelInfo, tag: &str) -> PathBuf {
+    if let Some(p) = std::env::var_os(env_var) {
+        return PathBuf::from(p);
+    }
+    let exe = std::env::current_exe().unwrap();
+    let lib = exe.parent().unwrap().join("libpinjoint.so");
+    assert!(lib.is_file(), "{} not found (the cdylib of this build)", lib.display());
+    let path = std::env::temp_dir().join(format!("pinjoint-{tag}-{}.fmu", std::process::id()));
+    let mut zip = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());
+    let opts = zip::write::SimpleFileOptions::default();
+    zip.start_file("modelDescription.xml", opts).unwrap();
+    zip.write_all(model_description(info).unwrap().as_bytes()).unwrap();
+    zip.start_file(format!("binaries/linux64/{}.so", info.model_identifier), opts).unwrap();
+    zip.write_all(&std::fs::read(&lib).unwrap()).unwrap();
+    zip.finish().unwrap();
+    path
+}
