@@ -11,10 +11,13 @@
 use crate::params::Surface;
 use std::f64::consts::PI;
 
-/// Gelinck–Schipper fit constants (eq. 18).
+/// Gelinck–Schipper fit constant a1 of the central pressure K (eq. 18).
 pub const A1: f64 = 1.558;
+/// Gelinck–Schipper fit constant a2 of eq. 18 (exponent of n, β and W).
 pub const A2: f64 = 0.0337;
+/// Gelinck–Schipper fit constant a3 of eq. 18 (exponent of σ_s).
 pub const A3: f64 = -0.442;
+/// Gelinck–Schipper fit constant a4 of eq. 18.
 pub const A4: f64 = -1.7;
 
 /// `ln(1 + eˣ)` without overflow, to an absolute error of a few ε (it is only ever added

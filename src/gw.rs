@@ -19,6 +19,7 @@
 //! not used. Accuracy of the fast path against the reference: see the tests (≤ 2e-14
 //! relative in F over [−12, 40]).
 
+use crate::newton::newton_increasing;
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
@@ -191,7 +192,14 @@ pub fn f32(t: f64) -> f64 {
     ln_f32(t).exp()
 }
 
-pub use crate::mixed::inverse_ln_f32;
+/// Solve `ln F_{3/2}(t) = target` for t (F strictly decreasing: unique root).
+pub fn inverse_ln_f32(target: f64) -> f64 {
+    let f = |t: f64| {
+        let (v, d) = ln_f32_slope(t);
+        (target - v, -d)
+    };
+    newton_increasing(f, 1.0, |t| 1e-14 * (1.0 + t.abs())).0
+}
 
 #[cfg(test)]
 mod tests {

@@ -28,6 +28,7 @@ pub mod film;
 pub mod gw;
 pub mod joint;
 pub mod mixed;
+pub mod newton;
 pub mod params;
 pub mod rig;
 pub mod viscosity;

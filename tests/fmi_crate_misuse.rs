@@ -29,14 +29,7 @@ use std::sync::{Mutex, OnceLock};
 /// tests/fmi_crate_importer.rs), once per test process.
 fn import() -> &'static Fmi2Import {
     static IMPORT: OnceLock<Fmi2Import> = OnceLock::new();
-    IMPORT.get_or_init(|| {
-        let path = packaged::fmu_path("PINJOINT_FMU", &INFO, "misuse");
-        let imp = fmi::import::from_path(&path).expect("the fmi crate imports the FMU");
-        if std::env::var_os("PINJOINT_FMU").is_none() {
-            let _ = std::fs::remove_file(&path);
-        }
-        imp
-    })
+    IMPORT.get_or_init(|| packaged::import("PINJOINT_FMU", &INFO, "misuse"))
 }
 
 /// Messages by instance name (the crate logs each FMU message with the instance name as target).

@@ -51,7 +51,7 @@ fn rel_to_peak(a: &[f64], b: &[f64]) -> f64 {
 /// most the tolerance relative to the amplitude.
 #[test]
 fn table_stroke_at_20kn_stays_within_the_tolerance_of_full() {
-    let h = Host::new();
+    let h = new_host();
     let full = ready(&h, &[]);
     let reference = run(&h, full, 0.0, 3000);
     for tol in [1e-3, 1e-4] {
@@ -100,7 +100,7 @@ fn fmu_levels_are_the_library_levels_bit_for_bit() {
             sim.sample().unwrap().torque
         }).collect::<Vec<f64>>()
     };
-    let h = Host::new();
+    let h = new_host();
     let fmu = |sets: &[(&str, f64)]| {
         let c = ready(&h, sets);
         let t = col(&run(&h, c, 0.0, 1500), "torque");
@@ -119,7 +119,7 @@ fn fmu_levels_are_the_library_levels_bit_for_bit() {
 
 #[test]
 fn auto_logs_its_pick_and_the_first_fallback_once() {
-    let h = Host::new();
+    let h = new_host();
     let c = logged(&h, &[("fidelity", 3.0), ("tolerance", 1e-4)]);
     let mut rig = RigSim::new(&RigConfig::default()).unwrap();
     let ev = rig.set_fidelity(Fidelity::Auto, 1e-4, Envelope::new(1e3, 100e3, 1e-3, 10.0).unwrap()).unwrap();
@@ -134,7 +134,7 @@ fn auto_logs_its_pick_and_the_first_fallback_once() {
     assert!(falls[0].contains("fidelity table") && falls[0].contains("|omega| 0.001..10 rad/s"), "{}", falls[0]);
     free(c);
     // A full run says nothing about fidelity.
-    let h = Host::new();
+    let h = new_host();
     let c = logged(&h, &[]);
     run(&h, c, 0.0, 500);
     assert!(!h.messages().iter().any(|m| m.text.contains("fidelity")), "{:?}", h.messages());
@@ -143,7 +143,7 @@ fn auto_logs_its_pick_and_the_first_fallback_once() {
 
 #[test]
 fn fidelity_parameters_have_defaults_and_bad_values_are_refused_by_name() {
-    let h = Host::new();
+    let h = new_host();
     let c = instantiate(&h);
     assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
     assert_eq!(fmi2EnterInitializationMode(c), OK);
@@ -202,7 +202,7 @@ fn serialize(c: Fmi2Component, s: Fmi2FmuState) -> Vec<u8> {
 /// settings: the fidelity settings travel in the state).
 #[test]
 fn state_round_trip_with_fidelity_is_bit_exact() {
-    let h = Host::new();
+    let h = new_host();
     let sets = [("fidelity", 1.0), ("tolerance", 1e-3), ("envelope.load_min", 5e3), ("envelope.load_max", 60e3), ("envelope.speed_max", 8.0)];
     let c = ready(&h, &sets);
     run(&h, c, 0.0, 1300); // past the first reversal

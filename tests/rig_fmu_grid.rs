@@ -32,7 +32,7 @@ fn bits(v: &[f64]) -> Vec<u64> {
 /// Run the FMU on the grid `times` with `load(t)` set at each point before the step
 /// (held over it); outputs at every point.
 fn fmu_run(sets: &[(&str, f64)], times: &[f64], load: &dyn Fn(f64) -> f64) -> Vec<Vec<f64>> {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, sets);
     assert_eq!(set(c, "load", load(times[0])), OK);
     let mut rows = vec![outputs(c)];

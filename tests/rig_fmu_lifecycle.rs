@@ -10,7 +10,7 @@ use rig_host::*;
 
 #[test]
 fn life_cycle_swings_the_pin_and_resets() {
-    let h = Host::new();
+    let h = new_host();
     let c = instantiate(&h);
     assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 1, 2.0), OK);
     assert_eq!(fmi2EnterInitializationMode(c), OK);
@@ -72,7 +72,7 @@ fn life_cycle_swings_the_pin_and_resets() {
 
 #[test]
 fn parameters_of_every_type_take_effect() {
-    let h = Host::new();
+    let h = new_host();
     let run = |sets: &[(&str, f64)]| {
         let c = ready(&h, sets);
         let mut t = 0.0;
@@ -106,7 +106,7 @@ fn parameters_of_every_type_take_effect() {
 
 #[test]
 fn command_input_is_followed_when_selected() {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, &[("use_command_input", 1.0), ("command_angle", 0.3)]);
     assert_eq!(get(c, "commanded_angle"), 0.3);
     let mut t = 0.0;
@@ -129,7 +129,7 @@ fn command_input_is_followed_when_selected() {
 
 #[test]
 fn bad_parameters_are_rejected_at_exit_initialization_by_name_value_and_unit() {
-    let h = Host::new();
+    let h = new_host();
     for (name, value, fragments) in [
         ("frequency", 0.0, vec!["frequency = 0 Hz", "> 0"]),
         ("amplitude", -0.1, vec!["amplitude = -0.1 rad", ">= 0"]),
@@ -159,7 +159,7 @@ fn bad_parameters_are_rejected_at_exit_initialization_by_name_value_and_unit() {
 
 #[test]
 fn bad_inputs_and_wrong_types_are_refused_without_change() {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, &[]);
     for (name, v, fragment) in [
         ("load", -1.0, "input load = -1 N is invalid"),
@@ -192,7 +192,7 @@ fn bad_inputs_and_wrong_types_are_refused_without_change() {
 
 #[test]
 fn zero_load_moves_freely_and_reports_zero_friction() {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, &[("load", 0.0)]);
     let mut t = 0.0;
     for _ in 0..30 {
@@ -214,7 +214,7 @@ fn zero_load_moves_freely_and_reports_zero_friction() {
 
 #[test]
 fn start_time_shifts_the_stroke() {
-    let h = Host::new();
+    let h = new_host();
     let a = ready(&h, &[]);
     let b = ready_at(&h, 10.0, &[]);
     let ra = step(&h, a, 0.0, 0.3);
@@ -229,7 +229,7 @@ fn start_time_shifts_the_stroke() {
 
 #[test]
 fn panic_inside_a_step_is_contained() {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, &[]);
     fmi_layer::fmi2::api::force_panic_in("fmi2DoStep");
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), Status::Fatal.c());

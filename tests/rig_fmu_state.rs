@@ -43,7 +43,7 @@ fn deserialize(c: Fmi2Component, bytes: &[u8]) -> Result<Fmi2FmuState, i32> {
 
 #[test]
 fn get_set_round_trip_is_bit_exact_after_reversals_and_in_stick() {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, &[("rig.breakaway_factor", 1.5)]);
     let (_, t) = drive(&h, c, 0.0, 230); // 1.61 s: three reversals
     let s = get_state(c);
@@ -75,7 +75,7 @@ fn get_set_round_trip_is_bit_exact_after_reversals_and_in_stick() {
 
 #[test]
 fn serialized_state_continues_bit_exactly_in_another_instance() {
-    let h = Host::new();
+    let h = new_host();
     let a = ready(&h, &[("frequency", 0.7), ("rig.formulation", 0.0), ("use_command_input", 0.0), ("surface.asperity_radius", 3e-5)]);
     let (_, t) = drive(&h, a, 0.0, 170);
     let sa = get_state(a);
@@ -99,7 +99,7 @@ fn serialized_state_continues_bit_exactly_in_another_instance() {
 
 #[test]
 fn regularised_and_rk4_states_round_trip_too() {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, &[("rig.formulation", 1.0), ("rig.method", 2.0), ("rig.rk4_step", 1e-5)]);
     let (_, t) = drive(&h, c, 0.0, 40);
     let bytes = serialize(c, get_state(c));
@@ -115,7 +115,7 @@ fn regularised_and_rk4_states_round_trip_too() {
 
 #[test]
 fn damaged_and_foreign_states_are_rejected() {
-    let h = Host::new();
+    let h = new_host();
     let c = ready(&h, &[]);
     drive(&h, c, 0.0, 20);
     let bytes = serialize(c, get_state(c));

@@ -20,8 +20,9 @@ pub struct ErrorReport {
     pub load_fraction: f64,
     /// Number of check points.
     pub points: usize,
-    /// Load (N) and speed (rad/s) of the point with the largest error.
+    /// Load (N) of the point with the largest error.
     pub worst_load: f64,
+    /// Speed (rad/s) of the point with the largest error.
     pub worst_speed: f64,
 }
 
@@ -86,9 +87,11 @@ impl ErrorReport {
 pub struct CheckRng(u64);
 
 impl CheckRng {
+    /// A generator started from `seed` (the same seed repeats the same sequence).
     pub fn new(seed: u64) -> Self {
         Self(seed)
     }
+    /// The next 64 random bits (SplitMix64).
     pub fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;

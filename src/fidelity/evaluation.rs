@@ -20,6 +20,7 @@ pub enum Source {
 }
 
 impl Source {
+    /// The name shown in logs and the CLI (`full`, `table`, `boundary`, `rest`, `fallback`).
     pub fn as_str(&self) -> &'static str {
         match self {
             Source::Full => "full",

@@ -18,6 +18,7 @@ pub struct WarmSolver {
 }
 
 impl WarmSolver {
+    /// A solver of `joint` whose first call starts cold.
     pub fn new(joint: Joint) -> Self {
         Self { joint, last: None }
     }
@@ -46,6 +47,7 @@ impl WarmSolver {
         self.last = None;
     }
 
+    /// The joint it evaluates.
     pub fn joint(&self) -> &Joint {
         &self.joint
     }

@@ -10,7 +10,9 @@ use serde::{Deserialize, Serialize};
 /// The model's parameters and the rig's.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct RigConfig {
+    /// The joint's model parameters (the sections of the parameter file).
     pub model: Params,
+    /// The rig's parameters (the `[rig]` section).
     pub rig: RigParams,
 }
 

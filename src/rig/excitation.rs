@@ -23,11 +23,14 @@ pub trait Excitation: Send + Sync {
 /// θ_cmd = A·sin(2π f t), θ̇_cmd = 2π f A·cos(2π f t).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SineCommand {
+    /// Stroke amplitude A (rad).
     pub amplitude: f64,
+    /// Stroke frequency f (Hz).
     pub frequency: f64,
 }
 
 impl SineCommand {
+    /// The commanded angle (rad) and angular velocity (rad/s) at time `t` (s).
     pub fn at(&self, t: f64) -> (f64, f64) {
         let w = TAU * self.frequency;
         let (s, c) = (w * t).sin_cos();
@@ -38,18 +41,22 @@ impl SineCommand {
 /// A piecewise-constant load: `initial` before the first step, `steps[i].1` from `steps[i].0` on.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StepLoad {
+    /// The load (N) before the first step.
     pub initial: f64,
     /// (time, load) pairs in increasing time.
     pub steps: Vec<(f64, f64)>,
 }
 
 impl StepLoad {
+    /// A load that never changes (N).
     pub fn constant(load: f64) -> Self {
         Self { initial: load, steps: Vec::new() }
     }
+    /// The load (N) at time `t` (s): the last step at or before `t`.
     pub fn at(&self, t: f64) -> f64 {
         self.steps.iter().rev().find(|(ts, _)| t >= *ts).map_or(self.initial, |s| s.1)
     }
+    /// The time (s) of the first step after `t`, or +∞ if none.
     pub fn next_step(&self, t: f64) -> f64 {
         self.steps.iter().map(|s| s.0).find(|&ts| ts > t).unwrap_or(f64::INFINITY)
     }
@@ -58,7 +65,9 @@ impl StepLoad {
 /// The paper's excitation: a sine command and a (piecewise-constant) load.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SineDrive {
+    /// The angle command θ_cmd(t).
     pub command: SineCommand,
+    /// The radial load P(t).
     pub load: StepLoad,
 }
 
@@ -77,8 +86,11 @@ impl Excitation for SineDrive {
 /// Closures for the load and the command (e.g. a host's signals); `jumps` lists the times where
 /// either is discontinuous.
 pub struct FnExcitation<L, C> {
+    /// The load P(t) (N).
     pub load: L,
+    /// The command (θ_cmd, θ̇_cmd)(t) (rad, rad/s).
     pub command: C,
+    /// Times (s) where the load or the command jumps; the integrator restarts there.
     pub jumps: Vec<f64>,
 }
 

@@ -109,7 +109,9 @@ pub struct RigParams {
     pub event_tolerance: f64,
     /// Length of the internal integration segments (s); they end on multiples of it.
     pub segment_length: f64,
+    /// How stick at reversal is modelled: hybrid events or a regularised ODE.
     pub formulation: Formulation,
+    /// The integrator of the slip phases (or of the regularised ODE).
     pub method: Method,
 }
 
@@ -140,11 +142,17 @@ impl Default for RigParams {
 /// One numeric `[rig]` key: name, unit, admissible range, accessors (for messages, FMU parameters).
 #[derive(Clone, Copy)]
 pub struct RigParamSpec {
+    /// The key in the `[rig]` section.
     pub key: &'static str,
+    /// SI unit of the value.
     pub unit: &'static str,
+    /// Admissible values; anything else is a validation error naming the key.
     pub range: Range,
+    /// One line for messages, the FMU's description and `pinjoint params --rig`.
     pub description: &'static str,
+    /// Reads the value from a [`RigParams`].
     pub get: fn(&RigParams) -> f64,
+    /// Writes the value into a [`RigParams`].
     pub set: fn(&mut RigParams, f64),
 }
 
@@ -172,6 +180,7 @@ macro_rules! rspec {
 /// τ_s ≥ 1e-3 s the fastest closed-loop mode, |s| ≈ √(K_d/(τ_s J)) ≤ 1e5 rad/s, keeps explicit
 /// steps above ≈ 3e-5 s.
 pub const MAX_POSITION_GAIN: f64 = 1e6;
+/// Largest derivative gain K_d offered (N·m·s/rad); see [`MAX_POSITION_GAIN`].
 pub const MAX_VELOCITY_GAIN: f64 = 1e4;
 
 /// Every numeric `[rig]` parameter.

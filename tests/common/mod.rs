@@ -1,10 +1,15 @@
-//! A minimal FMI host for the Rust tests: calls the exported `fmi2*` functions
-//! directly and records every logger message.
+//! The one FMI host of the Rust tests, for any model of the FMU library: calls the
+//! exported `fmi2*` functions directly, records every logger message, and resolves
+//! variable names through the model's own table (`Host::for_model`). The PinJoint
+//! tests use it directly (`Host::new()` and the free `set`/`get`); `tests/rig_host`
+//! binds the same functions to PinJointRig.
 #![allow(dead_code)]
 
 use fmi_layer::fmi2::api::common::*;
-use pinjoint_fmu::fmi2Instantiate;
+use fmi_layer::fmi2::api::cosim::fmi2DoStep;
 use fmi_layer::fmi2::types::*;
+use fmi_layer::fmi2::variables::{Kind, ModelInfo};
+use pinjoint_fmu::fmi2Instantiate;
 use std::ffi::{c_char, CStr, CString};
 use std::sync::Mutex;
 
@@ -45,10 +50,18 @@ pub fn logger() -> Fmi2CallbackLogger {
 pub struct Host {
     pub log: Box<Mutex<Vec<Msg>>>,
     pub callbacks: Box<Fmi2CallbackFunctions>,
+    /// The model this host instantiates.
+    pub info: &'static ModelInfo,
 }
 
 impl Host {
+    /// A host of PinJoint.
     pub fn new() -> Self {
+        Self::for_model(&pinjoint_fmu::pin_joint::INFO)
+    }
+
+    /// A host of any model of the library.
+    pub fn for_model(info: &'static ModelInfo) -> Self {
         let log = Box::new(Mutex::new(Vec::new()));
         let env = &*log as *const Mutex<Vec<Msg>> as Fmi2ComponentEnvironment;
         let callbacks = Box::new(Fmi2CallbackFunctions {
@@ -58,7 +71,7 @@ impl Host {
             step_finished: None,
             component_environment: env,
         });
-        Host { log, callbacks }
+        Host { log, callbacks, info }
     }
 
     pub fn messages(&self) -> Vec<Msg> {
@@ -92,47 +105,126 @@ impl Host {
     }
 
     pub fn instantiate(&self) -> Fmi2Component {
-        let c = self.instantiate_with("joint", FMI2_CO_SIMULATION, &guid(), Some("file:///tmp/resources"), false);
+        let c = self.instantiate_with(self.info.model_identifier, FMI2_CO_SIMULATION, &self.info.guid(), Some("file:///tmp/resources"), false);
         assert!(!c.is_null(), "instantiate failed: {:?}", self.messages());
         c
     }
 
-    /// Instantiate, set `params` and inputs, initialize at t = 0.
-    pub fn ready(&self, sets: &[(&str, f64)]) -> Fmi2Component {
+    /// Instantiate, set `sets` (parameters and inputs, by name), initialize at `start`.
+    pub fn ready_at(&self, start: f64, sets: &[(&str, f64)]) -> Fmi2Component {
         let c = self.instantiate();
-        assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), 0);
+        assert_eq!(fmi2SetupExperiment(c, 0, 0.0, start, 0, 0.0), OK);
         for (n, v) in sets {
-            assert_eq!(set(c, n, *v), 0, "{n}: {}", self.last());
+            assert_eq!(set_in(self.info, c, n, *v), OK, "{n}: {}", self.last());
         }
-        assert_eq!(fmi2EnterInitializationMode(c), 0);
-        assert_eq!(fmi2ExitInitializationMode(c), 0, "{}", self.last());
+        assert_eq!(fmi2EnterInitializationMode(c), OK);
+        assert_eq!(fmi2ExitInitializationMode(c), OK, "{}", self.last());
         c
+    }
+
+    /// [`Host::ready_at`] t = 0.
+    pub fn ready(&self, sets: &[(&str, f64)]) -> Fmi2Component {
+        self.ready_at(0.0, sets)
+    }
+
+    /// Step from `t` to `t_next` and return every output of the model there.
+    pub fn step(&self, c: Fmi2Component, t: f64, t_next: f64) -> Vec<f64> {
+        assert_eq!(fmi2DoStep(c, t, t_next - t, 0), OK, "doStep({t}, {}): {}", t_next - t, self.last());
+        outputs_in(self.info, c)
     }
 }
 
+/// `fmi2OK`.
+pub const OK: i32 = 0;
+/// `fmi2Error`.
+pub const ERROR: i32 = 3;
+
+fn index_in(info: &ModelInfo, name: &str) -> usize {
+    info.index_by_name(name).unwrap_or_else(|| panic!("{} has no variable {name}", info.model_name))
+}
+
+/// The value reference of `name` in `info`'s table.
+pub fn vr_in(info: &ModelInfo, name: &str) -> u32 {
+    info.variables[index_in(info, name)].value_reference
+}
+
+/// Set any variable, through the setter of its type (Boolean: non-zero is true).
+pub fn set_in(info: &ModelInfo, c: Fmi2Component, name: &str, v: f64) -> i32 {
+    let i = index_in(info, name);
+    let r = [info.variables[i].value_reference];
+    unsafe {
+        match info.variables[i].kind {
+            Kind::Real => fmi2SetReal(c, r.as_ptr(), 1, [v].as_ptr()),
+            Kind::Integer => fmi2SetInteger(c, r.as_ptr(), 1, [v as i32].as_ptr()),
+            Kind::Boolean => fmi2SetBoolean(c, r.as_ptr(), 1, [(v != 0.0) as i32].as_ptr()),
+        }
+    }
+}
+
+/// Get any variable through the getter of its type, as f64; `Err(status)` on failure.
+pub fn try_get_in(info: &ModelInfo, c: Fmi2Component, name: &str) -> Result<f64, i32> {
+    let i = index_in(info, name);
+    let r = [info.variables[i].value_reference];
+    let (s, v) = unsafe {
+        match info.variables[i].kind {
+            Kind::Real => {
+                let mut v = [f64::NAN];
+                (fmi2GetReal(c, r.as_ptr(), 1, v.as_mut_ptr()), v[0])
+            }
+            Kind::Integer => {
+                let mut v = [-7];
+                (fmi2GetInteger(c, r.as_ptr(), 1, v.as_mut_ptr()), f64::from(v[0]))
+            }
+            Kind::Boolean => {
+                let mut v = [-7];
+                (fmi2GetBoolean(c, r.as_ptr(), 1, v.as_mut_ptr()), f64::from(v[0]))
+            }
+        }
+    };
+    if s == OK { Ok(v) } else { Err(s) }
+}
+
+/// Every output of the model, in table order.
+pub fn outputs_in(info: &ModelInfo, c: Fmi2Component) -> Vec<f64> {
+    info.variables
+        .iter()
+        .filter(|v| v.causality == fmi_layer::fmi2::variables::Causality::Output)
+        .map(|v| try_get_in(info, c, &v.name).unwrap_or_else(|s| panic!("get({}) returned {s}", v.name)))
+        .collect()
+}
+
+/// Free an instance.
+pub fn free(c: Fmi2Component) {
+    unsafe { fmi2FreeInstance(c) };
+}
+
+fn pin_joint() -> &'static ModelInfo {
+    &pinjoint_fmu::pin_joint::INFO
+}
+
+/// PinJoint's GUID.
 pub fn guid() -> String {
-    pinjoint_fmu::pin_joint::INFO.guid()
+    pin_joint().guid()
 }
 
+/// A PinJoint value reference.
 pub fn vr(name: &str) -> u32 {
-    let info = &*pinjoint_fmu::pin_joint::INFO;
-    info.variables[info.index_by_name(name).unwrap_or_else(|| panic!("no variable {name}"))].value_reference
+    vr_in(pin_joint(), name)
 }
 
+/// Set a PinJoint variable.
 pub fn set(c: Fmi2Component, name: &str, v: f64) -> i32 {
-    let r = [vr(name)];
-    unsafe { fmi2SetReal(c, r.as_ptr(), 1, [v].as_ptr()) }
+    set_in(pin_joint(), c, name, v)
 }
 
+/// Get a PinJoint variable (panics on a non-OK status).
 pub fn get(c: Fmi2Component, name: &str) -> f64 {
     try_get(c, name).unwrap_or_else(|s| panic!("fmi2GetReal({name}) returned {s}"))
 }
 
+/// Get a PinJoint variable.
 pub fn try_get(c: Fmi2Component, name: &str) -> Result<f64, i32> {
-    let r = [vr(name)];
-    let mut v = [f64::NAN];
-    let s = unsafe { fmi2GetReal(c, r.as_ptr(), 1, v.as_mut_ptr()) };
-    if s == 0 { Ok(v[0]) } else { Err(s) }
+    try_get_in(pin_joint(), c, name)
 }
 
 pub const OUTPUTS: [&str; 10] = [

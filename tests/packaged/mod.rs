@@ -25,3 +25,21 @@ pub fn fmu_path(env_var: &str, info: &ModelInfo, tag: &str) -> PathBuf {
     zip.finish().unwrap();
     path
 }
+
+/// The value reference of `name` in `info`'s table.
+pub fn vr(info: &ModelInfo, name: &str) -> u32 {
+    info.variables[info.index_by_name(name).unwrap_or_else(|| panic!("no variable {name}"))].value_reference
+}
+
+/// The FMU of `info` (see [`fmu_path`]) imported by the `fmi` crate (which unpacks it), its
+/// GUID checked; an archive packaged by the test is removed again.
+pub fn import(env_var: &str, info: &ModelInfo, tag: &str) -> fmi::fmi2::import::Fmi2Import {
+    use fmi::traits::FmiImport;
+    let path = fmu_path(env_var, info, tag);
+    let import: fmi::fmi2::import::Fmi2Import = fmi::import::from_path(&path).expect("the fmi crate imports the FMU");
+    assert_eq!(import.model_description().guid, info.guid());
+    if std::env::var_os(env_var).is_none() {
+        let _ = std::fs::remove_file(&path);
+    }
+    import
+}

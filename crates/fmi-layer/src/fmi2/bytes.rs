@@ -3,16 +3,20 @@
 /// Appends fixed-width little-endian values.
 #[derive(Debug, Default)]
 pub struct ByteWriter {
+    /// The bytes written so far.
     pub buf: Vec<u8>,
 }
 
 impl ByteWriter {
+    /// Append one byte.
     pub fn u8(&mut self, v: u8) {
         self.buf.push(v);
     }
+    /// Append a little-endian u16.
     pub fn u16(&mut self, v: u16) {
         self.buf.extend_from_slice(&v.to_le_bytes());
     }
+    /// Append a little-endian u32.
     pub fn u32(&mut self, v: u32) {
         self.buf.extend_from_slice(&v.to_le_bytes());
     }
@@ -20,6 +24,7 @@ impl ByteWriter {
     pub fn f64(&mut self, v: f64) {
         self.buf.extend_from_slice(&v.to_bits().to_le_bytes());
     }
+    /// Append raw bytes.
     pub fn bytes(&mut self, v: &[u8]) {
         self.buf.extend_from_slice(v);
     }
@@ -33,9 +38,11 @@ pub struct ByteReader<'a> {
 }
 
 impl<'a> ByteReader<'a> {
+    /// A reader at the start of `data`.
     pub fn new(data: &'a [u8]) -> Self {
         Self { data, pos: 0 }
     }
+    /// The next `n` bytes; an error names `what` was being read when fewer remain.
     pub fn take(&mut self, n: usize, what: &str) -> Result<&'a [u8], String> {
         if self.data.len() - self.pos < n {
             return Err(format!(
@@ -48,15 +55,19 @@ impl<'a> ByteReader<'a> {
         self.pos += n;
         Ok(s)
     }
+    /// Read one byte (`what`: for the error message).
     pub fn u8(&mut self, what: &str) -> Result<u8, String> {
         Ok(self.take(1, what)?[0])
     }
+    /// Read a little-endian u16.
     pub fn u16(&mut self, what: &str) -> Result<u16, String> {
         Ok(u16::from_le_bytes(self.take(2, what)?.try_into().unwrap()))
     }
+    /// Read a little-endian u32.
     pub fn u32(&mut self, what: &str) -> Result<u32, String> {
         Ok(u32::from_le_bytes(self.take(4, what)?.try_into().unwrap()))
     }
+    /// Read an f64 from its exact bit pattern.
     pub fn f64(&mut self, what: &str) -> Result<f64, String> {
         Ok(f64::from_bits(u64::from_le_bytes(self.take(8, what)?.try_into().unwrap())))
     }

@@ -6,17 +6,28 @@
 
 use std::ffi::{c_char, c_int, c_uint, c_void};
 
+/// `fmi2Component`: the instance handle the FMU returns from `fmi2Instantiate`.
 pub type Fmi2Component = *mut c_void;
+/// `fmi2ComponentEnvironment`: the host's pointer, passed back to its logger.
 pub type Fmi2ComponentEnvironment = *mut c_void;
+/// `fmi2FMUstate`: a handle to a saved FMU state.
 pub type Fmi2FmuState = *mut c_void;
+/// `fmi2ValueReference`: the number that names a variable in the modelDescription.
 pub type Fmi2ValueReference = c_uint;
+/// `fmi2Real`.
 pub type Fmi2Real = f64;
+/// `fmi2Integer`.
 pub type Fmi2Integer = c_int;
+/// `fmi2Boolean` (`fmi2True` = 1, `fmi2False` = 0).
 pub type Fmi2Boolean = c_int;
+/// `fmi2String`: NULL or a NUL-terminated string.
 pub type Fmi2String = *const c_char;
+/// `fmi2Byte`, the element of a serialized FMU state.
 pub type Fmi2Byte = c_char;
 
+/// `fmi2True`.
 pub const FMI2_TRUE: Fmi2Boolean = 1;
+/// `fmi2False`.
 pub const FMI2_FALSE: Fmi2Boolean = 0;
 
 /// `fmi2Status` as returned through the C ABI.
@@ -24,30 +35,42 @@ pub type Fmi2StatusC = c_int;
 
 /// `fmi2Type`: 0 = Model Exchange, 1 = Co-Simulation.
 pub const FMI2_MODEL_EXCHANGE: c_int = 0;
+/// `fmi2CoSimulation`.
 pub const FMI2_CO_SIMULATION: c_int = 1;
 
 /// `fmi2StatusKind`.
 pub const FMI2_DO_STEP_STATUS: c_int = 0;
+/// `fmi2PendingStatus`.
 pub const FMI2_PENDING_STATUS: c_int = 1;
+/// `fmi2LastSuccessfulTime`.
 pub const FMI2_LAST_SUCCESSFUL_TIME: c_int = 2;
+/// `fmi2Terminated`.
 pub const FMI2_TERMINATED: c_int = 3;
 
 /// The FMI 2.0 status, ordered by severity.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 #[repr(i32)]
 pub enum Status {
+    /// `fmi2OK`: all well.
     Ok = 0,
+    /// `fmi2Warning`: done, but the host should look at the log.
     Warning = 1,
+    /// `fmi2Discard`: the step was not done (Co-Simulation).
     Discard = 2,
+    /// `fmi2Error`: the call failed; the instance may still be usable where the standard allows.
     Error = 3,
+    /// `fmi2Fatal`: the instance is broken; only `fmi2FreeInstance` is allowed.
     Fatal = 4,
+    /// `fmi2Pending`: an asynchronous step is running (never returned by this layer).
     Pending = 5,
 }
 
 impl Status {
+    /// The value passed through the C ABI.
     pub fn c(self) -> Fmi2StatusC {
         self as c_int
     }
+    /// The standard's name of the status, e.g. `fmi2Error`, for log messages.
     pub fn name(self) -> &'static str {
         match self {
             Status::Ok => "fmi2OK",
@@ -71,18 +94,26 @@ pub type Fmi2CallbackLogger = unsafe extern "C" fn(
     Fmi2String,
     ...
 );
+/// `fmi2CallbackAllocateMemory` (not used: see [`Fmi2CallbackFunctions`]).
 pub type Fmi2CallbackAllocateMemory = unsafe extern "C" fn(usize, usize) -> *mut c_void;
+/// `fmi2CallbackFreeMemory` (not used).
 pub type Fmi2CallbackFreeMemory = unsafe extern "C" fn(*mut c_void);
+/// `fmi2StepFinished`, for asynchronous steps (not used: `canRunAsynchronuously` is false).
 pub type Fmi2StepFinished = unsafe extern "C" fn(Fmi2ComponentEnvironment, Fmi2StatusC);
 
 /// `fmi2CallbackFunctions`. This FMU declares `canNotUseMemoryManagementFunctions`,
 /// so only `logger` and `componentEnvironment` are used.
 #[repr(C)]
 pub struct Fmi2CallbackFunctions {
+    /// The host's logger; required (an instance without one is refused).
     pub logger: Option<Fmi2CallbackLogger>,
+    /// The host's allocator (not used).
     pub allocate_memory: Option<Fmi2CallbackAllocateMemory>,
+    /// The host's deallocator (not used).
     pub free_memory: Option<Fmi2CallbackFreeMemory>,
+    /// The host's callback for asynchronous steps (not used).
     pub step_finished: Option<Fmi2StepFinished>,
+    /// Passed back as the first argument of every `logger` call.
     pub component_environment: Fmi2ComponentEnvironment,
 }
 
