@@ -54,6 +54,7 @@ fn config(params: Option<&Bound<'_, PyAny>>, rig: &Bound<'_, PyDict>) -> PyResul
     let overrides = PyDict::new(rig.py());
     overrides.set_item("rig", rig)?;
     merge_mapping(&mut table, overrides.as_any())?;
+    crate::values::check_keys(&table, true)?;
     RigConfig::from_toml_str(&to_text(&table)?).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 

@@ -44,6 +44,7 @@ pub struct PyParams {
 impl PyParams {
     /// Parse a TOML table through the library (its keys, its validation, its messages).
     fn from_table(table: &toml::Table) -> PyResult<Self> {
+        crate::values::check_keys(table, false)?;
         let inner = Params::from_toml_str(&to_text(table)?).map_err(param_err)?;
         Ok(Self { inner })
     }

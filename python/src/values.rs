@@ -65,6 +65,41 @@ fn set(table: &mut toml::Table, section: &str, name: &str, value: toml::Value) -
     }
 }
 
+/// Check every `section.key` of `table` against the parameter file's names (the model's
+/// sections, and `[rig]` when `rig` is true), so that a dict's unknown key is named as given
+/// rather than as a line of generated TOML.
+pub fn check_keys(table: &toml::Table, rig: bool) -> PyResult<()> {
+    use pinjoint::params::PARAMS;
+    use pinjoint::rig::RIG_PARAMS;
+    for (section, inner) in table {
+        let known: Vec<String> = if section == "rig" && rig {
+            RIG_PARAMS.iter().map(|s| s.key.to_string()).chain(["formulation".into(), "method".into()]).collect()
+        } else {
+            PARAMS.iter().filter(|s| s.section == section).map(|s| s.key.to_string()).collect()
+        };
+        if known.is_empty() {
+            let mut sections: Vec<&str> = PARAMS.iter().map(|s| s.section).collect();
+            sections.dedup();
+            if rig {
+                sections.push("rig");
+            }
+            return Err(PyValueError::new_err(format!(
+                "unknown parameter section `{section}`: the sections are {}",
+                sections.join(", ")
+            )));
+        }
+        if let toml::Value::Table(t) = inner {
+            if let Some(k) = t.keys().find(|k| !known.contains(k)) {
+                return Err(PyValueError::new_err(format!(
+                    "unknown parameter `{section}.{k}`: [{section}] has {}",
+                    known.join(", ")
+                )));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The text of `table` as a parameter file.
 pub fn to_text(table: &toml::Table) -> PyResult<String> {
     toml::to_string(table).map_err(|e| PyValueError::new_err(format!("parameter file: {e}")))
