@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numbers
 import os
 from typing import Any, Mapping, Union
 
@@ -39,11 +40,11 @@ def as_float_array(name: str, unit: str, value: Any) -> np.ndarray:
         raise ValueError(f"{name} ({unit}) cannot be made into an array: {e}") from None
     kind = arr.dtype.kind
     if kind == "O":
-        # A list of Python numbers mixed with e.g. Decimal: try a float conversion.
-        try:
-            arr = arr.astype(np.float64)
-        except (TypeError, ValueError):
-            raise TypeError(f"{name} ({unit}) must hold real numbers, got an array of objects") from None
+        # E.g. Python numbers mixed with Fractions: real numbers only (None would become NaN).
+        bad = [x for x in arr.flat if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Real)]
+        if bad:
+            raise TypeError(f"{name} ({unit}) must hold real numbers, got {bad[0]!r}")
+        arr = arr.astype(np.float64)
         kind = "f"
     if kind == "b":
         raise TypeError(f"{name} ({unit}) must hold real numbers, not booleans")

@@ -12,7 +12,10 @@ fn leaf(name: &str, v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
         return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a bool", v.repr()?)));
     }
     if v.is_instance_of::<PyString>() {
-        return Ok(toml::Value::String(v.extract::<String>()?));
+        if matches!(name, "rig.formulation" | "rig.method") {
+            return Ok(toml::Value::String(v.extract::<String>()?));
+        }
+        return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a string", v.repr()?)));
     }
     if v.is_instance_of::<PyFloat>() || v.is_instance_of::<PyInt>() || v.hasattr("__float__")? {
         let x: f64 = v.extract().or_else(|_| v.call_method0("__float__")?.extract())?;
