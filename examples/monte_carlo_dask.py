@@ -200,11 +200,8 @@ def main(argv=None) -> int:
     else:
         from dask.distributed import Client, LocalCluster
 
-        if __name__ != "__main__":
-            # Imported (e.g. by a test): send this module's functions to the workers by value.
-            import cloudpickle
-
-            cloudpickle.register_pickle_by_value(sys.modules[__name__])
+        # Run as a script, the task functions live in __main__ and go to the workers by value
+        # (cloudpickle); imported as a module, the workers must be able to import it too.
         if args.scheduler:
             with Client(args.scheduler) as client:
                 mc, grid = compute(args, client)

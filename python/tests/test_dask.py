@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -11,11 +12,16 @@ ROOT = Path(__file__).resolve().parents[2]
 def load_example():
     spec = importlib.util.spec_from_file_location("monte_carlo_dask", ROOT / "examples" / "monte_carlo_dask.py")
     mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod
     spec.loader.exec_module(mod)
     return mod
 
 
-def test_dask_local_cluster_equals_serial_run(tmp_path):
+def test_dask_local_cluster_equals_serial_run(tmp_path, monkeypatch):
+    # The worker processes (multiprocessing spawn, which hands them this sys.path) import the
+    # example's task functions by name.
+    monkeypatch.syspath_prepend(str(ROOT / "examples"))
+    monkeypatch.setenv("PYTHONPATH", str(ROOT / "examples"))
     ex = load_example()
     small = ["--samples", "6", "--cycles", "2", "--samples-per-cycle", "200", "--map-loads", "6",
              "--map-speeds", "20", "--map-tasks", "3"]
