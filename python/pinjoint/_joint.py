@@ -38,8 +38,8 @@ class Joint:
                load shares) for table, boundary and auto; dimensionless, > 0.
     envelope   (load_min, load_max, speed_min, speed_max) in N and rad/s: where the table
                and boundary levels answer. Default DEFAULT_ENVELOPE (5-60 kN,
-               0.01-10 rad/s). Points outside it (and at every level, points at full) are
-               answered by the complete solve.
+               0.01-10 rad/s). Points outside it are answered by the complete solve,
+               as at "full" (counted in `fallbacks`).
 
     The model: Greenwood-Williamson asperity contact, Moes' central film thickness scaled
     by the load-sharing factors gamma1/gamma2, Roelands viscosity and Bair-Winer limiting
