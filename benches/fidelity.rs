@@ -6,7 +6,7 @@
 //! close, as in a time-stepping host, so the warm start has a previous solution to use —
 //! crossing boundary, mixed and (in the wide envelope) full film. Errors are measured on
 //! those points and on 20 000 random points of the envelope. Run:
-//! `cargo bench --bench fidelity`; the summary lines (`summary ...`) come from one run.
+//! `cargo bench -p pinjoint --bench fidelity`; the summary lines (`summary ...`) come from one run.
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use pinjoint::fidelity::check::CheckRng;
 use pinjoint::fidelity::{Envelope, ErrorReport, Evaluator, Fidelity};

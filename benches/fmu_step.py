@@ -1,6 +1,6 @@
 """Cost of one FMU co-simulation step through fmpy, per fidelity, against a pass-through FMU.
 
-Run by `pinjoint bench` (or by hand):
+Run by `pinjoint-bench` (or by hand):
     .venv/bin/python benches/fmu_step.py PinJoint.fmu PassThrough.fmu [--steps N] [--repeats R]
 
 Every configuration is driven by the same loop: set two Real inputs, fmi2DoStep, get two

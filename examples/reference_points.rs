@@ -3,7 +3,7 @@
 //! precision (`{:?}`, shortest text that reads back to the same f64).
 //!
 //! ```text
-//! printf '20000,0.2\n60000,-1\n' | cargo run --release --example reference_points
+//! printf '20000,0.2\n60000,-1\n' | cargo run --release -p pinjoint --example reference_points
 //! ```
 //!
 //! Optional first argument: a TOML parameter file (missing keys keep the defaults).

@@ -1,4 +1,4 @@
-//! Quick look at a rig run: `cargo run --release --example rig_probe -- <freq Hz> <load N> <cycles> [k_b [J tau_s K_p K_d]]`.
+//! Quick look at a rig run: `cargo run --release -p pinjoint --example rig_probe -- <freq Hz> <load N> <cycles> [k_b [J tau_s K_p K_d]]`.
 //! Prints the tracking error, the torque at mid-stroke, event counts and the energy residual,
 //! and writes `rig_probe.csv` (time, command, angle, speed, torque, friction torque, stuck).
 use pinjoint::rig::{cycle_average_friction_coefficient, energy_residual, RigConfig, RigSim};

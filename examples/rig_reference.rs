@@ -7,7 +7,7 @@
 //! back to the same f64).
 //!
 //! ```text
-//! printf '0,20000\n0.1,20000\n0.2,60000\n' | cargo run --release --example rig_reference
+//! printf '0,20000\n0.1,20000\n0.2,60000\n' | cargo run --release -p pinjoint --example rig_reference
 //! ```
 //!
 //! Optional first argument: a TOML parameter file with the model's sections and

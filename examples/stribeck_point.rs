@@ -1,7 +1,7 @@
 //! Using the library directly: the joint of the paper's rig, one operating point, a
 //! Stribeck curve at 20 kN, and a joint of your own from a partial parameter file.
 //!
-//! Run with `cargo run --release --example stribeck_point`.
+//! Run with `cargo run --release -p pinjoint --example stribeck_point`.
 
 use pinjoint::{Joint, Params};
 

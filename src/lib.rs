@@ -5,7 +5,12 @@
 //! Greenwood–Williamson asperity contact, Moes central film thickness scaled by
 //! the load-sharing factors γ1/γ2, Roelands viscosity and Bair–Winer limiting shear.
 //!
-//! The physics modules are pure (no I/O, no FMI):
+//! This crate is the physics layer of the workspace (see ARCHITECTURE.md): pure
+//! functions and small value types, no I/O, no FMI, no command line. The FMUs
+//! (`pinjoint-fmu`), the `pinjoint` command line (`pinjoint-cli`) and the Python
+//! package build on it; nothing here depends on them.
+//!
+//! The physics modules:
 //! [`params`] → [`contact`], [`viscosity`], [`gw`], [`film`], [`asperity`]
 //! → [`mixed`] (the load-sharing solve) → [`joint`] (μ, torque, every output).
 //!
@@ -24,12 +29,8 @@ pub mod gw;
 pub mod joint;
 pub mod mixed;
 pub mod params;
-pub mod plot;
 pub mod rig;
 pub mod viscosity;
-
-pub mod fmi2;
-pub mod fmu;
 
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};
 pub use params::{ParamError, Params};

@@ -1,12 +1,12 @@
-//! `pinjoint bench --quick`: the report and its plots are written (timings are not asserted).
+//! `pinjoint-bench --quick`: the report and its plots are written (timings are not asserted).
 
 use std::process::Command;
 
 #[test]
 fn bench_quick_writes_the_report_and_plots() {
     let dir = tempfile::tempdir().unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
-        .args(["bench", "--quick", "--no-fmu", "--output"])
+    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint-bench"))
+        .args(["--quick", "--no-fmu", "--output"])
         .arg(dir.path())
         .output()
         .unwrap();
@@ -46,8 +46,8 @@ fn bench_quick_writes_the_report_and_plots() {
 #[test]
 fn bench_without_python_says_so() {
     let dir = tempfile::tempdir().unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
-        .args(["bench", "--quick", "--python", "/nonexistent/python", "--output"])
+    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint-bench"))
+        .args(["--quick", "--python", "/nonexistent/python", "--output"])
         .arg(dir.path())
         .output()
         .unwrap();

@@ -3,10 +3,11 @@
 
 mod common;
 use common::*;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
-use pinjoint::fmi2::api::model_exchange::*;
-use pinjoint::fmi2::types::*;
+use fmi_layer::fmi2::api::common::*;
+use pinjoint_fmu::fmi2Instantiate;
+use fmi_layer::fmi2::api::cosim::*;
+use fmi_layer::fmi2::api::model_exchange::*;
+use fmi_layer::fmi2::types::*;
 use std::ffi::CStr;
 use std::ptr::{null, null_mut};
 

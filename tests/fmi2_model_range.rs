@@ -5,8 +5,8 @@
 
 mod common;
 use common::*;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::api::cosim::*;
 use pinjoint::{Joint, Params};
 
 const OK: i32 = 0;

@@ -2,10 +2,10 @@
 
 mod common;
 use common::*;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
-use pinjoint::fmi2::api::force_panic_in;
-use pinjoint::fmi2::types::*;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::api::cosim::*;
+use fmi_layer::fmi2::api::force_panic_in;
+use fmi_layer::fmi2::types::*;
 
 const OK: i32 = 0;
 const ERROR: i32 = 3;

@@ -3,10 +3,10 @@
 
 mod common;
 use common::*;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
-use pinjoint::fmi2::bytes::crc32;
-use pinjoint::fmi2::types::*;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::api::cosim::*;
+use fmi_layer::fmi2::bytes::crc32;
+use fmi_layer::fmi2::types::*;
 use std::ptr::null_mut;
 
 const OK: i32 = 0;

@@ -3,8 +3,8 @@
 
 mod common;
 use common::*;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::api::cosim::*;
 use pinjoint::{Joint, Params};
 use std::ptr::{null, null_mut};
 

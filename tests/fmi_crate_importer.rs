@@ -12,7 +12,7 @@ mod packaged;
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};
 use fmi::traits::FmiImport;
-use pinjoint::fmu::pin_joint::INFO;
+use pinjoint_fmu::pin_joint::INFO;
 use pinjoint::{Joint, Params};
 use std::path::PathBuf;
 

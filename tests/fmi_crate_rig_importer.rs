@@ -11,7 +11,7 @@ mod packaged;
 use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common};
 use fmi::traits::FmiImport;
-use pinjoint::fmu::pin_joint_rig::INFO;
+use pinjoint_fmu::pin_joint_rig::INFO;
 use pinjoint::rig::{Inputs, Method, RigConfig, RigSim};
 use std::path::PathBuf;
 

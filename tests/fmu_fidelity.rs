@@ -5,9 +5,9 @@
 
 mod common;
 use common::*;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
-use pinjoint::fmi2::types::Fmi2Component;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::api::cosim::*;
+use fmi_layer::fmi2::types::Fmi2Component;
 use pinjoint::{Joint, Params};
 
 const OK: i32 = 0;

@@ -14,7 +14,7 @@ fn replay(target: &str, check: fn(&[u8])) -> usize {
 }
 
 fn replay_dir(kind: &str, target: &str, check: fn(&[u8])) -> usize {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz").join(kind).join(target);
+    let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("fuzz").join(kind).join(target);
     let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())).map(|e| e.unwrap().path()).collect();
     files.sort();
     for f in &files {
@@ -66,7 +66,7 @@ fn core_random_inputs_in_the_envelope() {
 fn core_open_findings() {
     let mut failing = Vec::new();
     for (target, check) in [("core", checks::core::check as fn(&[u8])), ("core_envelope", checks::core::check_in_envelope)] {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/findings").join(target);
+        let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("fuzz/findings").join(target);
         for f in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()) {
             let data = std::fs::read(&f).unwrap();
             if std::panic::catch_unwind(|| check(&data)).is_err() {
@@ -97,7 +97,7 @@ fn the_fmi_check_detects_a_contained_panic() {
     // setupExperiment(start 0), enter and exit initialization, doStep(0, 1 ms).
     let prog = [0, 0, 34, 0, 1, 2, 2, 0, 1, 0, 1, 0, 7, 7, 0, 2, 0, 4, 0, 13, 0, 2, 2, 128, 0];
     checks::fmi::check(&prog);
-    pinjoint::fmi2::api::force_panic_in("fmi2DoStep");
+    fmi_layer::fmi2::api::force_panic_in("fmi2DoStep");
     let r = std::panic::catch_unwind(|| checks::fmi::check(&prog));
     let msg = r.expect_err("the forced panic must be reported").downcast_ref::<String>().cloned().unwrap_or_default();
     assert!(msg.contains("fmi2DoStep returned status 4"), "{msg}");

@@ -2,16 +2,16 @@
 //! change of the variable table cannot go unnoticed. To accept a deliberate change:
 //! `UPDATE_MODEL_DESCRIPTION=1 cargo test --test model_description`.
 
-use pinjoint::fmi2::variables::Causality;
-use pinjoint::fmi2::xml::model_description;
-use pinjoint::fmu::registry;
+use fmi_layer::fmi2::variables::Causality;
+use fmi_layer::fmi2::xml::model_description;
+use pinjoint_fmu::registry;
 use std::path::Path;
 
 #[test]
 fn committed_model_descriptions_match_the_generator() {
     for info in registry() {
         let generated = model_description(info).unwrap();
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("modelDescription").join(format!("{}.xml", info.model_identifier));
+        let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("modelDescription").join(format!("{}.xml", info.model_identifier));
         if std::env::var_os("UPDATE_MODEL_DESCRIPTION").is_some() {
             std::fs::write(&path, &generated).unwrap();
         }
@@ -27,7 +27,7 @@ fn committed_model_descriptions_match_the_generator() {
 
 #[test]
 fn pin_joint_table_is_complete_and_consistent() {
-    let info = &*pinjoint::fmu::pin_joint::INFO;
+    let info = &*pinjoint_fmu::pin_joint::INFO;
     let names: Vec<&str> = info.variables.iter().map(|v| v.name.as_str()).collect();
     for s in pinjoint::params::PARAMS.iter() {
         let v = &info.variables[info.index_by_name(&s.name()).unwrap_or_else(|| panic!("{} missing", s.name()))];
@@ -62,8 +62,8 @@ fn pin_joint_table_is_complete_and_consistent() {
 
 #[test]
 fn output_dependencies_are_the_physical_ones() {
-    let xml = model_description(&pinjoint::fmu::pin_joint::INFO).unwrap();
-    let info = &*pinjoint::fmu::pin_joint::INFO;
+    let xml = model_description(&pinjoint_fmu::pin_joint::INFO).unwrap();
+    let info = &*pinjoint_fmu::pin_joint::INFO;
     let idx = |n: &str| info.index_by_name(n).unwrap() + 1;
     let line = |n: &str| format!(r#"<Unknown index="{}" dependencies="#, idx(n));
     let deps = |n: &str| {

@@ -7,8 +7,8 @@
 
 mod rig_host;
 use pinjoint::fidelity::{Envelope, Fidelity, Level};
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::types::*;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::types::*;
 use pinjoint::rig::{Inputs, RigConfig, RigSim};
 use rig_host::*;
 use std::ptr::null_mut;
@@ -238,7 +238,7 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     assert_eq!(old[model], 2, "rig state version 2");
     old[model] = 1;
     let n = old.len();
-    let crc = pinjoint::fmi2::bytes::crc32(&old[..n - 4]);
+    let crc = fmi_layer::fmi2::bytes::crc32(&old[..n - 4]);
     old[n - 4..].copy_from_slice(&crc.to_le_bytes());
     let mut so: Fmi2FmuState = null_mut();
     assert_ne!(unsafe { fmi2DeSerializeFMUstate(d, old.as_ptr() as *const Fmi2Byte, old.len(), &mut so) }, OK);
@@ -255,9 +255,9 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
 /// before the CRC, of known length (version, count, settings, start time, flag, length,
 /// 112-byte simulator state).
 fn model_part_offset(bytes: &[u8]) -> usize {
-    let settings = pinjoint::fmu::pin_joint_rig::variables::LAYOUT
+    let settings = pinjoint_fmu::pin_joint_rig::variables::LAYOUT
         .iter()
-        .filter(|v| !matches!(v, pinjoint::fmu::pin_joint_rig::variables::Var::Out(_)))
+        .filter(|v| !matches!(v, pinjoint_fmu::pin_joint_rig::variables::Var::Out(_)))
         .count();
     let len = 1 + 2 + 8 * settings + 8 + 1 + 2 + 112;
     bytes.len() - 4 - len

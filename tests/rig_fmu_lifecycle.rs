@@ -3,9 +3,9 @@
 //! zero load, and misuse.
 
 mod rig_host;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::*;
-use pinjoint::fmi2::types::*;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::api::cosim::*;
+use fmi_layer::fmi2::types::*;
 use rig_host::*;
 
 #[test]
@@ -231,7 +231,7 @@ fn start_time_shifts_the_stroke() {
 fn panic_inside_a_step_is_contained() {
     let h = Host::new();
     let c = ready(&h, &[]);
-    pinjoint::fmi2::api::force_panic_in("fmi2DoStep");
+    fmi_layer::fmi2::api::force_panic_in("fmi2DoStep");
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), Status::Fatal.c());
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), ERROR);
     free(c);

@@ -3,8 +3,8 @@
 //! states are rejected.
 
 mod rig_host;
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::types::*;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::types::*;
 use rig_host::*;
 use std::ptr::null_mut;
 
@@ -129,12 +129,12 @@ fn damaged_and_foreign_states_are_rejected() {
     // Phase code word of the RigState (7th f64) set to 5.0, CRC recomputed.
     let phase_at = n - 4 - 112 + 6 * 8;
     bad_phase[phase_at..phase_at + 8].copy_from_slice(&5.0f64.to_le_bytes());
-    let crc = pinjoint::fmi2::bytes::crc32(&bad_phase[..n - 4]);
+    let crc = fmi_layer::fmi2::bytes::crc32(&bad_phase[..n - 4]);
     bad_phase[n - 4..].copy_from_slice(&crc.to_le_bytes());
     assert!(deserialize(c, &bad_phase).is_err());
     assert!(h.last().contains("bad phase code 5"), "{}", h.last());
     // A PinJoint state is refused by GUID.
-    let p = h.instantiate_with("pj", FMI2_CO_SIMULATION, &pinjoint::fmu::pin_joint::INFO.guid(), Some("file:///x"), false);
+    let p = h.instantiate_with("pj", FMI2_CO_SIMULATION, &pinjoint_fmu::pin_joint::INFO.guid(), Some("file:///x"), false);
     let mut ps: Fmi2FmuState = null_mut();
     assert_eq!(unsafe { fmi2GetFMUstate(p, &mut ps) }, OK);
     let pbytes = serialize(p, ps);

@@ -3,12 +3,12 @@
 //! defined units, types) and with the physical output dependencies. The committed
 //! modelDescription/PinJointRig.xml is checked by tests/model_description.rs.
 
-use pinjoint::fmi2::variables::{Causality, Kind, Variability};
-use pinjoint::fmi2::xml::model_description;
-use pinjoint::fmu::pin_joint_rig::INFO;
+use fmi_layer::fmi2::variables::{Causality, Kind, Variability};
+use fmi_layer::fmi2::xml::model_description;
+use pinjoint_fmu::pin_joint_rig::INFO;
 use pinjoint::rig::{RigParams, RIG_PARAMS};
 
-fn var(name: &str) -> &'static pinjoint::fmi2::variables::Variable {
+fn var(name: &str) -> &'static fmi_layer::fmi2::variables::Variable {
     &INFO.variables[INFO.index_by_name(name).unwrap_or_else(|| panic!("{name} missing"))]
 }
 
@@ -59,8 +59,8 @@ fn table_is_consistent() {
         assert!(INFO.variables.iter().any(|v| v.unit == Some(u.name)), "unit {} unused", u.name);
     }
     // Neither model's GUID equals the other's; the binary serves both.
-    assert_ne!(INFO.guid(), pinjoint::fmu::pin_joint::INFO.guid());
-    assert_eq!(pinjoint::fmu::registry().len(), 3, "PinJoint, PinJointRig and the PassThrough benchmark baseline");
+    assert_ne!(INFO.guid(), pinjoint_fmu::pin_joint::INFO.guid());
+    assert_eq!(pinjoint_fmu::registry().len(), 3, "PinJoint, PinJointRig and the PassThrough benchmark baseline");
 }
 
 #[test]

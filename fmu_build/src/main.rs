@@ -1,24 +1,27 @@
 //! `cargo run --release -p fmu_build`: builds the shared library (the FMU binary)
-//! and writes one FMU per model of `pinjoint::fmu::registry()` to `target/fmu/`:
+//! and writes one FMU per model of `pinjoint_fmu::registry()` to `target/fmu/`:
 //! `modelDescription.xml`, `binaries/<platform>/<modelIdentifier>.<ext>` and
 //! `documentation/index.html`. Packaging only: the XML and the documentation come
 //! from the library's variable tables.
 
-use pinjoint::fmi2::variables::ModelInfo;
-use pinjoint::fmi2::xml::model_description;
+use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::fmi2::xml::model_description;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 use zip::write::SimpleFileOptions;
 use zip::{CompressionMethod, DateTime, ZipWriter};
 
+/// The crate whose cdylib is the FMU binary.
+const FMU_PACKAGE: &str = "pinjoint-fmu";
+
 /// FMI 2.0 platform folder and shared-library names for this host.
 fn platform() -> Result<(&'static str, &'static str, &'static str), String> {
     match (std::env::consts::OS, std::env::consts::ARCH) {
-        ("linux", "x86_64") => Ok(("linux64", "libpinjoint.so", "so")),
-        ("linux", "x86") => Ok(("linux32", "libpinjoint.so", "so")),
-        ("macos", "x86_64" | "aarch64") => Ok(("darwin64", "libpinjoint.dylib", "dylib")),
-        ("windows", "x86_64") => Ok(("win64", "pinjoint.dll", "dll")),
+        ("linux", "x86_64") => Ok(("linux64", "libpinjoint_fmu.so", "so")),
+        ("linux", "x86") => Ok(("linux32", "libpinjoint_fmu.so", "so")),
+        ("macos", "x86_64" | "aarch64") => Ok(("darwin64", "libpinjoint_fmu.dylib", "dylib")),
+        ("windows", "x86_64") => Ok(("win64", "pinjoint_fmu.dll", "dll")),
         (os, arch) => Err(format!("no FMI 2.0 platform folder for {os}/{arch}")),
     }
 }
@@ -51,9 +54,9 @@ fn run() -> Result<(), String> {
     let target = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).unwrap_or_else(|| root.join("target"));
     let target = if target.is_relative() { root.join(target) } else { target };
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    eprintln!("fmu_build: cargo build --release --lib -p pinjoint");
+    eprintln!("fmu_build: cargo build --release --lib -p {FMU_PACKAGE}");
     let status = Command::new(&cargo)
-        .args(["build", "--release", "--lib", "-p", "pinjoint"])
+        .args(["build", "--release", "--lib", "-p", FMU_PACKAGE])
         .current_dir(&root)
         .env("CARGO_TARGET_DIR", &target)
         .status()
@@ -65,7 +68,7 @@ fn run() -> Result<(), String> {
     let library = target.join("release").join(lib_name);
     let out_dir = target.join("fmu");
     std::fs::create_dir_all(&out_dir).map_err(|e| format!("creating {}: {e}", out_dir.display()))?;
-    for info in pinjoint::fmu::registry() {
+    for info in pinjoint_fmu::registry() {
         let path = package(info, &library, &out_dir, folder, ext)?;
         println!("{}", path.display());
     }

@@ -10,7 +10,7 @@
 //!   ranges, plus NaN/±Inf/subnormals), a load, an angular velocity and a warm-start
 //!   guess → `Params::validate`, `Joint::new`, `Joint::evaluate`, `evaluate_from`.
 //! - [`fmi`]: bytes → a program of FMI 2.0 calls on up to four instances of the
-//!   models in `pinjoint::fmu::registry()`, through the exported `fmi2*` functions,
+//!   models in `pinjoint_fmu::registry()`, through the exported `fmi2*` functions,
 //!   with random value references and values, step points and sizes, FMU states and
 //!   serialized states (valid, damaged, damaged with a repaired checksum, random).
 
@@ -335,12 +335,13 @@ pub mod fmi {
     //! would through the shared library) and checks what the standard promises.
 
     use super::{value, Input, SPECIAL};
-    use pinjoint::fmi2::api::cosim::*;
-    use pinjoint::fmi2::api::common::*;
-    use pinjoint::fmi2::api::model_exchange::*;
-    use pinjoint::fmi2::bytes::crc32;
-    use pinjoint::fmi2::types::*;
-    use pinjoint::fmi2::variables::{Causality, Kind, ModelInfo, Variable};
+    use fmi_layer::fmi2::api::cosim::*;
+    use fmi_layer::fmi2::api::common::*;
+    use pinjoint_fmu::fmi2Instantiate;
+    use fmi_layer::fmi2::api::model_exchange::*;
+    use fmi_layer::fmi2::bytes::crc32;
+    use fmi_layer::fmi2::types::*;
+    use fmi_layer::fmi2::variables::{Causality, Kind, ModelInfo, Variable};
     use std::ffi::{c_char, CStr};
     use std::ptr::{null, null_mut};
 
@@ -429,7 +430,7 @@ pub mod fmi {
                     component_environment: env,
                 })
             };
-            let models = pinjoint::fmu::registry();
+            let models = pinjoint_fmu::registry();
             let guids = models.iter().map(|m| std::ffi::CString::new(m.guid()).unwrap()).collect();
             Host {
                 callbacks: cb(Some(logger())),

@@ -2,8 +2,9 @@
 //! directly and records every logger message.
 #![allow(dead_code)]
 
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::types::*;
+use fmi_layer::fmi2::api::common::*;
+use pinjoint_fmu::fmi2Instantiate;
+use fmi_layer::fmi2::types::*;
 use std::ffi::{c_char, CStr, CString};
 use std::sync::Mutex;
 
@@ -110,11 +111,11 @@ impl Host {
 }
 
 pub fn guid() -> String {
-    pinjoint::fmu::pin_joint::INFO.guid()
+    pinjoint_fmu::pin_joint::INFO.guid()
 }
 
 pub fn vr(name: &str) -> u32 {
-    let info = &*pinjoint::fmu::pin_joint::INFO;
+    let info = &*pinjoint_fmu::pin_joint::INFO;
     info.variables[info.index_by_name(name).unwrap_or_else(|| panic!("no variable {name}"))].value_reference
 }
 

@@ -1,10 +1,10 @@
 //! The FMU the importer tests load: `$<env_var>` when set (tests/python/run.sh points it at
 //! target/fmu/…), else the cdylib of this very build packaged as an FMU. That cdylib is
-//! target/<profile>/deps/libpinjoint.so, beside the test executable; `cargo test` does not
+//! target/<profile>/deps/libpinjoint_fmu.so, beside the test executable; `cargo test` does not
 //! refresh the copy in target/<profile>/, which may be stale.
 
-use pinjoint::fmi2::variables::ModelInfo;
-use pinjoint::fmi2::xml::model_description;
+use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::fmi2::xml::model_description;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -13,7 +13,7 @@ pub fn fmu_path(env_var: &str, info: &ModelInfo, tag: &str) -> PathBuf {
         return PathBuf::from(p);
     }
     let exe = std::env::current_exe().unwrap();
-    let lib = exe.parent().unwrap().join("libpinjoint.so");
+    let lib = exe.parent().unwrap().join("libpinjoint_fmu.so");
     assert!(lib.is_file(), "{} not found (the cdylib of this build)", lib.display());
     let path = std::env::temp_dir().join(format!("pinjoint-{tag}-{}.fmu", std::process::id()));
     let mut zip = zip::ZipWriter::new(std::fs::File::create(&path).unwrap());

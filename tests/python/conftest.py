@@ -3,7 +3,7 @@ are in rig_support.py).
 
 The FMU is target/fmu/PinJoint.fmu (or $PINJOINT_FMU), built by
 `cargo run --release -p fmu_build`; the library reference is the example binary
-target/release/examples/reference_points (`cargo build --release --example
+target/release/examples/reference_points (`cargo build --release -p pinjoint --example
 reference_points`). tests/python/run.sh builds both.
 """
 
@@ -71,7 +71,7 @@ def reference(load, omega, params=None):
     """The library's values at each (load, omega) pair, from the Rust example binary.
 
     `params` is a dict of `section.key` -> value written as a TOML parameter file."""
-    assert REFERENCE.is_file(), f"{REFERENCE} is missing: cargo build --release --example reference_points"
+    assert REFERENCE.is_file(), f"{REFERENCE} is missing: cargo build --release -p pinjoint --example reference_points"
     args = [str(REFERENCE)]
     if params:
         sections = {}

@@ -3,7 +3,7 @@ example binary target/release/examples/rig_reference) and a low-level slave.
 
 The FMU is target/fmu/PinJointRig.fmu (or $PINJOINT_RIG_FMU); tests/python/run.sh
 builds it with `cargo run --release -p fmu_build` and the reference with
-`cargo build --release --example rig_reference`."""
+`cargo build --release -p pinjoint --example rig_reference`."""
 
 import os
 import subprocess
@@ -44,7 +44,7 @@ def toml_text(params):
 def rig_reference(time, load, command=None, params=None):
     """The rig library driven like the FMU: at each row the inputs held over the step
     that ends there (fmpy records exactly those), full precision."""
-    assert RIG_REFERENCE.is_file(), f"{RIG_REFERENCE} is missing: cargo build --release --example rig_reference"
+    assert RIG_REFERENCE.is_file(), f"{RIG_REFERENCE} is missing: cargo build --release -p pinjoint --example rig_reference"
     args = [str(RIG_REFERENCE)]
     if params:
         path = Path(os.environ.get("TMPDIR", "/tmp")) / f"pinjoint-rig-params-{os.getpid()}.toml"

@@ -20,7 +20,7 @@ if [[ -z "${PINJOINT_SKIP_APT:-}" ]] && { ! ls /usr/lib/llvm-*/lib/libclang*.so*
 fi
 
 cargo run --release -q -p fmu_build
-cargo build --release -q --example reference_points --example rig_reference
+cargo build --release -q -p pinjoint --example reference_points --example rig_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"
 if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy" 2>/dev/null; then
@@ -31,4 +31,4 @@ fi
 export PINJOINT_FMU="$ROOT/target/fmu/PinJoint.fmu"
 export PINJOINT_RIG_FMU="$ROOT/target/fmu/PinJointRig.fmu"
 "$VENV/bin/python" -m pytest -q tests/python "$@"
-cargo test --release -q --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse
+cargo test --release -q -p pinjoint-fmu --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse

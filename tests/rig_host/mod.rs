@@ -7,11 +7,11 @@
 mod common;
 pub use common::Host;
 
-use pinjoint::fmi2::api::common::*;
-use pinjoint::fmi2::api::cosim::fmi2DoStep;
-use pinjoint::fmi2::types::*;
-use pinjoint::fmi2::variables::Kind;
-use pinjoint::fmu::pin_joint_rig::INFO;
+use fmi_layer::fmi2::api::common::*;
+use fmi_layer::fmi2::api::cosim::fmi2DoStep;
+use fmi_layer::fmi2::types::*;
+use fmi_layer::fmi2::variables::Kind;
+use pinjoint_fmu::pin_joint_rig::INFO;
 
 pub const OK: i32 = 0;
 pub const ERROR: i32 = 3;

@@ -1,0 +1,105 @@
+//! `pinjoint-bench --output DIR`: the work-precision report of issue 6, measured in one run on
+//! this machine: `DIR/BENCHMARKS.md` with SVG plots beside it.
+
+use super::bench_eval::{self, EvalResult};
+use super::bench_report::{write_report, FmuSection, Report};
+use super::bench_rig::{self, RigResult};
+use pinjoint_cli::error::{CliError, Result};
+use pinjoint_cli::output::{output_dir, report_written};
+use clap::Parser;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+#[derive(Parser, Debug)]
+#[command(
+    about = "Measure speed against error (per evaluation, per rig cycle run, per FMU step) into DIR/BENCHMARKS.md",
+    long_about = "Measure, in one run on this machine, and write DIR/BENCHMARKS.md with SVG plots beside it:\n  \
+per evaluation: ns against the largest relative error in μ and torque for full (cold, warm), table at \
+several tolerances and boundary, over two envelopes spanning the regimes;\n  \
+per cycle simulation: wall time of 10 strokes of the 1 Hz rig at 20 kN against the torque error versus a \
+Dop853 1e-12 reference, for Dopri5/Dop853 over tolerances, RK4 over steps, the regularised formulation, \
+fewer output samples and the table fidelity;\n  \
+per FMU step through fmpy: set inputs + doStep + get outputs per fidelity as a ratio to the PassThrough \
+FMU in the same loop (needs target/fmu/*.fmu from `cargo run --release -p fmu_build` and a Python with \
+fmpy, by default .venv/bin/python; without them the report says so).\n\
+Timings are never asserted; the machine's load shows in them (fastest and median repeats are given).\n\n\
+Examples:\n  pinjoint-bench --output .\n  pinjoint-bench --output /tmp/b --quick"
+)]
+pub struct BenchCmd {
+    /// Output directory (BENCHMARKS.md and bench_*.svg)
+    #[arg(long, value_name = "DIR")]
+    pub output: PathBuf,
+    /// A few cases, few repetitions: every file, no meaningful figures (for a smoke test)
+    #[arg(long)]
+    pub quick: bool,
+    /// Directory holding PinJoint.fmu and PassThrough.fmu
+    #[arg(long, value_name = "DIR", default_value = "target/fmu")]
+    pub fmu_dir: PathBuf,
+    /// Python interpreter with fmpy
+    #[arg(long, value_name = "FILE", default_value = ".venv/bin/python")]
+    pub python: PathBuf,
+    /// Skip the FMU section
+    #[arg(long)]
+    pub no_fmu: bool,
+}
+
+fn progress(what: &str) {
+    eprintln!("bench: {what}");
+}
+
+/// The fmpy loop script: in the working directory, else in the source tree this was built from.
+fn script() -> Option<PathBuf> {
+    [Path::new("benches/fmu_step.py").to_path_buf(), Path::new(env!("CARGO_MANIFEST_DIR")).join("../../benches/fmu_step.py")]
+        .into_iter()
+        .find(|p| p.is_file())
+}
+
+fn fmu_section(cmd: &BenchCmd) -> FmuSection {
+    if cmd.no_fmu {
+        return FmuSection::Unavailable("skipped (--no-fmu)".into());
+    }
+    let (pin, pass) = (cmd.fmu_dir.join("PinJoint.fmu"), cmd.fmu_dir.join("PassThrough.fmu"));
+    for f in [&pin, &pass] {
+        if !f.is_file() {
+            return FmuSection::Unavailable(format!("{} not found: run `cargo run --release -p fmu_build` first", f.display()));
+        }
+    }
+    if !cmd.python.is_file() {
+        return FmuSection::Unavailable(format!(
+            "no Python at {}: create it with `python3 -m venv .venv && .venv/bin/pip install -r requirements-test.txt`",
+            cmd.python.display()
+        ));
+    }
+    let Some(script) = script() else { return FmuSection::Unavailable("benches/fmu_step.py not found".into()) };
+    let (steps, reps) = if cmd.quick { ("500", "1") } else { ("20000", "7") };
+    progress("per FMU step (fmpy)");
+    let out = Command::new(&cmd.python).arg(&script).arg(&pin).arg(&pass).args(["--steps", steps, "--repeats", reps]).output();
+    match out {
+        Err(e) => FmuSection::Unavailable(format!("running {}: {e}", cmd.python.display())),
+        Ok(o) if !o.status.success() => {
+            FmuSection::Unavailable(format!("{} failed: {}", script.display(), String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("")))
+        }
+        Ok(o) => match serde_json::from_slice(&o.stdout) {
+            Ok(v) => FmuSection::Measured(v),
+            Err(e) => FmuSection::Unavailable(format!("unreadable output of {}: {e}", script.display())),
+        },
+    }
+}
+
+pub fn run(cmd: &BenchCmd) -> Result<()> {
+    let started = Instant::now();
+    let dir = output_dir(&cmd.output)?;
+    let eval: Vec<EvalResult> = bench_eval::measure(cmd.quick, &progress);
+    progress("per cycle simulation: reference run");
+    let reference = bench_rig::reference(cmd.quick)?;
+    let reps = if cmd.quick { 1 } else { 5 };
+    let rig: Vec<RigResult> = bench_rig::measure(&bench_rig::cases(cmd.quick), &reference, reps, &|l| progress(&format!("rig: {l}")));
+    let fmu = fmu_section(cmd);
+    let report = Report { quick: cmd.quick, eval, rig, fmu, seconds: started.elapsed().as_secs_f64() };
+    let paths = write_report(&dir, &report)?;
+    if paths.is_empty() {
+        return Err(CliError::Invalid("bench: nothing written".into()));
+    }
+    report_written(&paths)
+}

@@ -1,0 +1,116 @@
+//! `pinjoint-bench`, per evaluation: ns per call against the largest relative error in μ and
+//! torque for `full` (cold, warm), `table` at several tolerances and `boundary`.
+//!
+//! Timing points: a Lissajous path through the envelope in (ln P, ln |ω|), consecutive points
+//! close as in a time-stepping host (so the warm start has a neighbour), crossing the regimes;
+//! the time is the median over repetitions of the whole path. Errors: against the cold full
+//! solve on the path and on random points of the envelope (a seed of this module, not used by
+//! the tests).
+
+use pinjoint::fidelity::check::CheckRng;
+use pinjoint::fidelity::{Envelope, ErrorReport, Evaluator, Fidelity};
+use pinjoint::{Joint, Params};
+use std::hint::black_box;
+use std::time::Instant;
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct EvalResult {
+    pub envelope: &'static str,
+    pub label: String,
+    /// Median ns per evaluation along the path.
+    pub ns: f64,
+    pub mu_error: f64,
+    pub torque_error: f64,
+    /// The level's advertised bound (None for cold/warm full: the solver's own).
+    pub bound: Option<f64>,
+    /// Build time (s), cells and size of a table.
+    pub build_seconds: f64,
+    pub cells: Option<(usize, usize, usize)>,
+}
+
+pub fn envelopes() -> [(&'static str, Envelope); 2] {
+    [
+        ("rig: 5-60 kN, 0.01-10 rad/s", Envelope::new(5e3, 60e3, 0.01, 10.0).expect("valid")),
+        ("wide: 5-60 kN, 0.01-100 rad/s", Envelope::new(5e3, 60e3, 0.01, 100.0).expect("valid")),
+    ]
+}
+
+fn path(env: &Envelope, n: usize) -> Vec<(f64, f64)> {
+    (0..n)
+        .map(|k| {
+            let s = k as f64 / n as f64 * std::f64::consts::TAU;
+            let (p, w) = env.at_log_fraction(0.5 + 0.5 * (3.0 * s).sin(), 0.5 - 0.5 * (7.0 * s).cos());
+            (p, if (7.0 * s).sin() >= 0.0 { w } else { -w })
+        })
+        .collect()
+}
+
+fn ns_per_eval(mut f: impl FnMut(f64, f64) -> f64, pts: &[(f64, f64)], reps: usize) -> f64 {
+    let mut v: Vec<f64> = (0..reps)
+        .map(|_| {
+            let t = Instant::now();
+            let mut acc = 0.0;
+            for &(p, w) in pts {
+                acc += f(black_box(p), black_box(w));
+            }
+            black_box(acc);
+            t.elapsed().as_secs_f64() * 1e9 / pts.len() as f64
+        })
+        .collect();
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn errors(ev: &mut Evaluator, j: &Joint, pts: &[(f64, f64)], random: usize) -> ErrorReport {
+    let env = *ev.envelope();
+    let mut rng = CheckRng::new(0x6265_6e63_6802);
+    let rand = (0..random).map(|_| env.at_log_fraction(rng.uniform(), rng.uniform()));
+    let mut r = ErrorReport::default();
+    for (p, w) in pts.iter().copied().chain(rand) {
+        r.add(&ev.evaluate(p, w).expect("inside the model's range"), &j.evaluate(p, w).expect("inside the model's range"));
+    }
+    r
+}
+
+/// Measure every level over both envelopes. `quick`: fewer points and repetitions.
+pub fn measure(quick: bool, progress: &dyn Fn(&str)) -> Vec<EvalResult> {
+    let params = Params::default();
+    let j = Joint::new(&params).expect("default parameters are valid");
+    let (n, reps, random) = if quick { (256, 3, 500) } else { (1024, 21, 20_000) };
+    let tolerances: &[f64] = if quick { &[1e-3] } else { &[1e-2, 1e-3, 1e-4, 1e-5] };
+    let mut out = Vec::new();
+    for (name, env) in envelopes() {
+        let pts = path(&env, n);
+        progress(&format!("per evaluation, {name}"));
+        let row = |label: String, ns: f64, r: &ErrorReport, bound: Option<f64>, build: f64, cells| EvalResult {
+            envelope: name,
+            label,
+            ns,
+            mu_error: r.friction_coefficient,
+            torque_error: r.torque,
+            bound,
+            build_seconds: build,
+            cells,
+        };
+        let cold = ns_per_eval(|p, w| j.evaluate(p, w).map_or(f64::NAN, |o| o.torque), &pts, reps);
+        out.push(row("full, cold".into(), cold, &ErrorReport::default(), None, 0.0, None));
+        let mut full = Evaluator::new(&params, Fidelity::Full, 1e-4, env).expect("valid");
+        let r = errors(&mut full, &j, &pts, random);
+        let ns = ns_per_eval(|p, w| full.evaluate(p, w).map_or(f64::NAN, |e| e.torque), &pts, reps);
+        out.push(row("full, warm".into(), ns, &r, None, 0.0, None));
+        for &tol in tolerances {
+            let t0 = Instant::now();
+            let Ok(mut ev) = Evaluator::new(&params, Fidelity::Table, tol, env) else { continue };
+            let build = t0.elapsed().as_secs_f64();
+            let cells = ev.table().map(|t| (t.stats().load_cells, t.stats().speed_cells, t.size_bytes()));
+            let r = errors(&mut ev, &j, &pts, random);
+            let ns = ns_per_eval(|p, w| ev.evaluate(p, w).map_or(f64::NAN, |e| e.torque), &pts, reps);
+            out.push(row(format!("table {tol:.0e}"), ns, &r, Some(ev.error_bound()), build, cells));
+        }
+        let mut b = Evaluator::new(&params, Fidelity::Boundary, 1e-4, env).expect("valid");
+        let r = errors(&mut b, &j, &pts, random);
+        let ns = ns_per_eval(|p, w| b.evaluate(p, w).map_or(f64::NAN, |e| e.torque), &pts, reps);
+        out.push(row("boundary".into(), ns, &r, Some(b.error_bound()), 0.0, None));
+    }
+    out
+}

@@ -1,0 +1,23 @@
+//! `pinjoint-bench`: the developer's benchmark tool (speed against error, measured in one
+//! run). It is not part of the user's `pinjoint` binary: it shells out to Python (fmpy) for
+//! the FMU section. Run it with `cargo run --release -p pinjoint-bench -- --output .`.
+
+mod bench;
+mod bench_eval;
+mod bench_report;
+mod bench_rig;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let cmd = bench::BenchCmd::parse();
+    match bench::run(&cmd) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,175 @@
+//! `pinjoint map`: the paper's Figure 4 — λ and μ over load and speed — as CSV and SVG,
+//! with the rig experiments' operating region marked.
+
+use super::common::{lin_space, log_space, positive, rig_peak_speed, ParamsArg, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
+use super::error::{CliError, Result};
+use super::output::{output_dir, report_written, write_atomic, write_text};
+use super::stribeck::{curve, points_csv};
+use clap::Args;
+use crate::plot::{heat_map, stacked_plot, Axis, Chart, Corner, HeatMap, Region, Series};
+use pinjoint::{Joint, OperatingPoint};
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+
+#[derive(Args, Debug)]
+#[command(
+    about = "Maps of λ and μ over load and speed (the paper's Figure 4), as CSV and SVG",
+    long_about = "Evaluate the model over a grid of loads (evenly spaced) and speeds (log-spaced) and \
+write the paper's Figure 4:\n  \
+DIR/map.csv           every grid point: load [N], speed [rad/s], speed_rpm, then the result columns of `sweep`\n  \
+DIR/map_lambda.svg    (a) lambda ratio, colour map with contour lines\n  \
+DIR/map_friction.svg  (b) friction coefficient, colour map with contour lines\n  \
+DIR/map_curves.svg    μ and λ against speed at the paper's loads 5, 10, 20, 40 and 60 kN\n\
+The plots mark the rig experiments' operating region: 5-60 kN and speeds up to the peak of the \
+fastest stroke (1 Hz, ±40°: 2π·1 Hz·40° = 4.39 rad/s = 41.9 rpm); the strokes pass through \
+every lower speed.\n\n\
+Examples:\n  \
+pinjoint map --output out/fig4\n  \
+pinjoint map --min-rpm 0.1 --max-rpm 5000 --speeds 150 --output out/wide"
+)]
+pub struct MapCmd {
+    /// Lowest load, in N
+    #[arg(long, value_name = "N", default_value_t = 5e3, allow_negative_numbers = true)]
+    pub min_load: f64,
+    /// Highest load, in N
+    #[arg(long, value_name = "N", default_value_t = 60e3, allow_negative_numbers = true)]
+    pub max_load: f64,
+    /// Number of loads, evenly spaced (>= 2)
+    #[arg(long, value_name = "COUNT", default_value_t = 56)]
+    pub loads: usize,
+    /// Lowest speed, in rpm (1 rpm = 2π/60 rad/s)
+    #[arg(long, value_name = "RPM", default_value_t = 1.0, allow_negative_numbers = true)]
+    pub min_rpm: f64,
+    /// Highest speed, in rpm
+    #[arg(long, value_name = "RPM", default_value_t = 800.0, allow_negative_numbers = true)]
+    pub max_rpm: f64,
+    /// Number of speeds, log-spaced (>= 2)
+    #[arg(long, value_name = "COUNT", default_value_t = 100)]
+    pub speeds: usize,
+    #[command(flatten)]
+    pub params: ParamsArg,
+    /// Output directory (created if needed)
+    #[arg(long, value_name = "DIR")]
+    pub output: PathBuf,
+}
+
+/// The loads of the paper's Table 1, in N: one curve each in map_curves.svg.
+pub const PAPER_LOADS: [f64; 5] = [5e3, 10e3, 20e3, 40e3, 60e3];
+
+/// The map grid: loads (N) and speeds (rad/s).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    pub loads: Vec<f64>,
+    pub speeds: Vec<f64>,
+}
+
+/// Every grid point, load-major (all speeds of the first load, then the next load ...).
+pub fn evaluate(joint: &Joint, g: &Grid) -> Result<Vec<OperatingPoint>> {
+    let pts: Vec<(f64, f64)> = g.loads.iter().flat_map(|&p| g.speeds.iter().map(move |&w| (p, w))).collect();
+    pts.par_iter().map(|&(p, w)| joint.evaluate(p, w).map_err(CliError::from)).collect()
+}
+
+fn rpm(w: f64) -> f64 {
+    w / RAD_S_PER_RPM
+}
+
+/// The rig experiments' region on the (rpm, kN) axes, clipped to the grid.
+fn rig_region(g: &Grid) -> Option<Region> {
+    let x0 = rpm(g.speeds[0]);
+    let x1 = rpm(rig_peak_speed()).min(rpm(*g.speeds.last()?));
+    let y0 = (RIG_LOAD_RANGE_N.0 / 1e3).max(g.loads[0] / 1e3);
+    let y1 = (RIG_LOAD_RANGE_N.1 / 1e3).min(g.loads.last()? / 1e3);
+    (x0 < x1 && y0 < y1).then(|| Region {
+        x: (x0, x1),
+        y: (y0, y1),
+        label: "rig experiments: 5-60 kN, up to 41.9 rpm (1 Hz, ±40°)".into(),
+    })
+}
+
+/// One heat map of `f` over the grid.
+fn map_plot(g: &Grid, ops: &[OperatingPoint], title: &str, z_axis: Axis, levels: &[f64], f: fn(&OperatingPoint) -> f64) -> Result<String> {
+    let n = g.speeds.len();
+    let z: Vec<Vec<f64>> = ops.chunks(n).map(|row| row.iter().map(f).collect()).collect();
+    let (lo, hi) = z.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+    let h = HeatMap {
+        title: title.into(),
+        x: Axis::log("speed [rpm]"),
+        y: Axis::linear("load P_T [kN]"),
+        xs: g.speeds.iter().map(|&w| rpm(w)).collect(),
+        ys: g.loads.iter().map(|&p| p / 1e3).collect(),
+        z,
+        z_axis,
+        contours: levels.iter().copied().filter(|&l| l > lo && l < hi).collect(),
+        regions: rig_region(g).into_iter().collect(),
+    };
+    Ok(heat_map(&h, (960, 640))?)
+}
+
+/// μ and λ against speed at the paper's loads, with the rig's speed range shaded.
+fn curves_plot(joint: &Joint, g: &Grid) -> Result<String> {
+    let (lo, hi) = (rpm(g.speeds[0]), rpm(*g.speeds.last().unwrap_or(&g.speeds[0])));
+    let speeds = log_space(g.speeds[0], *g.speeds.last().unwrap_or(&g.speeds[0]), 200);
+    let x = || Axis::log("speed [rpm]");
+    let mut mu = Chart::new("(b) friction coefficient", x(), Axis::linear("μ [-]")).legend(Corner::LowerLeft);
+    let mut lambda = Chart::new("(a) lambda ratio", x(), Axis::log("λ = h_c / √(σ² + σ_b²) [-]")).legend(Corner::UpperLeft);
+    for &p in &PAPER_LOADS {
+        let ops = curve(joint, p, &speeds)?;
+        let name = format!("{} kN", p / 1e3);
+        mu = mu.series(Series::line(&name, ops.iter().map(|o| (rpm(o.angular_velocity), o.friction_coefficient)).collect()));
+        lambda = lambda.series(Series::line(&name, ops.iter().map(|o| (rpm(o.angular_velocity), o.lambda_ratio)).collect()));
+    }
+    let rig_hi = rpm(rig_peak_speed()).min(hi);
+    if lo < rig_hi {
+        mu = mu.band(lo, rig_hi, "rig experiments, up to 41.9 rpm");
+        lambda = lambda.band(lo, rig_hi, "rig experiments, up to 41.9 rpm");
+    }
+    Ok(stacked_plot("Pin joint operation at the paper's loads", &[lambda, mu], (900, 1000))?)
+}
+
+/// Write the CSV and the three plots into `dir`; returns their paths.
+pub fn write_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
+    let ops = evaluate(joint, g)?;
+    let lambda = map_plot(
+        g,
+        &ops,
+        "(a) lambda ratio λ = h_c / √(σ² + σ_b²)",
+        Axis::log("λ [-]"),
+        &[1.5, 2.0, 3.0, 5.0, 10.0, 20.0, 50.0],
+        |o| o.lambda_ratio,
+    )?;
+    let friction = map_plot(
+        g,
+        &ops,
+        "(b) friction coefficient μ",
+        Axis::linear("μ [-]"),
+        &[0.02, 0.05, 0.08, 0.1, 0.11, 0.115],
+        |o| o.friction_coefficient,
+    )?;
+    let curves = curves_plot(joint, g)?;
+    let dir = output_dir(dir)?;
+    let paths: Vec<PathBuf> = ["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"].iter().map(|f| dir.join(f)).collect();
+    write_atomic(&paths[0], |w| points_csv(w, &ops))?;
+    write_text(&paths[1], &lambda)?;
+    write_text(&paths[2], &friction)?;
+    write_text(&paths[3], &curves)?;
+    Ok(paths)
+}
+
+pub fn run(cmd: &MapCmd) -> Result<()> {
+    let joint = cmd.params.joint()?;
+    let (p0, p1) = (positive("min-load", cmd.min_load, "N")?, positive("max-load", cmd.max_load, "N")?);
+    let (n0, n1) = (positive("min-rpm", cmd.min_rpm, "rpm")?, positive("max-rpm", cmd.max_rpm, "rpm")?);
+    if p0 >= p1 {
+        return Err(CliError::Invalid(format!("the load range is empty: min-load {p0} N >= max-load {p1} N")));
+    }
+    if n0 >= n1 {
+        return Err(CliError::Invalid(format!("the speed range is empty: min-rpm {n0} rpm >= max-rpm {n1} rpm")));
+    }
+    for (name, n) in [("loads", cmd.loads), ("speeds", cmd.speeds)] {
+        if n < 2 {
+            return Err(CliError::Invalid(format!("{name} = {n} is invalid: it must be >= 2")));
+        }
+    }
+    let grid = Grid { loads: lin_space(p0, p1, cmd.loads), speeds: log_space(n0 * RAD_S_PER_RPM, n1 * RAD_S_PER_RPM, cmd.speeds) };
+    report_written(&write_map(&cmd.output, &joint, &grid)?)
+}

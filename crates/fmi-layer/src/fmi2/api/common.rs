@@ -1,0 +1,483 @@
+//! The FMI 2.0 functions common to Model Exchange and Co-Simulation.
+
+#![allow(non_snake_case)]
+
+use super::guard::{call, maybe_forced_panic, slice, slice_mut};
+use crate::fmi2::instance::Instance;
+use crate::fmi2::logging::{Category, Logger};
+use crate::fmi2::snapshot::Snapshot;
+use crate::fmi2::state;
+use crate::fmi2::types::*;
+use crate::fmi2::variables::{Kind, ModelInfo};
+use std::ffi::{c_char, c_int, CStr};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::ptr::null_mut;
+
+/// # Safety
+/// `p` is NULL or a NUL-terminated string.
+unsafe fn text(p: *const c_char) -> Option<String> {
+    // SAFETY: per the contract.
+    (!p.is_null()).then(|| unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2GetTypesPlatform() -> *const c_char {
+    TYPES_PLATFORM.as_ptr()
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2GetVersion() -> *const c_char {
+    VERSION.as_ptr()
+}
+
+/// The body of `fmi2Instantiate` for the models of `registry`, found by GUID. The export
+/// itself is written at the root of the model library by [`crate::export_fmi2!`], which
+/// passes the library's registry in: this layer knows no model.
+///
+/// # Safety
+/// Pointers as in the FMI 2.0 standard; NULL is handled everywhere.
+pub unsafe fn instantiate_from(
+    registry: &[&'static ModelInfo],
+    instance_name: Fmi2String,
+    fmu_type: c_int,
+    guid: Fmi2String,
+    resource_location: Fmi2String,
+    functions: *const Fmi2CallbackFunctions,
+    logging_on: Fmi2Boolean,
+) -> Fmi2Component {
+    catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: the host passes NULL or valid pointers.
+        unsafe { instantiate(registry, instance_name, fmu_type, guid, resource_location, functions, logging_on) }
+    }))
+    .unwrap_or(null_mut())
+}
+
+unsafe fn instantiate(
+    models: &[&'static ModelInfo],
+    instance_name: Fmi2String,
+    fmu_type: c_int,
+    guid: Fmi2String,
+    resource_location: Fmi2String,
+    functions: *const Fmi2CallbackFunctions,
+    logging_on: Fmi2Boolean,
+) -> Fmi2Component {
+    if functions.is_null() {
+        return null_mut(); // no logger to say so
+    }
+    // SAFETY: non-NULL, provided by the host.
+    let f = unsafe { &*functions };
+    let Some(cb) = f.logger else {
+        return null_mut();
+    };
+    // SAFETY: strings from the host are NULL or NUL-terminated.
+    let (name, guid, resources) = unsafe { (text(instance_name), text(guid), text(resource_location)) };
+    let shown = name.clone().unwrap_or_else(|| "(NULL)".into());
+    let logger = Logger::new(cb, f.component_environment, &shown, logging_on != FMI2_FALSE);
+    let fail = |msg: String| {
+        logger.log(Status::Error, Category::StatusError, &format!("fmi2Instantiate: {msg}"));
+        null_mut()
+    };
+    maybe_forced_panic("fmi2Instantiate");
+    let name = match name {
+        Some(n) if !n.is_empty() => n,
+        _ => return fail("instanceName must be a non-empty string".into()),
+    };
+    if fmu_type != FMI2_CO_SIMULATION {
+        return fail(format!(
+            "fmuType = {fmu_type} ({}): this FMU implements Co-Simulation (fmuType = 1) only",
+            if fmu_type == FMI2_MODEL_EXCHANGE { "Model Exchange" } else { "not an fmi2Type" }
+        ));
+    }
+    let Some(guid) = guid else {
+        return fail("fmuGUID is NULL".into());
+    };
+    let Some(info) = models.iter().copied().find(|m| m.guid() == guid) else {
+        let known: Vec<String> = models.iter().map(|m| format!("{} {}", m.model_name, m.guid())).collect();
+        return fail(format!(
+            "fmuGUID {guid} matches no model of this binary (known: {}); the modelDescription.xml does not belong to this binary",
+            known.join(", ")
+        ));
+    };
+    // This FMU needs no resources: a missing or unusual location is only a warning.
+    match resources.as_deref() {
+        None | Some("") => logger.log(
+            Status::Warning,
+            Category::StatusWarning,
+            "fmi2Instantiate: fmuResourceLocation is empty; this FMU needs no resources, continuing",
+        ),
+        Some(r) if !looks_like_uri(r) => logger.log(
+            Status::Warning,
+            Category::StatusWarning,
+            &format!("fmi2Instantiate: fmuResourceLocation '{r}' is not a URI (expected e.g. file:///...); this FMU needs no resources, continuing"),
+        ),
+        _ => {}
+    }
+    let inst = Instance::new(info, &name, logger);
+    inst.event(&format!("instantiated {} (GUID {guid})", info.model_name));
+    Box::into_raw(Box::new(inst)) as Fmi2Component
+}
+
+/// RFC 3986: `scheme ":" ...` with scheme = ALPHA *( ALPHA / DIGIT / "+" / "-" / "." ).
+fn looks_like_uri(s: &str) -> bool {
+    match s.split_once(':') {
+        Some((scheme, _)) => {
+            let mut ch = scheme.chars();
+            ch.next().is_some_and(|c| c.is_ascii_alphabetic())
+                && ch.all(|c| c.is_ascii_alphanumeric() || "+-.".contains(c))
+                && scheme.len() > 1 // not a Windows drive letter
+        }
+        None => false,
+    }
+}
+
+/// Frees the instance in any state (the `fatal` one included). NULL is a no-op.
+///
+/// # Safety
+/// `c` is NULL or a component from `fmi2Instantiate` not yet freed.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
+    if c.is_null() {
+        return;
+    }
+    let _ = catch_unwind(AssertUnwindSafe(|| {
+        let ptr = c as *mut Instance;
+        // SAFETY: per the contract; the tag check skips freed or foreign memory.
+        let inst = unsafe { &mut *ptr };
+        if !inst.is_live() {
+            return;
+        }
+        inst.event("freeing the instance");
+        inst.kill();
+        // SAFETY: the pointer came from Box::into_raw in fmi2Instantiate.
+        drop(unsafe { Box::from_raw(ptr) });
+    }));
+}
+
+/// # Safety
+/// `categories` points to `nCategories` strings when `nCategories > 0`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2SetDebugLogging(
+    c: Fmi2Component,
+    loggingOn: Fmi2Boolean,
+    nCategories: usize,
+    categories: *const Fmi2String,
+) -> Fmi2StatusC {
+    call(c, "fmi2SetDebugLogging", state::SET_DEBUG_LOGGING, |inst| {
+        let on = loggingOn != FMI2_FALSE;
+        // SAFETY: per the contract.
+        let cats = unsafe { slice(categories, nCategories, "categories[]") }?;
+        let mut parsed = Vec::with_capacity(cats.len());
+        for &p in cats {
+            // SAFETY: each entry is NULL or a NUL-terminated string.
+            let name = unsafe { text(p) }.ok_or("a category name is NULL")?;
+            let known: Vec<&str> = Category::ALL.iter().map(|c| c.name()).collect();
+            parsed.push(Category::from_name(&name).ok_or_else(|| {
+                format!("unknown log category '{name}' (known: {})", known.join(", "))
+            })?);
+        }
+        if parsed.is_empty() {
+            inst.logger.set_all(on);
+        } else {
+            for cat in parsed {
+                inst.logger.set(cat, on);
+            }
+        }
+        Ok(Status::Ok)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2SetupExperiment(
+    c: Fmi2Component,
+    _toleranceDefined: Fmi2Boolean,
+    _tolerance: Fmi2Real,
+    startTime: Fmi2Real,
+    stopTimeDefined: Fmi2Boolean,
+    stopTime: Fmi2Real,
+) -> Fmi2StatusC {
+    call(c, "fmi2SetupExperiment", state::SETUP_EXPERIMENT, |inst| {
+        inst.setup_experiment(startTime, (stopTimeDefined != FMI2_FALSE).then_some(stopTime))
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2EnterInitializationMode(c: Fmi2Component) -> Fmi2StatusC {
+    call(c, "fmi2EnterInitializationMode", state::ENTER_INITIALIZATION_MODE, |i| i.enter_initialization_mode())
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2ExitInitializationMode(c: Fmi2Component) -> Fmi2StatusC {
+    call(c, "fmi2ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, |i| i.exit_initialization_mode())
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2Terminate(c: Fmi2Component) -> Fmi2StatusC {
+    call(c, "fmi2Terminate", state::TERMINATE, |i| i.terminate())
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2Reset(c: Fmi2Component) -> Fmi2StatusC {
+    call(c, "fmi2Reset", state::RESET, |i| i.reset())
+}
+
+/// # Safety
+/// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2GetReal(
+    c: Fmi2Component,
+    vr: *const Fmi2ValueReference,
+    nvr: usize,
+    value: *mut Fmi2Real,
+) -> Fmi2StatusC {
+    call(c, "fmi2GetReal", state::GET_VALUE, |inst| {
+        // SAFETY: per the contract.
+        let (vrs, vals) = unsafe { (slice(vr, nvr, "vr[]")?, slice_mut(value, nvr, "value[]")?) };
+        inst.get_real(vrs, vals)
+    })
+}
+
+/// # Safety
+/// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2SetReal(
+    c: Fmi2Component,
+    vr: *const Fmi2ValueReference,
+    nvr: usize,
+    value: *const Fmi2Real,
+) -> Fmi2StatusC {
+    call(c, "fmi2SetReal", state::SET_VALUE, |inst| {
+        // SAFETY: per the contract.
+        let (vrs, vals) = unsafe { (slice(vr, nvr, "vr[]")?, slice(value, nvr, "value[]")?) };
+        inst.set_real(vrs, vals)
+    })
+}
+
+macro_rules! no_such_type {
+    ($get:ident, $set:ident, $t:ty, $name:literal) => {
+        /// No model of this layer has variables of this type: every value reference is rejected.
+        ///
+        /// # Safety
+        /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $get(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut $t) -> Fmi2StatusC {
+            call(c, stringify!($get), state::GET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let vrs = unsafe { slice(vr, nvr, "vr[]")? };
+                unsafe { slice_mut(value, nvr, "value[]")? };
+                inst.reject_type($name, vrs)
+            })
+        }
+        /// This layer's models have no variables of this type: every value reference is rejected.
+        ///
+        /// # Safety
+        /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $set(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const $t) -> Fmi2StatusC {
+            call(c, stringify!($set), state::SET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let vrs = unsafe { slice(vr, nvr, "vr[]")? };
+                unsafe { slice(value, nvr, "value[]")? };
+                inst.reject_type($name, vrs)
+            })
+        }
+    };
+}
+
+macro_rules! int_type {
+    ($get:ident, $set:ident, $kind:expr, $from:expr) => {
+        /// Integer-valued variables (the model holds them as f64; see [`Kind`]).
+        ///
+        /// # Safety
+        /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $get(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut c_int) -> Fmi2StatusC {
+            call(c, stringify!($get), state::GET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let (vrs, out) = unsafe { (slice(vr, nvr, "vr[]")?, slice_mut(value, nvr, "value[]")?) };
+                let mut vals = vec![0.0; vrs.len()];
+                let status = inst.get_values($kind, vrs, &mut vals)?;
+                for (o, v) in out.iter_mut().zip(vals) {
+                    *o = v as c_int;
+                }
+                Ok(status)
+            })
+        }
+        /// Integer-valued variables (the model holds them as f64; see [`Kind`]).
+        ///
+        /// # Safety
+        /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $set(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const c_int) -> Fmi2StatusC {
+            call(c, stringify!($set), state::SET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let (vrs, vals) = unsafe { (slice(vr, nvr, "vr[]")?, slice(value, nvr, "value[]")?) };
+                let from: fn(c_int) -> f64 = $from;
+                let vals: Vec<f64> = vals.iter().map(|&v| from(v)).collect();
+                inst.set_values($kind, vrs, &vals)
+            })
+        }
+    };
+}
+
+int_type!(fmi2GetInteger, fmi2SetInteger, Kind::Integer, |v| v as f64);
+// Any non-zero fmi2Boolean is true.
+int_type!(fmi2GetBoolean, fmi2SetBoolean, Kind::Boolean, |v| if v != FMI2_FALSE { 1.0 } else { 0.0 });
+no_such_type!(fmi2GetString, fmi2SetString, Fmi2String, "String");
+
+/// # Safety
+/// `state` is NULL or points to NULL or to an FMU state of this instance's model.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
+    call(c, "fmi2GetFMUstate", state::FMU_STATE, |inst| {
+        if FMUstate.is_null() {
+            return Err("FMUstate is NULL".into());
+        }
+        let snap = inst.snapshot();
+        // SAFETY: non-NULL pointer to the host's slot.
+        let slot = unsafe { &mut *FMUstate };
+        if slot.is_null() {
+            *slot = Box::into_raw(Box::new(snap)) as Fmi2FmuState;
+        } else {
+            // The standard lets the host pass back a state for reuse.
+            // SAFETY: a non-NULL slot holds a state returned by this FMU.
+            let old = unsafe { &mut *(*slot as *mut Snapshot) };
+            if !old.is_live() {
+                return Err("*FMUstate is neither NULL nor an FMU state of this FMU".into());
+            }
+            *old = snap;
+        }
+        inst.event(&format!("FMU state stored at t = {} s ({})", inst.time, inst.state.name()));
+        Ok(Status::Ok)
+    })
+}
+
+/// # Safety
+/// A non-NULL `FMUstate` must be an FMU state returned by this FMU.
+unsafe fn live_state<'a>(s: Fmi2FmuState) -> Result<&'a mut Snapshot, String> {
+    if s.is_null() {
+        return Err("FMUstate is NULL".into());
+    }
+    // SAFETY: per the contract; the tag catches most foreign or freed pointers.
+    let snap = unsafe { &mut *(s as *mut Snapshot) };
+    if !snap.is_live() {
+        return Err("FMUstate is not a live FMU state of this FMU (freed or foreign)".into());
+    }
+    Ok(snap)
+}
+
+/// # Safety
+/// `FMUstate` is NULL or an FMU state returned by this FMU.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, FMUstate: Fmi2FmuState) -> Fmi2StatusC {
+    call(c, "fmi2SetFMUstate", state::FMU_STATE, |inst| {
+        // SAFETY: per the contract.
+        let snap = unsafe { live_state(FMUstate) }?;
+        inst.restore(snap)
+    })
+}
+
+/// # Safety
+/// `FMUstate` is NULL or points to NULL or to an FMU state returned by this FMU.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2FreeFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
+    call(c, "fmi2FreeFMUstate", state::FMU_STATE, |_inst| {
+        // SAFETY: per the contract.
+        if FMUstate.is_null() || unsafe { (*FMUstate).is_null() } {
+            return Ok(Status::Ok); // nothing to free
+        }
+        // SAFETY: per the contract.
+        let snap = unsafe { live_state(*FMUstate) }?;
+        snap.kill();
+        // SAFETY: the state came from Box::into_raw in this module.
+        unsafe {
+            drop(Box::from_raw(*FMUstate as *mut Snapshot));
+            *FMUstate = null_mut();
+        }
+        Ok(Status::Ok)
+    })
+}
+
+/// # Safety
+/// `FMUstate` is an FMU state returned by this FMU; `size` is writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: Fmi2Component, FMUstate: Fmi2FmuState, size: *mut usize) -> Fmi2StatusC {
+    call(c, "fmi2SerializedFMUstateSize", state::FMU_STATE, |_inst| {
+        // SAFETY: per the contract.
+        let snap = unsafe { live_state(FMUstate) }?;
+        if size.is_null() {
+            return Err("size is NULL".into());
+        }
+        // SAFETY: non-NULL.
+        unsafe { *size = snap.encode().len() };
+        Ok(Status::Ok)
+    })
+}
+
+/// # Safety
+/// `serializedState` points to `size` writable bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2SerializeFMUstate(
+    c: Fmi2Component,
+    FMUstate: Fmi2FmuState,
+    serializedState: *mut Fmi2Byte,
+    size: usize,
+) -> Fmi2StatusC {
+    call(c, "fmi2SerializeFMUstate", state::FMU_STATE, |_inst| {
+        // SAFETY: per the contract.
+        let snap = unsafe { live_state(FMUstate) }?;
+        let bytes = snap.encode();
+        if size != bytes.len() {
+            return Err(format!("size = {size} bytes, but this FMU state serializes to {} bytes (see fmi2SerializedFMUstateSize)", bytes.len()));
+        }
+        // SAFETY: per the contract.
+        let out = unsafe { slice_mut(serializedState as *mut u8, size, "serializedState[]") }?;
+        out.copy_from_slice(&bytes);
+        Ok(Status::Ok)
+    })
+}
+
+/// # Safety
+/// `serializedState` points to `size` readable bytes; `FMUstate` is writable and
+/// holds NULL or an FMU state returned by this FMU.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
+    c: Fmi2Component,
+    serializedState: *const Fmi2Byte,
+    size: usize,
+    FMUstate: *mut Fmi2FmuState,
+) -> Fmi2StatusC {
+    call(c, "fmi2DeSerializeFMUstate", state::FMU_STATE, |inst| {
+        if FMUstate.is_null() {
+            return Err("FMUstate is NULL".into());
+        }
+        // SAFETY: per the contract.
+        let bytes = unsafe { slice(serializedState as *const u8, size, "serializedState[]") }?;
+        let snap = inst.decode_state(bytes)?;
+        // SAFETY: non-NULL pointer to the host's slot.
+        let slot = unsafe { &mut *FMUstate };
+        if slot.is_null() {
+            *slot = Box::into_raw(Box::new(snap)) as Fmi2FmuState;
+        } else {
+            // SAFETY: a non-NULL slot holds a state of this FMU.
+            let old = unsafe { live_state(*slot) }.map_err(|e| format!("*{e}"))?;
+            *old = snap;
+        }
+        Ok(Status::Ok)
+    })
+}
+
+/// Not provided (`providesDirectionalDerivative = false`).
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2GetDirectionalDerivative(
+    c: Fmi2Component,
+    _vUnknown_ref: *const Fmi2ValueReference,
+    _nUnknown: usize,
+    _vKnown_ref: *const Fmi2ValueReference,
+    _nKnown: usize,
+    _dvKnown: *const Fmi2Real,
+    _dvUnknown: *mut Fmi2Real,
+) -> Fmi2StatusC {
+    call(c, "fmi2GetDirectionalDerivative", state::GET_DIRECTIONAL_DERIVATIVE, |_| {
+        Err("directional derivatives are not provided (providesDirectionalDerivative = false)".into())
+    })
+}

@@ -1,0 +1,56 @@
+//! A generic FMI 2.0 Co-Simulation layer: C types, the exported `fmi2*` functions,
+//! the standard's state machine (one mask per function), logging by category,
+//! value-reference dispatch, FMU state get/set/serialize, and the
+//! modelDescription.xml generator.
+//!
+//! A model plugs in through the [`model::Model`] trait plus a [`variables::ModelInfo`]
+//! (variable table, units, default experiment). `fmi2Instantiate` finds the model
+//! by GUID among the models the library registers with [`crate::export_fmi2!`], so one
+//! shared library can serve several FMUs, each packaged with its own
+//! modelDescription.xml and a copy of the library named for its model identifier.
+
+pub mod api;
+pub mod bytes;
+pub mod instance;
+pub mod logging;
+pub mod model;
+pub mod snapshot;
+pub mod state;
+pub mod types;
+pub mod variables;
+pub mod xml;
+
+/// Export `fmi2Instantiate` for the models `$registry()` returns (a
+/// `fn() -> Vec<&'static ModelInfo>`), at the root of the model library. Every other
+/// `fmi2*` function is exported by this crate itself; this is the one entry point that
+/// must choose a model, so the registry is passed in here, as rust-fmi's `export_fmu!`
+/// does, and the generic layer never names a model.
+///
+/// ```ignore
+/// fmi_layer::export_fmi2!(crate::registry);
+/// ```
+#[macro_export]
+macro_rules! export_fmi2 {
+    ($registry:path) => {
+        /// `fmi2Instantiate` of the FMI 2.0 standard for the models of this library.
+        ///
+        /// # Safety
+        /// Pointers as in the FMI 2.0 standard; NULL is handled everywhere.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn fmi2Instantiate(
+            instance_name: $crate::fmi2::types::Fmi2String,
+            fmu_type: ::std::ffi::c_int,
+            guid: $crate::fmi2::types::Fmi2String,
+            resource_location: $crate::fmi2::types::Fmi2String,
+            functions: *const $crate::fmi2::types::Fmi2CallbackFunctions,
+            _visible: $crate::fmi2::types::Fmi2Boolean,
+            logging_on: $crate::fmi2::types::Fmi2Boolean,
+        ) -> $crate::fmi2::types::Fmi2Component {
+            let models = $registry();
+            // SAFETY: forwarded from the host under the same contract.
+            unsafe {
+                $crate::fmi2::api::common::instantiate_from(&models, instance_name, fmu_type, guid, resource_location, functions, logging_on)
+            }
+        }
+    };
+}

@@ -1,0 +1,281 @@
+//! The PinJoint variable table: the single source of the modelDescription.xml and
+//! of the get/set dispatch. Layout (table index → value reference):
+//!
+//! | index | value references | variables |
+//! |---|---|---|
+//! | 0–2 | 1–3 | inputs `angle`, `angular_velocity`, `load` |
+//! | 3–12 | 10–19 | outputs ([`Output`] order) |
+//! | 13–33 | 100–120 | the 21 parameters of [`pinjoint::params::PARAMS`], `section.key` |
+//! | 34 | 200 | `zero_velocity.speed_band` |
+//! | 35 | 300 | `fidelity` (Integer: 0 full, 1 table, 2 boundary, 3 auto) |
+//! | 36–40 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
+
+use super::zero_speed::DEFAULT_SPEED_BAND;
+use fmi_layer::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
+use pinjoint::params::{ParamSpec, PARAMS};
+
+pub const ANGLE: usize = 0;
+pub const ANGULAR_VELOCITY: usize = 1;
+pub const LOAD: usize = 2;
+pub const FIRST_OUTPUT: usize = 3;
+pub const FIRST_PARAM: usize = FIRST_OUTPUT + Output::ALL.len();
+pub const SPEED_BAND: usize = FIRST_PARAM + PARAMS.len();
+pub const FIDELITY: usize = SPEED_BAND + 1;
+pub const TOLERANCE: usize = FIDELITY + 1;
+pub const ENVELOPE_LOAD_MIN: usize = TOLERANCE + 1;
+pub const ENVELOPE_LOAD_MAX: usize = TOLERANCE + 2;
+pub const ENVELOPE_SPEED_MIN: usize = TOLERANCE + 3;
+pub const ENVELOPE_SPEED_MAX: usize = TOLERANCE + 4;
+pub const COUNT: usize = ENVELOPE_SPEED_MAX + 1;
+
+/// Start values of the fidelity parameters: full solve; tolerance 1e-4; the paper's rig
+/// envelope 5–60 kN, 0.01–10 rad/s.
+pub const DEFAULT_FIDELITY: i32 = 0;
+pub const DEFAULT_TOLERANCE: f64 = 1e-4;
+pub const DEFAULT_ENVELOPE: [f64; 4] = [5e3, 60e3, 0.01, 10.0];
+
+/// The fidelity level of an Integer code of the `fidelity` parameter.
+pub fn fidelity_of_code(code: i32) -> Option<pinjoint::fidelity::Fidelity> {
+    use pinjoint::fidelity::Fidelity::*;
+    [Full, Table, Boundary, Auto].get(usize::try_from(code).ok()?).copied()
+}
+
+/// Start value of the `load` input (N): the paper's reference load of 20 kN.
+pub const DEFAULT_LOAD: f64 = 20e3;
+
+/// The outputs, in table order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    Torque,
+    FrictionCoefficient,
+    FilmThickness,
+    LambdaRatio,
+    FluidLoadFraction,
+    AsperityLoadFraction,
+    MeanPressure,
+    SommerfeldNumber,
+    PowerLoss,
+    DissipatedEnergy,
+}
+
+impl Output {
+    pub const ALL: [Output; 10] = [
+        Output::Torque,
+        Output::FrictionCoefficient,
+        Output::FilmThickness,
+        Output::LambdaRatio,
+        Output::FluidLoadFraction,
+        Output::AsperityLoadFraction,
+        Output::MeanPressure,
+        Output::SommerfeldNumber,
+        Output::PowerLoss,
+        Output::DissipatedEnergy,
+    ];
+}
+
+const DEG: f64 = 57.29577951308232; // 180/π
+const RPM: f64 = 9.549296585513721; // 60/(2π)
+
+/// Every unit used by a PinJoint variable, with its SI base units and display units.
+pub static UNITS: &[UnitDef] = &[
+    UnitDef { name: "rad", kg: 0, m: 0, s: 0, rad: 1, display: &[DisplayUnit { name: "deg", factor: DEG, offset: 0.0 }] },
+    UnitDef {
+        name: "rad/s",
+        kg: 0,
+        m: 0,
+        s: -1,
+        rad: 1,
+        display: &[DisplayUnit { name: "deg/s", factor: DEG, offset: 0.0 }, DisplayUnit { name: "rpm", factor: RPM, offset: 0.0 }],
+    },
+    UnitDef { name: "N", kg: 1, m: 1, s: -2, rad: 0, display: &[DisplayUnit { name: "kN", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "N.m", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kN.m", factor: 1e-3, offset: 0.0 }] },
+    UnitDef {
+        name: "m",
+        kg: 0,
+        m: 1,
+        s: 0,
+        rad: 0,
+        display: &[DisplayUnit { name: "mm", factor: 1e3, offset: 0.0 }, DisplayUnit { name: "µm", factor: 1e6, offset: 0.0 }],
+    },
+    UnitDef {
+        name: "Pa",
+        kg: 1,
+        m: -1,
+        s: -2,
+        rad: 0,
+        display: &[DisplayUnit { name: "MPa", factor: 1e-6, offset: 0.0 }, DisplayUnit { name: "GPa", factor: 1e-9, offset: 0.0 }],
+    },
+    UnitDef { name: "Pa.s", kg: 1, m: -1, s: -1, rad: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
+    UnitDef { name: "1/Pa", kg: -1, m: 1, s: 2, rad: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
+    UnitDef { name: "1/m2", kg: 0, m: -2, s: 0, rad: 0, display: &[] },
+    UnitDef { name: "W", kg: 1, m: 2, s: -3, rad: 0, display: &[] },
+    UnitDef { name: "J", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
+];
+
+fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>, start: f64, min: Option<f64>, d: &str) -> Variable {
+    Variable {
+        name: name.into(),
+        kind: Kind::Real,
+        value_reference: vr,
+        causality: Causality::Input,
+        variability: Variability::Continuous,
+        initial: Initial::Exact,
+        unit: Some(unit),
+        display_unit: display,
+        start: Some(start),
+        min,
+        max: None,
+        description: d.into(),
+        depends_on: vec![],
+    }
+}
+
+/// (name, unit, display unit, min, max, inputs it depends on, description) of an output.
+type OutputRow = (&'static str, Option<&'static str>, Option<&'static str>, Option<f64>, Option<f64>, &'static [&'static str], &'static str);
+
+fn output(o: Output) -> Variable {
+    const SPEED_LOAD: [&str; 2] = ["angular_velocity", "load"];
+    let (name, unit, display, min, max, deps, d): OutputRow = match o {
+        Output::Torque => ("torque", Some("N.m"), None, None, None, &SPEED_LOAD,
+            "Friction torque on the pin, opposite to the angular velocity: -sign(omega) mu R P_T (eq. 11); linear in omega inside the zero-velocity band"),
+        Output::FrictionCoefficient => ("friction_coefficient", None, None, Some(0.0), None, &SPEED_LOAD,
+            "Friction coefficient mu = (Q_H + Q_C)/P_T (eq. 10) at the input speed and load"),
+        Output::FilmThickness => ("film_thickness", Some("m"), Some("µm"), Some(0.0), None, &SPEED_LOAD,
+            "Central film thickness h_c from the load-sharing solve (eqs. 9, 13, 19)"),
+        Output::LambdaRatio => ("lambda_ratio", None, None, Some(0.0), None, &SPEED_LOAD,
+            "Lambda ratio h_c/sqrt(sigma^2 + sigma_b^2) (eq. 21, evaluated with the central film h_c)"),
+        Output::FluidLoadFraction => ("fluid_load_fraction", None, None, Some(0.0), Some(1.0), &SPEED_LOAD,
+            "Share of the load carried by the fluid film, 1/gamma_1 (eq. 9)"),
+        Output::AsperityLoadFraction => ("asperity_load_fraction", None, None, Some(0.0), Some(1.0), &SPEED_LOAD,
+            "Share of the load carried by the asperities, 1/gamma_2 (eq. 9)"),
+        Output::MeanPressure => ("mean_pressure", Some("Pa"), Some("MPa"), Some(0.0), None, &["load"],
+            "Hertz mean contact pressure p_m = P_T/(2aB) (eq. 6)"),
+        Output::SommerfeldNumber => ("sommerfeld_number", None, None, Some(0.0), None, &SPEED_LOAD,
+            "Sommerfeld number S = eta_0 |omega| /(2 pi P_L) (R/c)^2 with P_L = P_T/(2RB) (eq. 20)"),
+        Output::PowerLoss => ("power_loss", Some("W"), None, Some(0.0), None, &SPEED_LOAD,
+            "Frictional power loss |torque * angular_velocity|"),
+        Output::DissipatedEnergy => ("dissipated_energy", Some("J"), Some("kJ"), Some(0.0), None, &[],
+            "Energy dissipated by friction since initialization: sum over the steps taken of power_loss * step size (inputs held over each step)"),
+    };
+    Variable {
+        name: name.into(),
+        kind: Kind::Real,
+        value_reference: 10 + o as u32,
+        causality: Causality::Output,
+        variability: Variability::Continuous,
+        initial: Initial::Calculated,
+        unit,
+        display_unit: display,
+        start: None,
+        min,
+        max,
+        description: d.into(),
+        depends_on: deps.to_vec(),
+    }
+}
+
+/// Display unit a user expects for a parameter.
+pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
+    match (s.section, s.unit) {
+        ("geometry", "m") => Some("mm"),
+        (_, "m") => Some("µm"),
+        (_, "Pa") if s.key.contains("modulus") => Some("GPa"),
+        (_, "Pa") => Some("MPa"),
+        (_, "Pa.s") => Some("mPa.s"),
+        (_, "1/Pa") => Some("1/GPa"),
+        _ => None,
+    }
+}
+
+pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
+    let (min, max) = s.range.bounds();
+    Variable {
+        name: s.name(),
+        kind: Kind::Real,
+        value_reference: 100 + i as u32,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        initial: Initial::Exact,
+        unit: (s.unit != "1").then_some(s.unit),
+        display_unit: param_display(s),
+        start: Some(s.default_value()),
+        min,
+        max,
+        description: format!("{} ({}, {}; must be {})", s.description, s.symbol, s.source, s.range.describe()),
+        depends_on: vec![],
+    }
+}
+
+/// The full table, in index order.
+pub fn table() -> Vec<Variable> {
+    let mut v = vec![
+        input("angle", 1, "rad", Some("deg"), 0.0, None,
+            "Angle of the pin relative to the bush. The friction law does not depend on position: no output uses it; it is kept in the FMU state for hosts that wire the full joint kinematics"),
+        input("angular_velocity", 2, "rad/s", Some("deg/s"), 0.0, None,
+            "Angular velocity omega of the pin relative to the bush (any finite value; sliding speed u = |omega| R)"),
+        input("load", 3, "N", Some("kN"), DEFAULT_LOAD, Some(0.0),
+            "Radial load P_T on the joint (magnitude, finite and >= 0; at 0 the joint is unloaded and every output but dissipated_energy is 0)"),
+    ];
+    v.extend(Output::ALL.iter().map(|&o| output(o)));
+    v.extend(PARAMS.iter().enumerate().map(|(i, s)| parameter(i, s)));
+    v.push(Variable {
+        name: "zero_velocity.speed_band".into(),
+        kind: Kind::Real,
+        value_reference: 200,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        initial: Initial::Exact,
+        unit: Some("rad/s"),
+        display_unit: Some("deg/s"),
+        start: Some(DEFAULT_SPEED_BAND),
+        min: Some(0.0),
+        max: None,
+        description: "Half-width omega_b of the speed band around zero in which the torque is ramped linearly, \
+                      T = -T(P, omega_b) omega/omega_b; outside it the torque is exactly the model's. 0 switches the ramp off"
+            .into(),
+        depends_on: vec![],
+    });
+    v.push(Variable {
+        name: "fidelity".into(),
+        kind: Kind::Integer,
+        value_reference: 300,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        initial: Initial::Exact,
+        unit: None,
+        display_unit: None,
+        start: Some(DEFAULT_FIDELITY as f64),
+        min: Some(0.0),
+        max: Some(3.0),
+        description: "Fidelity of the friction evaluation: 0 = full (complete solve, cold: outputs depend on the current inputs only), 1 = table \
+                      (Stribeck map tabulated over the envelope at exit of initialization, interpolated, within \
+                      tolerance of full), 2 = boundary (mu = mu_c), 3 = auto (the cheapest level within tolerance). \
+                      Outside the envelope table and boundary answer with the full solve (logged once)"
+            .into(),
+        depends_on: vec![],
+    });
+    let real = |name: &str, vr: u32, unit: Option<&'static str>, start: f64, d: &str| Variable {
+        name: name.into(),
+        kind: Kind::Real,
+        value_reference: vr,
+        causality: Causality::Parameter,
+        variability: Variability::Fixed,
+        initial: Initial::Exact,
+        unit,
+        display_unit: None,
+        start: Some(start),
+        min: Some(0.0),
+        max: None,
+        description: d.into(),
+        depends_on: vec![],
+    };
+    let [l0, l1, w0, w1] = DEFAULT_ENVELOPE;
+    v.push(real("tolerance", 301, None, DEFAULT_TOLERANCE,
+        "Largest relative error accepted in mu, torque and film thickness (absolute in the load shares) for fidelity table, boundary and auto; must be > 0"));
+    v.push(real("envelope.load_min", 302, Some("N"), l0, "Smallest load of the envelope the scene visits (> 0)"));
+    v.push(real("envelope.load_max", 303, Some("N"), l1, "Largest load of the envelope (> envelope.load_min)"));
+    v.push(real("envelope.speed_min", 304, Some("rad/s"), w0, "Smallest speed magnitude |omega| of the envelope (> 0; omega = 0 is handled exactly)"));
+    v.push(real("envelope.speed_max", 305, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
+    debug_assert_eq!(v.len(), COUNT);
+    v
+}

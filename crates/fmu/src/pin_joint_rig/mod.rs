@@ -1,0 +1,28 @@
+//! The PinJointRig FMU: the integrated articulation mode ([`pinjoint::rig`]) as an
+//! FMI 2.0 Co-Simulation slave. Inputs the load and, optionally, the command
+//! angle; parameters the stroke, every `[rig]` constant and every model parameter;
+//! outputs the rig's angle, speed, recorded and friction torques, the core's
+//! quantities and the energy balance. Served by the same shared library as
+//! PinJoint (`fmi2Instantiate` picks the model by GUID).
+
+pub mod doc;
+pub mod model;
+pub mod state;
+pub mod variables;
+
+use fmi_layer::fmi2::variables::ModelInfo;
+use std::sync::LazyLock;
+
+pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
+    model_name: "PinJointRig",
+    model_identifier: "PinJointRig",
+    description: "Landing-gear pin joint on the paper's torsion-actuator rig: a servo-hydraulic actuator in angle control \
+                  swings the pin (sine strokes or a command input) against the mixed-lubrication friction torque, \
+                  with stick and breakaway at reversals; the recorded torque is what the rig's transducer reads",
+    version: env!("CARGO_PKG_VERSION"),
+    units: variables::UNITS.as_slice(),
+    variables: variables::table(),
+    default_experiment: (0.0, 3.0, 1e-3),
+    create: || Box::new(model::RigModel::new()),
+    documentation: doc::index_html,
+});

@@ -1,0 +1,420 @@
+//! The PinJointRig co-simulation model: the rig simulator [`RigSim`] behind the
+//! FMI layer. It integrates internally across communication steps (its own
+//! segments and events, independent of the host's grid); a communication step only
+//! moves the simulator's clock and samples it.
+//!
+//! Time: the rig's clock is the FMU time minus the start time, so the stroke
+//! A sin(2 pi f (t - t_start)) starts at rest on the command at the start time.
+//! Inputs are held over each step; setting an input to a new value restarts the
+//! integration at the current time (see [`pinjoint::rig::sim`]).
+//!
+//! Fidelity: `fidelity` (0 full, 1 table, 2 boundary, 3 auto), `tolerance` and the envelope
+//! are checked at fmi2ExitInitializationMode and, unless full, applied with
+//! [`RigSim::set_fidelity`]; the log says once which level was built (what auto picked) and
+//! its measured bound, and once when a friction evaluation first fell outside the envelope.
+//! At full (the default) the simulator is built exactly as without these parameters.
+
+use super::state::{decode, encode};
+use super::variables::{default_load, rig_spec, Output, Var, DEFAULT_ENVELOPE, DEFAULT_TOLERANCE, LAYOUT};
+use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
+use fmi_layer::fmi2::logging::show;
+use fmi_layer::fmi2::model::{Model, ModelResult};
+use crate::pin_joint::variables::fidelity_of_code;
+use pinjoint::params::PARAMS;
+use pinjoint::rig::{Formulation, Inputs, Method, RigConfig, RigSim, Sample, RIG_PARAMS};
+use std::sync::Arc;
+
+/// Every value a host can set, as the model holds it (Booleans and Integers as f64).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    /// Model and rig parameters (`cfg.rig.load` is unused: the load is the input).
+    pub cfg: RigConfig,
+    pub use_command_input: bool,
+    /// Integer codes of `rig.formulation` and `rig.method`, checked at initialization.
+    pub formulation: f64,
+    pub method: f64,
+    pub load: f64,
+    pub command_angle: f64,
+    /// Integer code of `fidelity`, checked when set and at initialization.
+    pub fidelity: f64,
+    pub tolerance: f64,
+    /// load_min, load_max (N), speed_min, speed_max (rad/s).
+    pub envelope: [f64; 4],
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            cfg: RigConfig::default(),
+            use_command_input: false,
+            formulation: 0.0,
+            method: 0.0,
+            load: default_load(),
+            command_angle: 0.0,
+            fidelity: 0.0,
+            tolerance: DEFAULT_TOLERANCE,
+            envelope: DEFAULT_ENVELOPE,
+        }
+    }
+}
+
+impl Settings {
+    /// The value of table entry `v` (not an output).
+    pub fn get(&self, v: Var) -> f64 {
+        let rig = &self.cfg.rig;
+        match v {
+            Var::Load => self.load,
+            Var::CommandAngle => self.command_angle,
+            Var::Frequency => rig.frequency,
+            Var::Amplitude => rig.amplitude,
+            Var::UseCommandInput => self.use_command_input as u8 as f64,
+            Var::Rig(i) => (RIG_PARAMS[i].get)(rig),
+            Var::Formulation => self.formulation,
+            Var::Method => self.method,
+            Var::Model(i) => (PARAMS[i].get)(&self.cfg.model),
+            Var::Fidelity => self.fidelity,
+            Var::Tolerance => self.tolerance,
+            Var::Envelope(k) => self.envelope[k],
+            Var::Out(_) => unreachable!("outputs are not settings"),
+        }
+    }
+
+    pub fn set(&mut self, v: Var, x: f64) {
+        let rig = &mut self.cfg.rig;
+        match v {
+            Var::Load => self.load = x,
+            Var::CommandAngle => self.command_angle = x,
+            Var::Frequency => rig.frequency = x,
+            Var::Amplitude => rig.amplitude = x,
+            Var::UseCommandInput => self.use_command_input = x != 0.0,
+            Var::Rig(i) => (RIG_PARAMS[i].set)(rig, x),
+            Var::Formulation => self.formulation = x,
+            Var::Method => self.method = x,
+            Var::Model(i) => (PARAMS[i].set)(&mut self.cfg.model, x),
+            Var::Fidelity => self.fidelity = x,
+            Var::Tolerance => self.tolerance = x,
+            Var::Envelope(k) => self.envelope[k] = x,
+            Var::Out(_) => unreachable!("the FMI layer never sets outputs"),
+        }
+    }
+
+    /// The inputs as the simulator takes them.
+    pub fn inputs(&self) -> Inputs {
+        Inputs { load: Some(self.load), command_angle: self.use_command_input.then_some(self.command_angle) }
+    }
+
+    /// Check an input value (parameters are checked together by [`Settings::config`]).
+    pub fn check_input(v: Var, x: f64) -> ModelResult<()> {
+        match v {
+            Var::Load if !(x.is_finite() && x >= 0.0) => {
+                Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(x)))
+            }
+            Var::CommandAngle if !x.is_finite() => Err(format!("input command_angle = {} rad is not a finite number", show(x))),
+            Var::Fidelity if x.fract() != 0.0 || fidelity_of_code(x as i32).is_none() => Err(fidelity_range(x)),
+            _ => Ok(()),
+        }
+    }
+
+    /// The validated configuration; an error names the parameter, its value and unit.
+    pub fn config(&self) -> ModelResult<RigConfig> {
+        let mut cfg = self.cfg;
+        for key in ["frequency", "amplitude"] {
+            let s = rig_spec(key);
+            let x = (s.get)(&cfg.rig);
+            if !(x.is_finite() && s.range.contains(x)) {
+                return Err(format!("parameter {key} = {} {} is invalid: it must be a finite number {}", show(x), s.unit, s.range.describe()));
+            }
+        }
+        cfg.rig.formulation = match self.formulation {
+            0.0 => Formulation::Hybrid,
+            1.0 => Formulation::Regularised,
+            x => return Err(format!("parameter rig.formulation = {x} is invalid: it must be 0 (hybrid) or 1 (regularised)")),
+        };
+        cfg.rig.method = match self.method {
+            0.0 => Method::Dopri5,
+            1.0 => Method::Dop853,
+            2.0 => Method::Rk4,
+            x => return Err(format!("parameter rig.method = {x} is invalid: it must be 0 (Dopri5), 1 (Dop853) or 2 (RK4)")),
+        };
+        cfg.rig.load = self.load;
+        cfg.validate().map_err(|e| e.to_string())?;
+        Ok(cfg)
+    }
+
+    /// The validated fidelity settings: the level, the tolerance and the envelope. They are
+    /// checked whatever the level (as PinJoint does), though `full` uses neither tolerance nor
+    /// envelope. An error names the parameter, its value and unit.
+    pub fn fidelity(&self) -> ModelResult<(Fidelity, f64, Envelope)> {
+        let level = (self.fidelity.fract() == 0.0).then(|| fidelity_of_code(self.fidelity as i32)).flatten();
+        let level = level.ok_or_else(|| fidelity_range(self.fidelity))?;
+        let t = self.tolerance;
+        if !(t.is_finite() && t > 0.0) {
+            return Err(format!("parameter tolerance = {} (relative error, dimensionless) is invalid: it must be a finite number > 0", show(t)));
+        }
+        let env = crate::envelope_from_parameters(self.envelope)?;
+        Ok((level, t, env))
+    }
+}
+
+impl Settings {
+    /// The fidelity settings as stored (code, tolerance, envelope), for comparisons.
+    pub fn fidelity_key(&self) -> [f64; 6] {
+        let [a, b, c, d] = self.envelope;
+        [self.fidelity, self.tolerance, a, b, c, d]
+    }
+}
+
+fn fidelity_range(x: f64) -> String {
+    format!("parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)", show(x))
+}
+
+/// What the log says about the level built: what was asked, what runs (auto's pick), the
+/// measured bound, the tolerance and the envelope.
+fn describe(ev: &Evaluator) -> String {
+    let e = ev.envelope();
+    format!(
+        "fidelity {} -> {}: measured error bound {:e} (tolerance {:e}) over load {}..{} N, |omega| {}..{} rad/s; \
+         outside it the full solve answers",
+        ev.requested(),
+        ev.chosen(),
+        ev.error_bound(),
+        ev.tolerance(),
+        e.load_min,
+        e.load_max,
+        e.speed_min,
+        e.speed_max
+    )
+}
+
+/// The outputs as the FMU reports them: the sample, with the core's film quantities
+/// set to 0 at zero load (no contact) where the library has NaN.
+pub fn outputs(s: &Sample) -> ModelResult<[f64; Output::ALL.len()]> {
+    let contact = s.load > 0.0;
+    let out = Output::ALL.map(|o| match o {
+        Output::Angle => s.angle,
+        Output::AngularVelocity => s.angular_velocity,
+        Output::Torque => s.torque,
+        Output::FrictionTorque => s.friction_torque,
+        Output::FrictionCoefficient => s.friction_coefficient,
+        Output::FilmThickness => if contact { s.film_thickness } else { 0.0 },
+        Output::FluidLoadFraction => if contact { s.fluid_load_fraction } else { 0.0 },
+        Output::Stuck => s.stuck as u8 as f64,
+        Output::CommandedAngle => s.command_angle,
+        Output::ActuatorWork => s.actuator_work,
+        Output::FrictionDissipation => s.friction_dissipation,
+        Output::KineticEnergy => s.kinetic_energy,
+    });
+    if let Some((o, v)) = Output::ALL.iter().zip(out).find(|(_, v)| !v.is_finite()) {
+        let name = &super::INFO.variables[LAYOUT.iter().position(|x| *x == Var::Out(*o)).expect("in the table")].name;
+        return Err(format!(
+            "the rig gives {name} = {} at t = {} s (load {} N, angle {} rad, speed {} rad/s)",
+            show(v),
+            show(s.time),
+            show(s.load),
+            show(s.angle),
+            show(s.angular_velocity)
+        ));
+    }
+    Ok(out)
+}
+
+#[derive(Debug, Clone)]
+pub struct RigModel {
+    pub(super) settings: Settings,
+    /// The experiment's start time: the rig's clock is t - start_time.
+    pub(super) start_time: f64,
+    /// The simulator, built at fmi2ExitInitializationMode (or for outputs read
+    /// during initialization); dropped when a parameter changes.
+    pub(super) sim: Option<RigSim>,
+    out: [f64; Output::ALL.len()],
+    /// For the host's log ([`Model::take_message`]): the level built; the first fallback.
+    message: Option<String>,
+    /// Whether the first evaluation outside the envelope has been logged (once per instance
+    /// and fidelity setting; kept across a restore with the same settings).
+    fallback_logged: bool,
+}
+
+impl RigModel {
+    pub fn new() -> Self {
+        RigModel {
+            settings: Settings::default(),
+            start_time: 0.0,
+            sim: None,
+            out: [0.0; Output::ALL.len()],
+            message: None,
+            fallback_logged: false,
+        }
+    }
+
+    /// A model with these settings and, if given, a simulator resumed from `state`; `reuse`
+    /// is a fidelity level already built, used if it matches the settings (not rebuilt).
+    pub(super) fn restored(
+        settings: Settings,
+        start_time: f64,
+        state: Option<pinjoint::rig::RigState>,
+        reuse: Option<Arc<Evaluator>>,
+    ) -> ModelResult<Self> {
+        let mut m = RigModel { settings, start_time, ..RigModel::new() };
+        if let Some(st) = state {
+            let mut sim = m.build(reuse)?;
+            sim.set_state(&st).map_err(|e| e.to_string())?;
+            m.sim = Some(sim);
+        }
+        Ok(m)
+    }
+
+    /// The simulator for the settings, at their fidelity. At `full` it is exactly
+    /// [`RigSim::new`]; otherwise [`RigSim::set_fidelity`], or `reuse` when it is the same
+    /// level, tolerance and envelope built for the same model parameters.
+    fn build(&self, reuse: Option<Arc<Evaluator>>) -> ModelResult<RigSim> {
+        let cfg = self.settings.config()?;
+        let (level, tolerance, envelope) = self.settings.fidelity()?;
+        let mut sim = RigSim::new(&cfg).map_err(|e| e.to_string())?;
+        if level != Fidelity::Full {
+            let same = |e: &Evaluator| {
+                e.requested() == level && e.tolerance() == tolerance && *e.envelope() == envelope && e.joint().params() == &cfg.model
+            };
+            match reuse.filter(|e| same(e)) {
+                Some(ev) => sim.share_fidelity(ev).map_err(|e| e.to_string())?,
+                None => {
+                    sim.set_fidelity(level, tolerance, envelope).map_err(|e| format!("fidelity {level}: {e}"))?;
+                }
+            }
+        }
+        Ok(sim)
+    }
+
+    fn sim(&mut self) -> ModelResult<&mut RigSim> {
+        if self.sim.is_none() {
+            self.sim = Some(self.build(None)?);
+        }
+        Ok(self.sim.as_mut().expect("just built"))
+    }
+
+    /// The simulator in use (after initialization).
+    pub fn simulator(&self) -> Option<&RigSim> {
+        self.sim.as_ref()
+    }
+
+    /// Say once when a friction evaluation first fell outside the envelope.
+    fn note_fallback(&mut self) {
+        if self.fallback_logged {
+            return;
+        }
+        let Some(sim) = self.sim.as_ref() else { return };
+        let (Some(ev), n) = (sim.fidelity(), sim.stats().fallbacks) else { return };
+        if n == 0 {
+            return;
+        }
+        let e = ev.envelope();
+        self.message = Some(format!(
+            "fidelity {}: by t = {} s (rig clock) a friction evaluation fell outside the envelope (load {}..{} N, |omega| {}..{} rad/s; \
+             e.g. speeds below {} rad/s around a reversal); the full solve answers there (said once)",
+            ev.chosen(),
+            show(sim.time()),
+            e.load_min,
+            e.load_max,
+            e.speed_min,
+            e.speed_max,
+            e.speed_min
+        ));
+        self.fallback_logged = true;
+    }
+
+    /// Apply the held inputs at the current time and sample.
+    fn refresh(&mut self, rig_time: Option<f64>) -> ModelResult<()> {
+        let inputs = self.settings.inputs();
+        let sim = self.sim()?;
+        let t = rig_time.unwrap_or(sim.time()).max(sim.time());
+        sim.advance_to(t, &inputs).map_err(|e| e.to_string())?;
+        let s = sim.sample().map_err(|e| e.to_string())?;
+        self.note_fallback();
+        self.out = outputs(&s)?;
+        Ok(())
+    }
+}
+
+impl Default for RigModel {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Model for RigModel {
+    fn set_start_values(&mut self) {
+        *self = RigModel::new();
+    }
+
+    fn get_real(&self, i: usize) -> f64 {
+        match LAYOUT[i] {
+            Var::Out(o) => self.out[o as usize],
+            v => self.settings.get(v),
+        }
+    }
+
+    fn check_real(&self, i: usize, x: f64) -> ModelResult<()> {
+        Settings::check_input(LAYOUT[i], x)?;
+        // Beyond the asperity model's capacity (pinjoint::Joint::capacity) the load is refused
+        // here, leaving the simulation as it was.
+        match (LAYOUT[i], &self.sim) {
+            (Var::Load, Some(sim)) => check_capacity(x, sim.joint().capacity()),
+            _ => Ok(()),
+        }
+    }
+
+    fn set_real(&mut self, i: usize, x: f64) {
+        let v = LAYOUT[i];
+        self.settings.set(v, x);
+        if !matches!(v, Var::Load | Var::CommandAngle) {
+            self.sim = None;
+        }
+        if matches!(v, Var::Fidelity | Var::Tolerance | Var::Envelope(_)) {
+            self.fallback_logged = false;
+        }
+    }
+
+    fn take_message(&mut self) -> Option<String> {
+        self.message.take()
+    }
+
+    fn exit_initialization(&mut self, start_time: f64) -> ModelResult<()> {
+        self.start_time = start_time;
+        // A level built for outputs read during initialization is reused, not rebuilt.
+        let reuse = self.sim.as_ref().and_then(RigSim::shared_fidelity);
+        let sim = self.build(reuse)?;
+        check_capacity(self.settings.load, sim.joint().capacity())?;
+        self.message = sim.fidelity().map(describe);
+        self.sim = Some(sim);
+        Ok(())
+    }
+
+    fn compute_outputs(&mut self) -> ModelResult<()> {
+        self.refresh(None)
+    }
+
+    fn do_step(&mut self, time: f64, step: f64) -> ModelResult<()> {
+        self.refresh(Some(time + step - self.start_time))
+    }
+
+    fn serialize(&self, out: &mut Vec<u8>) {
+        encode(&self.settings, self.start_time, self.sim.as_ref().map(|s| s.state()), out);
+    }
+
+    fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()> {
+        let (settings, start_time, state) = decode(bytes)?;
+        let reuse = self.sim.as_ref().and_then(RigSim::shared_fidelity);
+        let mut m = RigModel::restored(settings, start_time, state, reuse)?;
+        m.fallback_logged = self.fallback_logged && m.settings.fidelity_key() == self.settings.fidelity_key();
+        *self = m;
+        Ok(())
+    }
+}
+
+/// A load at or beyond the joint's asperity capacity is an error naming both.
+fn check_capacity(load: f64, capacity: f64) -> ModelResult<()> {
+    if load >= capacity {
+        Err(format!("input load = {load} N is beyond the asperity model's capacity of {capacity:.6e} N for these parameters"))
+    } else {
+        Ok(())
+    }
+}

@@ -1,0 +1,304 @@
+//! The PinJointRig variable table: the single source of the modelDescription.xml
+//! and of the get/set dispatch. Layout (value references):
+//!
+//! | value references | variables |
+//! |---|---|
+//! | 1–2 | inputs `load`, `command_angle` |
+//! | 10–22 | outputs ([`Output`] order; `stuck` is a Boolean) |
+//! | 100–102 | stroke parameters `frequency`, `amplitude`, Boolean `use_command_input` |
+//! | 200 + i | `rig.<key>` for row i of [`RIG_PARAMS`] (all but `amplitude`, `frequency`, `load`) |
+//! | 230, 231 | Integer `rig.formulation`, `rig.method` |
+//! | 300 + i | `section.key` for row i of [`pinjoint::params::PARAMS`] |
+//! | 400 | Integer `fidelity` (0 full, 1 table, 2 boundary, 3 auto), as PinJoint's |
+//! | 401–405 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
+//!
+//! The `[rig]` file keys `frequency` and `amplitude` are the stroke parameters
+//! `frequency` and `amplitude`; the key `load` is the `load` input.
+
+use fmi_layer::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
+use crate::pin_joint::variables::{self as pj};
+use pinjoint::params::PARAMS;
+use pinjoint::rig::params::{RigParamSpec, RigParams, RIG_PARAMS};
+use std::sync::LazyLock;
+
+/// Start value of the `load` input (N): the `[rig]` default, the paper's 20 kN.
+pub fn default_load() -> f64 {
+    RigParams::default().load
+}
+
+/// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
+pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
+
+/// What a table entry stands for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Var {
+    Load,
+    CommandAngle,
+    Out(Output),
+    Frequency,
+    Amplitude,
+    UseCommandInput,
+    /// Row of [`RIG_PARAMS`].
+    Rig(usize),
+    Formulation,
+    Method,
+    /// Row of [`PARAMS`].
+    Model(usize),
+    /// Integer code of the friction fidelity ([`pj::fidelity_of_code`]).
+    Fidelity,
+    Tolerance,
+    /// load_min, load_max, speed_min, speed_max.
+    Envelope(usize),
+}
+
+/// Names of the envelope parameters, in [`Var::Envelope`] order, with their units.
+pub use crate::ENVELOPE_NAMES;
+
+/// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
+/// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
+/// 1-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s).
+/// Speeds below speed_min (around every reversal) and points outside it are answered by
+/// the full solve (logged once).
+pub const DEFAULT_TOLERANCE: f64 = pj::DEFAULT_TOLERANCE;
+pub const DEFAULT_ENVELOPE: [f64; 4] = [1e3, 100e3, 1e-3, 10.0];
+
+/// The outputs, in table order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    Angle,
+    AngularVelocity,
+    Torque,
+    FrictionTorque,
+    FrictionCoefficient,
+    FilmThickness,
+    FluidLoadFraction,
+    Stuck,
+    CommandedAngle,
+    ActuatorWork,
+    FrictionDissipation,
+    KineticEnergy,
+}
+
+impl Output {
+    pub const ALL: [Output; 12] = [
+        Output::Angle,
+        Output::AngularVelocity,
+        Output::Torque,
+        Output::FrictionTorque,
+        Output::FrictionCoefficient,
+        Output::FilmThickness,
+        Output::FluidLoadFraction,
+        Output::Stuck,
+        Output::CommandedAngle,
+        Output::ActuatorWork,
+        Output::FrictionDissipation,
+        Output::KineticEnergy,
+    ];
+}
+
+/// Every table entry, in table order (the same order as [`table`]).
+pub static LAYOUT: LazyLock<Vec<Var>> = LazyLock::new(|| {
+    let mut v = vec![Var::Load, Var::CommandAngle];
+    v.extend(Output::ALL.iter().map(|&o| Var::Out(o)));
+    v.extend([Var::Frequency, Var::Amplitude, Var::UseCommandInput]);
+    v.extend(rig_rows().map(Var::Rig));
+    v.extend([Var::Formulation, Var::Method]);
+    v.extend((0..PARAMS.len()).map(Var::Model));
+    v.extend([Var::Fidelity, Var::Tolerance]);
+    v.extend((0..4).map(Var::Envelope));
+    v
+});
+
+/// Rows of [`RIG_PARAMS`] that are `rig.<key>` parameters.
+pub fn rig_rows() -> impl Iterator<Item = usize> {
+    (0..RIG_PARAMS.len()).filter(|&i| !NOT_RIG_PARAMETERS.contains(&RIG_PARAMS[i].key))
+}
+
+/// The row of [`RIG_PARAMS`] with `key`.
+pub fn rig_spec(key: &str) -> &'static RigParamSpec {
+    RIG_PARAMS.iter().find(|s| s.key == key).expect("a [rig] key")
+}
+
+const DEG: f64 = 57.29577951308232; // 180/π
+
+/// Units of the rig's own variables, beyond those PinJoint defines.
+static RIG_UNITS: &[UnitDef] = &[
+    UnitDef { name: "Hz", kg: 0, m: 0, s: -1, rad: 0, display: &[] },
+    UnitDef { name: "s", kg: 0, m: 0, s: 1, rad: 0, display: &[DisplayUnit { name: "ms", factor: 1e3, offset: 0.0 }] },
+    UnitDef { name: "kg.m2", kg: 1, m: 2, s: 0, rad: 0, display: &[] },
+    UnitDef {
+        name: "N.m/rad",
+        kg: 1,
+        m: 2,
+        s: -2,
+        rad: -1,
+        display: &[DisplayUnit { name: "N.m/deg", factor: 1.0 / DEG, offset: 0.0 }],
+    },
+    UnitDef { name: "N.m.s/rad", kg: 1, m: 2, s: -1, rad: -1, display: &[] },
+];
+
+/// Every unit used by a PinJointRig variable (PinJoint's definitions where shared).
+pub static UNITS: LazyLock<Vec<UnitDef>> = LazyLock::new(|| {
+    let vars = table();
+    pj::UNITS
+        .iter()
+        .chain(RIG_UNITS)
+        .filter(|u| vars.iter().any(|v| v.unit == Some(u.name)))
+        .copied()
+        .collect()
+});
+
+fn var(name: &str, vr: u32, kind: Kind, causality: Causality, variability: Variability, description: String) -> Variable {
+    Variable {
+        name: name.into(),
+        kind,
+        value_reference: vr,
+        causality,
+        variability,
+        initial: if causality == Causality::Output { Initial::Calculated } else { Initial::Exact },
+        unit: None,
+        display_unit: None,
+        start: None,
+        min: None,
+        max: None,
+        description,
+        depends_on: vec![],
+    }
+}
+
+fn real(name: &str, vr: u32, causality: Causality, variability: Variability, unit: Option<&'static str>, display: Option<&'static str>, d: &str) -> Variable {
+    Variable { unit, display_unit: display, ..var(name, vr, Kind::Real, causality, variability, d.into()) }
+}
+
+fn output(o: Output) -> Variable {
+    use Causality::Output as Out;
+    use Variability::Continuous as C;
+    let vr = 10 + o as u32;
+    let mut v = match o {
+        Output::Angle => real("angle", vr, Out, C, Some("rad"), Some("deg"), "Pin angle theta (rad), relative to the bush"),
+        Output::AngularVelocity => real("angular_velocity", vr, Out, C, Some("rad/s"), Some("deg/s"), "Pin angular velocity omega"),
+        Output::Torque => real("torque", vr, Out, C, Some("N.m"), None,
+            "Recorded torque: what the actuator's torque transducer reads, the actuator torque T_a (= J domega/dt - T_f)"),
+        Output::FrictionTorque => real("friction_torque", vr, Out, C, Some("N.m"), None,
+            "Friction torque T_f on the pin: -sign(omega) mu(P,|omega|) R P while slipping, the reaction -T_a while stuck, 0 at zero load"),
+        Output::FrictionCoefficient => real("friction_coefficient", vr, Out, C, None, None,
+            "The core's mu(P, |omega|) (eq. 10); mu_c while stuck (the capacity, not the mobilised |T_a|/(R P)); 0 at zero load"),
+        Output::FilmThickness => real("film_thickness", vr, Out, C, Some("m"), Some("µm"),
+            "The core's central film thickness h_c at (P, |omega|); 0 at zero load (no contact)"),
+        Output::FluidLoadFraction => real("fluid_load_fraction", vr, Out, C, None, None,
+            "The core's 1/gamma_1, share of the load carried by the film; 0 at zero load"),
+        Output::Stuck => var("stuck", vr, Kind::Boolean, Out, Variability::Discrete,
+            "True in a stick phase (hybrid formulation), or |omega| <= rig.regularisation_speed (regularised formulation)".into()),
+        Output::CommandedAngle => real("commanded_angle", vr, Out, C, Some("rad"), Some("deg"),
+            "The command theta_cmd the position loop follows: amplitude sin(2 pi frequency (t - t_start)), or the command_angle input when use_command_input is true"),
+        Output::ActuatorWork => real("actuator_work", vr, Out, C, Some("J"), None,
+            "Work done by the actuator on the rotating parts since initialization, W = integral of T_a omega dt"),
+        Output::FrictionDissipation => real("friction_dissipation", vr, Out, C, Some("J"), None,
+            "Energy dissipated by friction since initialization, D = integral of -T_f omega dt"),
+        Output::KineticEnergy => real("kinetic_energy", vr, Out, C, Some("J"), None,
+            "Kinetic energy of the rotating parts, J omega^2 / 2 (energy balance: W - D = change of kinetic energy)"),
+    };
+    v.min = match o {
+        Output::FrictionCoefficient | Output::FilmThickness | Output::FluidLoadFraction | Output::FrictionDissipation | Output::KineticEnergy => {
+            Some(0.0)
+        }
+        _ => None,
+    };
+    if o == Output::FluidLoadFraction {
+        v.max = Some(1.0);
+    }
+    // Direct feedthrough: the friction quantities follow the load at once (and the load
+    // decides stick against breakaway); the commanded angle is the command input.
+    v.depends_on = match o {
+        Output::FrictionTorque | Output::FrictionCoefficient | Output::FilmThickness | Output::FluidLoadFraction | Output::Stuck => {
+            vec!["load"]
+        }
+        Output::CommandedAngle => vec!["command_angle"],
+        _ => vec![],
+    };
+    v
+}
+
+fn rig_parameter(i: usize) -> Variable {
+    let s = &RIG_PARAMS[i];
+    let (min, max) = s.range.bounds();
+    let unit = (s.unit != "1").then_some(s.unit);
+    let display = match s.unit {
+        "rad" => Some("deg"),
+        "s" => Some("ms"),
+        "N.m/rad" => Some("N.m/deg"),
+        _ => None,
+    };
+    let mut v = real(&s.name(), 200 + i as u32, Causality::Parameter, Variability::Fixed, unit, display, "");
+    v.start = Some((s.get)(&RigParams::default()));
+    v.min = min;
+    v.max = max;
+    v.description = format!("{} (must be {}; [rig] {} in the parameter file)", s.description, s.range.describe(), s.key);
+    v
+}
+
+fn stroke_parameter(key: &str, vr: u32, display: Option<&'static str>, what: &str) -> Variable {
+    let s = rig_spec(key);
+    let (min, max) = s.range.bounds();
+    let mut v = real(key, vr, Causality::Parameter, Variability::Fixed, Some(s.unit), display, "");
+    v.start = Some((s.get)(&RigParams::default()));
+    v.min = min;
+    v.max = max;
+    v.description = format!("{what} (must be {}; [rig] {key} in the parameter file)", s.range.describe());
+    v
+}
+
+fn integer(name: &str, vr: u32, max: f64, d: &str) -> Variable {
+    let mut v = var(name, vr, Kind::Integer, Causality::Parameter, Variability::Fixed, d.into());
+    v.start = Some(0.0);
+    v.min = Some(0.0);
+    v.max = Some(max);
+    v
+}
+
+/// The full table, in [`LAYOUT`] order.
+pub fn table() -> Vec<Variable> {
+    let mut v = vec![
+        real("load", 1, Causality::Input, Variability::Continuous, Some("N"), Some("kN"),
+            "Radial load P on the joint (finite, >= 0; at 0 there is no contact and no friction). Held over each communication step"),
+        real("command_angle", 2, Causality::Input, Variability::Continuous, Some("rad"), Some("deg"),
+            "Command angle theta_cmd, used only when use_command_input is true; held over each communication step (its rate is then 0 in the derivative term)"),
+    ];
+    v[0].start = Some(default_load());
+    v[0].min = Some(0.0);
+    v[1].start = Some(0.0);
+    v.extend(Output::ALL.iter().map(|&o| output(o)));
+    v.push(stroke_parameter("frequency", 100, None, "Stroke frequency f of the internal command A sin(2 pi f (t - t_start))"));
+    v.push(stroke_parameter("amplitude", 101, Some("deg"), "Stroke amplitude A of the internal command (default 40 deg, section 4.4)"));
+    let mut use_input = var("use_command_input", 102, Kind::Boolean, Causality::Parameter, Variability::Fixed,
+        "false: the position loop follows the internal sine A sin(2 pi f (t - t_start)); true: it follows the command_angle input".into());
+    use_input.start = Some(0.0);
+    v.push(use_input);
+    v.extend(rig_rows().map(rig_parameter));
+    v.push(integer("rig.formulation", 230, 1.0,
+        "Friction at zero speed: 0 = hybrid (stick/slip with located events), 1 = regularised (tanh(omega/rig.regularisation_speed)); [rig] formulation = \"hybrid\" | \"regularised\""));
+    v.push(integer("rig.method", 231, 2.0,
+        "Integrator: 0 = Dopri5 (adaptive, rig.rtol/rig.atol), 1 = Dop853 (adaptive), 2 = RK4 (fixed step rig.rk4_step); [rig] method = \"dopri5\" | \"dop853\" | \"rk4\""));
+    v.extend(PARAMS.iter().enumerate().map(|(i, s)| Variable { value_reference: 300 + i as u32, ..pj::parameter(i, s) }));
+    v.push(integer("fidelity", 400, 3.0,
+        "Fidelity of the friction evaluation inside the rig: 0 = full (the complete solve, warm-started: the rig as without this parameter, bit for bit), \
+         1 = table (Stribeck map tabulated over the envelope at exit of initialization, interpolated, within tolerance of full), \
+         2 = boundary (mu = mu_c), 3 = auto (the cheapest level within tolerance; the choice and its measured bound are logged). \
+         Outside the envelope (e.g. speeds below envelope.speed_min around reversals) table and boundary answer with the full solve (logged once)"));
+    let fid = |name: &str, vr: u32, unit: Option<&'static str>, start: f64, d: &str| {
+        let mut x = real(name, vr, Causality::Parameter, Variability::Fixed, unit, None, d);
+        x.start = Some(start);
+        x.min = Some(0.0);
+        x
+    };
+    let [l0, l1, w0, w1] = DEFAULT_ENVELOPE;
+    v.push(fid("tolerance", 401, None, DEFAULT_TOLERANCE,
+        "Largest relative error accepted in mu, torque and film thickness (absolute in the load shares) for fidelity table, boundary and auto; must be > 0 (table and auto: >= 1e-10, the full solve's own accuracy)"));
+    v.push(fid("envelope.load_min", 402, Some("N"), l0, "Smallest load of the envelope the scene visits (> 0)"));
+    v.push(fid("envelope.load_max", 403, Some("N"), l1, "Largest load of the envelope (> envelope.load_min)"));
+    v.push(fid("envelope.speed_min", 404, Some("rad/s"), w0,
+        "Smallest speed magnitude |omega| of the envelope (> 0; slower speeds, around every reversal, are answered by the full solve)"));
+    v.push(fid("envelope.speed_max", 405, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
+    debug_assert_eq!(v.len(), LAYOUT.len());
+    v
+}
