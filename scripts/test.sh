@@ -20,6 +20,9 @@ fi
 # --- Rust: unit, integration, property and doc tests ------------------------------
 cargo test --workspace --release
 
+# --- the Python package (python/): pinned venv, `pip install ./python`, pytest (incl. a Dask LocalCluster)
+bash python/run_tests.sh
+
 # --- FMUs and the Python harness (fmpy), then the Rust `fmi` crate against the packaged FMU
 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
 

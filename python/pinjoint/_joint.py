@@ -1,0 +1,180 @@
+"""The Joint class: the model over NumPy arrays."""
+
+from __future__ import annotations
+
+from typing import Any, Dict, Optional, Tuple
+
+import numpy as np
+
+from ._coerce import ParamsLike, as_float_array, as_params
+from ._native import REGIMES, Params, _Joint
+
+#: Default envelope of the table/boundary/auto levels: loads 5-60 kN, speed magnitudes
+#: 0.01-10 rad/s (the PinJoint FMU's default: the paper's rig region and beyond).
+DEFAULT_ENVELOPE: Tuple[float, float, float, float] = (5e3, 60e3, 0.01, 10.0)
+
+_REGIME_NAMES = np.array(REGIMES)
+
+
+def default_params() -> Params:
+    """The paper's joint: Tables 1-3 and mu_c = 0.12 (section 3.1), in SI units."""
+    return Params()
+
+
+class Joint:
+    """The pin joint's friction model, evaluated over NumPy arrays.
+
+    Joint(params=None, fidelity="full", tolerance=1e-4, envelope=None)
+
+    params     None (the paper's joint), a pinjoint.Params, a dict with the parameter
+               file's keys ({"geometry": {"pin_radius": 0.028}} or
+               {"geometry.pin_radius": 0.028}), or the path of a TOML parameter file.
+               Validated: an unknown key, a non-finite or out-of-range value raises
+               ValueError naming the parameter, its value and unit.
+    fidelity   "full" (the complete load-sharing solve, the default), "table" (the
+               Stribeck map tabulated over the envelope to `tolerance`), "boundary"
+               (mu = mu_c) or "auto" (the cheapest level within `tolerance`).
+    tolerance  largest relative error accepted in mu, torque and h_c (absolute in the
+               load shares) for table, boundary and auto; dimensionless, > 0.
+    envelope   (load_min, load_max, speed_min, speed_max) in N and rad/s: where the table
+               and boundary levels answer. Default DEFAULT_ENVELOPE (5-60 kN,
+               0.01-10 rad/s). Points outside it are answered by the complete solve,
+               as at "full" (counted in `fallbacks`).
+
+    The model: Greenwood-Williamson asperity contact, Moes' central film thickness scaled
+    by the load-sharing factors gamma1/gamma2, Roelands viscosity and Bair-Winer limiting
+    shear give the friction coefficient mu (eq. 10) and the torque T = mu*R*P (eq. 11),
+    its magnitude; it acts against the motion. The model depends on |speed|. At speed 0,
+    mu = mu_c exactly. The regime names the negligible carrier: "boundary" when the fluid
+    carries under 1 % of the load, "full-film" when the asperities carry under 1 %,
+    "mixed" otherwise.
+
+    evaluate(load, speed) broadcasts its two inputs (NumPy rules) and returns a dict of
+    arrays of the broadcast shape with the columns of `pinjoint sweep`:
+    load (N), speed (rad/s), friction_coefficient (-), torque (N*m), film_thickness (m,
+    central h_c), lambda_ratio (-), fluid_load_fraction (1/gamma1), asperity_load_fraction
+    (1/gamma2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-), and
+    regime (strings). At fidelity "full" each number equals the Rust library's (and the CLI
+    sweep's) bit for bit. The GIL is released and large arrays use every core (rayon; set
+    RAYON_NUM_THREADS to limit it).
+
+    A Joint pickles (its parameters and fidelity settings; the rebuilt joint gives
+    bit-identical results), so it travels to multiprocessing and Dask workers.
+
+    >>> joint = Joint()
+    >>> joint.evaluate(20e3, 0.2)["friction_coefficient"]      # 0-d array
+    >>> out = joint.evaluate(np.linspace(5e3, 60e3, 12)[:, None], np.logspace(-2, 2, 50))
+    >>> out["torque"].shape
+    (12, 50)
+    """
+
+    __slots__ = ("_params", "_fidelity", "_tolerance", "_envelope", "_native")
+
+    def __init__(
+        self,
+        params: ParamsLike = None,
+        fidelity: str = "full",
+        tolerance: float = 1e-4,
+        envelope: Optional[Tuple[float, float, float, float]] = None,
+    ) -> None:
+        p = as_params(params)
+        if not isinstance(fidelity, str):
+            raise TypeError(f"fidelity must be a string (full, table, boundary or auto), not {type(fidelity).__name__}")
+        env = DEFAULT_ENVELOPE if envelope is None else tuple(float(x) for x in envelope)
+        if len(env) != 4:
+            raise ValueError(f"envelope must be (load_min N, load_max N, speed_min rad/s, speed_max rad/s), got {envelope!r}")
+        self._native = _Joint(p, fidelity, float(tolerance), env)
+        self._params = p
+        self._fidelity = fidelity.strip().lower()
+        self._tolerance = float(tolerance)
+        self._envelope = env
+
+    @property
+    def params(self) -> Params:
+        """The validated parameter set."""
+        return self._params
+
+    @property
+    def fidelity(self) -> str:
+        """The fidelity level asked for: full, table, boundary or auto."""
+        return self._fidelity
+
+    @property
+    def level(self) -> str:
+        """The level in use: full, table or boundary (what auto picked)."""
+        return self._native.chosen
+
+    @property
+    def tolerance(self) -> float:
+        """The tolerance asked for (relative in mu, torque, h_c)."""
+        return self._tolerance
+
+    @property
+    def envelope(self) -> Tuple[float, float, float, float]:
+        """(load_min N, load_max N, speed_min rad/s, speed_max rad/s) of the table/boundary level."""
+        return self._envelope  # type: ignore[return-value]
+
+    @property
+    def error_bound(self) -> float:
+        """The measured error bound of the level in use inside the envelope (full: the solver's)."""
+        return self._native.error_bound
+
+    @property
+    def fallbacks(self) -> int:
+        """Points so far answered by the full solve because they were outside the envelope."""
+        return self._native.fallbacks
+
+    @property
+    def capacity(self) -> float:
+        """The largest load (N) the asperity model can take for these parameters."""
+        return self._native.capacity
+
+    def evaluate(self, load: Any, speed: Any) -> Dict[str, np.ndarray]:
+        """The model at every (load, speed) pair, NumPy-broadcast.
+
+        load   N, > 0 (and below `capacity`); scalar, list or array of real numbers.
+        speed  rad/s, finite (the angular velocity; the model uses its magnitude).
+
+        Integer and floating dtypes (float16/32/64, any int) are accepted and converted to
+        float64; bool, complex, string and object arrays are a TypeError. Shapes that do not
+        broadcast are a ValueError. A point the model cannot take (NaN or infinite input,
+        load <= 0, load beyond the asperity model's capacity) raises ValueError naming the
+        index (in the broadcast shape), the quantity, its value and unit, for the first such
+        point in C order; nothing is returned then.
+
+        Returns a dict of arrays of the broadcast shape: load, speed, then RESULT_COLUMNS
+        (float64, SI units; regime as strings "boundary", "mixed", "full-film").
+        """
+        lo = as_float_array("load", "N", load)
+        sp = as_float_array("speed", "rad/s", speed)
+        try:
+            lo_b, sp_b = np.broadcast_arrays(lo, sp)
+        except ValueError:
+            raise ValueError(
+                f"load (shape {lo.shape}) and speed (shape {sp.shape}) do not broadcast to one shape"
+            ) from None
+        shape = lo_b.shape
+        flat_l = np.ascontiguousarray(lo_b).reshape(-1)
+        flat_s = np.ascontiguousarray(sp_b).reshape(-1)
+        cols, codes = self._native.evaluate_flat(flat_l, flat_s, list(shape))
+        out: Dict[str, np.ndarray] = {
+            "load": flat_l.copy().reshape(shape),
+            "speed": flat_s.copy().reshape(shape),
+        }
+        for name, arr in cols.items():
+            out[name] = arr.reshape(shape)
+        out["regime"] = _REGIME_NAMES[codes].reshape(shape)
+        return out
+
+    def __reduce__(self):
+        return (_rebuild, (self._params, self._fidelity, self._tolerance, self._envelope))
+
+    def __repr__(self) -> str:
+        extra = ""
+        if self._fidelity != "full":
+            extra = f", fidelity={self._fidelity!r}, tolerance={self._tolerance!r}, envelope={self._envelope!r}"
+        return f"pinjoint.Joint({self._params!r}{extra})"
+
+
+def _rebuild(params: Params, fidelity: str, tolerance: float, envelope: Tuple[float, float, float, float]) -> Joint:
+    return Joint(params, fidelity, tolerance, envelope)

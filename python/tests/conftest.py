@@ -1,0 +1,68 @@
+"""Shared fixtures: the `pinjoint` command line (the reference: the Rust library through its
+own CSV front end) and helpers to run `sweep` and `cycle` on it."""
+
+from __future__ import annotations
+
+import csv
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="session")
+def cli() -> Path:
+    """target/release/pinjoint (or $PINJOINT_CLI), built with cargo when missing."""
+    path = Path(os.environ.get("PINJOINT_CLI", ROOT / "target" / "release" / "pinjoint"))
+    if not path.exists():
+        subprocess.run(["cargo", "build", "--release", "-q", "--bin", "pinjoint"], cwd=ROOT, check=True)
+    assert path.exists(), path
+    return path
+
+
+def read_csv(path: Path) -> dict:
+    """Columns of a CSV file; numeric ones as float64 arrays (exact: the CLI prints the
+    shortest text that reads back as the same double)."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], rows[1:]
+    out = {}
+    for j, name in enumerate(header):
+        col = [r[j] for r in body]
+        try:
+            out[name] = np.array([float(x) for x in col])
+        except ValueError:
+            out[name] = np.array(col)
+    return out
+
+
+@pytest.fixture
+def sweep(cli, tmp_path):
+    """sweep(loads, speeds, *flags) -> the CLI's output columns."""
+
+    def run(loads, speeds, *flags):
+        src, dst = tmp_path / "in.csv", tmp_path / "out.csv"
+        with open(src, "w") as f:
+            f.write("load,speed\n")
+            for l, w in zip(loads, speeds):
+                f.write(f"{float(l)!r},{float(w)!r}\n")
+        subprocess.run([str(cli), "sweep", "--input", str(src), "--output", str(dst), *flags], check=True, capture_output=True)
+        return read_csv(dst)
+
+    return run
+
+
+@pytest.fixture
+def cycle_cli(cli, tmp_path):
+    """cycle_cli(*flags) -> the columns of the CLI's cycle.csv."""
+
+    def run(*flags):
+        out = tmp_path / "cycle"
+        subprocess.run([str(cli), "cycle", "--output", str(out), *flags], check=True, capture_output=True)
+        return read_csv(out / "cycle.csv")
+
+    return run
