@@ -4,10 +4,11 @@
 //! 1. **low speed**: |ω| < `speed_fraction` × the record's peak speed (its 95th percentile of
 //!    |ω|, robust to spikes). Around every reversal the joint sticks, the static (breakaway)
 //!    peak rises above μ_c·R·P and the rig accelerates hardest; or
-//! 2. **settling**: it comes less than `settle_time` after the last reversal (the last sign
-//!    change of ω before the motion reached the speed threshold) or after the start of the
-//!    record: the breakaway peak decays and the servo rings there (MODEL_NOTES: "at 1 Hz,
-//!    oscillation in the recorded torque").
+//! 2. **settling**: it comes less than `settle_time` after the motion, past a reversal, rose
+//!    above the speed threshold in its new direction (or after the start of the record): the
+//!    joint breaks away, the static peak decays and the servo rings there (MODEL_NOTES: "at
+//!    1 Hz, oscillation in the recorded torque"). Counting from the threshold crossing rather
+//!    than from the zero of ω makes the window independent of how long the joint stuck.
 //!
 //! The samples between two reversals that pass both tests form one *stroke*; strokes are the
 //! units of the cluster-robust standard errors and of the bootstrap.
@@ -88,7 +89,7 @@ pub fn classify(record: &str, time: &[f64], omega: &[f64], rule: &ExclusionRule)
     let mut stroke = vec![None; n];
     let mut reasons: Vec<Option<Reason>> = vec![None; n];
     let mut reversals = Vec::new();
-    let (mut sign, mut t_rev, mut index) = (0.0f64, time.first().copied().unwrap_or(0.0), 0usize);
+    let (mut sign, mut t_settle, mut index) = (0.0f64, time.first().copied().unwrap_or(0.0), 0usize);
     // The last sample with ω ≤ 0 and the last with ω ≥ 0: where a reversal to + / to − began.
     let (mut last_nonpos, mut last_nonneg) = (0usize, 0usize);
     for i in 0..n {
@@ -100,12 +101,14 @@ pub fn classify(record: &str, time: &[f64], omega: &[f64], rule: &ExclusionRule)
                     index += 1;
                     // The reversal: the last sample before this one not moving in the new direction.
                     let j = if s > 0.0 { last_nonpos } else { last_nonneg };
-                    t_rev = time[j];
-                    reversals.push(t_rev);
+                    reversals.push(time[j]);
+                    // Settling is counted from the motion's return above the threshold: the
+                    // stick at the reversal may last any time, and the breakaway ends it.
+                    t_settle = time[i];
                 }
                 sign = s;
             }
-            if time[i] - t_rev < rule.settle_time {
+            if time[i] - t_settle < rule.settle_time {
                 reasons[i] = Some(Reason::Settling);
             } else {
                 stroke[i] = Some(index);
@@ -164,9 +167,8 @@ mod tests {
         // Low speed: |cos| < 0.3 is a fraction 2·asin(0.3)/π of the time.
         let f = c.summary.low_speed as f64 / n as f64;
         assert!((f - 2.0 * 0.3f64.asin() / std::f64::consts::PI).abs() < 2e-3, "{f}");
-        // Settling beyond the low-speed band: 0.1 s − asin(0.3)/(2π) s after each reversal and at the start.
-        let extra = 0.1 - 0.3f64.asin() / std::f64::consts::TAU;
-        let expected = (8.0 * extra + 0.1) * 1000.0;
+        // Settling: 0.1 s after each threshold crossing and at the start.
+        let expected = 9.0 * 0.1 * 1000.0;
         assert!((c.summary.settling as f64 - expected).abs() < 10.0, "{} vs {expected}", c.summary.settling);
         assert_eq!(c.stroke.iter().flatten().max(), Some(&8));
         assert_eq!(c.summary.used, c.stroke.iter().filter(|s| s.is_some()).count());

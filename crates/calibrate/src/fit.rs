@@ -4,7 +4,7 @@
 use super::coords::{resolve, Extra, Transform, MU_C};
 use super::error::CalibrationError;
 use super::model::{shapes, Shape};
-use super::prepare::{prepare, Prepared};
+use super::prepare::{prepare, Prepared, STICK_SLIP_IRREGULARITY};
 use super::record::Record;
 use super::result::{Calibration, Estimate, Series};
 use super::uncertainty::{analyse, Uncertainty, MIN_BOOTSTRAP_CLUSTERS, MIN_CLUSTERS};
@@ -125,7 +125,17 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
     let mu = estimates.pop().expect("mu_c follows the extras");
     estimates.insert(0, mu);
 
-    let warnings = warnings(&extras, &jac, &model, &u, &estimates, &keys, clusters.len(), options);
+    let mut warnings = warnings(&extras, &jac, &model, &u, &estimates, &keys, clusters.len(), options);
+    for p in &prepared {
+        if let Some(x) = p.irregularity.filter(|x| *x > STICK_SLIP_IRREGULARITY) {
+            warnings.push(format!(
+                "record {}: the motion is irregular (sample-to-sample speed deviates from the smoothed speed by {:.0} % rms): \
+                 stick-slip? The quasi-static model does not describe it and the fitted mu_c will be biased (high)",
+                p.name,
+                100.0 * x
+            ));
+        }
+    }
     let rss = r.norm_squared();
     let series = series(&prepared, &params, &beta, options, np)?;
     let points_used = points.len();

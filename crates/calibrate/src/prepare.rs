@@ -26,7 +26,14 @@ pub struct Prepared {
     pub exclusion: RecordExclusion,
     /// Differentiator half-width used (samples).
     pub half_width: usize,
+    /// rms(raw − smoothed velocity)/rms(smoothed) over the used samples, the raw velocity
+    /// being the angle's central difference: ≈ 0 for smooth motion, ≈ 1 for stick-slip
+    /// (None without an angle column).
+    pub irregularity: Option<f64>,
 }
+
+/// Irregularity above which a record is reported as stick-slip.
+pub const STICK_SLIP_IRREGULARITY: f64 = 0.1;
 
 /// Check `record`, find its velocity and acceleration, and apply the exclusion rule.
 pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>) -> Result<Prepared, CalibrationError> {
@@ -67,6 +74,17 @@ pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>)
         return Err(CalibrationError::SpeedRange { record: name, peak, limit: MAX_SPEED, as_rad: peak.to_radians() });
     }
     let c = classify(&name, t, &omega, rule);
+    let irregularity = record.angle.as_ref().map(|a| {
+        let (mut num, mut den) = (0.0, 0.0);
+        for i in 1..n - 1 {
+            if c.stroke[i].is_some() {
+                let raw = (a[i + 1] - a[i - 1]) / (t[i + 1] - t[i - 1]);
+                num += (raw - omega[i]).powi(2);
+                den += omega[i].powi(2);
+            }
+        }
+        if den > 0.0 { (num / den).sqrt() } else { 0.0 }
+    });
     Ok(Prepared {
         name,
         time: t.clone(),
@@ -78,6 +96,7 @@ pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>)
         stroke: c.stroke,
         exclusion: c.summary,
         half_width: k,
+        irregularity,
     })
 }
 
