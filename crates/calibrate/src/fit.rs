@@ -126,6 +126,14 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
     estimates.insert(0, mu);
 
     let mut warnings = warnings(&extras, &jac, &model, &u, &estimates, &keys, clusters.len(), options);
+    let mean_abs = y.iter().map(|v| v.abs()).sum::<f64>() / y.len() as f64;
+    let rms = (r.norm_squared() / y.len() as f64).sqrt();
+    if rms > 0.1 * mean_abs {
+        warnings.push(format!(
+            "the fit is poor: rms residual {rms:.4} N.m is {:.0} % of the mean |torque| {mean_abs:.4} N.m; check each record's load (N) and units",
+            100.0 * rms / mean_abs
+        ));
+    }
     for p in &prepared {
         if let Some(x) = p.irregularity.filter(|x| *x > STICK_SLIP_IRREGULARITY) {
             warnings.push(format!(
