@@ -103,8 +103,8 @@ pub fn svgs(c: &Calibration) -> Result<(String, String, String)> {
         };
         angle.push(
             Chart::new(s.record.clone(), Axis::linear(x_label), Axis::linear("torque [N·m]"))
-                .series(Series::line("measured", pts(&|i| (x(i), s.measured[i]))).styled(Style::Points))
-                .series(Series::line("fitted", pts(&|i| (x(i), s.fitted[i]))).styled(Style::Points))
+                .series(Series::line("measured", pts(&|i| (x(i), s.measured[i]))))
+                .series(Series::line("fitted", pts(&|i| (x(i), s.fitted[i]))).styled(Style::Dashed))
                 .legend(Corner::LowerLeft),
         );
         resid.push(
