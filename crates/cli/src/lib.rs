@@ -2,6 +2,8 @@
 //! `error` and `output`, SVG charts in `plot`. A new subcommand adds a file and a
 //! variant of [`Command`]. The binary (`src/main.rs`) only calls [`main`].
 
+pub mod calibrate;
+pub mod calibrate_report;
 pub mod common;
 pub mod cycle;
 pub mod cycle_plots;
@@ -41,6 +43,7 @@ Examples:
   pinjoint map --output out/                        the paper's Figure 4 (CSV + SVG)
   pinjoint cycle --frequency 1 --amplitude 40 --load 20000 --cycles 3 --output out/
                                                     rig strokes (Figures 7, 11-13), eq. 11 average
+  pinjoint calibrate --input rec.csv --output out/  fit μ_c to measured torque cycles (95 % intervals)
   pinjoint params > joint.toml                      a parameter file to edit
 
 Run `pinjoint <command> --help` for each command's details.";
@@ -61,6 +64,7 @@ pub enum Command {
     Map(map::MapCmd),
     Cycle(cycle::CycleCmd),
     Figures(figures::FiguresCmd),
+    Calibrate(calibrate::CalibrateCmd),
 }
 
 pub fn run(cli: &Cli) -> error::Result<()> {
@@ -72,6 +76,7 @@ pub fn run(cli: &Cli) -> error::Result<()> {
         Command::Map(c) => map::run(c),
         Command::Cycle(c) => cycle::run(c),
         Command::Figures(c) => figures::run(c),
+        Command::Calibrate(c) => calibrate::run(c),
     }
 }
 

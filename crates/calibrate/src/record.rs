@@ -1,0 +1,103 @@
+//! One measured test: sampled time, angle and/or angular velocity, recorded actuator torque and
+//! load (SI units), and the checks that catch a bad record before it is fitted.
+
+use super::error::CalibrationError;
+
+/// The largest angle range accepted (rad): one turn. A landing-gear pin joint articulates
+/// through well under a turn; a record spanning more is taken to be in degrees.
+pub const MAX_ANGLE_RANGE: f64 = std::f64::consts::TAU;
+/// The largest |angular velocity| accepted (rad/s, ≈ 955 rpm; the paper's maps stop at 800 rpm).
+pub const MAX_SPEED: f64 = 100.0;
+/// The smallest peak speed that counts as motion (rad/s).
+pub const MIN_MOTION_SPEED: f64 = 1e-4;
+
+/// One test record (SI units). `torque` is the recorded actuator torque, positive in the
+/// direction of motion (the convention of `pinjoint cycle`'s `torque` column: T = J·α + sign(ω)·μRP).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Record {
+    /// A name for messages and the report (e.g. the file name).
+    pub name: String,
+    /// Sample times (s), strictly increasing.
+    pub time: Vec<f64>,
+    /// Pin angle (rad), if recorded.
+    pub angle: Option<Vec<f64>>,
+    /// Pin angular velocity (rad/s), if recorded; else differentiated from `angle`.
+    pub angular_velocity: Option<Vec<f64>>,
+    /// Recorded actuator torque (N·m), positive in the direction of motion.
+    pub torque: Vec<f64>,
+    /// Radial load (N) at each sample.
+    pub load: Vec<f64>,
+}
+
+impl Record {
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.time.len()
+    }
+    /// True when the record has no samples.
+    pub fn is_empty(&self) -> bool {
+        self.time.is_empty()
+    }
+
+    /// Check lengths, finiteness, time order, load and the plausibility of the angle range.
+    pub fn validate(&self) -> Result<(), CalibrationError> {
+        let rec = || self.name.clone();
+        let n = self.time.len();
+        let mut columns: Vec<(&'static str, &'static str, &[f64])> =
+            vec![("time", "s", &self.time), ("torque", "N.m", &self.torque), ("load", "N", &self.load)];
+        if let Some(a) = &self.angle {
+            columns.push(("angle", "rad", a));
+        }
+        if let Some(w) = &self.angular_velocity {
+            columns.push(("angular_velocity", "rad/s", w));
+        }
+        if self.angle.is_none() && self.angular_velocity.is_none() {
+            return Err(CalibrationError::NoKinematics { record: rec() });
+        }
+        for (column, unit, v) in &columns {
+            if v.len() != n {
+                return Err(CalibrationError::Length { record: rec(), column, len: v.len(), expected: n });
+            }
+            if let Some(row) = v.iter().position(|x| !x.is_finite()) {
+                let time = self.time[row];
+                return Err(CalibrationError::NonFinite { record: rec(), column, row, time, value: v[row], unit });
+            }
+        }
+        for (row, w) in self.time.windows(2).enumerate() {
+            if w[1] <= w[0] {
+                return Err(CalibrationError::TimeOrder { record: rec(), row: row + 1, previous: w[0], time: w[1] });
+            }
+        }
+        if let Some(row) = self.load.iter().position(|&p| p <= 0.0) {
+            return Err(CalibrationError::Load { record: rec(), row, value: self.load[row] });
+        }
+        if let Some(a) = &self.angle {
+            let range = range_of(a);
+            if range > MAX_ANGLE_RANGE {
+                return Err(CalibrationError::AngleRange {
+                    record: rec(),
+                    range,
+                    turns: range / MAX_ANGLE_RANGE,
+                    limit: MAX_ANGLE_RANGE,
+                    as_rad: range.to_radians(),
+                });
+            }
+        }
+        if let Some(w) = &self.angular_velocity {
+            let peak = w.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            if peak > MAX_SPEED {
+                return Err(CalibrationError::SpeedRange { record: rec(), peak, limit: MAX_SPEED, as_rad: peak.to_radians() });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// max − min of a non-empty slice (0 for an empty one).
+pub fn range_of(v: &[f64]) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    let (lo, hi) = v.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| (lo.min(x), hi.max(x)));
+    hi - lo
+}

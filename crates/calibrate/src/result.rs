@@ -1,0 +1,84 @@
+//! What a calibration returns.
+
+use super::exclusion::RecordExclusion;
+use pinjoint::Params;
+
+/// One fitted quantity (SI units).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Estimate {
+    /// `section.key`, or `torque_offset` for T_0.
+    pub key: String,
+    /// SI unit ("1" for dimensionless).
+    pub unit: &'static str,
+    pub value: f64,
+    /// Start value.
+    pub initial: f64,
+    /// Standard error (the larger of iid and cluster-robust, by the delta method for a
+    /// transformed parameter).
+    pub standard_error: f64,
+    /// Textbook σ²(JᵀJ)⁻¹ standard error.
+    pub standard_error_iid: f64,
+    /// Cluster-robust (strokes) standard error, when there are enough strokes.
+    pub standard_error_cluster: Option<f64>,
+    /// 95 % interval (t interval on the standard error ∪ bootstrap interval).
+    pub ci95: (f64, f64),
+    /// Bootstrap-over-strokes 95 % percentile interval, when there are enough strokes.
+    pub bootstrap_ci95: Option<(f64, f64)>,
+}
+
+/// Measured and fitted torque of one record, every sample.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    pub record: String,
+    pub time: Vec<f64>,
+    pub angle: Option<Vec<f64>>,
+    /// Angular velocity used (rad/s).
+    pub angular_velocity: Vec<f64>,
+    /// Load (N).
+    pub load: Vec<f64>,
+    /// Recorded torque (N·m).
+    pub measured: Vec<f64>,
+    /// J·α (N·m).
+    pub inertia_torque: Vec<f64>,
+    /// Fitted recorded torque J·α + sign(ω)μRP + T_0 (N·m).
+    pub fitted: Vec<f64>,
+    /// Whether the sample was used in the fit.
+    pub used: Vec<bool>,
+}
+
+/// The result of [`crate::calibrate`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Calibration {
+    /// The complete parameter set with the fitted values.
+    pub params: Params,
+    /// μ_c first, then the `--fit` keys in order.
+    pub estimates: Vec<Estimate>,
+    /// T_0, if fitted.
+    pub offset: Option<Estimate>,
+    /// Keys of the rows/columns of `correlation` (estimates, then `torque_offset`).
+    pub correlation_keys: Vec<String>,
+    /// Correlation of the fit coordinates.
+    pub correlation: Vec<Vec<f64>>,
+    /// Condition number of the column-scaled JᵀJ.
+    pub condition: f64,
+    /// RMS of the residuals over the used samples (N·m).
+    pub rms_residual: f64,
+    pub points_used: usize,
+    pub points_excluded: usize,
+    /// Strokes (clusters) among the used samples.
+    pub strokes: usize,
+    /// Degrees of freedom and quantile of the t interval.
+    pub dof: usize,
+    pub quantile: f64,
+    /// Differentiator half-width of each record (samples).
+    pub half_widths: Vec<usize>,
+    /// What was excluded, per record.
+    pub exclusions: Vec<RecordExclusion>,
+    /// Identifiability and interval warnings.
+    pub warnings: Vec<String>,
+    /// Inertia subtracted (kg·m²).
+    pub inertia: f64,
+    /// Levenberg–Marquardt evaluations (0 for the linear fit).
+    pub evaluations: usize,
+    pub series: Vec<Series>,
+}

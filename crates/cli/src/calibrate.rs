@@ -1,0 +1,238 @@
+//! `pinjoint calibrate`: fit the model to measured torque cycles (issue 14).
+//!
+//! Reads one CSV per test (the columns `pinjoint cycle` writes: `time` s, `angle` rad and/or
+//! `angular_velocity` rad/s, `torque` N·m, and `load` N or `--load`), fits with the
+//! `pinjoint-calibrate` library and writes `calibrated.toml`, `report.md`, `report.html`,
+//! `fit.csv` and three SVG plots (see `calibrate_report`).
+
+use pinjoint_calibrate as cal;
+
+use super::calibrate_report::{fit_csv, report_html, report_json, report_md, svgs, toml_file};
+use super::error::{CliError, Result};
+use super::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
+use cal::{Calibration, ExclusionRule, Options, Record};
+use clap::Args;
+use pinjoint::rig::RigConfig;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+#[derive(Args, Debug)]
+#[command(
+    about = "Fit the model to measured torque cycles: mu_c (and any --fit key) with 95 % intervals",
+    long_about = "Fit the friction model to recorded torque cycles (several files: several loads and \
+frequencies, fitted jointly).\n\n\
+Each --input is a CSV with a header naming (as `pinjoint cycle` writes them): time [s], angle [rad] \
+and/or angular_velocity [rad/s], torque [N·m] (the recorded actuator torque, positive in the direction \
+of motion) and load [N] (or --load for the whole file). Other columns are ignored; '#' starts a comment line.\n\n\
+The recorded torque is modelled as T = J·α + sign(ω)·μ(P,|ω|)·R·P + T0 with μ = μ_fluid + μ_c/γ2: \
+J·α is subtracted (J = rig.inertia of --params, default 0.05 kg·m², or --inertia), T0 is a fitted \
+sensor offset. μ_c is fitted by linear least squares on the model's shape (γ2 and μ_fluid do not \
+depend on μ_c); --fit adds parameter keys, fitted by Levenberg-Marquardt in log/logit coordinates. \
+Velocity, when not recorded, comes from the angle by a Savitzky-Golay cubic over 1/40 of a stroke.\n\n\
+Exclusion rule (reported): samples with |ω| below --speed-fraction × the record's peak speed (95th \
+percentile), and the first --settle-time seconds of each stroke above that speed (breakaway peak, servo \
+ringing) and of the record.\n\n\
+Intervals: the larger of the iid and the cluster-robust (strokes as clusters) standard error with \
+Student-t quantiles, joined with a bootstrap over strokes when there are at least 20.\n\n\
+Writes DIR/calibrated.toml (a complete parameter file for --params and as FMU start values), \
+DIR/report.md, DIR/report.html, DIR/fit.csv, DIR/torque_time.svg, DIR/torque_angle.svg, DIR/residuals.svg.\n\n\
+Examples:\n  \
+pinjoint calibrate --input a.csv --load 20000 --input b.csv --load 40000 --output out/cal\n  \
+pinjoint calibrate --input rig.csv --load 20000 --fit lubricant.viscosity --output out/cal --json"
+)]
+pub struct CalibrateCmd {
+    /// A record (CSV); repeat for several
+    #[arg(long, value_name = "FILE", required = true)]
+    pub input: Vec<PathBuf>,
+    /// Radial load in N for inputs without a `load` column (> 0): one value for every input, or
+    /// one per --input in the same order (`pinjoint cycle` writes no load column)
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub load: Vec<f64>,
+    /// Parameter file (TOML): start values and fixed parameters; its [rig] inertia is subtracted
+    #[arg(long, value_name = "FILE")]
+    pub params: Option<PathBuf>,
+    /// Parameter keys fitted besides friction.boundary_friction_coefficient (section.key, comma-separated)
+    #[arg(long, value_name = "KEY,...", value_delimiter = ',')]
+    pub fit: Vec<String>,
+    /// Rotating inertia J in kg·m² whose J·α is subtracted [default: the file's rig.inertia, else 0.05]
+    #[arg(long, value_name = "KG_M2", allow_negative_numbers = true)]
+    pub inertia: Option<f64>,
+    /// Do not fit a torque offset
+    #[arg(long)]
+    pub no_offset: bool,
+    /// Exclude samples slower than this fraction of the record's peak speed
+    #[arg(long, value_name = "FRACTION", default_value_t = ExclusionRule::default().speed_fraction, allow_negative_numbers = true)]
+    pub speed_fraction: f64,
+    /// Exclude this many seconds at the start of each stroke above the speed threshold
+    #[arg(long, value_name = "S", default_value_t = ExclusionRule::default().settle_time, allow_negative_numbers = true)]
+    pub settle_time: f64,
+    /// Output directory (created if needed)
+    #[arg(long, value_name = "DIR")]
+    pub output: PathBuf,
+    /// Print the result as one JSON object on standard output (instead of the summary)
+    #[arg(long)]
+    pub json: bool,
+}
+
+pub fn run(cmd: &CalibrateCmd) -> Result<()> {
+    if let Some(p) = cmd.load.iter().find(|p| !(p.is_finite() && **p > 0.0)) {
+        return Err(CliError::Invalid(format!("--load = {p} N is invalid: it must be a finite number > 0 N")));
+    }
+    if cmd.load.len() > 1 && cmd.load.len() != cmd.input.len() {
+        return Err(CliError::Invalid(format!(
+            "{} --load values for {} --input files: give one load for all, or one per input in order",
+            cmd.load.len(),
+            cmd.input.len()
+        )));
+    }
+    let load_of = |i: usize| if cmd.load.len() == 1 { Some(cmd.load[0]) } else { cmd.load.get(i).copied() };
+    let config = match &cmd.params {
+        None => RigConfig::default(),
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+            RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })?
+        }
+    };
+    let records = cmd.input.iter().enumerate().map(|(i, p)| read_record(p, load_of(i))).collect::<Result<Vec<_>>>()?;
+    let options = Options {
+        params: config.model,
+        fit: cmd.fit.iter().map(|k| k.trim().to_string()).filter(|k| !k.is_empty()).collect(),
+        inertia: cmd.inertia.unwrap_or(config.rig.inertia),
+        fit_offset: !cmd.no_offset,
+        exclusion: ExclusionRule { speed_fraction: cmd.speed_fraction, settle_time: cmd.settle_time },
+        ..Options::default()
+    };
+    let cal = cal::calibrate(&records, &options).map_err(|e| CliError::Invalid(format!("calibrate: {e}")))?;
+    let dir = output_dir(&cmd.output)?;
+    let inputs: Vec<String> = cmd.input.iter().map(|p| p.display().to_string()).collect();
+    let (time_svg, angle_svg, resid_svg) = svgs(&cal)?;
+    let files: [(&str, String); 6] = [
+        ("calibrated.toml", toml_file(&cal, &inputs)),
+        ("report.md", report_md(&cal, &inputs)),
+        ("report.html", report_html(&cal, &inputs, [&time_svg, &angle_svg, &resid_svg])),
+        ("torque_time.svg", time_svg.clone()),
+        ("torque_angle.svg", angle_svg.clone()),
+        ("residuals.svg", resid_svg.clone()),
+    ];
+    let mut written = Vec::new();
+    let csv_path = dir.join("fit.csv");
+    refuse_input(&csv_path, &cmd.input)?;
+    write_atomic(&csv_path, |w| fit_csv(w, &cal))?;
+    written.push(csv_path);
+    for (name, text) in &files {
+        let path = dir.join(name);
+        refuse_input(&path, &cmd.input)?;
+        write_text(&path, text)?;
+        written.push(path);
+    }
+    if cmd.json {
+        let json = report_json(&cal);
+        to_stdout(|w| writeln!(w, "{json}"))
+    } else {
+        to_stdout(|w| summary(w, &cal))?;
+        report_written(&written)
+    }
+}
+
+/// An output must not replace one of the inputs.
+fn refuse_input(out: &Path, inputs: &[PathBuf]) -> Result<()> {
+    let canon = |p: &Path| std::fs::canonicalize(p).ok();
+    if let Some(o) = canon(out)
+        && inputs.iter().any(|i| canon(i).as_ref() == Some(&o))
+    {
+        return Err(CliError::Invalid(format!("output {} is one of the inputs: choose another --output", out.display())));
+    }
+    Ok(())
+}
+
+fn summary(w: &mut dyn Write, c: &Calibration) -> std::io::Result<()> {
+    for e in c.estimates.iter().chain(c.offset.iter()) {
+        writeln!(
+            w,
+            "{} = {:.6} (standard error {:.2e}, 95 % interval {:.6} to {:.6}) {}",
+            e.key, e.value, e.standard_error, e.ci95.0, e.ci95.1, if e.unit == "1" { "" } else { e.unit }
+        )?;
+    }
+    writeln!(w, "rms residual {:.4} N.m over {} samples used, {} excluded, {} strokes", c.rms_residual, c.points_used, c.points_excluded, c.strokes)?;
+    for x in &c.warnings {
+        writeln!(w, "warning: {x}")?;
+    }
+    Ok(())
+}
+
+/// Read one record: the header must name `time`, `torque`, `angle` and/or `angular_velocity`,
+/// and `load` unless `load` is given; every value must be a finite number.
+pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
+    let file = path.display().to_string();
+    let bad = |line: u64, message: String| CliError::Input { file: file.clone(), line, message };
+    let text = std::fs::read(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
+    let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).comment(Some(b'#')).from_reader(text.as_slice());
+    let header: Vec<String> = rdr.headers().map_err(|e| bad(1, format!("unreadable CSV: {e}")))?.iter().map(str::to_string).collect();
+    let header_line = rdr.headers().ok().and_then(|h| h.position().map(|p| p.line())).unwrap_or(1);
+    let find = |name: &str| -> Result<Option<usize>> {
+        let hits: Vec<usize> = header.iter().enumerate().filter(|(_, h)| *h == name).map(|(i, _)| i).collect();
+        match hits.as_slice() {
+            [] => Ok(None),
+            [i] => Ok(Some(*i)),
+            _ => Err(bad(header_line, format!("the header names the column `{name}` more than once"))),
+        }
+    };
+    let need = |name: &str, unit: &str, why: &str| -> Result<usize> {
+        find(name)?.ok_or_else(|| bad(header_line, format!("the header has no `{name}` column ({unit}){why}; it reads: {}", header.join(","))))
+    };
+    let it = need("time", "s", "")?;
+    let iq = need("torque", "N.m, the recorded actuator torque", "")?;
+    let (ia, iw) = (find("angle")?, find("angular_velocity")?);
+    if ia.is_none() && iw.is_none() {
+        return Err(bad(header_line, format!("the header has neither `angle` (rad) nor `angular_velocity` (rad/s); it reads: {}", header.join(","))));
+    }
+    let il = match load {
+        Some(_) => find("load")?,
+        None => Some(need("load", "N", " and no --load was given")?),
+    };
+    if load.is_some() && il.is_some() {
+        return Err(bad(header_line, "the file has a `load` column and --load was given too: use one".into()));
+    }
+    let mut r = Record { name: file.clone(), angle: ia.map(|_| Vec::new()), angular_velocity: iw.map(|_| Vec::new()), ..Record::default() };
+    for rec in rdr.records() {
+        let rec = rec.map_err(|e| bad(e.position().map_or(0, |p| p.line()), format!("unreadable CSV: {e}")))?;
+        let line = rec.position().map_or(0, |p| p.line());
+        let num = |i: usize, name: &str, unit: &str| -> Result<f64> {
+            let text = rec.get(i).ok_or_else(|| bad(line, format!("column {name} ({unit}) is missing: the row has {} field(s)", rec.len())))?;
+            if text.is_empty() {
+                return Err(bad(line, format!("column {name} ({unit}) is empty")));
+            }
+            let v: f64 = text.parse().map_err(|_| bad(line, format!("column {name} = `{text}` is not a number ({unit})")))?;
+            if !v.is_finite() {
+                return Err(bad(line, format!("column {name} = {text} {unit} is not a finite number")));
+            }
+            Ok(v)
+        };
+        r.time.push(num(it, "time", "s")?);
+        r.torque.push(num(iq, "torque", "N.m")?);
+        if let (Some(i), Some(v)) = (ia, r.angle.as_mut()) {
+            v.push(num(i, "angle", "rad")?);
+        }
+        if let (Some(i), Some(v)) = (iw, r.angular_velocity.as_mut()) {
+            v.push(num(i, "angular_velocity", "rad/s")?);
+        }
+        let p = match (il, load) {
+            (Some(i), _) => num(i, "load", "N")?,
+            (None, Some(p)) => p,
+            (None, None) => unreachable!("load column required above"),
+        };
+        if p <= 0.0 {
+            return Err(bad(line, format!("column load = {p} N is invalid: the load must be > 0 N")));
+        }
+        r.load.push(p);
+        if let Some(w) = r.time.windows(2).last()
+            && w[1] <= w[0]
+        {
+            return Err(bad(line, format!("time = {} s does not increase (the row before has {} s)", w[1], w[0])));
+        }
+    }
+    if r.time.is_empty() {
+        return Err(bad(header_line, "no data rows".into()));
+    }
+    Ok(r)
+}

@@ -1,0 +1,113 @@
+//! `pinjoint calibrate` run as a user would: records made by `pinjoint cycle` with a changed
+//! μ_c, breakaway peaks and two loads; the JSON object, the files, the calibrated parameter file
+//! read back by `pinjoint point`; and clear errors for bad files.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+struct Out {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn run(args: &[&str]) -> Out {
+    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint")).args(args).output().expect("binary runs");
+    Out { code: o.status.code().expect("exited"), stdout: String::from_utf8(o.stdout).unwrap(), stderr: String::from_utf8(o.stderr).unwrap() }
+}
+
+fn ok(args: &[&str]) -> Out {
+    let o = run(args);
+    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
+    o
+}
+
+fn fail(args: &[&str]) -> String {
+    let o = run(args);
+    assert_eq!(o.code, 1, "{args:?} should fail: {}", o.stdout);
+    o.stderr
+}
+
+/// `pinjoint cycle` at `load` N and 1 Hz with μ_c = 0.105 and a breakaway factor of 1.3.
+fn cycle(dir: &Path, name: &str, load: &str) -> PathBuf {
+    let params = dir.join("truth.toml");
+    std::fs::write(&params, "[friction]\nboundary_friction_coefficient = 0.105\n[rig]\nbreakaway_factor = 1.3\n").unwrap();
+    let out = dir.join(name);
+    ok(&["cycle", "--frequency", "1", "--load", load, "--cycles", "8", "--samples-per-cycle", "1000", "--params", params.to_str().unwrap(), "--output", out.to_str().unwrap()]);
+    out.join("cycle.csv")
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+#[test]
+fn calibrates_cycle_records_and_writes_every_file() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (a, b) = (cycle(tmp.path(), "a", "20000"), cycle(tmp.path(), "b", "40000"));
+    let out = tmp.path().join("cal");
+    let o = ok(&["calibrate", "--input", s(&a), "--load", "20000", "--input", s(&b), "--load", "40000", "--output", s(&out), "--json"]);
+    // Exactly one JSON object on stdout.
+    let v: serde_json::Value = serde_json::from_str(o.stdout.trim()).expect("one JSON object");
+    assert_eq!(o.stdout.trim().lines().count(), 1);
+    let mu = &v["parameters"]["friction.boundary_friction_coefficient"];
+    let (value, lo, hi) = (mu["value"].as_f64().unwrap(), mu["ci95"][0].as_f64().unwrap(), mu["ci95"][1].as_f64().unwrap());
+    println!("{}", o.stdout);
+    assert!((value - 0.105).abs() < 1e-3 && lo <= 0.105 && 0.105 <= hi, "{value} [{lo}, {hi}]");
+    assert!(mu["standard_error"].as_f64().unwrap() > 0.0);
+    assert!(v["rms_residual"].as_f64().unwrap() > 0.0);
+    let (used, excluded) = (v["points_used"].as_u64().unwrap(), v["points_excluded"].as_u64().unwrap());
+    assert_eq!(used + excluded, 2 * 8001);
+    for f in ["calibrated.toml", "report.md", "report.html", "fit.csv", "torque_time.svg", "torque_angle.svg", "residuals.svg"] {
+        assert!(out.join(f).metadata().unwrap().len() > 100, "{f}");
+    }
+    let csv = std::fs::read_to_string(out.join("fit.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 2 * 8001);
+    assert_eq!(csv.lines().filter(|l| l.ends_with(",1")).count() as u64, used);
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(html.matches("<svg").count() >= 3 && html.contains("Excluded samples"));
+    // The calibrated file is a complete parameter file: `point` reads it and gives μ_c at rest.
+    let p = ok(&["point", "--load", "20000", "--speed", "0", "--json", "--params", s(&out.join("calibrated.toml"))]);
+    let pv: serde_json::Value = serde_json::from_str(p.stdout.trim()).unwrap();
+    assert!((pv["friction_coefficient"].as_f64().unwrap() - value).abs() < 1e-15, "{}", p.stdout);
+    // Without --json: a summary and the files written.
+    let o = ok(&["calibrate", "--input", s(&a), "--load", "20000", "--output", s(&out)]);
+    assert!(o.stdout.contains("friction.boundary_friction_coefficient = 0.10") && o.stdout.contains("wrote"), "{}", o.stdout);
+}
+
+#[test]
+fn bad_files_are_named_with_line_column_and_unit() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let write = |name: &str, text: &str| {
+        let p = tmp.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let e = fail(&["calibrate", "--input", s(&write("a.csv", "time,angle,load\n0,0,1\n")), "--output", s(&out)]);
+    assert!(e.contains("a.csv, line 1") && e.contains("`torque`") && e.contains("N.m"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&write("b.csv", "time,torque,load\n0,0,1\n")), "--output", s(&out)]);
+    assert!(e.contains("neither `angle` (rad) nor `angular_velocity` (rad/s)"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&write("c.csv", "time,angle,torque\n0,0,1\n")), "--output", s(&out)]);
+    assert!(e.contains("`load`") && e.contains("--load"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&write("d.csv", "time,angle,torque,load\n0,0,1,5\n0.1,x,1,5\n")), "--output", s(&out)]);
+    assert!(e.contains("d.csv, line 3") && e.contains("angle = `x` is not a number (rad)"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&write("e.csv", "time,angle,torque,load\n0,0,1,5\n0.1,0.1,NaN,5\n")), "--output", s(&out)]);
+    assert!(e.contains("e.csv, line 3") && e.contains("torque = NaN N.m is not a finite number"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&write("f.csv", "time,angle,torque,load\n0,0,1,5\n0,0.1,1,5\n")), "--output", s(&out)]);
+    assert!(e.contains("line 3") && e.contains("does not increase"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&write("g.csv", "time,angle,torque,load\n0,0,1,5\n0.1,0.1,1,5\n")), "--output", s(&out)]);
+    assert!(e.contains("too short"), "{e}");
+    // Angle in degrees: a whole record of ±40°.
+    let mut text = String::from("time,angle,torque\n");
+    for i in 0..2000 {
+        let t = i as f64 * 1e-3;
+        text.push_str(&format!("{t},{},{}\n", 40.0 * (std::f64::consts::TAU * t).sin(), 60.0));
+    }
+    let e = fail(&["calibrate", "--input", s(&write("deg.csv", &text)), "--load", "20000", "--output", s(&out)]);
+    assert!(e.contains("deg.csv") && e.contains("degrees"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&write("h.csv", &text)), "--load", "1", "--load", "2", "--output", s(&out)]);
+    assert!(e.contains("2 --load values for 1 --input"), "{e}");
+    assert!(fail(&["calibrate", "--input", s(&tmp.path().join("missing.csv")), "--output", s(&out)]).contains("missing.csv"));
+    assert!(!out.join("calibrated.toml").exists(), "no output after a failure");
+}
