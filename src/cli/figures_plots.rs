@@ -57,7 +57,7 @@ impl CoreCurves {
                     .collect::<Result<Vec<_>>>()
             })
             .collect::<Result<Vec<_>>>()?;
-        let loads = lin_space(PAPER_LOADS[0], PAPER_LOADS[PAPER_LOADS.len() - 1], points.clamp(6, 56));
+        let loads = lin_space(PAPER_LOADS[0], PAPER_LOADS[PAPER_LOADS.len() - 1], points.max(12));
         let stroke_averages = PAPER_FREQUENCIES
             .iter()
             .map(|&f| loads.par_iter().map(|&p| stroke_average(joint, p, f, amplitude)).collect::<Result<Vec<_>>>())
