@@ -105,7 +105,7 @@ fractions 1/γ1 (fluid) and 1/γ2 (asperities), (c) λ against the Sommerfeld nu
 Dashed: the paper's simulated range, 1 and 800 rpm, where S runs from {} to {} at 20 kN and up to {} \
 at 5 kN (paper: \"0 to 0.15\"). Shaded: the speeds the rig's strokes reach (up to 41.9 rpm at 1 Hz), \
 for reference. As S grows the film takes a growing share of the load and μ falls, as the paper \
-describes. The paper states that over 1–800 rpm at 20 kN \"the dominant mechanism is one of solid \
+describes, down to a full-film minimum (past it the film's viscous friction grows with speed). The paper states that over 1–800 rpm at 20 kN \"the dominant mechanism is one of solid \
 contact and hydrodynamic film formation plays little part\". This model does not reproduce that: \
 the film carries half the load from {} on, μ is half of μ_c from {} rpm, and at 800 rpm the film \
 carries {} of the load (μ = {}, λ = {}). See the claims table for why.",
@@ -167,9 +167,10 @@ angle record; the flat parts at zero are the stick at each reversal), (c) torque
 the speed is low ({} at 70–80 % of the stroke) and lowest near zero degrees ({} at mid-stroke), \
 where the speed peaks and the entrained grease lifts part of the load. The overshoot after each \
 breakaway (up to {} from the quasi-static torque) is servo ringing of the rig model, whose gains \
-are assumed. The model's boundary friction has no static peak (rig.breakaway_factor = 1), so the \
-paper's \"slightly higher\" torque at the start and stop points is not reproduced; raising \
-breakaway_factor adds one.",
+are assumed. The model's torque is higher at the start and stop points only through μ(ω) (μ_c·R·P \
+where ω = 0); it has no static-friction peak above that (rig.breakaway_factor = 1), so the \
+paper's \"slightly higher\" torque there is only partly reproduced; raising breakaway_factor \
+adds a peak.",
             sig(s.tracking_error_deg, 2),
             sig(peak, 3),
             nm(s.outer_torque),
