@@ -252,7 +252,7 @@ printed exponents, minus sign in E', ω in rev/s tried); it would need η·u 30�
 (h_min is being added on branch physics); above 2 even at rest for loads up to 20 kN",
     ));
     // Sensitivity to μ_c.
-    let mut bumped: Params = joint.params().clone();
+    let mut bumped: Params = *joint.params();
     bumped.friction.boundary_friction_coefficient = mu_c * 1.1;
     let j2 = Joint::new(&bumped)?;
     let elasticity = |n: f64| -> Result<f64> {
@@ -591,6 +591,7 @@ mod tests {
     /// Adaptive Simpson quadrature of `f` over [a, b] to `tol` (an independent rule: the
     /// project's stroke average is a fixed midpoint rule in phase).
     fn simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
+        #[allow(clippy::too_many_arguments)]
         fn step(f: &dyn Fn(f64) -> f64, a: f64, b: f64, fa: f64, fm: f64, fb: f64, whole: f64, tol: f64, depth: u32) -> f64 {
             let m = 0.5 * (a + b);
             let (lm, rm) = (0.5 * (a + m), 0.5 * (m + b));
