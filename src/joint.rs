@@ -352,7 +352,18 @@ fn check_finite(op: &OperatingPoint) -> Result<(), ModelError> {
     Ok(())
 }
 
+/// Why [`evaluate`] failed: the parameters, or the operating point.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum EvaluateError {
+    /// The parameter set was rejected ([`Joint::new`]).
+    #[error(transparent)]
+    Params(#[from] crate::params::ParamError),
+    /// The operating point was rejected ([`Joint::evaluate`]).
+    #[error(transparent)]
+    Model(#[from] ModelError),
+}
+
 /// One-shot convenience: validate `params` and evaluate one point.
-pub fn evaluate(params: &Params, load: f64, omega: f64) -> Result<OperatingPoint, Box<dyn std::error::Error + Send + Sync>> {
+pub fn evaluate(params: &Params, load: f64, omega: f64) -> Result<OperatingPoint, EvaluateError> {
     Ok(Joint::new(params)?.evaluate(load, omega)?)
 }

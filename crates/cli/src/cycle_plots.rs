@@ -26,14 +26,23 @@ pub fn torque_axis(samples: &[Sample]) -> Axis {
 
 /// Recorded torque against time over `samples` (time counted from `t0`), with the core's
 /// quasi-static torque at each sample's speed dashed beside it.
-pub fn torque_time_chart(run: &CycleRun, samples: &[Sample], t0: f64, title: &str) -> Chart {
+/// `recorded` names the recorded trace in the legend.
+pub fn torque_time_chart(run: &CycleRun, samples: &[Sample], t0: f64, title: &str, recorded: &str) -> Chart {
     let r = run.config.model.geometry.pin_radius;
-    let x = if t0 == 0.0 { "time t [s]".to_string() } else { format!("time t − {} s [s]", readable(t0)) };
-    Chart::new(title, Axis::linear(x), torque_axis(samples))
-        .series(Series::line("recorded torque (actuator transducer)", points(samples, t0, |s| s.torque)))
+    Chart::new(title, time_axis(t0), torque_axis(samples))
+        .series(Series::line(recorded, points(samples, t0, |s| s.torque)))
         .series(Series::line("core μ(P, |ω|)·R·P at the sample's speed", points(samples, t0, |s| core_torque(s, r))).styled(Style::Dashed))
         .legend(Corner::LowerLeft)
 }
+
+/// The time axis of a trace drawn from `t0`: the run's time when `t0` is 0, else the time since
+/// the stroke began (not "t − 33.3333 s").
+fn time_axis(t0: f64) -> Axis {
+    Axis::linear(if t0 == 0.0 { "time t [s]" } else { "time since the stroke began [s]" })
+}
+
+/// The legend name of the recorded torque.
+pub const RECORDED: &str = "recorded torque (actuator transducer)";
 
 /// Recorded torque against the pin angle (degrees) over `samples`.
 pub fn torque_angle_chart(samples: &[Sample], title: &str) -> Chart {
@@ -44,7 +53,7 @@ pub fn torque_angle_chart(samples: &[Sample], title: &str) -> Chart {
 /// `torque_time.svg` of `pinjoint cycle`: every sample of the run.
 pub fn torque_time_svg(run: &CycleRun) -> Result<String> {
     let title = format!("Torque against time: {} ({} cycles from rest)", run_label(run), run.cycles);
-    Ok(line_plot(&torque_time_chart(run, &run.samples, 0.0, &title), (1000, 560))?)
+    Ok(line_plot(&torque_time_chart(run, &run.samples, 0.0, &title, RECORDED), (1000, 560))?)
 }
 
 /// `torque_angle.svg` of `pinjoint cycle`: the averaged cycles (the start-up stroke left out).
@@ -55,9 +64,9 @@ pub fn torque_angle_svg(run: &CycleRun) -> Result<String> {
 }
 
 /// The paper's Figure 7 from one stroke: (a) angle, (b) speed, (c) torque against time,
-/// (d) torque against angle.
-pub fn overview_svg(run: &CycleRun, stroke: &[Sample], t0: f64, title: &str) -> Result<String> {
-    let tx = || Axis::linear(format!("time t − {} s [s]", readable(t0)));
+/// (d) torque against angle. `recorded` names the recorded torque in the legend.
+pub fn overview_svg(run: &CycleRun, stroke: &[Sample], t0: f64, title: &str, recorded: &str) -> Result<String> {
+    let tx = || time_axis(t0);
     let angle = Chart::new("(a) angular displacement", tx(), Axis::linear("angle [deg]"))
         .series(Series::line("pin angle θ", points(stroke, t0, |s| s.angle.to_degrees())))
         .series(Series::line("command θ_cmd", points(stroke, t0, |s| s.command_angle.to_degrees())).styled(Style::Dashed))
@@ -65,7 +74,7 @@ pub fn overview_svg(run: &CycleRun, stroke: &[Sample], t0: f64, title: &str) -> 
     let speed = Chart::new("(b) rotational speed", tx(), Axis::linear("ω [rad/s]"))
         .series(Series::line("pin speed ω", points(stroke, t0, |s| s.angular_velocity)))
         .legend(Corner::UpperRight);
-    let torque = torque_time_chart(run, stroke, t0, "(c) torque against time");
+    let torque = torque_time_chart(run, stroke, t0, "(c) torque against time", recorded);
     let angle_torque = torque_angle_chart(stroke, "(d) torque against angle");
     Ok(stacked_plot(title, &[angle, speed, torque, angle_torque], (900, 1500))?)
 }

@@ -3,8 +3,9 @@
 
 use super::common::{csv_io, exact, lin_space, log_space, readable, PAPER_RPM_RANGE, RAD_S_PER_RPM};
 use super::error::Result;
+use super::figures_claims::claims;
 use super::figures_index::{entries, html, markdown, RunInfo};
-use super::figures_plots::{fig10_svg, fig7_svg, fig8_svg, fig9_svg, torque_cycle_svg, CoreCurves};
+use super::figures_plots::{fig10_svg, fig7_svg, fig8_svg, fig9_svg, nominal_speed, torque_cycle_svg, CoreCurves};
 use super::figures_rig::{at_frequency, averages_csv, conditions, find, simulate_all, traces_csv, RigResult, RigSettings, PAPER_FREQUENCIES};
 use super::map::{write_map, Grid, PAPER_LOADS};
 use super::output::{output_dir, to_stdout, write_atomic, write_text};
@@ -64,20 +65,37 @@ impl CoreSettings {
     }
 }
 
-/// `core_curves.csv`: the lines of Figures 8–10.
-fn core_csv(w: &mut dyn std::io::Write, core: &CoreCurves, pin_radius: f64) -> std::io::Result<()> {
+/// `core_curves.csv`: the model's lines of Figures 8–10, the eq. 11 stroke averages: one row
+/// per (load, frequency) of the frequency sweep (`curve` = `stroke_average_vs_frequency`) and of
+/// the load sweep (`stroke_average_vs_load`), with both speed readings of a stroke: the paper's
+/// nominal ω = 2πf and the mean |ω| = 4Af.
+fn core_csv(w: &mut dyn std::io::Write, core: &CoreCurves, pin_radius: f64, amplitude: f64) -> std::io::Result<()> {
     let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(["curve", "frequency", "load", "speed", "sliding_speed", "sommerfeld_number", "friction_coefficient"]).map_err(csv_io)?;
-    for (&p, curve) in PAPER_LOADS.iter().zip(&core.curves) {
-        for &(w, s, mu) in curve {
-            let row = [exact(f64::NAN), exact(p), exact(w), exact(w * pin_radius), exact(s), exact(mu)];
-            wtr.write_record(std::iter::once("steady".to_string()).chain(row)).map_err(csv_io)?;
+    wtr.write_record([
+        "curve",
+        "frequency",
+        "load",
+        "nominal_speed",
+        "mean_speed",
+        "nominal_sliding_speed",
+        "sommerfeld_number_nominal",
+        "sommerfeld_number_mean_speed",
+        "friction_coefficient",
+    ])
+    .map_err(csv_io)?;
+    let row = |wtr: &mut csv::Writer<&mut dyn std::io::Write>, curve: &str, f: f64, p: f64, s_per: f64, mu: f64| {
+        let (nominal, mean) = (nominal_speed(f), 4.0 * amplitude * f);
+        let vals = [f, p, nominal, mean, nominal * pin_radius, s_per * nominal, s_per * mean, mu];
+        wtr.write_record(std::iter::once(curve.to_string()).chain(vals.iter().map(|&v| exact(v)))).map_err(csv_io)
+    };
+    for ((&p, curve), &s_per) in PAPER_LOADS.iter().zip(&core.curves).zip(&core.s_per_rad_s) {
+        for &(f, mu) in curve {
+            row(&mut wtr, "stroke_average_vs_frequency", f, p, s_per, mu)?;
         }
     }
     for (&f, averages) in PAPER_FREQUENCIES.iter().zip(&core.stroke_averages) {
-        for (&p, &mu) in core.loads.iter().zip(averages) {
-            let row = [exact(f), exact(p), exact(f64::NAN), exact(f64::NAN), exact(f64::NAN), exact(mu)];
-            wtr.write_record(std::iter::once("stroke_average".to_string()).chain(row)).map_err(csv_io)?;
+        for ((&p, &mu), &s_per) in core.loads.iter().zip(averages).zip(&core.load_s_per_rad_s) {
+            row(&mut wtr, "stroke_average_vs_load", f, p, s_per, mu)?;
         }
     }
     wtr.flush()?;
@@ -109,7 +127,7 @@ fn core_figures(dir: &Path, joint: &Joint, s: &CoreSettings) -> Result<Vec<PathB
 type CsvFill<'a> = Box<dyn Fn(&mut dyn std::io::Write) -> std::io::Result<()> + 'a>;
 
 /// Render and write Figures 7–13 and their data.
-fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius: f64) -> Result<Vec<PathBuf>> {
+fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius: f64, amplitude: f64) -> Result<Vec<PathBuf>> {
     let mut files: Vec<(String, String)> = Vec::new();
     let mut csvs: Vec<(&str, CsvFill<'_>)> = Vec::new();
     if let Some(r) = find(results, 1.0, 20e3) {
@@ -120,7 +138,7 @@ fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius:
     files.push(("fig09_mu_sliding_speed.svg".into(), fig9_svg(results, core, pin_radius)?));
     files.push(("fig10_mu_load.svg".into(), fig10_svg(results, core)?));
     csvs.push(("rig_averages.csv", Box::new(|w| averages_csv(w, results))));
-    csvs.push(("core_curves.csv", Box::new(|w| core_csv(w, core, pin_radius))));
+    csvs.push(("core_curves.csv", Box::new(move |w| core_csv(w, core, pin_radius, amplitude))));
     let names = ["fig11_torque_0.03Hz", "fig12_torque_0.3Hz", "fig13_torque_1Hz"];
     for ((i, &f), name) in PAPER_FREQUENCIES.iter().enumerate().zip(names) {
         files.push((format!("{name}.svg"), torque_cycle_svg(results, f, 20e3, 11 + i as u32)?));
@@ -165,10 +183,11 @@ pub fn run(cmd: &FiguresCmd) -> Result<()> {
     let (mut paths, core) = core_paths?;
     let results = rig?;
     bar.set_message("figures");
-    paths.extend(rig_figures(&dir, &results, &core, pin_radius)?);
+    paths.extend(rig_figures(&dir, &results, &core, pin_radius, cfg.rig.amplitude)?);
     let info = RunInfo { quick: cmd.quick, samples_per_cycle: rig_settings.samples_per_cycle, rtol: rig_settings.rtol, atol: rig_settings.atol };
-    let list = entries(&joint, &results)?;
-    for (name, text) in [("index.html", html(&list, &info)), ("README.md", markdown(&list, &info))] {
+    let list = entries(&joint, &results, &core)?;
+    let table = claims(&joint, &results, cfg.rig.amplitude)?;
+    for (name, text) in [("index.html", html(&list, &table, &info)), ("README.md", markdown(&list, &table, &info))] {
         let p = dir.join(name);
         write_text(&p, &text)?;
         paths.push(p);

@@ -11,6 +11,7 @@ pub mod cycle_run;
 pub mod error;
 pub mod fidelity_args;
 pub mod figures;
+pub mod figures_claims;
 pub mod figures_index;
 pub mod figures_plots;
 pub mod figures_rig;

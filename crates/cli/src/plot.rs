@@ -68,6 +68,8 @@ pub enum Style {
     Dashed,
     Points,
     LinePoints,
+    /// Crosses at the points, no line.
+    Crosses,
 }
 
 /// A named set of (x, y) points. Non-finite points (and non-positive ones on log axes)
@@ -302,38 +304,96 @@ type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 /// Render one chart to SVG.
 pub fn line_plot(chart: &Chart, size: (u32, u32)) -> Result<String, PlotError> {
     let mut svg = String::new();
+    let mut paths = Vec::new();
     {
         let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
-        draw_chart(&root, chart)?;
+        draw_chart(&root, chart, &mut paths)?;
         root.present().map_err(err)?;
     }
-    Ok(svg)
+    substitute_paths(&svg, &paths)
 }
 
 /// Render several charts one above the other (each `size.1 / n` high), under one title.
 pub fn stacked_plot(title: &str, charts: &[Chart], size: (u32, u32)) -> Result<String, PlotError> {
     let mut svg = String::new();
+    let mut paths = Vec::new();
     {
         let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;
         let root = if title.is_empty() { root } else { root.titled(title, (FONT, 22)).map_err(err)? };
         let n = charts.len().max(1);
         for (area, chart) in root.split_evenly((n, 1)).iter().zip(charts) {
-            draw_chart(area, chart)?;
+            draw_chart(area, chart, &mut paths)?;
         }
         root.present().map_err(err)?;
     }
-    Ok(svg)
+    substitute_paths(&svg, &paths)
 }
 
-fn draw_chart(area: &Area<'_>, c: &Chart) -> Result<(), PlotError> {
+/// The text of the placeholder element that stands for sub-pixel path `k` until
+/// [`substitute_paths`] replaces it.
+fn path_marker(k: usize) -> String {
+    format!("@@pinjoint-path-{k}@@")
+}
+
+/// plotters' SVG backend rounds every coordinate to a whole pixel, which turns a smooth curve
+/// into a staircase. Lines are therefore drawn as placeholder `<text>` elements (keeping their
+/// place in the drawing order, under the legend) and replaced here by `<polyline>`s with
+/// sub-pixel coordinates. `paths[k]` replaces the element holding [`path_marker`]`(k)`.
+fn substitute_paths(svg: &str, paths: &[String]) -> Result<String, PlotError> {
+    let mut out = svg.to_string();
+    for (k, path) in paths.iter().enumerate() {
+        let marker = path_marker(k);
+        let at = out.find(&marker).ok_or_else(|| PlotError(format!("placeholder of path {k} missing")))?;
+        let start = out[..at].rfind("<text").ok_or_else(|| PlotError(format!("placeholder of path {k} is not a text element")))?;
+        let end = at + out[at..].find("</text>").ok_or_else(|| PlotError(format!("placeholder of path {k} is not closed")))? + "</text>".len();
+        out.replace_range(start..end, path);
+    }
+    Ok(out)
+}
+
+/// Where `v` falls on an axis of `scale` over `range`, as a fraction 0..1 (log axes in ln v,
+/// as plotters maps them).
+fn axis_fraction(scale: Scale, range: (f64, f64), v: f64) -> f64 {
+    match scale {
+        Scale::Linear => (v - range.0) / (range.1 - range.0),
+        Scale::Log => (v.ln() - range.0.ln()) / (range.1.ln() - range.0.ln()),
+    }
+}
+
+/// Pixel position of data point `p` in a plotting area with pixel ranges `px` (as
+/// `DrawingArea::get_pixel_range`), without rounding: the same affine map as plotters'
+/// `Cartesian2d` (x from the left edge to the right edge − 1, y from the bottom edge − 1 up to
+/// the top edge), which floors the result to whole pixels.
+fn subpixel(px: &(std::ops::Range<i32>, std::ops::Range<i32>), c: &Chart, xr: (f64, f64), yr: (f64, f64), p: (f64, f64)) -> (f64, f64) {
+    let (x0, x1) = (f64::from(px.0.start), f64::from(px.0.end - 1));
+    let (y_top, y_bottom) = (f64::from(px.1.start), f64::from(px.1.end - 1));
+    let tx = axis_fraction(c.x.scale, xr, p.0);
+    let ty = axis_fraction(c.y.scale, yr, p.1);
+    (x0 + (x1 - x0) * tx, y_bottom + (y_top - y_bottom) * ty)
+}
+
+/// An SVG polyline through `pts` (pixels, two decimals).
+fn polyline(pts: &[(f64, f64)], col: RGBColor, dashed: bool) -> String {
+    let coords: Vec<String> = pts.iter().map(|&(x, y)| format!("{x:.2},{y:.2}")).collect();
+    let dash = if dashed { " stroke-dasharray=\"8 5\"" } else { "" };
+    format!(
+        "<polyline fill=\"none\" stroke=\"#{:02X}{:02X}{:02X}\" stroke-width=\"2\" stroke-linejoin=\"round\"{dash} points=\"{}\"/>",
+        col.0,
+        col.1,
+        col.2,
+        coords.join(" ")
+    )
+}
+
+fn draw_chart(area: &Area<'_>, c: &Chart, paths: &mut Vec<String>) -> Result<(), PlotError> {
     let xr = fit_range(&c.x, c.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
     let yr = fit_range(&c.y, c.series.iter().flat_map(|s| s.points.iter().map(|p| p.1)));
-    with_ranges!(c.x.scale, xr, c.y.scale, yr, |x, y| draw_chart_in(area, c, x, y, xr, yr))
+    with_ranges!(c.x.scale, xr, c.y.scale, yr, |x, y| draw_chart_in(area, c, x, y, xr, yr, paths))
 }
 
-fn draw_chart_in<X, Y>(area: &Area<'_>, c: &Chart, x: X, y: Y, xr: (f64, f64), yr: (f64, f64)) -> Result<(), PlotError>
+fn draw_chart_in<X, Y>(area: &Area<'_>, c: &Chart, x: X, y: Y, xr: (f64, f64), yr: (f64, f64), paths: &mut Vec<String>) -> Result<(), PlotError>
 where
     X: AsRangedCoord<Value = f64>,
     Y: AsRangedCoord<Value = f64>,
@@ -385,23 +445,38 @@ where
         }
     }
 
+    let pixels = ch.plotting_area().get_pixel_range();
     for (i, s) in c.series.iter().enumerate() {
         let col = PALETTE[s.colour.unwrap_or(i) % PALETTE.len()];
-        let style = col.stroke_width(2);
         let segments = split_segments(&s.points, c.x.scale, c.y.scale);
         let mut first = true;
         for seg in segments {
-            let ann = match s.style {
-                Style::Line => ch.draw_series(LineSeries::new(seg, style)).map_err(err)?,
-                Style::Dashed => ch.draw_series(DashedLineSeries::new(seg, 8, 5, style)).map_err(err)?,
-                Style::Points => ch.draw_series(seg.into_iter().map(|p| Circle::new(p, 5, col.filled()))).map_err(err)?,
-                Style::LinePoints => {
-                    ch.draw_series(seg.iter().map(|&p| Circle::new(p, 4, col.filled()))).map_err(err)?;
-                    ch.draw_series(LineSeries::new(seg, style)).map_err(err)?
+            if s.style == Style::Crosses {
+                let ann = ch.draw_series(seg.iter().map(|&p| Cross::new(p, 6, col.stroke_width(2)))).map_err(err)?;
+                if first && !s.name.is_empty() {
+                    ann.label(s.name.as_str()).legend(move |(px, py)| Cross::new((px + 9, py), 6, col.stroke_width(2)));
+                    first = false;
                 }
-            };
+                continue;
+            }
+            if matches!(s.style, Style::Points | Style::LinePoints) {
+                let r = if s.style == Style::Points { 5 } else { 4 };
+                let ann = ch.draw_series(seg.iter().map(|&p| Circle::new(p, r, col.filled()))).map_err(err)?;
+                if s.style == Style::Points {
+                    if first && !s.name.is_empty() {
+                        ann.label(s.name.as_str()).legend(move |(px, py)| Circle::new((px + 9, py), 5, col.filled()));
+                        first = false;
+                    }
+                    continue;
+                }
+            }
+            // The line: a placeholder text element, replaced by a sub-pixel polyline afterwards.
+            let dashed = s.style == Style::Dashed;
+            let pts: Vec<(f64, f64)> = seg.iter().map(|&p| subpixel(&pixels, c, xr, yr, p)).collect();
+            let marker = path_marker(paths.len());
+            paths.push(polyline(&pts, col, dashed));
+            let ann = ch.draw_series(std::iter::once(Text::new(marker, seg[0], (FONT, 1)))).map_err(err)?;
             if first && !s.name.is_empty() {
-                let dashed = s.style == Style::Dashed;
                 ann.label(s.name.as_str()).legend(move |(px, py)| {
                     let end = if dashed { px + 10 } else { px + 18 };
                     PathElement::new(vec![(px, py), (end, py)], col.stroke_width(2))
@@ -727,6 +802,44 @@ mod tests {
         let svg = line_plot(&c, (640, 480)).unwrap();
         for text in ["T-title", "S [-]", "mu [-]", "first-series", "second", "band-label", "<polyline"] {
             assert!(svg.contains(text), "missing {text}");
+        }
+    }
+
+    /// (x, y) pairs of an SVG attribute list "x,y x,y ...".
+    fn pairs(text: &str) -> Vec<(f64, f64)> {
+        text.split_whitespace()
+            .map(|xy| {
+                let (a, b) = xy.split_once(',').unwrap();
+                (a.parse().unwrap(), b.parse().unwrap())
+            })
+            .collect()
+    }
+
+    #[test]
+    fn lines_have_sub_pixel_coordinates_on_plotters_own_map() {
+        // The same points as a line (our sub-pixel polyline) and as dots (plotters' circles,
+        // rounded to whole pixels): every vertex lies within a pixel of its dot, and the line is
+        // not rounded (a gentle slope over 400 px would otherwise step one pixel at a time).
+        for (xs, ys) in [(Scale::Linear, Scale::Linear), (Scale::Log, Scale::Linear), (Scale::Linear, Scale::Log)] {
+            let pts: Vec<(f64, f64)> = (1..=60).map(|k| (k as f64, 10.0 + 0.05 * k as f64)).collect();
+            let axis = |s: Scale, name: &str| if s == Scale::Log { Axis::log(name) } else { Axis::linear(name) };
+            let c = Chart::new("", axis(xs, "x"), axis(ys, "y"))
+                .series(Series::line("line", pts.clone()))
+                .series(Series::line("", pts.clone()).styled(Style::Points));
+            let svg = line_plot(&c, (640, 480)).unwrap();
+            assert!(!svg.contains("@@pinjoint-path"), "a placeholder was left in");
+            let lines: Vec<&str> = svg.split("<polyline").skip(1).filter(|p| p.contains("stroke-linejoin=\"round\"")).collect();
+            assert_eq!(lines.len(), 1, "{xs:?} {ys:?}");
+            let line = pairs(lines[0].split("points=\"").nth(1).unwrap().split('"').next().unwrap());
+            let attr = |tag: &str, name: &str| -> f64 { tag.split(&format!("{name}=\"")).nth(1).unwrap().split('"').next().unwrap().parse().unwrap() };
+            let dots: Vec<(f64, f64)> = svg.split("<circle").skip(1).map(|t| (attr(t, "cx"), attr(t, "cy"))).collect();
+            assert_eq!(line.len(), pts.len());
+            assert_eq!(dots.len(), pts.len());
+            for (l, d) in line.iter().zip(&dots) {
+                assert!((l.0 - d.0).abs() <= 1.0 && (l.1 - d.1).abs() <= 1.0, "{xs:?} {ys:?}: {l:?} vs {d:?}");
+            }
+            let fractional = line.iter().filter(|p| p.1.fract() != 0.0).count();
+            assert!(fractional > line.len() / 2, "{xs:?} {ys:?}: {line:?}");
         }
     }
 
