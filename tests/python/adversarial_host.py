@@ -135,12 +135,25 @@ class FmpyHost:
         self.v = Variables(unzipped)
         md = read_model_description(unzipped)
 
-        def logger(component, name, status, category, message):
-            log.append(message.decode("utf-8", "replace") if isinstance(message, bytes) else str(message))
+        from ctypes import byref
+        from fmpy.fmi1 import calloc, free
+        from fmpy.fmi2 import (fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions,
+                               fmi2CallbackLoggerTYPE, fmi2StepFinishedTYPE)
+        from fmpy.logging import addLoggerProxy
 
+        def logger(env, name, status, category, message):
+            log.append(message.decode("utf-8", "replace"))
+
+        cb = fmi2CallbackFunctions()
+        cb.logger = fmi2CallbackLoggerTYPE(logger)
+        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        cb.stepFinished = fmi2StepFinishedTYPE()
+        addLoggerProxy(byref(cb))  # fmpy's native proxy formats the variadic message
+        self._keep = cb
         self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.coSimulation.modelIdentifier,
                              instanceName="adversary")
-        self.fmu.instantiate(loggingOn=True, logMessage=logger)
+        self.fmu.instantiate(loggingOn=True, callbacks=cb)
 
     def _call(self, f, *a):
         from fmpy.fmi1 import FMICallException
@@ -171,18 +184,18 @@ class FmpyHost:
         return self._call(self.fmu.doStep, t, h)[0]
 
     def save(self):
-        st, s = self._call(self.fmu.getFMUState)
+        st, s = self._call(self.fmu.getFMUstate)
         if st:
             return st, b""
-        st, data = self._call(self.fmu.serializeFMUState, s)
+        st, data = self._call(self.fmu.serializeFMUstate, s)
         return st, bytes(data or b"")
 
     def load_state(self, data):
-        st, s = self._call(self.fmu.deSerializeFMUState, bytearray(data))
+        st, s = self._call(self.fmu.deSerializeFMUstate, bytes(data))
         if st:
             return st
-        st = self._call(self.fmu.setFMUState, s)[0]
-        self._call(self.fmu.freeFMUState, s)
+        st = self._call(self.fmu.setFMUstate, s)[0]
+        self._call(self.fmu.freeFMUstate, s)
         return st
 
     def free(self):
