@@ -31,11 +31,10 @@ impl fmt::Display for Num {
     }
 }
 
-/// Longest decimal token left as written.
-const MAX_TOKEN: usize = 24;
-
-/// `message` with every decimal number longer than 24 characters (digits, one point) rewritten
-/// in the short round-trip form of [`Num`]; everything else unchanged.
+/// `message` with every decimal number (digits, at most one point) that [`Num`] writes
+/// shorter rewritten in that form (`0.0000005282307976058009` → `5.282307976058009e-7`, 309
+/// digits → `1e308`); everything else, including numbers with leading zeros such as `007`,
+/// unchanged.
 pub fn short_numbers(message: &str) -> String {
     let b = message.as_bytes();
     let mut out = String::with_capacity(message.len());
@@ -49,8 +48,9 @@ pub fn short_numbers(message: &str) -> String {
                 i += 1;
             }
             let token = &message[start..i];
+            let plain_zeros = token.len() > 1 && token.starts_with('0') && !token.starts_with("0.");
             match token.parse::<f64>() {
-                Ok(x) if token.len() > MAX_TOKEN => out.push_str(&Num(x).to_string()),
+                Ok(x) if !plain_zeros && Num(x).to_string().len() < token.len() => out.push_str(&Num(x).to_string()),
                 _ => out.push_str(token),
             }
         } else {
@@ -84,6 +84,7 @@ mod tests {
         let m = format!("-{} and 123456789012345678901234567890.5 µs", 2.0f64.powi(200));
         let s = short_numbers(&m);
         assert_eq!(s, format!("-{:e} and 1.2345678901234568e29 µs", 2.0f64.powi(200)));
-        assert_eq!(short_numbers("v1.2.3 at 0.000001 s"), "v1.2.3 at 0.000001 s");
+        assert_eq!(short_numbers("v1.2.3 at 0.000001 s"), "v1.2.3 at 1e-6 s");
+        assert_eq!(short_numbers("t = 0.0000005282307976058009 s, 2031616 steps, 007"), "t = 5.282307976058009e-7 s, 2031616 steps, 007");
     }
 }
