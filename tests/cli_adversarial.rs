@@ -264,6 +264,9 @@ fn hostile_parameter_files_are_errors_naming_the_file() {
     fails(&["point", "--load", "1", "--speed", "1", "--params", s(d.path())], &[s(d.path())]);
     fails(&["point", "--load", "1", "--speed", "1", "--params", "/no/such/p.toml"], &["/no/such/p.toml"]);
     fails(&["sweep", "--input", s(d.path())], &[s(d.path())]);
+    // An endless or huge file is refused after 1 MiB, not read into memory.
+    fails(&["point", "--load", "1", "--speed", "1", "--params", "/dev/zero"], &["/dev/zero", "larger than"]);
+    fails(&["cycle", "--cycles", "1", "--params", "/dev/zero", "--output", s(d.path())], &["/dev/zero", "larger than"]);
     let odd = d.path().join("odd name ü\n'$.csv");
     std::fs::write(&odd, INPUT).unwrap();
     let out = d.path().join("out ü\t.csv");
@@ -289,4 +292,13 @@ fn rig_parameters_that_hung_or_aborted_end_in_bounded_time() {
         let o = run_limited(&args, Duration::from_secs(150));
         assert!(o.code == 0 || o.code == 1, "{name}: {}", o.stderr);
     }
+}
+
+#[test]
+fn grid_sizes_that_panicked_or_exhausted_memory_are_refused() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().display().to_string();
+    fails(&["map", "--loads", "18446744073709551615", "--speeds", "2", "--output", &out], &["loads = 18446744073709551615", "1000"]);
+    fails(&["map", "--loads", "100000", "--speeds", "100000", "--output", &out], &["loads = 100000"]);
+    fails(&["stribeck", "--load", "20000", "--points", "18446744073709551615", "--output", &out], &["points ="]);
 }

@@ -93,7 +93,7 @@ pub fn load_rig_config(path: Option<&PathBuf>) -> Result<RigConfig> {
     match path {
         None => Ok(RigConfig::default()),
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+            let text = super::common::read_param_file(path)?;
             RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
         }
     }

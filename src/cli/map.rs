@@ -128,6 +128,9 @@ fn curves_plot(joint: &Joint, g: &Grid) -> Result<String> {
 
 /// Write the CSV and the three plots into `dir`; returns their paths.
 /// `inputs`: the command's input files, never overwritten.
+/// Most loads (and most speeds) of one map: at most 1000 × 1000 = 1e6 solves.
+pub const MAX_GRID_SIDE: usize = 1000;
+
 /// The files `map` writes into its directory.
 pub const MAP_FILES: &[&str] = &["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"];
 
@@ -171,8 +174,8 @@ pub fn run(cmd: &MapCmd) -> Result<()> {
         return Err(CliError::Invalid(format!("the speed range is empty: min-rpm {n0} rpm >= max-rpm {n1} rpm")));
     }
     for (name, n) in [("loads", cmd.loads), ("speeds", cmd.speeds)] {
-        if n < 2 {
-            return Err(CliError::Invalid(format!("{name} = {n} is invalid: it must be >= 2")));
+        if !(2..=MAX_GRID_SIDE).contains(&n) {
+            return Err(CliError::Invalid(format!("{name} = {n} is invalid: it must be in 2..={MAX_GRID_SIDE} (bounded work and memory)")));
         }
     }
     let grid = Grid { loads: lin_space(p0, p1, cmd.loads), speeds: log_space(n0 * RAD_S_PER_RPM, n1 * RAD_S_PER_RPM, cmd.speeds) };

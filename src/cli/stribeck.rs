@@ -122,6 +122,9 @@ pub fn write_stribeck(dir: &Path, inputs: &[&Path], joint: &Joint, load: f64, sp
     Ok(vec![csv_path, svg_path])
 }
 
+/// Most points of one Stribeck curve.
+pub const MAX_POINTS: usize = 100_000;
+
 pub fn run(cmd: &StribeckCmd) -> Result<()> {
     refuse_files(&cmd.output, &["stribeck.csv", "stribeck.svg"], cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;
@@ -131,8 +134,8 @@ pub fn run(cmd: &StribeckCmd) -> Result<()> {
     if lo >= hi {
         return Err(CliError::Invalid(format!("the speed range is empty: lowest {lo} rad/s >= highest {hi} rad/s")));
     }
-    if cmd.points < 2 {
-        return Err(CliError::Invalid(format!("points = {} is invalid: it must be >= 2", cmd.points)));
+    if !(2..=MAX_POINTS).contains(&cmd.points) {
+        return Err(CliError::Invalid(format!("points = {} is invalid: it must be in 2..={MAX_POINTS} (bounded work and memory)", cmd.points)));
     }
     report_written(&write_stribeck(&cmd.output, &inputs_of(cmd.params.params.as_ref()), &joint, load, &log_space(lo, hi, cmd.points))?)
 }
