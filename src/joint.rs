@@ -217,6 +217,7 @@ impl Joint {
     /// Hertz quantities, sliding speed, Sommerfeld number and the rheology at p_m: the parts
     /// of an operating point that do not need the load-sharing solve.
     pub fn load_speed(&self, load: f64, omega: f64) -> LoadSpeed {
+        let load = load.abs();
         let (g, lub) = (&self.params.geometry, &self.params.lubricant);
         // Eq. 6 scaled from 1 N: a, p_m, p0 ∝ √P_T.
         let sqrt_p = load.sqrt();
@@ -237,12 +238,16 @@ impl Joint {
         }
     }
 
-    /// The boundary-friction torque μ_c R P at `load` (N): the ω → 0 limit of eq. 11.
+    /// The boundary-friction torque μ_c R |P| at `load` (N): the ω → 0 limit of eq. 11.
     pub fn boundary_torque(&self, load: f64) -> f64 {
-        self.params.friction.boundary_friction_coefficient * self.params.geometry.pin_radius * load
+        self.params.friction.boundary_friction_coefficient * self.params.geometry.pin_radius * load.abs()
     }
 
-    /// The operating point at `load` (N, > 0) and angular velocity `omega` (rad/s).
+    /// The operating point at `load` (N) and angular velocity `omega` (rad/s).
+    ///
+    /// The load is the magnitude of the radial reaction: a negative value (a signed reaction
+    /// component from a gear model) gives exactly the answer of its absolute value, which must
+    /// be > 0 and below [`Joint::capacity`].
     pub fn evaluate(&self, load: f64, omega: f64) -> Result<OperatingPoint, ModelError> {
         self.evaluate_from(load, omega, None)
     }
@@ -250,6 +255,7 @@ impl Joint {
     /// As [`Joint::evaluate`], starting the solve from `guess` (the `logit` of a nearby
     /// point); the answer is the same to the solver tolerance, only cheaper.
     pub fn evaluate_from(&self, load: f64, omega: f64, guess: Option<f64>) -> Result<OperatingPoint, ModelError> {
+        let load = load.abs();
         if !(load.is_finite() && load > 0.0) {
             return Err(ModelError::Load(load));
         }

@@ -25,6 +25,7 @@ pub mod asperity;
 pub mod contact;
 pub mod fidelity;
 pub mod film;
+pub mod fmt;
 pub mod gw;
 pub mod joint;
 pub mod mixed;

@@ -75,7 +75,9 @@ fn inputs_are_validated_with_quantity_value_and_unit() {
     }
     // Operating points: the model's own errors.
     let mut ev = Evaluator::new(&p, Fidelity::Boundary, 1e-2, Envelope::new(5e3, 60e3, 1e-5, 1e-3).unwrap()).unwrap();
-    assert!(ev.evaluate(-1.0, 0.0).unwrap_err().to_string().contains("load = -1 N"));
+    assert!(ev.evaluate(0.0, 0.0).unwrap_err().to_string().contains("load = 0 N"));
+    // A negative load is its magnitude (issue 9).
+    assert_eq!(ev.evaluate(-20e3, 1e-4).unwrap().torque.to_bits(), ev.evaluate(20e3, 1e-4).unwrap().torque.to_bits());
     assert!(ev.evaluate(f64::NAN, 1e-4).is_err());
     assert!(ev.evaluate(20e3, f64::NAN).unwrap_err().to_string().contains("rad/s"));
     assert_eq!(ev.fallbacks(), 0, "invalid inputs are errors, not fallbacks");

@@ -128,13 +128,24 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
     fix_crc(&mut b);
     assert_eq!(deserialize(c, &b), Err(ERROR));
     assert!(h.last().contains("PinJoint state version 7"), "{}", h.last());
-    // A valid checksum over an impossible value (negative load).
-    let load_at = model_at + 1 + 2 + 8 * (21 + 1 + 2);
-    let mut b = bytes.clone();
-    b[load_at..load_at + 8].copy_from_slice(&(-1.0f64).to_bits().to_le_bytes());
-    fix_crc(&mut b);
-    assert_eq!(deserialize(c, &b), Err(ERROR));
-    assert!(h.last().contains("input load = -1 N"), "{}", h.last());
+    // A valid checksum over an impossible value: each is checked as its setter or the
+    // parameter check at initialization checks it (issue 9: these were accepted before).
+    let word = |k: usize| model_at + 1 + 2 + 8 * k;
+    for (at, v, fragment) in [
+        (word(21 + 1 + 2), f64::NAN, "input load = NaN N"),
+        (word(21 + 1 + 2), 1e300, "capacity"),
+        (word(0), -0.028, "pin_radius"),
+        (word(3), f64::NAN, "pin_elastic_modulus"),
+        (word(21), -1.0, "speed_band"),
+        (word(21 + 4), f64::NAN, "dissipated_energy"),
+        (word(21 + 6), -1.0, "tolerance"),
+    ] {
+        let mut b = bytes.clone();
+        b[at..at + 8].copy_from_slice(&v.to_bits().to_le_bytes());
+        fix_crc(&mut b);
+        assert_eq!(deserialize(c, &b), Err(ERROR), "{fragment}");
+        assert!(h.last().contains(fragment), "{fragment}: {}", h.last());
+    }
     // Wrong serialize buffer size.
     let mut buf = vec![0u8; bytes.len() + 1];
     assert_eq!(unsafe { fmi2SerializeFMUstate(c, s, buf.as_mut_ptr() as *mut Fmi2Byte, buf.len()) }, ERROR);

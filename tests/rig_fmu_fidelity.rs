@@ -164,7 +164,7 @@ fn fidelity_parameters_have_defaults_and_bad_values_are_refused_by_name() {
     let cases: &[(&[(&str, f64)], &str)] = &[
         (&[("fidelity", 1.0), ("tolerance", 0.0)], "tolerance = 0 (relative error, dimensionless) is invalid"),
         (&[("tolerance", f64::NAN)], "tolerance = NaN"),
-        (&[("fidelity", 1.0), ("tolerance", 1e-12)], "tolerance = 0.000000000001 (relative error, dimensionless) is below the accuracy"),
+        (&[("fidelity", 1.0), ("tolerance", 1e-12)], "tolerance = 1e-12 (relative error, dimensionless) is below the accuracy"),
         (&[("fidelity", 1.0), ("envelope.load_min", 2e5)], "envelope.load_min = 200000 N is invalid: it must be below envelope.load_max = 100000 N"),
         (&[("envelope.speed_min", -1.0)], "envelope.speed_min = -1 rad/s is invalid: it must be a finite number > 0 rad/s"),
         (&[("fidelity", 3.0), ("envelope.speed_max", f64::INFINITY)], "envelope.speed_max = inf rad/s is invalid"),

@@ -162,7 +162,7 @@ fn bad_inputs_and_wrong_types_are_refused_without_change() {
     let h = new_host();
     let c = ready(&h, &[]);
     for (name, v, fragment) in [
-        ("load", -1.0, "input load = -1 N is invalid"),
+        ("load", f64::NAN, "input load = NaN N is invalid"),
         ("load", f64::INFINITY, "input load = inf N"),
         ("command_angle", f64::NAN, "input command_angle = NaN rad"),
     ] {

@@ -291,7 +291,8 @@ pub mod core {
         let back = Params::from_toml_str(&text).unwrap_or_else(|e| panic!("to_toml_string output rejected: {e}\n{text}"));
         assert_eq!(back, params, "TOML round trip changed the parameters");
 
-        let input_ok = load.is_finite() && load > 0.0 && omega.is_finite();
+        // The load is the magnitude of the radial reaction (issue 9): -P is evaluated as +P.
+        let input_ok = load.is_finite() && load != 0.0 && omega.is_finite();
         let envelope = in_envelope(&params, load, omega);
         let op = match joint.evaluate(load, omega) {
             Ok(op) => {
@@ -305,16 +306,19 @@ pub mod core {
                 // envelope of realistic joints).
                 match &e {
                     ModelError::BeyondCapacity { capacity, .. } => {
-                        assert!(input_ok && load >= *capacity && *capacity == joint.capacity(), "{e}");
+                        assert!(input_ok && load.abs() >= *capacity && *capacity == joint.capacity(), "{e}");
                     }
                     ModelError::NotFinite { .. } => {
-                        assert!(input_ok && !(envelope && load < joint.capacity() * 0.5), "{e} [{}]", changed(&params));
+                        assert!(input_ok && !(envelope && load.abs() < joint.capacity() * 0.5), "{e} [{}]", changed(&params));
                     }
                     _ => assert!(!input_ok, "evaluate rejected valid input load {load:e} N, omega {omega:e} rad/s: {e} [{}]", changed(&params)),
                 }
                 return;
             }
         };
+        let mirrored = joint.evaluate(-load, omega).expect("-P is refused where +P is not");
+        assert_eq!(format!("{mirrored:?}"), format!("{op:?}"), "evaluate(-P) differs from evaluate(P)");
+        let load = load.abs();
         check_point(&op, load, omega, envelope, envelope_mode, &format!("evaluate [{}]", changed(&params)));
         let again = joint.evaluate(load, omega).unwrap();
         assert_eq!(format!("{again:?}"), format!("{op:?}"), "evaluate is not deterministic");

@@ -15,7 +15,8 @@
 //! largest measured error.
 
 use super::check::ErrorReport;
-use super::envelope::{lerp_log, Envelope};
+use super::envelope::{lerp_log, solve_at, Envelope};
+use super::error::FidelityError;
 use super::evaluation::{Evaluation, Source};
 use super::rest::RestTable;
 use super::table::rest_evaluation;
@@ -41,9 +42,9 @@ pub struct BoundaryLevel {
 impl BoundaryLevel {
     /// Build the rest table (h_c to `film_target` relative) and measure the level's error
     /// over `envelope` against the complete solve.
-    pub fn build(joint: &Joint, envelope: &Envelope, film_target: f64) -> Self {
+    pub fn build(joint: &Joint, envelope: &Envelope, film_target: f64) -> Result<Self, FidelityError> {
         let p = joint.params();
-        let rest = RestTable::build(joint, envelope.load_min, envelope.load_max, film_target);
+        let rest = RestTable::build(joint, envelope.load_min, envelope.load_max, film_target)?;
         let mut level = Self {
             envelope: *envelope,
             rest,
@@ -52,11 +53,11 @@ impl BoundaryLevel {
             roughness: joint.composite_roughness(),
             report: ErrorReport::default(),
         };
-        level.report = level.measure(joint);
-        level
+        level.report = level.measure(joint)?;
+        Ok(level)
     }
 
-    fn measure(&self, joint: &Joint) -> ErrorReport {
+    fn measure(&self, joint: &Joint) -> Result<ErrorReport, FidelityError> {
         let env = &self.envelope;
         let mut report = ErrorReport::default();
         let (mut worst, mut wa, mut wb) = (-1.0, 0, 0);
@@ -65,7 +66,7 @@ impl BoundaryLevel {
             let mut guess = None;
             for b in 0..GRID_SPEEDS {
                 let omega = lerp_log(env.speed_min, env.speed_max, b as f64 / (GRID_SPEEDS - 1) as f64);
-                let op = joint.evaluate_from(load, omega, guess).expect("inside a validated envelope");
+                let op = solve_at(joint, load, omega, guess)?;
                 guess = Some(op.logit);
                 let e = report.add(&self.interior(load, omega), &op);
                 if e > worst {
@@ -80,18 +81,18 @@ impl BoundaryLevel {
             let load = lerp_log(env.load_min, env.load_max, fa - da + 2.0 * da * a as f64 / (LOCAL - 1) as f64);
             for b in 0..LOCAL {
                 let omega = lerp_log(env.speed_min, env.speed_max, fb - db + 2.0 * db * b as f64 / (LOCAL - 1) as f64);
-                let op = joint.evaluate(load, omega).expect("inside a validated envelope");
+                let op = solve_at(joint, load, omega, None)?;
                 report.add(&self.interior(load, omega), &op);
             }
         }
         let rest_error = self.rest.measured_error();
         report.film_thickness = report.film_thickness.max(rest_error);
-        report
+        Ok(report)
     }
 
     #[inline(always)]
     fn interior(&self, load: f64, omega: f64) -> Evaluation {
-        let h = self.rest.film(load).expect("load inside the envelope");
+        let h = self.rest.film_clamped(load);
         let mut e = rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Boundary);
         e.angular_velocity = omega;
         e

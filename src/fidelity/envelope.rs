@@ -1,6 +1,14 @@
 //! The operating envelope a scene declares: the load and speed-magnitude ranges it visits.
 
 use super::error::FidelityError;
+use crate::joint::{Joint, ModelError, OperatingPoint};
+
+/// The complete solve at a point of an envelope being tabulated or checked; a point without a
+/// model answer becomes [`FidelityError::Envelope`] naming it (the builders never panic).
+pub(crate) fn solve_at(joint: &Joint, load: f64, omega: f64, guess: Option<f64>) -> Result<OperatingPoint, FidelityError> {
+    let r: Result<OperatingPoint, ModelError> = joint.evaluate_from(load, omega, guess);
+    r.map_err(|source| FidelityError::Envelope { load: load.into(), speed: omega.into(), source })
+}
 use serde::{Deserialize, Serialize};
 
 /// The load range (N) and speed-magnitude range (|ω|, rad/s) a scene will visit.

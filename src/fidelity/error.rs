@@ -30,6 +30,10 @@ pub enum FidelityError {
          (reached {cells} cells with a measured error of {measured}); use a larger tolerance, a smaller envelope, or fidelity full"
     )]
     TableTooLarge { tolerance: f64, cells: usize, limit: usize, measured: f64 },
+    /// A point of the envelope where the model has no answer (beyond the asperity model's
+    /// load capacity, or a speed where the film or viscosity overflows).
+    #[error("the envelope reaches load = {load} N, speed = {speed} rad/s, where the model has no answer ({source}); use a smaller envelope (envelope load/speed ranges) or fidelity full")]
+    Envelope { load: crate::fmt::Num, speed: crate::fmt::Num, source: ModelError },
     /// The parameter set is invalid.
     #[error(transparent)]
     Param(#[from] ParamError),

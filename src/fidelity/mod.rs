@@ -187,7 +187,7 @@ impl Evaluator {
             chosen = Some((Backend::Full, FULL_ERROR_BOUND, ErrorReport::default()));
         }
         if matches!(fidelity, Fidelity::Boundary | Fidelity::Auto) {
-            let b = BoundaryLevel::build(&joint, &envelope, (0.1 * tolerance).max(FULL_ERROR_BOUND));
+            let b = BoundaryLevel::build(&joint, &envelope, (0.1 * tolerance).max(FULL_ERROR_BOUND))?;
             let bound = b.error_bound();
             let accepted = bound <= tolerance;
             assessments.push(Assessment {
@@ -236,6 +236,8 @@ impl Evaluator {
     /// The outputs at `load` (N, > 0) and `omega` (rad/s, finite).
     #[inline]
     pub fn evaluate(&mut self, load: f64, omega: f64) -> Result<Evaluation, FidelityError> {
+        // The load is a magnitude (see `Joint::evaluate`).
+        let load = load.abs();
         let hit = match &self.backend {
             Backend::Table(t) => t.evaluate(load, omega),
             Backend::Boundary(b) => b.evaluate(load, omega),
@@ -263,6 +265,7 @@ impl Evaluator {
     /// level and do the fallback itself.
     #[inline]
     pub fn evaluate_inside(&self, load: f64, omega: f64) -> Option<Evaluation> {
+        let load = load.abs();
         match &self.backend {
             Backend::Table(t) => t.evaluate(load, omega),
             Backend::Boundary(b) => b.evaluate(load, omega),

@@ -9,6 +9,8 @@
 
 use super::check::CheckRng;
 use super::hermite::{central_slope, cubic, cubic_coefficients};
+use super::envelope::solve_at;
+use super::error::FidelityError;
 use crate::joint::Joint;
 
 /// ln h_c(ln P) at rest over a load range.
@@ -24,32 +26,32 @@ pub struct RestTable {
     measured: f64,
 }
 
-fn rest_film(joint: &Joint, load: f64) -> f64 {
-    joint.evaluate(load, 0.0).expect("load > 0 checked by the envelope").film_thickness
+fn rest_film(joint: &Joint, load: f64) -> Result<f64, FidelityError> {
+    Ok(solve_at(joint, load, 0.0, None)?.film_thickness)
 }
 
 impl RestTable {
     /// Tabulate over [load_min, load_max] (N, 0 < min < max) until the measured relative
     /// error in h_c is at most `target`.
-    pub fn build(joint: &Joint, load_min: f64, load_max: f64, target: f64) -> Self {
+    pub fn build(joint: &Joint, load_min: f64, load_max: f64, target: f64) -> Result<Self, FidelityError> {
         let (a, b) = (load_min.ln(), load_max.ln());
         let mut cells = ((b - a) / 0.5).ceil().max(2.0) as usize;
         loop {
-            let t = Self::with_cells(joint, load_min, load_max, cells);
+            let t = Self::with_cells(joint, load_min, load_max, cells)?;
             if t.measured <= target || cells >= 1 << 16 {
-                return t;
+                return Ok(t);
             }
             let grow = (t.measured / target).powf(0.25) * 1.2;
             cells = ((cells as f64 * grow).ceil() as usize).max(cells + 1);
         }
     }
 
-    fn with_cells(joint: &Joint, load_min: f64, load_max: f64, cells: usize) -> Self {
+    fn with_cells(joint: &Joint, load_min: f64, load_max: f64, cells: usize) -> Result<Self, FidelityError> {
         let (a, b) = (load_min.ln(), load_max.ln());
         let h = (b - a) / cells as f64;
         // Nodes −2 ..= cells + 2.
         let node = |k: isize| (a + k as f64 * h).exp();
-        let v: Vec<f64> = (-2..=cells as isize + 2).map(|k| rest_film(joint, node(k)).ln()).collect();
+        let v: Vec<f64> = (-2..=cells as isize + 2).map(|k| rest_film(joint, node(k)).map(f64::ln)).collect::<Result<_, _>>()?;
         let coeffs = (0..cells)
             .map(|i| {
                 let k = i + 2;
@@ -65,12 +67,12 @@ impl RestTable {
         let mut worst = 0.0f64;
         for p in centres.chain(random) {
             let p = p.clamp(load_min, load_max);
-            let exact = rest_film(joint, p);
+            let exact = rest_film(joint, p)?;
             let e = ((t.film_unchecked(p) - exact) / exact).abs();
             worst = worst.max(if e.is_nan() { f64::INFINITY } else { e });
         }
         t.measured = worst;
-        t
+        Ok(t)
     }
 
     #[inline(always)]
@@ -84,6 +86,12 @@ impl RestTable {
     #[inline]
     pub fn film(&self, load: f64) -> Option<f64> {
         (load >= self.load_min && load <= self.load_max).then(|| self.film_unchecked(load))
+    }
+
+    /// h_c at rest (m) at the load clamped into the load range.
+    #[inline]
+    pub(crate) fn film_clamped(&self, load: f64) -> f64 {
+        self.film_unchecked(load.clamp(self.load_min, self.load_max))
     }
 
     /// Largest relative error of h_c measured on the check points.
@@ -106,12 +114,12 @@ mod tests {
     fn rest_table_meets_its_target_on_fresh_loads() {
         let j = Joint::new(&Params::default()).unwrap();
         for target in [1e-3, 1e-6, 1e-9] {
-            let t = RestTable::build(&j, 1e3, 300e3, target);
+            let t = RestTable::build(&j, 1e3, 300e3, target).unwrap();
             assert!(t.measured_error() <= target);
             let mut rng = CheckRng::new(99);
             for _ in 0..200 {
                 let p = 1e3 * (300f64).powf(rng.uniform());
-                let exact = rest_film(&j, p);
+                let exact = rest_film(&j, p).unwrap();
                 let e = ((t.film(p).unwrap() - exact) / exact).abs();
                 assert!(e <= 2.0 * target, "target {target}: P = {p} N, error {e}");
             }

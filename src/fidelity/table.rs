@@ -46,7 +46,7 @@
 //! h⁴ law so that each direction contributes half the target.
 
 use super::check::{CheckRng, ErrorReport};
-use super::envelope::Envelope;
+use super::envelope::{solve_at, Envelope};
 use super::error::FidelityError;
 use super::evaluation::{regime_from_shares, Evaluation, Source};
 use super::hermite::{bicubic, bicubic_coefficients, central_slope, fourth_difference};
@@ -142,17 +142,17 @@ impl StribeckTable {
         let lz = envelope.speed_max.ln() - envelope.speed_min.ln();
         let mut nx = ((lx / INITIAL_STEP).ceil() as usize).max(2);
         let mut nz = ((lz / INITIAL_STEP).ceil() as usize).max(2);
-        let rest = RestTable::build(joint, envelope.load_min, envelope.load_max, target);
+        let rest = RestTable::build(joint, envelope.load_min, envelope.load_max, target)?;
         let (mut node_solves, mut check_solves, mut passes) = (0, 0, 0);
         loop {
             passes += 1;
-            let (mut table, ex, ez) = Self::tabulate(joint, envelope, nx, nz, rest.clone());
+            let (mut table, ex, ez) = Self::tabulate(joint, envelope, nx, nz, rest.clone())?;
             node_solves += (nx + 5) * (nz + 5);
-            let mut report = table.check_centres(joint);
+            let mut report = table.check_centres(joint)?;
             check_solves += report.points;
             if SAFETY * report.max() <= tolerance {
                 let mut rng = CheckRng::new(0x5eed_0000 + passes as u64);
-                report.merge(&table.check_random(joint, &mut rng, RANDOM_CHECKS));
+                report.merge(&table.check_random(joint, &mut rng, RANDOM_CHECKS)?);
                 check_solves += RANDOM_CHECKS;
             }
             let measured = report.max();
@@ -197,7 +197,7 @@ impl StribeckTable {
 
     /// Solve at the nodes, build the cells; returns the table and the fourth-difference
     /// error indicators along ln P and ln |ω|.
-    fn tabulate(joint: &Joint, env: &Envelope, nx: usize, nz: usize, rest: RestTable) -> (Self, f64, f64) {
+    fn tabulate(joint: &Joint, env: &Envelope, nx: usize, nz: usize, rest: RestTable) -> Result<(Self, f64, f64), FidelityError> {
         let p = joint.params();
         let mu_c = p.friction.boundary_friction_coefficient;
         let (x0, z0) = (env.load_min.ln(), env.speed_min.ln());
@@ -221,7 +221,7 @@ impl StribeckTable {
             let mut guess = None;
             for b in 0..gz {
                 let omega = at(b, nz, z0, hz, env.speed_min, env.speed_max);
-                let op = joint.evaluate_from(load, omega, guess).expect("envelope validated: load > 0, speed finite");
+                let op = solve_at(joint, load, omega, guess)?;
                 guess = Some(op.logit);
                 q[a * gz + b] = variables(&op);
                 w[a * gz + b] = weights(&op, mu_c);
@@ -297,11 +297,11 @@ impl StribeckTable {
                 build_seconds: 0.0,
             },
         };
-        (table, ex / 384.0, ez / 384.0)
+        Ok((table, ex / 384.0, ez / 384.0))
     }
 
     /// Errors at the centre of every cell (solves warm-started along each row).
-    fn check_centres(&self, joint: &Joint) -> ErrorReport {
+    fn check_centres(&self, joint: &Joint) -> Result<ErrorReport, FidelityError> {
         let mut r = ErrorReport::default();
         let hx = 1.0 / self.inv_hx;
         let hz = 1.0 / self.inv_hz;
@@ -310,23 +310,23 @@ impl StribeckTable {
             let mut guess = None;
             for j in 0..self.nz {
                 let omega = (self.z0 + (j as f64 + 0.5) * hz).exp();
-                let op = joint.evaluate_from(load, omega, guess).expect("inside a validated envelope");
+                let op = solve_at(joint, load, omega, guess)?;
                 guess = Some(op.logit);
                 r.add(&self.interpolate(load, omega), &op);
             }
         }
-        r
+        Ok(r)
     }
 
     /// Errors at `n` random points of the envelope, uniform in (ln P, ln |ω|).
-    fn check_random(&self, joint: &Joint, rng: &mut CheckRng, n: usize) -> ErrorReport {
+    fn check_random(&self, joint: &Joint, rng: &mut CheckRng, n: usize) -> Result<ErrorReport, FidelityError> {
         let mut r = ErrorReport::default();
         for _ in 0..n {
             let (load, omega) = self.envelope.at_log_fraction(rng.uniform(), rng.uniform());
-            let op = joint.evaluate(load, omega).expect("inside a validated envelope");
+            let op = solve_at(joint, load, omega, None)?;
             r.add(&self.interpolate(load, omega), &op);
         }
-        r
+        Ok(r)
     }
 
     /// Interpolate at (load, |ω|) inside the envelope (not checked here).

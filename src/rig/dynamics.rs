@@ -25,9 +25,9 @@
 use super::excitation::Excitation;
 use super::params::RigParams;
 use crate::fidelity::{Evaluation, Evaluator, Source};
-use crate::joint::Joint;
+use crate::joint::{Joint, ModelError};
 use serde::{Deserialize, Serialize};
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 /// The integrated state (see the module documentation).
 pub type State = ode_solvers::SVector<f64, 6>;
@@ -78,6 +78,9 @@ pub(crate) struct Dynamics<'a> {
     pub guess: Cell<f64>,
     /// First invalid load met (time, value); the derivative is NaN from then on.
     pub fault: Cell<Option<(f64, f64)>>,
+    /// First friction evaluation the model could not answer (load, speed, why); the
+    /// derivative is NaN from then on and the integration reports [`RigError::Model`].
+    pub model_fault: RefCell<Option<(f64, f64, ModelError)>>,
     /// A table or boundary level answering inside its envelope (None: the full solve always).
     pub level: Option<&'a Evaluator>,
     /// Evaluations outside that level's envelope, answered by the full solve.
@@ -86,17 +89,29 @@ pub(crate) struct Dynamics<'a> {
 
 impl<'a> Dynamics<'a> {
     pub fn new(joint: &'a Joint, rig: &'a RigParams, excitation: &'a dyn Excitation, phase: Phase, guess: f64) -> Self {
-        Self { joint, rig, excitation, phase, guess: Cell::new(guess), fault: Cell::new(None), level: None, fallbacks: Cell::new(0) }
+        Self {
+            joint,
+            rig,
+            excitation,
+            phase,
+            guess: Cell::new(guess),
+            fault: Cell::new(None),
+            model_fault: RefCell::new(None),
+            level: None,
+            fallbacks: Cell::new(0),
+        }
     }
 
-    /// The load at `t`, checked (Err with the value if negative or not finite).
+    /// The load magnitude |P| at `t` (a negative value is a signed reaction component: its
+    /// magnitude is the load), checked (Err with the value if not finite).
     pub fn load(&self, t: f64) -> Result<f64, f64> {
         let p = self.excitation.load(t);
-        if p.is_finite() && p >= 0.0 { Ok(p) } else { Err(p) }
+        if p.is_finite() { Ok(p.abs()) } else { Err(p) }
     }
 
     /// The core at (P, speed ≥ 0): the fidelity level inside its envelope, else the full
-    /// solve warm-started; None at zero load.
+    /// solve warm-started; None at zero load, and None (recorded in `model_fault`) where
+    /// the model has no answer.
     pub fn operating_point(&self, load: f64, speed: f64) -> Option<Evaluation> {
         if load == 0.0 {
             return None;
@@ -108,10 +123,16 @@ impl<'a> Dynamics<'a> {
             self.fallbacks.set(self.fallbacks.get() + 1);
         }
         let g = self.guess.get();
-        let op = self
-            .joint
-            .evaluate_from(load, speed, g.is_finite().then_some(g))
-            .expect("load > 0 and finite speed were checked");
+        let op = match self.joint.evaluate_from(load, speed, g.is_finite().then_some(g)) {
+            Ok(op) => op,
+            Err(e) => {
+                let mut fault = self.model_fault.borrow_mut();
+                if fault.is_none() {
+                    *fault = Some((load, speed, e));
+                }
+                return None;
+            }
+        };
         if op.logit.is_finite() {
             self.guess.set(op.logit);
         }
@@ -168,6 +189,9 @@ impl<'a> Dynamics<'a> {
             return State::from([0.0, 0.0, torque_rate, 0.0, 0.0, 1.0]);
         }
         let tf = self.friction(load, y).torque;
+        if self.model_fault.borrow().is_some() {
+            return State::repeat(f64::NAN);
+        }
         State::from([w, (ta + tf) / r.inertia, torque_rate, ta * w, -tf * w, 1.0])
     }
 }

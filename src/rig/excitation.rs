@@ -114,7 +114,7 @@ where
 /// (zero-order hold). `None` leaves the underlying excitation's signal in place.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct Inputs {
-    /// Radial load (N, ≥ 0).
+    /// Radial load (N): its magnitude is the load (a signed reaction component is accepted).
     pub load: Option<f64>,
     /// Command angle (rad), held constant (θ̇_cmd = 0) over the step.
     pub command_angle: Option<f64>,

@@ -45,11 +45,11 @@ use thiserror::Error;
 pub enum RigError {
     #[error(transparent)]
     Param(#[from] ParamError),
-    #[error("load = {value} N at t = {time} s is invalid: it must be a finite number >= 0 N")]
+    #[error("load = {value} N at t = {time} s is invalid: it must be a finite number (its magnitude is the load)")]
     Load { time: f64, value: f64 },
     #[error("command angle = {0} rad is invalid: it must be a finite number")]
     Command(f64),
-    #[error("cannot advance from t = {now} s to t = {requested} s: time must be finite and not go back")]
+    #[error("cannot advance from t = {now} s to t = {requested} s: time must be finite, at most 1e7 s (sim::MAX_TIME) and not go back")]
     Time { now: f64, requested: f64 },
     #[error("integration failed at t = {time} s: {message}")]
     Integration { time: f64, message: String },
@@ -63,6 +63,21 @@ pub enum RigError {
          take shorter communication steps, or looser tolerances / a longer rk4_step"
     )]
     WorkLimit { requested: f64, reached: f64, steps: u64 },
+    /// The regularised formulation is stiff at this load: explicit steps are limited to about
+    /// its creep time constant, and the advance needs more than the step budget.
+    #[error(
+        "advancing to t = {requested} s needs more than {limit} integrator steps (stopped at t = {reached} s): the regularised \
+         formulation is stiff at load = {load} N (creep time constant J*omega_reg/(k_b*mu_c*R*P) = {time_constant} s bounds \
+         the explicit step); use formulation = hybrid, raise rig.regularisation_speed, or take shorter communication steps"
+    )]
+    Stiff { requested: f64, reached: f64, load: f64, time_constant: f64, limit: u64 },
+    /// The friction model has no answer at a load/speed the rig reached (e.g. a load beyond
+    /// the asperity model's capacity, or one so small that the film overflows).
+    #[error("friction model at t = {time} s (load = {load} N, speed = {speed} rad/s): {source}")]
+    Model { time: f64, load: f64, speed: f64, source: crate::joint::ModelError },
+    /// [`RigSim::run`] asked for more samples than it may hold (or a bad interval).
+    #[error("sampling to t = {t_end} s every {interval} s needs more than {limit} samples or a bad interval (it must be a finite number > 0 s)")]
+    Samples { t_end: f64, interval: f64, limit: usize },
     /// The fidelity level asked for could not be built ([`RigSim::set_fidelity`]).
     #[error(transparent)]
     Fidelity(#[from] crate::fidelity::FidelityError),

@@ -27,6 +27,7 @@ use super::params::Formulation;
 use super::RigError;
 use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
 use crate::joint::Joint;
+use crate::fmt::Num;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
@@ -139,6 +140,13 @@ pub struct Sample {
 /// [`RigError::WorkLimit`] instead of running on for minutes (an FMU host would hang); the
 /// simulation is then left part-way and must be restored from a saved state or rebuilt.
 pub const ADVANCE_STEP_LIMIT: u64 = 2_000_000;
+
+/// Largest simulated time (s, ≈ 116 days): beyond it the double-precision resolution of t
+/// (TINY·t ≥ 1 ms) would let segments degenerate into Euler slivers.
+pub const MAX_TIME: f64 = 1e7;
+
+/// Most samples [`RigSim::run`] returns in one vector (≈ 2.4 GB of samples).
+pub const MAX_RUN_SAMPLES: usize = 20_000_000;
 
 /// Counters of what the integration did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
@@ -309,15 +317,49 @@ impl RigSim {
     }
 
     /// Resume from a state taken from a simulator with the same configuration and excitation.
+    /// Every value is checked as the setters check it and for consistency with this
+    /// configuration; a rejected state leaves the simulator untouched.
     pub fn set_state(&mut self, state: &RigState) -> Result<(), RigError> {
-        if state.time.is_nan() || state.time < state.node.time || state.node.state.iter().any(|v| !v.is_finite()) {
-            return Err(RigError::State(format!("inconsistent state {state:?}")));
-        }
+        self.check_state(state)?;
         self.node = state.node;
         self.time = state.time;
         self.inputs = state.inputs;
         self.segment = None;
         Ok(())
+    }
+
+    /// The checks of [`Self::set_state`].
+    fn check_state(&self, state: &RigState) -> Result<(), RigError> {
+        let bad = |what: String| Err(RigError::State(what));
+        let n = &state.node;
+        for (name, t) in [("node time", n.time), ("time", state.time)] {
+            if !(t.is_finite() && t.abs() <= MAX_TIME) {
+                return bad(format!("{name} = {} s is not a finite number within ±{} s", Num(t), Num(MAX_TIME)));
+            }
+        }
+        // The node starts the segment that covers `time`: at most one segment behind it.
+        let lag = state.time - n.time;
+        if !(lag >= 0.0 && lag <= 2.0 * self.config.rig.segment_length) {
+            return bad(format!(
+                "time = {} s is not within one segment ({} s) after the node time {} s",
+                Num(state.time),
+                Num(self.config.rig.segment_length),
+                Num(n.time)
+            ));
+        }
+        for (name, v) in ["angle", "angular_velocity", "torque", "actuator_work", "friction_dissipation"].iter().zip(n.state) {
+            if !v.is_finite() {
+                return bad(format!("{name} = {} is not a finite number", Num(v)));
+            }
+        }
+        if !(n.step.is_finite() && n.step >= 0.0 && n.step <= self.config.rig.segment_length) {
+            return bad(format!("step = {} s is not within 0..{} s", Num(n.step), Num(self.config.rig.segment_length)));
+        }
+        let regularised = self.config.rig.formulation == Formulation::Regularised;
+        if regularised != (n.phase == Phase::Smooth) {
+            return bad(format!("phase {:?} does not belong to the {:?} formulation", n.phase, self.config.rig.formulation));
+        }
+        Self::check_inputs(&state.inputs)
     }
 
     fn held(&self) -> Held {
@@ -326,7 +368,7 @@ impl RigSim {
 
     fn check_inputs(inputs: &Inputs) -> Result<(), RigError> {
         if let Some(p) = inputs.load
-            && !(p.is_finite() && p >= 0.0)
+            && !p.is_finite()
         {
             return Err(RigError::Load { time: f64::NAN, value: p });
         }
@@ -340,7 +382,7 @@ impl RigSim {
 
     /// Integrate to `t_next` (≥ the current time) with `inputs` held from the current time on.
     pub fn advance_to(&mut self, t_next: f64, inputs: &Inputs) -> Result<(), RigError> {
-        if !t_next.is_finite() || t_next < self.time {
+        if !(t_next.is_finite() && t_next <= MAX_TIME) || t_next < self.time {
             return Err(RigError::Time { now: self.time, requested: t_next });
         }
         Self::check_inputs(inputs)?;
@@ -355,27 +397,58 @@ impl RigSim {
             self.node.phase = self.resolve(&self.node)?;
         }
         // Integrate first (bounded), then move the clock: a refused advance leaves `time`.
+        // Refused at once when the joint can never slip (its breakaway torque exceeds the
+        // actuator's limit: it creeps all the time) and the creep steps exceed the budget.
+        if let Some(e) = self.stiff(t_next, self.time)
+            && let RigError::Stiff { time_constant, load, .. } = &e
+        {
+            let never_slips = Dynamics::new(&self.joint, &self.config.rig, &self.held(), Phase::Smooth, 0.0).breakaway_torque(*load)
+                > self.config.rig.torque_limit;
+            if never_slips && (t_next - self.time) / (3.0 * time_constant) > ADVANCE_STEP_LIMIT as f64 {
+                return Err(e);
+            }
+        }
         let start = self.stats.steps;
         self.cover_within(t_next, Some(start + ADVANCE_STEP_LIMIT)).map_err(|e| match e {
-            RigError::WorkLimit { reached, steps, .. } => RigError::WorkLimit { requested: t_next, reached, steps: steps - start },
+            RigError::WorkLimit { reached, steps, .. } => {
+                self.stiff(t_next, reached).unwrap_or(RigError::WorkLimit { requested: t_next, reached, steps: steps - start })
+            }
             e => e,
         })?;
         self.time = t_next;
         Ok(())
     }
 
+    /// For the regularised formulation, the error saying that an advance to `requested`
+    /// is beyond the step budget because of the creep band's stiffness (None otherwise).
+    fn stiff(&self, requested: f64, reached: f64) -> Option<RigError> {
+        let rig = &self.config.rig;
+        if rig.formulation != Formulation::Regularised {
+            return None;
+        }
+        let exc = self.held();
+        let d = Dynamics::new(&self.joint, rig, &exc, Phase::Smooth, 0.0);
+        let load = d.load(reached).ok()?;
+        let tau = rig.inertia * rig.regularisation_speed / d.breakaway_torque(load);
+        Some(RigError::Stiff { requested, reached, load, time_constant: tau, limit: ADVANCE_STEP_LIMIT })
+    }
+
     /// The outputs at the current time.
     pub fn sample(&mut self) -> Result<Sample, RigError> {
         let t = self.time;
         let (y, phase, logit) = self.state_at(t)?;
-        Ok(self.observe(t, &y, phase, logit))
+        self.observe(t, &y, phase, logit)
     }
 
     /// Run on the built-in or given excitation and sample every `interval` from the current
     /// time to `t_end` (both included when they fall on the grid), holding the current inputs.
     pub fn run(&mut self, t_end: f64, interval: f64) -> Result<Vec<Sample>, RigError> {
         let t0 = self.time;
-        let n = ((t_end - t0) / interval + 1e-9).floor() as usize;
+        let count = (t_end - t0) / interval + 1e-9;
+        if !(interval > 0.0 && count.is_finite() && count < MAX_RUN_SAMPLES as f64) {
+            return Err(RigError::Samples { t_end, interval, limit: MAX_RUN_SAMPLES });
+        }
+        let n = count.max(0.0).floor() as usize;
         let inputs = self.inputs;
         let mut out = Vec::with_capacity(n + 1);
         out.push(self.sample()?);
@@ -408,17 +481,21 @@ impl RigSim {
         })
     }
 
-    /// Make the current segment cover `t`.
+    /// Make the current segment cover `t`, within [`ADVANCE_STEP_LIMIT`] steps.
     fn cover(&mut self, t: f64) -> Result<(), RigError> {
-        self.cover_within(t, None)
+        self.cover_within(t, Some(self.stats.steps + ADVANCE_STEP_LIMIT))
     }
 
     /// [`Self::cover`], refusing to go on once the step count passes `limit` (checked per
-    /// segment, which is at most `segment_length` long): a host must never hang in one call.
+    /// segment, which keeps at most [`super::integrate::MAX_SEGMENT_NODES`] steps): a host
+    /// must never hang in one call.
     fn cover_within(&mut self, t: f64, limit: Option<u64>) -> Result<(), RigError> {
+        // Each segment counts at least one step (slivers take none), so the loop is bounded.
+        let mut segments = 0u64;
         loop {
             if self.segment.is_none() {
-                if limit.is_some_and(|l| self.stats.steps > l) {
+                segments += 1;
+                if limit.is_some_and(|l| self.stats.steps > l || segments > ADVANCE_STEP_LIMIT) {
                     return Err(RigError::WorkLimit { requested: t, reached: self.node.time, steps: self.stats.steps });
                 }
                 self.segment = Some(self.compute_segment()?);
@@ -526,7 +603,7 @@ impl RigSim {
     }
 
     /// The outputs at (t, y) in `phase`.
-    fn observe(&self, t: f64, y: &State, phase: Phase, logit: f64) -> Sample {
+    fn observe(&self, t: f64, y: &State, phase: Phase, logit: f64) -> Result<Sample, RigError> {
         let exc = self.held();
         let rig = &self.config.rig;
         let mut d = Dynamics::new(&self.joint, rig, &exc, phase, logit);
@@ -534,9 +611,12 @@ impl RigSim {
         let load = d.load(t).unwrap_or(f64::NAN);
         let (command_angle, _) = exc.command(t);
         let fr = if load.is_finite() { Some(d.friction(load, y)) } else { None };
+        if let Some((load, speed, source)) = d.model_fault.borrow().clone() {
+            return Err(RigError::Model { time: t, load, speed, source });
+        }
         let op = fr.and_then(|f| f.op);
         let w = y[SPEED];
-        Sample {
+        Ok(Sample {
             time: t,
             command_angle,
             angle: y[ANGLE],
@@ -553,8 +633,10 @@ impl RigSim {
             },
             load,
             actuator_work: y[WORK],
-            friction_dissipation: y[DISSIPATION],
+            // D = ∫|T_f ω| dt ≥ 0 by definition; the integrand is −T_f·ω, which round-off
+            // past an event can make −1e-45 J: never report a negative dissipation.
+            friction_dissipation: y[DISSIPATION].max(0.0),
             kinetic_energy: 0.5 * rig.inertia * w * w,
-        }
+        })
     }
 }

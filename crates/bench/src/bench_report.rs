@@ -245,8 +245,8 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     writeln!(md).unwrap();
     md.push_str(&body);
     let paths = vec![dir.join("BENCHMARKS.md"), dir.join("bench_evaluation.svg"), dir.join("bench_rig.svg")];
-    write_text(&paths[1], &eval_svg(r)?)?;
-    write_text(&paths[2], &rig_svg(r)?)?;
-    write_text(&paths[0], &md)?;
+    write_text(&paths[1], &[], &eval_svg(r)?)?;
+    write_text(&paths[2], &[], &rig_svg(r)?)?;
+    write_text(&paths[0], &[], &md)?;
     Ok(paths)
 }

@@ -35,7 +35,7 @@ impl ParamsArg {
         match &self.params {
             None => Ok(Params::default()),
             Some(path) => {
-                let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+                let text = read_param_file(path)?;
                 Params::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
             }
         }
@@ -47,6 +47,23 @@ impl ParamsArg {
             None => CliError::Params(source),
         })
     }
+}
+
+/// Largest parameter file read (a complete one is ~3 kB): `/dev/zero` or a huge file given as
+/// `--params` is an error, not an unbounded read.
+pub const MAX_PARAM_FILE_BYTES: u64 = 1 << 20;
+
+/// The text of a parameter file, at most [`MAX_PARAM_FILE_BYTES`].
+pub fn read_param_file(path: &std::path::Path) -> Result<String> {
+    use std::io::Read;
+    let rerr = |source: std::io::Error| CliError::Read { path: path.to_path_buf(), source };
+    let file = std::fs::File::open(path).map_err(rerr)?;
+    let mut bytes = Vec::new();
+    file.take(MAX_PARAM_FILE_BYTES + 1).read_to_end(&mut bytes).map_err(rerr)?;
+    if bytes.len() as u64 > MAX_PARAM_FILE_BYTES {
+        return Err(rerr(std::io::Error::other(format!("larger than {MAX_PARAM_FILE_BYTES} bytes: not a parameter file"))));
+    }
+    String::from_utf8(bytes).map_err(|e| rerr(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))
 }
 
 /// A value given on the command line must be finite.

@@ -7,7 +7,7 @@ use super::cycle_plots::{torque_angle_svg, torque_time_svg};
 use super::cycle_run::{cycle_csv, default_skip, CycleRun};
 use super::error::{CliError, Result};
 use super::fidelity_args::{describe, FidelityArgs};
-use super::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
+use super::output::{inputs_of, output_dir, refuse_files, report_written, to_stdout, write_atomic, write_text};
 use clap::{Args, ValueEnum};
 use pinjoint::rig::{Formulation, Method, RigConfig};
 use pinjoint::Joint;
@@ -40,7 +40,7 @@ pub struct CycleCmd {
     /// Stroke amplitude A, in degrees (±A) [default: the file's rig.amplitude, else 40°]
     #[arg(long, value_name = "DEG", allow_negative_numbers = true)]
     pub amplitude: Option<f64>,
-    /// Radial load P on the pin, in N (> 0) [default: the file's rig.load, else 20000 N]
+    /// Radial load P on the pin, in N; its magnitude is used (|P| > 0) [default: the file's rig.load, else 20000 N]
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub load: Option<f64>,
     /// Number of whole strokes to simulate (>= 1)
@@ -93,7 +93,7 @@ pub fn load_rig_config(path: Option<&PathBuf>) -> Result<RigConfig> {
     match path {
         None => Ok(RigConfig::default()),
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
+            let text = super::common::read_param_file(path)?;
             RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
         }
     }
@@ -112,7 +112,7 @@ fn config(cmd: &CycleCmd) -> Result<RigConfig> {
         cfg.rig.amplitude = a.to_radians();
     }
     if let Some(p) = cmd.load {
-        cfg.rig.load = positive("load", p, "N")?;
+        cfg.rig.load = positive("load magnitude", p.abs(), "N")?;
     }
     if let Some(m) = cmd.formulation {
         cfg.rig.formulation = match m {
@@ -157,6 +157,7 @@ fn counts(cmd: &CycleCmd) -> Result<(usize, usize, usize)> {
 }
 
 pub fn run(cmd: &CycleCmd) -> Result<()> {
+    refuse_files(&cmd.output, &["cycle.csv", "torque_time.svg", "torque_angle.svg"], cmd.params.as_ref())?;
     let cfg = config(cmd)?;
     let (cycles, skip, per_cycle) = counts(cmd)?;
     let joint = Joint::new(&cfg.model)?;
@@ -181,9 +182,10 @@ pub fn run(cmd: &CycleCmd) -> Result<()> {
     let (time_svg, angle_svg) = (torque_time_svg(&run)?, torque_angle_svg(&run)?);
     let dir = output_dir(&cmd.output)?;
     let paths = [dir.join("cycle.csv"), dir.join("torque_time.svg"), dir.join("torque_angle.svg")];
-    write_atomic(&paths[0], |w| cycle_csv(w, &run.samples))?;
-    write_text(&paths[1], &time_svg)?;
-    write_text(&paths[2], &angle_svg)?;
+    let inputs = inputs_of(cmd.params.as_ref());
+    write_atomic(&paths[0], &inputs, |w| cycle_csv(w, &run.samples))?;
+    write_text(&paths[1], &inputs, &time_svg)?;
+    write_text(&paths[2], &inputs, &angle_svg)?;
     report_written(&paths)?;
     to_stdout(|w| {
         writeln!(

@@ -14,6 +14,9 @@ pub enum CliError {
     Read { path: PathBuf, source: io::Error },
     #[error("cannot write {path}: {source}")]
     Write { path: PathBuf, source: io::Error },
+    /// An output path names one of the command's input files (checked by device and inode).
+    #[error("output {output} is the input file {input}: refusing to overwrite it (nothing was read or written)")]
+    SameFile { output: PathBuf, input: PathBuf },
     #[error("parameter file {path}: {source}")]
     ParamFile { path: PathBuf, source: ParamError },
     #[error("{0}")]

@@ -114,12 +114,12 @@ fn progress(total: u64) -> ProgressBar {
 /// The core figures (3, 4) into `dir`.
 fn core_figures(dir: &Path, joint: &Joint, s: &CoreSettings) -> Result<Vec<PathBuf>> {
     let (lo, hi) = DEFAULT_SPEED_RANGE;
-    let mut paths = write_stribeck(dir, joint, 20e3, &log_space(lo, hi, s.stribeck_points))?;
+    let mut paths = write_stribeck(dir, &[], joint, 20e3, &log_space(lo, hi, s.stribeck_points))?;
     let grid = Grid {
         loads: lin_space(PAPER_LOADS[0], PAPER_LOADS[PAPER_LOADS.len() - 1], s.map_loads),
         speeds: log_space(PAPER_RPM_RANGE.0 * RAD_S_PER_RPM, PAPER_RPM_RANGE.1 * RAD_S_PER_RPM, s.map_speeds),
     };
-    paths.extend(write_map(dir, joint, &grid)?);
+    paths.extend(write_map(dir, &[], joint, &grid)?);
     Ok(paths)
 }
 
@@ -148,12 +148,12 @@ fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius:
     let mut paths = Vec::new();
     for (name, svg) in &files {
         let p = dir.join(name);
-        write_text(&p, svg)?;
+        write_text(&p, &[], svg)?;
         paths.push(p);
     }
     for (name, fill) in &csvs {
         let p = dir.join(name);
-        write_atomic(&p, |w| fill(w))?;
+        write_atomic(&p, &[], |w| fill(w))?;
         paths.push(p);
     }
     Ok(paths)
@@ -189,7 +189,7 @@ pub fn run(cmd: &FiguresCmd) -> Result<()> {
     let table = claims(&joint, &results, cfg.rig.amplitude)?;
     for (name, text) in [("index.html", html(&list, &table, &info)), ("README.md", markdown(&list, &table, &info))] {
         let p = dir.join(name);
-        write_text(&p, &text)?;
+        write_text(&p, &[], &text)?;
         paths.push(p);
     }
     bar.inc(1);

@@ -3,7 +3,7 @@
 
 use super::common::{lin_space, log_space, positive, rig_peak_speed, ParamsArg, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
 use super::error::{CliError, Result};
-use super::output::{output_dir, report_written, write_atomic, write_text};
+use super::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
 use super::stribeck::{curve, points_csv};
 use clap::Args;
 use crate::plot::{heat_map, stacked_plot, Axis, Chart, Corner, HeatMap, Region, Series};
@@ -127,7 +127,14 @@ fn curves_plot(joint: &Joint, g: &Grid) -> Result<String> {
 }
 
 /// Write the CSV and the three plots into `dir`; returns their paths.
-pub fn write_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
+/// `inputs`: the command's input files, never overwritten.
+/// Most loads (and most speeds) of one map: at most 1000 × 1000 = 1e6 solves.
+pub const MAX_GRID_SIDE: usize = 1000;
+
+/// The files `map` writes into its directory.
+pub const MAP_FILES: &[&str] = &["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"];
+
+pub fn write_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
     let ops = evaluate(joint, g)?;
     let lambda = map_plot(
         g,
@@ -147,15 +154,16 @@ pub fn write_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
     )?;
     let curves = curves_plot(joint, g)?;
     let dir = output_dir(dir)?;
-    let paths: Vec<PathBuf> = ["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"].iter().map(|f| dir.join(f)).collect();
-    write_atomic(&paths[0], |w| points_csv(w, &ops))?;
-    write_text(&paths[1], &lambda)?;
-    write_text(&paths[2], &friction)?;
-    write_text(&paths[3], &curves)?;
+    let paths: Vec<PathBuf> = MAP_FILES.iter().map(|f| dir.join(f)).collect();
+    write_atomic(&paths[0], inputs, |w| points_csv(w, &ops))?;
+    write_text(&paths[1], inputs, &lambda)?;
+    write_text(&paths[2], inputs, &friction)?;
+    write_text(&paths[3], inputs, &curves)?;
     Ok(paths)
 }
 
 pub fn run(cmd: &MapCmd) -> Result<()> {
+    refuse_files(&cmd.output, MAP_FILES, cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;
     let (p0, p1) = (positive("min-load", cmd.min_load, "N")?, positive("max-load", cmd.max_load, "N")?);
     let (n0, n1) = (positive("min-rpm", cmd.min_rpm, "rpm")?, positive("max-rpm", cmd.max_rpm, "rpm")?);
@@ -166,10 +174,10 @@ pub fn run(cmd: &MapCmd) -> Result<()> {
         return Err(CliError::Invalid(format!("the speed range is empty: min-rpm {n0} rpm >= max-rpm {n1} rpm")));
     }
     for (name, n) in [("loads", cmd.loads), ("speeds", cmd.speeds)] {
-        if n < 2 {
-            return Err(CliError::Invalid(format!("{name} = {n} is invalid: it must be >= 2")));
+        if !(2..=MAX_GRID_SIDE).contains(&n) {
+            return Err(CliError::Invalid(format!("{name} = {n} is invalid: it must be in 2..={MAX_GRID_SIDE} (bounded work and memory)")));
         }
     }
     let grid = Grid { loads: lin_space(p0, p1, cmd.loads), speeds: log_space(n0 * RAD_S_PER_RPM, n1 * RAD_S_PER_RPM, cmd.speeds) };
-    report_written(&write_map(&cmd.output, &joint, &grid)?)
+    report_written(&write_map(&cmd.output, &inputs_of(cmd.params.params.as_ref()), &joint, &grid)?)
 }

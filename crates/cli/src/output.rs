@@ -1,40 +1,141 @@
-//! Writing results: files appear complete or not at all (temp file in the same directory,
-//! renamed on success), and standard output tolerates a closed pipe.
+//! Writing results, by one set of rules for every command:
+//!
+//! - an output equal to one of the command's input files (same device and inode, however the
+//!   path is spelled: another name, a hard link, a symlink) is refused before anything is read
+//!   or written ([`refuse_inputs`], called first by each command, and again by the writer);
+//! - a regular file, or a path that does not exist yet, is replaced atomically: the content goes
+//!   to a temporary file in the same directory, flushed to disk and renamed over the target only
+//!   when complete; an existing file keeps its permission bits (and, where allowed, its owner);
+//! - a symlink is followed: its target is written by these rules and the link stays a link;
+//! - anything that is not a regular file (a FIFO, a character device such as `/dev/null`,
+//!   `/dev/stdout` and other `/proc/self/fd` links) is opened and written in place, streaming;
+//!   it is never removed or replaced.
+//!
+//! Standard output tolerates a closed pipe.
 
 use super::error::{CliError, Result};
 use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-/// Write `path` atomically: `fill` writes into a temporary file beside it, which is renamed
-/// onto `path` only if `fill` and the flush succeed. On any error the temporary file is removed.
-pub fn write_atomic(path: &Path, fill: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> Result<()> {
+/// The identity of a file: (device, inode) on Unix.
+#[cfg(unix)]
+fn identity(meta: &fs::Metadata) -> (u64, u64) {
+    use std::os::unix::fs::MetadataExt;
+    (meta.dev(), meta.ino())
+}
+
+/// The metadata of an input path (`-`: whatever standard input is).
+#[cfg(unix)]
+fn input_metadata(input: &Path) -> Option<fs::Metadata> {
+    if input.as_os_str() == "-" {
+        use std::os::fd::AsFd;
+        let fd = io::stdin().as_fd().try_clone_to_owned().ok()?;
+        return fs::File::from(fd).metadata().ok();
+    }
+    fs::metadata(input).ok()
+}
+
+/// Refuse any output that is the same file as one of `inputs` (device and inode compared, so
+/// any spelling of the path, a hard link or a symlink is caught). Call it before reading.
+pub fn refuse_inputs(outputs: &[&Path], inputs: &[&Path]) -> Result<()> {
+    #[cfg(unix)]
+    for out in outputs {
+        let Ok(out_meta) = fs::metadata(out) else { continue };
+        for input in inputs {
+            if let Some(in_meta) = input_metadata(input) {
+                if identity(&in_meta) == identity(&out_meta) {
+                    return Err(CliError::SameFile { output: out.to_path_buf(), input: input.to_path_buf() });
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Where and how a path is written.
+enum Target {
+    /// Replace this regular file (or create it) atomically.
+    Replace(PathBuf),
+    /// Open and write in place (FIFO, device, `/proc/self/fd/N`).
+    InPlace,
+}
+
+/// Follow symlinks (at most 40) to the file that is really written.
+fn resolve(path: &Path) -> io::Result<Target> {
+    let mut p = path.to_path_buf();
+    for _ in 0..40 {
+        if p.starts_with("/proc") || p.starts_with("/dev/fd") {
+            // /dev/stdout -> /proc/self/fd/1 -> wherever the shell pointed it: never replace.
+            return Ok(Target::InPlace);
+        }
+        match fs::symlink_metadata(&p) {
+            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Target::Replace(p)),
+            Err(e) => return Err(e),
+            Ok(m) if m.file_type().is_symlink() => {
+                let link = fs::read_link(&p)?;
+                p = match p.parent() {
+                    Some(dir) if link.is_relative() => dir.join(link),
+                    _ => link,
+                };
+            }
+            Ok(m) if m.is_file() => return Ok(Target::Replace(p)),
+            Ok(_) => return Ok(Target::InPlace),
+        }
+    }
+    Err(io::Error::other("too many levels of symbolic links"))
+}
+
+/// Write `path` by the module's rules, `fill` producing the content; `inputs` are the command's
+/// input files, which are never overwritten. On any error a temporary file is removed and a
+/// replaced file keeps its old content.
+pub fn write_atomic(path: &Path, inputs: &[&Path], fill: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> Result<()> {
+    refuse_inputs(&[path], inputs)?;
     let werr = |source: io::Error| CliError::Write { path: path.to_path_buf(), source };
-    let dir = match path.parent() {
+    let target = match resolve(path).map_err(werr)? {
+        Target::InPlace => {
+            let file = fs::OpenOptions::new().write(true).truncate(true).open(path).map_err(werr)?;
+            let mut w = BufWriter::new(file);
+            fill(&mut w).map_err(werr)?;
+            return w.flush().map_err(werr);
+        }
+        Target::Replace(target) => target,
+    };
+    let dir = match target.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
+    let old = fs::metadata(&target).ok();
     let mut builder = tempfile::Builder::new();
     builder.prefix(".pinjoint-").suffix(".part");
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
-        // Like an ordinary file: 0666 minus the umask (tempfile's default is 0600).
+        // Like an ordinary new file: 0666 minus the umask (tempfile's default is 0600).
         builder.permissions(fs::Permissions::from_mode(0o666));
     }
     let mut tmp = builder.tempfile_in(dir).map_err(werr)?;
+    #[cfg(unix)]
+    if let Some(old) = &old {
+        use std::os::unix::fs::MetadataExt;
+        // Keep the replaced file's owner (only root may give a file away; else it is ours
+        // already or the call fails harmlessly) and its permission bits (chmod ignores umask).
+        let _ = std::os::unix::fs::fchown(tmp.as_file(), Some(old.uid()), Some(old.gid()));
+        tmp.as_file().set_permissions(old.permissions()).map_err(werr)?;
+    }
     {
         let mut w = BufWriter::new(tmp.as_file_mut());
         fill(&mut w).map_err(werr)?;
         w.flush().map_err(werr)?;
     }
-    tmp.persist(path).map_err(|e| werr(e.error))?;
+    tmp.as_file().sync_all().map_err(werr)?;
+    tmp.persist(&target).map_err(|e| werr(e.error))?;
     Ok(())
 }
 
-/// Write a whole text file atomically.
-pub fn write_text(path: &Path, text: &str) -> Result<()> {
-    write_atomic(path, |w| w.write_all(text.as_bytes()))
+/// Write a whole text file by the rules of [`write_atomic`].
+pub fn write_text(path: &Path, inputs: &[&Path], text: &str) -> Result<()> {
+    write_atomic(path, inputs, |w| w.write_all(text.as_bytes()))
 }
 
 /// Create the output directory (and its parents) if needed.
@@ -54,4 +155,17 @@ pub fn to_stdout(fill: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> Result<
 /// Tell the user which files were written (one `wrote PATH` line each, on standard output).
 pub fn report_written(paths: &[PathBuf]) -> Result<()> {
     to_stdout(|w| paths.iter().try_for_each(|p| writeln!(w, "wrote {}", p.display())))
+}
+
+/// The optional input file as a list for [`write_atomic`].
+pub fn inputs_of(path: Option<&PathBuf>) -> Vec<&Path> {
+    path.map(|p| vec![p.as_path()]).unwrap_or_default()
+}
+
+/// Refuse, before anything is read, a command whose output directory `dir` would receive one
+/// of the files `names` that is the same file as its optional input `input`.
+pub fn refuse_files(dir: &Path, names: &[&str], input: Option<&PathBuf>) -> Result<()> {
+    let outs: Vec<PathBuf> = names.iter().map(|n| dir.join(n)).collect();
+    let outs: Vec<&Path> = outs.iter().map(PathBuf::as_path).collect();
+    refuse_inputs(&outs, &inputs_of(input))
 }

@@ -25,7 +25,8 @@ With --fidelity other than full, the level is built over the envelope (by defaul
 error bound."
 )]
 pub struct PointCmd {
-    /// Normal load on the joint P_T, in N (newtons; 20000 = 20 kN); must be > 0
+    /// Normal load on the joint P_T, in N (newtons; 20000 = 20 kN); its magnitude is used
+    /// (a signed reaction component: -P gives the answer at +P); |P_T| must be > 0
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub load: f64,
     #[command(flatten)]
@@ -139,10 +140,10 @@ pub fn run(cmd: &PointCmd) -> Result<()> {
     let op = if cmd.fidelity.is_full()? {
         joint.evaluate(cmd.load, omega)?
     } else {
-        super::common::positive("load", cmd.load, "N")?;
+        let p = super::common::positive("load magnitude", cmd.load.abs(), "N")?;
         let w = omega.abs();
         let speeds = if w > 0.0 { (0.5 * w, 2.0 * w) } else { (1e-3, 1.0) };
-        let mut ev = cmd.fidelity.build(&cmd.params.load()?, (0.5 * cmd.load, 2.0 * cmd.load), speeds)?;
+        let mut ev = cmd.fidelity.build(&cmd.params.load()?, (0.5 * p, 2.0 * p), speeds)?;
         let e = ev.evaluate(cmd.load, omega).map_err(|e| super::error::CliError::Invalid(e.to_string()))?;
         note_fallback(&e, &ev, &Default::default());
         eprintln!("fidelity: answered by {}", e.source.as_str());

@@ -3,7 +3,7 @@
 
 use super::common::{csv_io, exact, log_space, positive, readable, result_fields, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM, RESULT_COLUMNS};
 use super::error::{CliError, Result};
-use super::output::{output_dir, report_written, write_atomic, write_text};
+use super::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
 use clap::Args;
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series};
 use pinjoint::{Joint, OperatingPoint};
@@ -111,17 +111,22 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
 }
 
 /// Write DIR/stribeck.csv and DIR/stribeck.svg; returns their paths.
-pub fn write_stribeck(dir: &Path, joint: &Joint, load: f64, speeds: &[f64]) -> Result<Vec<PathBuf>> {
+/// `inputs`: the command's input files, never overwritten.
+pub fn write_stribeck(dir: &Path, inputs: &[&Path], joint: &Joint, load: f64, speeds: &[f64]) -> Result<Vec<PathBuf>> {
     let ops = curve(joint, load, speeds)?;
     let dir = output_dir(dir)?;
     let (csv_path, svg_path) = (dir.join("stribeck.csv"), dir.join("stribeck.svg"));
     let svg = figure(joint, load, &ops)?;
-    write_atomic(&csv_path, |w| points_csv(w, &ops))?;
-    write_text(&svg_path, &svg)?;
+    write_atomic(&csv_path, inputs, |w| points_csv(w, &ops))?;
+    write_text(&svg_path, inputs, &svg)?;
     Ok(vec![csv_path, svg_path])
 }
 
+/// Most points of one Stribeck curve.
+pub const MAX_POINTS: usize = 100_000;
+
 pub fn run(cmd: &StribeckCmd) -> Result<()> {
+    refuse_files(&cmd.output, &["stribeck.csv", "stribeck.svg"], cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;
     let load = positive("load", cmd.load, "N")?;
     let lo = end(cmd.min_speed, cmd.min_rpm, "min", DEFAULT_SPEED_RANGE.0)?;
@@ -129,8 +134,8 @@ pub fn run(cmd: &StribeckCmd) -> Result<()> {
     if lo >= hi {
         return Err(CliError::Invalid(format!("the speed range is empty: lowest {lo} rad/s >= highest {hi} rad/s")));
     }
-    if cmd.points < 2 {
-        return Err(CliError::Invalid(format!("points = {} is invalid: it must be >= 2", cmd.points)));
+    if !(2..=MAX_POINTS).contains(&cmd.points) {
+        return Err(CliError::Invalid(format!("points = {} is invalid: it must be in 2..={MAX_POINTS} (bounded work and memory)", cmd.points)));
     }
-    report_written(&write_stribeck(&cmd.output, &joint, load, &log_space(lo, hi, cmd.points))?)
+    report_written(&write_stribeck(&cmd.output, &inputs_of(cmd.params.params.as_ref()), &joint, load, &log_space(lo, hi, cmd.points))?)
 }

@@ -3,7 +3,7 @@
 use super::common::{csv_io, result_fields, ParamsArg, RESULT_COLUMNS};
 use super::error::{CliError, Result};
 use super::fidelity_args::{note_fallback, range_of, FidelityArgs};
-use super::output::{to_stdout, write_atomic};
+use super::output::{refuse_inputs, to_stdout, write_atomic};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::fidelity::Evaluator;
@@ -26,7 +26,7 @@ magnitude μRP_T), film_thickness (m, central h_c), lambda_ratio (-), fluid_load
 asperity_load_fraction (1/γ2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-) \
 and regime (boundary | mixed | full-film). Numbers are printed in full (shortest text that \
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
-A malformed row (missing field, non-numeric, non-finite, load <= 0) stops the run with an \
+A malformed row (missing field, non-numeric, non-finite, load = 0; a negative load is taken as its magnitude) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
 name beside it and renamed only on success).\n\n\
 Examples:\n  \
@@ -163,8 +163,8 @@ pub fn parse(mut input: impl Read, file: &str) -> Result<Table> {
             Ok(v)
         };
         let load = num(il, "load", "N")?;
-        if load <= 0.0 {
-            return Err(bad(line, format!("column load = {} N is invalid: the load must be > 0 N", &rec[il])));
+        if load == 0.0 {
+            return Err(bad(line, format!("column load = {} N is invalid: the load magnitude must be > 0 N", &rec[il])));
         }
         let speed = num(is, "speed", "rad/s")?;
         rows.push(Row { line, fields: rec.iter().map(str::to_string).collect(), load, speed });
@@ -236,6 +236,11 @@ pub fn write_csv(w: &mut dyn Write, table: &Table, results: &[OperatingPoint]) -
 }
 
 pub fn run(cmd: &SweepCmd) -> Result<()> {
+    let mut inputs: Vec<&Path> = vec![cmd.input.as_path()];
+    inputs.extend(cmd.params.params.as_deref());
+    if let Some(out) = cmd.output.as_deref().filter(|p| !is_stdio(p)) {
+        refuse_inputs(&[out], &inputs)?;
+    }
     let joint = cmd.params.joint()?;
     let table = if is_stdio(&cmd.input) {
         parse(io::stdin().lock(), "standard input")?
@@ -247,13 +252,13 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     let results = if cmd.fidelity.is_full()? {
         evaluate(&joint, &table.rows, &file)?
     } else {
-        let loads = range_of(table.rows.iter().map(|r| r.load), (1.0, 2.0));
+        let loads = range_of(table.rows.iter().map(|r| r.load.abs()), (1.0, 2.0));
         let speeds = range_of(table.rows.iter().map(|r| r.speed.abs()), (1e-3, 1.0));
         let ev = cmd.fidelity.build(&cmd.params.load()?, loads, speeds)?;
         evaluate_with(&ev, &table.rows, &file)?
     };
     match &cmd.output {
-        Some(path) if !is_stdio(path) => write_atomic(path, |w| write_csv(w, &table, &results)),
+        Some(path) if !is_stdio(path) => write_atomic(path, &inputs, |w| write_csv(w, &table, &results)),
         _ => to_stdout(|w| write_csv(w, &table, &results)),
     }
 }

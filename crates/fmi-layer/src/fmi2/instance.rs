@@ -255,6 +255,14 @@ impl Instance {
         if !(h.is_finite() && h > 0.0) {
             return Err(format!("communicationStepSize = {} s must be a finite number > 0 s", show(h)));
         }
+        // An end that is not a finite number is refused before anything changes.
+        if !(t + h).is_finite() {
+            return Err(format!(
+                "currentCommunicationPoint + communicationStepSize = {} s + {} s is not a finite number",
+                show(t),
+                show(h)
+            ));
+        }
         // The host's time may differ from the sum of its steps by rounding only.
         let tol = 1e-6 * h + 16.0 * f64::EPSILON * t.abs().max(self.time.abs());
         if (t - self.time).abs() > tol {

@@ -122,7 +122,8 @@ impl Logger {
     fn emit(&self, status: Status, c: Category, message: &str) {
         let category = c_text(c.name());
         // '#' introduces a value-reference reference in FMI 2.0 messages; "##" is a literal '#'.
-        let msg = c_text(&message.replace('#', "##"));
+        // Numbers in the short round-trip form however the message was built (no 309 digits).
+        let msg = c_text(&crate::fmt::short_numbers(message).replace('#', "##"));
         // SAFETY: the callback was checked non-NULL at instantiation; all strings are
         // NUL-terminated and outlive the call; the message goes through "%s".
         unsafe {
@@ -139,7 +140,7 @@ pub fn c_text(s: &str) -> CString {
 /// A number for messages: plain decimal in the everyday range, scientific
 /// notation for very small or very large magnitudes (5e-324, not 323 zeros).
 pub fn show(v: f64) -> String {
-    if v != 0.0 && v.is_finite() && !(1e-4..1e15).contains(&v.abs()) { format!("{v:e}") } else { format!("{v}") }
+    crate::fmt::Num(v).to_string()
 }
 
 #[cfg(test)]

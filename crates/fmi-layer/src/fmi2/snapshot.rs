@@ -107,8 +107,12 @@ impl Snapshot {
             .ok_or_else(|| format!("serialized FMU state holds an invalid life-cycle state code {code}"))?;
         let time = r.f64("time")?;
         let start_time = r.f64("start time")?;
-        if !time.is_finite() || !start_time.is_finite() {
-            return Err(format!("serialized FMU state holds a non-finite time ({time}, start {start_time})"));
+        if !time.is_finite() || !start_time.is_finite() || time < start_time {
+            return Err(format!(
+                "serialized FMU state holds an invalid time ({} s, start {} s): both must be finite, time >= start",
+                crate::fmt::Num(time),
+                crate::fmt::Num(start_time)
+            ));
         }
         let m = r.u32("model state length")? as usize;
         let model = r.take(m, "model state")?.to_vec();

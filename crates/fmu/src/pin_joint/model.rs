@@ -256,12 +256,13 @@ impl Model for PinJointModel {
         match i {
             ANGLE if !v.is_finite() => Err(format!("input angle = {} rad is not a finite number", show(v))),
             ANGULAR_VELOCITY if !v.is_finite() => Err(format!("input angular_velocity = {} rad/s is not a finite number", show(v))),
-            LOAD if !(v.is_finite() && v >= 0.0) => {
-                Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(v)))
-            }
+            LOAD if !v.is_finite() => Err(format!(
+                "input load = {} N is invalid: it must be a finite number (a negative value is taken as its magnitude)",
+                show(v)
+            )),
             // Beyond the asperity model's capacity (pinjoint::Joint::capacity) the load is
             // refused here, leaving the instance and its outputs as they were.
-            LOAD if self.evaluator.as_ref().is_some_and(|e| v >= e.joint().capacity()) => Err(format!(
+            LOAD if self.evaluator.as_ref().is_some_and(|e| v.abs() >= e.joint().capacity()) => Err(format!(
                 "input load = {} N is beyond the asperity model's capacity of {:.6e} N for these parameters",
                 show(v),
                 self.evaluator.as_ref().map_or(f64::NAN, |e| e.joint().capacity())
@@ -384,11 +385,22 @@ impl Model for PinJointModel {
         }
         let fidelity = FidelitySettings { code: code as i32, tolerance, envelope };
         r.finish()?;
+        // Every value passes the checks of the setters and of fmi2ExitInitializationMode
+        // (parameters, band, fidelity settings, load capacity of the state's own joint)
+        // before anything of this instance changes.
+        let joint = Joint::new(&params).map_err(|e| format!("state: {e}"))?;
+        check_band(band)?;
+        crate::fidelity::validate_tolerance(tolerance).map_err(|e| format!("state: parameter {e}"))?;
+        crate::fmu::envelope_from_parameters(envelope)?;
         for (i, v) in [(ANGLE, angle), (ANGULAR_VELOCITY, omega), (LOAD, load)] {
             self.check_real(i, v)?;
         }
+        let capacity = joint.capacity();
+        if load.abs() >= capacity {
+            return Err(format!("state: load = {} N is beyond the asperity model's capacity of {} N", show(load), show(capacity)));
+        }
         if !(energy.is_finite() && energy >= 0.0) {
-            return Err(format!("dissipated_energy = {energy} J is not a finite number >= 0"));
+            return Err(format!("dissipated_energy = {} J is not a finite number >= 0", show(energy)));
         }
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
         let evaluator = if params == self.params && fidelity == self.fidelity && band == self.band { self.evaluator.take() } else { None };

@@ -213,8 +213,8 @@ pub fn table() -> Vec<Variable> {
             "Angle of the pin relative to the bush. The friction law does not depend on position: no output uses it; it is kept in the FMU state for hosts that wire the full joint kinematics"),
         input("angular_velocity", 2, "rad/s", Some("deg/s"), 0.0, None,
             "Angular velocity omega of the pin relative to the bush (any finite value; sliding speed u = |omega| R)"),
-        input("load", 3, "N", Some("kN"), DEFAULT_LOAD, Some(0.0),
-            "Radial load P_T on the joint (magnitude, finite and >= 0; at 0 the joint is unloaded and every output but dissipated_energy is 0)"),
+        input("load", 3, "N", Some("kN"), DEFAULT_LOAD, None,
+            "Radial load P_T on the joint: any finite value, its magnitude |P_T| is the load (a signed reaction component is accepted; the outputs at -P equal those at +P); at 0 the joint is unloaded and every output but dissipated_energy is 0"),
     ];
     v.extend(Output::ALL.iter().map(|&o| output(o)));
     v.extend(PARAMS.iter().enumerate().map(|(i, s)| parameter(i, s)));

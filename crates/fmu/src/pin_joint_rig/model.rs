@@ -106,9 +106,10 @@ impl Settings {
     /// Check an input value (parameters are checked together by [`Settings::config`]).
     pub fn check_input(v: Var, x: f64) -> ModelResult<()> {
         match v {
-            Var::Load if !(x.is_finite() && x >= 0.0) => {
-                Err(format!("input load = {} N is invalid: the load is a magnitude, a finite number >= 0 N", show(x)))
-            }
+            Var::Load if !x.is_finite() => Err(format!(
+                "input load = {} N is invalid: it must be a finite number (a negative value is taken as its magnitude)",
+                show(x)
+            )),
             Var::CommandAngle if !x.is_finite() => Err(format!("input command_angle = {} rad is not a finite number", show(x))),
             Var::Fidelity if x.fract() != 0.0 || fidelity_of_code(x as i32).is_none() => Err(fidelity_range(x)),
             _ => Ok(()),
@@ -136,7 +137,7 @@ impl Settings {
             2.0 => Method::Rk4,
             x => return Err(format!("parameter rig.method = {x} is invalid: it must be 0 (Dopri5), 1 (Dop853) or 2 (RK4)")),
         };
-        cfg.rig.load = self.load;
+        cfg.rig.load = self.load.abs();
         cfg.validate().map_err(|e| e.to_string())?;
         Ok(cfg)
     }
@@ -255,6 +256,9 @@ impl RigModel {
         reuse: Option<Arc<Evaluator>>,
     ) -> ModelResult<Self> {
         let mut m = RigModel { settings, start_time, ..RigModel::new() };
+        // The parameter file's and exit-initialization's checks, for a state taken at any time.
+        m.settings.config()?;
+        m.settings.fidelity()?;
         if let Some(st) = state {
             let mut sim = m.build(reuse)?;
             sim.set_state(&st).map_err(|e| e.to_string())?;
@@ -412,8 +416,12 @@ impl Model for RigModel {
 
 /// A load at or beyond the joint's asperity capacity is an error naming both.
 fn check_capacity(load: f64, capacity: f64) -> ModelResult<()> {
-    if load >= capacity {
-        Err(format!("input load = {load} N is beyond the asperity model's capacity of {capacity:.6e} N for these parameters"))
+    if load.abs() >= capacity {
+        Err(format!(
+            "input load = {} N is beyond the asperity model's capacity of {} N for these parameters",
+            show(load),
+            show(capacity)
+        ))
     } else {
         Ok(())
     }

@@ -260,12 +260,12 @@ fn integer(name: &str, vr: u32, max: f64, d: &str) -> Variable {
 pub fn table() -> Vec<Variable> {
     let mut v = vec![
         real("load", 1, Causality::Input, Variability::Continuous, Some("N"), Some("kN"),
-            "Radial load P on the joint (finite, >= 0; at 0 there is no contact and no friction). Held over each communication step"),
+            "Radial load P on the joint: any finite value, its magnitude |P| is the load (a signed reaction component is accepted; -P acts as +P); at 0 there is no contact and no friction. Held over each communication step"),
         real("command_angle", 2, Causality::Input, Variability::Continuous, Some("rad"), Some("deg"),
             "Command angle theta_cmd, used only when use_command_input is true; held over each communication step (its rate is then 0 in the derivative term)"),
     ];
     v[0].start = Some(default_load());
-    v[0].min = Some(0.0);
+    // No min: a negative value is a signed reaction component, its magnitude the load.
     v[1].start = Some(0.0);
     v.extend(Output::ALL.iter().map(|&o| output(o)));
     v.push(stroke_parameter("frequency", 100, None, "Stroke frequency f of the internal command A sin(2 pi f (t - t_start))"));
