@@ -25,7 +25,6 @@ pub mod asperity;
 pub mod contact;
 pub mod fidelity;
 pub mod film;
-pub mod fmt;
 pub mod gw;
 pub mod joint;
 pub mod mixed;
@@ -34,5 +33,7 @@ pub mod params;
 pub mod rig;
 pub mod viscosity;
 
+/// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).
+pub use numfmt as fmt;
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};
 pub use params::{ParamError, Params};

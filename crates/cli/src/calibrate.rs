@@ -114,15 +114,15 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
         ("torque_angle.svg", angle_svg.clone()),
         ("residuals.svg", resid_svg.clone()),
     ];
+    // Every output is refused if it is one of the inputs (same file), before anything is written.
+    let read: Vec<&Path> = cmd.input.iter().map(PathBuf::as_path).chain(cmd.params.as_deref()).collect();
     let mut written = Vec::new();
     let csv_path = dir.join("fit.csv");
-    refuse_input(&csv_path, &cmd.input)?;
-    write_atomic(&csv_path, |w| fit_csv(w, &cal))?;
+    write_atomic(&csv_path, &read, |w| fit_csv(w, &cal))?;
     written.push(csv_path);
     for (name, text) in &files {
         let path = dir.join(name);
-        refuse_input(&path, &cmd.input)?;
-        write_text(&path, text)?;
+        write_text(&path, &read, text)?;
         written.push(path);
     }
     if cmd.json {
@@ -135,16 +135,6 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
 }
 
 /// An output must not replace one of the inputs.
-fn refuse_input(out: &Path, inputs: &[PathBuf]) -> Result<()> {
-    let canon = |p: &Path| std::fs::canonicalize(p).ok();
-    if let Some(o) = canon(out)
-        && inputs.iter().any(|i| canon(i).as_ref() == Some(&o))
-    {
-        return Err(CliError::Invalid(format!("output {} is one of the inputs: choose another --output", out.display())));
-    }
-    Ok(())
-}
-
 fn summary(w: &mut dyn Write, c: &Calibration) -> std::io::Result<()> {
     for e in c.estimates.iter().chain(c.offset.iter()) {
         writeln!(

@@ -12,3 +12,5 @@
 //! [`export_fmi2!`], the one entry point that must choose a model by GUID.
 
 pub mod fmi2;
+
+use numfmt as fmt;

@@ -390,8 +390,8 @@ impl Model for PinJointModel {
         // before anything of this instance changes.
         let joint = Joint::new(&params).map_err(|e| format!("state: {e}"))?;
         check_band(band)?;
-        crate::fidelity::validate_tolerance(tolerance).map_err(|e| format!("state: parameter {e}"))?;
-        crate::fmu::envelope_from_parameters(envelope)?;
+        pinjoint::fidelity::validate_tolerance(tolerance).map_err(|e| format!("state: parameter {e}"))?;
+        crate::envelope_from_parameters(envelope)?;
         for (i, v) in [(ANGLE, angle), (ANGULAR_VELOCITY, omega), (LOAD, load)] {
             self.check_real(i, v)?;
         }
