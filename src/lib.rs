@@ -26,6 +26,7 @@ pub mod mixed;
 pub mod params;
 pub mod plot;
 pub mod rig;
+pub mod solve_start;
 pub mod viscosity;
 
 pub mod fmi2;
