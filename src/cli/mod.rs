@@ -11,6 +11,7 @@ pub mod common;
 pub mod cycle;
 pub mod cycle_plots;
 pub mod cycle_run;
+pub mod cycle_stream;
 pub mod error;
 pub mod exact;
 pub mod fidelity_args;
