@@ -3,7 +3,8 @@
 # thread) and of the PinJoint FMU step (20,000 steps of the fmpy benchmark's loop, full and
 # boundary fidelity, from a plain C host), written beside BENCHMARKS.md as
 # callgrind_sweep.txt, callgrind_fmu_full.txt, callgrind_fmu_boundary.txt (the functions
-# with the most instructions, self and inclusive).
+# with the most instructions, self and inclusive), and callgrind_evaluate.txt (instructions
+# per cold and warm library evaluation in the mixed regime).
 #
 #   bash benches/callgrind.sh [OUTDIR]      # default: the repository root
 #
@@ -12,7 +13,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 OUT="${1:-$ROOT}"
-cargo build --release -q --bin pinjoint
+cargo build --release -q --bin pinjoint --example icount
 cargo run --release -q -p fmu_build >/dev/null
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
@@ -51,4 +52,13 @@ for f in full:0 boundary:2; do
         "$work/host" "$work/fmu/binaries/linux64/PinJoint.so" "$guid" "$code" 20000 "$vo" "$vl" "$vt" "$vm" "$vf" >/dev/null 2>&1
     annotate "$work/fmu_$name.out" "PinJoint FMU, 20000 steps (set 2 inputs, doStep, get 2 outputs) at fidelity $name, C host" "$OUT/callgrind_fmu_$name.txt"
 done
+# Instructions per library evaluation in the mixed regime (20 kN, 6 rad/s): (run - empty loop) / N.
+total() { valgrind --tool=callgrind --callgrind-out-file="$work/ic.out" target/release/examples/icount "$1" "$2" >/dev/null 2>&1
+          callgrind_annotate "$work/ic.out" | awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1}'; }
+n=20000
+none=$(total none $n)
+{ echo "# Instructions per Joint evaluation, mixed regime (20 kN, 6 rad/s), examples/icount, N = $n"
+  for m in cold warm; do t=$(total $m $n); echo "$m: $(( (t - none) / n )) instructions per evaluation"; done
+} > "$OUT/callgrind_evaluate.txt"
+cat "$OUT/callgrind_evaluate.txt"
 grep -h "PROGRAM TOTALS" "$OUT"/callgrind_sweep.txt "$OUT"/callgrind_fmu_full.txt "$OUT"/callgrind_fmu_boundary.txt
