@@ -6,13 +6,18 @@
 //! - for 1e-5 <= |v| < 1e-4 `zmij` writes the decimal form `0.0000352`, `{:?}` the
 //!   scientific `3.52e-5` (`{:?}` is decimal from 1e-4 to 1e16, scientific outside).
 //!
-//! Both print the same shortest digit string, so the rewrite is a layout change only;
+//! Both print a shortest digit string, the one nearest the exact value; they differ only on
+//! an exact tie between two shortest candidates (`{:?}` rounds the tie up, `zmij` to even,
+//! e.g. 216486192242783.625 -> `…83.63` against `…83.62`). A tie needs the exact binary
+//! value to have at most 18 significant decimal digits; [`tie_impossible`] proves from the
+//! bits that it has more, and any other value goes through `{:?}` itself (integers beyond
+//! 2^53 and values with few significant bits: rare among computed results).
 //! `tests` compares the two over millions of doubles of every magnitude.
 
 /// Append the `{:?}` text of `v` to `out`. Non-finite values (never written by the model,
 /// which checks its outputs) go through `{:?}` itself.
 pub fn push_exact(out: &mut Vec<u8>, v: f64) {
-    if !v.is_finite() {
+    if !v.is_finite() || !tie_impossible(v) {
         out.extend_from_slice(format!("{v:?}").as_bytes());
         return;
     }
@@ -37,6 +42,27 @@ pub fn push_exact(out: &mut Vec<u8>, v: f64) {
     } else {
         out.extend_from_slice(s);
     }
+}
+
+/// Whether the exact value of `v` = m·2^e (m odd) has at least 19 significant decimal
+/// digits, so that no two 17-or-fewer-digit decimals can be equally near it. For e < 0 the
+/// exact decimal digits are those of m·5^(−e); their count is estimated by logarithms with a
+/// margin of half a digit. Integers (e >= 0) and zero answer false/true conservatively.
+fn tie_impossible(v: f64) -> bool {
+    let bits = v.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i32;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (mut m, mut e) = if exp == 0 { (frac, -1074) } else { (frac | (1u64 << 52), exp - 1075) };
+    if m == 0 {
+        return true;
+    }
+    let tz = m.trailing_zeros();
+    m >>= tz;
+    e += tz as i32;
+    if e >= 0 {
+        return false;
+    }
+    (m as f64).log10() + f64::from(-e) * std::f64::consts::LOG10_2.mul_add(-1.0, 1.0) >= 18.5
 }
 
 /// The `{:?}` text of `v` as a String (see [`push_exact`]).
@@ -68,6 +94,10 @@ mod tests {
                 check(f64::from_bits(v.to_bits().wrapping_sub(1)));
             }
         }
+        // Exact ties between two shortest candidates ({:?} rounds them up).
+        for v in [216486192242783.625, -34900697272382.8125, 1500000000000000.25, f64::from_bits(0x431550f7dca70001)] {
+            check(v);
+        }
         for v in [0.0, -0.0, 1e-4, 1e-5, 1e16, 1e15, f64::MIN_POSITIVE, 5e-324, f64::MAX, f64::MIN, f64::EPSILON] {
             check(v);
         }
@@ -91,6 +121,8 @@ mod tests {
             let u = (next() >> 11) as f64 / (1u64 << 53) as f64;
             check(1e-7 * 10f64.powf(4.0 * u));
             check(-1e-7 * 10f64.powf(4.0 * u));
+            // 1e13 to 1e16, where ties with a fractional part exist.
+            check(1e13 * 10f64.powf(3.0 * u));
         }
     }
 }

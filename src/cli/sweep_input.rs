@@ -197,7 +197,7 @@ mod tests {
         let text = "# c\nload , speed,id\n\n 1,2 ,x\r\n\r\n#x,y\n3,\"a,\"\"b\"\"\nc\",4\n  \n5,6\n\t7 ,8,\"q\"\n9";
         let got = records(text);
         let lines: Vec<u64> = got.iter().map(|g| g.0).collect();
-        assert_eq!(lines, [2, 4, 7, 9, 10, 11]);
+        assert_eq!(lines, [2, 4, 7, 9, 10, 11, 12]);
         let fields: Vec<Vec<String>> = got.into_iter().map(|g| g.1).collect();
         assert_eq!(fields, csv_records(text));
         assert_eq!(fields[2], ["3", "a,\"b\"\nc", "4"]);
