@@ -76,14 +76,16 @@ def film(p, u, x1):
 def asperity_ln_f32_required(p, x2):
     """Eq. 19: ln F_3/2((h_c - d_d)/sigma_s) that lets the asperities carry P x2, from the
     Gelinck-Schipper load relation with n -> n g2, E' -> E'/g2, P -> P/g2."""
-    g2 = 1.0 / x2
-    n, e, load = N_S * g2, E_EFF / g2, p / g2
-    w = load / (e * R_RED * B)
-    p0 = math.sqrt(load * e / (2 * math.pi * B * R_RED))
-    k = A1 * n**A2 * R_RED ** (1.5 * A2 - A3) * BETA ** (0.5 * A2) * SIGMA_S**A3 * w ** (A2 - A3)
-    p_asp = p0 * (1 + k**A4) ** (1 / A4)
+    # In logarithms: in full film x2 reaches 1e-30 and below, and n g2, E'/g2 leave floats.
+    ln_g2 = -math.log(x2)
+    ln_n, ln_e, ln_load = math.log(N_S) + ln_g2, math.log(E_EFF) - ln_g2, math.log(p) - ln_g2
+    ln_w = ln_load - ln_e - math.log(R_RED * B)
+    ln_p0 = 0.5 * (ln_load + ln_e - math.log(2 * math.pi * B * R_RED))
+    ln_k = (math.log(A1) + A2 * ln_n + (1.5 * A2 - A3) * math.log(R_RED) + 0.5 * A2 * math.log(BETA)
+            + A3 * math.log(SIGMA_S) + (A2 - A3) * ln_w)
+    ln_p_asp = ln_p0 + np.logaddexp(0.0, A4 * ln_k) / A4  # p0 (1 + K^A4)^(1/A4)
     # GW: p_asp = 2/3 n sqrt(beta) sigma^3/2 E' F_3/2 (eq. 17)
-    return math.log(p_asp / (2 / 3 * n * math.sqrt(BETA) * SIGMA_S**1.5 * e))
+    return ln_p_asp - (math.log(2 / 3) + ln_n + 0.5 * math.log(BETA) + 1.5 * math.log(SIGMA_S) + ln_e)
 
 
 def shares(y):
