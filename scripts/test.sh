@@ -26,6 +26,20 @@ bash python/run_tests.sh
 # --- FMUs and the Python harness (fmpy), then the Rust `fmi` crate against the packaged FMU
 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
 
+# --- the SciPy reference of `pinjoint bench` against the MODEL_NOTES check values, and
+# against the library on 50 sweep rows (agreement to 1e-9; measured 2e-14)
+.venv/bin/python benches/scipy_reference.py --self-test
+printf 'load,speed\n' > target/scipy_check.csv
+.venv/bin/python -c "import math; [print(f'{5e3*12**(i/49)!r},{(-1)**i*1e-3*1e5**((i*7%50)/49)!r}') for i in range(50)]" >> target/scipy_check.csv
+target/release/pinjoint sweep --input target/scipy_check.csv --output target/scipy_check_out.csv
+.venv/bin/python - <<'PY'
+import json, subprocess, sys
+o = json.loads(subprocess.check_output([".venv/bin/python", "benches/scipy_reference.py", "target/scipy_check_out.csv", "--limit", "50"]))
+worst = max(o["max_difference"].values())
+print("SciPy reference vs library, 50 points: largest difference", worst)
+sys.exit(0 if worst < 1e-9 else 1)
+PY
+
 # --- memory: a C host dlopens the packaged FMU, 50 instantiate/step/free cycles under valgrind
 # (the issue's 1000-cycle check is `bash tests/valgrind.sh 1000`)
 bash tests/valgrind.sh 50

@@ -5,6 +5,7 @@ use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
 use crate::mixed::{solve, FilmGroups};
 use crate::params::{ParamError, Params};
+use crate::solve_start::StartTable;
 use crate::viscosity::{limiting_shear_stress, ln_roelands_with};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -158,6 +159,8 @@ pub struct Joint {
     ln_eta_ratio: f64,
     /// The load (N) at which the rest film of eq. 19 reaches zero (see [`Joint::capacity`]).
     capacity: f64,
+    /// Converged logits over (ln P_T, ln u): the deterministic start of a cold solve.
+    start: StartTable,
 }
 
 impl Joint {
@@ -177,7 +180,7 @@ impl Joint {
         crate::gw::warm_up();
         let (g, lub) = (&params.geometry, &params.lubricant);
         let (r_red, e_eff) = (reduced_radius(g), effective_modulus(&params.materials));
-        Ok(Self {
+        let mut joint = Self {
             params: *params,
             r_red,
             e_eff,
@@ -187,7 +190,21 @@ impl Joint {
             hertz_unit: hertz(1.0, r_red, e_eff, g.bush_length),
             ln_eta_ratio: (lub.roelands_viscosity_limit / lub.viscosity).ln(),
             capacity: asperity_capacity(&params.surface, &AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length)),
-        })
+            start: StartTable::empty(),
+        };
+        joint.start = StartTable::build(joint.capacity, |ln_p, ln_u, warm| {
+            let asp = joint.asp_unit.at_load_ratio(ln_p);
+            let film = joint.film_unit.at_ratio(ln_p, ln_u);
+            solve(Some(&film), &asp, &joint.params.surface, warm).logit
+        });
+        Ok(joint)
+    }
+
+    /// Where a solve at (`load`, `omega`) starts without a warm start: a function of the
+    /// operating point alone ([`crate::solve_start`]); NaN at rest.
+    pub fn cold_start(&self, load: f64, omega: f64) -> f64 {
+        let u = omega.abs() * self.params.geometry.pin_radius;
+        if u > 0.0 { self.start.guess(load.ln(), u.ln()) } else { f64::NAN }
     }
 
     pub fn params(&self) -> &Params {
@@ -253,7 +270,9 @@ impl Joint {
     }
 
     /// As [`Joint::evaluate`], starting the solve from `guess` (the `logit` of a nearby
-    /// point); the answer is the same to the solver tolerance, only cheaper.
+    /// point); the answer is the same to the solver tolerance, only cheaper. Without a guess
+    /// the solve starts from [`Joint::cold_start`], so the answer depends on (`load`,
+    /// `omega`) and the parameters alone.
     pub fn evaluate_from(&self, load: f64, omega: f64, guess: Option<f64>) -> Result<OperatingPoint, ModelError> {
         let load = load.abs();
         if !(load.is_finite() && load > 0.0) {
@@ -271,7 +290,13 @@ impl Joint {
         let (hz, u) = (ls_q.hertz, ls_q.sliding_speed);
         let ln_p = load.ln();
         let asp = self.asp_unit.at_load_ratio(ln_p);
-        let film = (u > 0.0).then(|| self.film_unit.at_ratio(ln_p, u.ln()));
+        let ln_u = u.ln();
+        let film = (u > 0.0).then(|| self.film_unit.at_ratio(ln_p, ln_u));
+        let guess = match guess {
+            Some(g) => Some(g),
+            None if u > 0.0 => Some(self.start.guess(ln_p, ln_u)),
+            None => None,
+        };
         let ls = solve(film.as_ref(), &asp, &p.surface, guess);
 
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
@@ -279,7 +304,7 @@ impl Joint {
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
         let (eta, tau_l) = (ls_q.contact_viscosity, ls_q.limiting_shear_stress);
         let mu_fluid = if u > 0.0 {
-            let ln_x = ls_q.ln_contact_viscosity + u.ln() - tau_l.ln() - ls.film_thickness.ln();
+            let ln_x = ls_q.ln_contact_viscosity + ln_u - tau_l.ln() - ls.film_thickness.ln();
             tau_l / hz.mean_pressure * -(-ln_x.exp()).exp_m1()
         } else {
             0.0

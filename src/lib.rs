@@ -31,6 +31,7 @@ pub mod mixed;
 pub mod newton;
 pub mod params;
 pub mod rig;
+pub mod solve_start;
 pub mod viscosity;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).

@@ -280,6 +280,27 @@ impl Evaluator {
         Ok((self.operating_point(&e), e.source))
     }
 
+    /// As [`Evaluator::evaluate_point`], but where the full solve answers (the `full` level,
+    /// or a fallback outside the envelope) its operating point is returned as computed, not
+    /// rebuilt from an [`Evaluation`]: every quantity is computed once. Also says whether
+    /// this was the first fallback. Same numbers as [`Evaluator::evaluate_point`].
+    pub fn evaluate_complete(&mut self, load: f64, omega: f64) -> Result<(OperatingPoint, Source, bool), FidelityError> {
+        let hit = match &self.backend {
+            Backend::Table(t) => t.evaluate(load, omega),
+            Backend::Boundary(b) => b.evaluate(load, omega),
+            Backend::Full => return Ok((self.solver.evaluate(load, omega)?, Source::Full, false)),
+        };
+        match hit {
+            Some(e) => Ok((self.operating_point(&e), e.source, false)),
+            None => {
+                let op = self.solver.evaluate(load, omega)?;
+                let first = self.fallbacks == 0;
+                self.fallbacks += 1;
+                Ok((op, Source::Fallback, first))
+            }
+        }
+    }
+
     /// Complete an evaluation into an [`OperatingPoint`]: Hertz quantities, Roelands
     /// viscosity and Sommerfeld number depend on load and speed only and are computed directly
     /// (equal to the full solve's to rounding).

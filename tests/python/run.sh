@@ -23,7 +23,7 @@ cargo run --release -q -p fmu_build
 cargo build --release -q -p pinjoint --example reference_points --example rig_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"
-if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy" 2>/dev/null; then
+if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy, scipy" 2>/dev/null; then
     python3 -m venv "$VENV"
     "$VENV/bin/pip" install -q -r requirements-test.txt
 fi

@@ -4,6 +4,7 @@
 use super::bench_eval::{self, EvalResult};
 use super::bench_report::{write_report, FmuSection, Report};
 use super::bench_rig::{self, RigResult};
+use super::bench_throughput;
 use pinjoint_cli::error::{CliError, Result};
 use pinjoint_cli::output::{output_dir, report_written};
 use clap::Parser;
@@ -20,6 +21,9 @@ several tolerances and boundary, over two envelopes spanning the regimes;\n  \
 per cycle simulation: wall time of 10 strokes of the 1 Hz rig at 20 kN against the torque error versus a \
 Dop853 1e-12 reference, for Dopri5/Dop853 over tolerances, RK4 over steps, the regularised formulation, \
 fewer output samples and the table fidelity;\n  \
+throughput: a whole `pinjoint sweep` process over 1e6 rows (wall time, peak memory, and at 1e5 rows), the \
+library's cold evaluation per point, and the SciPy implementation of the model (benches/scipy_reference.py, \
+run by the same Python) per point, as ratios;\n  \
 per FMU step through fmpy: set inputs + doStep + get outputs per fidelity as a ratio to the PassThrough \
 FMU in the same loop (needs target/fmu/*.fmu from `cargo run --release -p fmu_build` and a Python with \
 fmpy, by default .venv/bin/python; without them the report says so).\n\
@@ -95,8 +99,11 @@ pub fn run(cmd: &BenchCmd) -> Result<()> {
     let reference = bench_rig::reference(cmd.quick)?;
     let reps = if cmd.quick { 1 } else { 5 };
     let rig: Vec<RigResult> = bench_rig::measure(&bench_rig::cases(cmd.quick), &reference, reps, &|l| progress(&format!("rig: {l}")));
+    // The sweep children run before any Python child: their peak memory is read per child.
+    let work = tempfile::tempdir().map_err(|source| CliError::Write { path: std::env::temp_dir(), source })?;
+    let throughput = bench_throughput::measure(cmd.quick, &cmd.python, work.path(), &progress);
     let fmu = fmu_section(cmd);
-    let report = Report { quick: cmd.quick, eval, rig, fmu, seconds: started.elapsed().as_secs_f64() };
+    let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, seconds: started.elapsed().as_secs_f64() };
     let paths = write_report(&dir, &report)?;
     if paths.is_empty() {
         return Err(CliError::Invalid("bench: nothing written".into()));

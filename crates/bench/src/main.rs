@@ -6,6 +6,7 @@ mod bench;
 mod bench_eval;
 mod bench_report;
 mod bench_rig;
+mod bench_throughput;
 
 use clap::Parser;
 use std::process::ExitCode;

@@ -132,7 +132,7 @@ pub fn csv_io(e: csv::Error) -> std::io::Error {
 
 /// A number in CSV: the shortest text that parses back to the same f64 (never rounded).
 pub fn exact(v: f64) -> String {
-    format!("{v:?}")
+    super::exact::exact_string(v)
 }
 
 /// The values of [`RESULT_COLUMNS`] for one point, at full precision.

@@ -4,7 +4,8 @@
 
 use super::common::{positive, readable, RAD_S_PER_RPM};
 use super::cycle_plots::{torque_angle_svg, torque_time_svg};
-use super::cycle_run::{cycle_csv, default_skip, CycleRun};
+use super::cycle_run::{default_skip, CycleRun};
+use super::cycle_stream::stream_cycles;
 use super::error::{CliError, Result};
 use super::fidelity_args::{describe, FidelityArgs};
 use super::output::{inputs_of, output_dir, refuse_files, report_written, to_stdout, write_atomic, write_text};
@@ -22,7 +23,8 @@ DIR/cycle.csv         every sample: time [s], command_angle [rad], angle [rad], 
 torque [N·m] (the actuator's transducer), friction_torque [N·m] (on the pin, signed), \
 friction_coefficient [-] (the core's μ(P,|ω|)), film_thickness [m] (h_c), fluid_load_fraction [-] (1/γ1), \
 stuck [0/1]\n  \
-DIR/torque_time.svg   recorded torque against time (Figures 11-13), the core's quasi-static torque dashed\n  \
+DIR/torque_time.svg   recorded torque against time (Figures 11-13), the core's quasi-static torque dashed \
+(beyond 100,000 samples, every k-th sample is drawn)\n  \
 DIR/torque_angle.svg  recorded torque against the pin angle over the averaged cycles (Figure 7d)\n\
 and print the cycle-average friction coefficient the paper's way (section 5, eq. 11: mean |torque| over \
 whole cycles divided by R·P), leaving out the first (start-up) stroke when there is more than one, \
@@ -84,7 +86,8 @@ pub enum MethodArg {
     Rk4,
 }
 
-/// Most strokes and samples one run may hold in memory.
+/// Most strokes and samples one run may compute (the samples are streamed to cycle.csv; at
+/// most `cycle_stream::PLOT_SAMPLES` are kept for the plots).
 pub const MAX_CYCLES: usize = 100_000;
 pub const MAX_SAMPLES: usize = 20_000_000;
 
@@ -161,29 +164,48 @@ pub fn run(cmd: &CycleCmd) -> Result<()> {
     let cfg = config(cmd)?;
     let (cycles, skip, per_cycle) = counts(cmd)?;
     let joint = Joint::new(&cfg.model)?;
-    let run = if cmd.fidelity.is_full()? {
-        CycleRun::simulate(&cfg, cycles, per_cycle, skip)?
-    } else {
+    let mut sim = pinjoint::rig::RigSim::new(&cfg)?;
+    if !cmd.fidelity.is_full()? {
         let d = pinjoint::rig::RigSim::drive_envelope(&cfg)?;
         let env = cmd.fidelity.envelope((d.load_min, d.load_max), (d.speed_min, d.speed_max))?;
-        let report = |ev: &pinjoint::fidelity::Evaluator, fallbacks: Option<u64>| match fallbacks {
-            None => eprintln!("{}", describe(ev)),
-            Some(0) => {}
-            Some(n) => eprintln!(
-                "fidelity: {n} friction evaluations fell outside the envelope (e.g. speeds below {} rad/s around reversals) \
-                 and were answered by the full solve",
-                ev.envelope().speed_min
-            ),
-        };
-        CycleRun::simulate_at(&cfg, (cycles, per_cycle, skip), (cmd.fidelity.level()?, cmd.fidelity.tolerance, env), &report)?
-    };
-    let peak = run.peak_command_speed();
-    let mu_peak = run.quasi_static_at_peak(&joint)?;
-    let (time_svg, angle_svg) = (torque_time_svg(&run)?, torque_angle_svg(&run)?);
+        eprintln!("{}", describe(sim.set_fidelity(cmd.fidelity.level()?, cmd.fidelity.tolerance, env)?));
+    }
     let dir = output_dir(&cmd.output)?;
     let paths = [dir.join("cycle.csv"), dir.join("torque_time.svg"), dir.join("torque_angle.svg")];
     let inputs = inputs_of(cmd.params.as_ref());
-    write_atomic(&paths[0], &inputs, |w| cycle_csv(w, &run.samples))?;
+    // The samples go to cycle.csv as they are computed (memory independent of the strokes);
+    // a simulation error is kept here and returned as itself (the file is then not written).
+    let mut failure: Option<CliError> = None;
+    let mut streamed: Option<CycleRun> = None;
+    let written = write_atomic(&paths[0], &inputs, |w| match stream_cycles(&mut sim, &cfg, (cycles, per_cycle, skip), w) {
+        Ok(r) => {
+            streamed = Some(r);
+            Ok(())
+        }
+        Err(e) => {
+            let message = e.to_string();
+            failure = Some(e);
+            Err(std::io::Error::other(message))
+        }
+    });
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    written?;
+    let run = streamed.ok_or_else(|| CliError::Invalid("cycle: the simulation did not run".into()))?;
+    if let Some(ev) = sim.fidelity() {
+        let n = sim.stats().fallbacks;
+        if n > 0 {
+            eprintln!(
+                "fidelity: {n} friction evaluations fell outside the envelope (e.g. speeds below {} rad/s around reversals) \
+                 and were answered by the full solve",
+                ev.envelope().speed_min
+            );
+        }
+    }
+    let peak = run.peak_command_speed();
+    let mu_peak = run.quasi_static_at_peak(&joint)?;
+    let (time_svg, angle_svg) = (torque_time_svg(&run)?, torque_angle_svg(&run)?);
     write_text(&paths[1], &inputs, &time_svg)?;
     write_text(&paths[2], &inputs, &angle_svg)?;
     report_written(&paths)?;

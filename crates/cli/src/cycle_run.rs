@@ -2,10 +2,9 @@
 //! paper's cycle-average friction coefficient (eq. 11) and the cycle's characteristic speeds,
 //! the quasi-static core values to compare with, and the trace as CSV.
 
-use super::common::{csv_io, exact};
+use super::common::exact;
 use super::error::Result;
-use pinjoint::fidelity::{Envelope, Fidelity};
-use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, RigConfig, RigSim, Sample};
+use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, RigConfig, Sample};
 use pinjoint::Joint;
 use std::f64::consts::TAU;
 
@@ -50,23 +49,6 @@ impl CycleRun {
     /// over the strokes after the first `skip` (which must be < `cycles`).
     pub fn simulate(config: &RigConfig, cycles: usize, samples_per_cycle: usize, skip: usize) -> Result<Self> {
         let samples = run_cycles(config, cycles as f64, samples_per_cycle)?;
-        Self::from_samples(config, cycles, skip, samples)
-    }
-
-    /// As [`CycleRun::simulate`] with the friction at `fidelity` over `envelope` (see
-    /// `RigSim::set_fidelity`); `report` receives the built evaluator's description and,
-    /// after the run, the number of evaluations outside the envelope.
-    pub fn simulate_at(
-        config: &RigConfig,
-        (cycles, samples_per_cycle, skip): (usize, usize, usize),
-        (fidelity, tolerance, envelope): (Fidelity, f64, Envelope),
-        report: &dyn Fn(&pinjoint::fidelity::Evaluator, Option<u64>),
-    ) -> Result<Self> {
-        let mut sim = RigSim::new(config)?;
-        report(sim.set_fidelity(fidelity, tolerance, envelope)?, None);
-        let period = config.rig.period();
-        let samples = sim.run(cycles as f64 * period, period / samples_per_cycle as f64)?;
-        report(sim.fidelity().expect("set above"), Some(sim.stats().fallbacks));
         Self::from_samples(config, cycles, skip, samples)
     }
 
@@ -151,7 +133,6 @@ pub fn core_torque(s: &Sample, pin_radius: f64) -> f64 {
     }
 }
 
-/// The trace as CSV with [`CYCLE_COLUMNS`], every number at full precision.
 /// One sample as the CSV fields of [`CYCLE_COLUMNS`], in full precision.
 pub fn sample_fields(s: &Sample) -> [String; 10] {
     [
@@ -168,12 +149,3 @@ pub fn sample_fields(s: &Sample) -> [String; 10] {
     ]
 }
 
-pub fn cycle_csv(w: &mut dyn std::io::Write, samples: &[Sample]) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(CYCLE_COLUMNS).map_err(csv_io)?;
-    for s in samples {
-        wtr.write_record(sample_fields(s)).map_err(csv_io)?;
-    }
-    wtr.flush()?;
-    Ok(())
-}

@@ -8,7 +8,9 @@ pub mod common;
 pub mod cycle;
 pub mod cycle_plots;
 pub mod cycle_run;
+pub mod cycle_stream;
 pub mod error;
+pub mod exact;
 pub mod fidelity_args;
 pub mod figures;
 pub mod figures_claims;
@@ -22,6 +24,7 @@ pub mod plot;
 pub mod point;
 pub mod stribeck;
 pub mod sweep;
+pub mod sweep_input;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

@@ -1,17 +1,23 @@
-//! `pinjoint sweep`: evaluate every row of a CSV file, in parallel, order preserved.
+//! `pinjoint sweep`: evaluate every row of a CSV file, in parallel, order preserved,
+//! streaming: read, evaluate and write in bounded batches (memory independent of the
+//! number of rows). Each batch is parsed, evaluated and formatted in chunks on every core
+//! while the previous batch is written and the next one read.
 
-use super::common::{csv_io, result_fields, ParamsArg, RESULT_COLUMNS};
+use super::common::{csv_io, ParamsArg, RESULT_COLUMNS};
 use super::error::{CliError, Result};
+use super::exact::push_exact;
 use super::fidelity_args::{note_fallback, range_of, FidelityArgs};
 use super::output::{refuse_inputs, to_stdout, write_atomic};
+use super::sweep_input::{split, Batch, RecordReader};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::fidelity::Evaluator;
 use pinjoint::{Joint, OperatingPoint};
-use std::sync::atomic::AtomicBool;
 use rayon::prelude::*;
-use std::io::{self, Read, Write};
+use std::io::{self, BufRead, Seek, Write};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use std::sync::Mutex;
 
 #[derive(Args, Debug)]
 #[command(
@@ -28,7 +34,9 @@ and regime (boundary | mixed | full-film). Numbers are printed in full (shortest
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
 A malformed row (missing field, non-numeric, non-finite, load = 0; a negative load is taken as its magnitude) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
-name beside it and renamed only on success).\n\n\
+name beside it and renamed only on success). The input is read, evaluated and written in \
+batches of 16384 rows, so memory does not grow with the number of rows; on standard output the \
+rows of the batches before a malformed one have already been written.\n\n\
 Examples:\n  \
 printf 'load,speed\\n20000,0.2\\n60000,4.39\\n' > pts.csv\n  \
 pinjoint sweep --input pts.csv\n  \
@@ -52,74 +60,52 @@ pub struct SweepCmd {
     pub fidelity: FidelityArgs,
 }
 
-/// One validated input row.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Row {
-    pub line: u64,
-    pub fields: Vec<String>,
-    pub load: f64,
-    pub speed: f64,
-}
-
-/// The parsed input: its header and rows.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Table {
-    pub header: Vec<String>,
-    pub rows: Vec<Row>,
-}
+/// Rows read, evaluated and written together: bounds the memory (a few MiB of text).
+pub const BATCH_ROWS: usize = 16_384;
+/// Rows one task parses, evaluates and formats.
+const CHUNK_ROWS: usize = 512;
 
 fn is_stdio(p: &Path) -> bool {
     p.as_os_str() == "-"
 }
 
-/// 1-based line numbers from byte offsets, counting every line (blank and comment lines too).
-struct Lines<'a> {
-    text: &'a [u8],
-    /// Byte offset of each line's first character.
-    starts: Vec<usize>,
+/// How rows are answered.
+enum Mode<'a> {
+    /// The library's cold solve (the default, `--fidelity full`).
+    Full(&'a Joint),
+    /// A fidelity level: clones of one evaluator, one per task at a time.
+    Level { proto: &'a Evaluator, pool: Mutex<Vec<Evaluator>>, said: AtomicBool },
+    /// Only validate and collect the load and |speed| ranges (the envelope's default).
+    Scan,
 }
 
-impl<'a> Lines<'a> {
-    fn new(text: &'a [u8]) -> Self {
-        let starts = std::iter::once(0).chain(text.iter().enumerate().filter(|(_, b)| **b == b'\n').map(|(i, _)| i + 1)).collect();
-        Self { text, starts }
-    }
-    /// The line of the record that the csv reader places at `byte`. The reader reports a
-    /// position before the line terminator, blank lines and comment lines it then skips,
-    /// so step over those to the record's first character.
-    fn of(&self, byte: u64) -> u64 {
-        let t = self.text;
-        let mut b = (byte as usize).min(t.len());
-        loop {
-            while b < t.len() && matches!(t[b], b'\r' | b'\n') {
-                b += 1;
-            }
-            let at_line_start = b == 0 || t[b - 1] == b'\n';
-            if b < t.len() && t[b] == b'#' && at_line_start {
-                b = t[b..].iter().position(|&c| c == b'\n').map_or(t.len(), |i| b + i + 1);
-                continue;
-            }
-            break;
-        }
-        self.starts.partition_point(|&start| start <= b) as u64
+/// The header and where the load and speed columns are.
+struct Columns {
+    header: Vec<String>,
+    load: usize,
+    speed: usize,
+}
+
+/// What one chunk gives: its output text, and the ranges of positive load and |speed|.
+#[derive(Default)]
+struct ChunkOut {
+    text: Vec<u8>,
+    loads: (f64, f64),
+    speeds: (f64, f64),
+}
+
+fn widen(r: &mut (f64, f64), v: f64) {
+    if v > 0.0 && v.is_finite() {
+        r.0 = r.0.min(v);
+        r.1 = r.1.max(v);
     }
 }
 
-/// Parse and validate the whole input before anything is computed or written.
-pub fn parse(mut input: impl Read, file: &str) -> Result<Table> {
+const EMPTY_RANGE: (f64, f64) = (f64::INFINITY, 0.0);
+
+fn read_header<R: BufRead>(reader: &mut RecordReader<R>, file: &str) -> Result<Columns> {
     let bad = |line: u64, message: String| CliError::Input { file: file.to_string(), line, message };
-    let mut text = Vec::new();
-    input.read_to_end(&mut text).map_err(|source| CliError::Read { path: file.into(), source })?;
-    let lines = Lines::new(&text);
-    let line_of = |pos: Option<&csv::Position>| pos.map_or(1, |p| lines.of(p.byte()));
-    let csv_err = |e: csv::Error| bad(line_of(e.position()), format!("unreadable CSV: {e}"));
-    let mut rdr = csv::ReaderBuilder::new()
-        .trim(csv::Trim::All)
-        .flexible(true)
-        .comment(Some(b'#'))
-        .from_reader(text.as_slice());
-    let header: Vec<String> = rdr.headers().map_err(csv_err)?.iter().map(str::to_string).collect();
-    let header_line = rdr.headers().ok().map_or(1, |h| line_of(h.position()));
+    let (header, header_line) = reader.header()?;
     if header.is_empty() || header.iter().all(String::is_empty) {
         return Err(bad(header_line, "no header row: the first line must name the columns, e.g. `load,speed`".into()));
     }
@@ -131,108 +117,215 @@ pub fn parse(mut input: impl Read, file: &str) -> Result<Table> {
             _ => Err(bad(header_line, format!("the header names the column `{name}` more than once"))),
         }
     };
-    let (il, is) = (find("load")?, find("speed")?);
+    let (load, speed) = (find("load")?, find("speed")?);
     if let Some(clash) = header.iter().find(|h| RESULT_COLUMNS.contains(&h.as_str())) {
         return Err(bad(header_line, format!("input column `{clash}` has the name of an output column; rename it")));
     }
+    Ok(Columns { header, load, speed })
+}
 
-    let mut rows = Vec::new();
-    for rec in rdr.records() {
-        let rec = rec.map_err(csv_err)?;
-        let line = line_of(rec.position());
-        if rec.len() != header.len() {
-            let detail = if rec.len() < header.len() {
-                format!("missing column(s) {}", header[rec.len()..].join(","))
-            } else {
-                format!("{} more field(s) than the header's columns", rec.len() - header.len())
-            };
-            return Err(bad(
-                line,
-                format!("{detail}: the row has {} field(s), the header {} ({})", rec.len(), header.len(), header.join(",")),
-            ));
+/// Parse, check, evaluate and format the records `recs` of `batch`.
+fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mode: &Mode, file: &str) -> Result<ChunkOut> {
+    let width = cols.header.len();
+    let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
+    let mut rec = csv::ByteRecord::with_capacity(64, width);
+    let mut wtr = match mode {
+        Mode::Scan => None,
+        _ => Some(csv::Writer::from_writer(Vec::with_capacity(recs.len() * 256))),
+    };
+    let mut num = Vec::with_capacity(32);
+    let mut ev = match mode {
+        Mode::Level { proto, pool, .. } => Some(pool.lock().ok().and_then(|mut p| p.pop()).unwrap_or_else(|| (*proto).clone())),
+        _ => None,
+    };
+    for r in recs {
+        let line = r.line;
+        let bad = |message: String| CliError::Input { file: file.to_string(), line, message };
+        split(batch.bytes(r), &mut rec).map_err(bad)?;
+        if let Err(e) = std::str::from_utf8(rec.as_slice()) {
+            return Err(bad(format!("unreadable CSV: invalid UTF-8: {e}")));
         }
-        let num = |i: usize, name: &str, unit: &str| -> Result<f64> {
-            let text = &rec[i];
-            if text.is_empty() {
-                return Err(bad(line, format!("column {name} ({unit}) is empty")));
+        let text = |i: usize| std::str::from_utf8(&rec[i]).unwrap_or("");
+        if rec.len() != width {
+            let detail = if rec.len() < width {
+                format!("missing column(s) {}", cols.header[rec.len()..].join(","))
+            } else {
+                format!("{} more field(s) than the header's columns", rec.len() - width)
+            };
+            return Err(bad(format!("{detail}: the row has {} field(s), the header {width} ({})", rec.len(), cols.header.join(","))));
+        }
+        let number = |i: usize, name: &str, unit: &str| -> Result<f64> {
+            let t = text(i);
+            if t.is_empty() {
+                return Err(bad(format!("column {name} ({unit}) is empty")));
             }
-            let v: f64 = text.parse().map_err(|_| bad(line, format!("column {name} = `{text}` is not a number ({unit})")))?;
+            let v: f64 = t.parse().map_err(|_| bad(format!("column {name} = `{t}` is not a number ({unit})")))?;
             if !v.is_finite() {
-                return Err(bad(line, format!("column {name} = {text} {unit} is not a finite number")));
+                return Err(bad(format!("column {name} = {t} {unit} is not a finite number")));
             }
             Ok(v)
         };
-        let load = num(il, "load", "N")?;
+        let load = number(cols.load, "load", "N")?;
         if load == 0.0 {
-            return Err(bad(line, format!("column load = {} N is invalid: the load magnitude must be > 0 N", &rec[il])));
+            return Err(bad(format!("column load = {} N is invalid: the load magnitude must be > 0 N", text(cols.load))));
         }
-        let speed = num(is, "speed", "rad/s")?;
-        rows.push(Row { line, fields: rec.iter().map(str::to_string).collect(), load, speed });
+        let speed = number(cols.speed, "speed", "rad/s")?;
+        widen(&mut out.loads, load.abs());
+        widen(&mut out.speeds, speed.abs());
+        let op: OperatingPoint = match (mode, ev.as_mut()) {
+            (Mode::Scan, _) => continue,
+            (Mode::Full(joint), _) => joint.evaluate(load, speed).map_err(|e| bad(e.to_string()))?,
+            (Mode::Level { said, .. }, Some(ev)) => {
+                let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
+                note_fallback(&e, ev, said);
+                ev.operating_point(&e)
+            }
+            (Mode::Level { .. }, None) => unreachable!("an evaluator is taken for every chunk at a fidelity level"),
+        };
+        let w = wtr.as_mut().expect("a writer unless scanning");
+        let io = |e: csv::Error| CliError::Invalid(format!("formatting a row: {}", csv_io(e)));
+        for f in rec.iter() {
+            w.write_field(f).map_err(io)?;
+        }
+        for v in [
+            op.friction_coefficient,
+            op.torque,
+            op.film_thickness,
+            op.lambda_ratio,
+            op.fluid_load_fraction,
+            op.asperity_load_fraction,
+            op.mean_pressure,
+            op.contact_half_width,
+            op.sommerfeld_number,
+        ] {
+            num.clear();
+            push_exact(&mut num, v);
+            w.write_field(&num).map_err(io)?;
+        }
+        w.write_field(op.regime.as_str()).map_err(io)?;
+        w.write_record(None::<&[u8]>).map_err(io)?;
     }
-    Ok(Table { header, rows })
-}
-
-/// Evaluate every row on every core; results are in row order.
-pub fn evaluate(joint: &Joint, rows: &[Row], file: &str) -> Result<Vec<OperatingPoint>> {
-    let bar = if rows.len() >= 20_000 { ProgressBar::new(rows.len() as u64) } else { ProgressBar::hidden() };
-    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} points, {per_sec}, eta {eta}").expect("valid template"));
-    let out = rows
-        .par_chunks(256)
-        .map(|chunk| {
-            let r: Result<Vec<_>> = chunk
-                .iter()
-                .map(|row| {
-                    joint.evaluate(row.load, row.speed).map_err(|e| CliError::Input {
-                        file: file.to_string(),
-                        line: row.line,
-                        message: e.to_string(),
-                    })
-                })
-                .collect();
-            bar.inc(chunk.len() as u64);
-            r
-        })
-        .collect::<Result<Vec<Vec<_>>>>()?;
-    bar.finish_and_clear();
-    Ok(out.into_iter().flatten().collect())
-}
-
-/// Evaluate every row through (clones of) `ev`, on every core; results in row order.
-pub fn evaluate_with(ev: &Evaluator, rows: &[Row], file: &str) -> Result<Vec<OperatingPoint>> {
-    let said = AtomicBool::new(false);
-    let out = rows
-        .par_chunks(256)
-        .map_init(
-            || ev.clone(),
-            |ev, chunk| {
-                chunk
-                    .iter()
-                    .map(|row| {
-                        let e = ev.evaluate(row.load, row.speed).map_err(|e| CliError::Input {
-                            file: file.to_string(),
-                            line: row.line,
-                            message: e.to_string(),
-                        })?;
-                        note_fallback(&e, ev, &said);
-                        Ok(ev.operating_point(&e))
-                    })
-                    .collect::<Result<Vec<_>>>()
-            },
-        )
-        .collect::<Result<Vec<Vec<_>>>>()?;
-    Ok(out.into_iter().flatten().collect())
-}
-
-/// Write the header and rows: input columns, then the results.
-pub fn write_csv(w: &mut dyn Write, table: &Table, results: &[OperatingPoint]) -> io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    let header = table.header.iter().map(String::as_str).chain(RESULT_COLUMNS);
-    wtr.write_record(header).map_err(csv_io)?;
-    for (row, op) in table.rows.iter().zip(results) {
-        wtr.write_record(row.fields.iter().cloned().chain(result_fields(op))).map_err(csv_io)?;
+    if let (Mode::Level { pool, .. }, Some(ev)) = (mode, ev) {
+        if let Ok(mut p) = pool.lock() {
+            p.push(ev);
+        }
     }
-    wtr.flush()?;
-    Ok(())
+    if let Some(w) = wtr {
+        out.text = w.into_inner().map_err(|e| CliError::Invalid(format!("formatting a row: {}", e.error())))?;
+    }
+    Ok(out)
+}
+
+/// Every chunk of a batch on every core; the first error in input order wins.
+fn batch_outputs(batch: &Batch, cols: &Columns, mode: &Mode, file: &str) -> Result<Vec<ChunkOut>> {
+    let outs: Vec<Result<ChunkOut>> = batch.records.par_chunks(CHUNK_ROWS).map(|recs| chunk(batch, recs, cols, mode, file)).collect();
+    outs.into_iter().collect()
+}
+
+/// Stream the input through `mode`: every batch read, answered on every core and handed to
+/// `sink` in input order; while the cores work on one batch, this thread writes the one
+/// before and reads the one after. Returns the ranges of positive load and |speed| seen.
+fn stream<R: BufRead>(
+    reader: &mut RecordReader<R>,
+    cols: &Columns,
+    mode: &Mode,
+    file: &str,
+    bar: &ProgressBar,
+    sink: &mut dyn FnMut(&[ChunkOut]) -> Result<()>,
+) -> Result<((f64, f64), (f64, f64))> {
+    let (mut loads, mut speeds) = (EMPTY_RANGE, EMPTY_RANGE);
+    let (mut current, mut next) = (Batch::default(), Batch::default());
+    let mut more = reader.fill(&mut current, BATCH_ROWS)?;
+    let mut done: Vec<ChunkOut> = Vec::new();
+    while !current.records.is_empty() {
+        bar.set_position(reader.consumed);
+        let (written, read, outs) = std::thread::scope(|s| {
+            let work = s.spawn(|| batch_outputs(&current, cols, mode, file));
+            let written = sink(&done);
+            let read = if more && written.is_ok() {
+                reader.fill(&mut next, BATCH_ROWS)
+            } else {
+                next.clear();
+                Ok(false)
+            };
+            let outs = work.join().unwrap_or_else(|_| Err(CliError::Invalid("a worker thread panicked".into())));
+            (written, read, outs)
+        });
+        written?;
+        done = outs?;
+        for o in &done {
+            (loads.0, loads.1) = (loads.0.min(o.loads.0), loads.1.max(o.loads.1));
+            (speeds.0, speeds.1) = (speeds.0.min(o.speeds.0), speeds.1.max(o.speeds.1));
+        }
+        more = read?;
+        std::mem::swap(&mut current, &mut next);
+    }
+    sink(&done)?;
+    Ok((loads, speeds))
+}
+
+/// The input, opened (standard input when `-`), as a buffered reader that can be read again
+/// from the start: standard input is copied to an unnamed temporary file when a second pass
+/// is needed (the envelope of a fidelity level), so memory stays bounded.
+fn open(path: &Path, rewindable: bool) -> Result<(Box<dyn ReadSeek>, Option<u64>)> {
+    let read_err = |source: io::Error| CliError::Read { path: path.to_path_buf(), source };
+    if is_stdio(path) {
+        if !rewindable {
+            return Ok((Box::new(Unseekable(io::BufReader::with_capacity(1 << 16, io::stdin()))), None));
+        }
+        let mut tmp = tempfile::tempfile().map_err(read_err)?;
+        io::copy(&mut io::stdin().lock(), &mut tmp).map_err(read_err)?;
+        tmp.rewind().map_err(read_err)?;
+        let len = tmp.metadata().ok().map(|m| m.len());
+        return Ok((Box::new(io::BufReader::with_capacity(1 << 16, tmp)), len));
+    }
+    let f = std::fs::File::open(path).map_err(read_err)?;
+    let len = f.metadata().ok().filter(|m| m.is_file()).map(|m| m.len());
+    Ok((Box::new(io::BufReader::with_capacity(1 << 16, f)), len))
+}
+
+/// A buffered input that may be rewound.
+trait ReadSeek: BufRead {
+    fn rewind_input(&mut self) -> io::Result<()>;
+}
+impl<T: io::Read + Seek> ReadSeek for io::BufReader<T> {
+    fn rewind_input(&mut self) -> io::Result<()> {
+        self.rewind()
+    }
+}
+/// Standard input read once.
+struct Unseekable<T>(T);
+impl<T: io::Read> io::Read for Unseekable<T> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        self.0.read(buf)
+    }
+}
+impl<T: BufRead> BufRead for Unseekable<T> {
+    fn fill_buf(&mut self) -> io::Result<&[u8]> {
+        self.0.fill_buf()
+    }
+    fn consume(&mut self, n: usize) {
+        self.0.consume(n)
+    }
+}
+impl<T: BufRead> ReadSeek for Unseekable<T> {
+    fn rewind_input(&mut self) -> io::Result<()> {
+        Err(io::Error::other("standard input cannot be read twice"))
+    }
+}
+
+/// A progress bar over the input's bytes for large files (drawn only on a terminal).
+fn progress(len: Option<u64>) -> ProgressBar {
+    match len {
+        Some(n) if n >= 1 << 20 => {
+            let bar = ProgressBar::new(n);
+            bar.set_style(
+                ProgressStyle::with_template("{bar:40} {bytes}/{total_bytes} of input, {elapsed}, eta {eta}").expect("valid template"),
+            );
+            bar
+        }
+        _ => ProgressBar::hidden(),
+    }
 }
 
 pub fn run(cmd: &SweepCmd) -> Result<()> {
@@ -242,24 +335,65 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         refuse_inputs(&[out], &inputs)?;
     }
     let joint = cmd.params.joint()?;
-    let table = if is_stdio(&cmd.input) {
-        parse(io::stdin().lock(), "standard input")?
+    let full = cmd.fidelity.is_full()?;
+    let file = if is_stdio(&cmd.input) { "standard input".to_string() } else { cmd.input.display().to_string() };
+    let needs_ranges = !full && (cmd.fidelity.envelope_load.is_none() || cmd.fidelity.envelope_speed.is_none());
+    let (mut input, len) = open(&cmd.input, needs_ranges)?;
+    let bar = progress(len);
+    let level;
+    let mode = if full {
+        Mode::Full(&joint)
     } else {
-        let f = std::fs::File::open(&cmd.input).map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
-        parse(io::BufReader::new(f), &cmd.input.display().to_string())?
+        let (loads, speeds) = if needs_ranges {
+            let mut reader = RecordReader::new(&mut input, &file);
+            let cols = read_header(&mut reader, &file)?;
+            let (l, s) = stream(&mut reader, &cols, &Mode::Scan, &file, &ProgressBar::hidden(), &mut |_| Ok(()))?;
+            input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
+            let fallback = |r: (f64, f64), f: (f64, f64)| if r.0.is_finite() { range_of([r.0, r.1].into_iter(), f) } else { f };
+            (fallback(l, (1.0, 2.0)), fallback(s, (1e-3, 1.0)))
+        } else {
+            ((1.0, 2.0), (1e-3, 1.0))
+        };
+        level = cmd.fidelity.build(&cmd.params.load()?, loads, speeds)?;
+        Mode::Level { proto: &level, pool: Mutex::new(Vec::new()), said: AtomicBool::new(false) }
     };
-    let file = cmd.input.display().to_string();
-    let results = if cmd.fidelity.is_full()? {
-        evaluate(&joint, &table.rows, &file)?
-    } else {
-        let loads = range_of(table.rows.iter().map(|r| r.load.abs()), (1.0, 2.0));
-        let speeds = range_of(table.rows.iter().map(|r| r.speed.abs()), (1e-3, 1.0));
-        let ev = cmd.fidelity.build(&cmd.params.load()?, loads, speeds)?;
-        evaluate_with(&ev, &table.rows, &file)?
+    let mut reader = RecordReader::new(&mut input, &file);
+    let cols = read_header(&mut reader, &file)?;
+    // An input or model error inside the writer is kept here and returned as itself.
+    let failure: Mutex<Option<CliError>> = Mutex::new(None);
+    let fill = |w: &mut dyn Write| -> io::Result<()> {
+        let mut wtr = csv::Writer::from_writer(&mut *w);
+        wtr.write_record(cols.header.iter().map(String::as_str).chain(RESULT_COLUMNS)).map_err(csv_io)?;
+        wtr.flush()?;
+        drop(wtr);
+        let mut write_err: Option<io::Error> = None;
+        let mut sink = |outs: &[ChunkOut]| -> Result<()> {
+            for o in outs {
+                if let Err(e) = w.write_all(&o.text) {
+                    let msg = e.to_string();
+                    write_err = Some(e);
+                    return Err(CliError::Invalid(msg));
+                }
+            }
+            Ok(())
+        };
+        let r = stream(&mut reader, &cols, &mode, &file, &bar, &mut sink);
+        bar.finish_and_clear();
+        if let Some(e) = write_err {
+            return Err(e);
+        }
+        r.map(|_| ()).map_err(|e| {
+            let msg = e.to_string();
+            *failure.lock().unwrap_or_else(|p| p.into_inner()) = Some(e);
+            io::Error::other(msg)
+        })
     };
-    match &cmd.output {
-        Some(path) if !is_stdio(path) => write_atomic(path, &inputs, |w| write_csv(w, &table, &results)),
-        _ => to_stdout(|w| write_csv(w, &table, &results)),
+    let written = match &cmd.output {
+        Some(path) if !is_stdio(path) => write_atomic(path, &inputs, fill),
+        _ => to_stdout(fill),
+    };
+    match failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
+        Some(e) => Err(e),
+        None => written,
     }
 }
-

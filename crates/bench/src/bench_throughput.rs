@@ -1,0 +1,182 @@
+//! `pinjoint-bench`, throughput: a whole `pinjoint sweep` process over 1e6 rows (wall time and
+//! peak memory, and the peak at 1e5 rows to show it does not grow with the rows), the
+//! library's cold evaluation per point on the same rows, and the SciPy implementation of the
+//! model (benches/scipy_reference.py) per point on the first rows of the sweep's output,
+//! with its largest difference from the library. Every figure from one run.
+
+use pinjoint::{Joint, Params};
+use std::hint::black_box;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+/// A `pinjoint sweep` child process: wall time and peak resident memory.
+#[derive(Debug, Clone, Copy)]
+pub struct SweepRun {
+    pub rows: usize,
+    pub seconds: f64,
+    pub peak_rss_mib: f64,
+}
+
+/// The SciPy reference on the first rows of the sweep's output.
+#[derive(Debug, Clone)]
+pub struct Scipy {
+    pub points: usize,
+    pub seconds_per_point: f64,
+    /// Largest relative difference from the library in μ, torque, h_c; absolute in the shares.
+    pub max_difference: serde_json::Value,
+    pub versions: String,
+}
+
+#[derive(Debug, Clone)]
+pub struct Throughput {
+    /// Fastest of the repeats, at the full row count.
+    pub sweep: SweepRun,
+    /// At a tenth of the rows (memory must not depend on the row count).
+    pub small: SweepRun,
+    /// Library cold evaluation (`Joint::evaluate`), one thread, ns per point on the sweep's rows.
+    pub model_ns: f64,
+    /// Library cold evaluation in the mixed regime (20 kN, 6 rad/s), ns, median of repeats.
+    pub mixed_cold_ns: f64,
+    pub threads: usize,
+    pub scipy: Result<Scipy, String>,
+}
+
+/// Deterministic rows over 5–60 kN and 1e-3–100 rad/s (both signs), log-uniform.
+fn points(n: usize) -> Vec<(f64, f64)> {
+    let mut s: u64 = 0x7377_6565_7031;
+    let mut next = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    (0..n)
+        .map(|_| {
+            let p = (5e3f64.ln() + (60e3f64 / 5e3).ln() * next()).exp();
+            let w = (1e-3f64.ln() + (100.0f64 / 1e-3).ln() * next()).exp();
+            (p, if next() < 0.5 { -w } else { w })
+        })
+        .collect()
+}
+
+fn write_points(path: &Path, pts: &[(f64, f64)]) -> std::io::Result<()> {
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    writeln!(w, "load,speed")?;
+    for (p, s) in pts {
+        writeln!(w, "{p:?},{s:?}")?;
+    }
+    w.flush()
+}
+
+/// Run `exe sweep` on `input` into `output`; its wall time and peak RSS (wait4's rusage).
+fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize) -> Result<SweepRun, String> {
+    let t0 = Instant::now();
+    let child = Command::new(exe)
+        .args(["sweep", "--input"])
+        .arg(input)
+        .arg("--output")
+        .arg(output)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .map_err(|e| format!("running {}: {e}", exe.display()))?;
+    let pid = child.id() as libc::pid_t;
+    let mut status: libc::c_int = 0;
+    // SAFETY: rusage is plain data, zero is a valid value; wait4 reaps our own child by pid.
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    let r = unsafe { libc::wait4(pid, &mut status, 0, &mut usage) };
+    let seconds = t0.elapsed().as_secs_f64();
+    if r != pid || !libc::WIFEXITED(status) || libc::WEXITSTATUS(status) != 0 {
+        return Err(format!("pinjoint sweep over {rows} rows failed (status {status})"));
+    }
+    // ru_maxrss is in KiB on Linux.
+    Ok(SweepRun { rows, seconds, peak_rss_mib: usage.ru_maxrss as f64 / 1024.0 })
+}
+
+fn scipy(python: &Path, sweep_output: &Path, points: usize) -> Result<Scipy, String> {
+    let script = [PathBuf::from("benches/scipy_reference.py"), Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/scipy_reference.py")]
+        .into_iter()
+        .find(|p| p.is_file())
+        .ok_or("benches/scipy_reference.py not found")?;
+    if !python.is_file() {
+        return Err(format!("no Python at {}", python.display()));
+    }
+    let o = Command::new(python)
+        .arg(&script)
+        .arg(sweep_output)
+        .args(["--limit", &points.to_string()])
+        .output()
+        .map_err(|e| format!("running {}: {e}", python.display()))?;
+    if !o.status.success() {
+        return Err(format!("{} failed: {}", script.display(), String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("")));
+    }
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).map_err(|e| format!("unreadable output of {}: {e}", script.display()))?;
+    Ok(Scipy {
+        points: v["points"].as_u64().unwrap_or(0) as usize,
+        seconds_per_point: v["seconds_per_point"].as_f64().unwrap_or(f64::NAN),
+        max_difference: v["max_difference"].clone(),
+        versions: format!(
+            "SciPy {}, NumPy {}, Python {}",
+            v["scipy"].as_str().unwrap_or("?"),
+            v["numpy"].as_str().unwrap_or("?"),
+            v["python"].as_str().unwrap_or("?")
+        ),
+    })
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Measure. `quick`: 1e4 rows, few SciPy points. `work` is a scratch directory.
+pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, String> {
+    let exe = std::env::current_exe().map_err(|e| format!("own executable: {e}"))?;
+    let rows = if quick { 10_000 } else { 1_000_000 };
+    let reps = if quick { 1 } else { 3 };
+    let pts = points(rows);
+    let (big_in, small_in, out) = (work.join("sweep_in.csv"), work.join("sweep_in_small.csv"), work.join("sweep_out.csv"));
+    write_points(&big_in, &pts).map_err(|e| format!("writing {}: {e}", big_in.display()))?;
+    write_points(&small_in, &pts[..rows / 10]).map_err(|e| format!("writing {}: {e}", small_in.display()))?;
+    progress(&format!("throughput: pinjoint sweep over {} and {} rows", rows / 10, rows));
+    let small = sweep_child(&exe, &small_in, &out, rows / 10)?;
+    let mut runs = Vec::new();
+    for _ in 0..reps {
+        runs.push(sweep_child(&exe, &big_in, &out, rows)?);
+    }
+    let sweep = *runs.iter().min_by(|a, b| a.seconds.total_cmp(&b.seconds)).expect("at least one run");
+    let sweep = SweepRun { peak_rss_mib: runs.iter().map(|r| r.peak_rss_mib).fold(0.0, f64::max), ..sweep };
+    progress("throughput: library cold evaluation per point");
+    let j = Joint::new(&Params::default()).map_err(|e| e.to_string())?;
+    let n = pts.len().min(100_000);
+    let model_ns = median(
+        (0..reps.max(3))
+            .map(|_| {
+                let t = Instant::now();
+                let mut acc = 0.0;
+                for &(p, w) in &pts[..n] {
+                    acc += j.evaluate(black_box(p), black_box(w)).map_or(f64::NAN, |o| o.torque);
+                }
+                black_box(acc);
+                t.elapsed().as_secs_f64() * 1e9 / n as f64
+            })
+            .collect(),
+    );
+    let mixed_cold_ns = median(
+        (0..21)
+            .map(|_| {
+                let t = Instant::now();
+                for _ in 0..20_000 {
+                    black_box(j.evaluate(black_box(20e3), black_box(6.0)).map_or(f64::NAN, |o| o.torque));
+                }
+                t.elapsed().as_secs_f64() * 1e9 / 20_000.0
+            })
+            .collect(),
+    );
+    progress("throughput: SciPy reference");
+    let scipy = scipy(python, &out, if quick { 20 } else { 300 });
+    let _ = [big_in, small_in, out].iter().try_for_each(std::fs::remove_file);
+    Ok(Throughput { sweep, small, model_ns, mixed_cold_ns, threads: rayon::current_num_threads(), scipy })
+}

@@ -1,0 +1,214 @@
+//! `pinjoint sweep`'s input, read in bounded batches: records split off the stream with
+//! their line numbers (blank and `#` comment lines skipped, quoted fields may span lines),
+//! then each record cut into trimmed fields, on any thread.
+//!
+//! The rules are those of the `csv` crate as the command has always used it (trim all
+//! fields, comment character `#` at the start of a record, rows may have any number of
+//! fields, which the caller checks): a record without a quote or a stray carriage return
+//! is split on commas here (the common case, no copy of the text but into the reused
+//! record); any other goes through a `csv` reader.
+
+use super::error::{CliError, Result};
+use std::io::{BufRead, Read};
+
+/// The longest record accepted, in bytes: keeps memory bounded whatever the input.
+pub const MAX_RECORD_BYTES: u64 = 1 << 20;
+
+/// One record of a batch: bytes `start..end` of the batch's text (terminator removed) and
+/// the 1-based line on which it starts.
+#[derive(Debug, Clone, Copy)]
+pub struct Record {
+    pub start: usize,
+    pub end: usize,
+    pub line: u64,
+}
+
+/// Consecutive records and the text that holds them.
+#[derive(Debug, Default)]
+pub struct Batch {
+    pub text: Vec<u8>,
+    pub records: Vec<Record>,
+}
+
+impl Batch {
+    pub fn bytes(&self, r: &Record) -> &[u8] {
+        &self.text[r.start..r.end]
+    }
+    pub fn clear(&mut self) {
+        self.text.clear();
+        self.records.clear();
+    }
+}
+
+/// Splits an input stream into records.
+pub struct RecordReader<R> {
+    input: R,
+    /// Line number of the next line to be read.
+    line: u64,
+    /// Bytes read so far (for a progress bar).
+    pub consumed: u64,
+    file: String,
+}
+
+impl<R: BufRead> RecordReader<R> {
+    pub fn new(input: R, file: &str) -> Self {
+        Self { input, line: 1, consumed: 0, file: file.to_string() }
+    }
+
+    fn bad(&self, line: u64, message: String) -> CliError {
+        CliError::Input { file: self.file.clone(), line, message }
+    }
+
+    /// Append one line (with its `\n`, if any) to `text`; the number of bytes read.
+    fn read_line(&mut self, text: &mut Vec<u8>, record_start: usize, line: u64) -> Result<usize> {
+        let room = (MAX_RECORD_BYTES + 1).saturating_sub((text.len() - record_start) as u64);
+        let n = (&mut self.input)
+            .take(room)
+            .read_until(b'\n', text)
+            .map_err(|source| CliError::Read { path: self.file.clone().into(), source })?;
+        if (text.len() - record_start) as u64 > MAX_RECORD_BYTES {
+            return Err(self.bad(line, format!("the record is longer than {MAX_RECORD_BYTES} bytes")));
+        }
+        self.consumed += n as u64;
+        Ok(n)
+    }
+
+    /// The next record appended to `text`, or None at the end of the input. Blank lines
+    /// and lines starting with `#` are skipped; a record continues over line breaks while a
+    /// quoted field is open.
+    pub fn next_record(&mut self, text: &mut Vec<u8>) -> Result<Option<Record>> {
+        loop {
+            let start = text.len();
+            let line = self.line;
+            if self.read_line(text, start, line)? == 0 {
+                return Ok(None);
+            }
+            self.line += 1;
+            let first = &text[start..];
+            let blank = matches!(first, b"\n" | b"\r\n" | b"\r");
+            if blank || first[0] == b'#' {
+                text.truncate(start);
+                continue;
+            }
+            let mut quotes = first.iter().filter(|&&b| b == b'"').count();
+            while quotes % 2 == 1 && text.last() == Some(&b'\n') {
+                let from = text.len();
+                if self.read_line(text, start, line)? == 0 {
+                    break;
+                }
+                self.line += 1;
+                quotes += text[from..].iter().filter(|&&b| b == b'"').count();
+            }
+            let mut end = text.len();
+            if text[start..end].ends_with(b"\n") {
+                end -= 1;
+                if text[start..end].ends_with(b"\r") {
+                    end -= 1;
+                }
+            }
+            text.truncate(end);
+            return Ok(Some(Record { start, end, line }));
+        }
+    }
+
+    /// Read records into `batch` (cleared first) until it holds `rows` of them or the input
+    /// ends; false once the input is exhausted.
+    pub fn fill(&mut self, batch: &mut Batch, rows: usize) -> Result<bool> {
+        batch.clear();
+        while batch.records.len() < rows {
+            match self.next_record(&mut batch.text)? {
+                Some(r) => batch.records.push(r),
+                None => return Ok(false),
+            }
+        }
+        Ok(true)
+    }
+
+    /// The header: the first record's fields as text, and its line.
+    pub fn header(&mut self) -> Result<(Vec<String>, u64)> {
+        let mut text = Vec::new();
+        let Some(r) = self.next_record(&mut text)? else { return Ok((Vec::new(), 1)) };
+        let mut rec = csv::ByteRecord::new();
+        split(&text[r.start..r.end], &mut rec).map_err(|m| self.bad(r.line, m))?;
+        let mut header = Vec::with_capacity(rec.len());
+        for f in rec.iter() {
+            let s = std::str::from_utf8(f).map_err(|e| self.bad(r.line, format!("unreadable CSV: invalid UTF-8 in the header: {e}")))?;
+            header.push(s.to_string());
+        }
+        Ok((header, r.line))
+    }
+}
+
+/// Cut one record (terminator removed) into trimmed fields, replacing `out`'s contents.
+/// Errors: a record the `csv` reader splits into several (a line break inside it that is
+/// not within quotes, i.e. a carriage return alone).
+pub fn split(bytes: &[u8], out: &mut csv::ByteRecord) -> std::result::Result<(), String> {
+    out.clear();
+    if !bytes.iter().any(|&b| b == b'"' || b == b'\r') {
+        for f in bytes.split(|&b| b == b',') {
+            out.push_field(f.trim_ascii());
+        }
+        return Ok(());
+    }
+    let mut rdr = csv::ReaderBuilder::new().has_headers(false).flexible(true).trim(csv::Trim::All).from_reader(bytes);
+    match rdr.read_byte_record(out) {
+        Ok(true) => {}
+        Ok(false) => out.push_field(b""),
+        Err(e) => return Err(format!("unreadable CSV: {e}")),
+    }
+    let mut extra = csv::ByteRecord::new();
+    if matches!(rdr.read_byte_record(&mut extra), Ok(true)) {
+        return Err("unreadable CSV: a line break inside the record that is not within quotes (a carriage return alone?)".into());
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn records(text: &str) -> Vec<(u64, Vec<String>)> {
+        let mut r = RecordReader::new(text.as_bytes(), "t");
+        let mut b = Batch::default();
+        r.fill(&mut b, usize::MAX).unwrap();
+        let mut rec = csv::ByteRecord::new();
+        b.records
+            .iter()
+            .map(|x| {
+                split(b.bytes(x), &mut rec).unwrap();
+                (x.line, rec.iter().map(|f| String::from_utf8(f.to_vec()).unwrap()).collect())
+            })
+            .collect()
+    }
+
+    /// What the csv crate makes of the same text (trim, comments, flexible).
+    fn csv_records(text: &str) -> Vec<Vec<String>> {
+        let mut rdr = csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .trim(csv::Trim::All)
+            .comment(Some(b'#'))
+            .from_reader(text.as_bytes());
+        rdr.records().map(|r| r.unwrap().iter().map(str::to_string).collect()).collect()
+    }
+
+    #[test]
+    fn fields_and_lines_as_the_csv_crate_gives_them() {
+        let text = "# c\nload , speed,id\n\n 1,2 ,x\r\n\r\n#x,y\n3,\"a,\"\"b\"\"\nc\",4\n  \n5,6\n\t7 ,8,\"q\"\n9";
+        let got = records(text);
+        let lines: Vec<u64> = got.iter().map(|g| g.0).collect();
+        assert_eq!(lines, [2, 4, 7, 9, 10, 11, 12]);
+        let fields: Vec<Vec<String>> = got.into_iter().map(|g| g.1).collect();
+        assert_eq!(fields, csv_records(text));
+        assert_eq!(fields[2], ["3", "a,\"b\"\nc", "4"]);
+    }
+
+    #[test]
+    fn an_overlong_record_is_refused_with_its_line() {
+        let text = format!("load,speed\n{}\n", "1".repeat(MAX_RECORD_BYTES as usize + 5));
+        let mut r = RecordReader::new(text.as_bytes(), "t");
+        let mut b = Batch::default();
+        let e = r.fill(&mut b, 10).unwrap_err().to_string();
+        assert!(e.contains("line 2") && e.contains("longer than"), "{e}");
+    }
+}
