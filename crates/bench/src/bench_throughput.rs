@@ -133,7 +133,12 @@ fn median(mut v: Vec<f64>) -> f64 {
 
 /// Measure. `quick`: 1e4 rows, few SciPy points. `work` is a scratch directory.
 pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, String> {
-    let exe = std::env::current_exe().map_err(|e| format!("own executable: {e}"))?;
+    // The `pinjoint` binary of the same build, beside this one (target/release/).
+    let own = std::env::current_exe().map_err(|e| format!("own executable: {e}"))?;
+    let exe = own.with_file_name(format!("pinjoint{}", std::env::consts::EXE_SUFFIX));
+    if !exe.is_file() {
+        return Err(format!("{} not found: build it with `cargo build --release`", exe.display()));
+    }
     let rows = if quick { 10_000 } else { 1_000_000 };
     let reps = if quick { 1 } else { 3 };
     let pts = points(rows);
