@@ -9,9 +9,17 @@ pub mod pass_through;
 pub mod pin_joint;
 pub mod pin_joint_rig;
 
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::fmi2::variables::{Legal, ModelInfo};
 
 fmi_layer::export_fmi2!(crate::registry);
+
+/// Author, copyright and licence of every FMU of this library (the crates it links
+/// statically keep their own licences: `documentation/licenses/` in each FMU).
+pub const LEGAL: Legal = Legal {
+    author: "The pinjoint developers",
+    copyright: "Copyright (c) 2026 The pinjoint developers",
+    license: "MIT; statically linked Rust crates under their own licences, see documentation/licenses/index.html",
+};
 
 /// Every model the shared library serves.
 pub fn registry() -> Vec<&'static ModelInfo> {

@@ -14,6 +14,7 @@ fn num(v: &Variable, x: Option<f64>) -> String {
         (_, None) => "&ndash;".into(),
         (Kind::Boolean, Some(x)) => (x != 0.0).to_string(),
         (Kind::Integer, Some(x)) => format!("{}", x as i64),
+        (Kind::Enumeration(t), Some(x)) => format!("{} ({})", x as i64, t.item(x as i64).unwrap_or("?")),
         (Kind::Real, Some(x)) => format!("{x:e}").replace("e0", ""),
     }
 }

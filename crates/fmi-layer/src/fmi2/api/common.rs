@@ -3,7 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::guard::{call, maybe_forced_panic, slice, slice_mut};
-use crate::fmi2::instance::Instance;
+use crate::fmi2::instance::{Instance, Interface};
 use crate::fmi2::logging::{Category, Logger};
 use crate::fmi2::snapshot::Snapshot;
 use crate::fmi2::state;
@@ -15,7 +15,7 @@ use std::ptr::null_mut;
 
 /// # Safety
 /// `p` is NULL or a NUL-terminated string.
-unsafe fn text(p: *const c_char) -> Option<String> {
+pub(crate) unsafe fn text(p: *const c_char) -> Option<String> {
     // SAFETY: per the contract.
     (!p.is_null()).then(|| unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
 }
@@ -82,11 +82,8 @@ unsafe fn instantiate(
         Some(n) if !n.is_empty() => n,
         _ => return fail("instanceName must be a non-empty string".into()),
     };
-    if fmu_type != FMI2_CO_SIMULATION {
-        return fail(format!(
-            "fmuType = {fmu_type} ({}): this FMU implements Co-Simulation (fmuType = 1) only",
-            if fmu_type == FMI2_MODEL_EXCHANGE { "Model Exchange" } else { "not an fmi2Type" }
-        ));
+    if fmu_type != FMI2_CO_SIMULATION && fmu_type != FMI2_MODEL_EXCHANGE {
+        return fail(format!("fmuType = {fmu_type} is not an fmi2Type (0 = Model Exchange, 1 = Co-Simulation)"));
     }
     let Some(guid) = guid else {
         return fail("fmuGUID is NULL".into());
@@ -98,13 +95,18 @@ unsafe fn instantiate(
             known.join(", ")
         ));
     };
-    // This FMU needs no resources: a missing or unusual location is only a warning.
+    let interface = if fmu_type == FMI2_MODEL_EXCHANGE {
+        if !info.model_exchange {
+            return fail(format!("fmuType = 0 (Model Exchange): {} implements Co-Simulation (fmuType = 1) only", info.model_name));
+        }
+        Interface::ModelExchange
+    } else {
+        Interface::CoSimulation
+    };
+    // This FMU needs no resources: NULL or "" is fine (no message); a location that is
+    // not a URI is only a warning.
     match resources.as_deref() {
-        None | Some("") => logger.log(
-            Status::Warning,
-            Category::StatusWarning,
-            "fmi2Instantiate: fmuResourceLocation is empty; this FMU needs no resources, continuing",
-        ),
+        None | Some("") => {}
         Some(r) if !looks_like_uri(r) => logger.log(
             Status::Warning,
             Category::StatusWarning,
@@ -112,13 +114,13 @@ unsafe fn instantiate(
         ),
         _ => {}
     }
-    let inst = Instance::new(info, &name, logger);
+    let inst = Instance::with_interface(info, &name, logger, interface, false);
     inst.event(&format!("instantiated {} (GUID {guid})", info.model_name));
     Box::into_raw(Box::new(inst)) as Fmi2Component
 }
 
 /// RFC 3986: `scheme ":" ...` with scheme = ALPHA *( ALPHA / DIGIT / "+" / "-" / "." ).
-fn looks_like_uri(s: &str) -> bool {
+pub(crate) fn looks_like_uri(s: &str) -> bool {
     match s.split_once(':') {
         Some((scheme, _)) => {
             let mut ch = scheme.chars();
