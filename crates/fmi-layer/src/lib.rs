@@ -12,3 +12,4 @@
 //! [`export_fmi2!`], the one entry point that must choose a model by GUID.
 
 pub mod fmi2;
+pub mod fmi3;

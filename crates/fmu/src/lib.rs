@@ -12,6 +12,7 @@ pub mod pin_joint_rig;
 use fmi_layer::fmi2::variables::{Legal, ModelInfo};
 
 fmi_layer::export_fmi2!(crate::registry);
+fmi_layer::export_fmi3!(crate::registry);
 
 /// Author, copyright and licence of every FMU of this library (the crates it links
 /// statically keep their own licences: `documentation/licenses/` in each FMU).

@@ -330,7 +330,16 @@ no_such_type!(fmi2GetString, fmi2SetString, Fmi2String, "String");
 /// `state` is NULL or points to NULL or to an FMU state of this instance's model.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
-    call(c, "fmi2GetFMUstate", state::FMU_STATE, |inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { get_fmu_state("fmi2GetFMUstate", c, FMUstate) }
+}
+
+/// The body of `fmi2GetFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2GetFMUstate`.
+pub(crate) unsafe fn get_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |inst| {
         if FMUstate.is_null() {
             return Err("FMUstate is NULL".into());
         }
@@ -371,7 +380,16 @@ unsafe fn live_state<'a>(s: Fmi2FmuState) -> Result<&'a mut Snapshot, String> {
 /// `FMUstate` is NULL or an FMU state returned by this FMU.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, FMUstate: Fmi2FmuState) -> Fmi2StatusC {
-    call(c, "fmi2SetFMUstate", state::FMU_STATE, |inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { set_fmu_state("fmi2SetFMUstate", c, FMUstate) }
+}
+
+/// The body of `fmi2SetFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2SetFMUstate`.
+pub(crate) unsafe fn set_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: Fmi2FmuState) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |inst| {
         // SAFETY: per the contract.
         let snap = unsafe { live_state(FMUstate) }?;
         inst.restore(snap)
@@ -382,7 +400,16 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, FMUstate: Fmi2FmuStat
 /// `FMUstate` is NULL or points to NULL or to an FMU state returned by this FMU.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2FreeFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
-    call(c, "fmi2FreeFMUstate", state::FMU_STATE, |_inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { free_fmu_state("fmi2FreeFMUstate", c, FMUstate) }
+}
+
+/// The body of `fmi2FreeFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2FreeFMUstate`.
+pub(crate) unsafe fn free_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
         if FMUstate.is_null() || unsafe { (*FMUstate).is_null() } {
             return Ok(Status::Ok); // nothing to free
@@ -403,7 +430,16 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2F
 /// `FMUstate` is an FMU state returned by this FMU; `size` is writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: Fmi2Component, FMUstate: Fmi2FmuState, size: *mut usize) -> Fmi2StatusC {
-    call(c, "fmi2SerializedFMUstateSize", state::FMU_STATE, |_inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { serialized_fmu_state_size("fmi2SerializedFMUstateSize", c, FMUstate, size) }
+}
+
+/// The body of `fmi2SerializedFMUstateSize`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2SerializedFMUstateSize`.
+pub(crate) unsafe fn serialized_fmu_state_size(name: &'static str, c: Fmi2Component, FMUstate: Fmi2FmuState, size: *mut usize) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
         let snap = unsafe { live_state(FMUstate) }?;
         if size.is_null() {
@@ -424,7 +460,21 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
     serializedState: *mut Fmi2Byte,
     size: usize,
 ) -> Fmi2StatusC {
-    call(c, "fmi2SerializeFMUstate", state::FMU_STATE, |_inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { serialize_fmu_state("fmi2SerializeFMUstate", c, FMUstate, serializedState, size) }
+}
+
+/// The body of `fmi2SerializeFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2SerializeFMUstate`.
+pub(crate) unsafe fn serialize_fmu_state(name: &'static str, 
+    c: Fmi2Component,
+    FMUstate: Fmi2FmuState,
+    serializedState: *mut Fmi2Byte,
+    size: usize,
+) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
         let snap = unsafe { live_state(FMUstate) }?;
         let bytes = snap.encode();
@@ -448,7 +498,21 @@ pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
     size: usize,
     FMUstate: *mut Fmi2FmuState,
 ) -> Fmi2StatusC {
-    call(c, "fmi2DeSerializeFMUstate", state::FMU_STATE, |inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { deserialize_fmu_state("fmi2DeSerializeFMUstate", c, serializedState, size, FMUstate) }
+}
+
+/// The body of `fmi2DeSerializeFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2DeSerializeFMUstate`.
+pub(crate) unsafe fn deserialize_fmu_state(name: &'static str, 
+    c: Fmi2Component,
+    serializedState: *const Fmi2Byte,
+    size: usize,
+    FMUstate: *mut Fmi2FmuState,
+) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |inst| {
         if FMUstate.is_null() {
             return Err("FMUstate is NULL".into());
         }
