@@ -50,7 +50,7 @@ pub fn set(c: Fmi2Component, name: &str, v: f64) -> i32 {
     unsafe {
         match kind(name) {
             Kind::Real => fmi2SetReal(c, r.as_ptr(), 1, [v].as_ptr()),
-            Kind::Integer => fmi2SetInteger(c, r.as_ptr(), 1, [v as i32].as_ptr()),
+            Kind::Integer | Kind::Enumeration(_) => fmi2SetInteger(c, r.as_ptr(), 1, [v as i32].as_ptr()),
             Kind::Boolean => fmi2SetBoolean(c, r.as_ptr(), 1, [(v != 0.0) as i32].as_ptr()),
         }
     }
@@ -64,7 +64,7 @@ pub fn try_get(c: Fmi2Component, name: &str) -> Result<f64, i32> {
                 let mut v = [f64::NAN];
                 (fmi2GetReal(c, r.as_ptr(), 1, v.as_mut_ptr()), v[0])
             }
-            Kind::Integer => {
+            Kind::Integer | Kind::Enumeration(_) => {
                 let mut v = [-7];
                 (fmi2GetInteger(c, r.as_ptr(), 1, v.as_mut_ptr()), v[0] as f64)
             }
