@@ -95,3 +95,48 @@ def test_package_carries_licences_of_every_linked_crate_and_model_png(path):
     for attr in ('author="', 'copyright="', 'license="'):
         assert attr in xml
     assert "\u00b5" not in xml
+
+
+def test_fmi3_state_round_trip_and_misuse(tmp_path):
+    """FMI 3.0 through fmpy's low-level API: Enumeration via Int64, FMU state get/set and the
+    serialized form (the FMI 2.0 byte format: magic, version, length, CRC-32), a corrupted
+    state refused, an illegal call refused with a message, a wrong token refused."""
+    from fmpy import extract, read_model_description
+    from fmpy.fmi3 import FMU3Slave
+    from fmpy.fmi1 import FMICallException
+    md = read_model_description(str(FMI3))
+    d = extract(str(FMI3), str(tmp_path))
+    v = {x.name: x.valueReference for x in md.modelVariables}
+    messages = []
+    fmu = FMU3Slave(guid=md.guid, unzipDirectory=d, modelIdentifier="PinJoint", instanceName="s3")
+    fmu.instantiate(loggingOn=False, logMessage=lambda *a: messages.append(a))
+    fmu.setInt64([v["fidelity"]], [2])  # boundary
+    fmu.enterInitializationMode()
+    fmu.exitInitializationMode()
+    assert fmu.getInt64([v["fidelity"]]) == [2]
+    fmu.setFloat64([v["angular_velocity"], v["load"]], [0.5, 20e3])
+    fmu.doStep(0.0, 0.1)
+    state = fmu.getFMUState()
+    blob = fmu.serializeFMUState(state)
+    assert bytes(blob[:8]) == b"FMI2STAT"
+    t1 = fmu.getFloat64([v["torque"], v["dissipated_energy"]])
+    fmu.doStep(0.1, 0.1)
+    assert fmu.getFloat64([v["dissipated_energy"]])[0] > t1[1]
+    fmu.setFMUState(fmu.deserializeFMUState(blob))
+    assert fmu.getFloat64([v["torque"], v["dissipated_energy"]]) == t1
+    bad = bytearray(blob)
+    bad[20] ^= 1
+    with pytest.raises(FMICallException):
+        fmu.deserializeFMUState(bytes(bad))
+    with pytest.raises(FMICallException):
+        fmu.setFloat64([v["torque"]], [1.0])
+    with pytest.raises(FMICallException):
+        fmu.enterInitializationMode()
+    text = " ".join(str(m) for m in messages)
+    assert "CRC" in text and "outputs are computed" in text and "illegal call sequence" in text
+    fmu.terminate()
+    fmu.freeInstance()
+    wrong = FMU3Slave(guid="{nope}", unzipDirectory=d, modelIdentifier="PinJoint", instanceName="w")
+    with pytest.raises(Exception):
+        wrong.instantiate(logMessage=lambda *a: messages.append(a))
+    assert "matches no model" in " ".join(str(m) for m in messages)
