@@ -127,7 +127,7 @@ impl Instance {
         let k = self.info.variables[i].kind;
         let ok = if self.fmi3 { std::mem::discriminant(&k) == std::mem::discriminant(&kind) } else { k.fmi2_accessed_as(kind) };
         if !ok {
-            return Err(format!("{} is a{} {} variable, not {}", self.describe(i), if k == Kind::Integer { "n" } else { "" }, k.as_str(), kind.as_str()));
+            return Err(format!("{} is a{} {} variable, not {}", self.describe(i), if matches!(k, Kind::Integer | Kind::Enumeration(_)) { "n" } else { "" }, k.as_str(), kind.as_str()));
         }
         Ok(i)
     }
