@@ -27,10 +27,9 @@ fn instantiate_rejects_bad_arguments_with_a_message() {
     // Wrong GUID.
     assert!(h.instantiate_with("a", FMI2_CO_SIMULATION, "{nope}", None, false).is_null());
     assert!(h.last().contains("{nope}") && h.last().contains("GUID"), "{}", h.last());
-    // Model Exchange.
-    assert!(h.instantiate_with("a", FMI2_MODEL_EXCHANGE, &guid(), None, false).is_null());
-    assert!(h.last().contains("Co-Simulation"), "{}", h.last());
+    // Not an fmi2Type.
     assert!(h.instantiate_with("a", 7, &guid(), None, false).is_null());
+    assert!(h.last().contains("fmuType = 7"), "{}", h.last());
     // Empty instance name.
     assert!(h.instantiate_with("", FMI2_CO_SIMULATION, &guid(), None, false).is_null());
     assert!(h.last().contains("instanceName"), "{}", h.last());
@@ -53,11 +52,19 @@ fn instantiate_rejects_bad_arguments_with_a_message() {
 }
 
 #[test]
-fn missing_resource_location_is_only_a_warning() {
+fn null_or_empty_resource_location_is_fine_and_a_non_uri_only_a_warning() {
     let h = Host::new();
-    let c = h.instantiate_with("a", FMI2_CO_SIMULATION, &guid(), None, true);
+    // This FMU needs no resources: NULL and "" draw no message at all (issue 11).
+    for loc in [None, Some("")] {
+        h.clear();
+        let c = h.instantiate_with("a", FMI2_CO_SIMULATION, &guid(), loc, true);
+        assert!(!c.is_null());
+        assert!(h.messages().iter().all(|m| m.status != WARNING && !m.text.contains("fmuResourceLocation")), "{:?}", loc);
+        unsafe { fmi2FreeInstance(c) };
+    }
+    // Model Exchange is offered by PinJoint (issue 11).
+    let c = h.instantiate_with("a", FMI2_MODEL_EXCHANGE, &guid(), None, false);
     assert!(!c.is_null());
-    assert!(h.messages().iter().any(|m| m.status == WARNING && m.text.contains("fmuResourceLocation")));
     unsafe { fmi2FreeInstance(c) };
     let c = h.instantiate_with("a", FMI2_CO_SIMULATION, &guid(), Some("C:\\x"), true);
     assert!(!c.is_null());
@@ -151,6 +158,47 @@ fn reset_then_a_fresh_run_equals_the_first() {
     unsafe { fmi2FreeInstance(c) };
 }
 
+/// Model Exchange (issue 11): no states, no event indicators; the outputs follow the inputs at
+/// every get, equal to the Co-Simulation instance's at the same inputs; the ME state machine.
+#[test]
+fn model_exchange_is_a_stateless_map_of_the_inputs() {
+    let h = Host::new();
+    let me = h.instantiate_with("me", FMI2_MODEL_EXCHANGE, &guid(), None, false);
+    assert!(!me.is_null());
+    assert_eq!(fmi2EnterInitializationMode(me), OK);
+    assert_eq!(fmi2ExitInitializationMode(me), OK);
+    let mut info = [0i32; 8];
+    assert_eq!(unsafe { fmi2NewDiscreteStates(me, info.as_mut_ptr().cast()) }, OK);
+    assert_eq!(info[0], 0, "no discrete-state update");
+    assert_eq!(fmi2EnterContinuousTimeMode(me), OK);
+    let cs = h.ready(&[]);
+    let (w, p, t) = (vr("angular_velocity"), vr("load"), vr("torque"));
+    for (k, (omega, load)) in [(0.5, 20e3), (-3.0, 40e3), (0.004, 20e3), (0.0, 5e3)].into_iter().enumerate() {
+        assert_eq!(fmi2SetTime(me, 0.1 * k as f64), OK);
+        for c in [me, cs] {
+            assert_eq!(unsafe { fmi2SetReal(c, [w, p].as_ptr(), 2, [omega, load].as_ptr()) }, OK);
+        }
+        let (mut a, mut b) = (0.0, 0.0);
+        assert_eq!(unsafe { fmi2GetReal(me, &t, 1, &mut a) }, OK);
+        assert_eq!(unsafe { fmi2GetReal(cs, &t, 1, &mut b) }, OK);
+        assert_eq!(a.to_bits(), b.to_bits(), "omega = {omega}");
+        let (mut enter, mut stop) = (1, 1);
+        assert_eq!(unsafe { fmi2CompletedIntegratorStep(me, 1, &mut enter, &mut stop) }, OK);
+        assert_eq!((enter, stop), (0, 0));
+    }
+    let mut x = [0.0; 1];
+    assert_eq!(fmi2GetDerivatives(me, x.as_mut_ptr(), 0), OK);
+    assert_eq!(fmi2GetEventIndicators(me, x.as_mut_ptr(), 0), OK);
+    assert_eq!(fmi2GetDerivatives(me, x.as_mut_ptr(), 1), ERROR);
+    assert!(h.last().contains("no continuous states"), "{}", h.last());
+    // Parameters cannot be set in continuous-time mode; doStep is not a Model Exchange call.
+    assert_eq!(fmi2DoStep(me, 0.0, 0.1, 1), ERROR);
+    assert_eq!(fmi2EnterEventMode(me), OK);
+    assert_eq!(fmi2Terminate(me), OK);
+    unsafe { fmi2FreeInstance(me) };
+    unsafe { fmi2FreeInstance(cs) };
+}
+
 #[test]
 fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
     let h = Host::new();
@@ -159,9 +207,9 @@ fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
     let mut b = 0;
     let calls: Vec<(&str, i32)> = vec![
         ("fmi2EnterEventMode", fmi2EnterEventMode(c)),
-        ("fmi2NewDiscreteStates", fmi2NewDiscreteStates(c, null_mut())),
+        ("fmi2NewDiscreteStates", unsafe { fmi2NewDiscreteStates(c, null_mut()) }),
         ("fmi2EnterContinuousTimeMode", fmi2EnterContinuousTimeMode(c)),
-        ("fmi2CompletedIntegratorStep", fmi2CompletedIntegratorStep(c, 0, &mut b, &mut b)),
+        ("fmi2CompletedIntegratorStep", unsafe { fmi2CompletedIntegratorStep(c, 0, &mut b, &mut b) }),
         ("fmi2SetTime", fmi2SetTime(c, 1.0)),
         ("fmi2SetContinuousStates", fmi2SetContinuousStates(c, x.as_ptr(), 0)),
         ("fmi2GetDerivatives", fmi2GetDerivatives(c, x.as_mut_ptr(), 0)),
@@ -171,7 +219,13 @@ fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
     ];
     for (name, status) in calls {
         assert_eq!(status, ERROR, "{name}");
-        assert!(h.messages().iter().any(|m| m.text.starts_with(name) && m.text.contains("Co-Simulation only")), "{name}");
+        // A Co-Simulation instance: refused by the state mask (no Model Exchange state) or as
+        // a Model Exchange function.
+        assert!(
+            h.messages().iter().any(|m| m.text.starts_with(name)
+                && (m.text.contains("illegal call sequence") || m.text.contains("instantiated for Co-Simulation"))),
+            "{name}"
+        );
     }
     let r = [vr("torque")];
     let order = [1];

@@ -25,6 +25,55 @@ fn committed_model_descriptions_match_the_generator() {
     }
 }
 
+/// The FMI 3.0 modelDescription of each model, from the same table, committed under
+/// modelDescription/fmi3/ (same update switch).
+#[test]
+fn committed_fmi3_model_descriptions_match_the_generator() {
+    for info in registry() {
+        let generated = fmi_layer::fmi3::xml::model_description(info).unwrap();
+        let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("modelDescription").join("fmi3");
+        let path = dir.join(format!("{}.xml", info.model_identifier));
+        if std::env::var_os("UPDATE_MODEL_DESCRIPTION").is_some() {
+            std::fs::create_dir_all(&dir).unwrap();
+            std::fs::write(&path, &generated).unwrap();
+        }
+        let committed = std::fs::read_to_string(&path).unwrap_or_default();
+        assert!(committed == generated, "{} differs from the FMI 3.0 generator's output (UPDATE_MODEL_DESCRIPTION=1 to accept)", path.display());
+        // Same token as the FMI 2.0 GUID; ME only where the model offers it; ASCII only.
+        assert!(generated.contains(&format!("instantiationToken=\"{}\"", info.guid())));
+        assert_eq!(generated.contains("<ModelExchange"), info.model_exchange);
+        assert!(generated.is_ascii(), "{}: non-ASCII text", info.model_identifier);
+    }
+}
+
+/// Vendor expectations (issue 11): no min="0.0" on a value that must be > 0; quantity on
+/// every unit type; Enumeration for the choice parameters; ASCII display units.
+#[test]
+fn declared_ranges_and_types_follow_the_values_the_model_accepts() {
+    for info in registry() {
+        let xml = model_description(info).unwrap();
+        assert!(xml.is_ascii(), "{}: non-ASCII text in the FMI 2.0 XML", info.model_identifier);
+        assert_eq!(xml.contains("<ModelExchange"), info.model_exchange);
+        for v in &info.variables {
+            if v.description.contains("must be > 0") || v.description.contains("(> 0") || v.description.contains("must be positive") {
+                assert!(v.min != Some(0.0), "{} {}: min 0 although it must be > 0", info.model_identifier, v.name);
+            }
+            if let Some(u) = v.unit {
+                assert!(!info.unit(u).unwrap().quantity.is_empty());
+                assert!(xml.contains(&format!(r#"<Real quantity="{}" unit="{u}"/>"#, info.unit(u).unwrap().quantity)));
+            }
+        }
+    }
+    let pj = &*pinjoint_fmu::pin_joint::INFO;
+    for name in ["tolerance", "envelope.load_min", "pin_asperities.radius", "lubricant.viscosity"] {
+        if let Some(i) = pj.index_by_name(name) {
+            assert_eq!(pj.variables[i].min, None, "{name}");
+        }
+    }
+    let fid = &pj.variables[pj.index_by_name("fidelity").unwrap()];
+    assert!(matches!(fid.kind, fmi_layer::fmi2::variables::Kind::Enumeration(t) if t.item(0) == Some("full") && t.item(3) == Some("auto")));
+}
+
 #[test]
 fn pin_joint_table_is_complete_and_consistent() {
     let info = &*pinjoint_fmu::pin_joint::INFO;

@@ -157,7 +157,7 @@ fn fidelity_parameters_have_defaults_and_bad_values_are_refused_by_name() {
     assert_eq!(set(c, "fidelity", -1.0), ERROR);
     let r = [vr("fidelity")];
     assert_eq!(unsafe { fmi2SetReal(c, r.as_ptr(), 1, [1.0].as_ptr()) }, ERROR);
-    assert!(h.last().contains("Integer variable, not Real"), "{}", h.last());
+    assert!(h.last().contains("Enumeration variable, not Real"), "{}", h.last());
     assert_eq!(get(c, "fidelity"), 0.0);
     free(c);
     // Refused at exit of initialization, naming parameter, value and unit (even at full).

@@ -178,7 +178,7 @@ fn bad_inputs_and_wrong_types_are_refused_without_change() {
     assert_eq!(unsafe { fmi2GetInteger(c, [vr("torque")].as_ptr(), 1, i.as_mut_ptr()) }, ERROR);
     assert!(h.last().contains("is a Real variable, not Integer"), "{}", h.last());
     assert_eq!(unsafe { fmi2SetBoolean(c, [vr("rig.method")].as_ptr(), 1, [1].as_ptr()) }, ERROR);
-    assert!(h.last().contains("is an Integer variable, not Boolean"), "{}", h.last());
+    assert!(h.last().contains("is an Enumeration variable, not Boolean"), "{}", h.last());
     // Outputs and fixed parameters cannot be set after initialization.
     assert_eq!(unsafe { fmi2SetBoolean(c, [vr("stuck")].as_ptr(), 1, [1].as_ptr()) }, ERROR);
     assert_eq!(set(c, "use_command_input", 1.0), ERROR);

@@ -34,8 +34,8 @@ fn every_rig_and_model_parameter_is_a_variable_with_its_default() {
     for s in pinjoint::params::PARAMS.iter() {
         assert_eq!(var(&s.name()).start, Some(s.default_value()), "{}", s.name());
     }
-    assert_eq!(var("rig.formulation").kind, Kind::Integer);
-    assert_eq!(var("rig.method").kind, Kind::Integer);
+    assert!(matches!(var("rig.formulation").kind, Kind::Enumeration(t) if t.item(1) == Some("regularised")));
+    assert!(matches!(var("rig.method").kind, Kind::Enumeration(t) if t.item(2) == Some("rk4")));
     assert_eq!(var("use_command_input").kind, Kind::Boolean);
     assert_eq!(var("amplitude").display_unit, Some("deg"));
 }
@@ -79,5 +79,5 @@ fn output_dependencies_are_the_physical_ones() {
         assert_eq!(deps(n), idx("load").to_string(), "{n}");
     }
     assert_eq!(deps("commanded_angle"), idx("command_angle").to_string());
-    assert!(xml.contains(r#"<Boolean start="false"/>"#) && xml.contains(r#"<Integer min="0" max="2" start="0"/>"#));
+    assert!(xml.contains(r#"<Boolean start="false"/>"#) && xml.contains(r#"<Enumeration declaredType="RigMethod" min="0" max="2" start="0"/>"#));
 }

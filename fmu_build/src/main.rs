@@ -4,6 +4,9 @@
 //! `documentation/index.html`. Packaging only: the XML and the documentation come
 //! from the library's variable tables.
 
+mod extras;
+mod fmi3;
+
 use fmi_layer::fmi2::variables::ModelInfo;
 use fmi_layer::fmi2::xml::model_description;
 use std::io::Write;
@@ -26,7 +29,7 @@ fn platform() -> Result<(&'static str, &'static str, &'static str), String> {
     }
 }
 
-fn package(info: &ModelInfo, library: &Path, out_dir: &Path, folder: &str, ext: &str) -> Result<PathBuf, String> {
+fn package(info: &ModelInfo, library: &Path, out_dir: &Path, folder: &str, ext: &str, extras: &[extras::Entry]) -> Result<PathBuf, String> {
     let xml = model_description(info)?;
     let binary = std::fs::read(library).map_err(|e| format!("reading {}: {e}", library.display()))?;
     let path = out_dir.join(format!("{}.fmu", info.model_identifier));
@@ -41,7 +44,8 @@ fn package(info: &ModelInfo, library: &Path, out_dir: &Path, folder: &str, ext: 
         (format!("binaries/{folder}/{}.{ext}", info.model_identifier), &binary, 0o755),
         ("documentation/index.html".into(), (info.documentation)().into_bytes().leak(), 0o644),
     ];
-    for (name, data, mode) in entries {
+    let extra = extras.iter().map(|(n, b)| (n.clone(), b.as_slice(), 0o644));
+    for (name, data, mode) in entries.into_iter().chain(extra) {
         zip.start_file(name.as_str(), opts.unix_permissions(mode)).map_err(|e| e.to_string())?;
         zip.write_all(data).map_err(|e| e.to_string())?;
     }
@@ -68,8 +72,15 @@ fn run() -> Result<(), String> {
     let library = target.join("release").join(lib_name);
     let out_dir = target.join("fmu");
     std::fs::create_dir_all(&out_dir).map_err(|e| format!("creating {}: {e}", out_dir.display()))?;
+    // Licence notices and model.png: the same in every FMU, both standards.
+    let mut extras = extras::licenses(&cargo, &root, FMU_PACKAGE)?;
+    extras.push(("model.png".into(), extras::model_png()));
     for info in pinjoint_fmu::registry() {
-        let path = package(info, &library, &out_dir, folder, ext)?;
+        let path = package(info, &library, &out_dir, folder, ext, &extras)?;
+        println!("{}", path.display());
+    }
+    // FMI 3.0: the same library, target/fmu/fmi3/ (fmi3.rs).
+    for path in fmi3::package_host(&pinjoint_fmu::registry(), &library, ext, &out_dir, &extras)? {
         println!("{}", path.display());
     }
     Ok(())

@@ -155,7 +155,7 @@ pub fn set_in(info: &ModelInfo, c: Fmi2Component, name: &str, v: f64) -> i32 {
     unsafe {
         match info.variables[i].kind {
             Kind::Real => fmi2SetReal(c, r.as_ptr(), 1, [v].as_ptr()),
-            Kind::Integer => fmi2SetInteger(c, r.as_ptr(), 1, [v as i32].as_ptr()),
+            Kind::Integer | Kind::Enumeration(_) => fmi2SetInteger(c, r.as_ptr(), 1, [v as i32].as_ptr()),
             Kind::Boolean => fmi2SetBoolean(c, r.as_ptr(), 1, [(v != 0.0) as i32].as_ptr()),
         }
     }
@@ -171,7 +171,7 @@ pub fn try_get_in(info: &ModelInfo, c: Fmi2Component, name: &str) -> Result<f64,
                 let mut v = [f64::NAN];
                 (fmi2GetReal(c, r.as_ptr(), 1, v.as_mut_ptr()), v[0])
             }
-            Kind::Integer => {
+            Kind::Integer | Kind::Enumeration(_) => {
                 let mut v = [-7];
                 (fmi2GetInteger(c, r.as_ptr(), 1, v.as_mut_ptr()), f64::from(v[0]))
             }

@@ -98,7 +98,7 @@ class RigSlave:
         t = self.type[name]
         if t == "Boolean":
             self.fmu.setBoolean([self.vr[name]], [bool(value)])
-        elif t == "Integer":
+        elif t in ("Integer", "Enumeration"):
             self.fmu.setInteger([self.vr[name]], [int(value)])
         else:
             self.fmu.setReal([self.vr[name]], [float(value)])

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# The FMU harness: builds target/fmu/PinJoint.fmu and PinJointRig.fmu and the library
+# The FMU harness: builds target/fmu/PinJoint.fmu and PinJointRig.fmu (FMI 2.0) and
+# target/fmu/fmi3/*.fmu (FMI 3.0; test_interfaces.py validates and simulates all four,
+# Co-Simulation and Model Exchange, against the library) and the library
 # reference binaries (reference_points, rig_reference),
 # installs requirements-test.txt into .venv (once), runs pytest on tests/python and
 # the Rust `fmi` crate importer against the packaged FMU.

@@ -16,9 +16,11 @@ def run(fmu_path, **start):
                         output=["angular_velocity", "load"] + NAMES, start_values=start)
 
 
-def test_fidelity_is_an_integer_parameter(model_description):
+def test_fidelity_is_an_enumeration_parameter(model_description):
     v = {x.name: x for x in model_description.modelVariables}
-    assert v["fidelity"].type == "Integer" and v["fidelity"].causality == "parameter"
+    # An Enumeration since issue 11 (named choices, the same codes through fmi2SetInteger).
+    assert v["fidelity"].type == "Enumeration" and v["fidelity"].causality == "parameter"
+    assert [i.name for i in v["fidelity"].declaredType.items] == ["full", "table", "boundary", "auto"]
     assert (v["fidelity"].min, v["fidelity"].max, v["fidelity"].start) == ("0", "3", "0")
     for n in ["tolerance", "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"]:
         assert v[n].type == "Real" and v[n].causality == "parameter"

@@ -21,7 +21,9 @@ def rel_to_peak(a, b):
 
 def test_fidelity_parameters_in_the_model_description(rig_model_description):
     v = {x.name: x for x in rig_model_description.modelVariables}
-    assert v["fidelity"].type == "Integer" and v["fidelity"].causality == "parameter"
+    # An Enumeration since issue 11 (named choices, the same codes through fmi2SetInteger).
+    assert v["fidelity"].type == "Enumeration" and v["fidelity"].causality == "parameter"
+    assert [i.name for i in v["fidelity"].declaredType.items] == ["full", "table", "boundary", "auto"]
     assert (v["fidelity"].min, v["fidelity"].max, v["fidelity"].start) == ("0", "3", "0")
     starts = {"tolerance": 1e-4, "envelope.load_min": 1e3, "envelope.load_max": 1e5,
               "envelope.speed_min": 1e-3, "envelope.speed_max": 10.0}

@@ -13,7 +13,11 @@ def test_validate_fmu_reports_no_problem(rig_fmu_path):
 
 def test_archive_layout(rig_fmu_path):
     names = set(zipfile.ZipFile(rig_fmu_path).namelist())
-    assert names == {"modelDescription.xml", "binaries/linux64/PinJointRig.so", "documentation/index.html"}
+    assert {"modelDescription.xml", "binaries/linux64/PinJointRig.so", "documentation/index.html", "model.png",
+            "documentation/licenses/index.html"} <= names
+    # Nothing else but the licence notices (issue 11).
+    assert all(n.startswith("documentation/licenses/") for n in names - {"modelDescription.xml", "binaries/linux64/PinJointRig.so",
+                                                                           "documentation/index.html", "model.png"})
 
 
 def test_interface(rig_model_description):
@@ -26,7 +30,8 @@ def test_interface(rig_model_description):
     assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS
     assert v["stuck"].type == "Boolean" and v["stuck"].variability == "discrete"
     assert v["use_command_input"].type == "Boolean" and v["use_command_input"].start in ("false", False)
-    assert v["rig.method"].type == "Integer" and v["rig.formulation"].type == "Integer"
+    # Enumerations since issue 11 (same codes as the former Integer parameters).
+    assert v["rig.method"].type == "Enumeration" and v["rig.formulation"].type == "Enumeration"
     assert v["amplitude"].unit == "rad" and v["amplitude"].displayUnit == "deg"
     assert abs(float(v["amplitude"].start) - 0.6981317007977318) < 1e-16
     assert v["frequency"].unit == "Hz" and float(v["frequency"].start) == 1.0

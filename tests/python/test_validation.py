@@ -33,7 +33,7 @@ def test_interface(model_description):
     assert v["torque"].unit == "N.m" and v["load"].unit == "N" and v["angular_velocity"].unit == "rad/s"
     assert all(x.description for x in md.modelVariables)
     display = {d.name for u in md.unitDefinitions for d in u.displayUnits}
-    assert {"deg", "rpm", "kN", "MPa", "µm"} <= display
+    assert {"deg", "rpm", "kN", "MPa", "um"} <= display
     outputs = {u.variable.name: sorted(d.name for d in u.dependencies) for u in md.outputs}
     assert outputs["torque"] == ["angular_velocity", "load"]
     assert outputs["mean_pressure"] == ["load"]

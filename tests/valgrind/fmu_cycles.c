@@ -150,7 +150,13 @@ int main(int argc, char **argv) {
     }
     /* Instantiation failures free what they allocated. */
     if (fmi2Instantiate("bad", 1, "{not-a-guid}", "", &cb, 0, 0) != NULL) { fprintf(stderr, "wrong GUID accepted\n"); return 1; }
-    if (fmi2Instantiate("bad", 0, guid, "", &cb, 0, 0) != NULL) { fprintf(stderr, "Model Exchange accepted\n"); return 1; }
+    if (fmi2Instantiate("bad", 7, guid, "", &cb, 0, 0) != NULL) { fprintf(stderr, "fmuType 7 accepted\n"); return 1; }
+    /* PinJoint is also Model Exchange (issue 11): an ME instance through its life cycle, freed. */
+    {
+        C me = fmi2Instantiate("me", 0, guid, NULL, &cb, 0, 0);
+        if (me == NULL) { fprintf(stderr, "Model Exchange refused\n"); return 1; }
+        fmi2FreeInstance(me);
+    }
     if (errors < 7L * cycles) { fprintf(stderr, "only %ld error messages in %d cycles\n", errors, cycles); return 1; }
     printf("%d cycles, %ld log messages (%ld errors)\n", cycles, messages, errors);
     dlclose(lib);

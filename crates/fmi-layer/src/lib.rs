@@ -12,5 +12,6 @@
 //! [`export_fmi2!`], the one entry point that must choose a model by GUID.
 
 pub mod fmi2;
+pub mod fmi3;
 
 use numfmt as fmt;

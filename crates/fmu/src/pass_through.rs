@@ -46,6 +46,8 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
          (pinjoint-bench).</p></body></html>"
             .into()
     },
+    model_exchange: false,
+    legal: crate::LEGAL,
 });
 
 #[derive(Debug, Clone, Default)]

@@ -21,6 +21,15 @@ const TAG: u64 = 0x504a_464d_4932_4f4b;
 
 pub type CallResult = Result<Status, String>;
 
+/// The interface the host instantiated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interface {
+    CoSimulation,
+    /// No continuous states, no event indicators: the outputs are a map of the current
+    /// inputs, evaluated whenever the host reads them after setting inputs or time.
+    ModelExchange,
+}
+
 pub struct Instance {
     tag: u64,
     pub info: &'static ModelInfo,
@@ -34,6 +43,9 @@ pub struct Instance {
     model: Box<dyn Model>,
     /// The model's outputs match its current inputs and parameters.
     outputs_current: bool,
+    pub interface: Interface,
+    /// Instantiated through the FMI 3.0 functions (type rules and messages of FMI 3.0).
+    pub fmi3: bool,
 }
 
 impl Instance {
@@ -49,7 +61,14 @@ impl Instance {
             start_time: 0.0,
             model: (info.create)(),
             outputs_current: false,
+            interface: Interface::CoSimulation,
+            fmi3: false,
         }
+    }
+
+    /// An instance of `interface` (`fmi3`: created by the FMI 3.0 functions).
+    pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, fmi3: bool) -> Self {
+        Instance { interface, fmi3, ..Instance::new(info, name, logger) }
     }
 
     /// False for memory that is not (or no longer) a live instance.
@@ -93,16 +112,22 @@ impl Instance {
                     self.state.name()
                 ))
             }
+            (Causality::Parameter, _) if self.state == State::ContinuousTimeMode => Err(format!(
+                "{} is a parameter: in continuousTimeMode only continuous inputs may be set (enter event mode first)",
+                self.describe(i)
+            )),
             _ => Ok(()),
         }
     }
 
-    /// The index of `vr`, which must be a variable of type `kind`.
+    /// The index of `vr`, which must be a variable of type `kind` (FMI 2.0: an Enumeration
+    /// through the Integer functions; FMI 3.0: Integer as Int32, Enumeration as Int64).
     fn lookup_kind(&self, vr: u32, kind: Kind) -> Result<usize, String> {
         let i = self.lookup(vr)?;
         let k = self.info.variables[i].kind;
-        if k != kind {
-            return Err(format!("{} is a{} {} variable, not {}", self.describe(i), if k == Kind::Integer { "n" } else { "" }, k.as_str(), kind.as_str()));
+        let ok = if self.fmi3 { std::mem::discriminant(&k) == std::mem::discriminant(&kind) } else { k.fmi2_accessed_as(kind) };
+        if !ok {
+            return Err(format!("{} is a{} {} variable, not {}", self.describe(i), if matches!(k, Kind::Integer | Kind::Enumeration(_)) { "n" } else { "" }, k.as_str(), kind.as_str()));
         }
         Ok(i)
     }
@@ -231,6 +256,53 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    /// Model Exchange: the host's solver time. The model is stateless in time (its outputs
+    /// depend on the inputs only), so this only records it; a time before the start is refused.
+    pub fn set_time(&mut self, t: f64) -> CallResult {
+        if !t.is_finite() {
+            return Err(format!("time = {} s is not a finite number", show(t)));
+        }
+        self.time = t;
+        Ok(Status::Ok)
+    }
+
+    /// Model Exchange: to event mode (`fmi2EnterEventMode`, `fmi3EnterEventMode`).
+    pub fn enter_event_mode(&mut self) -> CallResult {
+        self.require_model_exchange()?;
+        self.state = State::EventMode;
+        Ok(Status::Ok)
+    }
+
+    /// Model Exchange: to continuous-time mode.
+    pub fn enter_continuous_time_mode(&mut self) -> CallResult {
+        self.require_model_exchange()?;
+        self.state = State::ContinuousTimeMode;
+        Ok(Status::Ok)
+    }
+
+    /// Model Exchange: the outputs at the current inputs, checked against their ranges
+    /// (what a completed integrator step or event iteration needs of this stateless model).
+    pub fn refresh_outputs(&mut self) -> Result<(), String> {
+        self.update_outputs()
+    }
+
+    pub fn require_model_exchange(&self) -> Result<(), String> {
+        if self.interface != Interface::ModelExchange {
+            return Err("this is a Model Exchange function and the instance was instantiated for Co-Simulation".into());
+        }
+        Ok(())
+    }
+
+    /// Model Exchange arrays of continuous states or event indicators: this layer's
+    /// models have none, so the length must be 0.
+    pub fn require_none(&self, what: &str, n: usize) -> Result<(), String> {
+        self.require_model_exchange()?;
+        if n != 0 {
+            return Err(format!("{what} = {n}, but {} has no continuous states and no event indicators (0)", self.info.model_name));
+        }
+        Ok(())
+    }
+
     pub fn exit_initialization_mode(&mut self) -> CallResult {
         let init = self.model.exit_initialization(self.start_time);
         self.log_model_message();
@@ -242,7 +314,10 @@ impl Instance {
             self.state = State::Error;
             return Err(e);
         }
-        self.state = State::StepComplete;
+        self.state = match self.interface {
+            Interface::CoSimulation => State::StepComplete,
+            Interface::ModelExchange => State::EventMode,
+        };
         self.event(&format!("initialization done at t = {} s", self.time));
         Ok(Status::Ok)
     }
@@ -311,6 +386,11 @@ impl Instance {
     pub fn restore(&mut self, s: &Snapshot) -> CallResult {
         if s.guid != self.guid {
             return Err(format!("FMU state belongs to GUID {} but this instance is {}", s.guid, self.guid));
+        }
+        let me_state = matches!(s.state, State::EventMode | State::ContinuousTimeMode);
+        let cs_state = matches!(s.state, State::StepComplete | State::StepFailed | State::StepCanceled);
+        if (me_state && self.interface != Interface::ModelExchange) || (cs_state && self.interface != Interface::CoSimulation) {
+            return Err(format!("FMU state is in state {}, which an instance of this interface ({:?}) cannot take", s.state.name(), self.interface));
         }
         self.model.deserialize(&s.model).map_err(|e| format!("FMU state rejected: {e}"))?;
         self.state = s.state;

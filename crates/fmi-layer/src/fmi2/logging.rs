@@ -12,7 +12,19 @@
 //! `logStatusError`/`logStatusFatal` in `fmi2SetDebugLogging` with `loggingOn = false`.
 
 use super::types::{Fmi2CallbackLogger, Fmi2ComponentEnvironment, Status};
-use std::ffi::CString;
+use std::ffi::{c_char, c_int, c_void, CString};
+
+/// FMI 3.0 `fmi3LogMessageCallback(instanceEnvironment, status, category, message)`.
+pub type Fmi3LogMessageCallback = unsafe extern "C" fn(*mut c_void, c_int, *const c_char, *const c_char);
+
+/// Where messages go: the FMI 2.0 logger (variadic, `#vr#` references), the FMI 3.0 one
+/// (plain text), or nowhere (FMI 3.0 allows a NULL `logMessage`).
+#[derive(Debug, Clone, Copy)]
+enum Sink {
+    Fmi2(Fmi2CallbackLogger),
+    Fmi3(Fmi3LogMessageCallback),
+    None,
+}
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Category {
@@ -79,7 +91,7 @@ impl Category {
 /// The host's logger and which categories it wants.
 #[derive(Debug, Clone)]
 pub struct Logger {
-    callback: Fmi2CallbackLogger,
+    callback: Sink,
     env: Fmi2ComponentEnvironment,
     instance_name: CString,
     enabled: u8,
@@ -87,7 +99,15 @@ pub struct Logger {
 
 impl Logger {
     pub fn new(callback: Fmi2CallbackLogger, env: Fmi2ComponentEnvironment, instance_name: &str, logging_on: bool) -> Self {
-        let mut l = Logger { callback, env, instance_name: c_text(instance_name), enabled: 0 };
+        let mut l = Logger { callback: Sink::Fmi2(callback), env, instance_name: c_text(instance_name), enabled: 0 };
+        l.set_all(logging_on);
+        l
+    }
+
+    /// The FMI 3.0 logger (`logMessage` may be NULL: then nothing is logged).
+    pub fn new_fmi3(callback: Option<Fmi3LogMessageCallback>, env: *mut c_void, instance_name: &str, logging_on: bool) -> Self {
+        let sink = callback.map_or(Sink::None, Sink::Fmi3);
+        let mut l = Logger { callback: sink, env, instance_name: c_text(instance_name), enabled: 0 };
         l.set_all(logging_on);
         l
     }
@@ -121,13 +141,25 @@ impl Logger {
 
     fn emit(&self, status: Status, c: Category, message: &str) {
         let category = c_text(c.name());
-        // '#' introduces a value-reference reference in FMI 2.0 messages; "##" is a literal '#'.
         // Numbers in the short round-trip form however the message was built (no 309 digits).
-        let msg = c_text(&crate::fmt::short_numbers(message).replace('#', "##"));
-        // SAFETY: the callback was checked non-NULL at instantiation; all strings are
-        // NUL-terminated and outlive the call; the message goes through "%s".
-        unsafe {
-            (self.callback)(self.env, self.instance_name.as_ptr(), status.c(), category.as_ptr(), c"%s".as_ptr(), msg.as_ptr());
+        let message = crate::fmt::short_numbers(message);
+        match self.callback {
+            Sink::Fmi2(cb) => {
+                // '#' introduces a value-reference reference in FMI 2.0 messages; "##" is a literal '#'.
+                let msg = c_text(&message.replace('#', "##"));
+                // SAFETY: the callback was checked non-NULL at instantiation; all strings are
+                // NUL-terminated and outlive the call; the message goes through "%s".
+                unsafe {
+                    cb(self.env, self.instance_name.as_ptr(), status.c(), category.as_ptr(), c"%s".as_ptr(), msg.as_ptr());
+                }
+            }
+            Sink::Fmi3(cb) => {
+                // FMI 3.0 messages carry no instance name: it is prefixed.
+                let msg = c_text(&format!("[{}] {message}", self.instance_name.to_string_lossy()));
+                // SAFETY: non-NULL callback from the host; the strings outlive the call.
+                unsafe { cb(self.env, status.c(), category.as_ptr(), msg.as_ptr()) }
+            }
+            Sink::None => {}
         }
     }
 }

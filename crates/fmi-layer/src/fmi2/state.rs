@@ -1,4 +1,5 @@
-//! The FMI 2.0 Co-Simulation state machine (FMI 2.0.4, section 4.2.4), with one
+//! The FMI 2.0 Co-Simulation (FMI 2.0.4, section 4.2.4) and Model Exchange (section 3.2.3)
+//! state machine, also used by the FMI 3.0 layer (its step mode is `stepComplete`), with one
 //! bit mask per function naming the states in which the standard allows the call.
 //!
 //! The masks follow the standard's state chart (and the modelica/Reference-FMUs
@@ -21,10 +22,14 @@ pub enum State {
     Terminated = 1 << 7,
     Error = 1 << 8,
     Fatal = 1 << 9,
+    /// Model Exchange (both standards): event mode, after initialization.
+    EventMode = 1 << 10,
+    /// Model Exchange: continuous-time mode, in which the host's solver integrates.
+    ContinuousTimeMode = 1 << 11,
 }
 
 impl State {
-    pub const ALL: [State; 10] = [
+    pub const ALL: [State; 12] = [
         State::StartAndEnd,
         State::Instantiated,
         State::InitializationMode,
@@ -35,6 +40,8 @@ impl State {
         State::Terminated,
         State::Error,
         State::Fatal,
+        State::EventMode,
+        State::ContinuousTimeMode,
     ];
 
     pub fn name(self) -> &'static str {
@@ -49,6 +56,8 @@ impl State {
             State::Terminated => "terminated",
             State::Error => "error",
             State::Fatal => "fatal",
+            State::EventMode => "eventMode",
+            State::ContinuousTimeMode => "continuousTimeMode",
         }
     }
 
@@ -92,26 +101,32 @@ use State::*;
 
 pub const GET_TYPES_PLATFORM: Mask = Mask::of(&[
     StartAndEnd, Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled,
-    Terminated, Error, Fatal,
+    Terminated, Error, Fatal, EventMode, ContinuousTimeMode,
 ]);
 pub const GET_VERSION: Mask = GET_TYPES_PLATFORM;
 pub const SET_DEBUG_LOGGING: Mask = Mask::of(&[
     Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled, Terminated, Error,
+    EventMode, ContinuousTimeMode,
 ]);
 pub const INSTANTIATE: Mask = Mask::of(&[StartAndEnd]);
 /// Every state an instance can be in, `Fatal` included (see the module doc).
 pub const FREE_INSTANCE: Mask = Mask::of(&[
-    Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, Fatal,
+    Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, Fatal, EventMode,
+    ContinuousTimeMode,
 ]);
 pub const SETUP_EXPERIMENT: Mask = Mask::of(&[Instantiated]);
 pub const ENTER_INITIALIZATION_MODE: Mask = Mask::of(&[Instantiated]);
 pub const EXIT_INITIALIZATION_MODE: Mask = Mask::of(&[InitializationMode]);
-pub const TERMINATE: Mask = Mask::of(&[StepComplete, StepFailed]);
-pub const RESET: Mask =
-    Mask::of(&[Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error]);
-pub const GET_VALUE: Mask =
-    Mask::of(&[InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error]);
-pub const SET_VALUE: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete]);
+pub const TERMINATE: Mask = Mask::of(&[StepComplete, StepFailed, EventMode, ContinuousTimeMode]);
+pub const RESET: Mask = Mask::of(&[
+    Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, EventMode,
+    ContinuousTimeMode,
+]);
+pub const GET_VALUE: Mask = Mask::of(&[
+    InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, EventMode, ContinuousTimeMode,
+]);
+/// In `continuousTimeMode` only continuous inputs may be set (checked by the instance).
+pub const SET_VALUE: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete, EventMode, ContinuousTimeMode]);
 pub const FMU_STATE: Mask = RESET;
 pub const GET_DIRECTIONAL_DERIVATIVE: Mask = GET_VALUE;
 pub const SET_REAL_INPUT_DERIVATIVES: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete]);
@@ -119,8 +134,19 @@ pub const GET_REAL_OUTPUT_DERIVATIVES: Mask = Mask::of(&[StepComplete, StepFaile
 pub const DO_STEP: Mask = Mask::of(&[StepComplete]);
 pub const CANCEL_STEP: Mask = Mask::of(&[StepInProgress]);
 pub const GET_STATUS: Mask = Mask::of(&[StepComplete, StepInProgress, StepFailed, Terminated]);
-/// Model Exchange functions: checked for a live instance, then always rejected.
-pub const MODEL_EXCHANGE: Mask = RESET;
+/// Model Exchange (FMI 2.0 section 3.2.3 state chart; FMI 3.0 the same modes).
+pub const ENTER_EVENT_MODE: Mask = Mask::of(&[EventMode, ContinuousTimeMode]);
+pub const NEW_DISCRETE_STATES: Mask = Mask::of(&[EventMode]);
+pub const ENTER_CONTINUOUS_TIME_MODE: Mask = Mask::of(&[EventMode]);
+pub const COMPLETED_INTEGRATOR_STEP: Mask = Mask::of(&[ContinuousTimeMode]);
+pub const SET_TIME: Mask = Mask::of(&[EventMode, ContinuousTimeMode]);
+pub const SET_CONTINUOUS_STATES: Mask = Mask::of(&[ContinuousTimeMode]);
+pub const GET_DERIVATIVES: Mask = Mask::of(&[InitializationMode, EventMode, ContinuousTimeMode, Terminated, Error]);
+pub const GET_CONTINUOUS_STATES: Mask =
+    Mask::of(&[Instantiated, InitializationMode, EventMode, ContinuousTimeMode, Terminated, Error]);
+/// FMI 3.0 Co-Simulation `fmi3EnterStepMode` (only after event mode, which this layer's
+/// Co-Simulation never enters: `hasEventMode = false`).
+pub const ENTER_STEP_MODE: Mask = Mask::of(&[EventMode]);
 
 #[cfg(test)]
 mod tests {
@@ -131,7 +157,10 @@ mod tests {
         for s in State::ALL {
             assert_eq!(State::from_code(s.code()), Some(s));
         }
-        assert_eq!(State::from_code(10), None);
+        assert_eq!(State::from_code(12), None);
+        // The codes of the Co-Simulation states are those of serialized states written before
+        // the Model Exchange states existed.
+        assert_eq!((State::StepComplete.code(), State::Error.code(), State::EventMode.code()), (3, 8, 10));
     }
 
     #[test]

@@ -26,11 +26,14 @@ pub enum Variability {
 /// The FMI type of a variable. The model stores every value as an f64; the layer
 /// converts at the C boundary (Integer as the exact integer value, Boolean as 0.0
 /// or 1.0), so the [`Model`] trait has one getter and one setter.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Kind {
     Real,
     Integer,
     Boolean,
+    /// Named integer choices (FMI 2.0 `<Enumeration>`, read and written with
+    /// `fmi2GetInteger`/`fmi2SetInteger`; FMI 3.0 `<Enumeration>`, with `fmi3GetInt64`/`fmi3SetInt64`).
+    Enumeration(&'static EnumType),
 }
 
 impl Kind {
@@ -39,7 +42,34 @@ impl Kind {
             Kind::Real => "Real",
             Kind::Integer => "Integer",
             Kind::Boolean => "Boolean",
+            Kind::Enumeration(_) => "Enumeration",
         }
+    }
+
+    /// Whether a variable of this kind is accessed by the FMI 2.0 getter/setter of
+    /// `requested` (Real, Integer or Boolean): an Enumeration goes through the Integer functions.
+    pub fn fmi2_accessed_as(self, requested: Kind) -> bool {
+        match (self, requested) {
+            (Kind::Enumeration(_), Kind::Integer) => true,
+            (a, b) => std::mem::discriminant(&a) == std::mem::discriminant(&b),
+        }
+    }
+}
+
+/// An enumeration type: named choices with their integer codes.
+#[derive(Debug, PartialEq)]
+pub struct EnumType {
+    /// Type name in `<TypeDefinitions>`, e.g. `Fidelity`.
+    pub name: &'static str,
+    pub description: &'static str,
+    /// (item name, value code, description), in value order.
+    pub items: &'static [(&'static str, i64, &'static str)],
+}
+
+impl EnumType {
+    /// The item name of `code`, if `code` is one of the choices.
+    pub fn item(&self, code: i64) -> Option<&'static str> {
+        self.items.iter().find(|i| i.1 == code).map(|i| i.0)
     }
 }
 
@@ -120,6 +150,9 @@ pub struct DisplayUnit {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct UnitDef {
     pub name: &'static str,
+    /// The physical quantity of the variables with this unit (`quantity` of the type
+    /// definition the generators write for it), e.g. `Torque`.
+    pub quantity: &'static str,
     pub kg: i32,
     pub m: i32,
     pub s: i32,
@@ -142,6 +175,27 @@ pub const CAPABILITIES: &[(&str, &str)] = &[
     ("providesDirectionalDerivative", "false"),
 ];
 
+/// Model Exchange capabilities (FMI 2.0 `<ModelExchange>`): no continuous states, no
+/// event indicators, so the host's `fmi2CompletedIntegratorStep` is not needed.
+pub const ME_CAPABILITIES: &[(&str, &str)] = &[
+    ("needsExecutionTool", "false"),
+    ("completedIntegratorStepNotNeeded", "true"),
+    ("canBeInstantiatedOnlyOncePerProcess", "false"),
+    ("canNotUseMemoryManagementFunctions", "true"),
+    ("canGetAndSetFMUstate", "true"),
+    ("canSerializeFMUstate", "true"),
+    ("providesDirectionalDerivative", "false"),
+];
+
+/// Who made the model and under which terms (the `author`, `copyright` and `license`
+/// attributes of both standards' modelDescription).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Legal {
+    pub author: &'static str,
+    pub copyright: &'static str,
+    pub license: &'static str,
+}
+
 /// Everything the FMI layer needs to know about one model.
 pub struct ModelInfo {
     pub model_name: &'static str,
@@ -157,6 +211,10 @@ pub struct ModelInfo {
     pub create: fn() -> Box<dyn Model>,
     /// The FMU's `documentation/index.html`.
     pub documentation: fn() -> String,
+    /// The model is also offered as Model Exchange (a stateless map of its inputs: no
+    /// continuous states, no event indicators; [`Model::do_step`] is never called there).
+    pub model_exchange: bool,
+    pub legal: Legal,
 }
 
 impl ModelInfo {
@@ -178,6 +236,9 @@ impl ModelInfo {
             ));
             if v.kind != Kind::Real {
                 text.push_str(&format!(":{}", v.kind.as_str()));
+            }
+            if let Kind::Enumeration(t) = v.kind {
+                text.push_str(&format!(":{}", t.name));
             }
         }
         let a = fnv1a64(text.as_bytes(), 0xcbf2_9ce4_8422_2325);
@@ -203,6 +264,19 @@ impl ModelInfo {
 
     pub fn unit(&self, name: &str) -> Option<&UnitDef> {
         self.units.iter().find(|u| u.name == name)
+    }
+
+    /// The distinct enumeration types of the variables, in order of first use.
+    pub fn enum_types(&self) -> Vec<&'static EnumType> {
+        let mut out: Vec<&'static EnumType> = Vec::new();
+        for v in &self.variables {
+            if let Kind::Enumeration(t) = v.kind
+                && !out.iter().any(|o| o.name == t.name)
+            {
+                out.push(t);
+            }
+        }
+        out
     }
 }
 

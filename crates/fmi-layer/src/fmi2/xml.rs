@@ -10,7 +10,7 @@
 //! initialization every output may depend on every parameter.
 
 use super::logging::Category;
-use super::variables::{Causality, Kind, ModelInfo, Variable, CAPABILITIES};
+use super::variables::{Causality, Kind, ModelInfo, Variable, CAPABILITIES, ME_CAPABILITIES};
 use std::fmt::Write;
 
 /// Escape text for an XML attribute value.
@@ -35,9 +35,15 @@ pub fn num(v: f64) -> String {
 }
 
 /// The type element of a variable: `<Real .../>`, `<Integer .../>` or `<Boolean .../>`.
-fn type_element(v: &Variable) -> String {
+fn type_element(info: &ModelInfo, v: &Variable) -> String {
     let mut a = String::new();
+    if let Kind::Enumeration(t) = v.kind {
+        write!(a, " declaredType=\"{}\"", escape(t.name)).unwrap();
+    }
     if v.kind == Kind::Real {
+        if let Some(q) = v.unit.and_then(|u| info.unit(u)).map(|u| u.quantity) {
+            write!(a, " declaredType=\"{}\"", escape(q)).unwrap();
+        }
         if let Some(u) = v.unit {
             write!(a, " unit=\"{}\"", escape(u)).unwrap();
         }
@@ -47,7 +53,7 @@ fn type_element(v: &Variable) -> String {
     }
     let value = |x: f64| match v.kind {
         Kind::Real => num(x),
-        Kind::Integer => format!("{}", x as i64),
+        Kind::Integer | Kind::Enumeration(_) => format!("{}", x as i64),
         Kind::Boolean => (x != 0.0).to_string(),
     };
     if v.kind != Kind::Boolean {
@@ -64,6 +70,31 @@ fn type_element(v: &Variable) -> String {
     format!("<{}{a}/>", v.kind.as_str())
 }
 
+/// The type definitions of FMI 2.0: one Real type per unit in use, named for its quantity
+/// (`quantity` and `unit` on the type), and the enumeration types with their items.
+/// Returns (type name, element) pairs; two units of one quantity are an error.
+fn type_definitions(info: &ModelInfo) -> Result<Vec<(String, String)>, String> {
+    let mut out: Vec<(String, String)> = Vec::new();
+    for u in info.units {
+        if !info.variables.iter().any(|v| v.unit == Some(u.name)) {
+            continue;
+        }
+        if out.iter().any(|(n, _)| n == u.quantity) {
+            return Err(format!("two units have quantity {}: type names must be unique", u.quantity));
+        }
+        out.push((u.quantity.into(), format!(r#"<Real quantity="{}" unit="{}"/>"#, escape(u.quantity), escape(u.name))));
+    }
+    for t in info.enum_types() {
+        let mut e = String::from("<Enumeration>");
+        for (name, value, d) in t.items {
+            write!(e, r#"<Item name="{}" value="{value}" description="{}"/>"#, escape(name), escape(d)).unwrap();
+        }
+        e.push_str("</Enumeration>");
+        out.push((t.name.into(), e));
+    }
+    Ok(out)
+}
+
 /// The complete modelDescription.xml of `info`.
 pub fn model_description(info: &ModelInfo) -> Result<String, String> {
     let mut x = String::new();
@@ -74,11 +105,21 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
     writeln!(w, r#"  modelName="{}""#, escape(info.model_name)).unwrap();
     writeln!(w, r#"  guid="{}""#, info.guid()).unwrap();
     writeln!(w, r#"  description="{}""#, escape(info.description)).unwrap();
+    writeln!(w, r#"  author="{}""#, escape(info.legal.author)).unwrap();
     writeln!(w, r#"  version="{}""#, escape(info.version)).unwrap();
+    writeln!(w, r#"  copyright="{}""#, escape(info.legal.copyright)).unwrap();
+    writeln!(w, r#"  license="{}""#, escape(info.legal.license)).unwrap();
     writeln!(w, r#"  generationTool="pinjoint fmi2 layer {}""#, env!("CARGO_PKG_VERSION")).unwrap();
     writeln!(w, r#"  variableNamingConvention="structured""#).unwrap();
     writeln!(w, r#"  numberOfEventIndicators="0">"#).unwrap();
 
+    if info.model_exchange {
+        write!(w, r#"  <ModelExchange modelIdentifier="{}""#, escape(info.model_identifier)).unwrap();
+        for (k, v) in ME_CAPABILITIES {
+            write!(w, "\n    {k}=\"{v}\"").unwrap();
+        }
+        writeln!(w, "/>").unwrap();
+    }
     write!(w, r#"  <CoSimulation modelIdentifier="{}""#, escape(info.model_identifier)).unwrap();
     for (k, v) in CAPABILITIES {
         write!(w, "\n    {k}=\"{v}\"").unwrap();
@@ -104,6 +145,17 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
             writeln!(w, "    </Unit>").unwrap();
         }
         writeln!(w, "  </UnitDefinitions>").unwrap();
+    }
+
+    let types = type_definitions(info)?;
+    if !types.is_empty() {
+        writeln!(w, "  <TypeDefinitions>").unwrap();
+        for (name, body) in types {
+            writeln!(w, r#"    <SimpleType name="{}">"#, escape(&name)).unwrap();
+            writeln!(w, "      {body}").unwrap();
+            writeln!(w, "    </SimpleType>").unwrap();
+        }
+        writeln!(w, "  </TypeDefinitions>").unwrap();
     }
 
     writeln!(w, "  <LogCategories>").unwrap();
@@ -143,7 +195,7 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
             v.variability.as_str()
         )
         .unwrap();
-        writeln!(w, "      {}", type_element(v)).unwrap();
+        writeln!(w, "      {}", type_element(info, v)).unwrap();
         writeln!(w, "    </ScalarVariable>").unwrap();
     }
     writeln!(w, "  </ModelVariables>").unwrap();

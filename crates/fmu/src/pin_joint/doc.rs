@@ -67,7 +67,7 @@ pub fn index_html() -> String {
 <html lang="en"><head><meta charset="utf-8"><title>PinJoint FMU</title>
 <style>body{{font-family:sans-serif;max-width:70em;margin:auto}} table{{border-collapse:collapse}} td,th{{border:1px solid #aaa;padding:2px 6px;font-size:90%}}</style>
 </head><body>
-<h1>PinJoint &mdash; friction torque of a landing-gear pin joint (FMI 2.0 Co-Simulation)</h1>
+<h1>PinJoint &mdash; friction torque of a landing-gear pin joint (FMI 2.0 and 3.0, Co-Simulation and Model Exchange)</h1>
 <p>GUID <code>{guid}</code>, version {version}.</p>
 
 <h2>What it computes</h2>
@@ -129,9 +129,35 @@ defined behaviour of every bad input.</li>
 <h2>Parameters</h2><p>Named <code>section.key</code> as in the parameter file; defaults from Tables 1&ndash;3 of the paper.
 All have variability <em>fixed</em>: set them before fmi2ExitInitializationMode.</p><table>{HEAD}{params}</table>
 
+<h2>Model Exchange</h2>
+<p>The friction law is a stateless map of the inputs, so as Model Exchange the FMU has <b>no continuous states</b> (nx = 0) and
+<b>no event indicators</b> (nz = 0). The host's own solver owns &omega; (e.g. <code>J d&omega;/dt = T_drive + torque</code>) and
+sees the torque as a function of the current &omega; and P at every evaluation (every <code>fmi2GetReal</code>/<code>fmi3GetFloat64</code>
+after setting inputs or time), instead of a value held over a communication step; the Co-Simulation stability limit
+&omega;<sub>b</sub> &gt; h&middot;&mu;<sub>c</sub>RP/J no longer ties the band to a step size.</p>
+<ul>
+<li>Zero-speed band: inside |&omega;| &lt; &omega;<sub>b</sub> the torque is the continuous, odd, Lipschitz ramp
+&minus;T(P, &omega;<sub>b</sub>)&middot;&omega;/&omega;<sub>b</sub> (slope k = T(P, &omega;<sub>b</sub>)/&omega;<sub>b</sub>, e.g.
+{tb20:.1} N&middot;m / {band} rad/s at 20 kN); outside it the library's torque, smooth in &omega;. The torque is continuous
+everywhere (a kink, not a jump, at &plusmn;&omega;<sub>b</sub>), so a variable-step solver needs no event: that is why there are no
+event indicators. The ramp makes the host's equation stiff near rest (time constant J/k): an implicit solver (CVode BDF) takes it
+in its stride; an explicit fixed step h is stable for h &lt; 2J/k and does not oscillate for h &lt; J/k.</li>
+<li>With <code>zero_velocity.speed_band = 0</code> the torque jumps by 2&mu;<sub>c</sub>RP at &omega; = 0 and the FMU still
+declares no event indicator (&omega; is the host's variable: a host that wants the reversal located must detect the sign change of
+its own state); variable-step solvers then shrink their step at every reversal. Keep &omega;<sub>b</sub> &gt; 0 for Model Exchange.</li>
+<li><code>dissipated_energy</code> is a Co-Simulation quantity (the sum of power_loss times the step over the steps taken).
+Model Exchange takes no steps, so it is not computed there and <b>stays 0</b>; integrate <code>power_loss</code> in the host
+(one extra state) for the energy.</li>
+<li>Event mode has nothing to iterate (no discrete states, no time events); <code>fmi2CompletedIntegratorStep</code> is not needed
+(<code>completedIntegratorStepNotNeeded</code>; FMI 3.0 <code>needsCompletedIntegratorStep = false</code>) but, if called,
+checks the outputs at the current inputs. Parameters can only be set before exit of initialization (variability fixed).</li>
+</ul>
+
+{requirements}
+
 <h2>FMI notes</h2>
 <ul>
-<li>Co-Simulation only; the Model Exchange functions return fmi2Error. Variable step size, get/set and serialized FMU state are supported
+<li>Co-Simulation and Model Exchange (above). Variable step size, get/set and serialized FMU state are supported
 (a small versioned byte format with magic, version, length and CRC-32; truncated, corrupted or foreign states are rejected).</li>
 <li>Log categories: logEvents, logStatusWarning, logStatusDiscard, logStatusError, logStatusFatal, logAll. Errors are reported even with
 debug logging off.</li>
@@ -141,6 +167,7 @@ debug logging off.</li>
 "#,
         guid = INFO.guid(),
         version = INFO.version,
+        requirements = crate::requirements_html(),
         r_red = j.reduced_radius(),
         e_eff = j.effective_modulus() / 1e9,
         tb20 = j.boundary_torque(20e3),

@@ -22,4 +22,6 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     default_experiment: (0.0, 10.0, 1e-3),
     create: || Box::new(model::PinJointModel::new()),
     documentation: doc::index_html,
+    model_exchange: true,
+    legal: crate::LEGAL,
 });

@@ -11,7 +11,7 @@
 //! | 36–40 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
 
 use super::zero_speed::DEFAULT_SPEED_BAND;
-use fmi_layer::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
+use fmi_layer::fmi2::variables::{Causality, DisplayUnit, EnumType, Initial, Kind, UnitDef, Variability, Variable};
 use pinjoint::params::{ParamSpec, PARAMS};
 
 pub const ANGLE: usize = 0;
@@ -39,6 +39,19 @@ pub fn fidelity_of_code(code: i32) -> Option<pinjoint::fidelity::Fidelity> {
     use pinjoint::fidelity::Fidelity::*;
     [Full, Table, Boundary, Auto].get(usize::try_from(code).ok()?).copied()
 }
+
+/// The `fidelity` parameter's choices (both FMUs); the codes are those of the former
+/// Integer parameter, so hosts that set 0..3 through fmi2SetInteger see no change.
+pub static FIDELITY_TYPE: EnumType = EnumType {
+    name: "Fidelity",
+    description: "Fidelity level of the friction evaluation",
+    items: &[
+        ("full", 0, "Complete load-sharing solve at every evaluation"),
+        ("table", 1, "Stribeck map tabulated over the envelope, interpolated within tolerance of full"),
+        ("boundary", 2, "Boundary friction mu = mu_c"),
+        ("auto", 3, "The cheapest level within tolerance over the envelope"),
+    ],
+};
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -78,38 +91,38 @@ const RPM: f64 = 9.549296585513721; // 60/(2π)
 
 /// Every unit used by a PinJoint variable, with its SI base units and display units.
 pub static UNITS: &[UnitDef] = &[
-    UnitDef { name: "rad", kg: 0, m: 0, s: 0, rad: 1, display: &[DisplayUnit { name: "deg", factor: DEG, offset: 0.0 }] },
+    UnitDef { name: "rad", quantity: "Angle", kg: 0, m: 0, s: 0, rad: 1, display: &[DisplayUnit { name: "deg", factor: DEG, offset: 0.0 }] },
     UnitDef {
-        name: "rad/s",
+        name: "rad/s", quantity: "AngularVelocity",
         kg: 0,
         m: 0,
         s: -1,
         rad: 1,
         display: &[DisplayUnit { name: "deg/s", factor: DEG, offset: 0.0 }, DisplayUnit { name: "rpm", factor: RPM, offset: 0.0 }],
     },
-    UnitDef { name: "N", kg: 1, m: 1, s: -2, rad: 0, display: &[DisplayUnit { name: "kN", factor: 1e-3, offset: 0.0 }] },
-    UnitDef { name: "N.m", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kN.m", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "N", quantity: "Force", kg: 1, m: 1, s: -2, rad: 0, display: &[DisplayUnit { name: "kN", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "N.m", quantity: "Torque", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kN.m", factor: 1e-3, offset: 0.0 }] },
     UnitDef {
-        name: "m",
+        name: "m", quantity: "Length",
         kg: 0,
         m: 1,
         s: 0,
         rad: 0,
-        display: &[DisplayUnit { name: "mm", factor: 1e3, offset: 0.0 }, DisplayUnit { name: "µm", factor: 1e6, offset: 0.0 }],
+        display: &[DisplayUnit { name: "mm", factor: 1e3, offset: 0.0 }, DisplayUnit { name: "um", factor: 1e6, offset: 0.0 }],
     },
     UnitDef {
-        name: "Pa",
+        name: "Pa", quantity: "Pressure",
         kg: 1,
         m: -1,
         s: -2,
         rad: 0,
         display: &[DisplayUnit { name: "MPa", factor: 1e-6, offset: 0.0 }, DisplayUnit { name: "GPa", factor: 1e-9, offset: 0.0 }],
     },
-    UnitDef { name: "Pa.s", kg: 1, m: -1, s: -1, rad: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
-    UnitDef { name: "1/Pa", kg: -1, m: 1, s: 2, rad: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
-    UnitDef { name: "1/m2", kg: 0, m: -2, s: 0, rad: 0, display: &[] },
-    UnitDef { name: "W", kg: 1, m: 2, s: -3, rad: 0, display: &[] },
-    UnitDef { name: "J", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "Pa.s", quantity: "DynamicViscosity", kg: 1, m: -1, s: -1, rad: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
+    UnitDef { name: "1/Pa", quantity: "PressureViscosityCoefficient", kg: -1, m: 1, s: 2, rad: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
+    UnitDef { name: "1/m2", quantity: "AsperityDensity", kg: 0, m: -2, s: 0, rad: 0, display: &[] },
+    UnitDef { name: "W", quantity: "Power", kg: 1, m: 2, s: -3, rad: 0, display: &[] },
+    UnitDef { name: "J", quantity: "Energy", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
 ];
 
 fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>, start: f64, min: Option<f64>, d: &str) -> Variable {
@@ -140,7 +153,7 @@ fn output(o: Output) -> Variable {
             "Friction torque on the pin, opposite to the angular velocity: -sign(omega) mu R P_T (eq. 11); linear in omega inside the zero-velocity band"),
         Output::FrictionCoefficient => ("friction_coefficient", None, None, Some(0.0), None, &SPEED_LOAD,
             "Friction coefficient mu = (Q_H + Q_C)/P_T (eq. 10) at the input speed and load"),
-        Output::FilmThickness => ("film_thickness", Some("m"), Some("µm"), Some(0.0), None, &SPEED_LOAD,
+        Output::FilmThickness => ("film_thickness", Some("m"), Some("um"), Some(0.0), None, &SPEED_LOAD,
             "Central film thickness h_c from the load-sharing solve (eqs. 9, 13, 19)"),
         Output::LambdaRatio => ("lambda_ratio", None, None, Some(0.0), None, &SPEED_LOAD,
             "Lambda ratio h_c/sqrt(sigma^2 + sigma_b^2) (eq. 21, evaluated with the central film h_c)"),
@@ -155,7 +168,7 @@ fn output(o: Output) -> Variable {
         Output::PowerLoss => ("power_loss", Some("W"), None, Some(0.0), None, &SPEED_LOAD,
             "Frictional power loss |torque * angular_velocity|"),
         Output::DissipatedEnergy => ("dissipated_energy", Some("J"), Some("kJ"), Some(0.0), None, &[],
-            "Energy dissipated by friction since initialization: sum over the steps taken of power_loss * step size (inputs held over each step)"),
+            "Energy dissipated by friction since initialization: sum over the Co-Simulation steps taken of power_loss * step size (inputs held over each step). Co-Simulation only: under Model Exchange no steps are taken and it stays 0 (integrate power_loss in the host)"),
     };
     Variable {
         name: name.into(),
@@ -178,7 +191,7 @@ fn output(o: Output) -> Variable {
 pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
     match (s.section, s.unit) {
         ("geometry", "m") => Some("mm"),
-        (_, "m") => Some("µm"),
+        (_, "m") => Some("um"),
         (_, "Pa") if s.key.contains("modulus") => Some("GPa"),
         (_, "Pa") => Some("MPa"),
         (_, "Pa.s") => Some("mPa.s"),
@@ -187,8 +200,20 @@ pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
     }
 }
 
+/// The min/max attributes of a parameter: only inclusive bounds are written (a bound the
+/// value may not take, as the 0 of "> 0", is left off; the description states the range).
+pub(crate) fn declared_bounds(range: pinjoint::params::Range) -> (Option<f64>, Option<f64>) {
+    use pinjoint::params::Range;
+    match range {
+        Range::Positive => (None, None),
+        Range::NonNegative => (Some(0.0), None),
+        Range::HalfOpen(lo, _) => (Some(lo), None),
+        Range::OpenClosed(_, hi) => (None, Some(hi)),
+    }
+}
+
 pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
-    let (min, max) = s.range.bounds();
+    let (min, max) = declared_bounds(s.range);
     Variable {
         name: s.name(),
         kind: Kind::Real,
@@ -237,7 +262,7 @@ pub fn table() -> Vec<Variable> {
     });
     v.push(Variable {
         name: "fidelity".into(),
-        kind: Kind::Integer,
+        kind: Kind::Enumeration(&FIDELITY_TYPE),
         value_reference: 300,
         causality: Causality::Parameter,
         variability: Variability::Fixed,
@@ -264,7 +289,8 @@ pub fn table() -> Vec<Variable> {
         unit,
         display_unit: None,
         start: Some(start),
-        min: Some(0.0),
+        // Each must be > 0: no min attribute (0 itself is refused; see the description).
+        min: None,
         max: None,
         description: d.into(),
         depends_on: vec![],

@@ -14,6 +14,7 @@ fn num(v: &Variable, x: Option<f64>) -> String {
         (_, None) => "&ndash;".into(),
         (Kind::Boolean, Some(x)) => (x != 0.0).to_string(),
         (Kind::Integer, Some(x)) => format!("{}", x as i64),
+        (Kind::Enumeration(t), Some(x)) => format!("{} ({})", x as i64, t.item(x as i64).unwrap_or("?")),
         (Kind::Real, Some(x)) => format!("{x:e}").replace("e0", ""),
     }
 }
@@ -77,7 +78,7 @@ pub fn index_html() -> String {
 <html lang="en"><head><meta charset="utf-8"><title>PinJointRig FMU</title>
 <style>body{{font-family:sans-serif;max-width:70em;margin:auto}} table{{border-collapse:collapse}} td,th{{border:1px solid #aaa;padding:2px 6px;font-size:90%}} pre{{background:#f4f4f4;padding:6px}}</style>
 </head><body>
-<h1>PinJointRig &mdash; the pin joint on its torsion-actuator rig (FMI 2.0 Co-Simulation)</h1>
+<h1>PinJointRig &mdash; the pin joint on its torsion-actuator rig (FMI 2.0 and 3.0 Co-Simulation)</h1>
 <p>GUID <code>{guid}</code>, version {version}. Served by the same binary as the PinJoint FMU.</p>
 
 <h2>What it computes</h2>
@@ -142,7 +143,7 @@ R<sub>b</sub> &gt; R); the error message names the parameter, its value and unit
 
 <h2>Fidelity</h2>
 <ul>
-<li><code>fidelity</code> (Integer) chooses how the friction law is evaluated inside the rig, as in the PinJoint FMU: 0 = full (the
+<li><code>fidelity</code> (Enumeration: full, table, boundary, auto) chooses how the friction law is evaluated inside the rig, as in the PinJoint FMU: 0 = full (the
 complete solve, warm-started; the default, and the rig exactly as without this parameter), 1 = table (the Stribeck map tabulated
 over the envelope at fmi2ExitInitializationMode and interpolated, refined until its error checked against full is below
 <code>tolerance</code>), 2 = boundary (&mu; = &mu;<sub>c</sub>), 3 = auto (the cheapest of boundary, table, full whose measured bound
@@ -173,12 +174,15 @@ sections are <code>section.key</code> as in the PinJoint FMU (Tables 1&ndash;3 o
 magic, version, length and CRC-32, holding this model's versioned part: every setting, the start time and the simulator's
 112-byte state). A restored state continues bit for bit.</li>
 <li><code>stuck</code> is a Boolean output (variability discrete), <code>use_command_input</code> a Boolean parameter,
-<code>rig.formulation</code>, <code>rig.method</code> and <code>fidelity</code> Integer parameters; everything else is Real.</li>
+<code>rig.formulation</code>, <code>rig.method</code> and <code>fidelity</code> Enumeration parameters (named choices; the codes of the
+former Integer parameters, set through fmi2SetInteger / fmi3SetInt64); everything else is Real (FMI 3.0: Float64).</li>
 </ul>
+{requirements}
 </body></html>
 "#,
         guid = INFO.guid(),
         version = INFO.version,
+        requirements = crate::requirements_html(),
         tb20 = r.breakaway_factor * j.boundary_torque(20e3),
         tb60 = r.breakaway_factor * j.boundary_torque(60e3),
         reasoning = REASONING,

@@ -25,4 +25,6 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     default_experiment: (0.0, 3.0, 1e-3),
     create: || Box::new(model::RigModel::new()),
     documentation: doc::index_html,
+    model_exchange: false,
+    legal: crate::LEGAL,
 });

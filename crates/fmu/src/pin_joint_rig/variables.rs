@@ -15,7 +15,7 @@
 //! The `[rig]` file keys `frequency` and `amplitude` are the stroke parameters
 //! `frequency` and `amplitude`; the key `load` is the `load` input.
 
-use fmi_layer::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
+use fmi_layer::fmi2::variables::{Causality, DisplayUnit, EnumType, Initial, Kind, UnitDef, Variability, Variable};
 use crate::pin_joint::variables::{self as pj};
 use pinjoint::params::PARAMS;
 use pinjoint::rig::params::{RigParamSpec, RigParams, RIG_PARAMS};
@@ -123,18 +123,18 @@ const DEG: f64 = 57.29577951308232; // 180/π
 
 /// Units of the rig's own variables, beyond those PinJoint defines.
 static RIG_UNITS: &[UnitDef] = &[
-    UnitDef { name: "Hz", kg: 0, m: 0, s: -1, rad: 0, display: &[] },
-    UnitDef { name: "s", kg: 0, m: 0, s: 1, rad: 0, display: &[DisplayUnit { name: "ms", factor: 1e3, offset: 0.0 }] },
-    UnitDef { name: "kg.m2", kg: 1, m: 2, s: 0, rad: 0, display: &[] },
+    UnitDef { name: "Hz", quantity: "Frequency", kg: 0, m: 0, s: -1, rad: 0, display: &[] },
+    UnitDef { name: "s", quantity: "Time", kg: 0, m: 0, s: 1, rad: 0, display: &[DisplayUnit { name: "ms", factor: 1e3, offset: 0.0 }] },
+    UnitDef { name: "kg.m2", quantity: "MomentOfInertia", kg: 1, m: 2, s: 0, rad: 0, display: &[] },
     UnitDef {
-        name: "N.m/rad",
+        name: "N.m/rad", quantity: "RotationalStiffness",
         kg: 1,
         m: 2,
         s: -2,
         rad: -1,
         display: &[DisplayUnit { name: "N.m/deg", factor: 1.0 / DEG, offset: 0.0 }],
     },
-    UnitDef { name: "N.m.s/rad", kg: 1, m: 2, s: -1, rad: -1, display: &[] },
+    UnitDef { name: "N.m.s/rad", quantity: "RotationalDampingConstant", kg: 1, m: 2, s: -1, rad: -1, display: &[] },
 ];
 
 /// Every unit used by a PinJointRig variable (PinJoint's definitions where shared).
@@ -183,7 +183,7 @@ fn output(o: Output) -> Variable {
             "Friction torque T_f on the pin: -sign(omega) mu(P,|omega|) R P while slipping, the reaction -T_a while stuck, 0 at zero load"),
         Output::FrictionCoefficient => real("friction_coefficient", vr, Out, C, None, None,
             "The core's mu(P, |omega|) (eq. 10); mu_c while stuck (the capacity, not the mobilised |T_a|/(R P)); 0 at zero load"),
-        Output::FilmThickness => real("film_thickness", vr, Out, C, Some("m"), Some("µm"),
+        Output::FilmThickness => real("film_thickness", vr, Out, C, Some("m"), Some("um"),
             "The core's central film thickness h_c at (P, |omega|); 0 at zero load (no contact)"),
         Output::FluidLoadFraction => real("fluid_load_fraction", vr, Out, C, None, None,
             "The core's 1/gamma_1, share of the load carried by the film; 0 at zero load"),
@@ -221,7 +221,7 @@ fn output(o: Output) -> Variable {
 
 fn rig_parameter(i: usize) -> Variable {
     let s = &RIG_PARAMS[i];
-    let (min, max) = s.range.bounds();
+    let (min, max) = pj::declared_bounds(s.range);
     let unit = (s.unit != "1").then_some(s.unit);
     let display = match s.unit {
         "rad" => Some("deg"),
@@ -239,7 +239,7 @@ fn rig_parameter(i: usize) -> Variable {
 
 fn stroke_parameter(key: &str, vr: u32, display: Option<&'static str>, what: &str) -> Variable {
     let s = rig_spec(key);
-    let (min, max) = s.range.bounds();
+    let (min, max) = pj::declared_bounds(s.range);
     let mut v = real(key, vr, Causality::Parameter, Variability::Fixed, Some(s.unit), display, "");
     v.start = Some((s.get)(&RigParams::default()));
     v.min = min;
@@ -248,8 +248,36 @@ fn stroke_parameter(key: &str, vr: u32, display: Option<&'static str>, what: &st
     v
 }
 
+/// `rig.formulation`: the codes of the former Integer parameter.
+pub static FORMULATION_TYPE: EnumType = EnumType {
+    name: "RigFormulation",
+    description: "Friction at zero speed in the rig",
+    items: &[
+        ("hybrid", 0, "Stick/slip with located events"),
+        ("regularised", 1, "tanh(omega/rig.regularisation_speed) regularisation"),
+    ],
+};
+
+/// `rig.method`: the codes of the former Integer parameter.
+pub static METHOD_TYPE: EnumType = EnumType {
+    name: "RigMethod",
+    description: "Integrator of the rig's equations of motion",
+    items: &[
+        ("dopri5", 0, "Dormand-Prince 5(4), adaptive (rig.rtol, rig.atol)"),
+        ("dop853", 1, "Dormand-Prince 8(5,3), adaptive"),
+        ("rk4", 2, "Classical Runge-Kutta, fixed step rig.rk4_step"),
+    ],
+};
+
+/// An enumeration parameter with codes 0..=`max` (start 0).
 fn integer(name: &str, vr: u32, max: f64, d: &str) -> Variable {
-    let mut v = var(name, vr, Kind::Integer, Causality::Parameter, Variability::Fixed, d.into());
+    let t: &'static EnumType = match name {
+        "rig.formulation" => &FORMULATION_TYPE,
+        "rig.method" => &METHOD_TYPE,
+        _ => &pj::FIDELITY_TYPE,
+    };
+    debug_assert_eq!(t.items.len() as f64, max + 1.0);
+    let mut v = var(name, vr, Kind::Enumeration(t), Causality::Parameter, Variability::Fixed, d.into());
     v.start = Some(0.0);
     v.min = Some(0.0);
     v.max = Some(max);
@@ -288,7 +316,7 @@ pub fn table() -> Vec<Variable> {
     let fid = |name: &str, vr: u32, unit: Option<&'static str>, start: f64, d: &str| {
         let mut x = real(name, vr, Causality::Parameter, Variability::Fixed, unit, None, d);
         x.start = Some(start);
-        x.min = Some(0.0);
+        // Each must be > 0: no min attribute (0 is refused; see the description).
         x
     };
     let [l0, l1, w0, w1] = DEFAULT_ENVELOPE;

@@ -3,7 +3,7 @@
 #![allow(non_snake_case)]
 
 use super::guard::{call, maybe_forced_panic, slice, slice_mut};
-use crate::fmi2::instance::Instance;
+use crate::fmi2::instance::{Instance, Interface};
 use crate::fmi2::logging::{Category, Logger};
 use crate::fmi2::snapshot::Snapshot;
 use crate::fmi2::state;
@@ -15,7 +15,7 @@ use std::ptr::null_mut;
 
 /// # Safety
 /// `p` is NULL or a NUL-terminated string.
-unsafe fn text(p: *const c_char) -> Option<String> {
+pub(crate) unsafe fn text(p: *const c_char) -> Option<String> {
     // SAFETY: per the contract.
     (!p.is_null()).then(|| unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
 }
@@ -82,11 +82,8 @@ unsafe fn instantiate(
         Some(n) if !n.is_empty() => n,
         _ => return fail("instanceName must be a non-empty string".into()),
     };
-    if fmu_type != FMI2_CO_SIMULATION {
-        return fail(format!(
-            "fmuType = {fmu_type} ({}): this FMU implements Co-Simulation (fmuType = 1) only",
-            if fmu_type == FMI2_MODEL_EXCHANGE { "Model Exchange" } else { "not an fmi2Type" }
-        ));
+    if fmu_type != FMI2_CO_SIMULATION && fmu_type != FMI2_MODEL_EXCHANGE {
+        return fail(format!("fmuType = {fmu_type} is not an fmi2Type (0 = Model Exchange, 1 = Co-Simulation)"));
     }
     let Some(guid) = guid else {
         return fail("fmuGUID is NULL".into());
@@ -98,13 +95,18 @@ unsafe fn instantiate(
             known.join(", ")
         ));
     };
-    // This FMU needs no resources: a missing or unusual location is only a warning.
+    let interface = if fmu_type == FMI2_MODEL_EXCHANGE {
+        if !info.model_exchange {
+            return fail(format!("fmuType = 0 (Model Exchange): {} implements Co-Simulation (fmuType = 1) only", info.model_name));
+        }
+        Interface::ModelExchange
+    } else {
+        Interface::CoSimulation
+    };
+    // This FMU needs no resources: NULL or "" is fine (no message); a location that is
+    // not a URI is only a warning.
     match resources.as_deref() {
-        None | Some("") => logger.log(
-            Status::Warning,
-            Category::StatusWarning,
-            "fmi2Instantiate: fmuResourceLocation is empty; this FMU needs no resources, continuing",
-        ),
+        None | Some("") => {}
         Some(r) if !looks_like_uri(r) => logger.log(
             Status::Warning,
             Category::StatusWarning,
@@ -112,13 +114,13 @@ unsafe fn instantiate(
         ),
         _ => {}
     }
-    let inst = Instance::new(info, &name, logger);
+    let inst = Instance::with_interface(info, &name, logger, interface, false);
     inst.event(&format!("instantiated {} (GUID {guid})", info.model_name));
     Box::into_raw(Box::new(inst)) as Fmi2Component
 }
 
 /// RFC 3986: `scheme ":" ...` with scheme = ALPHA *( ALPHA / DIGIT / "+" / "-" / "." ).
-fn looks_like_uri(s: &str) -> bool {
+pub(crate) fn looks_like_uri(s: &str) -> bool {
     match s.split_once(':') {
         Some((scheme, _)) => {
             let mut ch = scheme.chars();
@@ -328,7 +330,16 @@ no_such_type!(fmi2GetString, fmi2SetString, Fmi2String, "String");
 /// `state` is NULL or points to NULL or to an FMU state of this instance's model.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
-    call(c, "fmi2GetFMUstate", state::FMU_STATE, |inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { get_fmu_state("fmi2GetFMUstate", c, FMUstate) }
+}
+
+/// The body of `fmi2GetFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2GetFMUstate`.
+pub(crate) unsafe fn get_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |inst| {
         if FMUstate.is_null() {
             return Err("FMUstate is NULL".into());
         }
@@ -369,7 +380,16 @@ unsafe fn live_state<'a>(s: Fmi2FmuState) -> Result<&'a mut Snapshot, String> {
 /// `FMUstate` is NULL or an FMU state returned by this FMU.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, FMUstate: Fmi2FmuState) -> Fmi2StatusC {
-    call(c, "fmi2SetFMUstate", state::FMU_STATE, |inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { set_fmu_state("fmi2SetFMUstate", c, FMUstate) }
+}
+
+/// The body of `fmi2SetFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2SetFMUstate`.
+pub(crate) unsafe fn set_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: Fmi2FmuState) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |inst| {
         // SAFETY: per the contract.
         let snap = unsafe { live_state(FMUstate) }?;
         inst.restore(snap)
@@ -380,7 +400,16 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, FMUstate: Fmi2FmuStat
 /// `FMUstate` is NULL or points to NULL or to an FMU state returned by this FMU.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2FreeFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
-    call(c, "fmi2FreeFMUstate", state::FMU_STATE, |_inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { free_fmu_state("fmi2FreeFMUstate", c, FMUstate) }
+}
+
+/// The body of `fmi2FreeFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2FreeFMUstate`.
+pub(crate) unsafe fn free_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
         if FMUstate.is_null() || unsafe { (*FMUstate).is_null() } {
             return Ok(Status::Ok); // nothing to free
@@ -401,7 +430,16 @@ pub unsafe extern "C" fn fmi2FreeFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2F
 /// `FMUstate` is an FMU state returned by this FMU; `size` is writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: Fmi2Component, FMUstate: Fmi2FmuState, size: *mut usize) -> Fmi2StatusC {
-    call(c, "fmi2SerializedFMUstateSize", state::FMU_STATE, |_inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { serialized_fmu_state_size("fmi2SerializedFMUstateSize", c, FMUstate, size) }
+}
+
+/// The body of `fmi2SerializedFMUstateSize`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2SerializedFMUstateSize`.
+pub(crate) unsafe fn serialized_fmu_state_size(name: &'static str, c: Fmi2Component, FMUstate: Fmi2FmuState, size: *mut usize) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
         let snap = unsafe { live_state(FMUstate) }?;
         if size.is_null() {
@@ -422,7 +460,21 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(
     serializedState: *mut Fmi2Byte,
     size: usize,
 ) -> Fmi2StatusC {
-    call(c, "fmi2SerializeFMUstate", state::FMU_STATE, |_inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { serialize_fmu_state("fmi2SerializeFMUstate", c, FMUstate, serializedState, size) }
+}
+
+/// The body of `fmi2SerializeFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2SerializeFMUstate`.
+pub(crate) unsafe fn serialize_fmu_state(name: &'static str, 
+    c: Fmi2Component,
+    FMUstate: Fmi2FmuState,
+    serializedState: *mut Fmi2Byte,
+    size: usize,
+) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
         let snap = unsafe { live_state(FMUstate) }?;
         let bytes = snap.encode();
@@ -446,7 +498,21 @@ pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
     size: usize,
     FMUstate: *mut Fmi2FmuState,
 ) -> Fmi2StatusC {
-    call(c, "fmi2DeSerializeFMUstate", state::FMU_STATE, |inst| {
+    // SAFETY: forwarded under the same contract.
+    unsafe { deserialize_fmu_state("fmi2DeSerializeFMUstate", c, serializedState, size, FMUstate) }
+}
+
+/// The body of `fmi2DeSerializeFMUstate`, shared with the FMI 3.0 function of the same role (`name` in messages).
+///
+/// # Safety
+/// As for `fmi2DeSerializeFMUstate`.
+pub(crate) unsafe fn deserialize_fmu_state(name: &'static str, 
+    c: Fmi2Component,
+    serializedState: *const Fmi2Byte,
+    size: usize,
+    FMUstate: *mut Fmi2FmuState,
+) -> Fmi2StatusC {
+    call(c, name, state::FMU_STATE, |inst| {
         if FMUstate.is_null() {
             return Err("FMUstate is NULL".into());
         }

@@ -1,7 +1,9 @@
-//! The Model Exchange functions: exported, as the standard requires of every
-//! binary, and rejected with a message, since this FMU is Co-Simulation only
-//! (`fmi2Instantiate` refuses `fmi2ModelExchange`, so no instance can be in a
-//! Model Exchange state).
+//! The Model Exchange functions, for models with `ModelInfo::model_exchange` (PinJoint):
+//! a stateless map of the inputs, so there are no continuous states (nx = 0) and no event
+//! indicators (nz = 0). The host sets inputs and time; every getter returns the outputs at
+//! the current inputs. Event mode has nothing to iterate: `fmi2NewDiscreteStates` reports
+//! no discrete-state update, no next time event. The functions are refused on a
+//! Co-Simulation instance (and their masks keep them out of Co-Simulation states).
 
 #![allow(non_snake_case)]
 
@@ -10,54 +12,106 @@ use crate::fmi2::state;
 use crate::fmi2::types::*;
 use std::ffi::c_void;
 
-fn reject(c: Fmi2Component, name: &'static str) -> Fmi2StatusC {
-    call(c, name, state::MODEL_EXCHANGE, |_| {
-        Err("this is a Model Exchange function; this FMU implements Co-Simulation only".into())
-    })
+/// `fmi2EventInfo` (FMI 2.0 `fmi2FunctionTypes.h`).
+#[repr(C)]
+pub struct Fmi2EventInfo {
+    pub new_discrete_states_needed: Fmi2Boolean,
+    pub terminate_simulation: Fmi2Boolean,
+    pub nominals_of_continuous_states_changed: Fmi2Boolean,
+    pub values_of_continuous_states_changed: Fmi2Boolean,
+    pub next_event_time_defined: Fmi2Boolean,
+    pub next_event_time: Fmi2Real,
 }
 
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterEventMode(c: Fmi2Component) -> Fmi2StatusC {
-    reject(c, "fmi2EnterEventMode")
+    call(c, "fmi2EnterEventMode", state::ENTER_EVENT_MODE, |i| i.enter_event_mode())
 }
+
+/// Nothing discrete to update: every flag false, no time event.
+///
+/// # Safety
+/// `eventInfo` is NULL or points to a writable `fmi2EventInfo`.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2NewDiscreteStates(c: Fmi2Component, _eventInfo: *mut c_void) -> Fmi2StatusC {
-    reject(c, "fmi2NewDiscreteStates")
+pub unsafe extern "C" fn fmi2NewDiscreteStates(c: Fmi2Component, eventInfo: *mut c_void) -> Fmi2StatusC {
+    call(c, "fmi2NewDiscreteStates", state::NEW_DISCRETE_STATES, |inst| {
+        inst.require_model_exchange()?;
+        if eventInfo.is_null() {
+            return Err("eventInfo is NULL".into());
+        }
+        inst.refresh_outputs()?;
+        // SAFETY: non-NULL and writable per the contract.
+        unsafe {
+            *(eventInfo as *mut Fmi2EventInfo) = Fmi2EventInfo {
+                new_discrete_states_needed: FMI2_FALSE,
+                terminate_simulation: FMI2_FALSE,
+                nominals_of_continuous_states_changed: FMI2_FALSE,
+                values_of_continuous_states_changed: FMI2_FALSE,
+                next_event_time_defined: FMI2_FALSE,
+                next_event_time: 0.0,
+            };
+        }
+        Ok(Status::Ok)
+    })
 }
+
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterContinuousTimeMode(c: Fmi2Component) -> Fmi2StatusC {
-    reject(c, "fmi2EnterContinuousTimeMode")
+    call(c, "fmi2EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, |i| i.enter_continuous_time_mode())
 }
+
+/// The outputs at the current inputs are checked (a model failure is reported here);
+/// no event is ever requested.
+///
+/// # Safety
+/// `enterEventMode` and `terminateSimulation` are writable.
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2CompletedIntegratorStep(
+pub unsafe extern "C" fn fmi2CompletedIntegratorStep(
     c: Fmi2Component,
     _noSetFMUStatePriorToCurrentPoint: Fmi2Boolean,
-    _enterEventMode: *mut Fmi2Boolean,
-    _terminateSimulation: *mut Fmi2Boolean,
+    enterEventMode: *mut Fmi2Boolean,
+    terminateSimulation: *mut Fmi2Boolean,
 ) -> Fmi2StatusC {
-    reject(c, "fmi2CompletedIntegratorStep")
+    call(c, "fmi2CompletedIntegratorStep", state::COMPLETED_INTEGRATOR_STEP, |inst| {
+        inst.require_model_exchange()?;
+        if enterEventMode.is_null() || terminateSimulation.is_null() {
+            return Err("enterEventMode or terminateSimulation is NULL".into());
+        }
+        inst.refresh_outputs()?;
+        // SAFETY: non-NULL and writable per the contract.
+        unsafe {
+            *enterEventMode = FMI2_FALSE;
+            *terminateSimulation = FMI2_FALSE;
+        }
+        Ok(Status::Ok)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2SetTime(c: Fmi2Component, time: Fmi2Real) -> Fmi2StatusC {
+    call(c, "fmi2SetTime", state::SET_TIME, |inst| {
+        inst.require_model_exchange()?;
+        inst.set_time(time)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi2SetContinuousStates(c: Fmi2Component, _x: *const Fmi2Real, nx: usize) -> Fmi2StatusC {
+    call(c, "fmi2SetContinuousStates", state::SET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
 }
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2SetTime(c: Fmi2Component, _time: Fmi2Real) -> Fmi2StatusC {
-    reject(c, "fmi2SetTime")
+pub extern "C" fn fmi2GetDerivatives(c: Fmi2Component, _derivatives: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
+    call(c, "fmi2GetDerivatives", state::GET_DERIVATIVES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
 }
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2SetContinuousStates(c: Fmi2Component, _x: *const Fmi2Real, _nx: usize) -> Fmi2StatusC {
-    reject(c, "fmi2SetContinuousStates")
+pub extern "C" fn fmi2GetEventIndicators(c: Fmi2Component, _eventIndicators: *mut Fmi2Real, ni: usize) -> Fmi2StatusC {
+    call(c, "fmi2GetEventIndicators", state::GET_DERIVATIVES, |inst| inst.require_none("ni", ni).map(|_| Status::Ok))
 }
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetDerivatives(c: Fmi2Component, _derivatives: *mut Fmi2Real, _nx: usize) -> Fmi2StatusC {
-    reject(c, "fmi2GetDerivatives")
+pub extern "C" fn fmi2GetContinuousStates(c: Fmi2Component, _x: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
+    call(c, "fmi2GetContinuousStates", state::GET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
 }
 #[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetEventIndicators(c: Fmi2Component, _eventIndicators: *mut Fmi2Real, _ni: usize) -> Fmi2StatusC {
-    reject(c, "fmi2GetEventIndicators")
-}
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetContinuousStates(c: Fmi2Component, _x: *mut Fmi2Real, _nx: usize) -> Fmi2StatusC {
-    reject(c, "fmi2GetContinuousStates")
-}
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetNominalsOfContinuousStates(c: Fmi2Component, _x_nominal: *mut Fmi2Real, _nx: usize) -> Fmi2StatusC {
-    reject(c, "fmi2GetNominalsOfContinuousStates")
+pub extern "C" fn fmi2GetNominalsOfContinuousStates(c: Fmi2Component, _x_nominal: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
+    call(c, "fmi2GetNominalsOfContinuousStates", state::GET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
 }

@@ -1,0 +1,810 @@
+//! Every `fmi3*` function of the FMI 3.0 standard but the two instantiation functions that
+//! need the model registry ([`crate::export_fmi3!`]), exported with C linkage. Each goes
+//! through the same guard as the FMI 2.0 functions: NULL or dead instance, the state mask,
+//! error logging, panic containment (a panic returns `fmi3Fatal`).
+//!
+//! Unsupported parts of the standard (clocks, scheduled execution, configuration mode,
+//! directional and adjoint derivatives, output derivatives, Float32/8-/16-bit/unsigned/String/
+//! Binary variables) are refused with a message naming why.
+
+#![allow(non_snake_case)]
+
+use super::types::*;
+use crate::fmi2::api::common::{
+    deserialize_fmu_state, free_fmu_state, get_fmu_state, looks_like_uri, serialize_fmu_state, serialized_fmu_state_size,
+    set_fmu_state, text,
+};
+use crate::fmi2::api::guard::{call, maybe_forced_panic, slice, slice_mut};
+use crate::fmi2::instance::{CallResult, Instance, Interface};
+use crate::fmi2::logging::{Category, Fmi3LogMessageCallback, Logger};
+use crate::fmi2::state;
+use crate::fmi2::types::Status;
+use crate::fmi2::variables::{Causality, EnumType, Kind, ModelInfo};
+use std::ffi::{c_char, c_int, c_void};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::ptr::null_mut;
+
+/// Stands for "any enumeration type" when an `fmi3GetInt64`/`fmi3SetInt64` call is matched
+/// against the variable table (only the kind is compared).
+static ANY_ENUMERATION: EnumType = EnumType { name: "", description: "", items: &[] };
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3GetVersion() -> *const c_char {
+    VERSION.as_ptr()
+}
+
+/// The body of both instantiation functions: finds the model by instantiation token (the
+/// FMI 2.0 GUID of the same model: one interface, one token).
+///
+/// # Safety
+/// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
+#[allow(clippy::too_many_arguments)]
+pub unsafe fn instantiate_from(
+    registry: &[&'static ModelInfo],
+    interface: Interface,
+    instance_name: Fmi3String,
+    token: Fmi3String,
+    resource_path: Fmi3String,
+    logging_on: Fmi3Boolean,
+    event_mode_used: Fmi3Boolean,
+    env: *mut c_void,
+    log_message: Option<Fmi3LogMessageCallback>,
+) -> Fmi3Instance {
+    catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: strings from the host are NULL or NUL-terminated.
+        let (name, token, resources) = unsafe { (text(instance_name), text(token), text(resource_path)) };
+        let shown = name.clone().unwrap_or_else(|| "(NULL)".into());
+        let logger = Logger::new_fmi3(log_message, env, &shown, logging_on != 0);
+        let func = match interface {
+            Interface::CoSimulation => "fmi3InstantiateCoSimulation",
+            Interface::ModelExchange => "fmi3InstantiateModelExchange",
+        };
+        let fail = |msg: String| {
+            logger.log(Status::Error, Category::StatusError, &format!("{func}: {msg}"));
+            null_mut()
+        };
+        maybe_forced_panic(func);
+        let name = match name {
+            Some(n) if !n.is_empty() => n,
+            _ => return fail("instanceName must be a non-empty string".into()),
+        };
+        let Some(token) = token else {
+            return fail("instantiationToken is NULL".into());
+        };
+        let Some(info) = registry.iter().copied().find(|m| m.guid() == token) else {
+            let known: Vec<String> = registry.iter().map(|m| format!("{} {}", m.model_name, m.guid())).collect();
+            return fail(format!(
+                "instantiationToken {token} matches no model of this binary (known: {}); the modelDescription.xml does not belong to this binary",
+                known.join(", ")
+            ));
+        };
+        if interface == Interface::ModelExchange && !info.model_exchange {
+            return fail(format!("{} implements Co-Simulation only", info.model_name));
+        }
+        if event_mode_used != 0 {
+            return fail("eventModeUsed = true, but this FMU's Co-Simulation has no event mode (hasEventMode = false)".into());
+        }
+        // This FMU needs no resources: NULL or "" is fine; a path that is not absolute is a warning.
+        if let Some(r) = resources.as_deref().filter(|r| !r.is_empty() && !r.starts_with('/') && !looks_like_uri(r) && !r.contains('\\')) {
+            logger.log(
+                Status::Warning,
+                Category::StatusWarning,
+                &format!("{func}: resourcePath '{r}' is not an absolute path; this FMU needs no resources, continuing"),
+            );
+        }
+        let inst = Instance::with_interface(info, &name, logger, interface, true);
+        inst.event(&format!("instantiated {} (FMI 3.0 {:?}, instantiationToken {token})", info.model_name, interface));
+        Box::into_raw(Box::new(inst)) as Fmi3Instance
+    }))
+    .unwrap_or(null_mut())
+}
+
+/// Not supported: returns NULL (logged when a logger is given).
+///
+/// # Safety
+/// Pointers as in the FMI 3.0 standard.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn fmi3InstantiateScheduledExecution(
+    instanceName: Fmi3String,
+    _instantiationToken: Fmi3String,
+    _resourcePath: Fmi3String,
+    _visible: Fmi3Boolean,
+    _loggingOn: Fmi3Boolean,
+    instanceEnvironment: *mut c_void,
+    logMessage: Option<Fmi3LogMessageCallback>,
+    _clockUpdate: *mut c_void,
+    _lockPreemption: *mut c_void,
+    _unlockPreemption: *mut c_void,
+) -> Fmi3Instance {
+    let _ = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: NULL or NUL-terminated.
+        let name = unsafe { text(instanceName) }.unwrap_or_else(|| "(NULL)".into());
+        Logger::new_fmi3(logMessage, instanceEnvironment, &name, false).log(
+            Status::Error,
+            Category::StatusError,
+            "fmi3InstantiateScheduledExecution: this FMU does not provide Scheduled Execution",
+        );
+    }));
+    null_mut()
+}
+
+/// Frees the instance in any state. NULL is a no-op.
+///
+/// # Safety
+/// `instance` is NULL or an instance of this library not yet freed.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3FreeInstance(instance: Fmi3Instance) {
+    // SAFETY: same contract as the FMI 2.0 function (the same instance type).
+    unsafe { crate::fmi2::api::common::fmi2FreeInstance(instance) }
+}
+
+/// # Safety
+/// `categories` points to `nCategories` strings when `nCategories > 0`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3SetDebugLogging(
+    instance: Fmi3Instance,
+    loggingOn: Fmi3Boolean,
+    nCategories: usize,
+    categories: *const Fmi3String,
+) -> Fmi3StatusC {
+    call(instance, "fmi3SetDebugLogging", state::SET_DEBUG_LOGGING, |inst| {
+        // SAFETY: per the contract.
+        let cats = unsafe { slice(categories, nCategories, "categories[]") }?;
+        let mut parsed = Vec::with_capacity(cats.len());
+        for &p in cats {
+            // SAFETY: each entry is NULL or a NUL-terminated string.
+            let name = unsafe { text(p) }.ok_or("a category name is NULL")?;
+            let known: Vec<&str> = Category::ALL.iter().map(|c| c.name()).collect();
+            parsed.push(Category::from_name(&name).ok_or_else(|| format!("unknown log category '{name}' (known: {})", known.join(", ")))?);
+        }
+        if parsed.is_empty() {
+            inst.logger.set_all(loggingOn != 0);
+        } else {
+            for cat in parsed {
+                inst.logger.set(cat, loggingOn != 0);
+            }
+        }
+        Ok(Status::Ok)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3EnterInitializationMode(
+    instance: Fmi3Instance,
+    _toleranceDefined: Fmi3Boolean,
+    _tolerance: f64,
+    startTime: f64,
+    stopTimeDefined: Fmi3Boolean,
+    stopTime: f64,
+) -> Fmi3StatusC {
+    call(instance, "fmi3EnterInitializationMode", state::ENTER_INITIALIZATION_MODE, |inst| {
+        inst.setup_experiment(startTime, (stopTimeDefined != 0).then_some(stopTime))?;
+        inst.enter_initialization_mode()
+    })
+}
+
+/// Co-Simulation: to step mode; Model Exchange: to event mode.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3ExitInitializationMode(instance: Fmi3Instance) -> Fmi3StatusC {
+    call(instance, "fmi3ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, |i| i.exit_initialization_mode())
+}
+
+/// Model Exchange only (this Co-Simulation has no event mode).
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3EnterEventMode(instance: Fmi3Instance) -> Fmi3StatusC {
+    call(instance, "fmi3EnterEventMode", state::ENTER_EVENT_MODE, |i| i.enter_event_mode())
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3Terminate(instance: Fmi3Instance) -> Fmi3StatusC {
+    call(instance, "fmi3Terminate", state::TERMINATE, |i| i.terminate())
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3Reset(instance: Fmi3Instance) -> Fmi3StatusC {
+    call(instance, "fmi3Reset", state::RESET, |i| i.reset())
+}
+
+/// All variables are scalars: one value per value reference.
+fn check_n_values(nvr: usize, n_values: usize) -> Result<(), String> {
+    if nvr != n_values {
+        return Err(format!("nValues = {n_values} but nValueReferences = {nvr}: every variable of this FMU is a scalar"));
+    }
+    Ok(())
+}
+
+/// Get values of `kind` as f64 and convert each with `to`.
+///
+/// # Safety
+/// `vr` and `values` point to `nvr` / `n_values` elements.
+unsafe fn get_as<T>(
+    inst: &mut Instance,
+    kind: Kind,
+    vr: *const u32,
+    nvr: usize,
+    values: *mut T,
+    n_values: usize,
+    to: impl Fn(f64) -> T,
+) -> CallResult {
+    check_n_values(nvr, n_values)?;
+    // SAFETY: per the contract.
+    let (vrs, out) = unsafe { (slice(vr, nvr, "valueReferences[]")?, slice_mut(values, n_values, "values[]")?) };
+    let mut vals = vec![0.0; vrs.len()];
+    let status = inst.get_values(kind, vrs, &mut vals)?;
+    for (o, v) in out.iter_mut().zip(vals) {
+        *o = to(v);
+    }
+    Ok(status)
+}
+
+/// Set values of `kind`, converting each with `from` (checked: an out-of-range Int64 is refused).
+///
+/// # Safety
+/// `vr` and `values` point to `nvr` / `n_values` elements.
+unsafe fn set_as<T: Copy>(
+    inst: &mut Instance,
+    kind: Kind,
+    vr: *const u32,
+    nvr: usize,
+    values: *const T,
+    n_values: usize,
+    from: impl Fn(T) -> Result<f64, String>,
+) -> CallResult {
+    check_n_values(nvr, n_values)?;
+    // SAFETY: per the contract.
+    let (vrs, vals) = unsafe { (slice(vr, nvr, "valueReferences[]")?, slice(values, n_values, "values[]")?) };
+    let vals: Vec<f64> = vals.iter().map(|&v| from(v)).collect::<Result<_, _>>()?;
+    inst.set_values(kind, vrs, &vals)
+}
+
+macro_rules! typed {
+    ($get:ident, $set:ident, $t:ty, $kind:expr, $to:expr, $from:expr) => {
+        /// # Safety
+        /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $get(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut $t, nValues: usize) -> Fmi3StatusC {
+            call(instance, stringify!($get), state::GET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                unsafe { get_as(inst, $kind, valueReferences, nValueReferences, values, nValues, $to) }
+            })
+        }
+        /// # Safety
+        /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $set(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const $t, nValues: usize) -> Fmi3StatusC {
+            call(instance, stringify!($set), state::SET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                unsafe { set_as(inst, $kind, valueReferences, nValueReferences, values, nValues, $from) }
+            })
+        }
+    };
+}
+
+/// # Safety
+/// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3SetFloat64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const f64, nValues: usize) -> Fmi3StatusC {
+    call(instance, "fmi3SetFloat64", state::SET_VALUE, |inst| {
+        // SAFETY: per the contract.
+        unsafe { set_as(inst, Kind::Real, valueReferences, nValueReferences, values, nValues, Ok) }
+    })
+}
+
+/// Float64 values; the independent variable `time` (value reference
+/// [`super::xml::TIME_VR`]) reads the instance's time.
+///
+/// # Safety
+/// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3GetFloat64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut f64, nValues: usize) -> Fmi3StatusC {
+    call(instance, "fmi3GetFloat64", state::GET_VALUE, |inst| {
+        check_n_values(nValueReferences, nValues)?;
+        // SAFETY: per the contract.
+        let (vrs, out) = unsafe { (slice(valueReferences, nValueReferences, "valueReferences[]")?, slice_mut(values, nValues, "values[]")?) };
+        let time_vr = super::xml::TIME_VR;
+        if !vrs.contains(&time_vr) || inst.info.index_of(time_vr).is_some() {
+            return inst.get_values(Kind::Real, vrs, out);
+        }
+        let others: Vec<u32> = vrs.iter().copied().filter(|&v| v != time_vr).collect();
+        let mut vals = vec![0.0; others.len()];
+        inst.get_values(Kind::Real, &others, &mut vals)?;
+        let mut it = vals.into_iter();
+        for (o, &vr) in out.iter_mut().zip(vrs) {
+            *o = if vr == time_vr { inst.time } else { it.next().unwrap_or(f64::NAN) };
+        }
+        Ok(Status::Ok)
+    })
+}
+typed!(fmi3GetInt32, fmi3SetInt32, i32, Kind::Integer, |v| v as i32, |v: i32| Ok(f64::from(v)));
+typed!(fmi3GetInt64, fmi3SetInt64, i64, Kind::Enumeration(&ANY_ENUMERATION), |v| v as i64, |v: i64| {
+    // Enumeration codes are small; anything beyond i32 is no item of any type here.
+    i32::try_from(v).map(f64::from).map_err(|_| format!("value {v} is no item of an enumeration of this FMU"))
+});
+typed!(fmi3GetBoolean, fmi3SetBoolean, u8, Kind::Boolean, |v| u8::from(v != 0.0), |v: u8| Ok(if v != 0 { 1.0 } else { 0.0 }));
+
+macro_rules! no_such_type {
+    ($get:ident, $set:ident, $t:ty, $name:literal) => {
+        /// This FMU has no variables of this type: every value reference is refused.
+        ///
+        /// # Safety
+        /// `valueReferences` points to `nValueReferences` elements.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $get(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, _values: *mut $t, _nValues: usize) -> Fmi3StatusC {
+            call(instance, stringify!($get), state::GET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let vrs = unsafe { slice(valueReferences, nValueReferences, "valueReferences[]")? };
+                inst.reject_type($name, vrs)
+            })
+        }
+        /// This FMU has no variables of this type: every value reference is refused.
+        ///
+        /// # Safety
+        /// `valueReferences` points to `nValueReferences` elements.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $set(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, _values: *const $t, _nValues: usize) -> Fmi3StatusC {
+            call(instance, stringify!($set), state::SET_VALUE, |inst| {
+                // SAFETY: per the contract.
+                let vrs = unsafe { slice(valueReferences, nValueReferences, "valueReferences[]")? };
+                inst.reject_type($name, vrs)
+            })
+        }
+    };
+}
+
+no_such_type!(fmi3GetFloat32, fmi3SetFloat32, f32, "Float32");
+no_such_type!(fmi3GetInt8, fmi3SetInt8, i8, "Int8");
+no_such_type!(fmi3GetUInt8, fmi3SetUInt8, u8, "UInt8");
+no_such_type!(fmi3GetInt16, fmi3SetInt16, i16, "Int16");
+no_such_type!(fmi3GetUInt16, fmi3SetUInt16, u16, "UInt16");
+no_such_type!(fmi3GetUInt32, fmi3SetUInt32, u32, "UInt32");
+no_such_type!(fmi3GetUInt64, fmi3SetUInt64, u64, "UInt64");
+no_such_type!(fmi3GetString, fmi3SetString, Fmi3String, "String");
+
+/// No Binary variables.
+///
+/// # Safety
+/// `valueReferences` points to `nValueReferences` elements.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3GetBinary(
+    instance: Fmi3Instance,
+    valueReferences: *const u32,
+    nValueReferences: usize,
+    _valueSizes: *mut usize,
+    _values: *mut *const u8,
+    _nValues: usize,
+) -> Fmi3StatusC {
+    call(instance, "fmi3GetBinary", state::GET_VALUE, |inst| {
+        // SAFETY: per the contract.
+        let vrs = unsafe { slice(valueReferences, nValueReferences, "valueReferences[]")? };
+        inst.reject_type("Binary", vrs)
+    })
+}
+
+/// No Binary variables.
+///
+/// # Safety
+/// `valueReferences` points to `nValueReferences` elements.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3SetBinary(
+    instance: Fmi3Instance,
+    valueReferences: *const u32,
+    nValueReferences: usize,
+    _valueSizes: *const usize,
+    _values: *const *const u8,
+    _nValues: usize,
+) -> Fmi3StatusC {
+    call(instance, "fmi3SetBinary", state::SET_VALUE, |inst| {
+        // SAFETY: per the contract.
+        let vrs = unsafe { slice(valueReferences, nValueReferences, "valueReferences[]")? };
+        inst.reject_type("Binary", vrs)
+    })
+}
+
+fn no_clocks(instance: Fmi3Instance, name: &'static str) -> Fmi3StatusC {
+    call(instance, name, state::RESET, |_| Err("this FMU has no clocks".into()))
+}
+
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3GetClock(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _values: *mut u8) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3GetClock")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3SetClock(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _values: *const u8) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3SetClock")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3GetIntervalDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _intervals: *mut f64, _qualifiers: *mut c_int) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3GetIntervalDecimal")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3GetIntervalFraction(
+    instance: Fmi3Instance,
+    _vr: *const u32,
+    _nvr: usize,
+    _counters: *mut u64,
+    _resolutions: *mut u64,
+    _qualifiers: *mut c_int,
+) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3GetIntervalFraction")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3GetShiftDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _shifts: *mut f64) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3GetShiftDecimal")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3GetShiftFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *mut u64, _resolutions: *mut u64) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3GetShiftFraction")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3SetIntervalDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _intervals: *const f64) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3SetIntervalDecimal")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3SetIntervalFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *const u64, _resolutions: *const u64) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3SetIntervalFraction")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3SetShiftDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _shifts: *const f64) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3SetShiftDecimal")
+}
+/// No clocks.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3SetShiftFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *const u64, _resolutions: *const u64) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3SetShiftFraction")
+}
+/// No scheduled execution.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3ActivateModelPartition(instance: Fmi3Instance, _clockReference: u32, _activationTime: f64) -> Fmi3StatusC {
+    no_clocks(instance, "fmi3ActivateModelPartition")
+}
+
+/// The number of inputs `valueReference` depends on directly (outputs: the ModelStructure's
+/// dependencies; every other variable: 0).
+///
+/// # Safety
+/// `nDependencies` is writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3GetNumberOfVariableDependencies(instance: Fmi3Instance, valueReference: u32, nDependencies: *mut usize) -> Fmi3StatusC {
+    call(instance, "fmi3GetNumberOfVariableDependencies", state::RESET, |inst| {
+        let deps = dependencies(inst, valueReference)?;
+        if nDependencies.is_null() {
+            return Err("nDependencies is NULL".into());
+        }
+        // SAFETY: non-NULL and writable per the contract.
+        unsafe { *nDependencies = deps.len() };
+        Ok(Status::Ok)
+    })
+}
+
+/// The value references an output depends on directly (all scalar: element index 0, kind
+/// `fmi3Dependent`).
+fn dependencies(inst: &Instance, vr: u32) -> Result<Vec<u32>, String> {
+    let info = inst.info;
+    let i = info.index_of(vr).ok_or_else(|| format!("unknown value reference {vr}"))?;
+    let v = &info.variables[i];
+    if v.causality != Causality::Output {
+        return Ok(vec![]);
+    }
+    v.depends_on
+        .iter()
+        .map(|n| info.index_by_name(n).map(|j| info.variables[j].value_reference).ok_or_else(|| format!("{} depends on unknown {n}", v.name)))
+        .collect()
+}
+
+/// # Safety
+/// The four arrays hold `nDependencies` writable elements.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3GetVariableDependencies(
+    instance: Fmi3Instance,
+    dependent: u32,
+    elementIndicesOfDependent: *mut usize,
+    independents: *mut u32,
+    elementIndicesOfIndependents: *mut usize,
+    dependencyKinds: *mut c_int,
+    nDependencies: usize,
+) -> Fmi3StatusC {
+    call(instance, "fmi3GetVariableDependencies", state::RESET, |inst| {
+        let deps = dependencies(inst, dependent)?;
+        if deps.len() != nDependencies {
+            return Err(format!("nDependencies = {nDependencies}, but value reference {dependent} has {} dependencies", deps.len()));
+        }
+        // SAFETY: per the contract.
+        let (a, b, c, d) = unsafe {
+            (
+                slice_mut(elementIndicesOfDependent, nDependencies, "elementIndicesOfDependent[]")?,
+                slice_mut(independents, nDependencies, "independents[]")?,
+                slice_mut(elementIndicesOfIndependents, nDependencies, "elementIndicesOfIndependents[]")?,
+                slice_mut(dependencyKinds, nDependencies, "dependencyKinds[]")?,
+            )
+        };
+        for (k, vr) in deps.into_iter().enumerate() {
+            (a[k], b[k], c[k], d[k]) = (0, vr, 0, FMI3_DEPENDENT);
+        }
+        Ok(Status::Ok)
+    })
+}
+
+/// # Safety
+/// As `fmi2GetFMUstate`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3GetFMUState(instance: Fmi3Instance, FMUState: *mut Fmi3FmuState) -> Fmi3StatusC {
+    // SAFETY: same contract.
+    unsafe { get_fmu_state("fmi3GetFMUState", instance, FMUState) }
+}
+/// # Safety
+/// As `fmi2SetFMUstate`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3SetFMUState(instance: Fmi3Instance, FMUState: Fmi3FmuState) -> Fmi3StatusC {
+    // SAFETY: same contract.
+    unsafe { set_fmu_state("fmi3SetFMUState", instance, FMUState) }
+}
+/// # Safety
+/// As `fmi2FreeFMUstate`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3FreeFMUState(instance: Fmi3Instance, FMUState: *mut Fmi3FmuState) -> Fmi3StatusC {
+    // SAFETY: same contract.
+    unsafe { free_fmu_state("fmi3FreeFMUState", instance, FMUState) }
+}
+/// # Safety
+/// As `fmi2SerializedFMUstateSize`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3SerializedFMUStateSize(instance: Fmi3Instance, FMUState: Fmi3FmuState, size: *mut usize) -> Fmi3StatusC {
+    // SAFETY: same contract.
+    unsafe { serialized_fmu_state_size("fmi3SerializedFMUStateSize", instance, FMUState, size) }
+}
+/// # Safety
+/// As `fmi2SerializeFMUstate`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3SerializeFMUState(instance: Fmi3Instance, FMUState: Fmi3FmuState, serializedState: *mut Fmi3Byte, size: usize) -> Fmi3StatusC {
+    // SAFETY: same contract.
+    unsafe { serialize_fmu_state("fmi3SerializeFMUState", instance, FMUState, serializedState as *mut c_char, size) }
+}
+/// # Safety
+/// As `fmi2DeSerializeFMUstate`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3DeserializeFMUState(
+    instance: Fmi3Instance,
+    serializedState: *const Fmi3Byte,
+    size: usize,
+    FMUState: *mut Fmi3FmuState,
+) -> Fmi3StatusC {
+    // SAFETY: same contract.
+    unsafe { deserialize_fmu_state("fmi3DeserializeFMUState", instance, serializedState as *const c_char, size, FMUState) }
+}
+
+fn refuse(instance: Fmi3Instance, name: &'static str, why: &'static str) -> Fmi3StatusC {
+    call(instance, name, state::RESET, |_| Err(why.into()))
+}
+
+/// Not provided (`providesDirectionalDerivatives = false`).
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn fmi3GetDirectionalDerivative(
+    instance: Fmi3Instance,
+    _unknowns: *const u32,
+    _nUnknowns: usize,
+    _knowns: *const u32,
+    _nKnowns: usize,
+    _seed: *const f64,
+    _nSeed: usize,
+    _sensitivity: *mut f64,
+    _nSensitivity: usize,
+) -> Fmi3StatusC {
+    refuse(instance, "fmi3GetDirectionalDerivative", "directional derivatives are not provided (providesDirectionalDerivatives = false)")
+}
+/// Not provided (`providesAdjointDerivatives = false`).
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub extern "C" fn fmi3GetAdjointDerivative(
+    instance: Fmi3Instance,
+    _unknowns: *const u32,
+    _nUnknowns: usize,
+    _knowns: *const u32,
+    _nKnowns: usize,
+    _seed: *const f64,
+    _nSeed: usize,
+    _sensitivity: *mut f64,
+    _nSensitivity: usize,
+) -> Fmi3StatusC {
+    refuse(instance, "fmi3GetAdjointDerivative", "adjoint derivatives are not provided (providesAdjointDerivatives = false)")
+}
+/// No structural parameters.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3EnterConfigurationMode(instance: Fmi3Instance) -> Fmi3StatusC {
+    refuse(instance, "fmi3EnterConfigurationMode", "this FMU has no structural parameters (no configuration mode)")
+}
+/// No structural parameters.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3ExitConfigurationMode(instance: Fmi3Instance) -> Fmi3StatusC {
+    refuse(instance, "fmi3ExitConfigurationMode", "this FMU has no structural parameters (no configuration mode)")
+}
+/// Not provided (`providesEvaluateDiscreteStates = false`).
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3EvaluateDiscreteStates(instance: Fmi3Instance) -> Fmi3StatusC {
+    refuse(instance, "fmi3EvaluateDiscreteStates", "not provided (providesEvaluateDiscreteStates = false)")
+}
+
+/// Writes `v` through `p` if `p` is not NULL.
+///
+/// # Safety
+/// `p` is NULL or writable.
+unsafe fn put<T>(p: *mut T, v: T) {
+    if !p.is_null() {
+        // SAFETY: per the contract.
+        unsafe { *p = v };
+    }
+}
+
+/// Model Exchange event iteration: nothing discrete to update, no time event.
+///
+/// # Safety
+/// Each pointer is NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
+    instance: Fmi3Instance,
+    discreteStatesNeedUpdate: *mut Fmi3Boolean,
+    terminateSimulation: *mut Fmi3Boolean,
+    nominalsOfContinuousStatesChanged: *mut Fmi3Boolean,
+    valuesOfContinuousStatesChanged: *mut Fmi3Boolean,
+    nextEventTimeDefined: *mut Fmi3Boolean,
+    nextEventTime: *mut f64,
+) -> Fmi3StatusC {
+    call(instance, "fmi3UpdateDiscreteStates", state::NEW_DISCRETE_STATES, |inst| {
+        inst.require_model_exchange()?;
+        inst.refresh_outputs()?;
+        // SAFETY: per the contract.
+        unsafe {
+            for p in [discreteStatesNeedUpdate, terminateSimulation, nominalsOfContinuousStatesChanged, valuesOfContinuousStatesChanged, nextEventTimeDefined] {
+                put(p, 0);
+            }
+            put(nextEventTime, 0.0);
+        }
+        Ok(Status::Ok)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3EnterContinuousTimeMode(instance: Fmi3Instance) -> Fmi3StatusC {
+    call(instance, "fmi3EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, |i| i.enter_continuous_time_mode())
+}
+
+/// Checks the outputs at the current inputs; never asks for an event.
+///
+/// # Safety
+/// `enterEventMode` and `terminateSimulation` are NULL or writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3CompletedIntegratorStep(
+    instance: Fmi3Instance,
+    _noSetFMUStatePriorToCurrentPoint: Fmi3Boolean,
+    enterEventMode: *mut Fmi3Boolean,
+    terminateSimulation: *mut Fmi3Boolean,
+) -> Fmi3StatusC {
+    call(instance, "fmi3CompletedIntegratorStep", state::COMPLETED_INTEGRATOR_STEP, |inst| {
+        inst.require_model_exchange()?;
+        inst.refresh_outputs()?;
+        // SAFETY: per the contract.
+        unsafe {
+            put(enterEventMode, 0);
+            put(terminateSimulation, 0);
+        }
+        Ok(Status::Ok)
+    })
+}
+
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3SetTime(instance: Fmi3Instance, time: f64) -> Fmi3StatusC {
+    call(instance, "fmi3SetTime", state::SET_TIME, |inst| {
+        inst.require_model_exchange()?;
+        inst.set_time(time)
+    })
+}
+
+macro_rules! no_states {
+    ($name:ident, $mask:expr, $what:literal, $t:ty) => {
+        /// No continuous states / event indicators: the length must be 0.
+        #[unsafe(no_mangle)]
+        pub extern "C" fn $name(instance: Fmi3Instance, _values: $t, n: usize) -> Fmi3StatusC {
+            call(instance, stringify!($name), $mask, |inst| inst.require_none($what, n).map(|_| Status::Ok))
+        }
+    };
+}
+
+no_states!(fmi3SetContinuousStates, state::SET_CONTINUOUS_STATES, "nContinuousStates", *const f64);
+no_states!(fmi3GetContinuousStateDerivatives, state::GET_DERIVATIVES, "nContinuousStates", *mut f64);
+no_states!(fmi3GetEventIndicators, state::GET_DERIVATIVES, "nEventIndicators", *mut f64);
+no_states!(fmi3GetContinuousStates, state::GET_CONTINUOUS_STATES, "nContinuousStates", *mut f64);
+no_states!(fmi3GetNominalsOfContinuousStates, state::GET_CONTINUOUS_STATES, "nContinuousStates", *mut f64);
+
+/// 0 event indicators.
+///
+/// # Safety
+/// `nEventIndicators` is writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3GetNumberOfEventIndicators(instance: Fmi3Instance, nEventIndicators: *mut usize) -> Fmi3StatusC {
+    call(instance, "fmi3GetNumberOfEventIndicators", state::RESET, |_| {
+        if nEventIndicators.is_null() {
+            return Err("nEventIndicators is NULL".into());
+        }
+        // SAFETY: non-NULL, writable.
+        unsafe { *nEventIndicators = 0 };
+        Ok(Status::Ok)
+    })
+}
+
+/// 0 continuous states.
+///
+/// # Safety
+/// `nContinuousStates` is writable.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn fmi3GetNumberOfContinuousStates(instance: Fmi3Instance, nContinuousStates: *mut usize) -> Fmi3StatusC {
+    call(instance, "fmi3GetNumberOfContinuousStates", state::RESET, |_| {
+        if nContinuousStates.is_null() {
+            return Err("nContinuousStates is NULL".into());
+        }
+        // SAFETY: non-NULL, writable.
+        unsafe { *nContinuousStates = 0 };
+        Ok(Status::Ok)
+    })
+}
+
+/// Only after event mode, which this Co-Simulation never enters.
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3EnterStepMode(instance: Fmi3Instance) -> Fmi3StatusC {
+    call(instance, "fmi3EnterStepMode", state::ENTER_STEP_MODE, |_| {
+        Err("this FMU's Co-Simulation has no event mode (hasEventMode = false), so there is no step mode to return to".into())
+    })
+}
+
+/// Not provided (`maxOutputDerivativeOrder = 0`).
+#[unsafe(no_mangle)]
+pub extern "C" fn fmi3GetOutputDerivatives(
+    instance: Fmi3Instance,
+    _vr: *const u32,
+    _nvr: usize,
+    _orders: *const i32,
+    _values: *mut f64,
+    _nValues: usize,
+) -> Fmi3StatusC {
+    refuse(instance, "fmi3GetOutputDerivatives", "output derivatives are not provided (maxOutputDerivativeOrder = 0)")
+}
+
+/// One communication step, as `fmi2DoStep`; never returns early, never asks for event
+/// handling or termination; `lastSuccessfulTime` is the end of the step (or, after a failed
+/// step, the end of the last good one).
+///
+/// # Safety
+/// The four output pointers are NULL or writable.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn fmi3DoStep(
+    instance: Fmi3Instance,
+    currentCommunicationPoint: f64,
+    communicationStepSize: f64,
+    _noSetFMUStatePriorToCurrentPoint: Fmi3Boolean,
+    eventHandlingNeeded: *mut Fmi3Boolean,
+    terminateSimulation: *mut Fmi3Boolean,
+    earlyReturn: *mut Fmi3Boolean,
+    lastSuccessfulTime: *mut f64,
+) -> Fmi3StatusC {
+    call(instance, "fmi3DoStep", state::DO_STEP, |inst| {
+        let r = inst.do_step(currentCommunicationPoint, communicationStepSize);
+        // SAFETY: per the contract.
+        unsafe {
+            put(eventHandlingNeeded, 0);
+            put(terminateSimulation, 0);
+            put(earlyReturn, 0);
+            put(lastSuccessfulTime, inst.time);
+        }
+        r
+    })
+}

@@ -1,0 +1,100 @@
+//! A generic FMI 3.0 layer (Co-Simulation and Model Exchange) beside the FMI 2.0 one, on the
+//! same [`crate::fmi2::model::Model`] trait and [`crate::fmi2::variables::ModelInfo`] table:
+//! the exported `fmi3*` functions ([`api`]), their C types ([`types`]) and the FMI 3.0
+//! modelDescription.xml generator ([`xml`]).
+//!
+//! What is shared with FMI 2.0, so that both standards behave alike: the instance (value
+//! checks, output range checks, model messages), the state machine with one mask per function
+//! (FMI 3.0's step mode is the FMI 2.0 `stepComplete` state; event and continuous-time mode are
+//! the Model Exchange states of both), the panic containment of every export, logging by
+//! category, and the FMU state with its serialized byte format and CRC (an FMU state
+//! serialized through FMI 3.0 reads back through FMI 2.0 and vice versa, for the same model).
+//!
+//! Mapping of the table's types: Real → Float64, Integer → Int32, Boolean → Boolean,
+//! Enumeration → Enumeration (accessed with `fmi3GetInt64`/`fmi3SetInt64`). No clocks, no
+//! scheduled execution, no event mode in Co-Simulation (`hasEventMode = false`).
+
+pub mod api;
+pub mod types;
+pub mod xml;
+
+/// Export `fmi3InstantiateModelExchange` and `fmi3InstantiateCoSimulation` for the models
+/// `$registry()` returns (a `fn() -> Vec<&'static ModelInfo>`), at the root of the model
+/// library, as [`crate::export_fmi2!`] does for FMI 2.0. Every other `fmi3*` function is
+/// exported by this crate itself.
+///
+/// ```ignore
+/// fmi_layer::export_fmi3!(crate::registry);
+/// ```
+#[macro_export]
+macro_rules! export_fmi3 {
+    ($registry:path) => {
+        /// `fmi3InstantiateModelExchange` of the FMI 3.0 standard for the models of this library.
+        ///
+        /// # Safety
+        /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn fmi3InstantiateModelExchange(
+            instance_name: $crate::fmi3::types::Fmi3String,
+            instantiation_token: $crate::fmi3::types::Fmi3String,
+            resource_path: $crate::fmi3::types::Fmi3String,
+            _visible: $crate::fmi3::types::Fmi3Boolean,
+            logging_on: $crate::fmi3::types::Fmi3Boolean,
+            instance_environment: *mut ::std::ffi::c_void,
+            log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>,
+        ) -> *mut ::std::ffi::c_void {
+            let models = $registry();
+            // SAFETY: forwarded from the host under the same contract.
+            unsafe {
+                $crate::fmi3::api::instantiate_from(
+                    &models,
+                    $crate::fmi2::instance::Interface::ModelExchange,
+                    instance_name,
+                    instantiation_token,
+                    resource_path,
+                    logging_on,
+                    0,
+                    instance_environment,
+                    log_message,
+                )
+            }
+        }
+
+        /// `fmi3InstantiateCoSimulation` of the FMI 3.0 standard for the models of this library
+        /// (`eventModeUsed` must be false: `hasEventMode = false`; no intermediate update).
+        ///
+        /// # Safety
+        /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
+            instance_name: $crate::fmi3::types::Fmi3String,
+            instantiation_token: $crate::fmi3::types::Fmi3String,
+            resource_path: $crate::fmi3::types::Fmi3String,
+            _visible: $crate::fmi3::types::Fmi3Boolean,
+            logging_on: $crate::fmi3::types::Fmi3Boolean,
+            event_mode_used: $crate::fmi3::types::Fmi3Boolean,
+            _early_return_allowed: $crate::fmi3::types::Fmi3Boolean,
+            _required_intermediate_variables: *const u32,
+            _n_required_intermediate_variables: usize,
+            instance_environment: *mut ::std::ffi::c_void,
+            log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>,
+            _intermediate_update: *mut ::std::ffi::c_void,
+        ) -> *mut ::std::ffi::c_void {
+            let models = $registry();
+            // SAFETY: forwarded from the host under the same contract.
+            unsafe {
+                $crate::fmi3::api::instantiate_from(
+                    &models,
+                    $crate::fmi2::instance::Interface::CoSimulation,
+                    instance_name,
+                    instantiation_token,
+                    resource_path,
+                    logging_on,
+                    event_mode_used,
+                    instance_environment,
+                    log_message,
+                )
+            }
+        }
+    };
+}
