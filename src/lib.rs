@@ -22,10 +22,12 @@ pub mod fidelity;
 pub mod film;
 pub mod gw;
 pub mod joint;
+pub mod min_film;
 pub mod mixed;
 pub mod params;
 pub mod plot;
 pub mod rig;
+pub mod starvation;
 pub mod viscosity;
 
 pub mod fmi2;

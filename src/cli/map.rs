@@ -19,6 +19,7 @@ write the paper's Figure 4:\n  \
 DIR/map.csv           every grid point: load [N], speed [rad/s], speed_rpm, then the result columns of `sweep`\n  \
 DIR/map_lambda.svg    (a) lambda ratio, colour map with contour lines\n  \
 DIR/map_friction.svg  (b) friction coefficient, colour map with contour lines\n  \
+DIR/map_min_lambda.svg  lambda ratio from the minimum film h_min (extension: Pan–Hamrock ratio on h_c)\n  \
 DIR/map_curves.svg    μ and λ against speed at the paper's loads 5, 10, 20, 40 and 60 kN\n\
 The plots mark the rig experiments' operating region: 5-60 kN and speeds up to the peak of the \
 fastest stroke (1 Hz, ±40°: 2π·1 Hz·40° = 4.39 rad/s = 41.9 rpm); the strokes pass through \
@@ -145,13 +146,23 @@ pub fn write_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
         &[0.02, 0.05, 0.08, 0.1, 0.11, 0.115],
         |o| o.friction_coefficient,
     )?;
+    let min_lambda = map_plot(
+        g,
+        &ops,
+        "lambda ratio from the minimum film, h_min / √(σ² + σ_b²) (Pan–Hamrock h_min/h_c, extrapolated)",
+        Axis::log("λ_min [-]"),
+        &[0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0, 20.0],
+        |o| o.min_lambda_ratio,
+    )?;
     let curves = curves_plot(joint, g)?;
     let dir = output_dir(dir)?;
-    let paths: Vec<PathBuf> = ["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"].iter().map(|f| dir.join(f)).collect();
+    let paths: Vec<PathBuf> =
+        ["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg", "map_min_lambda.svg"].iter().map(|f| dir.join(f)).collect();
     write_atomic(&paths[0], |w| points_csv(w, &ops))?;
     write_text(&paths[1], &lambda)?;
     write_text(&paths[2], &friction)?;
     write_text(&paths[3], &curves)?;
+    write_text(&paths[4], &min_lambda)?;
     Ok(paths)
 }
 

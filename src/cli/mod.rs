@@ -16,6 +16,7 @@ pub mod figures;
 pub mod figures_index;
 pub mod figures_plots;
 pub mod figures_rig;
+pub mod figures_starvation;
 pub mod map;
 pub mod output;
 pub mod params_cmd;

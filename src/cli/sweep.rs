@@ -18,13 +18,13 @@ use std::path::{Path, PathBuf};
     about = "Evaluate the model at every row of a CSV file of loads and speeds",
     long_about = "Evaluate the model at every row of a CSV file, on every core, keeping the row order.\n\n\
 INPUT: a header row naming at least the columns `load` (N, > 0) and `speed` (angular velocity \
-in rad/s; the model uses its magnitude), in any order. Other columns are allowed and copied \
+in rad/s; the model uses its magnitude), in any order, and optionally `temperature` (lubricant temperature in K, per row; otherwise --temperature or the parameter file's). Other columns are allowed and copied \
 through unchanged (e.g. a case id), but must not reuse an output column's name. Spaces around \
 fields are ignored; blank lines and lines starting with # are skipped.\n\n\
 OUTPUT: the input columns as given, followed by friction_coefficient (-), torque (N·m, eq. 11's \
 magnitude μRP_T), film_thickness (m, central h_c), lambda_ratio (-), fluid_load_fraction (1/γ1), \
 asperity_load_fraction (1/γ2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-) \
-and regime (boundary | mixed | full-film). Numbers are printed in full (shortest text that \
+regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c) and min_lambda_ratio (-, eq. 21 with h_min). Numbers are printed in full (shortest text that \
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
 A malformed row (missing field, non-numeric, non-finite, load <= 0) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
@@ -59,6 +59,8 @@ pub struct Row {
     pub fields: Vec<String>,
     pub load: f64,
     pub speed: f64,
+    /// Lubricant temperature (K) of this row, from the optional `temperature` column.
+    pub temperature: Option<f64>,
 }
 
 /// The parsed input: its header and rows.
@@ -132,6 +134,7 @@ pub fn parse(mut input: impl Read, file: &str) -> Result<Table> {
         }
     };
     let (il, is) = (find("load")?, find("speed")?);
+    let it = if header.iter().any(|h| h == "temperature") { Some(find("temperature")?) } else { None };
     if let Some(clash) = header.iter().find(|h| RESULT_COLUMNS.contains(&h.as_str())) {
         return Err(bad(header_line, format!("input column `{clash}` has the name of an output column; rename it")));
     }
@@ -167,13 +170,33 @@ pub fn parse(mut input: impl Read, file: &str) -> Result<Table> {
             return Err(bad(line, format!("column load = {} N is invalid: the load must be > 0 N", &rec[il])));
         }
         let speed = num(is, "speed", "rad/s")?;
-        rows.push(Row { line, fields: rec.iter().map(str::to_string).collect(), load, speed });
+        let temperature = it.map(|i| num(i, "temperature", "K")).transpose()?;
+        rows.push(Row { line, fields: rec.iter().map(str::to_string).collect(), load, speed, temperature });
     }
     Ok(Table { header, rows })
 }
 
-/// Evaluate every row on every core; results are in row order.
+/// The joints of the rows' distinct temperatures (rows without one use `joint`), each
+/// validated; a bad temperature is an error naming its line.
+fn joints_by_temperature(joint: &Joint, rows: &[Row], file: &str) -> Result<std::collections::HashMap<u64, Joint>> {
+    let mut out = std::collections::HashMap::new();
+    for row in rows {
+        if let Some(t) = row.temperature {
+            if let std::collections::hash_map::Entry::Vacant(e) = out.entry(t.to_bits()) {
+                let mut p = *joint.params();
+                p.lubricant.temperature = t;
+                let j = Joint::new(&p).map_err(|err| CliError::Input { file: file.to_string(), line: row.line, message: err.to_string() })?;
+                e.insert(j);
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Evaluate every row on every core; results are in row order. A row with a `temperature`
+/// is evaluated with the lubricant at that temperature.
 pub fn evaluate(joint: &Joint, rows: &[Row], file: &str) -> Result<Vec<OperatingPoint>> {
+    let by_t = joints_by_temperature(joint, rows, file)?;
     let bar = if rows.len() >= 20_000 { ProgressBar::new(rows.len() as u64) } else { ProgressBar::hidden() };
     bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} points, {per_sec}, eta {eta}").expect("valid template"));
     let out = rows
@@ -182,6 +205,7 @@ pub fn evaluate(joint: &Joint, rows: &[Row], file: &str) -> Result<Vec<Operating
             let r: Result<Vec<_>> = chunk
                 .iter()
                 .map(|row| {
+                    let joint = row.temperature.map_or(joint, |t| &by_t[&t.to_bits()]);
                     joint.evaluate(row.load, row.speed).map_err(|e| CliError::Input {
                         file: file.to_string(),
                         line: row.line,
@@ -246,6 +270,10 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     let file = cmd.input.display().to_string();
     let results = if cmd.fidelity.is_full()? {
         evaluate(&joint, &table.rows, &file)?
+    } else if table.rows.iter().any(|r| r.temperature.is_some()) {
+        return Err(CliError::Invalid(
+            "a `temperature` column needs --fidelity full (a table or boundary level is built for one temperature; use --temperature)".into(),
+        ));
     } else {
         let loads = range_of(table.rows.iter().map(|r| r.load), (1.0, 2.0));
         let speeds = range_of(table.rows.iter().map(|r| r.speed.abs()), (1e-3, 1.0));

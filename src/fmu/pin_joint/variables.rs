@@ -9,6 +9,10 @@
 //! | 34 | 200 | `zero_velocity.speed_band` |
 //! | 35 | 300 | `fidelity` (Integer: 0 full, 1 table, 2 boundary, 3 auto) |
 //! | 36–40 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
+//! | 41 | 4 | input `temperature` (appended last so the earlier indices keep their meaning) |
+//!
+//! (Indices as of the 12 outputs and 26 parameters: outputs 3–14 → value references 10–21,
+//! parameters 15–40 → 100–125, then 200, 300–305 and the `temperature` input, vr 4.)
 
 use super::zero_speed::DEFAULT_SPEED_BAND;
 use crate::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
@@ -26,7 +30,9 @@ pub const ENVELOPE_LOAD_MIN: usize = TOLERANCE + 1;
 pub const ENVELOPE_LOAD_MAX: usize = TOLERANCE + 2;
 pub const ENVELOPE_SPEED_MIN: usize = TOLERANCE + 3;
 pub const ENVELOPE_SPEED_MAX: usize = TOLERANCE + 4;
-pub const COUNT: usize = ENVELOPE_SPEED_MAX + 1;
+/// The `temperature` input (K): the lubricant temperature (overrides `lubricant.temperature`).
+pub const TEMPERATURE: usize = ENVELOPE_SPEED_MAX + 1;
+pub const COUNT: usize = TEMPERATURE + 1;
 
 /// Start values of the fidelity parameters: full solve; tolerance 1e-4; the paper's rig
 /// envelope 5–60 kN, 0.01–10 rad/s.
@@ -56,10 +62,12 @@ pub enum Output {
     SommerfeldNumber,
     PowerLoss,
     DissipatedEnergy,
+    MinFilmThickness,
+    MinLambdaRatio,
 }
 
 impl Output {
-    pub const ALL: [Output; 10] = [
+    pub const ALL: [Output; 12] = [
         Output::Torque,
         Output::FrictionCoefficient,
         Output::FilmThickness,
@@ -70,6 +78,8 @@ impl Output {
         Output::SommerfeldNumber,
         Output::PowerLoss,
         Output::DissipatedEnergy,
+        Output::MinFilmThickness,
+        Output::MinLambdaRatio,
     ];
 }
 
@@ -78,24 +88,24 @@ const RPM: f64 = 9.549296585513721; // 60/(2π)
 
 /// Every unit used by a PinJoint variable, with its SI base units and display units.
 pub static UNITS: &[UnitDef] = &[
-    UnitDef { name: "rad", kg: 0, m: 0, s: 0, rad: 1, display: &[DisplayUnit { name: "deg", factor: DEG, offset: 0.0 }] },
+    UnitDef { name: "rad", kg: 0, m: 0, s: 0, rad: 1, k: 0, display: &[DisplayUnit { name: "deg", factor: DEG, offset: 0.0 }] },
     UnitDef {
         name: "rad/s",
         kg: 0,
         m: 0,
         s: -1,
         rad: 1,
-        display: &[DisplayUnit { name: "deg/s", factor: DEG, offset: 0.0 }, DisplayUnit { name: "rpm", factor: RPM, offset: 0.0 }],
+        k: 0, display: &[DisplayUnit { name: "deg/s", factor: DEG, offset: 0.0 }, DisplayUnit { name: "rpm", factor: RPM, offset: 0.0 }],
     },
-    UnitDef { name: "N", kg: 1, m: 1, s: -2, rad: 0, display: &[DisplayUnit { name: "kN", factor: 1e-3, offset: 0.0 }] },
-    UnitDef { name: "N.m", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kN.m", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "N", kg: 1, m: 1, s: -2, rad: 0, k: 0, display: &[DisplayUnit { name: "kN", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "N.m", kg: 1, m: 2, s: -2, rad: 0, k: 0, display: &[DisplayUnit { name: "kN.m", factor: 1e-3, offset: 0.0 }] },
     UnitDef {
         name: "m",
         kg: 0,
         m: 1,
         s: 0,
         rad: 0,
-        display: &[DisplayUnit { name: "mm", factor: 1e3, offset: 0.0 }, DisplayUnit { name: "µm", factor: 1e6, offset: 0.0 }],
+        k: 0, display: &[DisplayUnit { name: "mm", factor: 1e3, offset: 0.0 }, DisplayUnit { name: "µm", factor: 1e6, offset: 0.0 }],
     },
     UnitDef {
         name: "Pa",
@@ -103,13 +113,15 @@ pub static UNITS: &[UnitDef] = &[
         m: -1,
         s: -2,
         rad: 0,
-        display: &[DisplayUnit { name: "MPa", factor: 1e-6, offset: 0.0 }, DisplayUnit { name: "GPa", factor: 1e-9, offset: 0.0 }],
+        k: 0, display: &[DisplayUnit { name: "MPa", factor: 1e-6, offset: 0.0 }, DisplayUnit { name: "GPa", factor: 1e-9, offset: 0.0 }],
     },
-    UnitDef { name: "Pa.s", kg: 1, m: -1, s: -1, rad: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
-    UnitDef { name: "1/Pa", kg: -1, m: 1, s: 2, rad: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
-    UnitDef { name: "1/m2", kg: 0, m: -2, s: 0, rad: 0, display: &[] },
-    UnitDef { name: "W", kg: 1, m: 2, s: -3, rad: 0, display: &[] },
-    UnitDef { name: "J", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "Pa.s", kg: 1, m: -1, s: -1, rad: 0, k: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
+    UnitDef { name: "1/Pa", kg: -1, m: 1, s: 2, rad: 0, k: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
+    UnitDef { name: "1/m2", kg: 0, m: -2, s: 0, rad: 0, k: 0, display: &[] },
+    UnitDef { name: "W", kg: 1, m: 2, s: -3, rad: 0, k: 0, display: &[] },
+    UnitDef { name: "J", kg: 1, m: 2, s: -2, rad: 0, k: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "K", kg: 0, m: 0, s: 0, rad: 0, k: 1, display: &[DisplayUnit { name: "degC", factor: 1.0, offset: -273.15 }] },
+    UnitDef { name: "1/m", kg: 0, m: -1, s: 0, rad: 0, k: 0, display: &[] },
 ];
 
 fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>, start: f64, min: Option<f64>, d: &str) -> Variable {
@@ -134,7 +146,7 @@ fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>,
 type OutputRow = (&'static str, Option<&'static str>, Option<&'static str>, Option<f64>, Option<f64>, &'static [&'static str], &'static str);
 
 fn output(o: Output) -> Variable {
-    const SPEED_LOAD: [&str; 2] = ["angular_velocity", "load"];
+    const SPEED_LOAD: [&str; 3] = ["angular_velocity", "load", "temperature"];
     let (name, unit, display, min, max, deps, d): OutputRow = match o {
         Output::Torque => ("torque", Some("N.m"), None, None, None, &SPEED_LOAD,
             "Friction torque on the pin, opposite to the angular velocity: -sign(omega) mu R P_T (eq. 11); linear in omega inside the zero-velocity band"),
@@ -156,6 +168,10 @@ fn output(o: Output) -> Variable {
             "Frictional power loss |torque * angular_velocity|"),
         Output::DissipatedEnergy => ("dissipated_energy", Some("J"), Some("kJ"), Some(0.0), None, &[],
             "Energy dissipated by friction since initialization: sum over the steps taken of power_loss * step size (inputs held over each step)"),
+        Output::MinFilmThickness => ("min_film_thickness", Some("m"), Some("µm"), Some(0.0), None, &SPEED_LOAD,
+            "Minimum film thickness h_min: h_c times Pan and Hamrock's (1989) line-contact ratio h_min/h_c under eq. 13's substitution (extension; an extrapolation for this joint, 0 at rest)"),
+        Output::MinLambdaRatio => ("min_lambda_ratio", None, None, Some(0.0), None, &SPEED_LOAD,
+            "Lambda ratio from the minimum film, h_min/sqrt(sigma^2 + sigma_b^2) (eq. 21 as printed, with h_min)"),
     };
     Variable {
         name: name.into(),
@@ -183,6 +199,7 @@ pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
         (_, "Pa") => Some("MPa"),
         (_, "Pa.s") => Some("mPa.s"),
         (_, "1/Pa") => Some("1/GPa"),
+        (_, "K") => Some("degC"),
         _ => None,
     }
 }
@@ -201,7 +218,14 @@ pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
         start: Some(s.default_value()),
         min,
         max,
-        description: format!("{} ({}, {}; must be {})", s.description, s.symbol, s.source, s.range.describe()),
+        description: if s.section == "lubricant" && s.key == "temperature" {
+            format!(
+                "{} ({}, {}; must be {}). In this FMU the input `temperature` sets the lubricant temperature; this parameter is not used",
+                s.description, s.symbol, s.source, s.range.describe()
+            )
+        } else {
+            format!("{} ({}, {}; must be {})", s.description, s.symbol, s.source, s.range.describe())
+        },
         depends_on: vec![],
     }
 }
@@ -276,6 +300,12 @@ pub fn table() -> Vec<Variable> {
     v.push(real("envelope.load_max", 303, Some("N"), l1, "Largest load of the envelope (> envelope.load_min)"));
     v.push(real("envelope.speed_min", 304, Some("rad/s"), w0, "Smallest speed magnitude |omega| of the envelope (> 0; omega = 0 is handled exactly)"));
     v.push(real("envelope.speed_max", 305, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
+    v.push(Variable {
+        min: Some(crate::params::MIN_TEMPERATURE),
+        max: Some(crate::params::MAX_TEMPERATURE),
+        ..input("temperature", 4, "K", Some("degC"), crate::params::DEFAULT_TEMPERATURE, None,
+            "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at              lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's).              Must be in (138.15, 673.15] K. A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)")
+    });
     debug_assert_eq!(v.len(), COUNT);
     v
 }
