@@ -304,7 +304,7 @@ pub fn table() -> Vec<Variable> {
         min: Some(crate::params::MIN_TEMPERATURE),
         max: Some(crate::params::MAX_TEMPERATURE),
         ..input("temperature", 4, "K", Some("degC"), crate::params::DEFAULT_TEMPERATURE, None,
-            "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at              lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's).              Must be in (138.15, 673.15] K. A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)")
+            "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)")
     });
     debug_assert_eq!(v.len(), COUNT);
     v

@@ -317,7 +317,7 @@ pub fn table() -> Vec<Variable> {
         "Smallest speed magnitude |omega| of the envelope (> 0; slower speeds, around every reversal, are answered by the full solve)"));
     v.push(fid("envelope.speed_max", 405, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
     let mut t = real("temperature", 3, Causality::Input, Variability::Continuous, Some("K"), Some("degC"),
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at          lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's).          Must be in (138.15, 673.15] K. Held over each step; a change rebuilds the friction model and continues the integration          from the current state (a table level is re-tabulated)");
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in (138.15, 673.15] K. Held over each step; a change rebuilds the friction model and continues the integration from the current state (a table level is re-tabulated)");
     t.start = Some(crate::params::DEFAULT_TEMPERATURE);
     t.min = Some(crate::params::MIN_TEMPERATURE);
     t.max = Some(crate::params::MAX_TEMPERATURE);
