@@ -23,7 +23,7 @@ use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
 /// The inlet layers shown, m: `None` is the paper's flooded model.
-pub const LAYERS: [Option<f64>; 4] = [None, Some(10e-6), Some(5e-6), Some(4e-6)];
+pub const LAYERS: [Option<f64>; 4] = [None, Some(10e-6), Some(4e-6), Some(3.4e-6)];
 /// Loads of the summary, N (the paper's Figure 4 statements are over 5–60 kN).
 pub const SUMMARY_LOADS: [f64; 3] = [5e3, 20e3, 60e3];
 /// μ threshold of the paper's Figure 4 statement ("friction coefficients do not fall below 0.11").

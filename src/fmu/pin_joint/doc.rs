@@ -73,7 +73,7 @@ the paper's room temperature, assumed). Roelands' temperature relation ln(&eta;<
 f = [(135 + &theta;)/(135 + &theta;<sub>ref</sub>)]<sup>&minus;S<sub>0</sub></sup> (&theta; in &deg;C, &eta;<sub>&infin;</sub> = 6.31e-5 Pa&middot;s of eq. 5), and at fixed Roelands Z
 &alpha;(T) = &alpha;(T<sub>ref</sub>)&middot;f. Default S<sub>0</sub> = 1.262: Roelands' relation through an ISO VG 100 mineral oil
 (100 mm&sup2;/s at 40 &deg;C, 11.1 mm&sup2;/s at 100 &deg;C): a class-typical base oil, not the paper's grease. At T = T<sub>ref</sub> the outputs are
-exactly the paper model's. With the defaults &eta;<sub>0</sub> is 11.8 Pa&middot;s at &minus;55 &deg;C and 2.6 mPa&middot;s at +70 &deg;C (12.45 mPa&middot;s at 20 &deg;C).
+exactly the paper model's. With the defaults &eta;<sub>0</sub> is 12.25 Pa&middot;s at &minus;55 &deg;C and 2.59 mPa&middot;s at +70 &deg;C (12.45 mPa&middot;s at 20 &deg;C).
 Below about 0 &deg;C this is an extrapolation of the relation; &tau;<sub>L0</sub>, &beta;<sub>0</sub> and &mu;<sub>c</sub> do not change with temperature here.
 The parameter <code>lubricant.temperature</code> exists because every parameter-file key is a parameter; in the FMU the input sets the temperature.</li>
 <li><b>Starved inlet</b> (parameters <code>starvation.inlet_layer_inverse</code> = 1/h<sub>oil</sub> in 1/m, default 0 = fully flooded, the paper's model;
