@@ -158,7 +158,7 @@ pub fn write(dir: &Path, params: &Params) -> Result<Vec<PathBuf>> {
             Axis::linear("time in the stroke [s]"),
             Axis::linear("torque magnitude μRP [N·m]"),
         )
-        .legend(Corner::LowerLeft);
+        .legend(Corner::UpperLeft);
         for layer in LAYERS {
             let joint = joint_with(params, layer)?;
             let mut pts = Vec::new();
@@ -243,7 +243,9 @@ mod tests {
     #[test]
     fn writes_every_file_and_flooded_row_is_the_paper_model() {
         let d = tempfile::tempdir().unwrap();
-        let paths = write(d.path(), &Params::default()).unwrap();
+        // PINJOINT_FIGURES_OUT=DIR keeps a copy of the files (to look at them).
+        let dir = std::env::var_os("PINJOINT_FIGURES_OUT").map_or_else(|| d.path().to_path_buf(), std::path::PathBuf::from);
+        let paths = write(&dir, &Params::default()).unwrap();
         for p in &paths {
             assert!(std::fs::metadata(p).unwrap().len() > 100, "{}", p.display());
         }
