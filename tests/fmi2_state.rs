@@ -129,7 +129,7 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
     assert_eq!(deserialize(c, &b), Err(ERROR));
     assert!(h.last().contains("PinJoint state version 7"), "{}", h.last());
     // A valid checksum over an impossible value (negative load).
-    let load_at = model_at + 1 + 2 + 8 * (21 + 1 + 2);
+    let load_at = model_at + 1 + 2 + 8 * (pinjoint::params::PARAMS.len() + 1 + 2);
     let mut b = bytes.clone();
     b[load_at..load_at + 8].copy_from_slice(&(-1.0f64).to_bits().to_le_bytes());
     fix_crc(&mut b);
