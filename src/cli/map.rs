@@ -146,7 +146,21 @@ pub fn write_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
         &[0.02, 0.05, 0.08, 0.1, 0.11, 0.115],
         |o| o.friction_coefficient,
     )?;
-    let min_lambda = map_plot(
+    let curves = curves_plot(joint, g)?;
+    let dir = output_dir(dir)?;
+    let paths: Vec<PathBuf> = ["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"].iter().map(|f| dir.join(f)).collect();
+    write_atomic(&paths[0], |w| points_csv(w, &ops))?;
+    write_text(&paths[1], &lambda)?;
+    write_text(&paths[2], &friction)?;
+    write_text(&paths[3], &curves)?;
+    Ok(paths)
+}
+
+/// The map of λ from the minimum film (an extension, [`pinjoint::min_film`]) into `dir`:
+/// written by the `map` command beside the paper's Figure 4 files.
+pub fn write_min_lambda_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<PathBuf> {
+    let ops = evaluate(joint, g)?;
+    let svg = map_plot(
         g,
         &ops,
         "lambda ratio from the minimum film, h_min / √(σ² + σ_b²) (Pan–Hamrock h_min/h_c, extrapolated)",
@@ -154,16 +168,9 @@ pub fn write_map(dir: &Path, joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
         &[0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0, 20.0],
         |o| o.min_lambda_ratio,
     )?;
-    let curves = curves_plot(joint, g)?;
-    let dir = output_dir(dir)?;
-    let paths: Vec<PathBuf> =
-        ["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg", "map_min_lambda.svg"].iter().map(|f| dir.join(f)).collect();
-    write_atomic(&paths[0], |w| points_csv(w, &ops))?;
-    write_text(&paths[1], &lambda)?;
-    write_text(&paths[2], &friction)?;
-    write_text(&paths[3], &curves)?;
-    write_text(&paths[4], &min_lambda)?;
-    Ok(paths)
+    let path = output_dir(dir)?.join("map_min_lambda.svg");
+    write_text(&path, &svg)?;
+    Ok(path)
 }
 
 pub fn run(cmd: &MapCmd) -> Result<()> {
@@ -182,5 +189,7 @@ pub fn run(cmd: &MapCmd) -> Result<()> {
         }
     }
     let grid = Grid { loads: lin_space(p0, p1, cmd.loads), speeds: log_space(n0 * RAD_S_PER_RPM, n1 * RAD_S_PER_RPM, cmd.speeds) };
-    report_written(&write_map(&cmd.output, &joint, &grid)?)
+    let mut paths = write_map(&cmd.output, &joint, &grid)?;
+    paths.push(write_min_lambda_map(&cmd.output, &joint, &grid)?);
+    report_written(&paths)
 }
