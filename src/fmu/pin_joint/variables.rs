@@ -4,15 +4,12 @@
 //! | index | value references | variables |
 //! |---|---|---|
 //! | 0–2 | 1–3 | inputs `angle`, `angular_velocity`, `load` |
-//! | 3–12 | 10–19 | outputs ([`Output`] order) |
-//! | 13–33 | 100–120 | the 21 parameters of [`crate::params::PARAMS`], `section.key` |
-//! | 34 | 200 | `zero_velocity.speed_band` |
-//! | 35 | 300 | `fidelity` (Integer: 0 full, 1 table, 2 boundary, 3 auto) |
-//! | 36–40 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
-//! | 41 | 4 | input `temperature` (appended last so the earlier indices keep their meaning) |
-//!
-//! (Indices as of the 12 outputs and 26 parameters: outputs 3–14 → value references 10–21,
-//! parameters 15–40 → 100–125, then 200, 300–305 and the `temperature` input, vr 4.)
+//! | 3–14 | 10–21 | outputs ([`Output`] order; `min_film_thickness`, `min_lambda_ratio` last) |
+//! | 15–40 | 100–125 | the 26 parameters of [`crate::params::PARAMS`], `section.key` |
+//! | 41 | 200 | `zero_velocity.speed_band` |
+//! | 42 | 300 | `fidelity` (Integer: 0 full, 1 table, 2 boundary, 3 auto) |
+//! | 43–47 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
+//! | 48 | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) |
 
 use super::zero_speed::DEFAULT_SPEED_BAND;
 use crate::fmi2::variables::{Causality, DisplayUnit, Initial, Kind, UnitDef, Variability, Variable};
