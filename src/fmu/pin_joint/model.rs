@@ -211,6 +211,8 @@ impl PinJointModel {
     fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
         check_band(self.band)?;
         if self.evaluator.is_none() {
+            // Every parameter is checked as set, `lubricant.temperature` too (the input replaces it).
+            self.params.validate().map_err(|e| e.to_string())?;
             let params = self.effective_params();
             Joint::new(&params).map_err(|e| e.to_string())?;
             let ev = self.fidelity.build(&params)?;

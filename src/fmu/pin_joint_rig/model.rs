@@ -129,6 +129,8 @@ impl Settings {
 
     /// The validated configuration; an error names the parameter, its value and unit.
     pub fn config(&self) -> ModelResult<RigConfig> {
+        // Every model parameter is checked as set, `lubricant.temperature` too (the input replaces it).
+        self.cfg.model.validate().map_err(|e| e.to_string())?;
         let mut cfg = self.cfg;
         for key in ["frequency", "amplitude"] {
             let s = rig_spec(key);
