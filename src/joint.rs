@@ -3,8 +3,8 @@
 
 use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
-use crate::mixed::{solve, FilmGroups};
-use crate::params::{ParamError, Params};
+use crate::mixed::{solve_starved, FilmGroups};
+use crate::params::{Lubricant, ParamError, Params};
 use crate::solve_start::StartTable;
 use crate::viscosity::{limiting_shear_stress, ln_roelands_with};
 use serde::Serialize;
@@ -104,6 +104,12 @@ pub struct OperatingPoint {
     /// ln(x1/x2) of the load-sharing solve (−∞ at rest): a warm start for the next call.
     pub logit: f64,
     pub regime: Regime,
+    /// h_min, minimum film thickness, m: h_c times Pan & Hamrock's line-contact ratio
+    /// h_min/h_c under eq. 13's substitution ([`crate::min_film`]; an extrapolation here, 0 at
+    /// rest). Extension: the paper gives no h_min relation.
+    pub min_film_thickness: f64,
+    /// λ_min = h_min/√(σ² + σ_b²), eq. 21 as printed (with h_min).
+    pub min_lambda_ratio: f64,
 }
 
 /// A friction torque of magnitude `torque` given its sign: opposite to `omega` (eq. 11), zero
@@ -161,6 +167,15 @@ pub struct Joint {
     capacity: f64,
     /// Converged logits over (ln P_T, ln u): the deterministic start of a cold solve.
     start: StartTable,
+    /// The lubricant at its temperature ([`crate::viscosity::at_temperature`]; `params.lubricant`
+    /// itself, bit for bit, at the reference temperature).
+    lub: Lubricant,
+    /// ln W' at P_T = 1 N and ln(η0/(2E'R')) (mean-velocity U at u = 1 m/s) and ln G, for h_min.
+    ln_w_unit: f64,
+    ln_u_mean_unit: f64,
+    ln_g: f64,
+    /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`).
+    starved: Option<crate::mixed::StarvedInlet>,
 }
 
 impl Joint {
@@ -178,8 +193,21 @@ impl Joint {
             });
         }
         crate::gw::warm_up();
-        let (g, lub) = (&params.geometry, &params.lubricant);
+        let lub = crate::viscosity::at_temperature(&params.lubricant);
+        if !(lub.viscosity.is_finite() && lub.viscosity > 0.0 && lub.pressure_viscosity_coefficient.is_finite()) {
+            return Err(ParamError::OutOfRange {
+                name: "lubricant.temperature".into(),
+                value: params.lubricant.temperature,
+                unit: "K",
+                range: format!(
+                    "such that eta_0(T) stays a finite positive viscosity (here {:e} Pa.s; Roelands' temperature relation, reference {} K)",
+                    lub.viscosity, params.lubricant.reference_temperature
+                ),
+            });
+        }
+        let (g, lub) = (&params.geometry, &lub);
         let (r_red, e_eff) = (reduced_radius(g), effective_modulus(&params.materials));
+        let st = &params.starvation;
         let mut joint = Self {
             params: *params,
             r_red,
@@ -190,12 +218,18 @@ impl Joint {
             hertz_unit: hertz(1.0, r_red, e_eff, g.bush_length),
             ln_eta_ratio: (lub.roelands_viscosity_limit / lub.viscosity).ln(),
             capacity: asperity_capacity(&params.surface, &AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length)),
+            lub: *lub,
+            ln_w_unit: (1.0 / (e_eff * r_red * g.bush_length)).ln(),
+            ln_u_mean_unit: (0.5 * lub.viscosity / (e_eff * r_red)).ln(),
+            ln_g: (lub.pressure_viscosity_coefficient * e_eff).ln(),
+            starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
             start: StartTable::empty(),
         };
+        // The deterministic start of a cold solve, from the same (starved or flooded) solve.
         joint.start = StartTable::build(joint.capacity, |ln_p, ln_u, warm| {
             let asp = joint.asp_unit.at_load_ratio(ln_p);
             let film = joint.film_unit.at_ratio(ln_p, ln_u);
-            solve(Some(&film), &asp, &joint.params.surface, warm).logit
+            solve_starved(Some(&film), &asp, &joint.params.surface, warm, joint.starved).logit
         });
         Ok(joint)
     }
@@ -204,11 +238,24 @@ impl Joint {
     /// operating point alone ([`crate::solve_start`]); NaN at rest.
     pub fn cold_start(&self, load: f64, omega: f64) -> f64 {
         let u = omega.abs() * self.params.geometry.pin_radius;
-        if u > 0.0 { self.start.guess(load.ln(), u.ln()) } else { f64::NAN }
+        if u > 0.0 { self.start.guess(load.abs().ln(), u.ln()) } else { f64::NAN }
     }
 
     pub fn params(&self) -> &Params {
         &self.params
+    }
+    /// The lubricant at its temperature: η0 and α from [`crate::viscosity::at_temperature`]
+    /// (exactly `params().lubricant` at the reference temperature).
+    pub fn lubricant(&self) -> &Lubricant {
+        &self.lub
+    }
+
+    /// h_min (m) for a central film `h_c` (m) at `load` (N), `omega` (rad/s) and fluid share
+    /// `fluid_fraction` (1/γ1): [`crate::min_film`]. 0 where there is no fluid film.
+    pub fn min_film(&self, load: f64, omega: f64, film_thickness: f64, fluid_fraction: f64) -> f64 {
+        let u = omega.abs() * self.params.geometry.pin_radius;
+        let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + load.ln(), self.ln_u_mean_unit + u.ln(), self.ln_g, fluid_fraction.ln());
+        film_thickness * ln_r.exp()
     }
     /// R' (m).
     pub fn reduced_radius(&self) -> f64 {
@@ -235,7 +282,7 @@ impl Joint {
     /// of an operating point that do not need the load-sharing solve.
     pub fn load_speed(&self, load: f64, omega: f64) -> LoadSpeed {
         let load = load.abs();
-        let (g, lub) = (&self.params.geometry, &self.params.lubricant);
+        let (g, lub) = (&self.params.geometry, &self.lub);
         // Eq. 6 scaled from 1 N: a, p_m, p0 ∝ √P_T.
         let sqrt_p = load.sqrt();
         let hertz = crate::contact::Hertz {
@@ -297,7 +344,7 @@ impl Joint {
             None if u > 0.0 => Some(self.start.guess(ln_p, ln_u)),
             None => None,
         };
-        let ls = solve(film.as_ref(), &asp, &p.surface, guess);
+        let ls = solve_starved(film.as_ref(), &asp, &p.surface, guess, self.starved);
 
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (MODEL_NOTES), whatever η.
@@ -332,7 +379,11 @@ impl Joint {
             asperity_friction_coefficient: mu_asperity,
             logit: ls.logit,
             regime: Regime::from_shares(ls.fluid_fraction, ls.asperity_fraction),
+            min_film_thickness: 0.0,
+            min_lambda_ratio: 0.0,
         };
+        let h_min = self.min_film(load, omega, op.film_thickness, op.fluid_load_fraction);
+        let op = OperatingPoint { min_film_thickness: h_min, min_lambda_ratio: h_min / self.roughness, ..op };
         check_finite(&op)?;
         Ok(op)
     }
@@ -374,6 +425,8 @@ fn check_finite(op: &OperatingPoint) -> Result<(), ModelError> {
         ("peak_pressure", op.peak_pressure),
         ("contact_half_width", op.contact_half_width),
         ("sommerfeld_number", op.sommerfeld_number),
+        ("min_film_thickness", op.min_film_thickness),
+        ("min_lambda_ratio", op.min_lambda_ratio),
     ];
     for (quantity, value) in fields {
         if !value.is_finite() || (quantity == "film_thickness" && value <= 0.0) {

@@ -27,11 +27,13 @@ pub mod fidelity;
 pub mod film;
 pub mod gw;
 pub mod joint;
+pub mod min_film;
 pub mod mixed;
 pub mod newton;
 pub mod params;
 pub mod rig;
 pub mod solve_start;
+pub mod starvation;
 pub mod viscosity;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).

@@ -85,15 +85,46 @@ pub fn y_tol(y: f64) -> f64 {
 /// and h_c comes from eq. 19 alone (the limit of the moving case, MODEL_NOTES).
 /// `guess` is the logit of a nearby solution, if any.
 pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>) -> LoadSharing {
-    let Some(film) = film else {
+    solve_starved(film, asp, s, guess, None)
+}
+
+/// Starved-inlet correction for [`solve_starved`]: `ln_q = ln(1/h_oil)` and the exponent γs
+/// of [`crate::starvation::ln_starved`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StarvedInlet {
+    pub ln_q: f64,
+    pub gamma: f64,
+}
+
+/// [`solve`] with the film of eq. 13 replaced by its starved form
+/// `h^−γs = h_13^−γs + h_oil^−γs` when `starved` is given (an extension, [`crate::starvation`]).
+/// `None` is exactly [`solve`]'s path.
+///
+/// The residual stays strictly increasing in y (the starved film is an increasing function of
+/// the flooded one), but the film is now bounded by h_oil as x1 → 0, so r(−∞) is finite:
+/// when r(−∞) ≥ 0 the layer is too thin to lift the surfaces off the asperities' rest
+/// separation and the fluid carries nothing (the zero-speed solution, 1/γ1 = 0).
+pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>) -> LoadSharing {
+    let rest = |asp: &AsperityGroups| {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
-        return LoadSharing {
+        LoadSharing {
             fluid_fraction: 0.0,
             asperity_fraction: 1.0,
             logit: f64::NEG_INFINITY,
             film_thickness: s.summit_mean_plane_offset + t * s.summit_height_std,
             evaluations: 0,
-        };
+        }
+    };
+    if let (Some(_), Some(st)) = (film, starved) {
+        // r(−∞): film = h_oil, asperities carry everything (ln x2 = 0).
+        let h_oil = (-st.ln_q).exp();
+        let (ln_f, _) = ln_f32_slope((h_oil - s.summit_mean_plane_offset) / s.summit_height_std);
+        if ln_f - asp.required_ln_f32(0.0) >= 0.0 {
+            return rest(asp);
+        }
+    }
+    let Some(film) = film else {
+        return rest(asp);
     };
     // r(y) and r'(y): every factor's derivative is analytic (film::ln_moes_slope,
     // gw::ln_f32_slope, AsperityGroups::required_ln_f32_slope). The film at the last
@@ -102,8 +133,13 @@ pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess
     let residual = |y: f64| {
         let sh = Shares::new(y);
         let (ln_hs, dln_hs) = ln_scaled_moes_slope(film.ln_m, film.ln_l, sh.ln_x1);
-        let ln_h = film.ln_scale + ln_hs;
-        let dln_h = sh.x2 * dln_hs; // d ln x1/dy = x2
+        let mut ln_h = film.ln_scale + ln_hs;
+        let mut dln_h = sh.x2 * dln_hs; // d ln x1/dy = x2
+        if let Some(st) = starved {
+            let (l, w) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
+            ln_h = l;
+            dln_h *= w;
+        }
         last = (y, ln_h, dln_h);
         let h = ln_h.exp();
         let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;

@@ -70,6 +70,32 @@ pub struct Lubricant {
     pub limiting_shear_stress: f64,
     /// β0, slope of the limiting shear stress against pressure (-).
     pub limiting_shear_stress_slope: f64,
+    /// T, lubricant (bulk/inlet) temperature (K). Not in the paper (room temperature); see
+    /// [`crate::viscosity::at_temperature`].
+    pub temperature: f64,
+    /// T_ref, the temperature at which η0 and α above hold (K).
+    pub reference_temperature: f64,
+    /// S0, Roelands' temperature–viscosity index (-), see [`crate::viscosity::at_temperature`].
+    pub roelands_temperature_index: f64,
+}
+
+/// Default temperature and reference temperature: 293.15 K (20 °C), the paper's "room
+/// temperature" (section 4.3), an assumption: the paper gives no number.
+pub const DEFAULT_TEMPERATURE: f64 = 293.15;
+/// Default Roelands temperature–viscosity index S0 for a mineral base oil of class ISO VG 100
+/// (see [`crate::viscosity::DEFAULT_S0_SOURCE`]).
+pub const DEFAULT_ROELANDS_TEMPERATURE_INDEX: f64 = 1.262;
+
+/// Starved-inlet correction of the central film (an extension, off by default; see
+/// [`crate::starvation`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Starvation {
+    /// 1/h_oil, reciprocal of the lubricant layer available at the inlet (1/m); 0 = fully
+    /// flooded, the paper's model (default).
+    pub inlet_layer_inverse: f64,
+    /// γ_s, exponent of the starvation relation (-).
+    pub exponent: f64,
 }
 
 /// Boundary friction (section 3.1).
@@ -89,6 +115,8 @@ pub struct Params {
     pub surface: Surface,
     pub lubricant: Lubricant,
     pub friction: Friction,
+    /// Extension, not in the paper; off by default.
+    pub starvation: Starvation,
 }
 
 impl Default for Geometry {
@@ -128,7 +156,15 @@ impl Default for Lubricant {
             pressure_viscosity_coefficient: 16.9e-9,
             limiting_shear_stress: 2.28e6,
             limiting_shear_stress_slope: 0.047,
+            temperature: DEFAULT_TEMPERATURE,
+            reference_temperature: DEFAULT_TEMPERATURE,
+            roelands_temperature_index: DEFAULT_ROELANDS_TEMPERATURE_INDEX,
         }
+    }
+}
+impl Default for Starvation {
+    fn default() -> Self {
+        Self { inlet_layer_inverse: 0.0, exponent: crate::starvation::DEFAULT_EXPONENT }
     }
 }
 impl Default for Friction {
@@ -221,7 +257,7 @@ macro_rules! spec {
 }
 
 /// Every parameter, in file order.
-pub static PARAMS: [ParamSpec; 21] = [
+pub static PARAMS: [ParamSpec; 26] = [
     spec!(geometry.pin_radius, "R", "m", Range::Positive, "Table 1", "Outer radius of the pin"),
     spec!(geometry.bush_radius, "R_b", "m", Range::Positive, "Table 1", "Inner radius of the bush (must exceed the pin radius; the radial clearance is R_b - R)"),
     spec!(geometry.bush_length, "B", "m", Range::Positive, "Table 1", "Length of the bush (contact length)"),
@@ -243,7 +279,19 @@ pub static PARAMS: [ParamSpec; 21] = [
     spec!(lubricant.limiting_shear_stress, "tau_L0", "Pa", Range::Positive, "Table 3", "Limiting shear stress at ambient pressure (eq. 4)"),
     spec!(lubricant.limiting_shear_stress_slope, "beta_0", "1", Range::NonNegative, "Table 3", "Slope of the limiting shear stress against pressure (eq. 4)"),
     spec!(friction.boundary_friction_coefficient, "mu_c", "1", Range::NonNegative, "Section 3.1", "Friction coefficient of the asperity contacts (boundary friction)"),
+    // Appended after the paper's parameters (existing order, FMU value references and state layouts kept).
+    spec!(lubricant.temperature, "T", "K", Range::OpenClosed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Lubricant temperature; eta_0 and alpha follow Roelands' temperature relation from their values at the reference temperature (exactly the Table 3 values at T = T_ref)"),
+    spec!(lubricant.reference_temperature, "T_ref", "K", Range::OpenClosed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Temperature at which eta_0 and alpha hold (Table 3: room temperature)"),
+    spec!(lubricant.roelands_temperature_index, "S_0", "1", Range::NonNegative, "Extension: Roelands (1966); default fitted to an ISO VG 100 mineral oil", "Roelands temperature-viscosity index S_0: ln(eta_0/eta_inf) scales as (1 + (T - 273.15 K)/135 K)^-S_0"),
+    spec!(starvation.inlet_layer_inverse, "1/h_oil", "1/m", Range::NonNegative, "Extension: Chevalier et al. (1998); default 0 = fully flooded (the paper's model)", "Reciprocal of the lubricant layer thickness available at the inlet (starved-inlet film correction); 0 = fully flooded"),
+    spec!(starvation.exponent, "gamma_s", "1", Range::OpenClosed(0.0, 100.0), "Extension: Chevalier et al. (1998)", "Exponent of the starvation relation h = (h_ff^-g + h_oil^-g)^(-1/g)"),
 ];
+
+/// Lowest admissible temperature (K): Roelands' temperature term (1 + θ/135 °C) must stay
+/// positive, θ > −135 °C.
+pub const MIN_TEMPERATURE: f64 = 138.15;
+/// Highest admissible temperature (K), 400 °C: far above any grease's dropping point.
+pub const MAX_TEMPERATURE: f64 = 673.15;
 
 /// Look a parameter up by its `section.key` name.
 pub fn spec_by_name(name: &str) -> Option<&'static ParamSpec> {
@@ -311,12 +359,17 @@ impl Params {
             "# pinjoint parameter file (SI units). Defaults: Tables 1-3 of the paper.\n\
              # Any subset of keys may be given; missing keys keep their defaults.\n",
         );
-        let mut section = "";
+        // Sections in order of first appearance; parameters appended later to a section
+        // (e.g. the lubricant temperature) are written with it (TOML forbids a repeated table).
+        let mut sections: Vec<&str> = Vec::new();
         for s in PARAMS.iter() {
-            if s.section != section {
-                section = s.section;
-                out.push_str(&format!("\n[{section}]\n"));
+            if !sections.contains(&s.section) {
+                sections.push(s.section);
             }
+        }
+        for section in sections {
+            out.push_str(&format!("\n[{section}]\n"));
+            for s in PARAMS.iter().filter(|s| s.section == section) {
             let unit = if s.unit == "1" { "-" } else { s.unit };
             // `{:?}` prints the shortest representation that round-trips exactly.
             out.push_str(&format!(
@@ -327,6 +380,7 @@ impl Params {
                 unit,
                 s.description
             ));
+            }
         }
         out
     }

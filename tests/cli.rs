@@ -57,7 +57,7 @@ fn dir_names(d: &Path) -> BTreeSet<String> {
     std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect()
 }
 
-const RESULT_COLUMNS: [&str; 10] = [
+const RESULT_COLUMNS: [&str; 12] = [
     "friction_coefficient",
     "torque",
     "film_thickness",
@@ -68,6 +68,8 @@ const RESULT_COLUMNS: [&str; 10] = [
     "contact_half_width",
     "sommerfeld_number",
     "regime",
+    "min_film_thickness",
+    "min_lambda_ratio",
 ];
 
 /// The result columns of a point, as the library computes them.
@@ -199,7 +201,18 @@ fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
         "sommerfeld_number",
         "regime",
     ];
-    let extras = ["sliding_speed", "peak_pressure", "contact_viscosity", "fluid_friction_coefficient", "asperity_friction_coefficient"];
+    let extras = [
+        "sliding_speed",
+        "peak_pressure",
+        "contact_viscosity",
+        "fluid_friction_coefficient",
+        "asperity_friction_coefficient",
+        "min_film_thickness",
+        "min_lambda_ratio",
+        "temperature",
+        "inlet_viscosity",
+        "pressure_viscosity_coefficient",
+    ];
     let keys: BTreeSet<&str> = m.keys().map(String::as_str).collect();
     let expected: BTreeSet<&str> = required.iter().chain(&extras).copied().collect();
     assert_eq!(keys, expected);
@@ -212,6 +225,10 @@ fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
         assert!(close(num(&m, k), v), "{k}: {} vs {v}", num(&m, k));
     }
     assert!(close(num(&m, "peak_pressure"), op.peak_pressure));
+    assert!(close(num(&m, "min_film_thickness"), op.min_film_thickness));
+    assert!(close(num(&m, "min_lambda_ratio"), op.min_lambda_ratio));
+    assert_eq!(num(&m, "temperature"), 293.15);
+    assert_eq!(num(&m, "inlet_viscosity"), 12.45e-3);
 }
 
 #[test]
@@ -303,8 +320,42 @@ fn check_sweep_output(text: &str, points: &[(f64, f64)], joint: &Joint) {
         }
         assert_eq!(row[12], op.regime.as_str());
         regimes.insert(row[12].clone());
+        // The h_min columns, appended after regime.
+        assert_eq!(row[13].parse::<f64>().unwrap().to_bits(), op.min_film_thickness.to_bits());
+        assert_eq!(row[14].parse::<f64>().unwrap().to_bits(), op.min_lambda_ratio.to_bits());
     }
     assert_eq!(regimes.len(), 3, "the points span every regime: {regimes:?}");
+}
+
+#[test]
+fn sweep_temperature_column_and_flag_match_the_library() {
+    let d = tempfile::tempdir().unwrap();
+    let input = d.path().join("t.csv");
+    std::fs::write(&input, "load,speed,temperature\n20000,0.5,253.15\n20000,0.5,293.15\n20000,0.5,333.15\n").unwrap();
+    let o = run(&["sweep", "--input", input.to_str().unwrap()]);
+    assert_eq!(o.code, 0, "{}", o.stderr);
+    let (h, rows) = parse_csv(&o.stdout);
+    let mu_col = h.iter().position(|c| c == "friction_coefficient").unwrap();
+    for (row, t) in rows.iter().zip([253.15, 293.15, 333.15]) {
+        let mut p = Params::default();
+        p.lubricant.temperature = t;
+        let op = Joint::new(&p).unwrap().evaluate(20000.0, 0.5).unwrap();
+        assert_eq!(row[mu_col].parse::<f64>().unwrap().to_bits(), op.friction_coefficient.to_bits(), "T = {t}");
+    }
+    // At the reference temperature the row equals the default model bit for bit.
+    let op = joint().evaluate(20000.0, 0.5).unwrap();
+    assert_eq!(rows[1][mu_col].parse::<f64>().unwrap().to_bits(), op.friction_coefficient.to_bits());
+    // --temperature on point: same as the library at that temperature.
+    let m = point_json(&["point", "--load", "20000", "--speed", "0.5", "--temperature", "253.15", "--json"]);
+    let mut p = Params::default();
+    p.lubricant.temperature = 253.15;
+    let op = Joint::new(&p).unwrap().evaluate(20000.0, 0.5).unwrap();
+    assert_eq!(num(&m, "friction_coefficient"), op.friction_coefficient);
+    assert_eq!(num(&m, "temperature"), 253.15);
+    // A bad temperature is a typed error naming the quantity, value and unit.
+    let o = run(&["point", "--load", "20000", "--speed", "0.5", "--temperature", "-5"]);
+    assert_ne!(o.code, 0);
+    assert!(o.stderr.contains("lubricant.temperature = -5 K"), "{}", o.stderr);
 }
 
 #[test]
@@ -472,7 +523,7 @@ fn map_writes_figure_4_csv_and_plots_from_the_library() {
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(
         dir_names(&dir),
-        ["map.csv", "map_curves.svg", "map_friction.svg", "map_lambda.svg"].iter().map(|s| s.to_string()).collect()
+        ["map.csv", "map_curves.svg", "map_friction.svg", "map_lambda.svg", "map_min_lambda.svg"].iter().map(|s| s.to_string()).collect()
     );
     let (h, rows) = parse_csv(&std::fs::read_to_string(dir.join("map.csv")).unwrap());
     assert_eq!(&h[..3], &["load", "speed", "speed_rpm"]);

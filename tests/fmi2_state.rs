@@ -131,14 +131,15 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
     // A valid checksum over an impossible value: each is checked as its setter or the
     // parameter check at initialization checks it (issue 9: these were accepted before).
     let word = |k: usize| model_at + 1 + 2 + 8 * k;
+    let n = pinjoint::params::PARAMS.len();
     for (at, v, fragment) in [
-        (word(21 + 1 + 2), f64::NAN, "input load = NaN N"),
-        (word(21 + 1 + 2), 1e300, "capacity"),
+        (word(n + 1 + 2), f64::NAN, "input load = NaN N"),
+        (word(n + 1 + 2), 1e300, "capacity"),
         (word(0), -0.028, "pin_radius"),
         (word(3), f64::NAN, "pin_elastic_modulus"),
-        (word(21), -1.0, "speed_band"),
-        (word(21 + 4), f64::NAN, "dissipated_energy"),
-        (word(21 + 6), -1.0, "tolerance"),
+        (word(n), -1.0, "speed_band"),
+        (word(n + 4), f64::NAN, "dissipated_energy"),
+        (word(n + 6), -1.0, "tolerance"),
     ] {
         let mut b = bytes.clone();
         b[at..at + 8].copy_from_slice(&v.to_bits().to_le_bytes());

@@ -83,12 +83,13 @@ fn pin_joint_table_is_complete_and_consistent() {
         assert_eq!(v.start, Some(s.default_value()), "{}", v.name);
         assert_eq!(v.causality, Causality::Parameter);
     }
-    for n in ["angle", "angular_velocity", "load"] {
+    for n in ["angle", "angular_velocity", "load", "temperature"] {
         assert_eq!(info.variables[info.index_by_name(n).unwrap()].causality, Causality::Input, "{n}");
     }
     for n in [
         "torque", "friction_coefficient", "film_thickness", "lambda_ratio", "fluid_load_fraction",
         "asperity_load_fraction", "mean_pressure", "sommerfeld_number", "power_loss", "dissipated_energy",
+        "min_film_thickness", "min_lambda_ratio",
     ] {
         assert_eq!(info.variables[info.index_by_name(n).unwrap()].causality, Causality::Output, "{n}");
     }
@@ -119,9 +120,12 @@ fn output_dependencies_are_the_physical_ones() {
         let l = xml.lines().find(|l| l.contains(&line(n))).unwrap();
         l.split("dependencies=\"").nth(1).unwrap().split('"').next().unwrap().to_owned()
     };
-    let speed_load = format!("{} {}", idx("angular_velocity"), idx("load"));
+    // The lubricant temperature input changes η0 and α: every friction output depends on it.
+    let speed_load = format!("{} {} {}", idx("angular_velocity"), idx("load"), idx("temperature"));
     assert_eq!(deps("torque"), speed_load);
     assert_eq!(deps("power_loss"), speed_load);
+    assert_eq!(deps("min_film_thickness"), speed_load);
+    assert!(xml.contains(r#"<DisplayUnit name="degC" factor="1.0" offset="-273.15"/>"#), "temperature displayed in degC");
     assert_eq!(deps("mean_pressure"), idx("load").to_string());
     assert_eq!(deps("dissipated_energy"), "");
     assert!(!xml.contains(&format!(" {}\"", idx("angle"))), "no output depends on angle");

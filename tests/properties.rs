@@ -17,6 +17,11 @@ fn params() -> impl Strategy<Value = Params> {
         p.materials.pin_poisson_ratio = p.materials.pin_poisson_ratio.min(0.49);
         p.materials.bush_poisson_ratio = p.materials.bush_poisson_ratio.min(0.49);
         p.geometry.bush_radius = p.geometry.pin_radius * (1.0 + clearance_rel);
+        // The lubricant at its reference temperature (the Table 3 values as drawn; the temperature
+        // extension has its own tests in tests/extensions.rs: scaled 10^±0.5, T and T_ref could
+        // leave the admissible range or overflow η0).
+        p.lubricant.temperature = p.lubricant.reference_temperature.clamp(200.0, 400.0);
+        p.lubricant.reference_temperature = p.lubricant.temperature;
         p
     })
 }

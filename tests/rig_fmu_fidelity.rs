@@ -232,17 +232,17 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     assert_eq!(set(e, "load", 30e3), OK);
     assert_ne!(bits(&run(&h, e, 1.3, 700)), bits(&first));
 
-    // A state of the previous layout (version 1) is refused by version.
+    // A state of an earlier layout (version 2, before the temperature input) is refused by version.
     let mut old = bytes.clone();
     let model = model_part_offset(&old);
-    assert_eq!(old[model], 2, "rig state version 2");
-    old[model] = 1;
+    assert_eq!(old[model], 3, "rig state version 3");
+    old[model] = 2;
     let n = old.len();
     let crc = fmi_layer::fmi2::bytes::crc32(&old[..n - 4]);
     old[n - 4..].copy_from_slice(&crc.to_le_bytes());
     let mut so: Fmi2FmuState = null_mut();
     assert_ne!(unsafe { fmi2DeSerializeFMUstate(d, old.as_ptr() as *const Fmi2Byte, old.len(), &mut so) }, OK);
-    assert!(h.last().contains("PinJointRig state version 1; this FMU reads version 2"), "{}", h.last());
+    assert!(h.last().contains("PinJointRig state version 2; this FMU reads version 3"), "{}", h.last());
     let mut s = s;
     assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
     assert_eq!(unsafe { fmi2FreeFMUstate(d, &mut sd) }, OK);

@@ -75,8 +75,9 @@ fn output_dependencies_are_the_physical_ones() {
     for state in ["angle", "angular_velocity", "torque", "actuator_work", "friction_dissipation", "kinetic_energy"] {
         assert_eq!(deps(state), "", "{state} is a state");
     }
-    for n in ["friction_torque", "friction_coefficient", "film_thickness", "fluid_load_fraction", "stuck"] {
-        assert_eq!(deps(n), idx("load").to_string(), "{n}");
+    // The lubricant temperature input changes the friction law at once, as the load does.
+    for n in ["friction_torque", "friction_coefficient", "film_thickness", "fluid_load_fraction", "stuck", "min_film_thickness", "min_lambda_ratio"] {
+        assert_eq!(deps(n), format!("{} {}", idx("load"), idx("temperature")), "{n}");
     }
     assert_eq!(deps("commanded_angle"), idx("command_angle").to_string());
     assert!(xml.contains(r#"<Boolean start="false"/>"#) && xml.contains(r#"<Enumeration declaredType="RigMethod" min="0" max="2" start="0"/>"#));

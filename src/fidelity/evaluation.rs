@@ -104,9 +104,12 @@ pub(crate) fn regime_from_shares(fluid: f64, asperity: f64) -> Regime {
 
 /// Complete an [`Evaluation`] into an [`OperatingPoint`]: the Hertz quantities (eq. 6),
 /// Roelands viscosity at p_m (eq. 5) and Sommerfeld number (eq. 20) depend on load and
-/// speed only and come from the core ([`Joint::load_speed`]).
+/// speed only and come from the core ([`Joint::load_speed`]); h_min from h_c and the fluid
+/// share ([`Joint::min_film`]).
 pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
     let q = joint.load_speed(e.load, e.angular_velocity);
+    // h_min from h_c and the fluid share exactly as the core does it (crate::min_film).
+    let h_min = joint.min_film(e.load, e.angular_velocity, e.film_thickness, e.fluid_load_fraction);
     OperatingPoint {
         load: e.load,
         angular_velocity: e.angular_velocity,
@@ -126,5 +129,7 @@ pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
         asperity_friction_coefficient: e.asperity_friction_coefficient,
         logit: e.logit,
         regime: e.regime,
+        min_film_thickness: h_min,
+        min_lambda_ratio: h_min / joint.composite_roughness(),
     }
 }

@@ -39,8 +39,9 @@ def test_interface(rig_model_description):
     rig = [n for n in params if n.startswith("rig.")]
     assert len(rig) == 14 and "rig.inertia" in rig and "rig.velocity_gain" in rig
     assert "rig.load" not in rig and "rig.frequency" not in rig
-    model = [n for n in params if n.split(".")[0] in ("geometry", "materials", "surface", "lubricant", "friction")]
-    assert len(model) == 21 and float(v["geometry.pin_radius"].start) == 0.028
+    model = [n for n in params if n.split(".")[0] in ("geometry", "materials", "surface", "lubricant", "friction", "starvation")]
+    assert len(model) == 26 and float(v["geometry.pin_radius"].start) == 0.028
+    assert v["temperature"].causality == "input" and v["temperature"].unit == "K" and v["temperature"].displayUnit == "degC"
     assert v["torque"].unit == "N.m" and v["load"].unit == "N" and v["angular_velocity"].unit == "rad/s"
     assert v["rig.position_gain"].unit == "N.m/rad" and v["rig.inertia"].unit == "kg.m2"
     assert all(x.description for x in md.modelVariables)

@@ -35,7 +35,8 @@ def test_interface(model_description):
     display = {d.name for u in md.unitDefinitions for d in u.displayUnits}
     assert {"deg", "rpm", "kN", "MPa", "um"} <= display
     outputs = {u.variable.name: sorted(d.name for d in u.dependencies) for u in md.outputs}
-    assert outputs["torque"] == ["angular_velocity", "load"]
+    assert outputs["torque"] == ["angular_velocity", "load", "temperature"]
+    assert outputs["min_lambda_ratio"] == ["angular_velocity", "load", "temperature"]
     assert outputs["mean_pressure"] == ["load"]
     assert outputs["dissipated_energy"] == []
 

@@ -28,17 +28,34 @@ pub struct ParamsArg {
     /// `pinjoint params` prints a complete one to start from.
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
+    /// Lubricant temperature, in K (kelvin; 293.15 K = 20 °C): overrides the file's
+    /// [lubricant] temperature. η0 and α follow Roelands' temperature relation from their
+    /// values at [lubricant] reference_temperature (default 293.15 K, where Table 3 holds).
+    #[arg(long, value_name = "K", allow_negative_numbers = true)]
+    pub temperature: Option<f64>,
+}
+
+/// Set the lubricant temperature (K) of `p` from a command-line value, validated as the
+/// parameter `lubricant.temperature`.
+pub fn set_temperature(p: &mut Params, t: Option<f64>) -> Result<()> {
+    if let Some(t) = t {
+        p.lubricant.temperature = t;
+        p.validate().map_err(CliError::Params)?;
+    }
+    Ok(())
 }
 
 impl ParamsArg {
     pub fn load(&self) -> Result<Params> {
-        match &self.params {
-            None => Ok(Params::default()),
+        let mut p = match &self.params {
+            None => Params::default(),
             Some(path) => {
                 let text = read_param_file(path)?;
-                Params::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
+                Params::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })?
             }
-        }
+        };
+        set_temperature(&mut p, self.temperature)?;
+        Ok(p)
     }
     pub fn joint(&self) -> Result<Joint> {
         let params = self.load()?;
@@ -107,8 +124,9 @@ pub fn lin_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     (0..n).map(|i| if i == n - 1 { hi } else { lo + (hi - lo) * i as f64 / (n - 1) as f64 }).collect()
 }
 
-/// The model's outputs in CSV files, after the input columns (SI units).
-pub const RESULT_COLUMNS: [&str; 10] = [
+/// The model's outputs in CSV files, after the input columns (SI units). The h_min columns
+/// (an extension) come last so that the earlier columns keep their positions.
+pub const RESULT_COLUMNS: [&str; 12] = [
     "friction_coefficient",
     "torque",
     "film_thickness",
@@ -119,6 +137,8 @@ pub const RESULT_COLUMNS: [&str; 10] = [
     "contact_half_width",
     "sommerfeld_number",
     "regime",
+    "min_film_thickness",
+    "min_lambda_ratio",
 ];
 
 /// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
@@ -136,7 +156,7 @@ pub fn exact(v: f64) -> String {
 }
 
 /// The values of [`RESULT_COLUMNS`] for one point, at full precision.
-pub fn result_fields(op: &OperatingPoint) -> [String; 10] {
+pub fn result_fields(op: &OperatingPoint) -> [String; 12] {
     [
         exact(op.friction_coefficient),
         exact(op.torque),
@@ -148,6 +168,8 @@ pub fn result_fields(op: &OperatingPoint) -> [String; 10] {
         exact(op.contact_half_width),
         exact(op.sommerfeld_number),
         op.regime.as_str().to_string(),
+        exact(op.min_film_thickness),
+        exact(op.min_lambda_ratio),
     ]
 }
 

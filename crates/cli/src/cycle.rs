@@ -66,6 +66,10 @@ pub struct CycleCmd {
     /// Output directory (created if needed)
     #[arg(long, value_name = "DIR")]
     pub output: PathBuf,
+    /// Lubricant temperature, in K (overrides the file's [lubricant] temperature; η0 and α
+    /// follow Roelands' temperature relation from [lubricant] reference_temperature)
+    #[arg(long, value_name = "K", allow_negative_numbers = true)]
+    pub temperature: Option<f64>,
     /// Friction fidelity (table/boundary/auto over the envelope, by default the stroke's:
     /// load ±10 %, 1e-3 rad/s to twice the peak command speed; slower speeds near reversals
     /// fall back to the full solve)
@@ -117,6 +121,7 @@ fn config(cmd: &CycleCmd) -> Result<RigConfig> {
     if let Some(p) = cmd.load {
         cfg.rig.load = positive("load magnitude", p.abs(), "N")?;
     }
+    super::common::set_temperature(&mut cfg.model, cmd.temperature)?;
     if let Some(m) = cmd.formulation {
         cfg.rig.formulation = match m {
             FormulationArg::Hybrid => Formulation::Hybrid,

@@ -184,6 +184,8 @@ pub fn run(cmd: &FiguresCmd) -> Result<()> {
     let results = rig?;
     bar.set_message("figures");
     paths.extend(rig_figures(&dir, &results, &core, pin_radius, cfg.rig.amplitude)?);
+    // The starved-inlet extension (off by default): how it moves Fig. 3 and the 1 Hz cycle.
+    paths.extend(super::figures_starvation::write(&dir, &cfg.model)?);
     let info = RunInfo { quick: cmd.quick, samples_per_cycle: rig_settings.samples_per_cycle, rtol: rig_settings.rtol, atol: rig_settings.atol };
     let list = entries(&joint, &results, &core)?;
     let table = claims(&joint, &results, cfg.rig.amplitude)?;

@@ -17,6 +17,7 @@ pub mod figures_claims;
 pub mod figures_index;
 pub mod figures_plots;
 pub mod figures_rig;
+pub mod figures_starvation;
 pub mod map;
 pub mod output;
 pub mod params_cmd;

@@ -19,6 +19,7 @@ write the paper's Figure 4:\n  \
 DIR/map.csv           every grid point: load [N], speed [rad/s], speed_rpm, then the result columns of `sweep`\n  \
 DIR/map_lambda.svg    (a) lambda ratio, colour map with contour lines\n  \
 DIR/map_friction.svg  (b) friction coefficient, colour map with contour lines\n  \
+DIR/map_min_lambda.svg  lambda ratio from the minimum film h_min (extension: Pan–Hamrock ratio on h_c)\n  \
 DIR/map_curves.svg    μ and λ against speed at the paper's loads 5, 10, 20, 40 and 60 kN\n\
 The plots mark the rig experiments' operating region: 5-60 kN and speeds up to the peak of the \
 fastest stroke (1 Hz, ±40°: 2π·1 Hz·40° = 4.39 rad/s = 41.9 rpm); the strokes pass through \
@@ -162,6 +163,23 @@ pub fn write_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Resul
     Ok(paths)
 }
 
+/// The map of λ from the minimum film (an extension, [`pinjoint::min_film`]) into `dir`:
+/// written by the `map` command beside the paper's Figure 4 files.
+pub fn write_min_lambda_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Result<PathBuf> {
+    let ops = evaluate(joint, g)?;
+    let svg = map_plot(
+        g,
+        &ops,
+        "lambda ratio from the minimum film, h_min / √(σ² + σ_b²) (Pan–Hamrock h_min/h_c, extrapolated)",
+        Axis::log("λ_min [-]"),
+        &[0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 10.0, 20.0],
+        |o| o.min_lambda_ratio,
+    )?;
+    let path = output_dir(dir)?.join("map_min_lambda.svg");
+    write_text(&path, inputs, &svg)?;
+    Ok(path)
+}
+
 pub fn run(cmd: &MapCmd) -> Result<()> {
     refuse_files(&cmd.output, MAP_FILES, cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;
@@ -179,5 +197,8 @@ pub fn run(cmd: &MapCmd) -> Result<()> {
         }
     }
     let grid = Grid { loads: lin_space(p0, p1, cmd.loads), speeds: log_space(n0 * RAD_S_PER_RPM, n1 * RAD_S_PER_RPM, cmd.speeds) };
-    report_written(&write_map(&cmd.output, &inputs_of(cmd.params.params.as_ref()), &joint, &grid)?)
+    let inputs = inputs_of(cmd.params.params.as_ref());
+    let mut paths = write_map(&cmd.output, &inputs, &joint, &grid)?;
+    paths.push(write_min_lambda_map(&cmd.output, &inputs, &joint, &grid)?);
+    report_written(&paths)
 }

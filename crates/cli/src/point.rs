@@ -83,6 +83,22 @@ pub struct PointJson {
     pub contact_viscosity: f64,
     pub fluid_friction_coefficient: f64,
     pub asperity_friction_coefficient: f64,
+    /// h_min (m), Pan–Hamrock ratio on h_c (extension; `pinjoint::min_film`).
+    pub min_film_thickness: f64,
+    /// h_min/√(σ² + σ_b²) (eq. 21 as printed).
+    pub min_lambda_ratio: f64,
+    /// Lubricant temperature (K) and the viscosity η0 and α at it.
+    pub temperature: f64,
+    pub inlet_viscosity: f64,
+    pub pressure_viscosity_coefficient: f64,
+}
+
+impl PointJson {
+    /// The JSON form of `o`, with the lubricant state of `joint`.
+    pub fn new(o: &OperatingPoint, joint: &pinjoint::Joint) -> Self {
+        let l = joint.lubricant();
+        Self { temperature: l.temperature, inlet_viscosity: l.viscosity, pressure_viscosity_coefficient: l.pressure_viscosity_coefficient, ..Self::from(o) }
+    }
 }
 
 impl From<&OperatingPoint> for PointJson {
@@ -105,6 +121,11 @@ impl From<&OperatingPoint> for PointJson {
             contact_viscosity: o.contact_viscosity,
             fluid_friction_coefficient: o.fluid_friction_coefficient,
             asperity_friction_coefficient: o.asperity_friction_coefficient,
+            min_film_thickness: o.min_film_thickness,
+            min_lambda_ratio: o.min_lambda_ratio,
+            temperature: f64::NAN,
+            inlet_viscosity: f64::NAN,
+            pressure_viscosity_coefficient: f64::NAN,
         }
     }
 }
@@ -123,6 +144,8 @@ pub fn table(o: &OperatingPoint) -> Vec<(&'static str, String, &'static str)> {
         ("torque T = μRP_T (eq. 11)", r(o.torque), "N·m"),
         ("central film thickness h_c", r(o.film_thickness), "m"),
         ("lambda ratio h_c/√(σ²+σ_b²) (eq. 21)", r(o.lambda_ratio), "-"),
+        ("minimum film thickness h_min (Pan–Hamrock)", r(o.min_film_thickness), "m"),
+        ("lambda ratio h_min/√(σ²+σ_b²) (eq. 21)", r(o.min_lambda_ratio), "-"),
         ("fluid load fraction 1/γ1", r(o.fluid_load_fraction), "-"),
         ("asperity load fraction 1/γ2", r(o.asperity_load_fraction), "-"),
         ("Hertz mean pressure p_m (eq. 6)", r(o.mean_pressure), "Pa"),
@@ -150,10 +173,14 @@ pub fn run(cmd: &PointCmd) -> Result<()> {
         ev.operating_point(&e)
     };
     if cmd.json {
-        let text = serde_json::to_string(&PointJson::from(&op)).expect("plain struct of numbers serialises");
+        let text = serde_json::to_string(&PointJson::new(&op, &joint)).expect("plain struct of numbers serialises");
         return to_stdout(|w| writeln!(w, "{text}"));
     }
-    let rows = table(&op);
+    let mut rows = table(&op);
+    let l = joint.lubricant();
+    rows.push(("lubricant temperature T", readable(l.temperature), "K"));
+    rows.push(("inlet viscosity η0 at T", readable(l.viscosity), "Pa·s"));
+    rows.push(("pressure-viscosity coefficient α at T", readable(l.pressure_viscosity_coefficient), "1/Pa"));
     let width = rows.iter().map(|r| r.0.chars().count()).max().unwrap_or(0);
     let vwidth = rows.iter().map(|r| r.1.len()).max().unwrap_or(0);
     to_stdout(|w| {

@@ -24,13 +24,13 @@ use std::sync::Mutex;
     about = "Evaluate the model at every row of a CSV file of loads and speeds",
     long_about = "Evaluate the model at every row of a CSV file, on every core, keeping the row order.\n\n\
 INPUT: a header row naming at least the columns `load` (N, > 0) and `speed` (angular velocity \
-in rad/s; the model uses its magnitude), in any order. Other columns are allowed and copied \
+in rad/s; the model uses its magnitude), in any order, and optionally `temperature` (lubricant temperature in K, per row; otherwise --temperature or the parameter file's). Other columns are allowed and copied \
 through unchanged (e.g. a case id), but must not reuse an output column's name. Spaces around \
 fields are ignored; blank lines and lines starting with # are skipped.\n\n\
 OUTPUT: the input columns as given, followed by friction_coefficient (-), torque (N·m, eq. 11's \
 magnitude μRP_T), film_thickness (m, central h_c), lambda_ratio (-), fluid_load_fraction (1/γ1), \
 asperity_load_fraction (1/γ2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-) \
-and regime (boundary | mixed | full-film). Numbers are printed in full (shortest text that \
+regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c) and min_lambda_ratio (-, eq. 21 with h_min). Numbers are printed in full (shortest text that \
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
 A malformed row (missing field, non-numeric, non-finite, load = 0; a negative load is taken as its magnitude) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
@@ -71,19 +71,47 @@ fn is_stdio(p: &Path) -> bool {
 
 /// How rows are answered.
 enum Mode<'a> {
-    /// The library's cold solve (the default, `--fidelity full`).
-    Full(&'a Joint),
+    /// The library's cold solve (the default, `--fidelity full`); rows with a `temperature`
+    /// use a joint at that temperature, built once per distinct value.
+    Full(&'a Joint, Temperatures),
     /// A fidelity level: clones of one evaluator, one per task at a time.
     Level { proto: &'a Evaluator, pool: Mutex<Vec<Evaluator>>, said: AtomicBool },
     /// Only validate and collect the load and |speed| ranges (the envelope's default).
     Scan,
 }
 
-/// The header and where the load and speed columns are.
+/// The header and where the load, speed and (optional) temperature columns are.
 struct Columns {
     header: Vec<String>,
     load: usize,
     speed: usize,
+    temperature: Option<usize>,
+}
+
+/// Joints at the temperatures of a `temperature` column, built once per distinct value (the
+/// start table makes `Joint::new` cost about a millisecond). At most [`MAX_TEMPERATURES`] are
+/// kept: past that the cache starts again, so memory stays bounded.
+#[derive(Default)]
+struct Temperatures(Mutex<std::collections::HashMap<u64, std::sync::Arc<Joint>>>);
+
+/// Joints kept by [`Temperatures`] at once.
+const MAX_TEMPERATURES: usize = 256;
+
+impl Temperatures {
+    fn joint(&self, base: &Joint, t: f64) -> std::result::Result<std::sync::Arc<Joint>, String> {
+        let mut map = self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        if let Some(j) = map.get(&t.to_bits()) {
+            return Ok(j.clone());
+        }
+        let mut p = *base.params();
+        p.lubricant.temperature = t;
+        let j = std::sync::Arc::new(Joint::new(&p).map_err(|e| e.to_string())?);
+        if map.len() >= MAX_TEMPERATURES {
+            map.clear();
+        }
+        map.insert(t.to_bits(), j.clone());
+        Ok(j)
+    }
 }
 
 /// What one chunk gives: its output text, and the ranges of positive load and |speed|.
@@ -118,10 +146,11 @@ fn read_header<R: BufRead>(reader: &mut RecordReader<R>, file: &str) -> Result<C
         }
     };
     let (load, speed) = (find("load")?, find("speed")?);
+    let temperature = if header.iter().any(|h| h == "temperature") { Some(find("temperature")?) } else { None };
     if let Some(clash) = header.iter().find(|h| RESULT_COLUMNS.contains(&h.as_str())) {
         return Err(bad(header_line, format!("input column `{clash}` has the name of an output column; rename it")));
     }
-    Ok(Columns { header, load, speed })
+    Ok(Columns { header, load, speed, temperature })
 }
 
 /// Parse, check, evaluate and format the records `recs` of `batch`.
@@ -170,11 +199,16 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
             return Err(bad(format!("column load = {} N is invalid: the load magnitude must be > 0 N", text(cols.load))));
         }
         let speed = number(cols.speed, "speed", "rad/s")?;
+        let temperature = cols.temperature.map(|i| number(i, "temperature", "K")).transpose()?;
         widen(&mut out.loads, load.abs());
         widen(&mut out.speeds, speed.abs());
         let op: OperatingPoint = match (mode, ev.as_mut()) {
             (Mode::Scan, _) => continue,
-            (Mode::Full(joint), _) => joint.evaluate(load, speed).map_err(|e| bad(e.to_string()))?,
+            (Mode::Full(joint, _), _) if temperature.is_none() => joint.evaluate(load, speed).map_err(|e| bad(e.to_string()))?,
+            (Mode::Full(joint, by_t), _) => {
+                let t = temperature.unwrap_or_default();
+                by_t.joint(joint, t).map_err(&bad)?.evaluate(load, speed).map_err(|e| bad(e.to_string()))?
+            }
             (Mode::Level { said, .. }, Some(ev)) => {
                 let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
                 note_fallback(&e, ev, said);
@@ -203,6 +237,11 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
             w.write_field(&num).map_err(io)?;
         }
         w.write_field(op.regime.as_str()).map_err(io)?;
+        for v in [op.min_film_thickness, op.min_lambda_ratio] {
+            num.clear();
+            push_exact(&mut num, v);
+            w.write_field(&num).map_err(io)?;
+        }
         w.write_record(None::<&[u8]>).map_err(io)?;
     }
     if let (Mode::Level { pool, .. }, Some(ev)) = (mode, ev) {
@@ -342,7 +381,7 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     let bar = progress(len);
     let level;
     let mode = if full {
-        Mode::Full(&joint)
+        Mode::Full(&joint, Temperatures::default())
     } else {
         let (loads, speeds) = if needs_ranges {
             let mut reader = RecordReader::new(&mut input, &file);
@@ -359,6 +398,11 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     };
     let mut reader = RecordReader::new(&mut input, &file);
     let cols = read_header(&mut reader, &file)?;
+    if cols.temperature.is_some() && !full {
+        return Err(CliError::Invalid(
+            "a `temperature` column needs --fidelity full (a table or boundary level is built for one temperature; use --temperature)".into(),
+        ));
+    }
     // An input or model error inside the writer is kept here and returned as itself.
     let failure: Mutex<Option<CliError>> = Mutex::new(None);
     let fill = |w: &mut dyn Write| -> io::Result<()> {

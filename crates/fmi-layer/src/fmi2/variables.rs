@@ -157,6 +157,8 @@ pub struct UnitDef {
     pub m: i32,
     pub s: i32,
     pub rad: i32,
+    /// Exponent of the kelvin (temperature) base unit.
+    pub k: i32,
     pub display: &'static [DisplayUnit],
 }
 

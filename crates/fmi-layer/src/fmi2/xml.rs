@@ -132,7 +132,7 @@ pub fn model_description(info: &ModelInfo) -> Result<String, String> {
         for u in info.units {
             writeln!(w, r#"    <Unit name="{}">"#, escape(u.name)).unwrap();
             let mut b = String::new();
-            for (k, e) in [("kg", u.kg), ("m", u.m), ("s", u.s), ("rad", u.rad)] {
+            for (k, e) in [("kg", u.kg), ("m", u.m), ("s", u.s), ("K", u.k), ("rad", u.rad)] {
                 if e != 0 {
                     write!(b, r#" {k}="{e}""#).unwrap();
                 }

@@ -1,7 +1,7 @@
 //! `documentation/index.html` of the PinJoint FMU, generated from the same variable
 //! table as the modelDescription, with a table of values computed by the library.
 
-use super::variables::{FIRST_OUTPUT, FIRST_PARAM};
+use super::variables::{FIRST_OUTPUT, FIRST_PARAM, TEMPERATURE};
 use super::zero_speed::DEFAULT_SPEED_BAND;
 use super::INFO;
 use fmi_layer::fmi2::variables::Variable;
@@ -56,6 +56,34 @@ fn check_values() -> String {
     s
 }
 
+/// The extensions beyond the paper (h_min, temperature, starved inlet), shared by both FMUs'
+/// documentation pages.
+pub const EXTENSIONS_HTML: &str = r#"<h2>Extensions beyond the paper (neutral or off by default)</h2>
+<ul>
+<li><b>Minimum film</b> (outputs <code>min_film_thickness</code>, <code>min_lambda_ratio</code>): eq. 21 names h<sub>min</sub> but the paper gives
+no relation for it; <code>film_thickness</code> and <code>lambda_ratio</code> stay the central film h<sub>c</sub>. h<sub>min</sub> = h<sub>c</sub>&middot;r with
+Pan &amp; Hamrock's (1989, ASME J. Tribol. 111, 246&ndash;251) line-contact ratio
+r = (1.714/2.922) W&prime;<sup>0.038</sup> U<sup>0.002</sup> G<sup>0.098</sup> (U on the mean velocity u/2), with eq. 13's substitution
+E&prime;&rarr;E&prime;/&gamma;<sub>1</sub>, P<sub>T</sub>&rarr;P<sub>T</sub>/&gamma;<sub>1</sub> (U&rarr;&gamma;<sub>1</sub>U, G&rarr;G/&gamma;<sub>1</sub>), capped at 1.
+Validity: the fits are for heavily loaded elastic&ndash;piezoviscous contacts (W&prime; of order 1e-5); this joint has W&prime; &asymp; 2e-8&ndash;2e-7,
+so h<sub>min</sub> is an extrapolation, and as the fluid share goes to 0 (speed &rarr; 0) r goes to 0: 0 at rest.</li>
+<li><b>Temperature</b> (input <code>temperature</code>, K, display degC; parameters <code>lubricant.reference_temperature</code>,
+<code>lubricant.roelands_temperature_index</code>): &eta;<sub>0</sub> and &alpha; of Table 3 hold at the reference temperature (default 293.15 K,
+the paper's room temperature, assumed). Roelands' temperature relation ln(&eta;<sub>0</sub>(T)/&eta;<sub>&infin;</sub>) = ln(&eta;<sub>0</sub>(T<sub>ref</sub>)/&eta;<sub>&infin;</sub>)&middot;f,
+f = [(135 + &theta;)/(135 + &theta;<sub>ref</sub>)]<sup>&minus;S<sub>0</sub></sup> (&theta; in &deg;C, &eta;<sub>&infin;</sub> = 6.31e-5 Pa&middot;s of eq. 5), and at fixed Roelands Z
+&alpha;(T) = &alpha;(T<sub>ref</sub>)&middot;f. Default S<sub>0</sub> = 1.262: Roelands' relation through an ISO VG 100 mineral oil
+(100 mm&sup2;/s at 40 &deg;C, 11.1 mm&sup2;/s at 100 &deg;C): a class-typical base oil, not the paper's grease. At T = T<sub>ref</sub> the outputs are
+exactly the paper model's. With the defaults &eta;<sub>0</sub> is 12.25 Pa&middot;s at &minus;55 &deg;C and 2.59 mPa&middot;s at +70 &deg;C (12.45 mPa&middot;s at 20 &deg;C).
+Below about 0 &deg;C this is an extrapolation of the relation; &tau;<sub>L0</sub>, &beta;<sub>0</sub> and &mu;<sub>c</sub> do not change with temperature here.
+The parameter <code>lubricant.temperature</code> exists because every parameter-file key is a parameter; in the FMU the input sets the temperature.</li>
+<li><b>Starved inlet</b> (parameters <code>starvation.inlet_layer_inverse</code> = 1/h<sub>oil</sub> in 1/m, default 0 = fully flooded, the paper's model;
+<code>starvation.exponent</code> &gamma;<sub>s</sub>, default 2.8): the film of eq. 13 is replaced by h<sup>&minus;&gamma;<sub>s</sub></sup> = h<sub>13</sub><sup>&minus;&gamma;<sub>s</sub></sup> + h<sub>oil</sub><sup>&minus;&gamma;<sub>s</sub></sup>,
+Chevalier et al.'s (1998, ASME J. Tribol. 120, 126&ndash;133) starvation relation h/h<sub>ff</sub> = R/(1 + R<sup>&gamma;<sub>s</sub></sup>)<sup>1/&gamma;<sub>s</sub></sup>, R = h<sub>oil</sub>/h<sub>ff</sub>,
+inside the load-sharing solve. A phenomenological stand-in for the grease the stroke squeezes out (the paper, section 5); fit it to
+measurements (<code>pinjoint calibrate</code> can fit <code>starvation.inlet_layer_inverse</code>).</li>
+</ul>
+"#;
+
 const HEAD: &str = "<tr><th>name</th><th>value reference</th><th>unit</th><th>display unit</th><th>start</th><th>min</th><th>max</th><th>description</th></tr>";
 
 /// The HTML page.
@@ -109,7 +137,8 @@ torque then makes the joint creep slowly instead of sticking.</p>
 <li>The paper's operating range: loads 5&ndash;60 kN (mean pressure 7&ndash;23 MPa), speeds 1&ndash;800 rpm, Sommerfeld numbers 0&ndash;0.15,
 oscillation &plusmn;40&deg; at 0.03&ndash;1 Hz. The model is defined beyond it, but not validated.</li>
 <li>Hertz theory is applied to a conformal contact (a is not small against R); eq. 11 neglects the tangential pressure
-components (under 10 %); the contact is assumed fully flooded and isothermal.</li>
+components (under 10 %); the contact is assumed fully flooded (unless the starved-inlet extension is switched on) and isothermal
+at the <code>temperature</code> input.</li>
 <li>Not modelled: the static friction peak at reversals, the grease's lower friction at low load seen in the experiments.</li>
 <li>Inputs: <code>angle</code> and <code>angular_velocity</code> must be finite; <code>load</code> finite and &ge; 0 N (0 = unloaded: every output
 but the energy is 0). Other values are rejected by fmi2SetReal with a message naming the variable, value and unit.
@@ -120,6 +149,7 @@ fmi2Error naming the output, instead of returning NaN or an impossible value. te
 defined behaviour of every bad input.</li>
 </ul>
 
+{extensions}
 <h2>Model values (default parameters)</h2>
 <table><tr><th>load (kN)</th><th>&omega; (rad/s)</th><th>&mu;</th><th>T (N&middot;m)</th><th>h<sub>c</sub> (&micro;m)</th><th>&lambda;</th><th>1/&gamma;<sub>1</sub></th><th>p<sub>m</sub> (MPa)</th></tr>
 {checks}</table>
@@ -174,8 +204,9 @@ debug logging off.</li>
         tb60 = j.boundary_torque(60e3),
         band = DEFAULT_SPEED_BAND,
         checks = check_values(),
-        inputs = rows(&v[..FIRST_OUTPUT]),
+        inputs = rows(&v[..FIRST_OUTPUT]) + &rows(&v[TEMPERATURE..]),
         outputs = rows(&v[FIRST_OUTPUT..FIRST_PARAM]),
-        params = rows(&v[FIRST_PARAM..]),
+        params = rows(&v[FIRST_PARAM..TEMPERATURE]),
+        extensions = EXTENSIONS_HTML,
     )
 }

@@ -1,6 +1,6 @@
 //! The PinJoint FMU: the friction torque of the joint as an FMI 2.0
 //! Co-Simulation slave. Inputs angle, angular velocity and load; outputs the
-//! torque and the model's other quantities; parameters the 21 keys of the
+//! torque and the model's other quantities; parameters the 26 keys of the
 //! parameter file plus the zero-velocity band ([`zero_speed`]).
 
 pub mod doc;

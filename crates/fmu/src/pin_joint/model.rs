@@ -3,7 +3,7 @@
 
 use super::variables::{
     self as var, fidelity_of_code, Output, ANGLE, ANGULAR_VELOCITY, ENVELOPE_LOAD_MIN, ENVELOPE_SPEED_MAX, FIDELITY, FIRST_OUTPUT,
-    FIRST_PARAM, LOAD, SPEED_BAND, TOLERANCE,
+    FIRST_PARAM, LOAD, SPEED_BAND, TEMPERATURE, TOLERANCE,
 };
 use super::zero_speed::{check_band, DEFAULT_SPEED_BAND};
 use pinjoint::fidelity::Evaluator;
@@ -13,11 +13,12 @@ use fmi_layer::fmi2::model::{Model, ModelResult};
 use pinjoint::params::PARAMS;
 use pinjoint::{Joint, Params};
 
-/// Version of [`PinJointModel::serialize`]'s layout.
-const STATE_VERSION: u8 = 3;
+/// Version of [`PinJointModel::serialize`]'s layout (4: 26 parameters and the temperature input).
+const STATE_VERSION: u8 = 4;
 /// f64 values in the serialized state: parameters, band, three inputs, energy, fidelity code,
-/// tolerance, envelope. (The outputs depend on the current inputs only: no solver history.)
-const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1 + 2 + 4;
+/// tolerance, envelope, temperature input. (The outputs depend on the current inputs only: no
+/// solver history.)
+const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1 + 2 + 4 + 1;
 
 /// Every output but the energy, from one evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -31,6 +32,8 @@ pub struct Outputs {
     pub mean_pressure: f64,
     pub sommerfeld_number: f64,
     pub power_loss: f64,
+    pub min_film_thickness: f64,
+    pub min_lambda_ratio: f64,
 }
 
 impl Outputs {
@@ -45,6 +48,8 @@ impl Outputs {
             Output::MeanPressure => self.mean_pressure,
             Output::SommerfeldNumber => self.sommerfeld_number,
             Output::PowerLoss => self.power_loss,
+            Output::MinFilmThickness => self.min_film_thickness,
+            Output::MinLambdaRatio => self.min_lambda_ratio,
             Output::DissipatedEnergy => unreachable!("the energy is a state"),
         }
     }
@@ -86,6 +91,8 @@ pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelRes
         mean_pressure: op.mean_pressure,
         sommerfeld_number: op.sommerfeld_number,
         power_loss: (torque * omega).abs(),
+        min_film_thickness: op.min_film_thickness,
+        min_lambda_ratio: op.min_lambda_ratio,
     };
     Ok((out, first))
 }
@@ -139,6 +146,8 @@ pub struct PinJointModel {
     angle: f64,
     omega: f64,
     load: f64,
+    /// The `temperature` input (K): the lubricant temperature the evaluator is built with.
+    temperature: f64,
     energy: f64,
     out: Outputs,
     fidelity: FidelitySettings,
@@ -157,6 +166,7 @@ impl PinJointModel {
             angle: 0.0,
             omega: 0.0,
             load: var::DEFAULT_LOAD,
+            temperature: pinjoint::params::DEFAULT_TEMPERATURE,
             energy: 0.0,
             out: Outputs::default(),
             fidelity: FidelitySettings::default(),
@@ -170,12 +180,24 @@ impl PinJointModel {
     fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
         check_band(self.band)?;
         if self.evaluator.is_none() {
-            Joint::new(&self.params).map_err(|e| e.to_string())?;
-            let ev = self.fidelity.build(&self.params)?;
+            // Every parameter is checked as set, `lubricant.temperature` too (the input replaces it).
+            self.params.validate().map_err(|e| e.to_string())?;
+            let params = self.effective_params();
+            Joint::new(&params).map_err(|e| e.to_string())?;
+            let ev = self.fidelity.build(&params)?;
             self.message = Some(describe(&ev));
             self.evaluator = Some(ev);
         }
         Ok(self.evaluator.as_mut().expect("just built"))
+    }
+
+    /// The parameters with the lubricant temperature taken from the `temperature` input.
+    /// At the default input (293.15 K = the default reference) they equal the parameters,
+    /// so the outputs are exactly the paper model's.
+    fn effective_params(&self) -> Params {
+        let mut p = self.params;
+        p.lubricant.temperature = self.temperature;
+        p
     }
 
     /// The evaluator in use (after initialization).
@@ -197,6 +219,7 @@ impl Model for PinJointModel {
         self.angle = 0.0;
         self.omega = 0.0;
         self.load = var::DEFAULT_LOAD;
+        self.temperature = pinjoint::params::DEFAULT_TEMPERATURE;
         self.energy = 0.0;
         self.out = Outputs::default();
         self.fidelity = FidelitySettings::default();
@@ -209,6 +232,7 @@ impl Model for PinJointModel {
             ANGLE => self.angle,
             ANGULAR_VELOCITY => self.omega,
             LOAD => self.load,
+            TEMPERATURE => self.temperature,
             SPEED_BAND => self.band,
             FIDELITY => self.fidelity.code as f64,
             TOLERANCE => self.fidelity.tolerance,
@@ -236,6 +260,12 @@ impl Model for PinJointModel {
                 show(v),
                 self.evaluator.as_ref().map_or(f64::NAN, |e| e.joint().capacity())
             )),
+            TEMPERATURE if !(v > pinjoint::params::MIN_TEMPERATURE && v <= pinjoint::params::MAX_TEMPERATURE) => Err(format!(
+                "input temperature = {} K is out of range: it must be in ({}, {}] K",
+                show(v),
+                pinjoint::params::MIN_TEMPERATURE,
+                pinjoint::params::MAX_TEMPERATURE
+            )),
             FIDELITY if fidelity_of_code(v as i32).is_none() || v.fract() != 0.0 => Err(format!(
                 "parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)",
                 show(v)
@@ -250,6 +280,13 @@ impl Model for PinJointModel {
             ANGLE => self.angle = v,
             ANGULAR_VELOCITY => self.omega = v,
             LOAD => self.load = v,
+            TEMPERATURE => {
+                // A new temperature is a new lubricant: rebuild the evaluator (on next use).
+                if v.to_bits() != self.temperature.to_bits() {
+                    self.evaluator = None;
+                }
+                self.temperature = v;
+            }
             SPEED_BAND => self.band = v,
             FIDELITY => {
                 self.fidelity.code = v as i32;
@@ -324,6 +361,7 @@ impl Model for PinJointModel {
         for v in f.envelope {
             w.f64(v);
         }
+        w.f64(self.temperature);
         out.extend_from_slice(&w.buf);
     }
 
@@ -352,6 +390,7 @@ impl Model for PinJointModel {
         if code.fract() != 0.0 || fidelity_of_code(code as i32).is_none() {
             return Err(format!("fidelity = {code} in the state is not a fidelity code (0..3)"));
         }
+        let temperature = r.f64("temperature")?;
         let fidelity = FidelitySettings { code: code as i32, tolerance, envelope };
         r.finish()?;
         // Every value passes the checks of the setters and of fmi2ExitInitializationMode
@@ -361,7 +400,7 @@ impl Model for PinJointModel {
         check_band(band)?;
         pinjoint::fidelity::validate_tolerance(tolerance).map_err(|e| format!("state: parameter {e}"))?;
         crate::envelope_from_parameters(envelope)?;
-        for (i, v) in [(ANGLE, angle), (ANGULAR_VELOCITY, omega), (LOAD, load)] {
+        for (i, v) in [(ANGLE, angle), (ANGULAR_VELOCITY, omega), (LOAD, load), (TEMPERATURE, temperature)] {
             self.check_real(i, v)?;
         }
         let capacity = joint.capacity();
@@ -372,13 +411,15 @@ impl Model for PinJointModel {
             return Err(format!("dissipated_energy = {} J is not a finite number >= 0", show(energy)));
         }
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
-        let evaluator = if params == self.params && fidelity == self.fidelity && band == self.band { self.evaluator.take() } else { None };
+        let same = params == self.params && fidelity == self.fidelity && band == self.band && temperature.to_bits() == self.temperature.to_bits();
+        let evaluator = if same { self.evaluator.take() } else { None };
         *self = PinJointModel {
             params,
             band,
             angle,
             omega,
             load,
+            temperature,
             energy,
             out: Outputs::default(),
             fidelity,

@@ -4,11 +4,12 @@
 //! | index | value references | variables |
 //! |---|---|---|
 //! | 0–2 | 1–3 | inputs `angle`, `angular_velocity`, `load` |
-//! | 3–12 | 10–19 | outputs ([`Output`] order) |
-//! | 13–33 | 100–120 | the 21 parameters of [`pinjoint::params::PARAMS`], `section.key` |
-//! | 34 | 200 | `zero_velocity.speed_band` |
-//! | 35 | 300 | `fidelity` (Integer: 0 full, 1 table, 2 boundary, 3 auto) |
-//! | 36–40 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
+//! | 3–14 | 10–21 | outputs ([`Output`] order; `min_film_thickness`, `min_lambda_ratio` last) |
+//! | 15–40 | 100–125 | the 26 parameters of [`pinjoint::params::PARAMS`], `section.key` |
+//! | 41 | 200 | `zero_velocity.speed_band` |
+//! | 42 | 300 | `fidelity` (Integer: 0 full, 1 table, 2 boundary, 3 auto) |
+//! | 43–47 | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
+//! | 48 | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) |
 
 use super::zero_speed::DEFAULT_SPEED_BAND;
 use fmi_layer::fmi2::variables::{Causality, DisplayUnit, EnumType, Initial, Kind, UnitDef, Variability, Variable};
@@ -26,7 +27,9 @@ pub const ENVELOPE_LOAD_MIN: usize = TOLERANCE + 1;
 pub const ENVELOPE_LOAD_MAX: usize = TOLERANCE + 2;
 pub const ENVELOPE_SPEED_MIN: usize = TOLERANCE + 3;
 pub const ENVELOPE_SPEED_MAX: usize = TOLERANCE + 4;
-pub const COUNT: usize = ENVELOPE_SPEED_MAX + 1;
+/// The `temperature` input (K): the lubricant temperature (overrides `lubricant.temperature`).
+pub const TEMPERATURE: usize = ENVELOPE_SPEED_MAX + 1;
+pub const COUNT: usize = TEMPERATURE + 1;
 
 /// Start values of the fidelity parameters: full solve; tolerance 1e-4; the paper's rig
 /// envelope 5–60 kN, 0.01–10 rad/s.
@@ -69,10 +72,12 @@ pub enum Output {
     SommerfeldNumber,
     PowerLoss,
     DissipatedEnergy,
+    MinFilmThickness,
+    MinLambdaRatio,
 }
 
 impl Output {
-    pub const ALL: [Output; 10] = [
+    pub const ALL: [Output; 12] = [
         Output::Torque,
         Output::FrictionCoefficient,
         Output::FilmThickness,
@@ -83,6 +88,8 @@ impl Output {
         Output::SommerfeldNumber,
         Output::PowerLoss,
         Output::DissipatedEnergy,
+        Output::MinFilmThickness,
+        Output::MinLambdaRatio,
     ];
 }
 
@@ -91,24 +98,24 @@ const RPM: f64 = 9.549296585513721; // 60/(2π)
 
 /// Every unit used by a PinJoint variable, with its SI base units and display units.
 pub static UNITS: &[UnitDef] = &[
-    UnitDef { name: "rad", quantity: "Angle", kg: 0, m: 0, s: 0, rad: 1, display: &[DisplayUnit { name: "deg", factor: DEG, offset: 0.0 }] },
+    UnitDef { name: "rad", quantity: "Angle", kg: 0, m: 0, s: 0, rad: 1, k: 0, display: &[DisplayUnit { name: "deg", factor: DEG, offset: 0.0 }] },
     UnitDef {
         name: "rad/s", quantity: "AngularVelocity",
         kg: 0,
         m: 0,
         s: -1,
         rad: 1,
-        display: &[DisplayUnit { name: "deg/s", factor: DEG, offset: 0.0 }, DisplayUnit { name: "rpm", factor: RPM, offset: 0.0 }],
+        k: 0, display: &[DisplayUnit { name: "deg/s", factor: DEG, offset: 0.0 }, DisplayUnit { name: "rpm", factor: RPM, offset: 0.0 }],
     },
-    UnitDef { name: "N", quantity: "Force", kg: 1, m: 1, s: -2, rad: 0, display: &[DisplayUnit { name: "kN", factor: 1e-3, offset: 0.0 }] },
-    UnitDef { name: "N.m", quantity: "Torque", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kN.m", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "N", quantity: "Force", kg: 1, m: 1, s: -2, rad: 0, k: 0, display: &[DisplayUnit { name: "kN", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "N.m", quantity: "Torque", kg: 1, m: 2, s: -2, rad: 0, k: 0, display: &[DisplayUnit { name: "kN.m", factor: 1e-3, offset: 0.0 }] },
     UnitDef {
         name: "m", quantity: "Length",
         kg: 0,
         m: 1,
         s: 0,
         rad: 0,
-        display: &[DisplayUnit { name: "mm", factor: 1e3, offset: 0.0 }, DisplayUnit { name: "um", factor: 1e6, offset: 0.0 }],
+        k: 0, display: &[DisplayUnit { name: "mm", factor: 1e3, offset: 0.0 }, DisplayUnit { name: "um", factor: 1e6, offset: 0.0 }],
     },
     UnitDef {
         name: "Pa", quantity: "Pressure",
@@ -116,13 +123,15 @@ pub static UNITS: &[UnitDef] = &[
         m: -1,
         s: -2,
         rad: 0,
-        display: &[DisplayUnit { name: "MPa", factor: 1e-6, offset: 0.0 }, DisplayUnit { name: "GPa", factor: 1e-9, offset: 0.0 }],
+        k: 0, display: &[DisplayUnit { name: "MPa", factor: 1e-6, offset: 0.0 }, DisplayUnit { name: "GPa", factor: 1e-9, offset: 0.0 }],
     },
-    UnitDef { name: "Pa.s", quantity: "DynamicViscosity", kg: 1, m: -1, s: -1, rad: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
-    UnitDef { name: "1/Pa", quantity: "PressureViscosityCoefficient", kg: -1, m: 1, s: 2, rad: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
-    UnitDef { name: "1/m2", quantity: "AsperityDensity", kg: 0, m: -2, s: 0, rad: 0, display: &[] },
-    UnitDef { name: "W", quantity: "Power", kg: 1, m: 2, s: -3, rad: 0, display: &[] },
-    UnitDef { name: "J", quantity: "Energy", kg: 1, m: 2, s: -2, rad: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "Pa.s", quantity: "DynamicViscosity", kg: 1, m: -1, s: -1, rad: 0, k: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
+    UnitDef { name: "1/Pa", quantity: "PressureViscosityCoefficient", kg: -1, m: 1, s: 2, rad: 0, k: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
+    UnitDef { name: "1/m2", quantity: "AsperityDensity", kg: 0, m: -2, s: 0, rad: 0, k: 0, display: &[] },
+    UnitDef { name: "W", quantity: "Power", kg: 1, m: 2, s: -3, rad: 0, k: 0, display: &[] },
+    UnitDef { name: "J", quantity: "Energy", kg: 1, m: 2, s: -2, rad: 0, k: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
+    UnitDef { name: "K", quantity: "ThermodynamicTemperature", kg: 0, m: 0, s: 0, rad: 0, k: 1, display: &[DisplayUnit { name: "degC", factor: 1.0, offset: -273.15 }] },
+    UnitDef { name: "1/m", quantity: "InverseLength", kg: 0, m: -1, s: 0, rad: 0, k: 0, display: &[] },
 ];
 
 fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>, start: f64, min: Option<f64>, d: &str) -> Variable {
@@ -147,7 +156,7 @@ fn input(name: &str, vr: u32, unit: &'static str, display: Option<&'static str>,
 type OutputRow = (&'static str, Option<&'static str>, Option<&'static str>, Option<f64>, Option<f64>, &'static [&'static str], &'static str);
 
 fn output(o: Output) -> Variable {
-    const SPEED_LOAD: [&str; 2] = ["angular_velocity", "load"];
+    const SPEED_LOAD: [&str; 3] = ["angular_velocity", "load", "temperature"];
     let (name, unit, display, min, max, deps, d): OutputRow = match o {
         Output::Torque => ("torque", Some("N.m"), None, None, None, &SPEED_LOAD,
             "Friction torque on the pin, opposite to the angular velocity: -sign(omega) mu R P_T (eq. 11); linear in omega inside the zero-velocity band"),
@@ -169,6 +178,10 @@ fn output(o: Output) -> Variable {
             "Frictional power loss |torque * angular_velocity|"),
         Output::DissipatedEnergy => ("dissipated_energy", Some("J"), Some("kJ"), Some(0.0), None, &[],
             "Energy dissipated by friction since initialization: sum over the Co-Simulation steps taken of power_loss * step size (inputs held over each step). Co-Simulation only: under Model Exchange no steps are taken and it stays 0 (integrate power_loss in the host)"),
+        Output::MinFilmThickness => ("min_film_thickness", Some("m"), Some("um"), Some(0.0), None, &SPEED_LOAD,
+            "Minimum film thickness h_min: h_c times Pan and Hamrock's (1989) line-contact ratio h_min/h_c under eq. 13's substitution (extension; an extrapolation for this joint, 0 at rest)"),
+        Output::MinLambdaRatio => ("min_lambda_ratio", None, None, Some(0.0), None, &SPEED_LOAD,
+            "Lambda ratio from the minimum film, h_min/sqrt(sigma^2 + sigma_b^2) (eq. 21 as printed, with h_min)"),
     };
     Variable {
         name: name.into(),
@@ -196,6 +209,7 @@ pub(crate) fn param_display(s: &ParamSpec) -> Option<&'static str> {
         (_, "Pa") => Some("MPa"),
         (_, "Pa.s") => Some("mPa.s"),
         (_, "1/Pa") => Some("1/GPa"),
+        (_, "K") => Some("degC"),
         _ => None,
     }
 }
@@ -226,7 +240,14 @@ pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
         start: Some(s.default_value()),
         min,
         max,
-        description: format!("{} ({}, {}; must be {})", s.description, s.symbol, s.source, s.range.describe()),
+        description: if s.section == "lubricant" && s.key == "temperature" {
+            format!(
+                "{} ({}, {}; must be {}). In this FMU the input `temperature` sets the lubricant temperature; this parameter is not used",
+                s.description, s.symbol, s.source, s.range.describe()
+            )
+        } else {
+            format!("{} ({}, {}; must be {})", s.description, s.symbol, s.source, s.range.describe())
+        },
         depends_on: vec![],
     }
 }
@@ -302,6 +323,12 @@ pub fn table() -> Vec<Variable> {
     v.push(real("envelope.load_max", 303, Some("N"), l1, "Largest load of the envelope (> envelope.load_min)"));
     v.push(real("envelope.speed_min", 304, Some("rad/s"), w0, "Smallest speed magnitude |omega| of the envelope (> 0; omega = 0 is handled exactly)"));
     v.push(real("envelope.speed_max", 305, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
+    v.push(Variable {
+        min: Some(pinjoint::params::MIN_TEMPERATURE),
+        max: Some(pinjoint::params::MAX_TEMPERATURE),
+        ..input("temperature", 4, "K", Some("degC"), pinjoint::params::DEFAULT_TEMPERATURE, None,
+            "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)")
+    });
     debug_assert_eq!(v.len(), COUNT);
     v
 }

@@ -119,7 +119,8 @@ that differ in the last bit, e.g. 19999.999999999996 N: each is a new value and 
 changes the results at the level of the integration tolerance.)</li>
 <li>The rig's clock is t &minus; t<sub>start</sub>: the stroke starts at rest on the command at the start time.</li>
 <li>Direct feedthrough: <code>friction_torque</code>, <code>friction_coefficient</code>, <code>film_thickness</code>,
-<code>fluid_load_fraction</code> and <code>stuck</code> follow a new <code>load</code> at once; <code>commanded_angle</code> follows
+<code>fluid_load_fraction</code>, <code>min_film_thickness</code>, <code>min_lambda_ratio</code> and <code>stuck</code> follow a new
+<code>load</code> (or <code>temperature</code>) at once; <code>commanded_angle</code> follows
 <code>command_angle</code>. The angle, speed, recorded torque and energies are states.</li>
 </ul>
 
@@ -134,7 +135,8 @@ and the recorded torque shows the limited-response oscillation the paper describ
 <h2>Zero load, invalid values, errors</h2>
 <ul>
 <li><code>load</code> = 0: no contact and no friction; the joint moves freely with the actuator. The core's quantities are not
-defined there: <code>friction_coefficient</code>, <code>film_thickness</code> and <code>fluid_load_fraction</code> are reported as 0.</li>
+defined there: <code>friction_coefficient</code>, <code>film_thickness</code>, <code>fluid_load_fraction</code>, <code>min_film_thickness</code>
+and <code>min_lambda_ratio</code> are reported as 0.</li>
 <li>fmi2SetReal rejects a negative or non-finite <code>load</code> and a non-finite <code>command_angle</code> (the message names the
 variable, value and unit). Parameters are checked at fmi2ExitInitializationMode (ranges below, K<sub>d</sub> &gt; &tau;<sub>s</sub>K<sub>p</sub>,
 R<sub>b</sub> &gt; R); the error message names the parameter, its value and unit.</li>
@@ -160,6 +162,7 @@ unit; a code out of range already by fmi2SetInteger.</li>
 <li>The settings are part of the FMU state; a restored state rebuilds the same table (deterministically) and continues bit for bit.</li>
 </ul>
 
+{extensions}
 <h2>Inputs</h2><table>{HEAD}{inputs}</table>
 <h2>Outputs</h2><table>{HEAD}{outputs}</table>
 <h2>Parameters</h2>
@@ -191,9 +194,10 @@ former Integer parameters, set through fmi2SetInteger / fmi3SetInt64); everythin
         freq = r.frequency,
         load = r.load,
         lag = (j.boundary_torque(20e3) / r.position_gain).to_degrees(),
-        inputs = rows(|v| matches!(v, Var::Load | Var::CommandAngle)),
+        inputs = rows(|v| matches!(v, Var::Load | Var::CommandAngle | Var::Temperature)),
         outputs = rows(|v| matches!(v, Var::Out(_))),
-        params = rows(|v| !matches!(v, Var::Load | Var::CommandAngle | Var::Out(_))),
+        params = rows(|v| !matches!(v, Var::Load | Var::CommandAngle | Var::Temperature | Var::Out(_))),
+        extensions = crate::pin_joint::doc::EXTENSIONS_HTML,
     )
 }
 
@@ -205,7 +209,8 @@ mod tests {
         for v in &super::INFO.variables {
             assert!(html.contains(&format!("<code>{}</code>", v.name)), "{}", v.name);
         }
-        assert_eq!(crate::pin_joint_rig::variables::Output::ALL.len(), 12);
+        assert_eq!(crate::pin_joint_rig::variables::Output::ALL.len(), 14);
+        assert!(html.contains("Pan &amp; Hamrock") && html.contains("Roelands' temperature relation") && html.contains("Chevalier"));
         assert!(html.contains("Routh") && html.contains("67.2 N&middot;m at 20 kN"), "breakaway torque from the library");
     }
 }

@@ -40,6 +40,9 @@ pub struct Settings {
     pub tolerance: f64,
     /// load_min, load_max (N), speed_min, speed_max (rad/s).
     pub envelope: [f64; 4],
+    /// The `temperature` input (K), the lubricant temperature (`cfg.model.lubricant.temperature`
+    /// is unused, as `cfg.rig.load` is).
+    pub temperature: f64,
 }
 
 impl Default for Settings {
@@ -54,6 +57,7 @@ impl Default for Settings {
             fidelity: 0.0,
             tolerance: DEFAULT_TOLERANCE,
             envelope: DEFAULT_ENVELOPE,
+            temperature: pinjoint::params::DEFAULT_TEMPERATURE,
         }
     }
 }
@@ -75,6 +79,7 @@ impl Settings {
             Var::Fidelity => self.fidelity,
             Var::Tolerance => self.tolerance,
             Var::Envelope(k) => self.envelope[k],
+            Var::Temperature => self.temperature,
             Var::Out(_) => unreachable!("outputs are not settings"),
         }
     }
@@ -94,6 +99,7 @@ impl Settings {
             Var::Fidelity => self.fidelity = x,
             Var::Tolerance => self.tolerance = x,
             Var::Envelope(k) => self.envelope[k] = x,
+            Var::Temperature => self.temperature = x,
             Var::Out(_) => unreachable!("the FMI layer never sets outputs"),
         }
     }
@@ -111,6 +117,12 @@ impl Settings {
                 show(x)
             )),
             Var::CommandAngle if !x.is_finite() => Err(format!("input command_angle = {} rad is not a finite number", show(x))),
+            Var::Temperature if !(x > pinjoint::params::MIN_TEMPERATURE && x <= pinjoint::params::MAX_TEMPERATURE) => Err(format!(
+                "input temperature = {} K is out of range: it must be in ({}, {}] K",
+                show(x),
+                pinjoint::params::MIN_TEMPERATURE,
+                pinjoint::params::MAX_TEMPERATURE
+            )),
             Var::Fidelity if x.fract() != 0.0 || fidelity_of_code(x as i32).is_none() => Err(fidelity_range(x)),
             _ => Ok(()),
         }
@@ -118,6 +130,8 @@ impl Settings {
 
     /// The validated configuration; an error names the parameter, its value and unit.
     pub fn config(&self) -> ModelResult<RigConfig> {
+        // Every model parameter is checked as set, `lubricant.temperature` too (the input replaces it).
+        self.cfg.model.validate().map_err(|e| e.to_string())?;
         let mut cfg = self.cfg;
         for key in ["frequency", "amplitude"] {
             let s = rig_spec(key);
@@ -138,6 +152,7 @@ impl Settings {
             x => return Err(format!("parameter rig.method = {x} is invalid: it must be 0 (Dopri5), 1 (Dop853) or 2 (RK4)")),
         };
         cfg.rig.load = self.load.abs();
+        cfg.model.lubricant.temperature = self.temperature;
         cfg.validate().map_err(|e| e.to_string())?;
         Ok(cfg)
     }
@@ -204,6 +219,8 @@ pub fn outputs(s: &Sample) -> ModelResult<[f64; Output::ALL.len()]> {
         Output::ActuatorWork => s.actuator_work,
         Output::FrictionDissipation => s.friction_dissipation,
         Output::KineticEnergy => s.kinetic_energy,
+        // Filled in by `with_min_film` (they need the joint).
+        Output::MinFilmThickness | Output::MinLambdaRatio => 0.0,
     });
     if let Some((o, v)) = Output::ALL.iter().zip(out).find(|(_, v)| !v.is_finite()) {
         let name = &super::INFO.variables[LAYOUT.iter().position(|x| *x == Var::Out(*o)).expect("in the table")].name;
@@ -217,6 +234,19 @@ pub fn outputs(s: &Sample) -> ModelResult<[f64; Output::ALL.len()]> {
         ));
     }
     Ok(out)
+}
+
+/// [`outputs`] with h_min and λ_min from `joint` ([`pinjoint::Joint::min_film`]) at the sample's
+/// load, speed, film and fluid share; 0 at zero load (no contact).
+pub fn with_min_film(mut out: [f64; Output::ALL.len()], s: &Sample, joint: &pinjoint::Joint) -> [f64; Output::ALL.len()] {
+    if s.load > 0.0 {
+        let h_min = joint.min_film(s.load, s.angular_velocity, s.film_thickness, s.fluid_load_fraction);
+        if h_min.is_finite() {
+            out[Output::MinFilmThickness as usize] = h_min;
+            out[Output::MinLambdaRatio as usize] = h_min / joint.composite_roughness();
+        }
+    }
+    out
 }
 
 #[derive(Debug, Clone)]
@@ -325,15 +355,24 @@ impl RigModel {
         self.fallback_logged = true;
     }
 
-    /// Apply the held inputs at the current time and sample.
+    /// Apply the held inputs at the current time and sample. A changed `temperature` input
+    /// rebuilds the simulator's friction model and resumes from the current state.
     fn refresh(&mut self, rig_time: Option<f64>) -> ModelResult<()> {
         let inputs = self.settings.inputs();
+        let stale = self.sim.as_ref().is_some_and(|s| s.joint().params().lubricant.temperature.to_bits() != self.settings.temperature.to_bits());
+        if stale {
+            let state = self.sim.as_ref().map(RigSim::state).expect("checked above");
+            let mut sim = self.build(None)?;
+            sim.set_state(&state).map_err(|e| e.to_string())?;
+            self.sim = Some(sim);
+        }
         let sim = self.sim()?;
         let t = rig_time.unwrap_or(sim.time()).max(sim.time());
         sim.advance_to(t, &inputs).map_err(|e| e.to_string())?;
         let s = sim.sample().map_err(|e| e.to_string())?;
         self.note_fallback();
-        self.out = outputs(&s)?;
+        let joint = self.sim.as_ref().expect("built above").joint();
+        self.out = with_min_film(outputs(&s)?, &s, joint);
         Ok(())
     }
 }
@@ -369,7 +408,9 @@ impl Model for RigModel {
     fn set_real(&mut self, i: usize, x: f64) {
         let v = LAYOUT[i];
         self.settings.set(v, x);
-        if !matches!(v, Var::Load | Var::CommandAngle) {
+        // The temperature input is applied at the next refresh (rebuilding the friction model
+        // and keeping the simulator's state); parameters drop the simulator.
+        if !matches!(v, Var::Load | Var::CommandAngle | Var::Temperature) {
             self.sim = None;
         }
         if matches!(v, Var::Fidelity | Var::Tolerance | Var::Envelope(_)) {

@@ -1,11 +1,11 @@
 //! The PinJointRig part of the serialized FMU state (inside the generic layer's
-//! container, [`fmi_layer::fmi2::snapshot`]), little-endian, version 2:
+//! container, [`fmi_layer::fmi2::snapshot`]), little-endian, version 3:
 //!
 //! | bytes | content |
 //! |---|---|
-//! | 1 | version (2) |
+//! | 1 | version (3) |
 //! | 2 | n, number of settings |
-//! | 8·n | every input and parameter value in table order (Booleans 0/1, Integers as f64), the fidelity settings (`fidelity`, `tolerance`, envelope) last |
+//! | 8·n | every input and parameter value in table order (Booleans 0/1, Integers as f64), the fidelity settings (`fidelity`, `tolerance`, envelope), then the `temperature` input last |
 //! | 8 | start time (s) |
 //! | 1 | 1 if the rig simulator exists (after initialization), else 0 |
 //! | 2 + m | m, then the simulator's [`RigState::to_bytes`] (m = 112) |
@@ -18,7 +18,10 @@
 //! the stored settings (deterministically: the same table) unless the instance already holds
 //! one built from the same settings.
 //!
-//! Version 1 (before the fidelity parameters) is refused: its settings count differs.
+//! Versions 1 (before the fidelity parameters) and 2 (before the temperature input and the
+//! temperature/starvation parameters) are refused: their settings counts differ.
+
+// Version 3: the `temperature` input is the last setting.
 
 use super::model::Settings;
 use super::variables::{Var, LAYOUT};
@@ -26,7 +29,7 @@ use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
 use fmi_layer::fmi2::model::ModelResult;
 use pinjoint::rig::RigState;
 
-const VERSION: u8 = 2;
+const VERSION: u8 = 3;
 
 fn settings_vars() -> impl Iterator<Item = Var> {
     LAYOUT.iter().copied().filter(|v| !matches!(v, Var::Out(_)))

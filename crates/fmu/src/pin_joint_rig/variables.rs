@@ -11,6 +11,7 @@
 //! | 300 + i | `section.key` for row i of [`pinjoint::params::PARAMS`] |
 //! | 400 | Integer `fidelity` (0 full, 1 table, 2 boundary, 3 auto), as PinJoint's |
 //! | 401–405 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
+//! | 3 | input `temperature` (K, display degC), last in the table so earlier entries keep their places |
 //!
 //! The `[rig]` file keys `frequency` and `amplitude` are the stroke parameters
 //! `frequency` and `amplitude`; the key `load` is the `load` input.
@@ -49,6 +50,8 @@ pub enum Var {
     Tolerance,
     /// load_min, load_max, speed_min, speed_max.
     Envelope(usize),
+    /// The `temperature` input (K): the lubricant temperature.
+    Temperature,
 }
 
 /// Names of the envelope parameters, in [`Var::Envelope`] order, with their units.
@@ -77,10 +80,12 @@ pub enum Output {
     ActuatorWork,
     FrictionDissipation,
     KineticEnergy,
+    MinFilmThickness,
+    MinLambdaRatio,
 }
 
 impl Output {
-    pub const ALL: [Output; 12] = [
+    pub const ALL: [Output; 14] = [
         Output::Angle,
         Output::AngularVelocity,
         Output::Torque,
@@ -93,6 +98,8 @@ impl Output {
         Output::ActuatorWork,
         Output::FrictionDissipation,
         Output::KineticEnergy,
+        Output::MinFilmThickness,
+        Output::MinLambdaRatio,
     ];
 }
 
@@ -106,6 +113,7 @@ pub static LAYOUT: LazyLock<Vec<Var>> = LazyLock::new(|| {
     v.extend((0..PARAMS.len()).map(Var::Model));
     v.extend([Var::Fidelity, Var::Tolerance]);
     v.extend((0..4).map(Var::Envelope));
+    v.push(Var::Temperature);
     v
 });
 
@@ -123,18 +131,18 @@ const DEG: f64 = 57.29577951308232; // 180/π
 
 /// Units of the rig's own variables, beyond those PinJoint defines.
 static RIG_UNITS: &[UnitDef] = &[
-    UnitDef { name: "Hz", quantity: "Frequency", kg: 0, m: 0, s: -1, rad: 0, display: &[] },
-    UnitDef { name: "s", quantity: "Time", kg: 0, m: 0, s: 1, rad: 0, display: &[DisplayUnit { name: "ms", factor: 1e3, offset: 0.0 }] },
-    UnitDef { name: "kg.m2", quantity: "MomentOfInertia", kg: 1, m: 2, s: 0, rad: 0, display: &[] },
+    UnitDef { name: "Hz", quantity: "Frequency", kg: 0, m: 0, s: -1, rad: 0, k: 0, display: &[] },
+    UnitDef { name: "s", quantity: "Time", kg: 0, m: 0, s: 1, rad: 0, k: 0, display: &[DisplayUnit { name: "ms", factor: 1e3, offset: 0.0 }] },
+    UnitDef { name: "kg.m2", quantity: "MomentOfInertia", kg: 1, m: 2, s: 0, rad: 0, k: 0, display: &[] },
     UnitDef {
         name: "N.m/rad", quantity: "RotationalStiffness",
         kg: 1,
         m: 2,
         s: -2,
         rad: -1,
-        display: &[DisplayUnit { name: "N.m/deg", factor: 1.0 / DEG, offset: 0.0 }],
+        k: 0, display: &[DisplayUnit { name: "N.m/deg", factor: 1.0 / DEG, offset: 0.0 }],
     },
-    UnitDef { name: "N.m.s/rad", quantity: "RotationalDampingConstant", kg: 1, m: 2, s: -1, rad: -1, display: &[] },
+    UnitDef { name: "N.m.s/rad", quantity: "RotationalDampingConstant", kg: 1, m: 2, s: -1, rad: -1, k: 0, display: &[] },
 ];
 
 /// Every unit used by a PinJointRig variable (PinJoint's definitions where shared).
@@ -197,11 +205,19 @@ fn output(o: Output) -> Variable {
             "Energy dissipated by friction since initialization, D = integral of -T_f omega dt"),
         Output::KineticEnergy => real("kinetic_energy", vr, Out, C, Some("J"), None,
             "Kinetic energy of the rotating parts, J omega^2 / 2 (energy balance: W - D = change of kinetic energy)"),
+        Output::MinFilmThickness => real("min_film_thickness", vr, Out, C, Some("m"), Some("µm"),
+            "Minimum film thickness h_min at (P, |omega|): h_c times Pan and Hamrock's (1989) line-contact ratio under eq. 13's substitution (extension; an extrapolation for this joint); 0 at rest and at zero load"),
+        Output::MinLambdaRatio => real("min_lambda_ratio", vr, Out, C, None, None,
+            "h_min/sqrt(sigma^2 + sigma_b^2) (eq. 21 as printed, with h_min); 0 at rest and at zero load"),
     };
     v.min = match o {
-        Output::FrictionCoefficient | Output::FilmThickness | Output::FluidLoadFraction | Output::FrictionDissipation | Output::KineticEnergy => {
-            Some(0.0)
-        }
+        Output::FrictionCoefficient
+        | Output::FilmThickness
+        | Output::FluidLoadFraction
+        | Output::FrictionDissipation
+        | Output::KineticEnergy
+        | Output::MinFilmThickness
+        | Output::MinLambdaRatio => Some(0.0),
         _ => None,
     };
     if o == Output::FluidLoadFraction {
@@ -211,8 +227,9 @@ fn output(o: Output) -> Variable {
     // decides stick against breakaway); the commanded angle is the command input.
     v.depends_on = match o {
         Output::FrictionTorque | Output::FrictionCoefficient | Output::FilmThickness | Output::FluidLoadFraction | Output::Stuck => {
-            vec!["load"]
+            vec!["load", "temperature"]
         }
+        Output::MinFilmThickness | Output::MinLambdaRatio => vec!["load", "temperature"],
         Output::CommandedAngle => vec!["command_angle"],
         _ => vec![],
     };
@@ -327,6 +344,12 @@ pub fn table() -> Vec<Variable> {
     v.push(fid("envelope.speed_min", 404, Some("rad/s"), w0,
         "Smallest speed magnitude |omega| of the envelope (> 0; slower speeds, around every reversal, are answered by the full solve)"));
     v.push(fid("envelope.speed_max", 405, Some("rad/s"), w1, "Largest speed magnitude |omega| of the envelope (> envelope.speed_min)"));
+    let mut t = real("temperature", 3, Causality::Input, Variability::Continuous, Some("K"), Some("degC"),
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in (138.15, 673.15] K. Held over each step; a change rebuilds the friction model and continues the integration from the current state (a table level is re-tabulated)");
+    t.start = Some(pinjoint::params::DEFAULT_TEMPERATURE);
+    t.min = Some(pinjoint::params::MIN_TEMPERATURE);
+    t.max = Some(pinjoint::params::MAX_TEMPERATURE);
+    v.push(t);
     debug_assert_eq!(v.len(), LAYOUT.len());
     v
 }
