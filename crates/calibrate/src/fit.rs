@@ -105,6 +105,11 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
     }
     let (jac, model) = problem.jacobian(&beta)?;
     let r = &y - &model;
+    if !(beta.iter().all(|b| b.is_finite()) && r.norm_squared().is_finite()) {
+        return Err(CalibrationError::Unidentifiable {
+            what: format!("the fit overflows (largest |torque| {:e} N.m): are the torque values in N.m?", y.amax()),
+        });
+    }
     let cl: Vec<usize> = points.iter().map(|p| p.cluster).collect();
     let u = analyse(&jac, &r, &cl, clusters.len(), options.resamples, options.seed).ok_or_else(|| CalibrationError::Unidentifiable {
         what: "the fitted quantities cannot be determined from these records (singular normal matrix)".into(),
