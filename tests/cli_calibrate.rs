@@ -98,6 +98,10 @@ fn bad_files_are_named_with_line_column_and_unit() {
     assert!(e.contains("line 3") && e.contains("does not increase"), "{e}");
     let e = fail(&["calibrate", "--input", s(&write("g.csv", "time,angle,torque,load\n0,0,1,5\n0.1,0.1,1,5\n")), "--output", s(&out)]);
     assert!(e.contains("too short"), "{e}");
+    // A --load beside a load column must agree with it.
+    let e = fail(&["calibrate", "--input", s(&tmp.path().join("g.csv")), "--load", "7", "--output", s(&out)]);
+    assert!(e.contains("line 2") && e.contains("column load = 5 N disagrees with --load 7 N"), "{e}");
+    assert!(fail(&["calibrate", "--input", s(&tmp.path().join("g.csv")), "--load", "5", "--output", s(&out)]).contains("too short"));
     // Angle in degrees: a whole record of ±40°.
     let mut text = String::from("time,angle,torque\n");
     for i in 0..2000 {

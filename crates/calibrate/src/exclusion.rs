@@ -76,6 +76,9 @@ pub struct RecordExclusion {
 /// (counting from 0 within the record).
 pub struct Classified {
     pub stroke: Vec<Option<usize>>,
+    /// Time since the start of the sample's settling window (the stroke's threshold crossing,
+    /// or the record's start), s.
+    pub since: Vec<f64>,
     pub summary: RecordExclusion,
 }
 
@@ -87,6 +90,7 @@ pub fn classify(record: &str, time: &[f64], omega: &[f64], rule: &ExclusionRule)
     let peak = if n == 0 { 0.0 } else { speeds[((n - 1) as f64 * 0.95).round() as usize] };
     let threshold = rule.speed_fraction * peak;
     let mut stroke = vec![None; n];
+    let mut since = vec![0.0; n];
     let mut reasons: Vec<Option<Reason>> = vec![None; n];
     let mut reversals = Vec::new();
     let (mut sign, mut t_settle, mut index) = (0.0f64, time.first().copied().unwrap_or(0.0), 0usize);
@@ -108,6 +112,7 @@ pub fn classify(record: &str, time: &[f64], omega: &[f64], rule: &ExclusionRule)
                 }
                 sign = s;
             }
+            since[i] = time[i] - t_settle;
             if time[i] - t_settle < rule.settle_time {
                 reasons[i] = Some(Reason::Settling);
             } else {
@@ -146,7 +151,7 @@ pub fn classify(record: &str, time: &[f64], omega: &[f64], rule: &ExclusionRule)
         settling,
         used: n - low_speed - settling,
     };
-    Classified { stroke, summary }
+    Classified { stroke, since, summary }
 }
 
 #[cfg(test)]

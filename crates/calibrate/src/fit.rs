@@ -28,10 +28,72 @@ struct Point {
     /// T − J·α (N·m).
     y: f64,
     cluster: usize,
+    /// Time since the sample's settling window began (s).
+    since: f64,
 }
 
+/// Extensions of the settling window at most (each by half the stated settling time).
+pub const MAX_SETTLE_EXTENSIONS: usize = 6;
+
 /// Fit `records` as `options` asks. See the crate documentation for the model.
+///
+/// The settling window is then checked against the data: if the residual just after it (the
+/// next half settling time, averaged over every stroke with the sign of the motion) differs
+/// from that of the rest of the strokes by more than 3 standard errors, the breakaway or the
+/// servo ringing lasts longer than the window, and the window is extended by half the settling
+/// time and the fit repeated (at most [`MAX_SETTLE_EXTENSIONS`] times, and only while at least
+/// half the samples stay in use). The report says so.
 pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, CalibrationError> {
+    let mut o = options.clone();
+    let step = 0.5 * options.exclusion.settle_time;
+    let (mut best, mut deviates) = calibrate_once(records, &o)?;
+    let first_used = best.points_used;
+    let mut extended = 0;
+    while deviates.is_some() && step > 0.0 && extended < MAX_SETTLE_EXTENSIONS {
+        o.exclusion.settle_time += step;
+        match calibrate_once(records, &o) {
+            Ok((c, d)) if 2 * c.points_used >= first_used => {
+                extended += 1;
+                (best, deviates) = (c, d);
+            }
+            _ => break,
+        }
+    }
+    if extended > 0 {
+        best.warnings.push(format!(
+            "the settling window was extended from {} s to {} s: just after the shorter one the stroke-averaged residual still \
+             differed from the rest of the strokes by more than 3 standard errors (breakaway or servo ringing lasting longer){}",
+            options.exclusion.settle_time,
+            (o.exclusion.settle_time * 1e6).round() / 1e6,
+            match deviates {
+                Some(d) => format!("; it still differs by {d:.4} N.m after the last extension"),
+                None => String::new(),
+            }
+        ));
+    }
+    best.settle_time = o.exclusion.settle_time;
+    Ok(best)
+}
+
+/// The mean of sign(ω)·residual over used samples with `since` in [settle, 1.5·settle) against
+/// the rest: Some(difference) when it exceeds 3 standard errors of the window's mean.
+fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64) -> Option<f64> {
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    for (i, p) in points.iter().enumerate() {
+        let v = r[i] * p.omega.signum();
+        if p.since < 1.5 * settle { a.push(v) } else { b.push(v) }
+    }
+    if a.len() < 10 || b.len() < 10 {
+        return None;
+    }
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (ma, mb) = (mean(&a), mean(&b));
+    let var = |v: &[f64], m: f64| v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (v.len() - 1) as f64;
+    let se = (var(&a, ma) / a.len() as f64 + var(&b, mb) / b.len() as f64).sqrt();
+    ((ma - mb).abs() > 3.0 * se).then_some(ma - mb)
+}
+
+fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration, Option<f64>), CalibrationError> {
     if records.is_empty() {
         return Err(CalibrationError::NoRecords);
     }
@@ -47,7 +109,15 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
             if let Some(s) = s {
                 let next = clusters.len();
                 let cluster = *clusters.entry((ri, *s)).or_insert(next);
-                points.push(Point { rec: ri, row, load: p.load[row], omega: p.omega[row], y: p.torque[row] - j_inertia * p.alpha[row], cluster });
+                points.push(Point {
+                    rec: ri,
+                    row,
+                    load: p.load[row],
+                    omega: p.omega[row],
+                    y: p.torque[row] - j_inertia * p.alpha[row],
+                    cluster,
+                    since: p.since[row],
+                });
             }
         }
     }
@@ -105,6 +175,11 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
     }
     let (jac, model) = problem.jacobian(&beta)?;
     let r = &y - &model;
+    if !(beta.iter().all(|b| b.is_finite()) && r.norm_squared().is_finite()) {
+        return Err(CalibrationError::Unidentifiable {
+            what: format!("the fit overflows (largest |torque| {:e} N.m): are the torque values in N.m?", y.amax()),
+        });
+    }
     let cl: Vec<usize> = points.iter().map(|p| p.cluster).collect();
     let u = analyse(&jac, &r, &cl, clusters.len(), options.resamples, options.seed).ok_or_else(|| CalibrationError::Unidentifiable {
         what: "the fitted quantities cannot be determined from these records (singular normal matrix)".into(),
@@ -147,7 +222,8 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
     let rss = r.norm_squared();
     let series = series(&prepared, &params, &beta, options, np)?;
     let points_used = points.len();
-    Ok(Calibration {
+    let deviation = settle_deviation(&points, &r, options.exclusion.settle_time);
+    Ok((Calibration {
         params,
         estimates,
         offset,
@@ -165,8 +241,9 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
         warnings,
         inertia: j_inertia,
         evaluations,
+        settle_time: options.exclusion.settle_time,
         series,
-    })
+    }, deviation))
 }
 
 fn check_options(o: &Options) -> Result<(), CalibrationError> {

@@ -23,6 +23,8 @@ pub struct Prepared {
     pub load: Vec<f64>,
     /// Stroke index of each used sample, None for an excluded one.
     pub stroke: Vec<Option<usize>>,
+    /// Time since the sample's settling window began (s).
+    pub since: Vec<f64>,
     pub exclusion: RecordExclusion,
     /// Differentiator half-width used (samples).
     pub half_width: usize,
@@ -94,6 +96,7 @@ pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>)
         torque: record.torque.clone(),
         load: record.load.clone(),
         stroke: c.stroke,
+        since: c.since,
         exclusion: c.summary,
         half_width: k,
         irregularity,

@@ -78,6 +78,8 @@ pub struct Calibration {
     pub warnings: Vec<String>,
     /// Inertia subtracted (kg·m²).
     pub inertia: f64,
+    /// Settling time used (s): the stated one, or longer when the data asked for it.
+    pub settle_time: f64,
     /// Levenberg–Marquardt evaluations (0 for the linear fit).
     pub evaluations: usize,
     pub series: Vec<Series>,

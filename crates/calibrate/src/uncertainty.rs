@@ -81,6 +81,10 @@ pub fn analyse(j: &DMatrix<f64>, r: &DVector<f64>, cluster: &[usize], clusters: 
         return None;
     }
     let jtj = j.transpose() * j;
+    // Non-finite sums (values overflowing f64) would leave the eigen-solver below without convergence.
+    if !(jtj.iter().all(|x| x.is_finite()) && r.iter().all(|x| x.is_finite())) {
+        return None;
+    }
     let inv = jtj.clone().try_inverse()?;
     let sigma2 = r.norm_squared() / (n - p) as f64;
     let cov_iid = &inv * sigma2;

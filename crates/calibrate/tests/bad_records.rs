@@ -113,6 +113,10 @@ fn nan_rows_and_bad_values() {
     assert!(matches!(err(&[r]), CalibrationError::NoKinematics { .. }));
     assert!(matches!(err(&[]), CalibrationError::NoRecords));
     let mut r = sine(0.3, 400, 6);
+    r.torque = r.torque.iter().map(|t| t * 1e300).collect();
+    let e = err(&[r]);
+    assert!(e.to_string().contains("overflows") && e.to_string().contains("N.m"), "{e}");
+    let mut r = sine(0.3, 400, 6);
     r.load = vec![1e12; r.time.len()];
     let e = err(&[r]);
     assert!(matches!(e, CalibrationError::Model { .. }), "{e}");
@@ -121,7 +125,7 @@ fn nan_rows_and_bad_values() {
 #[test]
 fn bad_options_are_named() {
     let r = sine(0.3, 400, 6);
-    let bad = |o: Options| calibrate(&[r.clone()], &o).unwrap_err().to_string();
+    let bad = |o: Options| calibrate(std::slice::from_ref(&r), &o).unwrap_err().to_string();
     assert!(bad(Options { inertia: -1.0, ..Options::default() }).contains("inertia = -1 kg.m2"));
     assert!(bad(Options { fit: vec!["lubricant.viscosityy".into()], ..Options::default() }).contains("unknown parameter `lubricant.viscosityy`"));
     let mut o = Options::default();

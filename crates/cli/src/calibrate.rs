@@ -180,9 +180,6 @@ pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
         Some(_) => find("load")?,
         None => Some(need("load", "N", " and no --load was given")?),
     };
-    if load.is_some() && il.is_some() {
-        return Err(bad(header_line, "the file has a `load` column and --load was given too: use one".into()));
-    }
     let mut r = Record { name: file.clone(), angle: ia.map(|_| Vec::new()), angular_velocity: iw.map(|_| Vec::new()), ..Record::default() };
     for rec in rdr.records() {
         let rec = rec.map_err(|e| bad(e.position().map_or(0, |p| p.line()), format!("unreadable CSV: {e}")))?;
@@ -207,7 +204,16 @@ pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
             v.push(num(i, "angular_velocity", "rad/s")?);
         }
         let p = match (il, load) {
-            (Some(i), _) => num(i, "load", "N")?,
+            (Some(i), given) => {
+                // The column is the record; a --load beside it must agree with it (1 %).
+                let p = num(i, "load", "N")?;
+                if let Some(g) = given
+                    && (p - g).abs() > 0.01 * g
+                {
+                    return Err(bad(line, format!("column load = {p} N disagrees with --load {g} N: drop one")));
+                }
+                p
+            }
             (None, Some(p)) => p,
             (None, None) => unreachable!("load column required above"),
         };

@@ -194,12 +194,12 @@ fn blocks(c: &Calibration, inputs: &[String]) -> Vec<Block> {
         b.push(Para(format!("⚠ {w}")));
     }
     b.push(Heading("Excluded samples".into()));
-    b.push(Para(
+    b.push(Para(format!(
         "Rule: a sample is left out when |ω| is below the speed threshold (the stated fraction of the record's 95th-percentile \
-         speed: the stick and static peak at each reversal), or within the settling time after the motion rose above that \
-         threshold past a reversal, or after the record's start (breakaway, servo ringing)."
-            .into(),
-    ));
+         speed: the stick and static peak at each reversal), or within the settling time ({} s used) after the motion rose \
+         above that threshold past a reversal, or after the record's start (breakaway, servo ringing).",
+        g(c.settle_time)
+    )));
     let rows = c
         .exclusions
         .iter()
