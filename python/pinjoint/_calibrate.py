@@ -56,7 +56,7 @@ class Calibration(dict):
 
 
 def _column(rec: Any, name: str) -> Any:
-    """rec[name] for a mapping (dict, DataFrame, NpzFile), else getattr; None if absent."""
+    """rec[name] for a mapping (anything with `in` and `[]`), else getattr; None if absent."""
     if hasattr(rec, "__getitem__") and not isinstance(rec, (str, bytes, np.ndarray)):
         try:
             if name in rec:
@@ -123,7 +123,7 @@ def calibrate(
     """Fit the model's parameters to measured torque cycles, as ``pinjoint calibrate`` does.
 
     records     a list of records (one per test; several loads and frequencies are fitted
-                jointly), or one record. A record is a dict (or DataFrame, or any object with
+                jointly), or one record. A record is a mapping (or any object with
                 these attributes) of 1-D arrays with the columns of the CLI's CSV: ``time``
                 (s, increasing), ``angle`` (rad) and/or ``angular_velocity`` (rad/s),
                 ``torque`` (N*m, the recorded actuator torque, positive in the direction of
