@@ -130,3 +130,23 @@ def test_bad_options_are_value_errors(records):
         pinjoint.calibrate([])
     with pytest.raises(TypeError):
         pinjoint.calibrate(records, resamples=1.5)
+
+
+def test_options_map_to_cli_flags(records, cli, tmp_path):
+    """params as a TOML file with a [rig] inertia (as --params), and the exclusion and offset
+    options as --speed-fraction, --settle-time, --no-offset: the same JSON as the CLI."""
+    toml = tmp_path / "start.toml"
+    toml.write_text(f"[friction]\nboundary_friction_coefficient = 0.1\n\n[rig]\ninertia = 0.07\n")
+    csv_path = tmp_path / "r.csv"
+    write_csv(csv_path, records[1])
+    ours = pinjoint.calibrate([records[1]], params=toml, speed_fraction=0.4, settle_time=0.2, fit_offset=False)
+    assert ours["inertia"] == 0.07 and "torque_offset" not in ours
+    run = subprocess.run(
+        [str(cli), "calibrate", "--input", str(csv_path), "--params", str(toml), "--speed-fraction", "0.4",
+         "--settle-time", "0.2", "--no-offset", "--output", str(tmp_path / "out"), "--json"],
+        check=True, capture_output=True, text=True,
+    )
+    assert json.loads(ours.to_json()) == json.loads(run.stdout)
+    # A changed option changes the fit (the comparison above can fail).
+    other = pinjoint.calibrate([records[1]], params=toml, speed_fraction=0.4, settle_time=0.2, fit_offset=False, inertia=0.0)
+    assert other["parameters"] != ours["parameters"]
