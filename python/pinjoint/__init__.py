@@ -13,6 +13,8 @@ the ``pinjoint`` command line and FMUs), evaluated over NumPy arrays on every co
 >>> out = joint.evaluate([20e3, 60e3], [0.2, 4.39])  # load (N), speed (rad/s)
 >>> out["torque"]                                   # N*m
 >>> cycle = pinjoint.simulate_cycle(frequency=1.0, amplitude=0.698, load=20e3, cycles=3)
+>>> fit = pinjoint.calibrate([dict(cycle, load=20e3)])  # mu_c from a torque record
+>>> fit["parameters"]["friction.boundary_friction_coefficient"]["ci95"]
 
 Everything is in SI units: N, m, Pa, Pa*s, rad, rad/s, N*m.
 
@@ -22,21 +24,25 @@ Joint            the model at a fidelity level; ``evaluate(load, speed)``
 Params           the parameter set (the parameter file's keys, validation and messages)
 default_params   the paper's parameters
 simulate_cycle   whole strokes of the paper's torsion test rig (columns of cycle.csv)
+calibrate        fit mu_c (and other parameters) to measured torque cycles, as
+                 ``pinjoint calibrate``; returns a Calibration (dict + ``.params``)
 param_table, rig_param_table   names, units, ranges, defaults and meanings
-RESULT_COLUMNS, CYCLE_COLUMNS, REGIMES
-
-``calibrate`` is not here yet (it comes with the calibration crate).
+RESULT_COLUMNS, CYCLE_COLUMNS, REGIMES, MU_C
 """
 
-from ._native import CYCLE_COLUMNS, REGIMES, RESULT_COLUMNS, Params, param_table, rig_param_table
+from ._native import CYCLE_COLUMNS, MU_C, REGIMES, RESULT_COLUMNS, Params, param_table, rig_param_table
 from ._joint import DEFAULT_ENVELOPE, Joint, default_params
 from ._cycle import simulate_cycle
+from ._calibrate import Calibration, calibrate
 
 __all__ = [
     "CYCLE_COLUMNS",
+    "Calibration",
+    "MU_C",
     "DEFAULT_ENVELOPE",
     "Joint",
     "Params",
+    "calibrate",
     "REGIMES",
     "RESULT_COLUMNS",
     "default_params",

@@ -11,6 +11,7 @@ import numpy.typing as npt
 RESULT_COLUMNS: List[str]
 CYCLE_COLUMNS: List[str]
 REGIMES: List[str]
+MU_C: str
 
 class Params:
     """Model parameters (SI units), validated; the parameter file's keys and messages."""
@@ -60,6 +61,18 @@ def _simulate_cycle(
     fidelity: str,
     tolerance: float,
 ) -> Dict[str, np.ndarray]: ...
+def _calibrate(
+    records: List[Tuple[str, np.ndarray, Optional[np.ndarray], Optional[np.ndarray], np.ndarray, np.ndarray]],
+    params: Union[Params, Mapping[str, Any], str, None],
+    fit_keys: List[str],
+    inertia: Optional[float],
+    fit_offset: bool,
+    speed_fraction: Optional[float],
+    settle_time: Optional[float],
+    half_width: Optional[int],
+    resamples: Optional[int],
+    seed: Optional[int],
+) -> Tuple[Dict[str, Any], Params]: ...
 def param_table() -> List[Dict[str, Any]]:
     """name, symbol, unit, range, default, description, source of every model parameter."""
 def rig_param_table() -> List[Dict[str, Any]]:

@@ -34,7 +34,7 @@ fn rig_err(e: RigError) -> PyErr {
 
 /// The rig configuration: `params` (None, a Params, a mapping possibly with a "rig" section,
 /// or a TOML file path), then the `rig` keyword overrides; parsed and validated by the library.
-fn config(params: Option<&Bound<'_, PyAny>>, rig: &Bound<'_, PyDict>) -> PyResult<RigConfig> {
+pub fn config(params: Option<&Bound<'_, PyAny>>, rig: &Bound<'_, PyDict>) -> PyResult<RigConfig> {
     let mut table: toml::Table = match params {
         None => toml::Table::new(),
         Some(p) if p.is_none() => toml::Table::new(),

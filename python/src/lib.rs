@@ -1,17 +1,19 @@
 //! `pinjoint._native`: the Python extension module behind the `pinjoint` package.
 //!
 //! The Python package (`python/pinjoint/`) wraps these pieces: argument coercion and NumPy
-//! broadcasting happen there, the physics here. Only the physics crate is used (`params`,
-//! `joint`, `fidelity`, `rig`); every number comes from the same functions as the CLI, so the
+//! broadcasting happen there, the physics here. Only the physics crate (`params`,
+//! `joint`, `fidelity`, `rig`) and the calibration crate are used; every number comes from the same functions as the CLI, so the
 //! results equal `pinjoint sweep` and `pinjoint cycle` bit for bit.
 //!
 //! - [`params`]: the `Params` class (the parameter file's keys, validation and messages).
 //! - [`joint`]: `_Joint`, the vectorised, parallel, GIL-free evaluation.
 //! - [`cycle`]: `_simulate_cycle`, whole rig strokes (the columns of `cycle.csv`).
+//! - [`calibrate`]: `_calibrate`, the fit of `pinjoint calibrate` (`pinjoint-calibrate`).
 //! - [`messages`]: error texts with values in their shortest round-trip form.
 
 use pyo3::prelude::*;
 
+pub mod calibrate;
 pub mod cycle;
 pub mod joint;
 pub mod messages;
@@ -24,6 +26,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<params::PyParams>()?;
     m.add_class::<joint::NativeJoint>()?;
     m.add_function(wrap_pyfunction!(cycle::simulate_cycle, m)?)?;
+    m.add_function(wrap_pyfunction!(calibrate::calibrate, m)?)?;
+    m.add("MU_C", pinjoint_calibrate::MU_C)?;
     m.add_function(wrap_pyfunction!(params::param_table, m)?)?;
     m.add_function(wrap_pyfunction!(params::rig_param_table, m)?)?;
     m.add("RESULT_COLUMNS", joint::RESULT_COLUMNS.to_vec())?;

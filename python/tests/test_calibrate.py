@@ -1,0 +1,152 @@
+"""pinjoint.calibrate: mu_c recovered from rig records made by simulate_cycle, the result
+equal to `pinjoint calibrate --json` on the same records (bit for bit), bad records rejected."""
+
+from __future__ import annotations
+
+import json
+import pickle
+import subprocess
+
+import numpy as np
+import pytest
+
+import pinjoint
+
+MU = 0.105
+LOADS = (20e3, 40e3)
+
+
+@pytest.fixture(scope="module")
+def records():
+    """Two rig records (0.3 Hz, +-40 deg, 3 strokes; breakaway peaks at every reversal, the
+    rig's inertia and servo) at two loads, made with mu_c = 0.105."""
+    params = pinjoint.Params({pinjoint.MU_C: MU})
+    out = []
+    for load in LOADS:
+        c = pinjoint.simulate_cycle(0.3, np.radians(40.0), load, cycles=3, samples_per_cycle=1000, params=params)
+        out.append({"name": f"P{load:g}", "time": c["time"], "angle": c["angle"], "torque": c["torque"], "load": load})
+    return out
+
+
+@pytest.fixture(scope="module")
+def fitted(records):
+    return pinjoint.calibrate(records)
+
+
+def write_csv(path, rec):
+    """The record as a CSV the CLI reads: every value in Python's repr (round-trips exactly)."""
+    with open(path, "w") as f:
+        f.write("time,angle,torque,load\n")
+        for t, a, q in zip(rec["time"], rec["angle"], rec["torque"]):
+            f.write(f"{float(t)!r},{float(a)!r},{float(q)!r},{float(rec['load'])!r}\n")
+
+
+def test_mu_c_recovered_within_interval(fitted):
+    est = fitted["parameters"][pinjoint.MU_C]
+    lo, hi = est["ci95"]
+    assert lo <= MU <= hi, est
+    assert abs(est["value"] - MU) < 1e-3, est
+    assert 0 < est["standard_error"] < 1e-3
+    # The calibrated parameter set: mu_c replaced, everything else the defaults.
+    assert fitted.params[pinjoint.MU_C] == est["value"]
+    assert fitted.params.with_values({pinjoint.MU_C: 0.12}) == pinjoint.Params()
+    assert fitted["points_used"] + fitted["points_excluded"] == sum(len(r["time"]) for r in fitted["series"])
+    # Excluded windows are reported per record, each with its reason.
+    assert [x["record"] for x in fitted["excluded"]] == ["P20000", "P40000"]
+    for x in fitted["excluded"]:
+        assert x["windows"] and {w["reason"] for w in x["windows"]} <= {"low speed", "settling after reversal"}
+        assert sum(w["samples"] for w in x["windows"]) == x["low_speed"] + x["settling"]
+
+
+def test_equals_cli_json(fitted, records, cli, tmp_path):
+    paths = []
+    for r in records:
+        p = tmp_path / f"{r['name']}.csv"
+        write_csv(p, r)
+        paths.append(p)
+    args = [str(cli), "calibrate", "--output", str(tmp_path / "out"), "--json"]
+    for p in paths:
+        args += ["--input", str(p)]
+    run = subprocess.run(args, check=True, capture_output=True, text=True)
+    cli_json = json.loads(run.stdout)
+    ours = json.loads(fitted.to_json())
+    assert ours == cli_json  # the floats parse back to the same doubles: bit for bit
+    for key in cli_json:
+        assert fitted[key] == cli_json[key], key
+    assert pinjoint.Params.from_toml(tmp_path / "out" / "calibrated.toml") == fitted.params
+
+
+def test_result_pickles_and_forms(fitted, records):
+    again = pickle.loads(pickle.dumps(fitted))
+    assert again.params == fitted.params and again["parameters"] == fitted["parameters"]
+    # One record alone, an object with attributes, a scalar load as an array: same fit.
+    class Rec:
+        pass
+
+    r = Rec()
+    for k, v in records[0].items():
+        setattr(r, k, v)
+    a = pinjoint.calibrate(records[0], resamples=0)
+    b = pinjoint.calibrate([r], resamples=0)
+    c = pinjoint.calibrate([dict(records[0], load=np.full(len(records[0]["time"]), LOADS[0]))], resamples=0)
+    assert a.to_json() == b.to_json() == c.to_json()
+
+
+def short(rec, **changes):
+    return dict(rec, **changes)
+
+
+@pytest.mark.parametrize(
+    "change, words",
+    [
+        (lambda r: short(r, torque=np.where(np.arange(len(r["time"])) == 7, np.nan, r["torque"])), ["torque", "nan", "N.m", "index 7"]),
+        (lambda r: short(r, load=-5.0), ["load = -5.0 N", "index 0"]),
+        (lambda r: short(r, angle=np.degrees(r["angle"])), ["angle", "rad", "degrees"]),
+        (lambda r: short(r, time=r["time"][::-1].copy()), ["time", "index 1"]),
+        (lambda r: {k: (v[:5] if isinstance(v, np.ndarray) else v) for k, v in r.items()}, ["5 samples", "too short"]),
+        (lambda r: short(r, angle=np.zeros_like(r["angle"])), ["no motion"]),
+        (lambda r: {k: v for k, v in r.items() if k != "torque"}, ["torque", "N.m"]),
+        (lambda r: {k: v for k, v in r.items() if k != "angle"}, ["angle", "angular_velocity"]),
+        (lambda r: short(r, torque=r["torque"][:-1]), ["torque", "values but time has"]),
+    ],
+)
+def test_bad_records_are_value_errors(records, change, words):
+    with pytest.raises(ValueError) as e:
+        pinjoint.calibrate([change(records[0])], resamples=0)
+    text = str(e.value)
+    for w in words:
+        assert w.lower() in text.lower(), (w, text)
+    assert len(text) < 400, text
+
+
+def test_bad_options_are_value_errors(records):
+    with pytest.raises(ValueError, match="model = 'rig'"):
+        pinjoint.calibrate(records, model="rig")
+    with pytest.raises(ValueError, match="always fitted"):
+        pinjoint.calibrate(records, fit=("lubricant.viscosity",))
+    with pytest.raises(ValueError, match="no_such"):
+        pinjoint.calibrate(records, fit=(pinjoint.MU_C, "lubricant.no_such"), resamples=0)
+    with pytest.raises(ValueError, match="no records"):
+        pinjoint.calibrate([])
+    with pytest.raises(TypeError):
+        pinjoint.calibrate(records, resamples=1.5)
+
+
+def test_options_map_to_cli_flags(records, cli, tmp_path):
+    """params as a TOML file with a [rig] inertia (as --params), and the exclusion and offset
+    options as --speed-fraction, --settle-time, --no-offset: the same JSON as the CLI."""
+    toml = tmp_path / "start.toml"
+    toml.write_text(f"[friction]\nboundary_friction_coefficient = 0.1\n\n[rig]\ninertia = 0.07\n")
+    csv_path = tmp_path / "r.csv"
+    write_csv(csv_path, records[1])
+    ours = pinjoint.calibrate([records[1]], params=toml, speed_fraction=0.4, settle_time=0.2, fit_offset=False)
+    assert ours["inertia"] == 0.07 and "torque_offset" not in ours
+    run = subprocess.run(
+        [str(cli), "calibrate", "--input", str(csv_path), "--params", str(toml), "--speed-fraction", "0.4",
+         "--settle-time", "0.2", "--no-offset", "--output", str(tmp_path / "out"), "--json"],
+        check=True, capture_output=True, text=True,
+    )
+    assert json.loads(ours.to_json()) == json.loads(run.stdout)
+    # A changed option changes the fit (the comparison above can fail).
+    other = pinjoint.calibrate([records[1]], params=toml, speed_fraction=0.4, settle_time=0.2, fit_offset=False, inertia=0.0)
+    assert other["parameters"] != ours["parameters"]
