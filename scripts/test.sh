@@ -20,8 +20,15 @@ fi
 # --- Rust: unit, integration, property and doc tests ------------------------------
 cargo test --workspace --release
 
-# --- FMUs and the Python harness (fmpy), then the Rust `fmi` crate against the packaged FMU
-PINJOINT_SKIP_APT=1 bash tests/python/run.sh
+# --- the FMU binary cross-built for every platform (fmu_build --platforms all: Linux glibc
+# 2.17, Windows, macOS, aarch64 Linux), each run: natively, under wine, under qemu-aarch64
+# (macOS: exports and load commands inspected only). Installs its own tools (apt, rustup
+# targets, cargo-zigbuild and ziglang from PyPI). Leaves the all-platform FMUs in target/fmu/.
+bash tests/platforms/run.sh
+
+# --- the Python harness (fmpy) and the Rust `fmi` crate on those FMUs (linux64 = the
+# shipped glibc-2.17 binary; PINJOINT_KEEP_FMUS: do not rebuild them host-only)
+PINJOINT_KEEP_FMUS=1 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
 
 # --- memory: a C host dlopens the packaged FMU, 50 instantiate/step/free cycles under valgrind
 # (the issue's 1000-cycle check is `bash tests/valgrind.sh 1000`)

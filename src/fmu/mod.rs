@@ -5,6 +5,7 @@
 pub mod pass_through;
 pub mod pin_joint;
 pub mod pin_joint_rig;
+pub mod platforms_doc;
 
 use crate::fmi2::variables::ModelInfo;
 

@@ -137,9 +137,11 @@ All have variability <em>fixed</em>: set them before fmi2ExitInitializationMode.
 debug logging off.</li>
 <li>fmi2DoStep requires a positive, finite step that continues the previous one.</li>
 </ul>
-</body></html>
+
+{platforms}</body></html>
 "#,
         guid = INFO.guid(),
+        platforms = crate::fmu::platforms_doc::PLATFORMS_HTML,
         version = INFO.version,
         r_red = j.reduced_radius(),
         e_eff = j.effective_modulus() / 1e9,

@@ -175,9 +175,11 @@ magic, version, length and CRC-32, holding this model's versioned part: every se
 <li><code>stuck</code> is a Boolean output (variability discrete), <code>use_command_input</code> a Boolean parameter,
 <code>rig.formulation</code>, <code>rig.method</code> and <code>fidelity</code> Integer parameters; everything else is Real.</li>
 </ul>
-</body></html>
+
+{platforms}</body></html>
 "#,
         guid = INFO.guid(),
+        platforms = crate::fmu::platforms_doc::PLATFORMS_HTML,
         version = INFO.version,
         tb20 = r.breakaway_factor * j.boundary_torque(20e3),
         tb60 = r.breakaway_factor * j.boundary_torque(60e3),
