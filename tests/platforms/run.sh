@@ -35,8 +35,9 @@ if [[ ${#debs[@]} -gt 0 && -z "${PINJOINT_SKIP_APT:-}" ]]; then
     $SUDO apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${debs[@]}" >/dev/null
 fi
-rustup target add -q x86_64-unknown-linux-gnu aarch64-unknown-linux-gnu x86_64-pc-windows-gnu \
-    x86_64-apple-darwin aarch64-apple-darwin 2>&1 | grep -v "is up to date" || true
+rustup target add x86_64-unknown-linux-gnu aarch64-unknown-linux-gnu x86_64-pc-windows-gnu \
+    x86_64-apple-darwin aarch64-apple-darwin 2>/dev/null || rustup target add x86_64-unknown-linux-gnu \
+    aarch64-unknown-linux-gnu x86_64-pc-windows-gnu x86_64-apple-darwin aarch64-apple-darwin
 VENV="$WORK/venv"
 if ! "$VENV/bin/cargo-zigbuild" --version >/dev/null 2>&1 || ! "$VENV/bin/python" -m ziglang version >/dev/null 2>&1; then
     python3 -m venv "$VENV"
