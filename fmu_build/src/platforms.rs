@@ -44,6 +44,11 @@ pub struct Platform {
     pub ext: &'static str,
 }
 
+/// The oldest macOS the dylibs load on: Rust's own minimum for x86-64 (arm64 builds are
+/// raised to 11.0, the first macOS for Apple silicon). Without it zig would stamp its own
+/// default (macOS 13.0) into the dylibs' LC_BUILD_VERSION.
+pub const MACOS_DEPLOYMENT_TARGET: &str = "10.12";
+
 /// The library file name cargo gives the cdylib of [`FMU_PACKAGE`] on each kind of OS.
 const SO: &str = "libpinjoint.so";
 const DLL: &str = "pinjoint.dll";
@@ -112,7 +117,12 @@ pub fn build_library(root: &Path, target: &Path, p: &Platform) -> Result<PathBuf
     };
     args.extend(["--release", "--lib", "-p", FMU_PACKAGE]);
     eprintln!("fmu_build: {program} {}", args.join(" "));
-    let status = Command::new(&program).args(&args).current_dir(root).env("CARGO_TARGET_DIR", target).status().map_err(|e| {
+    let mut command = Command::new(&program);
+    command.args(&args).current_dir(root).env("CARGO_TARGET_DIR", target);
+    if p.triple.contains("apple-darwin") {
+        command.env("MACOSX_DEPLOYMENT_TARGET", MACOS_DEPLOYMENT_TARGET);
+    }
+    let status = command.status().map_err(|e| {
         if p.linker == Linker::Zig {
             format!(
                 "running {program}: {e} (install the pinned cargo-zigbuild and ziglang: \
