@@ -44,10 +44,10 @@ pub struct Platform {
     pub ext: &'static str,
 }
 
-/// The oldest macOS the dylibs load on: Rust's own minimum for x86-64 (arm64 builds are
-/// raised to 11.0, the first macOS for Apple silicon). Without it zig would stamp its own
-/// default (macOS 13.0) into the dylibs' LC_BUILD_VERSION.
-pub const MACOS_DEPLOYMENT_TARGET: &str = "10.12";
+/// The oldest macOS the dylibs load on, for both architectures: 11.0, the first macOS for
+/// Apple silicon (one value, so that the universal build's members equal the
+/// single-architecture builds). Without it zig would stamp its own default (macOS 13.0).
+pub const MACOS_DEPLOYMENT_TARGET: &str = "11.0";
 
 /// The library file name cargo gives the cdylib of [`FMU_PACKAGE`] on each kind of OS.
 const SO: &str = "libpinjoint.so";

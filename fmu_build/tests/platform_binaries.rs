@@ -172,9 +172,8 @@ fn check_macho(what: &str, data: &[u8], arch: Architecture) -> (u32, u32) {
     }
     let v = min_os.unwrap_or_else(|| panic!("{what}: no minimum OS version load command"));
     let (major, minor) = (v.0 >> 16, (v.0 >> 8) & 0xff);
-    // Rust's own minimum for the target: 10.12 on x86-64, 11.0 on Apple silicon.
-    let limit = if arch == Architecture::X86_64 { (10, 12) } else { (11, 0) };
-    assert!((major, minor) <= limit, "{what}: needs macOS {major}.{minor} (Rust's minimum is {}.{})", limit.0, limit.1);
+    // fmu_build's MACOS_DEPLOYMENT_TARGET (11.0, the first macOS for Apple silicon), on both.
+    assert_eq!((major, minor), (11, 0), "{what}: needs macOS {major}.{minor}, expected 11.0");
     println!("{what}: install name {id}, loads {dylibs:?}, minimum macOS {major}.{minor}");
     (major, minor)
 }

@@ -17,7 +17,7 @@ linked in), no libstdc++</td>
 <td>run under Wine 8 on Linux through a C host, both models: outputs equal the Linux binary's (PinJoint to 1e-12 relative);
 not run on Windows itself</td></tr>
 <tr><td><code>binaries/darwin64</code></td><td>macOS, one universal binary: x86-64 and arm64 (Apple silicon)</td>
-<td>macOS 10.12 or newer on Intel, 11 or newer on Apple silicon; only <code>libSystem</code></td>
+<td>macOS 11 or newer; only <code>libSystem</code></td>
 <td><strong>built but not run-tested</strong>: no macOS machine was available; only its exported functions and its load
 commands (install name, libraries, minimum OS) are checked</td></tr>
 </table>
