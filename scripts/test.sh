@@ -23,8 +23,15 @@ cargo test --workspace --release
 # --- the Python package (python/): pinned venv, `pip install ./python`, pytest (incl. a Dask LocalCluster)
 bash python/run_tests.sh
 
-# --- FMUs and the Python harness (fmpy), then the Rust `fmi` crate against the packaged FMU
-PINJOINT_SKIP_APT=1 bash tests/python/run.sh
+# --- the FMU binary cross-built for every platform (fmu_build --platforms all: Linux glibc
+# 2.17, Windows, macOS, aarch64 Linux), each run: natively, under wine, under qemu-aarch64
+# (macOS: exports and load commands inspected only). Installs its own tools (apt, rustup
+# targets, cargo-zigbuild and ziglang from PyPI). Leaves the all-platform FMUs in target/fmu/.
+bash tests/platforms/run.sh
+
+# --- the Python harness (fmpy) and the Rust `fmi` crate on those FMUs (linux64 = the
+# shipped glibc-2.17 binary; PINJOINT_KEEP_FMUS: do not rebuild them host-only)
+PINJOINT_KEEP_FMUS=1 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
 
 # --- the SciPy reference of `pinjoint bench` against the MODEL_NOTES check values, and
 # against the library on 50 sweep rows (agreement to 1e-9; measured 2e-14)

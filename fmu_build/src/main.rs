@@ -1,37 +1,33 @@
 //! `cargo run --release -p fmu_build`: builds the shared library (the FMU binary)
 //! and writes one FMU per model of `pinjoint_fmu::registry()` to `target/fmu/`:
 //! `modelDescription.xml`, `binaries/<platform>/<modelIdentifier>.<ext>` and
-//! `documentation/index.html`. Packaging only: the XML and the documentation come
-//! from the library's variable tables.
+//! `documentation/index.html` (with the licence notices and `model.png`), and the FMI 3.0
+//! FMUs to `target/fmu/fmi3/`. Packaging only: the XML and the documentation come from the
+//! library's variable tables.
+//!
+//! `-- --platforms host` (the default) builds for this machine only. `-- --platforms all`
+//! builds every platform of [`platforms::ALL`] (cross-compiled; see `tests/platforms/run.sh`
+//! for the tools) and the FMUs carry FMI 2.0 `binaries/linux64` (glibc 2.17, no
+//! libgcc_s), `win64` and `darwin64` (universal x86-64 + arm64); the libraries of every
+//! platform, FMI 3.0 ones included, are kept in `target/fmu/platforms/<dir>/`.
+//! `-- --platforms x86_64-linux,x86_64-windows` builds the named ones only.
 
 mod extras;
 mod fmi3;
+mod platforms;
 
 use fmi_layer::fmi2::variables::ModelInfo;
 use fmi_layer::fmi2::xml::model_description;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitCode};
+use std::process::ExitCode;
 use zip::write::SimpleFileOptions;
 use zip::{CompressionMethod, DateTime, ZipWriter};
 
-/// The crate whose cdylib is the FMU binary.
-const FMU_PACKAGE: &str = "pinjoint-fmu";
-
-/// FMI 2.0 platform folder and shared-library names for this host.
-fn platform() -> Result<(&'static str, &'static str, &'static str), String> {
-    match (std::env::consts::OS, std::env::consts::ARCH) {
-        ("linux", "x86_64") => Ok(("linux64", "libpinjoint_fmu.so", "so")),
-        ("linux", "x86") => Ok(("linux32", "libpinjoint_fmu.so", "so")),
-        ("macos", "x86_64" | "aarch64") => Ok(("darwin64", "libpinjoint_fmu.dylib", "dylib")),
-        ("windows", "x86_64") => Ok(("win64", "pinjoint_fmu.dll", "dll")),
-        (os, arch) => Err(format!("no FMI 2.0 platform folder for {os}/{arch}")),
-    }
-}
-
-fn package(info: &ModelInfo, library: &Path, out_dir: &Path, folder: &str, ext: &str, extras: &[extras::Entry]) -> Result<PathBuf, String> {
+/// Write `<out_dir>/<modelIdentifier>.fmu` carrying, for each `(FMI 2.0 folder, extension,
+/// library)`, the library as `binaries/<folder>/<modelIdentifier>.<extension>`.
+fn package(info: &ModelInfo, binaries: &[(&str, &str, PathBuf)], out_dir: &Path, extras: &[extras::Entry]) -> Result<PathBuf, String> {
     let xml = model_description(info)?;
-    let binary = std::fs::read(library).map_err(|e| format!("reading {}: {e}", library.display()))?;
     let path = out_dir.join(format!("{}.fmu", info.model_identifier));
     let file = std::fs::File::create(&path).map_err(|e| format!("creating {}: {e}", path.display()))?;
     let mut zip = ZipWriter::new(file);
@@ -39,49 +35,65 @@ fn package(info: &ModelInfo, library: &Path, out_dir: &Path, folder: &str, ext: 
     let opts = SimpleFileOptions::default()
         .compression_method(CompressionMethod::Deflated)
         .last_modified_time(DateTime::default());
-    let entries: [(String, &[u8], u32); 3] = [
-        ("modelDescription.xml".into(), xml.as_bytes(), 0o644),
-        (format!("binaries/{folder}/{}.{ext}", info.model_identifier), &binary, 0o755),
-        ("documentation/index.html".into(), (info.documentation)().into_bytes().leak(), 0o644),
-    ];
-    let extra = extras.iter().map(|(n, b)| (n.clone(), b.as_slice(), 0o644));
-    for (name, data, mode) in entries.into_iter().chain(extra) {
+    let mut entries: Vec<(String, Vec<u8>, u32)> = vec![("modelDescription.xml".into(), xml.into_bytes(), 0o644)];
+    for (folder, ext, library) in binaries {
+        let binary = std::fs::read(library).map_err(|e| format!("reading {}: {e}", library.display()))?;
+        entries.push((format!("binaries/{folder}/{}.{ext}", info.model_identifier), binary, 0o755));
+    }
+    entries.push(("documentation/index.html".into(), (info.documentation)().into_bytes(), 0o644));
+    entries.extend(extras.iter().map(|(n, b)| (n.clone(), b.clone(), 0o644)));
+    for (name, data, mode) in entries {
         zip.start_file(name.as_str(), opts.unix_permissions(mode)).map_err(|e| e.to_string())?;
-        zip.write_all(data).map_err(|e| e.to_string())?;
+        zip.write_all(&data).map_err(|e| e.to_string())?;
     }
     zip.finish().map_err(|e| e.to_string())?;
     Ok(path)
 }
 
+/// The value of `--platforms` (default `host`).
+fn platforms_arg() -> Result<String, String> {
+    let mut args = std::env::args().skip(1);
+    let mut spec = "host".to_owned();
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--platforms" => spec = args.next().ok_or("--platforms needs a value: all, host or a list of platforms")?,
+            s if s.starts_with("--platforms=") => spec = s["--platforms=".len()..].to_owned(),
+            "-h" | "--help" => {
+                println!("usage: fmu_build [--platforms host|all|<dir>,<dir>...]");
+                std::process::exit(0);
+            }
+            other => return Err(format!("unknown argument '{other}' (usage: fmu_build [--platforms host|all|<dir>,...])")),
+        }
+    }
+    Ok(spec)
+}
+
 fn run() -> Result<(), String> {
+    let selected = platforms::select(&platforms_arg()?)?;
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().ok_or("no workspace root")?.to_path_buf();
     let target = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).unwrap_or_else(|| root.join("target"));
     let target = if target.is_relative() { root.join(target) } else { target };
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    eprintln!("fmu_build: cargo build --release --lib -p {FMU_PACKAGE}");
-    let status = Command::new(&cargo)
-        .args(["build", "--release", "--lib", "-p", FMU_PACKAGE])
-        .current_dir(&root)
-        .env("CARGO_TARGET_DIR", &target)
-        .status()
-        .map_err(|e| format!("running {cargo}: {e}"))?;
-    if !status.success() {
-        return Err(format!("cargo build failed ({status})"));
+    // (FMI 2.0 folder, extension, library) and (FMI 3.0 tuple, library, extension).
+    let (mut fmi2_binaries, mut fmi3_binaries) = (Vec::new(), Vec::new());
+    for p in &selected {
+        let library = platforms::build_library(&root, &target, p)?;
+        if let Some(tuple) = p.fmi3 {
+            fmi3_binaries.push((tuple, library.clone(), p.ext));
+        }
+        if let Some(folder) = p.fmi2 {
+            fmi2_binaries.push((folder, p.ext, library));
+        }
     }
-    let (folder, lib_name, ext) = platform()?;
-    let library = target.join("release").join(lib_name);
     let out_dir = target.join("fmu");
     std::fs::create_dir_all(&out_dir).map_err(|e| format!("creating {}: {e}", out_dir.display()))?;
     // Licence notices and model.png: the same in every FMU, both standards.
-    let mut extras = extras::licenses(&cargo, &root, FMU_PACKAGE)?;
+    let mut extras = extras::licenses(&cargo, &root, platforms::FMU_PACKAGE)?;
     extras.push(("model.png".into(), extras::model_png()));
     for info in pinjoint_fmu::registry() {
-        let path = package(info, &library, &out_dir, folder, ext, &extras)?;
-        println!("{}", path.display());
-    }
-    // FMI 3.0: the same library, target/fmu/fmi3/ (fmi3.rs).
-    for path in fmi3::package_host(&pinjoint_fmu::registry(), &library, ext, &out_dir, &extras)? {
-        println!("{}", path.display());
+        println!("{}", package(info, &fmi2_binaries, &out_dir, &extras)?.display());
+        // FMI 3.0: the same libraries, target/fmu/fmi3/ (fmi3.rs).
+        println!("{}", fmi3::package(info, &fmi3_binaries, &out_dir, &extras)?.display());
     }
     Ok(())
 }

@@ -8,7 +8,7 @@
 #
 # Needs: cargo, python3 with venv (Debian: python3-venv), for the fmi crate's
 # bindgen step Debian's libclang-dev, and for Ecos (ecospy) Debian's libtbb12.
-# Set PINJOINT_SKIP_APT=1 to skip the apt step.
+# Set PINJOINT_SKIP_APT=1 to skip the apt step, PINJOINT_KEEP_FMUS=1 to keep target/fmu/*.fmu.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
@@ -21,7 +21,11 @@ if [[ -z "${PINJOINT_SKIP_APT:-}" ]] && { ! ls /usr/lib/llvm-*/lib/libclang*.so*
     fi
 fi
 
-cargo run --release -q -p fmu_build
+# PINJOINT_KEEP_FMUS=1: test the FMUs already in target/fmu (e.g. the all-platform ones of
+# tests/platforms/run.sh) instead of rebuilding them for this host only.
+if [[ -z "${PINJOINT_KEEP_FMUS:-}" || ! -f target/fmu/PinJoint.fmu || ! -f target/fmu/PinJointRig.fmu ]]; then
+    cargo run --release -q -p fmu_build
+fi
 cargo build --release -q -p pinjoint --example reference_points --example rig_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"

@@ -8,6 +8,7 @@
 pub mod pass_through;
 pub mod pin_joint;
 pub mod pin_joint_rig;
+pub mod platforms_doc;
 
 use fmi_layer::fmi2::variables::{Legal, ModelInfo};
 

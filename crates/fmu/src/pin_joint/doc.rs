@@ -193,9 +193,11 @@ checks the outputs at the current inputs. Parameters can only be set before exit
 debug logging off.</li>
 <li>fmi2DoStep requires a positive, finite step that continues the previous one.</li>
 </ul>
-</body></html>
+
+{platforms}</body></html>
 "#,
         guid = INFO.guid(),
+        platforms = crate::platforms_doc::PLATFORMS_HTML,
         version = INFO.version,
         requirements = crate::requirements_html(),
         r_red = j.reduced_radius(),

@@ -181,9 +181,11 @@ magic, version, length and CRC-32, holding this model's versioned part: every se
 former Integer parameters, set through fmi2SetInteger / fmi3SetInt64); everything else is Real (FMI 3.0: Float64).</li>
 </ul>
 {requirements}
-</body></html>
+
+{platforms}</body></html>
 "#,
         guid = INFO.guid(),
+        platforms = crate::platforms_doc::PLATFORMS_HTML,
         version = INFO.version,
         requirements = crate::requirements_html(),
         tb20 = r.breakaway_factor * j.boundary_torque(20e3),

@@ -7,23 +7,48 @@ use crate::fmi2::instance::{CallResult, Instance};
 use crate::fmi2::logging::Category;
 use crate::fmi2::state::{Mask, State};
 use crate::fmi2::types::{Fmi2Component, Fmi2StatusC, Status};
-use std::cell::Cell;
+use std::cell::RefCell;
+use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 thread_local! {
-    static FORCED_PANIC: Cell<Option<&'static str>> = const { Cell::new(None) };
+    static FORCED_PANIC: RefCell<Option<Box<str>>> = const { RefCell::new(None) };
 }
 
 /// Test hook: the next call of the FMI function `name` (e.g. `"fmi2DoStep"`) on this
 /// thread panics inside its guard, so that tests can check the containment.
 #[doc(hidden)]
-pub fn force_panic_in(name: &'static str) {
-    FORCED_PANIC.with(|p| p.set(Some(name)));
+pub fn force_panic_in(name: &str) {
+    FORCED_PANIC.with(|p| *p.borrow_mut() = Some(name.into()));
+}
+
+/// The same test hook with C linkage, so that a C host can check the containment on a
+/// built binary (tests/platforms: the cross-built Linux, Windows and aarch64 libraries
+/// must still unwind, i.e. return `fmi2Fatal`, not abort). Not part of FMI; no FMI
+/// host calls it. Returns 0, or 1 when `name` is NULL or not UTF-8 (nothing armed).
+///
+/// # Safety
+/// `name` is NULL or a NUL-terminated string.
+#[doc(hidden)]
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn pinjoint_test_force_panic(name: *const c_char) -> c_int {
+    if name.is_null() {
+        return 1;
+    }
+    // SAFETY: per the contract above.
+    match unsafe { CStr::from_ptr(name) }.to_str() {
+        Ok(s) => {
+            force_panic_in(s);
+            0
+        }
+        Err(_) => 1,
+    }
 }
 
 pub(crate) fn maybe_forced_panic(name: &str) {
-    if FORCED_PANIC.with(|p| p.get()) == Some(name) {
-        FORCED_PANIC.with(|p| p.set(None));
+    let armed = FORCED_PANIC.with(|p| p.borrow().as_deref() == Some(name));
+    if armed {
+        FORCED_PANIC.with(|p| *p.borrow_mut() = None);
         panic!("forced panic in {name} (test hook)");
     }
 }

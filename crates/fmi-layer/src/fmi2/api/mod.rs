@@ -5,4 +5,4 @@ pub mod cosim;
 pub(crate) mod guard;
 pub mod model_exchange;
 
-pub use guard::force_panic_in;
+pub use guard::{force_panic_in, pinjoint_test_force_panic};
