@@ -167,9 +167,9 @@ fn min_film_is_below_the_central_film_and_zero_at_rest() {
 
 #[test]
 fn fmu_temperature_input_and_min_film_outputs_are_the_library_values() {
-    use pinjoint::fmi2::model::Model;
-    use pinjoint::fmu::pin_joint::model::PinJointModel;
-    use pinjoint::fmu::pin_joint::variables::{Output, ANGULAR_VELOCITY, FIRST_OUTPUT, LOAD, TEMPERATURE};
+    use fmi_layer::fmi2::model::Model;
+    use pinjoint_fmu::pin_joint::model::PinJointModel;
+    use pinjoint_fmu::pin_joint::variables::{Output, ANGULAR_VELOCITY, FIRST_OUTPUT, LOAD, TEMPERATURE};
     let mut m = PinJointModel::new();
     // Default input 293.15 K: the paper model, bit for bit.
     assert_eq!(m.get_real(TEMPERATURE), 293.15);

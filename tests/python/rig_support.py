@@ -11,7 +11,8 @@ from pathlib import Path
 
 import numpy as np
 
-from conftest import TARGET, LogCapture
+from conftest import TARGET
+from host import Slave
 
 RIG_FMU = Path(os.environ.get("PINJOINT_RIG_FMU", TARGET / "fmu" / "PinJointRig.fmu"))
 RIG_REFERENCE = TARGET / "release" / "examples" / "rig_reference"
@@ -73,41 +74,14 @@ def max_relative_difference(a, b, floor=1e-300):
     return float(np.max(np.where(d == 0, 0.0, d / np.maximum(np.abs(b), floor)), initial=0.0))
 
 
-class RigSlave:
-    """An FMU2Slave of PinJointRig with a recording logger, brought to a named state."""
+class RigSlave(Slave):
+    """The shared host (host.py) for PinJointRig, with its outputs in table order."""
 
     def __init__(self, unzipped, md, state="step", start_values=None):
-        from fmpy.fmi2 import FMU2Slave
-        self.md = md
-        self.vr = {v.name: v.valueReference for v in md.modelVariables}
-        self.type = {v.name: v.type for v in md.modelVariables}
-        self.log = LogCapture()
-        self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier="PinJointRig", instanceName="rig")
-        self.fmu.instantiate(callbacks=self.log.callbacks())
-        if state == "instantiated":
-            return
-        self.fmu.setupExperiment(startTime=0.0)
-        for name, value in (start_values or {}).items():
-            self.set(name, value)
-        self.fmu.enterInitializationMode()
-        if state == "init":
-            return
-        self.fmu.exitInitializationMode()
-
-    def set(self, name, value):
-        t = self.type[name]
-        if t == "Boolean":
-            self.fmu.setBoolean([self.vr[name]], [bool(value)])
-        elif t in ("Integer", "Enumeration"):
-            self.fmu.setInteger([self.vr[name]], [int(value)])
-        else:
-            self.fmu.setReal([self.vr[name]], [float(value)])
+        super().__init__(unzipped, md, state, start_values=start_values, instance_name="rig")
 
     def outputs(self):
         reals = [n for n in RIG_OUTPUTS if n != "stuck"]
         values = dict(zip(reals, self.fmu.getReal([self.vr[n] for n in reals])))
         values["stuck"] = float(self.fmu.getBoolean([self.vr["stuck"]])[0])
         return [values[n] for n in RIG_OUTPUTS]
-
-    def free(self):
-        self.fmu.freeInstance()

@@ -6,59 +6,27 @@ from ctypes import POINTER, byref, c_double, c_int, c_size_t, c_uint, c_void_p
 
 import numpy as np
 import pytest
-from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import FMU2Slave
 
+import host
 from conftest import LogCapture
+from host import expect_error
 
 VR = {"angle": 1, "angular_velocity": 2, "load": 3, "torque": 10, "dissipated_energy": 19,
       "geometry.pin_radius": 100, "zero_velocity.speed_band": 200}
 ERROR = 3
 
 
-class Slave:
-    """An FMU2Slave instance with a recording logger, brought to a named state."""
-
-    def __init__(self, unzipped, md, state="step", logging_on=False):
-        self.log = LogCapture()
-        self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipped, modelIdentifier="PinJoint", instanceName="misuse")
-        self.fmu.instantiate(callbacks=self.log.callbacks(), loggingOn=logging_on)
-        self.c = self.fmu.component
-        if state == "instantiated":
-            return
-        self.fmu.setupExperiment(startTime=0.0)
-        if state == "error":
-            self.fmu.setReal([VR["geometry.pin_radius"]], [-1.0])
-        self.fmu.enterInitializationMode()
-        if state == "init":
-            return
-        if state == "error":
-            with pytest.raises(FMICallException):
-                self.fmu.exitInitializationMode()
-            return
-        self.fmu.exitInitializationMode()
-        self.fmu.setReal([VR["angular_velocity"]], [0.3])
-        self.fmu.doStep(0.0, 0.1)
-        if state == "terminated":
-            self.fmu.terminate()
-
-    def raw(self, name, argtypes, *args):
-        """Call an exported function directly (also those FMU2Slave does not load)."""
-        f = getattr(self.fmu.dll, name)
-        f.argtypes = [c_void_p] + argtypes
-        f.restype = c_int
-        return f(self.c, *args)
-
-    def free(self):
-        self.fmu.freeInstance()
+def _first_step(s):
+    s.fmu.setReal([VR["angular_velocity"]], [0.3])
+    s.fmu.doStep(0.0, 0.1)
 
 
-def expect_error(slave, call, *fragments):
-    with pytest.raises(FMICallException) as e:
-        call()
-    assert "status 3" in str(e.value), str(e.value)
-    for f in fragments:
-        assert f in slave.log.text(), f"{f!r} not in log:\n{slave.log.text()}"
+def Slave(unzipped, md, state="step", logging_on=False):
+    """The shared host (host.py) for PinJoint: "error" is a negative pin radius, "step" one
+    step at 0.3 rad/s."""
+    bad = {"geometry.pin_radius": -1.0} if state == "error" else None
+    return host.Slave(unzipped, md, state, start_values=bad, logging_on=logging_on, first_step=_first_step)
 
 
 # (state, description, call, expected message fragments)

@@ -3,17 +3,9 @@ the interpreter survives, the FMU state round-trips exactly."""
 
 import numpy as np
 import pytest
-from fmpy.fmi1 import FMICallException
 
+from host import expect_error
 from rig_support import RigSlave
-
-
-def expect_error(slave, call, *fragments):
-    with pytest.raises(FMICallException) as e:
-        call()
-    assert "status 3" in str(e.value), str(e.value)
-    for f in fragments:
-        assert f in slave.log.text(), f"{f!r} not in log:\n{slave.log.text()}"
 
 
 CASES = [
