@@ -31,6 +31,7 @@ pub mod min_film;
 pub mod mixed;
 pub mod newton;
 pub mod params;
+pub mod record;
 pub mod rig;
 pub mod solve_start;
 pub mod starvation;

@@ -4,64 +4,34 @@ use crate::messages::{index_text, model_error, short};
 use crate::params::PyParams;
 use numpy::{IntoPyArray, PyReadonlyArray1};
 use pinjoint::fidelity::{Envelope, Evaluator, Fidelity, Level};
-use pinjoint::{Joint, ModelError, OperatingPoint, Regime};
+use pinjoint::record::{regime_code, Value, COLUMNS};
+use pinjoint::{Joint, ModelError, OperatingPoint};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// The numeric result columns of `pinjoint sweep` (its RESULT_COLUMNS without `regime`), SI.
-pub const NUMERIC_COLUMNS: [&str; 9] = [
-    "friction_coefficient",
-    "torque",
-    "film_thickness",
-    "lambda_ratio",
-    "fluid_load_fraction",
-    "asperity_load_fraction",
-    "mean_pressure",
-    "contact_half_width",
-    "sommerfeld_number",
-];
-/// The result columns of `pinjoint sweep`, in its order.
-pub const RESULT_COLUMNS: [&str; 10] = [
-    "friction_coefficient",
-    "torque",
-    "film_thickness",
-    "lambda_ratio",
-    "fluid_load_fraction",
-    "asperity_load_fraction",
-    "mean_pressure",
-    "contact_half_width",
-    "sommerfeld_number",
-    "regime",
-];
-/// Regime names by code (the `regime` column).
-pub const REGIMES: [&str; 3] = ["boundary", "mixed", "full-film"];
+/// Numeric result columns of the one result record ([`pinjoint::record::COLUMNS`]).
+const NUMERIC: usize = 11;
+
+/// The numeric result columns (every column of the record but `regime`), in record order.
+pub fn numeric_columns() -> impl Iterator<Item = (&'static str, fn(&OperatingPoint) -> f64)> {
+    COLUMNS.iter().filter_map(|c| match c.value {
+        Value::Number(f) => Some((c.name, f)),
+        Value::Regime => None,
+    })
+}
 
 /// Points handed to one rayon task; below two chunks the work stays on the calling thread.
 const CHUNK: usize = 2048;
 
-fn regime_code(r: Regime) -> u8 {
-    match r {
-        Regime::Boundary => 0,
-        Regime::Mixed => 1,
-        Regime::FullFilm => 2,
+fn row(op: &OperatingPoint) -> [f64; NUMERIC] {
+    let mut out = [0.0; NUMERIC];
+    for (slot, (_, f)) in out.iter_mut().zip(numeric_columns()) {
+        *slot = f(op);
     }
-}
-
-fn row(op: &OperatingPoint) -> [f64; 9] {
-    [
-        op.friction_coefficient,
-        op.torque,
-        op.film_thickness,
-        op.lambda_ratio,
-        op.fluid_load_fraction,
-        op.asperity_load_fraction,
-        op.mean_pressure,
-        op.contact_half_width,
-        op.sommerfeld_number,
-    ]
+    out
 }
 
 /// The model at a fidelity level (native half of `pinjoint.Joint`).
@@ -94,7 +64,7 @@ impl NativeJoint {
 
     /// Fill `out`/`codes` for `loads`/`speeds` (same length); the first failing point's
     /// offset and error, if any.
-    fn fill(&self, loads: &[f64], speeds: &[f64], out: &mut [[f64; 9]], codes: &mut [u8]) -> Option<(usize, ModelError)> {
+    fn fill(&self, loads: &[f64], speeds: &[f64], out: &mut [[f64; NUMERIC]], codes: &mut [u8]) -> Option<(usize, ModelError)> {
         for (i, (&l, &w)) in loads.iter().zip(speeds).enumerate() {
             match self.point(l, w) {
                 Ok(op) => {
@@ -109,9 +79,9 @@ impl NativeJoint {
 
     /// Evaluate every point; on the cores when there are many. The error is the one at the
     /// lowest index, whatever the scheduling.
-    pub fn run(&self, loads: &[f64], speeds: &[f64]) -> Result<(Vec<[f64; 9]>, Vec<u8>), (usize, ModelError)> {
+    pub fn run(&self, loads: &[f64], speeds: &[f64]) -> Result<(Vec<[f64; NUMERIC]>, Vec<u8>), (usize, ModelError)> {
         let n = loads.len();
-        let mut out = vec![[0.0f64; 9]; n];
+        let mut out = vec![[0.0f64; NUMERIC]; n];
         let mut codes = vec![0u8; n];
         let err = if n < 2 * CHUNK {
             self.fill(loads, speeds, &mut out, &mut codes)
@@ -175,9 +145,9 @@ impl NativeJoint {
             PyValueError::new_err(format!("{at}{sep}{}", model_error(&e)))
         })?;
         let d = PyDict::new(py);
-        for (c, name) in NUMERIC_COLUMNS.iter().enumerate() {
+        for (c, (name, _)) in numeric_columns().enumerate() {
             let col: Vec<f64> = rows.iter().map(|r| r[c]).collect();
-            d.set_item(*name, col.into_pyarray(py))?;
+            d.set_item(name, col.into_pyarray(py))?;
         }
         Ok((d, codes.into_pyarray(py).into_any()))
     }

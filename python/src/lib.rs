@@ -30,8 +30,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("MU_C", pinjoint_calibrate::MU_C)?;
     m.add_function(wrap_pyfunction!(params::param_table, m)?)?;
     m.add_function(wrap_pyfunction!(params::rig_param_table, m)?)?;
-    m.add("RESULT_COLUMNS", joint::RESULT_COLUMNS.to_vec())?;
+    m.add("RESULT_COLUMNS", pinjoint::record::NAMES.to_vec())?;
     m.add("CYCLE_COLUMNS", cycle::CYCLE_COLUMNS.to_vec())?;
-    m.add("REGIMES", joint::REGIMES.to_vec())?;
+    m.add("REGIMES", pinjoint::record::REGIMES.iter().map(|r| r.as_str()).collect::<Vec<_>>())?;
     Ok(())
 }
