@@ -285,7 +285,7 @@ impl ModelInfo {
 fn fnv1a64(bytes: &[u8], seed: u64) -> u64 {
     let mut h = seed;
     for &b in bytes {
-        h ^= b as u64;
+        h ^= u64::from(b);
         h = h.wrapping_mul(0x0000_0100_0000_01b3);
     }
     h

@@ -187,23 +187,23 @@ pub extern "C" fn fmi3EnterInitializationMode(
 /// Co-Simulation: to step mode; Model Exchange: to event mode.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3ExitInitializationMode(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, |i| i.exit_initialization_mode())
+    call(instance, "fmi3ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, super::super::fmi2::instance::Instance::exit_initialization_mode)
 }
 
 /// Model Exchange only (this Co-Simulation has no event mode).
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterEventMode(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3EnterEventMode", state::ENTER_EVENT_MODE, |i| i.enter_event_mode())
+    call(instance, "fmi3EnterEventMode", state::ENTER_EVENT_MODE, super::super::fmi2::instance::Instance::enter_event_mode)
 }
 
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3Terminate(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3Terminate", state::TERMINATE, |i| i.terminate())
+    call(instance, "fmi3Terminate", state::TERMINATE, super::super::fmi2::instance::Instance::terminate)
 }
 
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3Reset(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3Reset", state::RESET, |i| i.reset())
+    call(instance, "fmi3Reset", state::RESET, super::super::fmi2::instance::Instance::reset)
 }
 
 /// All variables are scalars: one value per value reference.
@@ -675,7 +675,7 @@ pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
 
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterContinuousTimeMode(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, |i| i.enter_continuous_time_mode())
+    call(instance, "fmi3EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, super::super::fmi2::instance::Instance::enter_continuous_time_mode)
 }
 
 /// Checks the outputs at the current inputs; never asks for an event.

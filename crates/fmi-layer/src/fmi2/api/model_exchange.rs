@@ -25,7 +25,7 @@ pub struct Fmi2EventInfo {
 
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterEventMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterEventMode", state::ENTER_EVENT_MODE, |i| i.enter_event_mode())
+    call(c, "fmi2EnterEventMode", state::ENTER_EVENT_MODE, super::super::instance::Instance::enter_event_mode)
 }
 
 /// Nothing discrete to update: every flag false, no time event.
@@ -57,7 +57,7 @@ pub unsafe extern "C" fn fmi2NewDiscreteStates(c: Fmi2Component, eventInfo: *mut
 
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterContinuousTimeMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, |i| i.enter_continuous_time_mode())
+    call(c, "fmi2EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, super::super::instance::Instance::enter_continuous_time_mode)
 }
 
 /// The outputs at the current inputs are checked (a model failure is reported here);
