@@ -233,7 +233,7 @@ pub extern "C" fn fmi2SetupExperiment(
 /// mode, where parameters and start values may still be set.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterInitializationMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterInitializationMode", state::ENTER_INITIALIZATION_MODE, super::super::instance::Instance::enter_initialization_mode)
+    call(c, "fmi2EnterInitializationMode", state::ENTER_INITIALIZATION_MODE, Instance::enter_initialization_mode)
 }
 
 /// `fmi2ExitInitializationMode` (FMI 2.0 §2.1.6): lets the model validate its parameters
@@ -243,21 +243,21 @@ pub extern "C" fn fmi2EnterInitializationMode(c: Fmi2Component) -> Fmi2StatusC {
 /// `error` state.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2ExitInitializationMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, super::super::instance::Instance::exit_initialization_mode)
+    call(c, "fmi2ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, Instance::exit_initialization_mode)
 }
 
 /// `fmi2Terminate` (FMI 2.0 §2.1.6): ends the simulation run; afterwards only getters,
 /// FMU state functions, `fmi2Reset` and `fmi2FreeInstance` are allowed.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2Terminate(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2Terminate", state::TERMINATE, super::super::instance::Instance::terminate)
+    call(c, "fmi2Terminate", state::TERMINATE, Instance::terminate)
 }
 
 /// `fmi2Reset` (FMI 2.0 §2.1.6): returns the instance to the state right after
 /// `fmi2Instantiate`, every variable at its start value.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2Reset(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2Reset", state::RESET, super::super::instance::Instance::reset)
+    call(c, "fmi2Reset", state::RESET, Instance::reset)
 }
 
 /// `fmi2GetReal` (FMI 2.0 §2.1.7): writes the values of the Real variables `vr[0..nvr]`
