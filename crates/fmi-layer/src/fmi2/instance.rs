@@ -19,36 +19,50 @@ use super::variables::{Causality, Kind, ModelInfo, Variability};
 
 const TAG: u64 = 0x504a_464d_4932_4f4b;
 
+/// The outcome of an instance method: the status to return, or a message that the caller
+/// logs and returns as `fmi2Error`.
 pub type CallResult = Result<Status, String>;
 
 /// The interface the host instantiated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Interface {
+    /// Co-Simulation (`fmi2CoSimulation`, `fmi3InstantiateCoSimulation`): the FMU advances
+    /// its own time with `fmi2DoStep`.
     CoSimulation,
     /// No continuous states, no event indicators: the outputs are a map of the current
     /// inputs, evaluated whenever the host reads them after setting inputs or time.
     ModelExchange,
 }
 
+/// One FMU instance, the object behind an `fmi2Component`/`fmi3Instance`.
 pub struct Instance {
     tag: u64,
+    /// The model's variable table, units and capabilities.
     pub info: &'static ModelInfo,
+    /// The model's GUID (FMI 2.0) or instantiation token (FMI 3.0).
     pub guid: String,
+    /// The instance name the host gave at instantiation, used in log messages.
     pub name: String,
+    /// The host's logger with the categories currently switched on.
     pub logger: Logger,
+    /// The life-cycle state, checked against each function's mask.
     pub state: State,
     /// End of the last communication step (or the start time).
     pub time: f64,
+    /// The experiment's start time (`fmi2SetupExperiment`), in s; 0 if not set.
     pub start_time: f64,
     model: Box<dyn Model>,
     /// The model's outputs match its current inputs and parameters.
     outputs_current: bool,
+    /// The interface the instance was created for.
     pub interface: Interface,
     /// Instantiated through the FMI 3.0 functions (type rules and messages of FMI 3.0).
     pub fmi3: bool,
 }
 
 impl Instance {
+    /// A Co-Simulation instance of the model `info`, every variable at its start value, in the
+    /// `instantiated` state.
     pub fn new(info: &'static ModelInfo, name: &str, logger: Logger) -> Self {
         Instance {
             tag: TAG,
@@ -76,14 +90,17 @@ impl Instance {
         self.tag == TAG
     }
 
+    /// Clear the tag before the memory is released, so that a second free is noticed.
     pub fn kill(&mut self) {
         self.tag = 0;
     }
 
+    /// Log `message` with `status`, in the category of that status.
     pub fn log(&self, status: Status, message: &str) {
         self.logger.log(status, Category::for_status(status), message);
     }
 
+    /// Log a life-cycle `message` in category `logEvents` (status OK).
     pub fn event(&self, message: &str) {
         self.logger.log(Status::Ok, Category::Events, message);
     }
@@ -151,6 +168,7 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    /// `fmi2SetReal`: set Real variables by value reference (see [`Instance::set_values`]).
     pub fn set_real(&mut self, vrs: &[u32], values: &[f64]) -> CallResult {
         self.set_values(Kind::Real, vrs, values)
     }
@@ -218,6 +236,7 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    /// `fmi2GetReal`: read Real variables by value reference (see [`Instance::get_values`]).
     pub fn get_real(&mut self, vrs: &[u32], values: &mut [f64]) -> CallResult {
         self.get_values(Kind::Real, vrs, values)
     }
@@ -236,6 +255,8 @@ impl Instance {
         }
     }
 
+    /// `fmi2SetupExperiment`: record the start time and the optional stop time, both in s;
+    /// an error for a non-finite time or a stop time before the start.
     pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> CallResult {
         if !start.is_finite() {
             return Err(format!("startTime = {start} s is not a finite number"));
@@ -250,6 +271,7 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    /// `fmi2EnterInitializationMode`: to initialization mode.
     pub fn enter_initialization_mode(&mut self) -> CallResult {
         self.state = State::InitializationMode;
         self.event("entered initialization mode");
@@ -286,6 +308,8 @@ impl Instance {
         self.update_outputs()
     }
 
+    /// An error unless the instance was created for Model Exchange (guards the Model Exchange
+    /// functions).
     pub fn require_model_exchange(&self) -> Result<(), String> {
         if self.interface != Interface::ModelExchange {
             return Err("this is a Model Exchange function and the instance was instantiated for Co-Simulation".into());
@@ -303,6 +327,9 @@ impl Instance {
         Ok(())
     }
 
+    /// `fmi2ExitInitializationMode`: the model validates its parameters and computes its first
+    /// outputs; on success to step mode (Co-Simulation) or event mode (Model Exchange), on
+    /// failure to the `error` state.
     pub fn exit_initialization_mode(&mut self) -> CallResult {
         let init = self.model.exit_initialization(self.start_time);
         self.log_model_message();
@@ -359,12 +386,15 @@ impl Instance {
         Ok(Status::Ok)
     }
 
+    /// `fmi2Terminate`: to the `terminated` state.
     pub fn terminate(&mut self) -> CallResult {
         self.state = State::Terminated;
         self.event(&format!("terminated at t = {} s", self.time));
         Ok(Status::Ok)
     }
 
+    /// `fmi2Reset`: every variable back to its start value, time and start time 0, to the
+    /// `instantiated` state.
     pub fn reset(&mut self) -> CallResult {
         self.model.set_start_values();
         self.state = State::Instantiated;

@@ -26,17 +26,25 @@ enum Sink {
     None,
 }
 
+/// A log category of the FMU (`<LogCategories>` in the modelDescription; module doc).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Category {
+    /// `logEvents`: life-cycle changes.
     Events,
+    /// `logStatusWarning`: messages returned with `fmi2Warning`.
     StatusWarning,
+    /// `logStatusDiscard`: messages returned with `fmi2Discard`.
     StatusDiscard,
+    /// `logStatusError`: messages returned with `fmi2Error`.
     StatusError,
+    /// `logStatusFatal`: messages returned with `fmi2Fatal`.
     StatusFatal,
+    /// `logAll`: every FMI call with its state.
     All,
 }
 
 impl Category {
+    /// Every category, in the order of `<LogCategories>`.
     pub const ALL: [Category; 6] = [
         Category::Events,
         Category::StatusWarning,
@@ -46,6 +54,7 @@ impl Category {
         Category::All,
     ];
 
+    /// The category's name in the modelDescription and in `fmi2SetDebugLogging`.
     pub fn name(self) -> &'static str {
         match self {
             Category::Events => "logEvents",
@@ -57,6 +66,7 @@ impl Category {
         }
     }
 
+    /// The `description` attribute of the category in the modelDescription.
     pub fn description(self) -> &'static str {
         match self {
             Category::Events => "Life-cycle events: initialization, termination, reset, FMU state get/set",
@@ -68,6 +78,7 @@ impl Category {
         }
     }
 
+    /// The category named `name`, or `None` for a name this FMU does not declare.
     pub fn from_name(name: &str) -> Option<Category> {
         Category::ALL.into_iter().find(|c| c.name() == name)
     }
@@ -98,6 +109,8 @@ pub struct Logger {
 }
 
 impl Logger {
+    /// The FMI 2.0 logger: messages go to `callback` with `env` as its first argument and
+    /// `instance_name`; `logging_on` is `loggingOn` of `fmi2Instantiate`.
     pub fn new(callback: Fmi2CallbackLogger, env: Fmi2ComponentEnvironment, instance_name: &str, logging_on: bool) -> Self {
         let mut l = Logger { callback: Sink::Fmi2(callback), env, instance_name: c_text(instance_name), enabled: 0 };
         l.set_all(logging_on);
@@ -120,6 +133,7 @@ impl Logger {
         }
     }
 
+    /// Switch category `c` on or off (`fmi2SetDebugLogging` with named categories).
     pub fn set(&mut self, c: Category, on: bool) {
         if on {
             self.enabled |= c.bit();
@@ -128,6 +142,7 @@ impl Logger {
         }
     }
 
+    /// Whether messages of category `c` are passed to the host.
     pub fn is_enabled(&self, c: Category) -> bool {
         self.enabled & c.bit() != 0
     }

@@ -32,7 +32,12 @@ pub mod xml;
 #[macro_export]
 macro_rules! export_fmi2 {
     ($registry:path) => {
-        /// `fmi2Instantiate` of the FMI 2.0 standard for the models of this library.
+        /// `fmi2Instantiate` (FMI 2.0 §2.1.5) for the models of this library: finds the model
+        /// whose GUID is `fmuGUID` and returns a new instance of it, every variable at its start
+        /// value, in the `instantiated` state. Returns NULL for NULL `functions` or logger, an
+        /// empty instance name, an `fmuType` that is not 0 or 1 (or Model Exchange for a
+        /// Co-Simulation-only model), or a GUID of no model of this library (logged, except
+        /// when there is no logger). A resource location that is not a URI is only a warning.
         ///
         /// # Safety
         /// Pointers as in the FMI 2.0 standard; NULL is handled everywhere.

@@ -3,12 +3,15 @@
 //! The layer owns everything the standard prescribes (state machine, argument
 //! checks, value-reference lookup, logging, FMU state format); a model only
 //! stores values, computes its outputs and advances over a communication step.
-//! Variables are addressed by their index in the model's [`ModelInfo::variables`]
+//! Variables are addressed by their index in the model's [`ModelInfo::variables`](crate::fmi2::variables::ModelInfo::variables)
 //! table (`super::variables::ModelInfo`), never by value reference.
 
 /// A model error, reported through the logger with status `fmi2Error`.
 pub type ModelResult<T> = Result<T, String>;
 
+/// A model behind the generic layer: it holds its variables (addressed by index in its
+/// [`ModelInfo::variables`](crate::fmi2::variables::ModelInfo::variables) table), computes its outputs and advances over a step; every
+/// FMI rule (states, value references, C types, logging) is the layer's.
 pub trait Model {
     /// Restore every variable to its start value (called at instantiation and by `fmi2Reset`).
     fn set_start_values(&mut self);

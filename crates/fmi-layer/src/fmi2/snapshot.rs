@@ -22,26 +22,38 @@
 use super::bytes::{crc32, ByteReader, ByteWriter};
 use super::state::{self, State};
 
+/// The first 8 bytes of every serialized FMU state.
 pub const MAGIC: [u8; 8] = *b"FMI2STAT";
+/// The version of the serialized layout above; a state with another version is rejected.
 pub const FORMAT_VERSION: u16 = 1;
 /// Marks a live [`Snapshot`] so that a foreign or freed pointer is (usually) noticed.
 const TAG: u64 = 0x5354_4154_4520_4f4b;
 
+/// An FMU state (`fmi2FMUstate`/`fmi3FMUState`): what `fmi2SetFMUstate` needs to put an
+/// instance back where it was.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Snapshot {
     tag: u64,
+    /// The GUID (instantiation token) of the model the state was taken from.
     pub guid: String,
+    /// The instance's life-cycle state when the state was taken.
     pub state: State,
+    /// The instance's time when the state was taken, in s.
     pub time: f64,
+    /// The experiment's start time (`fmi2SetupExperiment`), in s.
     pub start_time: f64,
+    /// The model's own serialized state ([`crate::fmi2::model::Model::serialize`]).
     pub model: Vec<u8>,
 }
 
 impl Snapshot {
+    /// A live FMU state from its parts.
     pub fn new(guid: &str, state: State, time: f64, start_time: f64, model: Vec<u8>) -> Self {
         Snapshot { tag: TAG, guid: guid.to_owned(), state, time, start_time, model }
     }
 
+    /// Whether the tag is intact: false for a freed FMU state and (usually) for a pointer
+    /// that never was one.
     pub fn is_live(&self) -> bool {
         self.tag == TAG
     }
@@ -51,6 +63,7 @@ impl Snapshot {
         self.tag = 0;
     }
 
+    /// The serialized form (layout in the module doc), CRC included.
     pub fn encode(&self) -> Vec<u8> {
         let mut w = ByteWriter::default();
         w.bytes(&MAGIC);

@@ -12,15 +12,24 @@
 pub enum State {
     /// Before `fmi2Instantiate` / after `fmi2FreeInstance` (never held by an instance).
     StartAndEnd = 1 << 0,
+    /// After `fmi2Instantiate` (or `fmi2Reset`): parameters and start values may be set.
     Instantiated = 1 << 1,
+    /// Between `fmi2EnterInitializationMode` and `fmi2ExitInitializationMode`.
     InitializationMode = 1 << 2,
+    /// Co-Simulation: initialized and ready for the next `fmi2DoStep` (FMI 3.0 step mode).
     StepComplete = 1 << 3,
     /// Only reached by asynchronous slaves; this FMU steps synchronously.
     StepInProgress = 1 << 4,
+    /// Co-Simulation: a step was discarded (`fmi2Discard`); this FMU never discards a step.
     StepFailed = 1 << 5,
+    /// Co-Simulation: an asynchronous step was cancelled (never reached here).
     StepCanceled = 1 << 6,
+    /// After `fmi2Terminate`: values may still be read, then reset or free.
     Terminated = 1 << 7,
+    /// After a call returned `fmi2Error` that left the instance inconsistent (a failed step or
+    /// initialization): only getters, FMU state functions, reset and free are allowed.
     Error = 1 << 8,
+    /// After a contained panic (`fmi2Fatal`): only `fmi2FreeInstance` is allowed.
     Fatal = 1 << 9,
     /// Model Exchange (both standards): event mode, after initialization.
     EventMode = 1 << 10,
@@ -29,6 +38,7 @@ pub enum State {
 }
 
 impl State {
+    /// Every state, in bit order (for [`Mask::describe`] and [`State::from_code`]).
     pub const ALL: [State; 12] = [
         State::StartAndEnd,
         State::Instantiated,
@@ -44,6 +54,7 @@ impl State {
         State::ContinuousTimeMode,
     ];
 
+    /// The standard's name of the state (as in its state chart), for log messages.
     pub fn name(self) -> &'static str {
         match self {
             State::StartAndEnd => "startAndEnd",
@@ -66,6 +77,8 @@ impl State {
         (self as u32).trailing_zeros() as u8
     }
 
+    /// The state whose [`State::code`] is `code`, or `None` for a code no state has
+    /// (a corrupt serialized FMU state).
     pub fn from_code(code: u8) -> Option<State> {
         State::ALL.iter().copied().find(|s| s.code() == code)
     }
@@ -86,6 +99,7 @@ impl Mask {
         Mask(bits)
     }
 
+    /// Whether the state `s` is in the set.
     pub fn allows(self, s: State) -> bool {
         self.0 & (s as u32) != 0
     }
@@ -99,49 +113,73 @@ impl Mask {
 
 use State::*;
 
+/// `fmi2GetTypesPlatform`: every state.
 pub const GET_TYPES_PLATFORM: Mask = Mask::of(&[
     StartAndEnd, Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled,
     Terminated, Error, Fatal, EventMode, ContinuousTimeMode,
 ]);
+/// `fmi2GetVersion`: every state.
 pub const GET_VERSION: Mask = GET_TYPES_PLATFORM;
+/// `fmi2SetDebugLogging`: every state of a live, non-fatal instance.
 pub const SET_DEBUG_LOGGING: Mask = Mask::of(&[
     Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled, Terminated, Error,
     EventMode, ContinuousTimeMode,
 ]);
+/// `fmi2Instantiate`: before any instance exists.
 pub const INSTANTIATE: Mask = Mask::of(&[StartAndEnd]);
 /// Every state an instance can be in, `Fatal` included (see the module doc).
 pub const FREE_INSTANCE: Mask = Mask::of(&[
     Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, Fatal, EventMode,
     ContinuousTimeMode,
 ]);
+/// `fmi2SetupExperiment`: right after instantiation only.
 pub const SETUP_EXPERIMENT: Mask = Mask::of(&[Instantiated]);
+/// `fmi2EnterInitializationMode`: right after instantiation only.
 pub const ENTER_INITIALIZATION_MODE: Mask = Mask::of(&[Instantiated]);
+/// `fmi2ExitInitializationMode`: in initialization mode only.
 pub const EXIT_INITIALIZATION_MODE: Mask = Mask::of(&[InitializationMode]);
+/// `fmi2Terminate`: after initialization, outside error states.
 pub const TERMINATE: Mask = Mask::of(&[StepComplete, StepFailed, EventMode, ContinuousTimeMode]);
+/// `fmi2Reset`: every state of a live, non-fatal instance.
 pub const RESET: Mask = Mask::of(&[
     Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, EventMode,
     ContinuousTimeMode,
 ]);
+/// `fmi2Get{Real,Integer,Boolean,String}`: from initialization mode on.
 pub const GET_VALUE: Mask = Mask::of(&[
     InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, EventMode, ContinuousTimeMode,
 ]);
 /// In `continuousTimeMode` only continuous inputs may be set (checked by the instance).
 pub const SET_VALUE: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete, EventMode, ContinuousTimeMode]);
+/// The FMU state functions (`fmi2GetFMUstate` … `fmi2DeSerializeFMUstate`): as [`RESET`].
 pub const FMU_STATE: Mask = RESET;
+/// `fmi2GetDirectionalDerivative`: as [`GET_VALUE`].
 pub const GET_DIRECTIONAL_DERIVATIVE: Mask = GET_VALUE;
+/// `fmi2SetRealInputDerivatives` (Co-Simulation).
 pub const SET_REAL_INPUT_DERIVATIVES: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete]);
+/// `fmi2GetRealOutputDerivatives` (Co-Simulation).
 pub const GET_REAL_OUTPUT_DERIVATIVES: Mask = Mask::of(&[StepComplete, StepFailed, StepCanceled, Terminated, Error]);
+/// `fmi2DoStep`: in `stepComplete` only.
 pub const DO_STEP: Mask = Mask::of(&[StepComplete]);
+/// `fmi2CancelStep`: only while an asynchronous step runs (never, here).
 pub const CANCEL_STEP: Mask = Mask::of(&[StepInProgress]);
+/// `fmi2Get*Status` (Co-Simulation).
 pub const GET_STATUS: Mask = Mask::of(&[StepComplete, StepInProgress, StepFailed, Terminated]);
 /// Model Exchange (FMI 2.0 section 3.2.3 state chart; FMI 3.0 the same modes).
 pub const ENTER_EVENT_MODE: Mask = Mask::of(&[EventMode, ContinuousTimeMode]);
+/// `fmi2NewDiscreteStates` (Model Exchange): in event mode.
 pub const NEW_DISCRETE_STATES: Mask = Mask::of(&[EventMode]);
+/// `fmi2EnterContinuousTimeMode` (Model Exchange): from event mode.
 pub const ENTER_CONTINUOUS_TIME_MODE: Mask = Mask::of(&[EventMode]);
+/// `fmi2CompletedIntegratorStep` (Model Exchange): in continuous-time mode.
 pub const COMPLETED_INTEGRATOR_STEP: Mask = Mask::of(&[ContinuousTimeMode]);
+/// `fmi2SetTime` (Model Exchange): in event and continuous-time mode.
 pub const SET_TIME: Mask = Mask::of(&[EventMode, ContinuousTimeMode]);
+/// `fmi2SetContinuousStates` (Model Exchange): in continuous-time mode.
 pub const SET_CONTINUOUS_STATES: Mask = Mask::of(&[ContinuousTimeMode]);
+/// `fmi2GetDerivatives` and `fmi2GetEventIndicators` (Model Exchange).
 pub const GET_DERIVATIVES: Mask = Mask::of(&[InitializationMode, EventMode, ContinuousTimeMode, Terminated, Error]);
+/// `fmi2GetContinuousStates` and `fmi2GetNominalsOfContinuousStates` (Model Exchange).
 pub const GET_CONTINUOUS_STATES: Mask =
     Mask::of(&[Instantiated, InitializationMode, EventMode, ContinuousTimeMode, Terminated, Error]);
 /// FMI 3.0 Co-Simulation `fmi3EnterStepMode` (only after event mode, which this layer's

@@ -4,13 +4,18 @@
 
 use super::model::Model;
 
+/// A variable's `causality` attribute: how the host may use it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Causality {
+    /// Set by the host before or during initialization (and, if tunable, between steps).
     Parameter,
+    /// Set by the host at any communication point; the outputs depend on it.
     Input,
+    /// Computed by the model; the host only reads it.
     Output,
 }
 
+/// A variable's `variability` attribute: when its value may change.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Variability {
     /// Set before `fmi2ExitInitializationMode` only.
@@ -20,6 +25,7 @@ pub enum Variability {
     /// Changes only at communication points (FMI 2.0: required for Integer and
     /// Boolean outputs, which may not be continuous).
     Discrete,
+    /// May change at any time (Real variables only).
     Continuous,
 }
 
@@ -28,8 +34,11 @@ pub enum Variability {
 /// or 1.0), so the [`Model`] trait has one getter and one setter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Kind {
+    /// FMI 2.0 `Real` / FMI 3.0 `Float64`.
     Real,
+    /// FMI 2.0 `Integer` / FMI 3.0 `Int32`, held as the exact integer value.
     Integer,
+    /// `Boolean`, held as 0.0 (false) or 1.0 (true).
     Boolean,
     /// Named integer choices (FMI 2.0 `<Enumeration>`, read and written with
     /// `fmi2GetInteger`/`fmi2SetInteger`; FMI 3.0 `<Enumeration>`, with `fmi3GetInt64`/`fmi3SetInt64`).
@@ -37,6 +46,7 @@ pub enum Kind {
 }
 
 impl Kind {
+    /// The FMI 2.0 element name of the type, e.g. `Real`, for the XML and messages.
     pub fn as_str(self) -> &'static str {
         match self {
             Kind::Real => "Real",
@@ -61,6 +71,7 @@ impl Kind {
 pub struct EnumType {
     /// Type name in `<TypeDefinitions>`, e.g. `Fidelity`.
     pub name: &'static str,
+    /// The type's `description` attribute.
     pub description: &'static str,
     /// (item name, value code, description), in value order.
     pub items: &'static [(&'static str, i64, &'static str)],
@@ -73,13 +84,17 @@ impl EnumType {
     }
 }
 
+/// A variable's `initial` attribute: where its first value comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Initial {
+    /// The start value is the value (inputs, parameters).
     Exact,
+    /// Computed from other variables during initialization (outputs).
     Calculated,
 }
 
 impl Causality {
+    /// The attribute value in the modelDescription, e.g. `input`.
     pub fn as_str(self) -> &'static str {
         match self {
             Causality::Parameter => "parameter",
@@ -89,6 +104,7 @@ impl Causality {
     }
 }
 impl Variability {
+    /// The attribute value in the modelDescription, e.g. `tunable`.
     pub fn as_str(self) -> &'static str {
         match self {
             Variability::Fixed => "fixed",
@@ -99,6 +115,7 @@ impl Variability {
     }
 }
 impl Initial {
+    /// The attribute value in the modelDescription, e.g. `exact`.
     pub fn as_str(self) -> &'static str {
         match self {
             Initial::Exact => "exact",
@@ -113,19 +130,28 @@ impl Initial {
 pub struct Variable {
     /// Structured name, e.g. `geometry.pin_radius`.
     pub name: String,
+    /// The FMI type.
     pub kind: Kind,
+    /// The value reference that names the variable in the FMI calls (unique per model).
     pub value_reference: u32,
+    /// The `causality` attribute.
     pub causality: Causality,
+    /// The `variability` attribute.
     pub variability: Variability,
+    /// The `initial` attribute.
     pub initial: Initial,
     /// SI unit name from the model's unit table; `None` for dimensionless.
     pub unit: Option<&'static str>,
+    /// The display unit offered to the host (one of the unit's [`DisplayUnit`]s), if any.
     pub display_unit: Option<&'static str>,
     /// Start value (required for inputs and parameters, absent for calculated outputs);
     /// for a Boolean 0.0 (false) or 1.0 (true).
     pub start: Option<f64>,
+    /// Smallest allowed value, in the variable's unit; `None` for no bound.
     pub min: Option<f64>,
+    /// Largest allowed value, in the variable's unit; `None` for no bound.
     pub max: Option<f64>,
+    /// What the variable is, for the modelDescription and messages.
     pub description: String,
     /// Outputs: the names of the inputs the output depends on directly (ModelStructure).
     pub depends_on: Vec<&'static str>,
@@ -141,24 +167,33 @@ impl Variable {
 /// A display unit: `value_display = factor * value + offset`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DisplayUnit {
+    /// The display unit's name, e.g. `deg` or `degC`.
     pub name: &'static str,
+    /// Factor from the unit to the display unit.
     pub factor: f64,
+    /// Offset added after the factor, in the display unit.
     pub offset: f64,
 }
 
 /// A unit with its SI base-unit exponents (kg, m, s, A, K, mol, cd, rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct UnitDef {
+    /// The unit's name, e.g. `N.m`.
     pub name: &'static str,
     /// The physical quantity of the variables with this unit (`quantity` of the type
     /// definition the generators write for it), e.g. `Torque`.
     pub quantity: &'static str,
+    /// Exponent of the kilogram.
     pub kg: i32,
+    /// Exponent of the metre.
     pub m: i32,
+    /// Exponent of the second.
     pub s: i32,
+    /// Exponent of the radian.
     pub rad: i32,
     /// Exponent of the kelvin (temperature) base unit.
     pub k: i32,
+    /// The display units of this unit (`<DisplayUnit>` elements).
     pub display: &'static [DisplayUnit],
 }
 
@@ -193,19 +228,28 @@ pub const ME_CAPABILITIES: &[(&str, &str)] = &[
 /// attributes of both standards' modelDescription).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Legal {
+    /// The `author` attribute.
     pub author: &'static str,
+    /// The `copyright` attribute.
     pub copyright: &'static str,
+    /// The `license` attribute.
     pub license: &'static str,
 }
 
 /// Everything the FMI layer needs to know about one model.
 pub struct ModelInfo {
+    /// The `modelName` attribute, also used in messages.
     pub model_name: &'static str,
     /// The shared library's base name and the `modelIdentifier`.
     pub model_identifier: &'static str,
+    /// The `description` attribute of the modelDescription.
     pub description: &'static str,
+    /// The `version` attribute, the model's version (part of the GUID).
     pub version: &'static str,
+    /// The units the variables use (`<UnitDefinitions>`).
     pub units: &'static [UnitDef],
+    /// The variable table, in modelDescription order; the index in it is how the layer
+    /// addresses a variable in the [`Model`] trait.
     pub variables: Vec<Variable>,
     /// (startTime, stopTime, stepSize) of `<DefaultExperiment>`.
     pub default_experiment: (f64, f64, f64),
@@ -216,11 +260,12 @@ pub struct ModelInfo {
     /// The model is also offered as Model Exchange (a stateless map of its inputs: no
     /// continuous states, no event indicators; [`Model::do_step`] is never called there).
     pub model_exchange: bool,
+    /// Author, copyright and licence of the model.
     pub legal: Legal,
 }
 
 impl ModelInfo {
-    /// The GUID: a hash of everything that defines the interface (name, identifier,
+    /// The GUID: a hash of everything that defines the interface (name, identifier, version,
     /// and each variable's name, value reference, causality, variability, unit and,
     /// for a non-Real variable, its type), so
     /// that any change of the interface changes the GUID and a stale
@@ -260,10 +305,12 @@ impl ModelInfo {
         self.variables.iter().position(|v| v.value_reference == vr)
     }
 
+    /// Index of the variable named `name`.
     pub fn index_by_name(&self, name: &str) -> Option<usize> {
         self.variables.iter().position(|v| v.name == name)
     }
 
+    /// The unit definition named `name`, if the model declares it.
     pub fn unit(&self, name: &str) -> Option<&UnitDef> {
         self.units.iter().find(|u| u.name == name)
     }
@@ -285,7 +332,7 @@ impl ModelInfo {
 fn fnv1a64(bytes: &[u8], seed: u64) -> u64 {
     let mut h = seed;
     for &b in bytes {
-        h ^= b as u64;
+        h ^= u64::from(b);
         h = h.wrapping_mul(0x0000_0100_0000_01b3);
     }
     h

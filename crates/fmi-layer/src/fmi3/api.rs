@@ -28,6 +28,7 @@ use std::ptr::null_mut;
 /// against the variable table (only the kind is compared).
 static ANY_ENUMERATION: EnumType = EnumType { name: "", description: "", items: &[] };
 
+/// `fmi3GetVersion` (FMI 3.0): returns the static string `"3.0"` ([`VERSION`]).
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3GetVersion() -> *const c_char {
     VERSION.as_ptr()
@@ -99,7 +100,8 @@ pub unsafe fn instantiate_from(
     .unwrap_or(null_mut())
 }
 
-/// Not supported: returns NULL (logged when a logger is given).
+/// `fmi3InstantiateScheduledExecution` (FMI 3.0): not supported (no Scheduled
+/// Execution interface); always returns NULL, with the reason logged when `logMessage` is given.
 ///
 /// # Safety
 /// Pointers as in the FMI 3.0 standard.
@@ -129,7 +131,9 @@ pub unsafe extern "C" fn fmi3InstantiateScheduledExecution(
     null_mut()
 }
 
-/// Frees the instance in any state. NULL is a no-op.
+/// `fmi3FreeInstance` (FMI 3.0): frees the instance in any state (as
+/// [`crate::fmi2::api::common::fmi2FreeInstance`], the same instance type). NULL or an
+/// instance already freed is a no-op.
 ///
 /// # Safety
 /// `instance` is NULL or an instance of this library not yet freed.
@@ -139,6 +143,10 @@ pub unsafe extern "C" fn fmi3FreeInstance(instance: Fmi3Instance) {
     unsafe { crate::fmi2::api::common::fmi2FreeInstance(instance) }
 }
 
+/// `fmi3SetDebugLogging` (FMI 3.0): switches the named log categories on or off
+/// (`loggingOn`), or all of them when `nCategories` is 0. Returns `fmi3Error` and changes
+/// nothing for a NULL or unknown category name (the message lists the known ones).
+///
 /// # Safety
 /// `categories` points to `nCategories` strings when `nCategories > 0`.
 #[unsafe(no_mangle)]
@@ -169,6 +177,10 @@ pub unsafe extern "C" fn fmi3SetDebugLogging(
     })
 }
 
+/// `fmi3EnterInitializationMode` (FMI 3.0): records the start time (s) and, when
+/// `stopTimeDefined`, the stop time (s) (the tolerance is ignored), then enters
+/// initialization mode. Returns `fmi3Error`, nothing changed, for a non-finite time or a stop
+/// time before the start time.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterInitializationMode(
     instance: Fmi3Instance,
@@ -184,26 +196,34 @@ pub extern "C" fn fmi3EnterInitializationMode(
     })
 }
 
-/// Co-Simulation: to step mode; Model Exchange: to event mode.
+/// `fmi3ExitInitializationMode` (FMI 3.0): lets the model validate its parameters
+/// and compute its first outputs, then enters step mode (Co-Simulation) or event mode (Model
+/// Exchange). A rejected parameter or an output out of range is `fmi3Error` and puts the
+/// instance in the error state.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3ExitInitializationMode(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, |i| i.exit_initialization_mode())
+    call(instance, "fmi3ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, Instance::exit_initialization_mode)
 }
 
-/// Model Exchange only (this Co-Simulation has no event mode).
+/// `fmi3EnterEventMode` (FMI 3.0): Model Exchange only (this Co-Simulation has no
+/// event mode): to event mode. `fmi3Error` on a Co-Simulation instance.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterEventMode(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3EnterEventMode", state::ENTER_EVENT_MODE, |i| i.enter_event_mode())
+    call(instance, "fmi3EnterEventMode", state::ENTER_EVENT_MODE, Instance::enter_event_mode)
 }
 
+/// `fmi3Terminate` (FMI 3.0): ends the simulation run; afterwards only getters,
+/// FMU state functions, `fmi3Reset` and `fmi3FreeInstance` are allowed.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3Terminate(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3Terminate", state::TERMINATE, |i| i.terminate())
+    call(instance, "fmi3Terminate", state::TERMINATE, Instance::terminate)
 }
 
+/// `fmi3Reset` (FMI 3.0): returns the instance to the state right after
+/// instantiation, every variable at its start value, time 0.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3Reset(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3Reset", state::RESET, |i| i.reset())
+    call(instance, "fmi3Reset", state::RESET, Instance::reset)
 }
 
 /// All variables are scalars: one value per value reference.
@@ -259,7 +279,12 @@ unsafe fn set_as<T: Copy>(
 }
 
 macro_rules! typed {
-    ($get:ident, $set:ident, $t:ty, $kind:expr, $to:expr, $from:expr) => {
+    ($get:ident, $set:ident, $tname:literal, $t:ty, $kind:expr, $to:expr, $from:expr) => {
+        #[doc = concat!("`", stringify!($get), "` (FMI 3.0): writes the values of the ", $tname,
+            " variables `valueReferences[0..nValueReferences]` into `values` (`nValues` must equal ",
+            "`nValueReferences`: all scalars). Returns `fmi3Error` for an unknown value reference or ",
+            "one of another type.")]
+        ///
         /// # Safety
         /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
         #[unsafe(no_mangle)]
@@ -269,6 +294,10 @@ macro_rules! typed {
                 unsafe { get_as(inst, $kind, valueReferences, nValueReferences, values, nValues, $to) }
             })
         }
+        #[doc = concat!("`", stringify!($set), "` (FMI 3.0): sets the ", $tname,
+            " variables `valueReferences[0..nValueReferences]`. Every value is checked before any ",
+            "is stored, so a call that returns `fmi3Error` changes nothing.")]
+        ///
         /// # Safety
         /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
         #[unsafe(no_mangle)]
@@ -281,6 +310,11 @@ macro_rules! typed {
     };
 }
 
+/// `fmi3SetFloat64` (FMI 3.0): sets the Float64 (FMI 2.0 Real) variables
+/// `valueReferences[0..nValueReferences]`. Every value is checked (variability and causality
+/// for the current state, the model's range check) before any is stored, so a call that
+/// returns `fmi3Error` changes nothing; `nValues` must equal `nValueReferences` (all scalars).
+///
 /// # Safety
 /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
 #[unsafe(no_mangle)]
@@ -291,8 +325,11 @@ pub unsafe extern "C" fn fmi3SetFloat64(instance: Fmi3Instance, valueReferences:
     })
 }
 
-/// Float64 values; the independent variable `time` (value reference
-/// [`super::xml::TIME_VR`]) reads the instance's time.
+/// `fmi3GetFloat64` (FMI 3.0): writes the values of the Float64 variables into
+/// `values` (outputs at the current inputs, in the units of the modelDescription); the
+/// independent variable `time` (value reference [`super::xml::TIME_VR`]) reads the instance's
+/// time in s. Returns `fmi3Error` for an unknown or non-Float64 value reference, `nValues`
+/// ≠ `nValueReferences`, or a model failure computing the outputs.
 ///
 /// # Safety
 /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
@@ -316,16 +353,17 @@ pub unsafe extern "C" fn fmi3GetFloat64(instance: Fmi3Instance, valueReferences:
         Ok(Status::Ok)
     })
 }
-typed!(fmi3GetInt32, fmi3SetInt32, i32, Kind::Integer, |v| v as i32, |v: i32| Ok(f64::from(v)));
-typed!(fmi3GetInt64, fmi3SetInt64, i64, Kind::Enumeration(&ANY_ENUMERATION), |v| v as i64, |v: i64| {
+typed!(fmi3GetInt32, fmi3SetInt32, "Int32 (FMI 2.0 Integer)", i32, Kind::Integer, |v| v as i32, |v: i32| Ok(f64::from(v)));
+typed!(fmi3GetInt64, fmi3SetInt64, "Enumeration (accessed as Int64)", i64, Kind::Enumeration(&ANY_ENUMERATION), |v| v as i64, |v: i64| {
     // Enumeration codes are small; anything beyond i32 is no item of any type here.
     i32::try_from(v).map(f64::from).map_err(|_| format!("value {v} is no item of an enumeration of this FMU"))
 });
-typed!(fmi3GetBoolean, fmi3SetBoolean, u8, Kind::Boolean, |v| u8::from(v != 0.0), |v: u8| Ok(if v != 0 { 1.0 } else { 0.0 }));
+typed!(fmi3GetBoolean, fmi3SetBoolean, "Boolean (any non-zero byte is true)", u8, Kind::Boolean, |v| u8::from(v != 0.0), |v: u8| Ok(if v != 0 { 1.0 } else { 0.0 }));
 
 macro_rules! no_such_type {
     ($get:ident, $set:ident, $t:ty, $name:literal) => {
-        /// This FMU has no variables of this type: every value reference is refused.
+        #[doc = concat!("`", stringify!($get), "` (FMI 3.0): this FMU has no ", $name,
+            " variables; every value reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).")]
         ///
         /// # Safety
         /// `valueReferences` points to `nValueReferences` elements.
@@ -337,7 +375,8 @@ macro_rules! no_such_type {
                 inst.reject_type($name, vrs)
             })
         }
-        /// This FMU has no variables of this type: every value reference is refused.
+        #[doc = concat!("`", stringify!($set), "` (FMI 3.0): this FMU has no ", $name,
+            " variables; every value reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).")]
         ///
         /// # Safety
         /// `valueReferences` points to `nValueReferences` elements.
@@ -361,7 +400,8 @@ no_such_type!(fmi3GetUInt32, fmi3SetUInt32, u32, "UInt32");
 no_such_type!(fmi3GetUInt64, fmi3SetUInt64, u64, "UInt64");
 no_such_type!(fmi3GetString, fmi3SetString, Fmi3String, "String");
 
-/// No Binary variables.
+/// `fmi3GetBinary` (FMI 3.0): this FMU has no Binary variables; every value
+/// reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).
 ///
 /// # Safety
 /// `valueReferences` points to `nValueReferences` elements.
@@ -381,7 +421,8 @@ pub unsafe extern "C" fn fmi3GetBinary(
     })
 }
 
-/// No Binary variables.
+/// `fmi3SetBinary` (FMI 3.0): this FMU has no Binary variables; every value
+/// reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).
 ///
 /// # Safety
 /// `valueReferences` points to `nValueReferences` elements.
@@ -405,22 +446,22 @@ fn no_clocks(instance: Fmi3Instance, name: &'static str) -> Fmi3StatusC {
     call(instance, name, state::RESET, |_| Err("this FMU has no clocks".into()))
 }
 
-/// No clocks.
+/// `fmi3GetClock` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3GetClock(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _values: *mut u8) -> Fmi3StatusC {
     no_clocks(instance, "fmi3GetClock")
 }
-/// No clocks.
+/// `fmi3SetClock` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3SetClock(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _values: *const u8) -> Fmi3StatusC {
     no_clocks(instance, "fmi3SetClock")
 }
-/// No clocks.
+/// `fmi3GetIntervalDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3GetIntervalDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _intervals: *mut f64, _qualifiers: *mut c_int) -> Fmi3StatusC {
     no_clocks(instance, "fmi3GetIntervalDecimal")
 }
-/// No clocks.
+/// `fmi3GetIntervalFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3GetIntervalFraction(
     instance: Fmi3Instance,
@@ -432,44 +473,46 @@ pub extern "C" fn fmi3GetIntervalFraction(
 ) -> Fmi3StatusC {
     no_clocks(instance, "fmi3GetIntervalFraction")
 }
-/// No clocks.
+/// `fmi3GetShiftDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3GetShiftDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _shifts: *mut f64) -> Fmi3StatusC {
     no_clocks(instance, "fmi3GetShiftDecimal")
 }
-/// No clocks.
+/// `fmi3GetShiftFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3GetShiftFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *mut u64, _resolutions: *mut u64) -> Fmi3StatusC {
     no_clocks(instance, "fmi3GetShiftFraction")
 }
-/// No clocks.
+/// `fmi3SetIntervalDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3SetIntervalDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _intervals: *const f64) -> Fmi3StatusC {
     no_clocks(instance, "fmi3SetIntervalDecimal")
 }
-/// No clocks.
+/// `fmi3SetIntervalFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3SetIntervalFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *const u64, _resolutions: *const u64) -> Fmi3StatusC {
     no_clocks(instance, "fmi3SetIntervalFraction")
 }
-/// No clocks.
+/// `fmi3SetShiftDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3SetShiftDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _shifts: *const f64) -> Fmi3StatusC {
     no_clocks(instance, "fmi3SetShiftDecimal")
 }
-/// No clocks.
+/// `fmi3SetShiftFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3SetShiftFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *const u64, _resolutions: *const u64) -> Fmi3StatusC {
     no_clocks(instance, "fmi3SetShiftFraction")
 }
-/// No scheduled execution.
+/// `fmi3ActivateModelPartition` (FMI 3.0): no Scheduled Execution; always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3ActivateModelPartition(instance: Fmi3Instance, _clockReference: u32, _activationTime: f64) -> Fmi3StatusC {
     no_clocks(instance, "fmi3ActivateModelPartition")
 }
 
-/// The number of inputs `valueReference` depends on directly (outputs: the ModelStructure's
-/// dependencies; every other variable: 0).
+/// `fmi3GetNumberOfVariableDependencies` (FMI 3.0): writes to `*nDependencies`
+/// the number of inputs `valueReference` depends on directly (an output: its ModelStructure
+/// dependencies; any other variable: 0). `fmi3Error` for an unknown value reference or a NULL
+/// `nDependencies`.
 ///
 /// # Safety
 /// `nDependencies` is writable.
@@ -501,6 +544,11 @@ fn dependencies(inst: &Instance, vr: u32) -> Result<Vec<u32>, String> {
         .collect()
 }
 
+/// `fmi3GetVariableDependencies` (FMI 3.0): writes the direct dependencies of
+/// `dependent` (value references of the inputs, element index 0, kind `fmi3Dependent`).
+/// `fmi3Error` when `nDependencies` differs from what
+/// [`fmi3GetNumberOfVariableDependencies`] reports, or an array is NULL.
+///
 /// # Safety
 /// The four arrays hold `nDependencies` writable elements.
 #[unsafe(no_mangle)]
@@ -534,6 +582,9 @@ pub unsafe extern "C" fn fmi3GetVariableDependencies(
     })
 }
 
+/// `fmi3GetFMUState` (FMI 3.0): saves the instance's complete state into
+/// `*FMUState`, as [`crate::fmi2::api::common::fmi2GetFMUstate`] (the same FMU state type).
+///
 /// # Safety
 /// As `fmi2GetFMUstate`.
 #[unsafe(no_mangle)]
@@ -541,6 +592,10 @@ pub unsafe extern "C" fn fmi3GetFMUState(instance: Fmi3Instance, FMUState: *mut 
     // SAFETY: same contract.
     unsafe { get_fmu_state("fmi3GetFMUState", instance, FMUState) }
 }
+/// `fmi3SetFMUState` (FMI 3.0): restores the instance to `FMUState`, as
+/// [`crate::fmi2::api::common::fmi2SetFMUstate`]; `fmi3Error`, nothing changed, for a dead
+/// or foreign state.
+///
 /// # Safety
 /// As `fmi2SetFMUstate`.
 #[unsafe(no_mangle)]
@@ -548,6 +603,9 @@ pub unsafe extern "C" fn fmi3SetFMUState(instance: Fmi3Instance, FMUState: Fmi3F
     // SAFETY: same contract.
     unsafe { set_fmu_state("fmi3SetFMUState", instance, FMUState) }
 }
+/// `fmi3FreeFMUState` (FMI 3.0): frees `*FMUState` and sets it to NULL, as
+/// [`crate::fmi2::api::common::fmi2FreeFMUstate`].
+///
 /// # Safety
 /// As `fmi2FreeFMUstate`.
 #[unsafe(no_mangle)]
@@ -555,6 +613,9 @@ pub unsafe extern "C" fn fmi3FreeFMUState(instance: Fmi3Instance, FMUState: *mut
     // SAFETY: same contract.
     unsafe { free_fmu_state("fmi3FreeFMUState", instance, FMUState) }
 }
+/// `fmi3SerializedFMUStateSize` (FMI 3.0): writes to `*size` the length in bytes
+/// of `FMUState` serialized, as [`crate::fmi2::api::common::fmi2SerializedFMUstateSize`].
+///
 /// # Safety
 /// As `fmi2SerializedFMUstateSize`.
 #[unsafe(no_mangle)]
@@ -562,6 +623,10 @@ pub unsafe extern "C" fn fmi3SerializedFMUStateSize(instance: Fmi3Instance, FMUS
     // SAFETY: same contract.
     unsafe { serialized_fmu_state_size("fmi3SerializedFMUStateSize", instance, FMUState, size) }
 }
+/// `fmi3SerializeFMUState` (FMI 3.0): writes `FMUState` serialized into
+/// `serializedState` (the same bytes as through FMI 2.0), as
+/// [`crate::fmi2::api::common::fmi2SerializeFMUstate`]; `fmi3Error` when `size` is wrong.
+///
 /// # Safety
 /// As `fmi2SerializeFMUstate`.
 #[unsafe(no_mangle)]
@@ -569,6 +634,11 @@ pub unsafe extern "C" fn fmi3SerializeFMUState(instance: Fmi3Instance, FMUState:
     // SAFETY: same contract.
     unsafe { serialize_fmu_state("fmi3SerializeFMUState", instance, FMUState, serializedState as *mut c_char, size) }
 }
+/// `fmi3DeserializeFMUState` (FMI 3.0): decodes `serializedState` (written
+/// through FMI 3.0 or 2.0 for this model) into `*FMUState`, as
+/// [`crate::fmi2::api::common::fmi2DeSerializeFMUstate`]; `fmi3Error`, nothing changed, for
+/// bytes of another model or version, a wrong length or a CRC mismatch.
+///
 /// # Safety
 /// As `fmi2DeSerializeFMUstate`.
 #[unsafe(no_mangle)]
@@ -586,7 +656,8 @@ fn refuse(instance: Fmi3Instance, name: &'static str, why: &'static str) -> Fmi3
     call(instance, name, state::RESET, |_| Err(why.into()))
 }
 
-/// Not provided (`providesDirectionalDerivatives = false`).
+/// `fmi3GetDirectionalDerivative` (FMI 3.0): not provided
+/// (`providesDirectionalDerivatives = false`); always `fmi3Error`.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub extern "C" fn fmi3GetDirectionalDerivative(
@@ -602,7 +673,8 @@ pub extern "C" fn fmi3GetDirectionalDerivative(
 ) -> Fmi3StatusC {
     refuse(instance, "fmi3GetDirectionalDerivative", "directional derivatives are not provided (providesDirectionalDerivatives = false)")
 }
-/// Not provided (`providesAdjointDerivatives = false`).
+/// `fmi3GetAdjointDerivative` (FMI 3.0): not provided
+/// (`providesAdjointDerivatives = false`); always `fmi3Error`.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub extern "C" fn fmi3GetAdjointDerivative(
@@ -618,17 +690,20 @@ pub extern "C" fn fmi3GetAdjointDerivative(
 ) -> Fmi3StatusC {
     refuse(instance, "fmi3GetAdjointDerivative", "adjoint derivatives are not provided (providesAdjointDerivatives = false)")
 }
-/// No structural parameters.
+/// `fmi3EnterConfigurationMode` (FMI 3.0): this FMU has no structural parameters;
+/// always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterConfigurationMode(instance: Fmi3Instance) -> Fmi3StatusC {
     refuse(instance, "fmi3EnterConfigurationMode", "this FMU has no structural parameters (no configuration mode)")
 }
-/// No structural parameters.
+/// `fmi3ExitConfigurationMode` (FMI 3.0): this FMU has no structural parameters;
+/// always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3ExitConfigurationMode(instance: Fmi3Instance) -> Fmi3StatusC {
     refuse(instance, "fmi3ExitConfigurationMode", "this FMU has no structural parameters (no configuration mode)")
 }
-/// Not provided (`providesEvaluateDiscreteStates = false`).
+/// `fmi3EvaluateDiscreteStates` (FMI 3.0): not provided
+/// (`providesEvaluateDiscreteStates = false`); always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EvaluateDiscreteStates(instance: Fmi3Instance) -> Fmi3StatusC {
     refuse(instance, "fmi3EvaluateDiscreteStates", "not provided (providesEvaluateDiscreteStates = false)")
@@ -645,7 +720,9 @@ unsafe fn put<T>(p: *mut T, v: T) {
     }
 }
 
-/// Model Exchange event iteration: nothing discrete to update, no time event.
+/// `fmi3UpdateDiscreteStates` (FMI 3.0): the Model Exchange event iteration.
+/// Checks the outputs at the current inputs (a model failure is `fmi3Error`), then reports
+/// nothing discrete to update, no termination, no time event: every non-NULL flag false.
 ///
 /// # Safety
 /// Each pointer is NULL or writable.
@@ -673,12 +750,16 @@ pub unsafe extern "C" fn fmi3UpdateDiscreteStates(
     })
 }
 
+/// `fmi3EnterContinuousTimeMode` (FMI 3.0): Model Exchange, from event mode to
+/// continuous-time mode; `fmi3Error` on a Co-Simulation instance.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterContinuousTimeMode(instance: Fmi3Instance) -> Fmi3StatusC {
-    call(instance, "fmi3EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, |i| i.enter_continuous_time_mode())
+    call(instance, "fmi3EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, Instance::enter_continuous_time_mode)
 }
 
-/// Checks the outputs at the current inputs; never asks for an event.
+/// `fmi3CompletedIntegratorStep` (FMI 3.0): checks the outputs at the current
+/// inputs (a model failure is `fmi3Error`); never asks for an event or termination (both
+/// flags false where non-NULL).
 ///
 /// # Safety
 /// `enterEventMode` and `terminateSimulation` are NULL or writable.
@@ -701,6 +782,9 @@ pub unsafe extern "C" fn fmi3CompletedIntegratorStep(
     })
 }
 
+/// `fmi3SetTime` (FMI 3.0): Model Exchange, records the host's solver time `time`
+/// in s (the outputs depend on the inputs only); `fmi3Error` for a non-finite time or on a
+/// Co-Simulation instance.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3SetTime(instance: Fmi3Instance, time: f64) -> Fmi3StatusC {
     call(instance, "fmi3SetTime", state::SET_TIME, |inst| {
@@ -711,7 +795,9 @@ pub extern "C" fn fmi3SetTime(instance: Fmi3Instance, time: f64) -> Fmi3StatusC 
 
 macro_rules! no_states {
     ($name:ident, $mask:expr, $what:literal, $t:ty) => {
-        /// No continuous states / event indicators: the length must be 0.
+        #[doc = concat!("`", stringify!($name), "` (FMI 3.0, Model Exchange): this FMU has no continuous ",
+            "states and no event indicators, so `", $what, "` must be 0 (then `fmi3OK`, nothing ",
+            "read or written); `fmi3Error` otherwise or on a Co-Simulation instance.")]
         #[unsafe(no_mangle)]
         pub extern "C" fn $name(instance: Fmi3Instance, _values: $t, n: usize) -> Fmi3StatusC {
             call(instance, stringify!($name), $mask, |inst| inst.require_none($what, n).map(|_| Status::Ok))
@@ -725,7 +811,8 @@ no_states!(fmi3GetEventIndicators, state::GET_DERIVATIVES, "nEventIndicators", *
 no_states!(fmi3GetContinuousStates, state::GET_CONTINUOUS_STATES, "nContinuousStates", *mut f64);
 no_states!(fmi3GetNominalsOfContinuousStates, state::GET_CONTINUOUS_STATES, "nContinuousStates", *mut f64);
 
-/// 0 event indicators.
+/// `fmi3GetNumberOfEventIndicators` (FMI 3.0): writes 0 to `*nEventIndicators`
+/// (this FMU has no event indicators); `fmi3Error` if it is NULL.
 ///
 /// # Safety
 /// `nEventIndicators` is writable.
@@ -741,7 +828,8 @@ pub unsafe extern "C" fn fmi3GetNumberOfEventIndicators(instance: Fmi3Instance, 
     })
 }
 
-/// 0 continuous states.
+/// `fmi3GetNumberOfContinuousStates` (FMI 3.0): writes 0 to `*nContinuousStates`
+/// (this FMU has no continuous states); `fmi3Error` if it is NULL.
 ///
 /// # Safety
 /// `nContinuousStates` is writable.
@@ -757,7 +845,8 @@ pub unsafe extern "C" fn fmi3GetNumberOfContinuousStates(instance: Fmi3Instance,
     })
 }
 
-/// Only after event mode, which this Co-Simulation never enters.
+/// `fmi3EnterStepMode` (FMI 3.0): only allowed after event mode, which this
+/// Co-Simulation never enters (`hasEventMode = false`); always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterStepMode(instance: Fmi3Instance) -> Fmi3StatusC {
     call(instance, "fmi3EnterStepMode", state::ENTER_STEP_MODE, |_| {
@@ -765,7 +854,8 @@ pub extern "C" fn fmi3EnterStepMode(instance: Fmi3Instance) -> Fmi3StatusC {
     })
 }
 
-/// Not provided (`maxOutputDerivativeOrder = 0`).
+/// `fmi3GetOutputDerivatives` (FMI 3.0): not provided
+/// (`maxOutputDerivativeOrder = 0`); always `fmi3Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3GetOutputDerivatives(
     instance: Fmi3Instance,
@@ -778,9 +868,11 @@ pub extern "C" fn fmi3GetOutputDerivatives(
     refuse(instance, "fmi3GetOutputDerivatives", "output derivatives are not provided (maxOutputDerivativeOrder = 0)")
 }
 
-/// One communication step, as `fmi2DoStep`; never returns early, never asks for event
-/// handling or termination; `lastSuccessfulTime` is the end of the step (or, after a failed
-/// step, the end of the last good one).
+/// `fmi3DoStep` (FMI 3.0): one communication step from `currentCommunicationPoint`
+/// over `communicationStepSize` (s), as [`crate::fmi2::api::cosim::fmi2DoStep`]. Never returns
+/// early, never asks for event handling or termination; `*lastSuccessfulTime` is the end of
+/// the step (or, after a failed step, the end of the last good one), in s. `fmi3Error` for a
+/// step that is not positive or does not continue the last one, or that the model fails.
 ///
 /// # Safety
 /// The four output pointers are NULL or writable.

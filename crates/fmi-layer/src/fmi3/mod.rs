@@ -29,7 +29,11 @@ pub mod xml;
 #[macro_export]
 macro_rules! export_fmi3 {
     ($registry:path) => {
-        /// `fmi3InstantiateModelExchange` of the FMI 3.0 standard for the models of this library.
+        /// `fmi3InstantiateModelExchange` (FMI 3.0) for the models of this library: finds the
+        /// model whose instantiation token is `instantiationToken` and returns a new Model
+        /// Exchange instance of it in the `instantiated` state. Returns NULL (with the reason
+        /// logged when `logMessage` is given) for an empty instance name, a NULL or unknown
+        /// token, or a model that offers Co-Simulation only.
         ///
         /// # Safety
         /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
@@ -60,8 +64,12 @@ macro_rules! export_fmi3 {
             }
         }
 
-        /// `fmi3InstantiateCoSimulation` of the FMI 3.0 standard for the models of this library
-        /// (`eventModeUsed` must be false: `hasEventMode = false`; no intermediate update).
+        /// `fmi3InstantiateCoSimulation` (FMI 3.0) for the models of this library: finds the
+        /// model whose instantiation token is `instantiationToken` and returns a new
+        /// Co-Simulation instance of it in the `instantiated` state. Returns NULL (with the
+        /// reason logged when `logMessage` is given) for an empty instance name, a NULL or
+        /// unknown token, or `eventModeUsed = true` (`hasEventMode = false`); early return and
+        /// intermediate update are not used.
         ///
         /// # Safety
         /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.

@@ -1,4 +1,10 @@
 //! The FMI 2.0 functions common to Model Exchange and Co-Simulation.
+//!
+//! Every function taking an instance `c` runs through the layer's guard: it returns
+//! `fmi2Error` for a NULL, freed or foreign `c` and for a call its state mask does not
+//! allow in the instance's current state (logged under `logStatusError`), `fmi2Error` with a
+//! logged message for a rejected argument, and `fmi2Fatal` when a panic is contained inside
+//! the call (the instance then accepts only `fmi2FreeInstance`).
 
 #![allow(non_snake_case)]
 
@@ -13,6 +19,9 @@ use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::ptr::null_mut;
 
+/// A C string from the host as an owned Rust string (invalid UTF-8 replaced), or `None`
+/// for NULL.
+///
 /// # Safety
 /// `p` is NULL or a NUL-terminated string.
 pub(crate) unsafe fn text(p: *const c_char) -> Option<String> {
@@ -20,11 +29,14 @@ pub(crate) unsafe fn text(p: *const c_char) -> Option<String> {
     (!p.is_null()).then(|| unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
 }
 
+/// `fmi2GetTypesPlatform` (FMI 2.0 §2.1.4): returns the static string `"default"`
+/// ([`TYPES_PLATFORM`]), the platform types of the standard's headers.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetTypesPlatform() -> *const c_char {
     TYPES_PLATFORM.as_ptr()
 }
 
+/// `fmi2GetVersion` (FMI 2.0 §2.1.4): returns the static string `"2.0"` ([`VERSION`]).
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetVersion() -> *const c_char {
     VERSION.as_ptr()
@@ -52,6 +64,12 @@ pub unsafe fn instantiate_from(
     .unwrap_or(null_mut())
 }
 
+/// `fmi2Instantiate` proper (outside the panic guard of [`instantiate_from`]): checks the
+/// callbacks, instance name, `fmuType` and GUID, and returns the boxed [`Instance`] or NULL
+/// (with the reason logged when there is a logger to log it).
+///
+/// # Safety
+/// As for [`instantiate_from`].
 unsafe fn instantiate(
     models: &[&'static ModelInfo],
     instance_name: Fmi2String,
@@ -132,7 +150,9 @@ pub(crate) fn looks_like_uri(s: &str) -> bool {
     }
 }
 
-/// Frees the instance in any state (the `fatal` one included). NULL is a no-op.
+/// `fmi2FreeInstance` (FMI 2.0 §2.1.5): frees the instance in any state (the `fatal` one
+/// included) and everything it owns. NULL, or an instance already freed (the tag check), is
+/// a no-op; a panic during the release is contained.
 ///
 /// # Safety
 /// `c` is NULL or a component from `fmi2Instantiate` not yet freed.
@@ -155,6 +175,10 @@ pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
     }));
 }
 
+/// `fmi2SetDebugLogging` (FMI 2.0 §2.1.5): switches the named log categories on or off
+/// (`loggingOn`), or all of them when `nCategories` is 0. Returns `fmi2Error` and changes
+/// nothing for a NULL or unknown category name (the message lists the known ones).
+///
 /// # Safety
 /// `categories` points to `nCategories` strings when `nCategories > 0`.
 #[unsafe(no_mangle)]
@@ -188,6 +212,9 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
     })
 }
 
+/// `fmi2SetupExperiment` (FMI 2.0 §2.1.6): records the start time (s) and, when
+/// `stopTimeDefined`, the stop time (s); the tolerance is ignored (no error control).
+/// Returns `fmi2Error` for a non-finite time or a stop time before the start time.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2SetupExperiment(
     c: Fmi2Component,
@@ -202,26 +229,42 @@ pub extern "C" fn fmi2SetupExperiment(
     })
 }
 
+/// `fmi2EnterInitializationMode` (FMI 2.0 §2.1.6): moves the instance into initialization
+/// mode, where parameters and start values may still be set.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterInitializationMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterInitializationMode", state::ENTER_INITIALIZATION_MODE, |i| i.enter_initialization_mode())
+    call(c, "fmi2EnterInitializationMode", state::ENTER_INITIALIZATION_MODE, Instance::enter_initialization_mode)
 }
 
+/// `fmi2ExitInitializationMode` (FMI 2.0 §2.1.6): lets the model validate its parameters
+/// ([`crate::fmi2::model::Model::exit_initialization`]) and compute its first outputs, then
+/// enters step mode (Co-Simulation) or event mode (Model Exchange). A parameter the model
+/// rejects, or an output out of its range, is `fmi2Error` and puts the instance in the
+/// `error` state.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2ExitInitializationMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, |i| i.exit_initialization_mode())
+    call(c, "fmi2ExitInitializationMode", state::EXIT_INITIALIZATION_MODE, Instance::exit_initialization_mode)
 }
 
+/// `fmi2Terminate` (FMI 2.0 §2.1.6): ends the simulation run; afterwards only getters,
+/// FMU state functions, `fmi2Reset` and `fmi2FreeInstance` are allowed.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2Terminate(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2Terminate", state::TERMINATE, |i| i.terminate())
+    call(c, "fmi2Terminate", state::TERMINATE, Instance::terminate)
 }
 
+/// `fmi2Reset` (FMI 2.0 §2.1.6): returns the instance to the state right after
+/// `fmi2Instantiate`, every variable at its start value.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2Reset(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2Reset", state::RESET, |i| i.reset())
+    call(c, "fmi2Reset", state::RESET, Instance::reset)
 }
 
+/// `fmi2GetReal` (FMI 2.0 §2.1.7): writes the values of the Real variables `vr[0..nvr]`
+/// into `value` (outputs at the current inputs, in the units of the modelDescription).
+/// Returns `fmi2Error` for an unknown or non-Real value reference, a NULL array with
+/// `nvr > 0`, or a model failure computing the outputs.
+///
 /// # Safety
 /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
 #[unsafe(no_mangle)]
@@ -238,6 +281,10 @@ pub unsafe extern "C" fn fmi2GetReal(
     })
 }
 
+/// `fmi2SetReal` (FMI 2.0 §2.1.7): sets the Real variables `vr[0..nvr]`. Every value is
+/// checked (variability and causality for the current state, the model's range check)
+/// before any is stored, so a call that returns `fmi2Error` changes nothing.
+///
 /// # Safety
 /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
 #[unsafe(no_mangle)]
@@ -256,7 +303,8 @@ pub unsafe extern "C" fn fmi2SetReal(
 
 macro_rules! no_such_type {
     ($get:ident, $set:ident, $t:ty, $name:literal) => {
-        /// No model of this layer has variables of this type: every value reference is rejected.
+        #[doc = concat!("`", stringify!($get), "` (FMI 2.0 §2.1.7): no model of this layer has ", $name,
+            " variables, so every value reference is rejected with `fmi2Error` (`nvr = 0` is `fmi2OK`).")]
         ///
         /// # Safety
         /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
@@ -269,7 +317,8 @@ macro_rules! no_such_type {
                 inst.reject_type($name, vrs)
             })
         }
-        /// This layer's models have no variables of this type: every value reference is rejected.
+        #[doc = concat!("`", stringify!($set), "` (FMI 2.0 §2.1.7): no model of this layer has ", $name,
+            " variables, so every value reference is rejected with `fmi2Error` (`nvr = 0` is `fmi2OK`).")]
         ///
         /// # Safety
         /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
@@ -286,8 +335,10 @@ macro_rules! no_such_type {
 }
 
 macro_rules! int_type {
-    ($get:ident, $set:ident, $kind:expr, $from:expr) => {
-        /// Integer-valued variables (the model holds them as f64; see [`Kind`]).
+    ($get:ident, $set:ident, $tname:literal, $kind:expr, $from:expr) => {
+        #[doc = concat!("`", stringify!($get), "` (FMI 2.0 §2.1.7): writes the values of the ", $tname,
+            " variables `vr[0..nvr]` into `value` (the model holds them as f64; see [`Kind`]). ",
+            "Returns `fmi2Error` for an unknown value reference or one of another type.")]
         ///
         /// # Safety
         /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
@@ -304,7 +355,9 @@ macro_rules! int_type {
                 Ok(status)
             })
         }
-        /// Integer-valued variables (the model holds them as f64; see [`Kind`]).
+        #[doc = concat!("`", stringify!($set), "` (FMI 2.0 §2.1.7): sets the ", $tname,
+            " variables `vr[0..nvr]` (stored as f64; see [`Kind`]). Every value is checked before ",
+            "any is stored, so a call that returns `fmi2Error` changes nothing.")]
         ///
         /// # Safety
         /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
@@ -321,13 +374,18 @@ macro_rules! int_type {
     };
 }
 
-int_type!(fmi2GetInteger, fmi2SetInteger, Kind::Integer, |v| v as f64);
+int_type!(fmi2GetInteger, fmi2SetInteger, "Integer", Kind::Integer, f64::from);
 // Any non-zero fmi2Boolean is true.
-int_type!(fmi2GetBoolean, fmi2SetBoolean, Kind::Boolean, |v| if v != FMI2_FALSE { 1.0 } else { 0.0 });
+int_type!(fmi2GetBoolean, fmi2SetBoolean, "Boolean", Kind::Boolean, |v| if v != FMI2_FALSE { 1.0 } else { 0.0 });
 no_such_type!(fmi2GetString, fmi2SetString, Fmi2String, "String");
 
+/// `fmi2GetFMUstate` (FMI 2.0 §2.1.8): saves the instance's complete state (time, mode,
+/// model state) into `*FMUstate`: a new FMU state when `*FMUstate` is NULL, else the given
+/// one is overwritten. Returns `fmi2Error` for a NULL `FMUstate` or a `*FMUstate` that is
+/// not a live FMU state of this FMU.
+///
 /// # Safety
-/// `state` is NULL or points to NULL or to an FMU state of this instance's model.
+/// `FMUstate` is NULL or points to NULL or to an FMU state of this instance's model.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
     // SAFETY: forwarded under the same contract.
@@ -362,8 +420,11 @@ pub(crate) unsafe fn get_fmu_state(name: &'static str, c: Fmi2Component, FMUstat
     })
 }
 
+/// The FMU state behind the handle `s`, or an error message for NULL or a handle that is
+/// not (any more) a live FMU state of this FMU.
+///
 /// # Safety
-/// A non-NULL `FMUstate` must be an FMU state returned by this FMU.
+/// A non-NULL `s` must be an FMU state returned by this FMU.
 unsafe fn live_state<'a>(s: Fmi2FmuState) -> Result<&'a mut Snapshot, String> {
     if s.is_null() {
         return Err("FMUstate is NULL".into());
@@ -376,6 +437,10 @@ unsafe fn live_state<'a>(s: Fmi2FmuState) -> Result<&'a mut Snapshot, String> {
     Ok(snap)
 }
 
+/// `fmi2SetFMUstate` (FMI 2.0 §2.1.8): restores the instance to the saved `FMUstate`
+/// (time, mode, model state). Returns `fmi2Error`, the instance unchanged, for a NULL or
+/// dead state or one saved from another model.
+///
 /// # Safety
 /// `FMUstate` is NULL or an FMU state returned by this FMU.
 #[unsafe(no_mangle)]
@@ -396,6 +461,10 @@ pub(crate) unsafe fn set_fmu_state(name: &'static str, c: Fmi2Component, FMUstat
     })
 }
 
+/// `fmi2FreeFMUstate` (FMI 2.0 §2.1.8): frees `*FMUstate` and sets it to NULL; a NULL
+/// `FMUstate` or `*FMUstate` is `fmi2OK` (nothing to free), a dead or foreign state is
+/// `fmi2Error`.
+///
 /// # Safety
 /// `FMUstate` is NULL or points to NULL or to an FMU state returned by this FMU.
 #[unsafe(no_mangle)]
@@ -426,8 +495,12 @@ pub(crate) unsafe fn free_fmu_state(name: &'static str, c: Fmi2Component, FMUsta
     })
 }
 
+/// `fmi2SerializedFMUstateSize` (FMI 2.0 §2.1.8): writes to `*size` the length in bytes
+/// of `FMUstate` serialized (the layer's versioned format with CRC). Returns `fmi2Error`
+/// for a dead state or a NULL `size`.
+///
 /// # Safety
-/// `FMUstate` is an FMU state returned by this FMU; `size` is writable.
+/// `FMUstate` is an FMU state returned by this FMU; `size` is NULL or writable.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: Fmi2Component, FMUstate: Fmi2FmuState, size: *mut usize) -> Fmi2StatusC {
     // SAFETY: forwarded under the same contract.
@@ -451,8 +524,13 @@ pub(crate) unsafe fn serialized_fmu_state_size(name: &'static str, c: Fmi2Compon
     })
 }
 
+/// `fmi2SerializeFMUstate` (FMI 2.0 §2.1.8): writes `FMUstate` serialized into
+/// `serializedState`. Returns `fmi2Error`, nothing written, when `size` differs from what
+/// `fmi2SerializedFMUstateSize` reports or the state is dead.
+///
 /// # Safety
-/// `serializedState` points to `size` writable bytes.
+/// `FMUstate` is an FMU state returned by this FMU; `serializedState` points to `size`
+/// writable bytes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2SerializeFMUstate(
     c: Fmi2Component,
@@ -488,6 +566,11 @@ pub(crate) unsafe fn serialize_fmu_state(name: &'static str,
     })
 }
 
+/// `fmi2DeSerializeFMUstate` (FMI 2.0 §2.1.8): decodes `serializedState` (as written by
+/// `fmi2SerializeFMUstate` of this model, through FMI 2.0 or 3.0) into `*FMUstate`, a new
+/// state when it is NULL, else overwriting the given one. Returns `fmi2Error`, nothing
+/// changed, for bytes of another model or format version, a wrong length or a CRC mismatch.
+///
 /// # Safety
 /// `serializedState` points to `size` readable bytes; `FMUstate` is writable and
 /// holds NULL or an FMU state returned by this FMU.
@@ -532,7 +615,8 @@ pub(crate) unsafe fn deserialize_fmu_state(name: &'static str,
     })
 }
 
-/// Not provided (`providesDirectionalDerivative = false`).
+/// `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9): not provided
+/// (`providesDirectionalDerivative = false`); always `fmi2Error` (after the state check).
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetDirectionalDerivative(
     c: Fmi2Component,

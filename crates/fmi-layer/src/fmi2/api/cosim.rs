@@ -7,6 +7,11 @@ use crate::fmi2::state;
 use crate::fmi2::types::*;
 use std::ffi::c_int;
 
+/// `fmi2DoStep` (FMI 2.0 §4.2.2): advances the model from `currentCommunicationPoint`
+/// over `communicationStepSize` (both in s) with the inputs held; the outputs are then those at
+/// the end of the step. Returns `fmi2Error` for a step size that is not a finite number > 0,
+/// or a communication point that does not continue the last step (nothing changed), and for
+/// a step the model fails (the instance goes to the `error` state).
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2DoStep(
     c: Fmi2Component,
@@ -17,13 +22,15 @@ pub extern "C" fn fmi2DoStep(
     call(c, "fmi2DoStep", state::DO_STEP, |inst| inst.do_step(currentCommunicationPoint, communicationStepSize))
 }
 
-/// Only meaningful for asynchronous slaves; its mask (`stepInProgress`) is never met.
+/// `fmi2CancelStep` (FMI 2.0 §4.2.2): only meaningful for asynchronous slaves; its mask
+/// (`stepInProgress`) is never met, so it always returns `fmi2Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2CancelStep(c: Fmi2Component) -> Fmi2StatusC {
     call(c, "fmi2CancelStep", state::CANCEL_STEP, |_| Err("no step is in progress".into()))
 }
 
-/// Rejected: `canInterpolateInputs = false`.
+/// `fmi2SetRealInputDerivatives` (FMI 2.0 §4.2.1): rejected with `fmi2Error`
+/// (`canInterpolateInputs = false`).
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2SetRealInputDerivatives(
     c: Fmi2Component,
@@ -37,7 +44,8 @@ pub extern "C" fn fmi2SetRealInputDerivatives(
     })
 }
 
-/// Rejected: `maxOutputDerivativeOrder = 0`.
+/// `fmi2GetRealOutputDerivatives` (FMI 2.0 §4.2.1): rejected with `fmi2Error`
+/// (`maxOutputDerivativeOrder = 0`).
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetRealOutputDerivatives(
     c: Fmi2Component,
@@ -65,6 +73,9 @@ fn unsupported(func: &str, s: c_int) -> Result<crate::fmi2::types::Status, Strin
     Err(format!("{} is not available through {func} (this FMU steps synchronously)", kind_name(s)))
 }
 
+/// `fmi2GetStatus` (FMI 2.0 §4.2.3): no status kind is available through it (this FMU
+/// steps synchronously); always `fmi2Error`, `value` untouched.
+///
 /// # Safety
 /// `value` is writable.
 #[unsafe(no_mangle)]
@@ -72,7 +83,9 @@ pub unsafe extern "C" fn fmi2GetStatus(c: Fmi2Component, s: c_int, _value: *mut 
     call(c, "fmi2GetStatus", state::GET_STATUS, |_| unsupported("fmi2GetStatus", s))
 }
 
-/// `fmi2LastSuccessfulTime`: the end of the last completed step.
+/// `fmi2GetRealStatus` (FMI 2.0 §4.2.3): for `fmi2LastSuccessfulTime`, writes the end of
+/// the last completed step (s) to `*value`; `fmi2Error` for any other status kind or a NULL
+/// `value`.
 ///
 /// # Safety
 /// `value` is writable.
@@ -91,6 +104,9 @@ pub unsafe extern "C" fn fmi2GetRealStatus(c: Fmi2Component, s: c_int, value: *m
     })
 }
 
+/// `fmi2GetIntegerStatus` (FMI 2.0 §4.2.3): no integer status kind exists; always
+/// `fmi2Error`, `value` untouched.
+///
 /// # Safety
 /// `value` is writable.
 #[unsafe(no_mangle)]
@@ -98,7 +114,9 @@ pub unsafe extern "C" fn fmi2GetIntegerStatus(c: Fmi2Component, s: c_int, _value
     call(c, "fmi2GetIntegerStatus", state::GET_STATUS, |_| unsupported("fmi2GetIntegerStatus", s))
 }
 
-/// `fmi2Terminated`: always false (the model never asks to stop).
+/// `fmi2GetBooleanStatus` (FMI 2.0 §4.2.3): for `fmi2Terminated`, writes `fmi2False` to
+/// `*value` (the model never asks to stop); `fmi2Error` for any other status kind or a NULL
+/// `value`.
 ///
 /// # Safety
 /// `value` is writable.
@@ -117,6 +135,9 @@ pub unsafe extern "C" fn fmi2GetBooleanStatus(c: Fmi2Component, s: c_int, value:
     })
 }
 
+/// `fmi2GetStringStatus` (FMI 2.0 §4.2.3): `fmi2PendingStatus` is never available (no
+/// asynchronous step); always `fmi2Error`, `value` untouched.
+///
 /// # Safety
 /// `value` is writable.
 #[unsafe(no_mangle)]

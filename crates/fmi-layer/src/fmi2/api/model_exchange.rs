@@ -8,6 +8,7 @@
 #![allow(non_snake_case)]
 
 use super::guard::call;
+use crate::fmi2::instance::Instance;
 use crate::fmi2::state;
 use crate::fmi2::types::*;
 use std::ffi::c_void;
@@ -15,20 +16,30 @@ use std::ffi::c_void;
 /// `fmi2EventInfo` (FMI 2.0 `fmi2FunctionTypes.h`).
 #[repr(C)]
 pub struct Fmi2EventInfo {
+    /// `newDiscreteStatesNeeded`: another event iteration is needed (always false here).
     pub new_discrete_states_needed: Fmi2Boolean,
+    /// `terminateSimulation`: the model asks the host to stop (always false here).
     pub terminate_simulation: Fmi2Boolean,
+    /// `nominalsOfContinuousStatesChanged` (always false: no continuous states).
     pub nominals_of_continuous_states_changed: Fmi2Boolean,
+    /// `valuesOfContinuousStatesChanged` (always false: no continuous states).
     pub values_of_continuous_states_changed: Fmi2Boolean,
+    /// `nextEventTimeDefined`: whether `next_event_time` holds a time event (always false).
     pub next_event_time_defined: Fmi2Boolean,
+    /// `nextEventTime`: the next time event, in s (0, unused, here).
     pub next_event_time: Fmi2Real,
 }
 
+/// `fmi2EnterEventMode` (FMI 2.0 §3.2.2): Model Exchange, to event mode; `fmi2Error` on a
+/// Co-Simulation instance.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterEventMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterEventMode", state::ENTER_EVENT_MODE, |i| i.enter_event_mode())
+    call(c, "fmi2EnterEventMode", state::ENTER_EVENT_MODE, Instance::enter_event_mode)
 }
 
-/// Nothing discrete to update: every flag false, no time event.
+/// `fmi2NewDiscreteStates` (FMI 2.0 §3.2.2): the event iteration. Checks the outputs at
+/// the current inputs (a model failure is `fmi2Error`), then writes an `fmi2EventInfo` with
+/// every flag false and no next time event: nothing discrete to update.
 ///
 /// # Safety
 /// `eventInfo` is NULL or points to a writable `fmi2EventInfo`.
@@ -55,13 +66,16 @@ pub unsafe extern "C" fn fmi2NewDiscreteStates(c: Fmi2Component, eventInfo: *mut
     })
 }
 
+/// `fmi2EnterContinuousTimeMode` (FMI 2.0 §3.2.2): Model Exchange, from event mode to
+/// continuous-time mode; `fmi2Error` on a Co-Simulation instance.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2EnterContinuousTimeMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, |i| i.enter_continuous_time_mode())
+    call(c, "fmi2EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, Instance::enter_continuous_time_mode)
 }
 
-/// The outputs at the current inputs are checked (a model failure is reported here);
-/// no event is ever requested.
+/// `fmi2CompletedIntegratorStep` (FMI 2.0 §3.2.2): checks the outputs at the current
+/// inputs (a model failure is `fmi2Error`); never asks for an event or termination (both
+/// flags `fmi2False`). `fmi2Error` if either pointer is NULL.
 ///
 /// # Safety
 /// `enterEventMode` and `terminateSimulation` are writable.
@@ -87,6 +101,9 @@ pub unsafe extern "C" fn fmi2CompletedIntegratorStep(
     })
 }
 
+/// `fmi2SetTime` (FMI 2.0 §3.2.1): Model Exchange, records the host's solver time `time`
+/// in s (the outputs depend on the inputs only); `fmi2Error` for a non-finite time or on a
+/// Co-Simulation instance.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2SetTime(c: Fmi2Component, time: Fmi2Real) -> Fmi2StatusC {
     call(c, "fmi2SetTime", state::SET_TIME, |inst| {
@@ -95,22 +112,32 @@ pub extern "C" fn fmi2SetTime(c: Fmi2Component, time: Fmi2Real) -> Fmi2StatusC {
     })
 }
 
+/// `fmi2SetContinuousStates` (FMI 2.0 §3.2.1): this FMU has no continuous states, so `nx`
+/// must be 0 (then `fmi2OK`, nothing read); `fmi2Error` otherwise.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2SetContinuousStates(c: Fmi2Component, _x: *const Fmi2Real, nx: usize) -> Fmi2StatusC {
     call(c, "fmi2SetContinuousStates", state::SET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
 }
+/// `fmi2GetDerivatives` (FMI 2.0 §3.2.2): this FMU has no continuous states, so `nx` must
+/// be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetDerivatives(c: Fmi2Component, _derivatives: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
     call(c, "fmi2GetDerivatives", state::GET_DERIVATIVES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
 }
+/// `fmi2GetEventIndicators` (FMI 2.0 §3.2.2): this FMU has no event indicators, so `ni`
+/// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetEventIndicators(c: Fmi2Component, _eventIndicators: *mut Fmi2Real, ni: usize) -> Fmi2StatusC {
     call(c, "fmi2GetEventIndicators", state::GET_DERIVATIVES, |inst| inst.require_none("ni", ni).map(|_| Status::Ok))
 }
+/// `fmi2GetContinuousStates` (FMI 2.0 §3.2.2): this FMU has no continuous states, so `nx`
+/// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetContinuousStates(c: Fmi2Component, _x: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
     call(c, "fmi2GetContinuousStates", state::GET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
 }
+/// `fmi2GetNominalsOfContinuousStates` (FMI 2.0 §3.2.2): this FMU has no continuous
+/// states, so `nx` must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2GetNominalsOfContinuousStates(c: Fmi2Component, _x_nominal: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
     call(c, "fmi2GetNominalsOfContinuousStates", state::GET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
