@@ -418,7 +418,7 @@ mod tests {
             .flat_map(|(sec, t)| t.as_table().unwrap().keys().map(move |k| format!("{sec}.{k}")))
             .collect();
         names.sort();
-        let mut table: Vec<String> = PARAMS.iter().map(|s| s.name()).collect();
+        let mut table: Vec<String> = PARAMS.iter().map(super::ParamSpec::name).collect();
         table.sort();
         assert_eq!(names, table);
         // And each accessor reads its own field: set a distinct value through the table, read back through serde.

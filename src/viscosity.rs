@@ -159,7 +159,7 @@ mod tests {
         // Monotone increasing with pressure for η∞ < η0.
         let mut prev = 0.0;
         for i in 0..100 {
-            let v = roelands(&l, i as f64 * 1e7);
+            let v = roelands(&l, f64::from(i) * 1e7);
             assert!(v > prev);
             prev = v;
         }

@@ -62,7 +62,7 @@ impl RigState {
     pub fn to_bytes(&self) -> Vec<u8> {
         let n = &self.node;
         let phase = match n.phase {
-            Phase::Slip(s) => s as f64,
+            Phase::Slip(s) => f64::from(s),
             Phase::Stick => 0.0,
             Phase::Smooth => 2.0,
         };
@@ -469,7 +469,7 @@ impl RigSim {
         let load = d.load(node.time).map_err(|p| RigError::Load { time: node.time, value: p })?;
         let (w, ta) = (node.state[SPEED], node.state[TORQUE]);
         Ok(match node.phase {
-            Phase::Slip(s) if (s as f64) * w >= 0.0 => node.phase,
+            Phase::Slip(s) if f64::from(s) * w >= 0.0 => node.phase,
             Phase::Slip(_) | Phase::Smooth => Phase::Slip(if w > 0.0 { 1 } else { -1 }),
             Phase::Stick => {
                 if ta.abs() > d.breakaway_torque(load) {
@@ -538,7 +538,7 @@ impl RigSim {
         let event = |t: f64, y: &State| -> (f64, bool) {
             match phase {
                 Phase::Slip(s) => {
-                    let g = -(s as f64) * y[SPEED];
+                    let g = -f64::from(s) * y[SPEED];
                     (g, g >= 0.0)
                 }
                 Phase::Stick => {

@@ -76,7 +76,7 @@ pub fn resolve(keys: &[String], start: &Params) -> Result<Vec<Extra>, Calibratio
             continue;
         }
         let spec = spec_by_name(key).ok_or_else(|| {
-            let known: Vec<String> = PARAMS.iter().map(|s| s.name()).collect();
+            let known: Vec<String> = PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect();
             CalibrationError::Option(format!("--fit: unknown parameter `{key}`; the keys are {}", known.join(", ")))
         })?;
         if out.iter().any(|e| e.spec.name() == key) {

@@ -161,7 +161,7 @@ mod tests {
     #[test]
     fn sine_strokes_and_counts() {
         let n = 4000;
-        let t: Vec<f64> = (0..n).map(|i| i as f64 * 1e-3).collect();
+        let t: Vec<f64> = (0..n).map(|i| f64::from(i) * 1e-3).collect();
         let w: Vec<f64> = t.iter().map(|&x| (std::f64::consts::TAU * x).cos()).collect();
         let c = classify("r", &t, &w, &ExclusionRule { speed_fraction: 0.3, settle_time: 0.1 });
         // Reversals at 0.25, 0.75, ... (the last sample before the new sign).
@@ -170,7 +170,7 @@ mod tests {
             assert!((r - (0.25 + 0.5 * k as f64)).abs() < 1.5e-3, "{r}");
         }
         // Low speed: |cos| < 0.3 is a fraction 2·asin(0.3)/π of the time.
-        let f = c.summary.low_speed as f64 / n as f64;
+        let f = c.summary.low_speed as f64 / f64::from(n);
         assert!((f - 2.0 * 0.3f64.asin() / std::f64::consts::PI).abs() < 2e-3, "{f}");
         // Settling: 0.1 s after each threshold crossing and at the start.
         let expected = 9.0 * 0.1 * 1000.0;
