@@ -62,7 +62,9 @@ impl Transform {
 /// A model parameter fitted besides μ_c.
 #[derive(Clone, Copy)]
 pub struct Extra {
+    /// The parameter's name, unit, default and bounds.
     pub spec: &'static ParamSpec,
+    /// Map between the parameter's value and the unconstrained fit coordinate.
     pub transform: Transform,
 }
 

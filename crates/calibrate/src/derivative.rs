@@ -57,6 +57,7 @@ pub fn local_poly_derivatives(t: &[f64], y: &[f64], k: usize, degree: usize) -> 
 
 /// The number of strokes (motions between reversals) in an angle record: crossings of the
 /// mid-range level with a hysteresis of ±25 % of the range, plus one.
+#[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(a > b)` also catches NaN; kept as written
 pub fn stroke_count(angle: &[f64]) -> usize {
     let (lo, hi) = angle.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &x| (l.min(x), h.max(x)));
     if !(hi > lo) {

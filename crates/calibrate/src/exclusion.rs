@@ -50,9 +50,11 @@ impl Default for ExclusionRule {
 /// A run of consecutive excluded samples.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Window {
-    /// First and last excluded sample times (s).
+    /// First excluded sample time (s).
     pub start: f64,
+    /// Last excluded sample time (s).
     pub end: f64,
+    /// Why the samples were excluded.
     pub reason: Reason,
     /// Samples in the window.
     pub samples: usize,
@@ -61,24 +63,31 @@ pub struct Window {
 /// What the rule did to one record.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RecordExclusion {
+    /// Name of the record.
     pub record: String,
     /// The speed threshold used (rad/s).
     pub speed_threshold: f64,
     /// Reversal times found (s).
     pub reversals: Vec<f64>,
+    /// Runs of excluded samples, in time order.
     pub windows: Vec<Window>,
+    /// Samples excluded because |ω| was below the speed threshold.
     pub low_speed: usize,
+    /// Samples excluded as settling after a reversal or the record's start.
     pub settling: usize,
+    /// Samples kept for the fit.
     pub used: usize,
 }
 
 /// Per sample: `None` if excluded (with the reason in the second vector), else the stroke index
 /// (counting from 0 within the record).
 pub struct Classified {
+    /// Stroke index of each sample, `None` if excluded.
     pub stroke: Vec<Option<usize>>,
     /// Time since the start of the sample's settling window (the stroke's threshold crossing,
     /// or the record's start), s.
     pub since: Vec<f64>,
+    /// Counts, threshold, reversals and windows for the record.
     pub summary: RecordExclusion,
 }
 
