@@ -28,7 +28,7 @@
 //! values come from the complete solve (warm-started along each row); the slopes ∂/∂x,
 //! ∂/∂z and ∂²/∂x∂z come from fourth-order central differences of the node values; each
 //! cell stores the 3 × 16 power coefficients of its bicubic Hermite patches
-//! ([`super::hermite`]), so that an evaluation is two logarithms, an index computation,
+//! (the private `hermite` module), so that an evaluation is two logarithms, an index computation,
 //! three Horner evaluations and two exponentials (sinh s, the sigmoid). The patches share
 //! values and slopes at the nodes, so the interpolant is C¹ across cells (no jumps for an
 //! adaptive integrator to trip on).
