@@ -159,7 +159,7 @@ pub const MAX_RUN_SAMPLES: usize = 20_000_000;
 /// Counters of what the integration did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct Stats {
-    /// Integration segments integrated (pieces between stick/slip events, at most
+    /// Integration segments (continuous pieces between stick/slip events, at most
     /// `MAX_SEGMENT_NODES` steps each).
     pub segments: u64,
     /// Accepted integrator steps.
