@@ -91,7 +91,7 @@ fn fidelity(c: &mut Criterion) {
                         ev.error_bound()
                     );
                     g.bench_function(format!("table_{tol:.0e}"), |b| {
-                        b.iter(|| pts.iter().map(|&(p, w)| ev.evaluate(black_box(p), black_box(w)).unwrap().torque).sum::<f64>())
+                        b.iter(|| pts.iter().map(|&(p, w)| ev.evaluate(black_box(p), black_box(w)).unwrap().torque).sum::<f64>());
                     });
                     let r = errors(&mut ev, &j, &pts);
                     summary.push((format!("table {tol:.0e}"), ns_per_eval(|p, w| ev.evaluate(p, w).unwrap().torque, &pts), r, info));

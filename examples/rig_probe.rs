@@ -28,6 +28,6 @@ fn main() {
     println!("max tracking error after 1st cycle {:.3} deg, mu_avg {:?}, energy residual {res:.3e} J of D = {:.3} J", track.to_degrees(), mu, tr.last().unwrap().friction_dissipation);
     let mut f = std::fs::File::create("rig_probe.csv").unwrap();
     for s in &tr {
-        writeln!(f, "{},{},{},{},{},{},{}", s.time, s.command_angle, s.angle, s.angular_velocity, s.torque, s.friction_torque, s.stuck as u8).unwrap();
+        writeln!(f, "{},{},{},{},{},{},{}", s.time, s.command_angle, s.angle, s.angular_velocity, s.torque, s.friction_torque, u8::from(s.stuck)).unwrap();
     }
 }

@@ -55,7 +55,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             s.friction_coefficient,
             s.film_thickness,
             s.fluid_load_fraction,
-            s.stuck as u8,
+            u8::from(s.stuck),
             s.load,
             s.actuator_work,
             s.friction_dissipation,

@@ -26,7 +26,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("\n{:>12} {:>12} {:>10} {:>10}", "speed rad/s", "Sommerfeld", "mu", "1/gamma1");
     let mut guess = None;
     for k in 0..=12 {
-        let w = 10f64.powf(-2.0 + 0.3 * k as f64);
+        let w = 10f64.powf(-2.0 + 0.3 * f64::from(k));
         let p = joint.evaluate_from(20e3, w, guess)?;
         guess = Some(p.logit);
         println!("{:>12.4e} {:>12.4e} {:>10.5} {:>10.4}", w, p.sommerfeld_number, p.friction_coefficient, p.fluid_load_fraction);

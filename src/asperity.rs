@@ -171,7 +171,7 @@ mod tests {
         let g = AsperityGroups::new(&s, 20e3, r, e, b);
         let mut prev = f64::NEG_INFINITY;
         for i in 0..200 {
-            let ln_x2 = -100.0 + i as f64 * 0.5;
+            let ln_x2 = -100.0 + f64::from(i) * 0.5;
             let v = g.ln_rhs(ln_x2);
             assert!(v > prev);
             prev = v;

@@ -200,7 +200,7 @@ mod tests {
         let mut printed_monotone = true;
         let mut prev_p = 0.0;
         for i in 0..400 {
-            let g = 1.0 + i as f64 * 0.05;
+            let g = 1.0 + f64::from(i) * 0.05;
             let v = eq13_closed_form(m, l, g, -14.0 / 15.0, -0.4);
             assert!(v > prev, "corrected form not increasing at γ1={g}");
             prev = v;

@@ -131,7 +131,7 @@ fn ln_g_large(t: f64) -> (f64, f64) {
     let mut term = 1.0;
     let (mut sum, mut dsum) = (1.0, 0.0); // S = Σ c_k t^{−2k}, −t·S' = Σ 2k c_k t^{−2k}
     for k in 0..40 {
-        let kf = k as f64;
+        let kf = f64::from(k);
         term *= -0.5 / (kf + 1.0) * (2.5 + 2.0 * kf) * (3.5 + 2.0 * kf) * inv_t2;
         sum += term;
         dsum += 2.0 * (kf + 1.0) * term;
@@ -151,7 +151,7 @@ fn ln_f_very_negative(t: f64) -> (f64, f64) {
     let mut pow = 1.0;
     let (mut sum, mut dsum) = (1.0, 0.0);
     for k in 1..40 {
-        let kf = k as f64;
+        let kf = f64::from(k);
         let m = 2.0 * kf; // C(3/2, m) = C(3/2, m−2)·(3/2−m+2)(3/2−m+1)/((m−1)m)
         binom *= (1.5 - m + 2.0) * (1.5 - m + 1.0) / ((m - 1.0) * m);
         dfact *= 2.0 * kf - 1.0;
@@ -255,11 +255,11 @@ mod tests {
         for t in [-2.0, 0.3, 1.7, 5.0] {
             let n = 200_000;
             let vmax = 12.0 + f64::max(-t, 0.0).sqrt() * 2.0;
-            let h = vmax / n as f64;
+            let h = vmax / f64::from(n);
             let f = |v: f64| 2.0 * v.powi(4) * (-(v * v + t).powi(2) / 2.0).exp();
             let mut s = f(0.0) + f(vmax);
             for i in 1..n {
-                s += f(i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
+                s += f(f64::from(i) * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
             }
             let direct = s * h / 3.0 / (2.0 * PI).sqrt();
             assert!(((f32(t) - direct) / direct).abs() < 1e-10, "t={t}");
@@ -272,7 +272,7 @@ mod tests {
         // F ~ Γ(5/2)/√(2π) t^{-5/2} e^{-t²/2}, and no jump at the branch and panel joins.
         let mut prev = f64::INFINITY;
         for i in 0..2000 {
-            let t = -20.0 + i as f64 * 0.05;
+            let t = -20.0 + f64::from(i) * 0.05;
             let v = ln_f32(t);
             assert!(v < prev, "not decreasing at {t}");
             prev = v;

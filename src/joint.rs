@@ -27,6 +27,7 @@ pub enum Regime {
 }
 
 impl Regime {
+    /// Lower-case name for reports: `boundary`, `mixed` or `full-film`.
     pub fn as_str(&self) -> &'static str {
         match self {
             Regime::Boundary => "boundary",
@@ -49,20 +50,39 @@ impl Regime {
 /// An operating point the model cannot take.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ModelError {
+    /// The load (N) is not a finite number > 0.
     #[error("load = {0} N is invalid: the load must be a finite number > 0 N")]
     Load(f64),
+    /// The angular velocity (rad/s) is NaN or infinite.
     #[error("angular velocity = {0} rad/s is invalid: it must be a finite number")]
     Speed(f64),
+    /// The load exceeds what the asperity model (eq. 19) can carry at rest: the film
+    /// thickness h_c would be ≤ 0.
     #[error(
         "load = {load} N is beyond the asperity model's capacity of {capacity:.6e} N for these parameters: \
          at rest eq. 19 would put the mean planes of the surfaces through each other (h_c <= 0)"
     )]
-    BeyondCapacity { load: f64, capacity: f64 },
+    BeyondCapacity {
+        /// The load asked for (N).
+        load: f64,
+        /// The largest load the asperity model carries for these parameters (N).
+        capacity: f64,
+    },
+    /// A model quantity overflowed or became NaN at this operating point.
     #[error(
         "the model gives {quantity} = {value} at load = {load} N, angular velocity = {omega} rad/s: \
          outside its numerical range for these parameters"
     )]
-    NotFinite { quantity: &'static str, value: f64, load: f64, omega: f64 },
+    NotFinite {
+        /// Name of the quantity that is not finite.
+        quantity: &'static str,
+        /// Its value (NaN or ±∞).
+        value: f64,
+        /// Load at the point (N).
+        load: f64,
+        /// Angular velocity at the point (rad/s).
+        omega: f64,
+    },
 }
 
 /// Every quantity of the model at one operating point (SI units).
@@ -103,6 +123,7 @@ pub struct OperatingPoint {
     pub asperity_friction_coefficient: f64,
     /// ln(x1/x2) of the load-sharing solve (−∞ at rest): a warm start for the next call.
     pub logit: f64,
+    /// Lubrication regime from the fluid and asperity load shares.
     pub regime: Regime,
     /// h_min, minimum film thickness, m: h_c times Pan & Hamrock's line-contact ratio
     /// h_min/h_c under eq. 13's substitution ([`crate::min_film`]; an extrapolation here, 0 at
@@ -241,6 +262,7 @@ impl Joint {
         if u > 0.0 { self.start.guess(load.abs().ln(), u.ln()) } else { f64::NAN }
     }
 
+    /// The parameter set the joint was built with.
     pub fn params(&self) -> &Params {
         &self.params
     }

@@ -3,7 +3,7 @@
 //!
 //! Relation: Pan & Hamrock (1989), "Simple formulas for performance parameters used in
 //! elastohydrodynamically lubricated line contacts", ASME J. Tribol. 111, 246–251 (also in
-//! Hamrock, *Fundamentals of Fluid Film Lubrication*, the paper's ref. [8]), fitted to their
+//! Hamrock, *Fundamentals of Fluid Film Lubrication*, the paper's ref. \[8\]), fitted to their
 //! numerical line-contact solutions:
 //!
 //! `h_min/R' = 1.714 W'^−0.128 U^0.694 G^0.568`, `h_c/R' = 2.922 W'^−0.166 U^0.692 G^0.470`,

@@ -92,7 +92,9 @@ pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess
 /// of [`crate::starvation::ln_starved`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StarvedInlet {
+    /// ln(1/h_oil), h_oil being the oil-supply film thickness (m).
     pub ln_q: f64,
+    /// Exponent γs of the starvation blend (dimensionless).
     pub gamma: f64,
 }
 

@@ -110,10 +110,15 @@ pub struct Friction {
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Params {
+    /// Pin radius, bush radius and bush length (m).
     pub geometry: Geometry,
+    /// Elastic moduli (Pa) and Poisson ratios of pin and bush.
     pub materials: Materials,
+    /// Combined surface topography: asperity density, summit radius and heights, roughnesses (Table 2).
     pub surface: Surface,
+    /// Viscosity (Roelands, eq. 5), limiting shear (Bair–Winer, eq. 4) and temperature data (Table 3).
     pub lubricant: Lubricant,
+    /// Boundary friction coefficient μ_c of the asperity contacts (dimensionless).
     pub friction: Friction,
     /// Extension, not in the paper; off by default.
     pub starvation: Starvation,
@@ -187,6 +192,7 @@ pub enum Range {
 }
 
 impl Range {
+    /// Whether `v` lies in the range (false for NaN).
     pub fn contains(&self, v: f64) -> bool {
         match *self {
             Range::Positive => v > 0.0,
@@ -216,17 +222,23 @@ impl Range {
 /// One row of the parameter table.
 #[derive(Clone, Copy)]
 pub struct ParamSpec {
+    /// Section of the parameter file (`geometry`, `lubricant`, ...).
     pub section: &'static str,
+    /// Key within the section.
     pub key: &'static str,
     /// The paper's symbol.
     pub symbol: &'static str,
     /// SI unit as written in messages and the modelDescription ("" for dimensionless).
     pub unit: &'static str,
+    /// One-line description for help text and the modelDescription.
     pub description: &'static str,
     /// Where the default comes from in the paper.
     pub source: &'static str,
+    /// The values the parameter may take.
     pub range: Range,
+    /// Reads the parameter from a [`Params`], in SI units.
     pub get: fn(&Params) -> f64,
+    /// Writes the parameter into a [`Params`], in SI units (no range check).
     pub set: fn(&mut Params, f64),
 }
 
@@ -235,6 +247,7 @@ impl ParamSpec {
     pub fn name(&self) -> String {
         format!("{}.{}", self.section, self.key)
     }
+    /// The value in `Params::default()` (the paper's rig), in SI units.
     pub fn default_value(&self) -> f64 {
         (self.get)(&Params::default())
     }
@@ -301,14 +314,39 @@ pub fn spec_by_name(name: &str) -> Option<&'static ParamSpec> {
 /// A rejected parameter value or file.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ParamError {
+    /// A parameter value is NaN or infinite.
     #[error("parameter {name} = {value} {unit} is not a finite number")]
-    NotFinite { name: String, value: f64, unit: &'static str },
+    NotFinite {
+        /// The parameter's `section.key`.
+        name: String,
+        /// The rejected value, in `unit`.
+        value: f64,
+        /// The parameter's SI unit.
+        unit: &'static str,
+    },
+    /// A parameter value lies outside its allowed [`Range`].
     #[error("parameter {name} = {value} {unit} is out of range: it must be {range}")]
-    OutOfRange { name: String, value: f64, unit: &'static str, range: String },
+    OutOfRange {
+        /// The parameter's `section.key`.
+        name: String,
+        /// The rejected value, in `unit`.
+        value: f64,
+        /// The parameter's SI unit.
+        unit: &'static str,
+        /// The allowed range, as [`Range::describe`] writes it.
+        range: String,
+    },
+    /// The bush radius does not exceed the pin radius, so the radial clearance is not positive.
     #[error(
         "parameter geometry.bush_radius = {bush_radius} m must exceed geometry.pin_radius = {pin_radius} m (the radial clearance R_b - R must be positive)"
     )]
-    NoClearance { pin_radius: f64, bush_radius: f64 },
+    NoClearance {
+        /// Pin radius R (m).
+        pin_radius: f64,
+        /// Bush radius R_b (m).
+        bush_radius: f64,
+    },
+    /// The parameter file could not be parsed (TOML syntax, unknown key, wrong type).
     #[error("parameter file: {0}")]
     Parse(String),
 }
@@ -418,7 +456,7 @@ mod tests {
             .flat_map(|(sec, t)| t.as_table().unwrap().keys().map(move |k| format!("{sec}.{k}")))
             .collect();
         names.sort();
-        let mut table: Vec<String> = PARAMS.iter().map(|s| s.name()).collect();
+        let mut table: Vec<String> = PARAMS.iter().map(super::ParamSpec::name).collect();
         table.sort();
         assert_eq!(names, table);
         // And each accessor reads its own field: set a distinct value through the table, read back through serde.

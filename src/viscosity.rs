@@ -48,7 +48,7 @@ pub fn roelands_s0_from_two_points(theta1: f64, eta1: f64, theta2: f64, eta2: f6
 ///
 /// Viscosity (Roelands 1966, "Correlational aspects of the viscosity–temperature–pressure
 /// relationship of lubricating oils", thesis, TH Delft; in Hamrock, *Fundamentals of Fluid
-/// Film Lubrication*, the paper's ref. [8]): at ambient pressure
+/// Film Lubrication*, the paper's ref. \[8\]): at ambient pressure
 /// `ln(η0(T)/η∞) = ln(η0(T_ref)/η∞)·f`, `f = [(135 + θ)/(135 + θ_ref)]^−S0`, θ = T − 273.15 K
 /// in °C, with η∞ of eq. 5 (6.31e-5 Pa·s, Roelands' universal constant).
 ///
@@ -159,7 +159,7 @@ mod tests {
         // Monotone increasing with pressure for η∞ < η0.
         let mut prev = 0.0;
         for i in 0..100 {
-            let v = roelands(&l, i as f64 * 1e7);
+            let v = roelands(&l, f64::from(i) * 1e7);
             assert!(v > prev);
             prev = v;
         }

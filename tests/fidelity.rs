@@ -246,7 +246,7 @@ fn full_level_is_the_complete_solve_warm_started() {
     assert_eq!((ev.chosen(), ev.error_bound()), (Level::Full, FULL_ERROR_BOUND));
     // A rig-like trajectory through rest, boundary, mixed and full film, in and out of the envelope.
     for k in 0..2000 {
-        let t = k as f64 / 2000.0;
+        let t = f64::from(k) / 2000.0;
         let load = 20e3 + 15e3 * (6.0 * t).sin();
         let omega = 200.0 * (40.0 * t).sin().powi(3);
         let e = ev.evaluate(load, omega).unwrap();

@@ -24,7 +24,7 @@ fn tiny_loads_keep_the_dissipation_non_negative() {
         let mut s = sim();
         let inputs = Inputs { load: Some(p), command_angle: None };
         for k in 1..=30 {
-            s.advance_to(0.01 * k as f64, &inputs).unwrap();
+            s.advance_to(0.01 * f64::from(k), &inputs).unwrap();
             let x = s.sample().unwrap();
             assert!(x.friction_dissipation >= 0.0, "{p:e} N at {} s: {}", x.time, x.friction_dissipation);
         }
@@ -35,7 +35,7 @@ fn tiny_loads_keep_the_dissipation_non_negative() {
 fn a_negative_load_is_its_magnitude() {
     let (mut a, mut b) = (sim(), sim());
     for k in 1..=20 {
-        let t = 0.02 * k as f64;
+        let t = 0.02 * f64::from(k);
         a.advance_to(t, &Inputs { load: Some(30e3), command_angle: None }).unwrap();
         b.advance_to(t, &Inputs { load: Some(-30e3), command_angle: None }).unwrap();
         assert_eq!(format!("{:?}", a.sample().unwrap()), format!("{:?}", b.sample().unwrap()));

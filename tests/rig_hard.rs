@@ -50,7 +50,7 @@ fn load_step_from_5_to_60_kn_mid_stroke() {
     let p = c.rig.period();
     let dt = p / 1000.0;
     let k_step = 1500u32; // mid-stroke of the second cycle (θ_cmd = 0, full speed)
-    let t_step = k_step as f64 * dt;
+    let t_step = f64::from(k_step) * dt;
     let quasi = |s: &Sample, sim: &RigSim| sim.joint().evaluate(s.load, s.angular_velocity.abs()).unwrap().torque;
     // (a) the load as a time function with an announced jump; (b) the same through held inputs.
     let drive = SineDrive {
@@ -63,7 +63,7 @@ fn load_step_from_5_to_60_kn_mid_stroke() {
     let mut settled = 0;
     let first = a.sample().unwrap();
     for k in 1..=2500u32 {
-        let t = k as f64 * dt;
+        let t = f64::from(k) * dt;
         // The held input for [t_{k-1}, t_k]: the value in force during that interval.
         let held = if k <= k_step { 5e3 } else { 60e3 };
         a.advance_to(t, &Inputs::default()).unwrap();
@@ -218,7 +218,7 @@ fn state_get_set_clone_and_bytes_resume_exactly() {
     let mut d = RigSim::new(&c).unwrap();
     d.set_state(&pinjoint::rig::RigState::from_bytes(&bytes).unwrap()).unwrap();
     for k in 1..=50 {
-        let t = 0.2634 + 0.01 * k as f64;
+        let t = 0.2634 + 0.01 * f64::from(k);
         for s in [&mut a, &mut b, &mut d] {
             s.advance_to(t, &inputs).unwrap();
         }
@@ -243,7 +243,7 @@ fn thousand_cycles_without_drift() {
     let mut sim = RigSim::new(&c).unwrap();
     let p = c.rig.period();
     let n = 100;
-    let dt = p / n as f64;
+    let dt = p / f64::from(n);
     let inputs = Inputs::default();
     let cycle = |sim: &mut RigSim, k0: u64| -> Vec<Sample> {
         (1..=n as u64)

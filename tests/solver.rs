@@ -194,7 +194,7 @@ fn continuous_across_regime_changes() {
             .unwrap();
         let coarse = (ops[k + 1].friction_coefficient - ops[k].friction_coefficient).abs();
         let fine: Vec<f64> = (0..=10)
-            .map(|i| j.evaluate(load, ws[k] * (ws[k + 1] / ws[k]).powf(i as f64 / 10.0)).unwrap().friction_coefficient)
+            .map(|i| j.evaluate(load, ws[k] * (ws[k + 1] / ws[k]).powf(f64::from(i) / 10.0)).unwrap().friction_coefficient)
             .collect();
         let fine_max = fine.windows(2).map(|w| (w[1] - w[0]).abs()).fold(0.0, f64::max);
         assert!(fine_max < 0.2 * coarse, "P={load}: refining does not shrink the step at ω={}", ws[k]);

@@ -17,23 +17,62 @@ pub enum FidelityError {
     #[error(
         "tolerance = {value} (relative error, dimensionless) is below the accuracy of the full solve itself ({floor}): no level can be shown to meet it"
     )]
-    ToleranceBelowModelAccuracy { value: f64, floor: f64 },
+    ToleranceBelowModelAccuracy {
+        /// The requested tolerance (relative error, dimensionless).
+        value: f64,
+        /// The full solve's own error bound, [`crate::fidelity::FULL_ERROR_BOUND`] (dimensionless).
+        floor: f64,
+    },
     /// One end of an envelope range is not a finite number > 0.
     #[error("envelope {quantity} {end} = {value} {unit} is invalid: it must be a finite number > 0 {unit}")]
-    EnvelopeBound { quantity: &'static str, end: &'static str, value: f64, unit: &'static str },
+    EnvelopeBound {
+        /// Which range: `load` or `speed`.
+        quantity: &'static str,
+        /// Which end: `minimum` or `maximum`.
+        end: &'static str,
+        /// The invalid value, in `unit`.
+        value: f64,
+        /// Unit of the quantity (`N` or `rad/s`).
+        unit: &'static str,
+    },
     /// An envelope range whose minimum is not below its maximum.
     #[error("envelope {quantity}: minimum = {min} {unit} must be below maximum = {max} {unit}")]
-    EnvelopeOrder { quantity: &'static str, min: f64, max: f64, unit: &'static str },
+    EnvelopeOrder {
+        /// Which range: `load` or `speed`.
+        quantity: &'static str,
+        /// The given minimum, in `unit`.
+        min: f64,
+        /// The given maximum, in `unit`.
+        max: f64,
+        /// Unit of the quantity (`N` or `rad/s`).
+        unit: &'static str,
+    },
     /// The table would need more cells than allowed to meet the tolerance.
     #[error(
         "table: meeting tolerance = {tolerance} (relative error) over the envelope needs more than {limit} cells \
          (reached {cells} cells with a measured error of {measured}); use a larger tolerance, a smaller envelope, or fidelity full"
     )]
-    TableTooLarge { tolerance: f64, cells: usize, limit: usize, measured: f64 },
+    TableTooLarge {
+        /// The requested tolerance (relative error, dimensionless).
+        tolerance: f64,
+        /// Cells of the last table built before giving up.
+        cells: usize,
+        /// Largest number of cells allowed.
+        limit: usize,
+        /// Error measured on that last table (relative, dimensionless).
+        measured: f64,
+    },
     /// A point of the envelope where the model has no answer (beyond the asperity model's
     /// load capacity, or a speed where the film or viscosity overflows).
     #[error("the envelope reaches load = {load} N, speed = {speed} rad/s, where the model has no answer ({source}); use a smaller envelope (envelope load/speed ranges) or fidelity full")]
-    Envelope { load: crate::fmt::Num, speed: crate::fmt::Num, source: ModelError },
+    Envelope {
+        /// Load at the failing point (N).
+        load: crate::fmt::Num,
+        /// Speed |ω| at the failing point (rad/s).
+        speed: crate::fmt::Num,
+        /// The model's error at that point.
+        source: ModelError,
+    },
     /// The parameter set is invalid.
     #[error(transparent)]
     Param(#[from] ParamError),

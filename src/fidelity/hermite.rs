@@ -90,7 +90,7 @@ mod tests {
         let (x0, h) = (0.4, 0.25);
         let c = cubic_coefficients(p(x0), p(x0 + h), h * dp(x0), h * dp(x0 + h));
         for i in 0..=10 {
-            let t = i as f64 / 10.0;
+            let t = f64::from(i) / 10.0;
             assert!((cubic(&c, t) - p(x0 + t * h)).abs() < 1e-14);
         }
         // The central slope is exact for quartics.

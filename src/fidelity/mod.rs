@@ -56,14 +56,20 @@ use std::str::FromStr;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Fidelity {
+    /// The complete mixed-lubrication solve at every call (error [`FULL_ERROR_BOUND`]).
     Full,
+    /// Bicubic interpolation of a Stribeck table built over the envelope.
     Table,
+    /// Boundary lubrication: μ = μ_c and the rest film, valid deep in the boundary regime.
     Boundary,
+    /// The cheapest of boundary, table and full whose error bound meets the tolerance.
     Auto,
 }
 
 impl Fidelity {
+    /// Every fidelity, in the order of the table in the module doc.
     pub const ALL: [Fidelity; 4] = [Fidelity::Full, Fidelity::Table, Fidelity::Boundary, Fidelity::Auto];
+    /// Lower-case name, as accepted by the parser and written in reports (`full`, `table`, ...).
     pub fn as_str(&self) -> &'static str {
         match self {
             Fidelity::Full => "full",
@@ -93,12 +99,16 @@ impl FromStr for Fidelity {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Level {
+    /// The complete solve ([`Fidelity::Full`]).
     Full,
+    /// The interpolated Stribeck table ([`Fidelity::Table`]).
     Table,
+    /// The boundary-lubrication answer ([`Fidelity::Boundary`]).
     Boundary,
 }
 
 impl Level {
+    /// Lower-case name, as accepted by the parser and written in reports (`full`, `table`, ...).
     pub fn as_str(&self) -> &'static str {
         match self {
             Level::Full => "full",
@@ -117,6 +127,7 @@ impl fmt::Display for Level {
 /// What `auto` (or an explicit level) found for one level over the envelope.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Assessment {
+    /// The level assessed.
     pub level: Level,
     /// The level's advertised bound, when it could be built.
     pub error_bound: Option<f64>,
@@ -335,9 +346,11 @@ impl Evaluator {
     pub fn within_tolerance(&self) -> bool {
         self.error_bound <= self.tolerance
     }
+    /// The tolerance asked for (relative error, dimensionless).
     pub fn tolerance(&self) -> f64 {
         self.tolerance
     }
+    /// The envelope of loads (N) and speeds |ω| (rad/s) the level's bound holds over.
     pub fn envelope(&self) -> &Envelope {
         &self.envelope
     }

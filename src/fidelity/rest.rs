@@ -3,7 +3,7 @@
 //! At ω = 0 the model is exact and simple: 1/γ1 = 0, 1/γ2 = 1, μ = μ_c (no interpolation),
 //! and h_c comes from eq. 19 alone, a smooth function of the load only. The table holds
 //! ln h_c on a uniform grid in ln P with two ghost nodes beyond each end, slopes from
-//! fourth-order central differences (see [`super::hermite`]), and is refined until the
+//! fourth-order central differences (see the private `hermite` module), and is refined until the
 //! relative error of h_c, measured against the rest solve at every cell centre and at
 //! random loads, is below the target.
 

@@ -28,7 +28,7 @@
 //! values come from the complete solve (warm-started along each row); the slopes ∂/∂x,
 //! ∂/∂z and ∂²/∂x∂z come from fourth-order central differences of the node values; each
 //! cell stores the 3 × 16 power coefficients of its bicubic Hermite patches
-//! ([`super::hermite`]), so that an evaluation is two logarithms, an index computation,
+//! (the private `hermite` module), so that an evaluation is two logarithms, an index computation,
 //! three Horner evaluations and two exponentials (sinh s, the sigmoid). The patches share
 //! values and slopes at the nodes, so the interpolant is C¹ across cells (no jumps for an
 //! adaptive integrator to trip on).
@@ -77,13 +77,15 @@ struct Cell([[f64; 16]; 3]);
 /// What a table build cost and produced.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TableStats {
-    /// Cells along ln P and along ln |ω|.
+    /// Cells along ln P.
     pub load_cells: usize,
+    /// Cells along ln |ω|.
     pub speed_cells: usize,
     /// Refinement passes.
     pub passes: usize,
-    /// Complete solves at the nodes and at the check points, all passes.
+    /// Complete solves at the table nodes, all passes.
     pub node_solves: usize,
+    /// Complete solves at the check points (every cell centre and random points), all passes.
     pub check_solves: usize,
     /// Cells of the 1-D rest table.
     pub rest_cells: usize,
@@ -406,10 +408,12 @@ impl StribeckTable {
         (BOUND_FACTOR * self.report.max()).min(self.tolerance)
     }
 
+    /// Size, passes and cost of the table's build.
     pub fn stats(&self) -> &TableStats {
         &self.stats
     }
 
+    /// The envelope of loads (N) and speeds |ω| (rad/s) the table covers.
     pub fn envelope(&self) -> &Envelope {
         &self.envelope
     }

@@ -157,7 +157,7 @@ impl<'a> Dynamics<'a> {
         let w = y[SPEED];
         match self.phase {
             Phase::Slip(s) => {
-                let s = s as f64;
+                let s = f64::from(s);
                 let op = self.operating_point(load, (s * w).max(0.0));
                 Friction { torque: -s * op.map_or(0.0, |o| o.torque), op }
             }

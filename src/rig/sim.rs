@@ -34,9 +34,11 @@ use std::sync::Arc;
 /// One start point of integration.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Node {
+    /// Time at which integration restarts (s).
     pub time: f64,
     /// (θ, ω, T_a, W, D), see [`super::dynamics`].
     pub state: [f64; 5],
+    /// Stick, slip (with direction) or smooth at the start point.
     pub phase: Phase,
     /// First step of the next segment (0: automatic).
     pub step: f64,
@@ -48,9 +50,11 @@ pub struct Node {
 /// [`RigSim::set_state`] continues exactly as the original would.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct RigState {
+    /// The start point of the next integration segment.
     pub node: Node,
-    /// Communication time (≥ node.time).
+    /// Communication time (≥ node.time), s.
     pub time: f64,
+    /// The load and command angle in force at `time`.
     pub inputs: Inputs,
 }
 
@@ -62,7 +66,7 @@ impl RigState {
     pub fn to_bytes(&self) -> Vec<u8> {
         let n = &self.node;
         let phase = match n.phase {
-            Phase::Slip(s) => s as f64,
+            Phase::Slip(s) => f64::from(s),
             Phase::Stick => 0.0,
             Phase::Smooth => 2.0,
         };
@@ -109,9 +113,13 @@ impl RigState {
 /// The rig's outputs at one time (SI units).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sample {
+    /// Simulation time (s).
     pub time: f64,
+    /// Actuator command angle θ_cmd (rad).
     pub command_angle: f64,
+    /// Pin angle θ (rad).
     pub angle: f64,
+    /// Pin angular velocity ω (rad/s).
     pub angular_velocity: f64,
     /// What the actuator's torque transducer reads: the actuator torque T_a (= J ω̇ − T_f).
     pub torque: f64,
@@ -151,7 +159,10 @@ pub const MAX_RUN_SAMPLES: usize = 20_000_000;
 /// Counters of what the integration did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct Stats {
+    /// Integration segments (continuous pieces between stick/slip events, at most
+    /// `MAX_SEGMENT_NODES` steps each).
     pub segments: u64,
+    /// Accepted integrator steps.
     pub steps: u64,
     /// Slip → stick.
     pub sticks: u64,
@@ -294,9 +305,11 @@ impl RigSim {
         Ok(Envelope::new((0.9 * p).min(p - 1.0), (1.1 * p).max(p + 1.0), 1e-3, 2.0 * peak)?)
     }
 
+    /// The configuration the simulation was built with.
     pub fn config(&self) -> &RigConfig {
         &self.config
     }
+    /// The friction model of the pin joint.
     pub fn joint(&self) -> &Joint {
         &self.joint
     }
@@ -304,9 +317,11 @@ impl RigSim {
     pub fn time(&self) -> f64 {
         self.time
     }
+    /// Counters of what the integration has done so far.
     pub fn stats(&self) -> Stats {
         self.stats
     }
+    /// The load and command angle currently in force.
     pub fn inputs(&self) -> Inputs {
         self.inputs
     }
@@ -469,7 +484,7 @@ impl RigSim {
         let load = d.load(node.time).map_err(|p| RigError::Load { time: node.time, value: p })?;
         let (w, ta) = (node.state[SPEED], node.state[TORQUE]);
         Ok(match node.phase {
-            Phase::Slip(s) if (s as f64) * w >= 0.0 => node.phase,
+            Phase::Slip(s) if f64::from(s) * w >= 0.0 => node.phase,
             Phase::Slip(_) | Phase::Smooth => Phase::Slip(if w > 0.0 { 1 } else { -1 }),
             Phase::Stick => {
                 if ta.abs() > d.breakaway_torque(load) {
@@ -538,7 +553,7 @@ impl RigSim {
         let event = |t: f64, y: &State| -> (f64, bool) {
             match phase {
                 Phase::Slip(s) => {
-                    let g = -(s as f64) * y[SPEED];
+                    let g = -f64::from(s) * y[SPEED];
                     (g, g >= 0.0)
                 }
                 Phase::Stick => {

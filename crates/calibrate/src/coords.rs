@@ -62,7 +62,9 @@ impl Transform {
 /// A model parameter fitted besides μ_c.
 #[derive(Clone, Copy)]
 pub struct Extra {
+    /// The parameter's name, unit, default and bounds.
     pub spec: &'static ParamSpec,
+    /// Map between the parameter's value and the unconstrained fit coordinate.
     pub transform: Transform,
 }
 
@@ -76,7 +78,7 @@ pub fn resolve(keys: &[String], start: &Params) -> Result<Vec<Extra>, Calibratio
             continue;
         }
         let spec = spec_by_name(key).ok_or_else(|| {
-            let known: Vec<String> = PARAMS.iter().map(|s| s.name()).collect();
+            let known: Vec<String> = PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect();
             CalibrationError::Option(format!("--fit: unknown parameter `{key}`; the keys are {}", known.join(", ")))
         })?;
         if out.iter().any(|e| e.spec.name() == key) {

@@ -57,6 +57,7 @@ pub fn local_poly_derivatives(t: &[f64], y: &[f64], k: usize, degree: usize) -> 
 
 /// The number of strokes (motions between reversals) in an angle record: crossings of the
 /// mid-range level with a hysteresis of ±25 % of the range, plus one.
+#[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(a > b)` also catches NaN; kept as written
 pub fn stroke_count(angle: &[f64]) -> usize {
     let (lo, hi) = angle.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &x| (l.min(x), h.max(x)));
     if !(hi > lo) {
@@ -88,7 +89,7 @@ mod tests {
 
     #[test]
     fn cubic_is_differentiated_exactly_on_uneven_samples() {
-        let t: Vec<f64> = (0..60).map(|i| i as f64 * 0.01 + 0.003 * ((i * 7 % 5) as f64)).collect();
+        let t: Vec<f64> = (0..60).map(|i| f64::from(i) * 0.01 + 0.003 * f64::from(i * 7 % 5)).collect();
         let f = |x: f64| 1.0 - 2.0 * x + 0.5 * x * x + 3.0 * x * x * x;
         let y: Vec<f64> = t.iter().map(|&x| f(x)).collect();
         for (i, (d1, d2)) in local_poly_derivatives(&t, &y, 5, 3).into_iter().enumerate() {
@@ -118,7 +119,7 @@ mod tests {
 
     #[test]
     fn strokes_of_a_sine() {
-        let a: Vec<f64> = (0..3000).map(|i| (i as f64 / 1000.0 * std::f64::consts::TAU).sin()).collect();
+        let a: Vec<f64> = (0..3000).map(|i| (f64::from(i) / 1000.0 * std::f64::consts::TAU).sin()).collect();
         // 3 periods from the zero: crossings of the mid level at each half period: 5 inside, 6 strokes.
         assert_eq!(stroke_count(&a), 6);
     }

@@ -50,9 +50,11 @@ impl Default for ExclusionRule {
 /// A run of consecutive excluded samples.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Window {
-    /// First and last excluded sample times (s).
+    /// First excluded sample time (s).
     pub start: f64,
+    /// Last excluded sample time (s).
     pub end: f64,
+    /// Why the samples were excluded.
     pub reason: Reason,
     /// Samples in the window.
     pub samples: usize,
@@ -61,24 +63,31 @@ pub struct Window {
 /// What the rule did to one record.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RecordExclusion {
+    /// Name of the record.
     pub record: String,
     /// The speed threshold used (rad/s).
     pub speed_threshold: f64,
     /// Reversal times found (s).
     pub reversals: Vec<f64>,
+    /// Runs of excluded samples, in time order.
     pub windows: Vec<Window>,
+    /// Samples excluded because |ω| was below the speed threshold.
     pub low_speed: usize,
+    /// Samples excluded as settling after a reversal or the record's start.
     pub settling: usize,
+    /// Samples kept for the fit.
     pub used: usize,
 }
 
 /// Per sample: `None` if excluded (with the reason in the second vector), else the stroke index
 /// (counting from 0 within the record).
 pub struct Classified {
+    /// Stroke index of each sample, `None` if excluded.
     pub stroke: Vec<Option<usize>>,
     /// Time since the start of the sample's settling window (the stroke's threshold crossing,
     /// or the record's start), s.
     pub since: Vec<f64>,
+    /// Counts, threshold, reversals and windows for the record.
     pub summary: RecordExclusion,
 }
 
@@ -161,7 +170,7 @@ mod tests {
     #[test]
     fn sine_strokes_and_counts() {
         let n = 4000;
-        let t: Vec<f64> = (0..n).map(|i| i as f64 * 1e-3).collect();
+        let t: Vec<f64> = (0..n).map(|i| f64::from(i) * 1e-3).collect();
         let w: Vec<f64> = t.iter().map(|&x| (std::f64::consts::TAU * x).cos()).collect();
         let c = classify("r", &t, &w, &ExclusionRule { speed_fraction: 0.3, settle_time: 0.1 });
         // Reversals at 0.25, 0.75, ... (the last sample before the new sign).
@@ -170,7 +179,7 @@ mod tests {
             assert!((r - (0.25 + 0.5 * k as f64)).abs() < 1.5e-3, "{r}");
         }
         // Low speed: |cos| < 0.3 is a fraction 2·asin(0.3)/π of the time.
-        let f = c.summary.low_speed as f64 / n as f64;
+        let f = c.summary.low_speed as f64 / f64::from(n);
         assert!((f - 2.0 * 0.3f64.asin() / std::f64::consts::PI).abs() < 2e-3, "{f}");
         // Settling: 0.1 s after each threshold crossing and at the start.
         let expected = 9.0 * 0.1 * 1000.0;

@@ -12,19 +12,25 @@ pub const MIN_SAMPLES: usize = 20;
 /// One record after kinematics and exclusion.
 #[derive(Debug, Clone)]
 pub struct Prepared {
+    /// Name of the record.
     pub name: String,
+    /// Sample times (s).
     pub time: Vec<f64>,
+    /// Recorded angle (rad), if the record has one.
     pub angle: Option<Vec<f64>>,
     /// Angular velocity used by the model (rad/s).
     pub omega: Vec<f64>,
     /// Angular acceleration (rad/s²).
     pub alpha: Vec<f64>,
+    /// Recorded torque (N·m).
     pub torque: Vec<f64>,
+    /// Radial load on the pin (N).
     pub load: Vec<f64>,
     /// Stroke index of each used sample, None for an excluded one.
     pub stroke: Vec<Option<usize>>,
     /// Time since the sample's settling window began (s).
     pub since: Vec<f64>,
+    /// What the exclusion rule did to the record.
     pub exclusion: RecordExclusion,
     /// Differentiator half-width used (samples).
     pub half_width: usize,
@@ -38,6 +44,7 @@ pub struct Prepared {
 pub const STICK_SLIP_IRREGULARITY: f64 = 0.1;
 
 /// Check `record`, find its velocity and acceleration, and apply the exclusion rule.
+#[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(a >= b)` also catches NaN; kept as written
 pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>) -> Result<Prepared, CalibrationError> {
     let name = record.name.clone();
     record.validate()?;

@@ -10,6 +10,7 @@ pub struct Estimate {
     pub key: String,
     /// SI unit ("1" for dimensionless).
     pub unit: &'static str,
+    /// Fitted value, in `unit`.
     pub value: f64,
     /// Start value.
     pub initial: f64,
@@ -29,8 +30,11 @@ pub struct Estimate {
 /// Measured and fitted torque of one record, every sample.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
+    /// Name of the record.
     pub record: String,
+    /// Sample times (s).
     pub time: Vec<f64>,
+    /// Recorded angle (rad), if the record has one.
     pub angle: Option<Vec<f64>>,
     /// Angular velocity used (rad/s).
     pub angular_velocity: Vec<f64>,
@@ -63,12 +67,15 @@ pub struct Calibration {
     pub condition: f64,
     /// RMS of the residuals over the used samples (N·m).
     pub rms_residual: f64,
+    /// Samples used in the fit, over all records.
     pub points_used: usize,
+    /// Samples excluded by the rule, over all records.
     pub points_excluded: usize,
     /// Strokes (clusters) among the used samples.
     pub strokes: usize,
-    /// Degrees of freedom and quantile of the t interval.
+    /// Degrees of freedom of the t interval (used samples minus fitted quantities).
     pub dof: usize,
+    /// The 97.5 % quantile of Student's t with `dof` degrees of freedom.
     pub quantile: f64,
     /// Differentiator half-width of each record (samples).
     pub half_widths: Vec<usize>,
@@ -82,5 +89,6 @@ pub struct Calibration {
     pub settle_time: f64,
     /// Levenberg–Marquardt evaluations (0 for the linear fit).
     pub evaluations: usize,
+    /// Measured and fitted torque of each record, in input order.
     pub series: Vec<Series>,
 }

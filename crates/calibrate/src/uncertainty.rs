@@ -31,8 +31,9 @@ pub struct Uncertainty {
     pub standard_error_iid: Vec<f64>,
     /// Cluster-robust standard error, if enough strokes.
     pub standard_error_cluster: Option<Vec<f64>>,
-    /// The t quantile used (97.5 %) and its degrees of freedom.
+    /// The t quantile used (97.5 %).
     pub quantile: f64,
+    /// Degrees of freedom of that t quantile.
     pub dof: usize,
     /// 95 % interval of each β: t interval ∪ bootstrap interval.
     pub ci95: Vec<(f64, f64)>,
