@@ -250,7 +250,7 @@ impl Model for PinJointModel {
             LOAD => self.load,
             TEMPERATURE => self.temperature,
             SPEED_BAND => self.band,
-            FIDELITY => self.fidelity.code as f64,
+            FIDELITY => f64::from(self.fidelity.code),
             TOLERANCE => self.fidelity.tolerance,
             i if (ENVELOPE_LOAD_MIN..=ENVELOPE_SPEED_MAX).contains(&i) => self.fidelity.envelope[i - ENVELOPE_LOAD_MIN],
             i if i >= FIRST_PARAM => (PARAMS[i - FIRST_PARAM].get)(&self.params),
@@ -371,7 +371,7 @@ impl Model for PinJointModel {
             w.f64((s.get)(&self.params));
         }
         let f = &self.fidelity;
-        for v in [self.band, self.angle, self.omega, self.load, self.energy, f.code as f64, f.tolerance] {
+        for v in [self.band, self.angle, self.omega, self.load, self.energy, f64::from(f.code), f.tolerance] {
             w.f64(v);
         }
         for v in f.envelope {

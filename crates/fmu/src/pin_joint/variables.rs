@@ -320,7 +320,7 @@ pub fn table() -> Vec<Variable> {
         initial: Initial::Exact,
         unit: None,
         display_unit: None,
-        start: Some(DEFAULT_FIDELITY as f64),
+        start: Some(f64::from(DEFAULT_FIDELITY)),
         min: Some(0.0),
         max: Some(3.0),
         description: "Fidelity of the friction evaluation: 0 = full (complete solve, cold: outputs depend on the current inputs only), 1 = table \

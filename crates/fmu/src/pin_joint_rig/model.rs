@@ -77,7 +77,7 @@ impl Settings {
             Var::CommandAngle => self.command_angle,
             Var::Frequency => rig.frequency,
             Var::Amplitude => rig.amplitude,
-            Var::UseCommandInput => self.use_command_input as u8 as f64,
+            Var::UseCommandInput => f64::from(u8::from(self.use_command_input)),
             Var::Rig(i) => (RIG_PARAMS[i].get)(rig),
             Var::Formulation => self.formulation,
             Var::Method => self.method,
@@ -221,7 +221,7 @@ pub fn outputs(s: &Sample) -> ModelResult<[f64; Output::ALL.len()]> {
         Output::FrictionCoefficient => s.friction_coefficient,
         Output::FilmThickness => if contact { s.film_thickness } else { 0.0 },
         Output::FluidLoadFraction => if contact { s.fluid_load_fraction } else { 0.0 },
-        Output::Stuck => s.stuck as u8 as f64,
+        Output::Stuck => f64::from(u8::from(s.stuck)),
         Output::CommandedAngle => s.command_angle,
         Output::ActuatorWork => s.actuator_work,
         Output::FrictionDissipation => s.friction_dissipation,
@@ -452,7 +452,7 @@ impl Model for RigModel {
     }
 
     fn serialize(&self, out: &mut Vec<u8>) {
-        encode(&self.settings, self.start_time, self.sim.as_ref().map(|s| s.state()), out);
+        encode(&self.settings, self.start_time, self.sim.as_ref().map(pinjoint::rig::RigSim::state), out);
     }
 
     fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()> {
