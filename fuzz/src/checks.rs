@@ -265,6 +265,8 @@ pub mod core {
         check_case(c, true);
     }
 
+    // Takes the case by value as the fuzz target hands it over; a reference would change every caller.
+    #[allow(clippy::needless_pass_by_value)]
     fn check_case(c: Case, envelope_mode: bool) {
         let Case { params, load, omega, guess } = c;
         let valid = params.validate();
