@@ -135,7 +135,7 @@ fn reset_then_a_fresh_run_equals_the_first() {
     let run = |c| {
         let mut out = Vec::new();
         for k in 0..50 {
-            let t = k as f64 * 0.01;
+            let t = f64::from(k) * 0.01;
             assert_eq!(set(c, "angular_velocity", (3.0 * t).sin() * 0.3), OK);
             assert_eq!(fmi2DoStep(c, t, 0.01, 0), OK);
             out.extend(all_outputs(c));

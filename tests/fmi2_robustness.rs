@@ -56,7 +56,7 @@ fn run(seed: usize) -> Vec<u64> {
     let c = h.ready(&[("load", 5e3 + 5e3 * seed as f64)]);
     let mut out = Vec::new();
     for k in 0..300 {
-        let t = k as f64 * 0.01;
+        let t = f64::from(k) * 0.01;
         assert_eq!(set(c, "angular_velocity", (1.0 + seed as f64) * (t * 3.0).sin()), OK);
         assert_eq!(fmi2DoStep(c, t, 0.01, 0), OK);
         out.extend(all_outputs(c).iter().map(|x| x.to_bits()));
@@ -78,7 +78,7 @@ fn eight_instances_on_eight_threads_equal_serial_runs() {
 fn many_instantiate_step_free_cycles() {
     let h = Host::new();
     for k in 0..200 {
-        let c = h.ready(&[("angular_velocity", 0.1 * k as f64)]);
+        let c = h.ready(&[("angular_velocity", 0.1 * f64::from(k))]);
         assert_eq!(fmi2DoStep(c, 0.0, 0.01, 0), OK);
         let mut s: Fmi2FmuState = std::ptr::null_mut();
         assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);

@@ -175,12 +175,12 @@ fn outputs_equal_the_library_exactly_and_energy_integrates_power() {
     let mut t = 0.0;
     for k in 0..400 {
         // Reversals; every other point slow enough to fall in the zero-velocity band.
-        let w = if k % 2 == 0 { 0.05 } else { 2.0 } * (k as f64 * 0.05).sin();
+        let w = if k % 2 == 0 { 0.05 } else { 2.0 } * (f64::from(k) * 0.05).sin();
         let load = if k < 200 { 5e3 } else { 60e3 };
         assert_eq!(set(c, "angular_velocity", w), OK);
         assert_eq!(set(c, "load", load), OK);
-        assert_eq!(set(c, "angle", k as f64), OK);
-        let h_step = 0.01 + 0.001 * (k % 3) as f64;
+        assert_eq!(set(c, "angle", f64::from(k)), OK);
+        let h_step = 0.01 + 0.001 * f64::from(k % 3);
         let op = j.evaluate(load, w).unwrap();
         let torque = if w.abs() >= 0.01 { op.signed_torque() } else { -j.evaluate(load, 0.01).unwrap().torque * (w / 0.01) };
         // Direct feedthrough: the outputs follow the inputs before the step.

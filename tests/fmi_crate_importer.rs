@@ -36,7 +36,7 @@ fn fmi_crate_loads_and_steps_the_fmu_with_the_library_outputs() {
     let (h, mut t, mut energy) = (0.01, 0.0, 0.0);
     let mut checked_in_band = 0;
     for k in 0..600 {
-        let w = 40.0 * (k as f64 * 0.02).sin().powi(3);
+        let w = 40.0 * (f64::from(k) * 0.02).sin().powi(3);
         let load = if k < 300 { 5e3 } else { 60e3 };
         inst.set_real(&[vr("angular_velocity"), vr("load")], &[w, load]).unwrap();
         inst.do_step(t, h, true).unwrap();

@@ -114,6 +114,8 @@ fn instance(at: At) -> (InstanceCS, String) {
 
 type Call = fn(&mut InstanceCS) -> Result<(), Fmi2Error>;
 
+// Takes the call's result directly (`is_error(inst.do_step(..))`); a reference would clutter every call.
+#[allow(clippy::needless_pass_by_value)]
 fn is_error<T>(r: Result<T, Fmi2Error>) -> bool {
     matches!(r, Err(Fmi2Error::Error))
 }
@@ -194,7 +196,7 @@ fn cases() -> Vec<(At, &'static str, Call, &'static str)> {
         (Step, "deserialize a state holding a NaN speed", |i| damaged(i, |b| {
             let at = model_part() + 3 + 8 * (PARAMS.len() + 2);
             b[at..at + 8].copy_from_slice(&f64::NAN.to_le_bytes());
-            fix_crc(b)
+            fix_crc(b);
         }), "input angular_velocity = NaN rad/s"),
     ]
 }
@@ -401,7 +403,7 @@ fn eight_instances_on_eight_threads_equal_serial_runs() {
         let mut out = Vec::new();
         let mut v = vec![0.0; 10];
         for k in 0..400 {
-            let t = 0.01 * k as f64;
+            let t = 0.01 * f64::from(k);
             i.set_real(&[2, 3], &[(1.0 + seed as f64) * (3.0 * t).sin(), 5e3 * (1 + seed) as f64]).unwrap();
             i.do_step(t, 0.01, true).unwrap();
             i.get_real(&outputs(), &mut v).unwrap();

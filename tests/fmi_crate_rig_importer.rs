@@ -53,7 +53,7 @@ fn fmi_crate_loads_and_steps_the_rig_fmu_with_the_library_outputs() {
         for (i, (a, b)) in v.iter().zip(expect).enumerate() {
             assert!((a - b).abs() <= 1e-12 * b.abs(), "{} at t = {t}: {a} vs {b}", reals[i]);
         }
-        assert_eq!(stuck[0], s.stuck as i32, "stuck at t = {t}");
+        assert_eq!(stuck[0], i32::from(s.stuck), "stuck at t = {t}");
         stuck_seen |= s.stuck;
         slip_seen |= !s.stuck;
     }

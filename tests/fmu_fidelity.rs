@@ -38,8 +38,8 @@ fn rel(a: f64, b: f64) -> f64 {
 /// Points of the default envelope (5-60 kN, 0.01-10 rad/s) the library's tests do not use.
 fn points() -> Vec<(f64, f64)> {
     (0..300).map(|k| {
-        let a = (k as f64 * 0.6180339887).fract();
-        let b = (k as f64 * 0.4142135623).fract();
+        let a = (f64::from(k) * 0.6180339887).fract();
+        let b = (f64::from(k) * 0.4142135623).fract();
         let w = (0.01f64.ln() + b * (10f64.ln() - 0.01f64.ln())).exp();
         (5e3 + a * 55e3, if k % 2 == 0 { w } else { -w })
     }).collect()

@@ -21,7 +21,7 @@ fn replay_dir(kind: &str, target: &str, check: fn(&[u8])) -> usize {
         let data = std::fs::read(f).unwrap();
         let name = f.file_name().unwrap().to_string_lossy().into_owned();
         if let Err(p) = std::panic::catch_unwind(|| check(&data)) {
-            let msg = p.downcast_ref::<String>().cloned().or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string())).unwrap_or_default();
+            let msg = p.downcast_ref::<String>().cloned().or_else(|| p.downcast_ref::<&str>().map(std::string::ToString::to_string)).unwrap_or_default();
             panic!("fuzz/{kind}/{target}/{name} fails: {msg}");
         }
     }

@@ -96,7 +96,7 @@ fn fmu_levels_are_the_library_levels_bit_for_bit() {
         }
         let held = Inputs { load: Some(20e3), command_angle: None };
         (1..=1500).map(|k| {
-            sim.advance_to(k as f64 * 1e-3, &held).unwrap();
+            sim.advance_to(f64::from(k) * 1e-3, &held).unwrap();
             sim.sample().unwrap().torque
         }).collect::<Vec<f64>>()
     };

@@ -17,7 +17,7 @@ fn expected(s: &Sample) -> Vec<f64> {
         s.friction_coefficient,
         if contact { s.film_thickness } else { 0.0 },
         if contact { s.fluid_load_fraction } else { 0.0 },
-        s.stuck as u8 as f64,
+        f64::from(u8::from(s.stuck)),
         s.command_angle,
         s.actuator_work,
         s.friction_dissipation,

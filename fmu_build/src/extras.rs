@@ -12,6 +12,8 @@ pub type Entry = (String, Vec<u8>);
 
 /// (name, version, licence expression, source folder if a registry crate) of every crate of
 /// the FMU library's normal dependency tree.
+// The row tuple is documented just above; a named type would be a refactor beyond this lint pass.
+#[allow(clippy::type_complexity)]
 fn crates(cargo: &str, root: &Path, package: &str) -> Result<Vec<(String, String, String, Option<PathBuf>)>, String> {
     let out = Command::new(cargo)
         .args(["tree", "-p", package, "-e", "normal", "--prefix", "none", "-f", "{p}|{l}"])

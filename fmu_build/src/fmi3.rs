@@ -12,6 +12,8 @@ use zip::write::SimpleFileOptions;
 use zip::{CompressionMethod, DateTime, ZipWriter};
 
 /// FMI 3.0 platform tuple (`<arch>-<sys>`, FMI 3.0 section 2.5.1.4) of this host.
+// Unused since `main` packs through `platforms` (every platform, host included); kept for host-only packaging.
+#[allow(dead_code)]
 pub fn host_platform() -> Result<&'static str, String> {
     match (std::env::consts::OS, std::env::consts::ARCH) {
         ("linux", "x86_64") => Ok("x86_64-linux"),
@@ -49,6 +51,8 @@ pub fn package(info: &ModelInfo, binaries: &[(&str, PathBuf, &str)], out_dir: &P
 }
 
 /// The host-platform FMI 3.0 FMUs of `models` (the library built by the caller).
+// Unused since `main` packs through `platforms` (every platform, host included); kept for host-only packaging.
+#[allow(dead_code)]
 pub fn package_host(models: &[&'static ModelInfo], library: &Path, ext: &str, out_dir: &Path, extras: &[Entry]) -> Result<Vec<PathBuf>, String> {
     let platform = host_platform()?;
     models.iter().map(|info| package(info, &[(platform, library.to_path_buf(), ext)], out_dir, extras)).collect()

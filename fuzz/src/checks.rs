@@ -87,8 +87,8 @@ pub fn value(inp: &mut Input, typical: f64, lo: Option<f64>, hi: Option<f64>) ->
     let sel = inp.u8();
     match sel % 8 {
         0..=3 => match (lo, hi) {
-            (Some(lo), Some(hi)) => lo + (hi - lo) * (inp.u16() as f64 / 65536.0),
-            _ => typical * ((inp.u16() as f64 - 32768.0) / 4096.0).exp2(),
+            (Some(lo), Some(hi)) => lo + (hi - lo) * (f64::from(inp.u16()) / 65536.0),
+            _ => typical * ((f64::from(inp.u16()) - 32768.0) / 4096.0).exp2(),
         },
         4 => inp.f64_bits(),
         5 => SPECIAL[inp.u8() as usize % SPECIAL.len()],
@@ -112,7 +112,7 @@ pub mod core {
     /// A load (N): around 20 kN by 2^±32 (5 µN to 86 GN), special values or raw bits.
     pub fn load(inp: &mut Input) -> f64 {
         match inp.u8() % 4 {
-            0 | 1 => 20e3 * ((inp.u16() as f64 - 32768.0) / 1024.0).exp2(),
+            0 | 1 => 20e3 * ((f64::from(inp.u16()) - 32768.0) / 1024.0).exp2(),
             2 => SPECIAL[inp.u8() as usize % SPECIAL.len()],
             _ => inp.f64_bits(),
         }
@@ -122,7 +122,7 @@ pub mod core {
     pub fn omega(inp: &mut Input) -> f64 {
         let sign = if inp.u8().is_multiple_of(2) { 1.0 } else { -1.0 };
         match inp.u8() % 4 {
-            0 | 1 => sign * ((inp.u16() as f64 - 32768.0) / 1024.0).exp2(),
+            0 | 1 => sign * ((f64::from(inp.u16()) - 32768.0) / 1024.0).exp2(),
             2 => SPECIAL[inp.u8() as usize % SPECIAL.len()],
             _ => inp.f64_bits(),
         }
@@ -150,7 +150,7 @@ pub mod core {
             0 => None,
             1 => Some(inp.f64_bits()),
             2 => Some(SPECIAL[inp.u8() as usize % SPECIAL.len()]),
-            _ => Some((inp.u16() as f64 - 32768.0) / 64.0),
+            _ => Some((f64::from(inp.u16()) - 32768.0) / 64.0),
         };
         Case { params, load, omega, guess }
     }
@@ -265,6 +265,8 @@ pub mod core {
         check_case(c, true);
     }
 
+    // Takes the case by value as the fuzz target hands it over; a reference would change every caller.
+    #[allow(clippy::needless_pass_by_value)]
     fn check_case(c: Case, envelope_mode: bool) {
         let Case { params, load, omega, guess } = c;
         let valid = params.validate();
@@ -487,7 +489,7 @@ pub mod fmi {
                         if kind == Kind::Boolean && s == OK {
                             assert!(ints.iter().all(|b| *b == 0 || *b == 1), "{what}: a Boolean output is {ints:?}");
                         }
-                        (s, ints.iter().map(|&i| i as f64).collect())
+                        (s, ints.iter().map(|&i| f64::from(i)).collect())
                     }
                 };
                 self.status(s, e, slot.quiet, "reading the outputs");
@@ -569,7 +571,7 @@ pub mod fmi {
                 1 => &*self.no_logger,
                 _ => &*self.callbacks,
             };
-            let logging_on = (inp.u8() % 2) as i32;
+            let logging_on = i32::from(inp.u8() % 2);
             let e = self.log.errors;
             let c = unsafe { fmi2Instantiate(name, fmu_type, guid, res, cbs, 0, logging_on) };
             // Model Exchange is valid for models that offer it (PinJoint, issue 11).
@@ -611,10 +613,10 @@ pub mod fmi {
             match op {
                 1 => {
                     let start = if inp.u8().is_multiple_of(4) { value(inp, 1.0, None, None) } else { 0.0 };
-                    let stop_defined = (inp.u8() % 2) as i32;
+                    let stop_defined = i32::from(inp.u8() % 2);
                     let stop = value(inp, 10.0, None, None);
                     let tol = value(inp, 1e-6, None, None);
-                    let s = st(self, fmi2SetupExperiment(c, inp.u8() as i32 % 2, tol, start, stop_defined, stop), "fmi2SetupExperiment");
+                    let s = st(self, fmi2SetupExperiment(c, i32::from(inp.u8()) % 2, tol, start, stop_defined, stop), "fmi2SetupExperiment");
                     if s == OK {
                         self.slots[k].as_mut().unwrap().time = start;
                     }
@@ -674,15 +676,15 @@ pub mod fmi {
                 13..=16 => {
                     let t = match inp.u8() % 8 {
                         0 => value(inp, time + 1.0, None, None),
-                        1 => time + (inp.u8() as f64 - 128.0) * 1e-9,
+                        1 => time + (f64::from(inp.u8()) - 128.0) * 1e-9,
                         _ => time,
                     };
                     let h = match inp.u8() % 8 {
                         0 => value(inp, 1e-3, None, None),
                         1 => SPECIAL[inp.u8() as usize % SPECIAL.len()],
-                        _ => 1e-3 * ((inp.u8() as f64 - 128.0) / 8.0).exp2(),
+                        _ => 1e-3 * ((f64::from(inp.u8()) - 128.0) / 8.0).exp2(),
                     };
-                    let s = st(self, fmi2DoStep(c, t, h, inp.u8() as i32 % 2), "fmi2DoStep");
+                    let s = st(self, fmi2DoStep(c, t, h, i32::from(inp.u8()) % 2), "fmi2DoStep");
                     if s == OK {
                         assert!(t.is_finite() && h.is_finite() && h > 0.0, "fmi2DoStep({t}, {h}) returned fmi2OK");
                         self.slots[k].as_mut().unwrap().time = t + h;
@@ -718,7 +720,7 @@ pub mod fmi {
                         for vr in &vrs {
                             let var = info.index_of(*vr).map(|i| &info.variables[i]);
                             assert!(
-                                var.is_some_and(|v| want.is_some_and(|w| v.kind.fmi2_accessed_as(w)) && (which % 2 == 0 || v.causality != Causality::Output)),
+                                var.is_some_and(|v| want.is_some_and(|w| v.kind.fmi2_accessed_as(w)) && (which.is_multiple_of(2) || v.causality != Causality::Output)),
                                 "typed call {which} returned fmi2OK for value reference {vr} ({:?})",
                                 var.map(|v| (&v.name, v.kind, v.causality))
                             );
@@ -803,7 +805,7 @@ pub mod fmi {
                     }
                 }
                 25 => {
-                    let on = (inp.u8() % 2) as i32;
+                    let on = i32::from(inp.u8() % 2);
                     let n = inp.u8() as usize % 3;
                     let cats: Vec<*const c_char> = (0..n)
                         .map(|_| match inp.u8() % 16 {
@@ -821,7 +823,7 @@ pub mod fmi {
                 26 => {
                     let kind = match inp.u8() % 4 {
                         0 => inp.u32() as i32,
-                        x => x as i32,
+                        x => i32::from(x),
                     };
                     let mut r = 0.0;
                     let mut i = 0;

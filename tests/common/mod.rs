@@ -99,7 +99,7 @@ impl Host {
                 res.as_ref().map_or(std::ptr::null(), |r| r.as_ptr()),
                 &*self.callbacks,
                 FMI2_FALSE,
-                logging_on as i32,
+                i32::from(logging_on),
             )
         }
     }
@@ -156,7 +156,7 @@ pub fn set_in(info: &ModelInfo, c: Fmi2Component, name: &str, v: f64) -> i32 {
         match info.variables[i].kind {
             Kind::Real => fmi2SetReal(c, r.as_ptr(), 1, [v].as_ptr()),
             Kind::Integer | Kind::Enumeration(_) => fmi2SetInteger(c, r.as_ptr(), 1, [v as i32].as_ptr()),
-            Kind::Boolean => fmi2SetBoolean(c, r.as_ptr(), 1, [(v != 0.0) as i32].as_ptr()),
+            Kind::Boolean => fmi2SetBoolean(c, r.as_ptr(), 1, [i32::from(v != 0.0)].as_ptr()),
         }
     }
 }

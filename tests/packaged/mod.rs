@@ -27,6 +27,8 @@ pub fn fmu_path(env_var: &str, info: &ModelInfo, tag: &str) -> PathBuf {
 }
 
 /// The value reference of `name` in `info`'s table.
+// Not used by every test that includes this module.
+#[allow(dead_code)]
 pub fn vr(info: &ModelInfo, name: &str) -> u32 {
     info.variables[info.index_by_name(name).unwrap_or_else(|| panic!("no variable {name}"))].value_reference
 }

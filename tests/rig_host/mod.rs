@@ -4,6 +4,8 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+// Not every test that includes this module uses every re-export (ERROR: rig_fmu_lifecycle only).
+#[allow(unused_imports)]
 pub use common::{free, Host, ERROR, OK};
 
 use fmi_layer::fmi2::types::Fmi2Component;

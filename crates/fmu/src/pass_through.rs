@@ -27,6 +27,8 @@ fn var(name: &str, vr: u32, causality: Causality, d: &str) -> Variable {
     }
 }
 
+/// The PassThrough model's description for the registry: four Real variables (`u1`, `u2`
+/// inputs, `y1`, `y2` outputs), Co-Simulation only.
 pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     model_name: "PassThrough",
     model_identifier: "PassThrough",
@@ -50,6 +52,7 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     legal: crate::LEGAL,
 });
 
+/// The PassThrough instance: it holds the two inputs, which are also its outputs.
 #[derive(Debug, Clone, Default)]
 pub struct PassThrough {
     u: [f64; 2],

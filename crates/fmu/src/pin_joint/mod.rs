@@ -11,6 +11,9 @@ pub mod zero_speed;
 use fmi_layer::fmi2::variables::ModelInfo;
 use std::sync::LazyLock;
 
+/// The PinJoint model's description for the registry: its variable table
+/// ([`variables::table`]), units, default experiment (0 to 10 s, step 1 ms), documentation
+/// page and constructor; Co-Simulation and Model Exchange.
 pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     model_name: "PinJoint",
     model_identifier: "PinJoint",

@@ -23,16 +23,27 @@ const STATE_VALUES: usize = PARAMS.len() + 1 + 3 + 1 + 2 + 4 + 1;
 /// Every output but the energy, from one evaluation.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Outputs {
+    /// Friction torque on the pin (N·m), -sign(ω) μ R P_T (eq. 11), ramped inside the band.
     pub torque: f64,
+    /// Friction coefficient μ (dimensionless, eq. 10).
     pub friction_coefficient: f64,
+    /// Central film thickness h_c (m).
     pub film_thickness: f64,
+    /// Lambda ratio h_c/√(σ² + σ_b²) (dimensionless, eq. 21).
     pub lambda_ratio: f64,
+    /// Share of the load carried by the film, 1/γ₁ (dimensionless, eq. 9).
     pub fluid_load_fraction: f64,
+    /// Share of the load carried by the asperities, 1/γ₂ (dimensionless, eq. 9).
     pub asperity_load_fraction: f64,
+    /// Hertz mean contact pressure p_m (Pa, eq. 6).
     pub mean_pressure: f64,
+    /// Sommerfeld number S (dimensionless, eq. 20).
     pub sommerfeld_number: f64,
+    /// Frictional power loss |torque · ω| (W).
     pub power_loss: f64,
+    /// Minimum film thickness h_min (m; extension beyond the paper).
     pub min_film_thickness: f64,
+    /// Lambda ratio from the minimum film, h_min/√(σ² + σ_b²) (dimensionless).
     pub min_lambda_ratio: f64,
 }
 
@@ -100,7 +111,9 @@ pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelRes
 /// The fidelity settings of the FMU: the `fidelity` code, `tolerance` and the envelope.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FidelitySettings {
+    /// Integer code of the `fidelity` parameter: 0 full, 1 table, 2 boundary, 3 auto.
     pub code: i32,
+    /// The `tolerance` parameter: the relative error a table level may have against full.
     pub tolerance: f64,
     /// load_min, load_max (N), speed_min, speed_max (rad/s).
     pub envelope: [f64; 4],
@@ -139,6 +152,8 @@ fn describe(ev: &Evaluator) -> String {
     )
 }
 
+/// A PinJoint instance: the parameters, the held inputs, the dissipated energy and the
+/// evaluator built from them; it implements the FMI layer's [`Model`].
 #[derive(Debug, Clone)]
 pub struct PinJointModel {
     params: Params,
@@ -159,6 +174,7 @@ pub struct PinJointModel {
 }
 
 impl PinJointModel {
+    /// An instance at the start values of every variable (no evaluator built yet).
     pub fn new() -> Self {
         let mut m = PinJointModel {
             params: Params::default(),
@@ -234,7 +250,7 @@ impl Model for PinJointModel {
             LOAD => self.load,
             TEMPERATURE => self.temperature,
             SPEED_BAND => self.band,
-            FIDELITY => self.fidelity.code as f64,
+            FIDELITY => f64::from(self.fidelity.code),
             TOLERANCE => self.fidelity.tolerance,
             i if (ENVELOPE_LOAD_MIN..=ENVELOPE_SPEED_MAX).contains(&i) => self.fidelity.envelope[i - ENVELOPE_LOAD_MIN],
             i if i >= FIRST_PARAM => (PARAMS[i - FIRST_PARAM].get)(&self.params),
@@ -355,7 +371,7 @@ impl Model for PinJointModel {
             w.f64((s.get)(&self.params));
         }
         let f = &self.fidelity;
-        for v in [self.band, self.angle, self.omega, self.load, self.energy, f.code as f64, f.tolerance] {
+        for v in [self.band, self.angle, self.omega, self.load, self.energy, f64::from(f.code), f.tolerance] {
             w.f64(v);
         }
         for v in f.envelope {

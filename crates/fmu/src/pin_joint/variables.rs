@@ -15,26 +15,42 @@ use super::zero_speed::DEFAULT_SPEED_BAND;
 use fmi_layer::fmi2::variables::{Causality, DisplayUnit, EnumType, Initial, Kind, UnitDef, Variability, Variable};
 use pinjoint::params::{ParamSpec, PARAMS};
 
+/// Table index of the `angle` input (rad).
 pub const ANGLE: usize = 0;
+/// Table index of the `angular_velocity` input (rad/s).
 pub const ANGULAR_VELOCITY: usize = 1;
+/// Table index of the `load` input (N).
 pub const LOAD: usize = 2;
+/// Table index of the first output; the outputs follow in [`Output::ALL`] order.
 pub const FIRST_OUTPUT: usize = 3;
+/// Table index of the first model parameter; the 26 follow in
+/// [`pinjoint::params::PARAMS`] order.
 pub const FIRST_PARAM: usize = FIRST_OUTPUT + Output::ALL.len();
+/// Table index of the `zero_velocity.speed_band` parameter (rad/s).
 pub const SPEED_BAND: usize = FIRST_PARAM + PARAMS.len();
+/// Table index of the `fidelity` parameter (Enumeration, [`FIDELITY_TYPE`]).
 pub const FIDELITY: usize = SPEED_BAND + 1;
+/// Table index of the `tolerance` parameter (relative, dimensionless).
 pub const TOLERANCE: usize = FIDELITY + 1;
+/// Table index of the `envelope.load_min` parameter (N).
 pub const ENVELOPE_LOAD_MIN: usize = TOLERANCE + 1;
+/// Table index of the `envelope.load_max` parameter (N).
 pub const ENVELOPE_LOAD_MAX: usize = TOLERANCE + 2;
+/// Table index of the `envelope.speed_min` parameter (rad/s).
 pub const ENVELOPE_SPEED_MIN: usize = TOLERANCE + 3;
+/// Table index of the `envelope.speed_max` parameter (rad/s).
 pub const ENVELOPE_SPEED_MAX: usize = TOLERANCE + 4;
 /// The `temperature` input (K): the lubricant temperature (overrides `lubricant.temperature`).
 pub const TEMPERATURE: usize = ENVELOPE_SPEED_MAX + 1;
+/// Number of variables in the table.
 pub const COUNT: usize = TEMPERATURE + 1;
 
 /// Start values of the fidelity parameters: full solve; tolerance 1e-4; the paper's rig
 /// envelope 5–60 kN, 0.01–10 rad/s.
 pub const DEFAULT_FIDELITY: i32 = 0;
+/// Start value of `tolerance` (relative, dimensionless).
 pub const DEFAULT_TOLERANCE: f64 = 1e-4;
+/// Start values of `envelope.load_min`, `load_max` (N), `speed_min`, `speed_max` (rad/s).
 pub const DEFAULT_ENVELOPE: [f64; 4] = [5e3, 60e3, 0.01, 10.0];
 
 /// The fidelity level of an Integer code of the `fidelity` parameter.
@@ -62,21 +78,34 @@ pub const DEFAULT_LOAD: f64 = 20e3;
 /// The outputs, in table order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Output {
+    /// `torque` (N·m): friction torque on the pin, -sign(ω) μ R P_T (eq. 11).
     Torque,
+    /// `friction_coefficient` (dimensionless): μ = (Q_H + Q_C)/P_T (eq. 10).
     FrictionCoefficient,
+    /// `film_thickness` (m): central film thickness h_c (eqs. 9, 13, 19).
     FilmThickness,
+    /// `lambda_ratio` (dimensionless): h_c/√(σ² + σ_b²) (eq. 21).
     LambdaRatio,
+    /// `fluid_load_fraction` (dimensionless, 0–1): share of the load on the film, 1/γ₁ (eq. 9).
     FluidLoadFraction,
+    /// `asperity_load_fraction` (dimensionless, 0–1): share on the asperities, 1/γ₂ (eq. 9).
     AsperityLoadFraction,
+    /// `mean_pressure` (Pa): Hertz mean contact pressure p_m = P_T/(2aB) (eq. 6).
     MeanPressure,
+    /// `sommerfeld_number` (dimensionless): S of eq. 20.
     SommerfeldNumber,
+    /// `power_loss` (W): frictional power |torque · angular_velocity|.
     PowerLoss,
+    /// `dissipated_energy` (J): power_loss summed over the Co-Simulation steps.
     DissipatedEnergy,
+    /// `min_film_thickness` (m): minimum film thickness h_min (extension beyond the paper).
     MinFilmThickness,
+    /// `min_lambda_ratio` (dimensionless): h_min/√(σ² + σ_b²) (eq. 21 with h_min).
     MinLambdaRatio,
 }
 
 impl Output {
+    /// Every output, in table order (value references 10, 11, …).
     pub const ALL: [Output; 12] = [
         Output::Torque,
         Output::FrictionCoefficient,
@@ -252,7 +281,8 @@ pub(crate) fn parameter(i: usize, s: &ParamSpec) -> Variable {
     }
 }
 
-/// The full table, in index order.
+/// The full PinJoint table, in index order (the layout of the module documentation); it
+/// generates modelDescription.xml and drives get/set.
 pub fn table() -> Vec<Variable> {
     let mut v = vec![
         input("angle", 1, "rad", Some("deg"), 0.0, None,
@@ -290,7 +320,7 @@ pub fn table() -> Vec<Variable> {
         initial: Initial::Exact,
         unit: None,
         display_unit: None,
-        start: Some(DEFAULT_FIDELITY as f64),
+        start: Some(f64::from(DEFAULT_FIDELITY)),
         min: Some(0.0),
         max: Some(3.0),
         description: "Fidelity of the friction evaluation: 0 = full (complete solve, cold: outputs depend on the current inputs only), 1 = table \

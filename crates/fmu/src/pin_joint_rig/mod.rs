@@ -13,6 +13,9 @@ pub mod variables;
 use fmi_layer::fmi2::variables::ModelInfo;
 use std::sync::LazyLock;
 
+/// The PinJointRig model's description for the registry: its variable table
+/// ([`variables::table`]), units, default experiment (0 to 3 s, step 1 ms), documentation
+/// page and constructor; Co-Simulation only.
 pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     model_name: "PinJointRig",
     model_identifier: "PinJointRig",

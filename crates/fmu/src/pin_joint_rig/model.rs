@@ -29,14 +29,20 @@ use std::sync::Arc;
 pub struct Settings {
     /// Model and rig parameters (`cfg.rig.load` is unused: the load is the input).
     pub cfg: RigConfig,
+    /// The `use_command_input` parameter: follow the `command_angle` input instead of the
+    /// sine stroke.
     pub use_command_input: bool,
     /// Integer codes of `rig.formulation` and `rig.method`, checked at initialization.
     pub formulation: f64,
+    /// Integer code of `rig.method` (0 dopri5, 1 dop853, 2 rk4), checked at initialization.
     pub method: f64,
+    /// The `load` input (N): the radial load on the pin.
     pub load: f64,
+    /// The `command_angle` input (rad), followed when `use_command_input` is true.
     pub command_angle: f64,
     /// Integer code of `fidelity`, checked when set and at initialization.
     pub fidelity: f64,
+    /// The `tolerance` parameter: the relative error a table level may have against full.
     pub tolerance: f64,
     /// load_min, load_max (N), speed_min, speed_max (rad/s).
     pub envelope: [f64; 4],
@@ -71,7 +77,7 @@ impl Settings {
             Var::CommandAngle => self.command_angle,
             Var::Frequency => rig.frequency,
             Var::Amplitude => rig.amplitude,
-            Var::UseCommandInput => self.use_command_input as u8 as f64,
+            Var::UseCommandInput => f64::from(u8::from(self.use_command_input)),
             Var::Rig(i) => (RIG_PARAMS[i].get)(rig),
             Var::Formulation => self.formulation,
             Var::Method => self.method,
@@ -84,6 +90,7 @@ impl Settings {
         }
     }
 
+    /// Store `x` as the value of table entry `v` (not an output; not checked here).
     pub fn set(&mut self, v: Var, x: f64) {
         let rig = &mut self.cfg.rig;
         match v {
@@ -214,7 +221,7 @@ pub fn outputs(s: &Sample) -> ModelResult<[f64; Output::ALL.len()]> {
         Output::FrictionCoefficient => s.friction_coefficient,
         Output::FilmThickness => if contact { s.film_thickness } else { 0.0 },
         Output::FluidLoadFraction => if contact { s.fluid_load_fraction } else { 0.0 },
-        Output::Stuck => s.stuck as u8 as f64,
+        Output::Stuck => f64::from(u8::from(s.stuck)),
         Output::CommandedAngle => s.command_angle,
         Output::ActuatorWork => s.actuator_work,
         Output::FrictionDissipation => s.friction_dissipation,
@@ -249,6 +256,8 @@ pub fn with_min_film(mut out: [f64; Output::ALL.len()], s: &Sample, joint: &pinj
     out
 }
 
+/// A PinJointRig instance: the settings, the start time, the rig simulator and the last
+/// outputs; it implements the FMI layer's [`Model`].
 #[derive(Debug, Clone)]
 pub struct RigModel {
     pub(super) settings: Settings,
@@ -266,6 +275,7 @@ pub struct RigModel {
 }
 
 impl RigModel {
+    /// An instance at the start values of every variable (no simulator built yet).
     pub fn new() -> Self {
         RigModel {
             settings: Settings::default(),
@@ -442,7 +452,7 @@ impl Model for RigModel {
     }
 
     fn serialize(&self, out: &mut Vec<u8>) {
-        encode(&self.settings, self.start_time, self.sim.as_ref().map(|s| s.state()), out);
+        encode(&self.settings, self.start_time, self.sim.as_ref().map(pinjoint::rig::RigSim::state), out);
     }
 
     fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()> {

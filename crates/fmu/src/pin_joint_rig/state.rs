@@ -35,6 +35,8 @@ fn settings_vars() -> impl Iterator<Item = Var> {
     LAYOUT.iter().copied().filter(|v| !matches!(v, Var::Out(_)))
 }
 
+/// Append the PinJointRig state (the layout of the module documentation) to `out`: every
+/// setting, the start time (s) and, after initialization, the simulator's `state`.
 pub fn encode(settings: &Settings, start_time: f64, state: Option<RigState>, out: &mut Vec<u8>) {
     let mut w = ByteWriter::default();
     w.u8(VERSION);

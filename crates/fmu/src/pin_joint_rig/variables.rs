@@ -33,22 +33,31 @@ pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
 /// What a table entry stands for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Var {
+    /// The `load` input (N): the radial load on the pin.
     Load,
+    /// The `command_angle` input (rad): the actuator's command when `use_command_input` is true.
     CommandAngle,
+    /// An output.
     Out(Output),
+    /// The stroke parameter `frequency` (Hz) of the sine command.
     Frequency,
+    /// The stroke parameter `amplitude` (rad) of the sine command.
     Amplitude,
+    /// The Boolean parameter `use_command_input`: follow `command_angle` instead of the sine stroke.
     UseCommandInput,
     /// Row of [`RIG_PARAMS`].
     Rig(usize),
+    /// The Integer parameter `rig.formulation` ([`FORMULATION_TYPE`]).
     Formulation,
+    /// The Integer parameter `rig.method` ([`METHOD_TYPE`]).
     Method,
     /// Row of [`PARAMS`].
     Model(usize),
     /// Integer code of the friction fidelity ([`pj::fidelity_of_code`]).
     Fidelity,
+    /// The `tolerance` parameter (relative, dimensionless) of the table fidelity levels.
     Tolerance,
-    /// load_min, load_max, speed_min, speed_max.
+    /// Entry of the envelope, in [`ENVELOPE_NAMES`] order: load_min, load_max, speed_min, speed_max.
     Envelope(usize),
     /// The `temperature` input (K): the lubricant temperature.
     Temperature,
@@ -63,28 +72,46 @@ pub use crate::ENVELOPE_NAMES;
 /// Speeds below speed_min (around every reversal) and points outside it are answered by
 /// the full solve (logged once).
 pub const DEFAULT_TOLERANCE: f64 = pj::DEFAULT_TOLERANCE;
+/// Start values of `envelope.load_min`, `load_max` (N), `speed_min`, `speed_max` (rad/s):
+/// 1–100 kN, 1e-3–10 rad/s (see [`DEFAULT_TOLERANCE`]).
 pub const DEFAULT_ENVELOPE: [f64; 4] = [1e3, 100e3, 1e-3, 10.0];
 
 /// The outputs, in table order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Output {
+    /// `angle` (rad): the pin's angle.
     Angle,
+    /// `angular_velocity` (rad/s): the pin's angular velocity.
     AngularVelocity,
+    /// `torque` (N·m): the recorded torque, the actuator torque T_a the transducer reads.
     Torque,
+    /// `friction_torque` (N·m): the joint's friction torque (eq. 11; static torque when stuck).
     FrictionTorque,
+    /// `friction_coefficient` (dimensionless): μ (eq. 10).
     FrictionCoefficient,
+    /// `film_thickness` (m): central film thickness h_c.
     FilmThickness,
+    /// `fluid_load_fraction` (dimensionless, 0–1): share of the load on the film, 1/γ₁ (eq. 9).
     FluidLoadFraction,
+    /// `stuck` (Boolean): true in a stick phase (hybrid formulation), or |ω| at or below
+    /// `rig.regularisation_speed` (regularised formulation).
     Stuck,
+    /// `commanded_angle` (rad): the command θ_cmd the position loop follows.
     CommandedAngle,
+    /// `actuator_work` (J): work done by the actuator since the start.
     ActuatorWork,
+    /// `friction_dissipation` (J): energy dissipated by friction since the start.
     FrictionDissipation,
+    /// `kinetic_energy` (J): kinetic energy of the rotating parts, J ω²/2.
     KineticEnergy,
+    /// `min_film_thickness` (m): minimum film thickness h_min (extension beyond the paper).
     MinFilmThickness,
+    /// `min_lambda_ratio` (dimensionless): h_min/√(σ² + σ_b²) (eq. 21 with h_min).
     MinLambdaRatio,
 }
 
 impl Output {
+    /// Every output, in table order (value references 10, 11, …).
     pub const ALL: [Output; 14] = [
         Output::Angle,
         Output::AngularVelocity,
