@@ -1,7 +1,8 @@
 //! FMI 3.0 packaging: `target/fmu/fmi3/<model>.fmu` for every model of the registry, with the
 //! FMI 3.0 modelDescription.xml (`fmi_layer::fmi3::xml`), the same shared library (it exports
 //! both `fmi2*` and `fmi3*` functions) under the FMI 3.0 platform folder, the documentation,
-//! the licences and `model.png`. Host platform only here (`x86_64-linux` on Linux x86-64).
+//! the licences and `model.png`, one binary per FMI 3.0 platform tuple that `--platforms` built
+//! (`x86_64-linux` alone for the default host build on Linux x86-64).
 
 use crate::extras::Entry;
 use fmi_layer::fmi2::variables::ModelInfo;
@@ -11,19 +12,6 @@ use std::path::{Path, PathBuf};
 use zip::write::SimpleFileOptions;
 use zip::{CompressionMethod, DateTime, ZipWriter};
 
-/// FMI 3.0 platform tuple (`<arch>-<sys>`, FMI 3.0 section 2.5.1.4) of this host.
-// Unused since `main` packs through `platforms` (every platform, host included); kept for host-only packaging.
-#[allow(dead_code)]
-pub fn host_platform() -> Result<&'static str, String> {
-    match (std::env::consts::OS, std::env::consts::ARCH) {
-        ("linux", "x86_64") => Ok("x86_64-linux"),
-        ("linux", "aarch64") => Ok("aarch64-linux"),
-        ("macos", "x86_64") => Ok("x86_64-darwin"),
-        ("macos", "aarch64") => Ok("aarch64-darwin"),
-        ("windows", "x86_64") => Ok("x86_64-windows"),
-        (os, arch) => Err(format!("no FMI 3.0 platform tuple for {os}/{arch}")),
-    }
-}
 
 /// Write `<out_dir>/fmi3/<modelIdentifier>.fmu` with `binaries`: (platform tuple, library path,
 /// extension) per platform, and the shared `extras` (licences, model.png).
@@ -50,10 +38,3 @@ pub fn package(info: &ModelInfo, binaries: &[(&str, PathBuf, &str)], out_dir: &P
     Ok(path)
 }
 
-/// The host-platform FMI 3.0 FMUs of `models` (the library built by the caller).
-// Unused since `main` packs through `platforms` (every platform, host included); kept for host-only packaging.
-#[allow(dead_code)]
-pub fn package_host(models: &[&'static ModelInfo], library: &Path, ext: &str, out_dir: &Path, extras: &[Entry]) -> Result<Vec<PathBuf>, String> {
-    let platform = host_platform()?;
-    models.iter().map(|info| package(info, &[(platform, library.to_path_buf(), ext)], out_dir, extras)).collect()
-}
