@@ -54,6 +54,7 @@ pub struct Claim {
     pub paper: String,
     /// What this model gives, with numbers.
     pub model: String,
+    /// Whether the model reproduces the statement.
     pub verdict: Verdict,
     /// Why, where known.
     pub reason: String,
