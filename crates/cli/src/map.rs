@@ -60,7 +60,9 @@ pub const PAPER_LOADS: [f64; 5] = [5e3, 10e3, 20e3, 40e3, 60e3];
 /// The map grid: loads (N) and speeds (rad/s).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
+    /// Loads, in N, evenly spaced.
     pub loads: Vec<f64>,
+    /// Speeds, in rad/s, log-spaced.
     pub speeds: Vec<f64>,
 }
 
@@ -135,6 +137,9 @@ pub const MAX_GRID_SIDE: usize = 1000;
 /// The files `map` writes into its directory.
 pub const MAP_FILES: &[&str] = &["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"];
 
+/// Evaluates `joint` over the grid `g` and writes [`MAP_FILES`] into `dir`, refusing to overwrite
+/// any of `inputs`; returns the paths written. Fails if a point cannot be evaluated or a file
+/// cannot be written.
 pub fn write_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
     let ops = evaluate(joint, g)?;
     let lambda = map_plot(
@@ -180,6 +185,7 @@ pub fn write_min_lambda_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Gri
     Ok(path)
 }
 
+/// Runs `pinjoint map`: checks the flags, evaluates the grid and writes the map files.
 pub fn run(cmd: &MapCmd) -> Result<()> {
     refuse_files(&cmd.output, MAP_FILES, cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;
