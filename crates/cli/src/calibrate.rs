@@ -74,6 +74,8 @@ pub struct CalibrateCmd {
     pub json: bool,
 }
 
+/// Runs `pinjoint calibrate`: reads the recorded cycles, fits μ_c (and any --fit key) and
+/// writes the report. Fails on invalid flags, unreadable records, or a fit that cannot be made.
 pub fn run(cmd: &CalibrateCmd) -> Result<()> {
     if let Some(p) = cmd.load.iter().find(|p| !(p.is_finite() && **p > 0.0)) {
         return Err(CliError::Invalid(format!("--load = {p} N is invalid: it must be a finite number > 0 N")));

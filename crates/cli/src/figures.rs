@@ -159,6 +159,8 @@ fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius:
     Ok(paths)
 }
 
+/// Runs `pinjoint figures`: computes every figure on the built-in parameters and writes them,
+/// their data, README.md and index.html into the output directory.
 pub fn run(cmd: &FiguresCmd) -> Result<()> {
     let start = Instant::now();
     let cfg = RigConfig::default();

@@ -47,6 +47,7 @@ pub struct MapCmd {
     /// Number of speeds, log-spaced (>= 2)
     #[arg(long, value_name = "COUNT", default_value_t = 100)]
     pub speeds: usize,
+    /// --params and --temperature. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub params: ParamsArg,
     /// Output directory (created if needed)
@@ -129,17 +130,15 @@ fn curves_plot(joint: &Joint, g: &Grid) -> Result<String> {
     Ok(stacked_plot("Pin joint operation at the paper's loads", &[lambda, mu], (900, 1000))?)
 }
 
-/// Write the CSV and the three plots into `dir`; returns their paths.
-/// `inputs`: the command's input files, never overwritten.
 /// Most loads (and most speeds) of one map: at most 1000 × 1000 = 1e6 solves.
 pub const MAX_GRID_SIDE: usize = 1000;
 
 /// The files `map` writes into its directory.
 pub const MAP_FILES: &[&str] = &["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"];
 
-/// Evaluates `joint` over the grid `g` and writes [`MAP_FILES`] into `dir`, refusing to overwrite
-/// any of `inputs`; returns the paths written. Fails if a point cannot be evaluated or a file
-/// cannot be written.
+/// Write the CSV and the three plots ([`MAP_FILES`]) into `dir`; returns their paths.
+/// `inputs`: the command's input files, never overwritten. Fails if a point cannot be
+/// evaluated or a file cannot be written.
 pub fn write_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
     let ops = evaluate(joint, g)?;
     let lambda = map_plot(

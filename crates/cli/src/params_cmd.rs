@@ -20,6 +20,7 @@ pinjoint point --load 20000 --rpm 10 --params my-joint.toml\n  \
 pinjoint params --rig > rig.toml       # model and rig, for `pinjoint cycle --params rig.toml`"
 )]
 pub struct ParamsCmd {
+    /// --params and --temperature: the file (and temperature) whose values are printed. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub params: ParamsArg,
     /// Also print the [rig] section (the file then suits `pinjoint cycle --params`)

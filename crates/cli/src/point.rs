@@ -29,10 +29,13 @@ pub struct PointCmd {
     /// (a signed reaction component: -P gives the answer at +P); |P_T| must be > 0
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub load: f64,
+    /// --speed or --rpm: the pin's angular velocity. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub speed: SpeedArg,
+    /// --params and --temperature. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub params: ParamsArg,
+    /// --fidelity, --tolerance and the envelope. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub fidelity: FidelityArgs,
     /// Print one JSON object (keys in SI units) instead of the table

@@ -43,6 +43,7 @@ pub struct StribeckCmd {
     /// Number of speeds, log-spaced from the lowest to the highest (>= 2)
     #[arg(long, value_name = "COUNT", default_value_t = 121)]
     pub points: usize,
+    /// --params and --temperature. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub params: ParamsArg,
     /// Output directory (created if needed)
@@ -50,6 +51,7 @@ pub struct StribeckCmd {
     pub output: PathBuf,
 }
 
+/// Default speed range of the curve (lowest, highest), in rad/s.
 pub const DEFAULT_SPEED_RANGE: (f64, f64) = (0.01, 1000.0);
 
 /// A speed-range end from rad/s or rpm flags, validated (> 0, finite), in rad/s.
@@ -125,6 +127,7 @@ pub fn write_stribeck(dir: &Path, inputs: &[&Path], joint: &Joint, load: f64, sp
 /// Most points of one Stribeck curve.
 pub const MAX_POINTS: usize = 100_000;
 
+/// Runs `pinjoint stribeck`: evaluates the curve and writes stribeck.csv and stribeck.svg.
 pub fn run(cmd: &StribeckCmd) -> Result<()> {
     refuse_files(&cmd.output, &["stribeck.csv", "stribeck.svg"], cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;

@@ -54,8 +54,10 @@ pub struct SweepCmd {
     /// Output CSV (written atomically); standard output when absent or `-`
     #[arg(long, value_name = "FILE.csv")]
     pub output: Option<PathBuf>,
+    /// --params and --temperature. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub params: ParamsArg,
+    /// --fidelity, --tolerance and the envelope. (clap ignores this comment on a flattened field)
     #[command(flatten)]
     pub fidelity: FidelityArgs,
 }
@@ -367,6 +369,9 @@ fn progress(len: Option<u64>) -> ProgressBar {
     }
 }
 
+/// Runs `pinjoint sweep`: evaluates every row of the input in parallel and writes the output
+/// CSV in the input's row order. Fails on an unreadable file, a bad row (with its line) or a
+/// point the model cannot evaluate.
 pub fn run(cmd: &SweepCmd) -> Result<()> {
     let mut inputs: Vec<&Path> = vec![cmd.input.as_path()];
     inputs.extend(cmd.params.params.as_deref());
