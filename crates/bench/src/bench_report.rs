@@ -319,7 +319,7 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
          work: times are noisy; the fastest and median repeats are shown). Every figure below comes from this one run.\n",
         if r.quick { " --quick (few cases, few repeats: NOT meaningful figures)" } else { "" },
         r.seconds,
-        std::thread::available_parallelism().map_or(0, |n| n.get())
+        std::thread::available_parallelism().map_or(0, std::num::NonZero::get)
     )
     .unwrap();
     let mut body = String::new();

@@ -38,6 +38,7 @@ the time-mean of |ω| over the averaged stroke. Progress is shown on standard er
 terminal. A full run takes a few seconds in a release build; --quick is coarser still.\n\n\
 Example:\n  pinjoint figures --output figures"
 )]
+/// Arguments of `pinjoint figures` (its `--help` text is the `#[command]` attribute's).
 pub struct FiguresCmd {
     /// Output directory (created if needed)
     #[arg(long, value_name = "DIR")]

@@ -151,7 +151,7 @@ pub fn write(dir: &Path, params: &Params) -> Result<Vec<PathBuf>> {
 
     // The 1 Hz, ±40° commanded stroke: θ = A sin 2πft, ω = 2πfA cos 2πft; T = μ(P, |ω|) R P.
     let a = RIG_AMPLITUDE_DEG.to_radians();
-    let times: Vec<f64> = (0..=400).map(|i| i as f64 / 400.0).collect();
+    let times: Vec<f64> = (0..=400).map(|i| f64::from(i) / 400.0).collect();
     let mut charts = Vec::new();
     let mut cycle_rows = Vec::new();
     for (k, &p) in [20e3, 60e3].iter().enumerate() {

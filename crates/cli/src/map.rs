@@ -28,6 +28,7 @@ Examples:\n  \
 pinjoint map --output out/fig4\n  \
 pinjoint map --min-rpm 0.1 --max-rpm 5000 --speeds 150 --output out/wide"
 )]
+/// Arguments of `pinjoint map` (its `--help` text is the `#[command]` attribute's).
 pub struct MapCmd {
     /// Lowest load, in N
     #[arg(long, value_name = "N", default_value_t = 5e3, allow_negative_numbers = true)]
@@ -47,7 +48,7 @@ pub struct MapCmd {
     /// Number of speeds, log-spaced (>= 2)
     #[arg(long, value_name = "COUNT", default_value_t = 100)]
     pub speeds: usize,
-    /// --params and --temperature. (clap ignores this comment on a flattened field)
+    /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
     /// Output directory (created if needed)

@@ -19,8 +19,9 @@ pinjoint params > my-joint.toml        # start a parameter file, then edit it\n 
 pinjoint point --load 20000 --rpm 10 --params my-joint.toml\n  \
 pinjoint params --rig > rig.toml       # model and rig, for `pinjoint cycle --params rig.toml`"
 )]
+/// Arguments of `pinjoint params` (its `--help` text is the `#[command]` attribute's).
 pub struct ParamsCmd {
-    /// --params and --temperature: the file (and temperature) whose values are printed. (clap ignores this comment on a flattened field)
+    /// --params and --temperature: the file (and temperature) whose values are printed.
     #[command(flatten)]
     pub params: ParamsArg,
     /// Also print the [rig] section (the file then suits `pinjoint cycle --params`)
@@ -28,6 +29,8 @@ pub struct ParamsCmd {
     pub rig: bool,
 }
 
+/// Runs `pinjoint params`: prints the parameter file (with --rig, the rig section too) to
+/// standard output. Fails if --params cannot be read or holds invalid values.
 pub fn run(cmd: &ParamsCmd) -> Result<()> {
     let text = if cmd.rig { load_rig_config(cmd.params.params.as_ref())?.to_toml_string() } else { cmd.params.load()?.to_toml_string() };
     to_stdout(|w| w.write_all(text.as_bytes()))

@@ -302,7 +302,7 @@ pub fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
             bold.extend(mantissas.iter().map(|m| m * p).filter(inside));
         }
         if decades <= 8.0 {
-            light.extend((1..10).map(|m| m as f64 * p).filter(inside));
+            light.extend((1..10).map(|m| f64::from(m) * p).filter(inside));
         }
     }
     (bold, light)
@@ -603,7 +603,7 @@ pub fn viridis(t: f64) -> RGBColor {
     let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) } * (STOPS.len() - 1) as f64;
     let i = (t.floor() as usize).min(STOPS.len() - 2);
     let f = t - i as f64;
-    let lerp = |a: u8, b: u8| (a as f64 + f * (b as f64 - a as f64)).round() as u8;
+    let lerp = |a: u8, b: u8| (f64::from(a) + f * (f64::from(b) - f64::from(a))).round() as u8;
     let (a, b) = (STOPS[i], STOPS[i + 1]);
     RGBColor(lerp(a.0, b.0), lerp(a.1, b.1), lerp(a.2, b.2))
 }
@@ -870,7 +870,7 @@ mod tests {
         // rounded to whole pixels): every vertex lies within a pixel of its dot, and the line is
         // not rounded (a gentle slope over 400 px would otherwise step one pixel at a time).
         for (xs, ys) in [(Scale::Linear, Scale::Linear), (Scale::Log, Scale::Linear), (Scale::Linear, Scale::Log)] {
-            let pts: Vec<(f64, f64)> = (1..=60).map(|k| (k as f64, 10.0 + 0.05 * k as f64)).collect();
+            let pts: Vec<(f64, f64)> = (1..=60).map(|k| (f64::from(k), 10.0 + 0.05 * f64::from(k))).collect();
             let axis = |s: Scale, name: &str| if s == Scale::Log { Axis::log(name) } else { Axis::linear(name) };
             let c = Chart::new("", axis(xs, "x"), axis(ys, "y"))
                 .series(Series::line("line", pts.clone()))
@@ -953,8 +953,8 @@ mod tests {
 
     #[test]
     fn colour_bar_labels_stand_clear_of_the_bar_and_inside_the_image() {
-        let xs: Vec<f64> = (0..20).map(|i| 1.0 + i as f64).collect();
-        let ys: Vec<f64> = (0..10).map(|j| 5.0 + 6.0 * j as f64).collect();
+        let xs: Vec<f64> = (0..20).map(|i| 1.0 + f64::from(i)).collect();
+        let ys: Vec<f64> = (0..10).map(|j| 5.0 + 6.0 * f64::from(j)).collect();
         let h = HeatMap {
             title: "mu".into(),
             x: Axis::log("speed [rpm]"),

@@ -24,18 +24,19 @@ With --fidelity other than full, the level is built over the envelope (by defaul
 [|ω|/2, 2|ω|] around the point) and standard error says which level answered and its measured \
 error bound."
 )]
+/// Arguments of `pinjoint point` (its `--help` text is the `#[command]` attribute's).
 pub struct PointCmd {
     /// Normal load on the joint P_T, in N (newtons; 20000 = 20 kN); its magnitude is used
     /// (a signed reaction component: -P gives the answer at +P); |P_T| must be > 0
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub load: f64,
-    /// --speed or --rpm: the pin's angular velocity. (clap ignores this comment on a flattened field)
+    /// --speed or --rpm: the pin's angular velocity.
     #[command(flatten)]
     pub speed: SpeedArg,
-    /// --params and --temperature. (clap ignores this comment on a flattened field)
+    /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
-    /// --fidelity, --tolerance and the envelope. (clap ignores this comment on a flattened field)
+    /// --fidelity, --tolerance and the envelope.
     #[command(flatten)]
     pub fidelity: FidelityArgs,
     /// Print one JSON object (keys in SI units) instead of the table
@@ -43,6 +44,7 @@ pub struct PointCmd {
     pub json: bool,
 }
 
+/// The pin's angular velocity, given as exactly one of --speed (rad/s) and --rpm.
 #[derive(Args, Debug, Clone)]
 #[group(required = true, multiple = false)]
 pub struct SpeedArg {

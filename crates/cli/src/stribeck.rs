@@ -24,6 +24,7 @@ Examples:\n  \
 pinjoint stribeck --load 20000 --output out/fig3\n  \
 pinjoint stribeck --load 60000 --min-rpm 0.1 --max-rpm 10000 --points 200 --output out/60kN"
 )]
+/// Arguments of `pinjoint stribeck` (its `--help` text is the `#[command]` attribute's).
 pub struct StribeckCmd {
     /// Normal load P_T, in N (20000 for the paper's Figure 3)
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
@@ -43,7 +44,7 @@ pub struct StribeckCmd {
     /// Number of speeds, log-spaced from the lowest to the highest (>= 2)
     #[arg(long, value_name = "COUNT", default_value_t = 121)]
     pub points: usize,
-    /// --params and --temperature. (clap ignores this comment on a flattened field)
+    /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
     /// Output directory (created if needed)
