@@ -41,6 +41,9 @@ pinjoint calibrate --input a.csv --load 20000 --input b.csv --load 40000 --outpu
 pinjoint calibrate --input rig.csv --load 20000 --fit lubricant.viscosity --output out/cal --json"
 )]
 /// Arguments of `pinjoint calibrate` (its `--help` text is the `#[command]` attribute's).
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct CalibrateCmd {
     /// A record (CSV); repeat for several
     #[arg(long, value_name = "FILE", required = true)]

@@ -27,6 +27,9 @@ pub fn rig_peak_speed() -> f64 {
 /// The `--params FILE` (and `--temperature`) options shared by every command that evaluates the
 /// model.
 #[derive(Args, Debug, Clone)]
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct ParamsArg {
     /// Parameter file (TOML, SI units; any subset of keys, the rest keep the paper's values).
     /// `pinjoint params` prints a complete one to start from.

@@ -36,6 +36,9 @@ pinjoint cycle --frequency 1 --amplitude 40 --load 20000 --cycles 3 --output out
 pinjoint cycle --frequency 0.03 --amplitude 40 --load 60000 --cycles 2 --method dop853 --output out/slow"
 )]
 /// Arguments of `pinjoint cycle` (its `--help` text is the `#[command]` attribute's).
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct CycleCmd {
     /// Stroke frequency f, in Hz [default: the file's rig.frequency, else 1 Hz]
     #[arg(long, value_name = "HZ", allow_negative_numbers = true)]

@@ -9,7 +9,7 @@
 //! Both print a shortest digit string, the one nearest the exact value; they differ only on
 //! an exact tie between two shortest candidates (`{:?}` rounds the tie up, `zmij` to even,
 //! e.g. 216486192242783.625 -> `…83.63` against `…83.62`). A tie needs the exact binary
-//! value to have at most 18 significant decimal digits; [`tie_impossible`] proves from the
+//! value to have at most 18 significant decimal digits; `tie_impossible` proves from the
 //! bits that it has more, and any other value goes through `{:?}` itself (integers beyond
 //! 2^53 and values with few significant bits: rare among computed results).
 //! `tests` compares the two over millions of doubles of every magnitude.

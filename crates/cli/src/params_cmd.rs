@@ -20,6 +20,9 @@ pinjoint point --load 20000 --rpm 10 --params my-joint.toml\n  \
 pinjoint params --rig > rig.toml       # model and rig, for `pinjoint cycle --params rig.toml`"
 )]
 /// Arguments of `pinjoint params` (its `--help` text is the `#[command]` attribute's).
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct ParamsCmd {
     /// --params and --temperature: the file (and temperature) whose values are printed.
     #[command(flatten)]
