@@ -288,8 +288,8 @@ fn regime_points() -> Vec<(f64, f64)> {
     }
     // Many more rows so that the parallel chunks are exercised and order must be kept.
     for i in 0..3000 {
-        let t = i as f64 / 2999.0;
-        v.push((5e3 + 55e3 * ((i * 7919) % 3000) as f64 / 3000.0, -100.0 + 200.0 * t));
+        let t = f64::from(i) / 2999.0;
+        v.push((5e3 + 55e3 * f64::from((i * 7919) % 3000) / 3000.0, -100.0 + 200.0 * t));
     }
     v
 }
@@ -305,7 +305,7 @@ fn points_csv(points: &[(f64, f64)]) -> String {
 fn check_sweep_output(text: &str, points: &[(f64, f64)], joint: &Joint) {
     let (h, rows) = parse_csv(text);
     let mut expected = vec!["case".to_string(), "load".into(), "speed".into()];
-    expected.extend(RESULT_COLUMNS.iter().map(|s| s.to_string()));
+    expected.extend(RESULT_COLUMNS.iter().map(std::string::ToString::to_string));
     assert_eq!(h, expected);
     assert_eq!(rows.len(), points.len());
     let mut regimes = BTreeSet::new();
@@ -370,7 +370,7 @@ fn sweep_output_equals_the_library_bit_for_bit_in_input_order() {
     assert_eq!(o.stdout, "");
     let text = std::fs::read_to_string(&output).unwrap();
     check_sweep_output(&text, &pts, &joint());
-    assert_eq!(dir_names(d.path()), ["out.csv", "pts.csv"].iter().map(|s| s.to_string()).collect());
+    assert_eq!(dir_names(d.path()), ["out.csv", "pts.csv"].iter().map(std::string::ToString::to_string).collect());
 
     // Without --output, the same bytes on standard output.
     let o = run(&["sweep", "--input", input.to_str().unwrap()]);
@@ -523,7 +523,7 @@ fn map_writes_figure_4_csv_and_plots_from_the_library() {
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert_eq!(
         dir_names(&dir),
-        ["map.csv", "map_curves.svg", "map_friction.svg", "map_lambda.svg", "map_min_lambda.svg"].iter().map(|s| s.to_string()).collect()
+        ["map.csv", "map_curves.svg", "map_friction.svg", "map_lambda.svg", "map_min_lambda.svg"].iter().map(std::string::ToString::to_string).collect()
     );
     let (h, rows) = parse_csv(&std::fs::read_to_string(dir.join("map.csv")).unwrap());
     assert_eq!(&h[..3], &["load", "speed", "speed_rpm"]);

@@ -105,7 +105,7 @@ fn bad_files_are_named_with_line_column_and_unit() {
     // Angle in degrees: a whole record of ±40°.
     let mut text = String::from("time,angle,torque\n");
     for i in 0..2000 {
-        let t = i as f64 * 1e-3;
+        let t = f64::from(i) * 1e-3;
         text.push_str(&format!("{t},{},{}\n", 40.0 * (std::f64::consts::TAU * t).sin(), 60.0));
     }
     let e = fail(&["calibrate", "--input", s(&write("deg.csv", &text)), "--load", "20000", "--output", s(&out)]);

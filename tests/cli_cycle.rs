@@ -274,7 +274,7 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
         "fig13_torque_1Hz.csv",
     ];
     let names: BTreeSet<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
-    let expected: BTreeSet<String> = svgs.iter().chain(&csvs).chain(&["index.html", "README.md"]).map(|s| s.to_string()).collect();
+    let expected: BTreeSet<String> = svgs.iter().chain(&csvs).chain(&["index.html", "README.md"]).map(std::string::ToString::to_string).collect();
     assert_eq!(names, expected);
     for f in &expected {
         assert!(o.stdout.contains(&format!("wrote {}", dir.join(f).display())), "{f}: {}", o.stdout);

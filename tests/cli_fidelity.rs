@@ -86,7 +86,7 @@ fn a_point_outside_the_envelope_falls_back_and_says_so_once() {
 #[test]
 fn sweep_envelope_comes_from_the_input_and_rows_meet_the_bound() {
     let j = Joint::new(&Params::default()).unwrap();
-    let pts: Vec<(f64, f64)> = (0..40).map(|i| (5000.0 + 1375.0 * i as f64, 0.05 * 1.15f64.powi(i) * if i % 2 == 0 { 1.0 } else { -1.0 })).collect();
+    let pts: Vec<(f64, f64)> = (0..40).map(|i| (5000.0 + 1375.0 * f64::from(i), 0.05 * 1.15f64.powi(i) * if i % 2 == 0 { 1.0 } else { -1.0 })).collect();
     let csv: String = std::iter::once("load,speed".to_string()).chain(pts.iter().map(|(p, w)| format!("{p},{w}"))).collect::<Vec<_>>().join("\n");
     let dir = tempfile::tempdir().unwrap();
     let input = dir.path().join("p.csv");

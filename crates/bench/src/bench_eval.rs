@@ -13,21 +13,31 @@ use pinjoint::{Joint, Params};
 use std::hint::black_box;
 use std::time::Instant;
 
+/// What one fidelity level (or cold/warm full solve) measured along the benchmark path of one envelope.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EvalResult {
+    /// Name of the envelope (load and speed range) the path runs through, e.g. "rig: 5-60 kN, 0.01-10 rad/s".
     pub envelope: &'static str,
+    /// The configuration measured: fidelity level, tolerance, cold or warm.
     pub label: String,
     /// Median ns per evaluation along the path.
     pub ns: f64,
+    /// Largest relative error max |Δμ|/μ of the friction coefficient against the full solve, on the
+    /// path and random points of the envelope.
     pub mu_error: f64,
+    /// Largest relative error max |ΔT|/T of the friction torque against the full solve (see
+    /// [`pinjoint::fidelity::ErrorReport`]).
     pub torque_error: f64,
     /// The level's advertised bound (None for cold/warm full: the solver's own).
     pub bound: Option<f64>,
     /// Build time (s), cells and size of a table.
     pub build_seconds: f64,
+    /// Of a table: (load cells, speed cells, size in bytes); None for levels without a table.
     pub cells: Option<(usize, usize, usize)>,
 }
 
+/// The two envelopes measured, with their names: the rig's (5-60 kN, 0.01-10 rad/s) and a wide
+/// one reaching 100 rad/s.
 pub fn envelopes() -> [(&'static str, Envelope); 2] {
     [
         ("rig: 5-60 kN, 0.01-10 rad/s", Envelope::new(5e3, 60e3, 0.01, 10.0).expect("valid")),

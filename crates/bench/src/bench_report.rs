@@ -12,17 +12,27 @@ use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
+/// The FMU step timing of the report, measured by the fmpy script, or why it is missing.
 pub enum FmuSection {
+    /// The JSON the script printed (timings per FMU step).
     Measured(serde_json::Value),
+    /// Why there is no measurement (no FMU built, no Python with fmpy, the script failed).
     Unavailable(String),
 }
 
+/// Everything one `pinjoint-bench` run measured; rendered into BENCHMARKS.md.
 pub struct Report {
+    /// Whether the run was `--quick` (fewer repetitions and points; the report says so).
     pub quick: bool,
+    /// Speed against error per evaluation, one row per envelope and configuration.
     pub eval: Vec<EvalResult>,
+    /// Speed against error per rig run, one row per solver configuration.
     pub rig: Vec<RigResult>,
+    /// Time per FMU step, or why it was not measured.
     pub fmu: FmuSection,
+    /// The sweep throughput and SciPy comparison, or why they failed.
     pub throughput: std::result::Result<Throughput, String>,
+    /// Wall time of the whole benchmark run, in s.
     pub seconds: f64,
 }
 
@@ -309,7 +319,7 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
          work: times are noisy; the fastest and median repeats are shown). Every figure below comes from this one run.\n",
         if r.quick { " --quick (few cases, few repeats: NOT meaningful figures)" } else { "" },
         r.seconds,
-        std::thread::available_parallelism().map_or(0, |n| n.get())
+        std::thread::available_parallelism().map_or(0, std::num::NonZero::get)
     )
     .unwrap();
     let mut body = String::new();

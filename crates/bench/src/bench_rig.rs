@@ -17,12 +17,17 @@ use std::time::Instant;
 /// One configuration of the rig run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RigCase {
+    /// Group the case is plotted in (one curve per family).
     pub family: String,
+    /// Human-readable name of the case (method, formulation, setting).
     pub label: String,
+    /// ODE integrator of the rig.
     pub method: Method,
+    /// How stick at stroke reversal is formulated (hybrid or regularised).
     pub formulation: Formulation,
     /// rtol = atol for the adaptive methods; the step for RK4.
     pub setting: f64,
+    /// Output samples per stroke cycle.
     pub samples_per_cycle: usize,
     /// Friction fidelity: None = full solve; Some(tol) = table to that tolerance.
     pub table: Option<f64>,
@@ -38,16 +43,27 @@ pub struct RigResult {
     pub median_seconds: f64,
     /// Building the table (once per parameter set), s.
     pub build_seconds: f64,
+    /// Largest |ΔT| of the recorded torque against the reference run, divided by the reference's
+    /// peak |T| (dimensionless); NaN when the run failed.
     pub torque_error: f64,
+    /// Relative error of the eq. 11 cycle-average friction coefficient against the reference run;
+    /// NaN when the run failed.
     pub average_error: f64,
+    /// Integrator steps taken.
     pub steps: u64,
+    /// Steps where the solver fell back (as counted by the rig's statistics).
     pub fallbacks: u64,
+    /// Why the run failed, if it did (the errors are then NaN).
     pub error: Option<String>,
 }
 
+/// Stroke cycles each rig run simulates (at 1 Hz, 20 kN).
 pub const CYCLES: f64 = 10.0;
+/// Samples per cycle of the reference run the errors are measured against.
 pub const REFERENCE_SAMPLES: usize = 2000;
 
+/// The rig configuration of a case: the default rig at 1 Hz and 20 kN with the case's method,
+/// formulation and tolerance (rtol = atol) or RK4 step.
 pub fn config(case: &RigCase) -> RigConfig {
     let mut cfg = RigConfig::default();
     cfg.rig.frequency = 1.0;

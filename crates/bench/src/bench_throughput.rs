@@ -14,21 +14,28 @@ use std::time::Instant;
 /// A `pinjoint sweep` child process: wall time and peak resident memory.
 #[derive(Debug, Clone, Copy)]
 pub struct SweepRun {
+    /// Rows the sweep evaluated.
     pub rows: usize,
+    /// Wall time of the process, in s.
     pub seconds: f64,
+    /// Peak resident memory of the process, in MiB (from `getrusage`).
     pub peak_rss_mib: f64,
 }
 
 /// The SciPy reference on the first rows of the sweep's output.
 #[derive(Debug, Clone)]
 pub struct Scipy {
+    /// Points SciPy evaluated.
     pub points: usize,
+    /// SciPy's time per point, in s.
     pub seconds_per_point: f64,
     /// Largest relative difference from the library in μ, torque, h_c; absolute in the shares.
     pub max_difference: serde_json::Value,
+    /// Python, NumPy and SciPy versions used, as the script reported them.
     pub versions: String,
 }
 
+/// The throughput section of the report: the sweep process, the library per point, SciPy.
 #[derive(Debug, Clone)]
 pub struct Throughput {
     /// Fastest of the repeats, at the full row count.
@@ -39,7 +46,9 @@ pub struct Throughput {
     pub model_ns: f64,
     /// Library cold evaluation in the mixed regime (20 kN, 6 rad/s), ns, median of repeats.
     pub mixed_cold_ns: f64,
+    /// Worker threads of the rayon pool (the sweep's parallelism).
     pub threads: usize,
+    /// The SciPy reference, or why it could not run.
     pub scipy: Result<Scipy, String>,
 }
 

@@ -40,6 +40,10 @@ Examples:\n  \
 pinjoint calibrate --input a.csv --load 20000 --input b.csv --load 40000 --output out/cal\n  \
 pinjoint calibrate --input rig.csv --load 20000 --fit lubricant.viscosity --output out/cal --json"
 )]
+/// Arguments of `pinjoint calibrate` (its `--help` text is the `#[command]` attribute's).
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct CalibrateCmd {
     /// A record (CSV); repeat for several
     #[arg(long, value_name = "FILE", required = true)]
@@ -74,6 +78,8 @@ pub struct CalibrateCmd {
     pub json: bool,
 }
 
+/// Runs `pinjoint calibrate`: reads the recorded cycles, fits μ_c (and any --fit key) and
+/// writes the report. Fails on invalid flags, unreadable records, or a fit that cannot be made.
 pub fn run(cmd: &CalibrateCmd) -> Result<()> {
     if let Some(p) = cmd.load.iter().find(|p| !(p.is_finite() && **p > 0.0)) {
         return Err(CliError::Invalid(format!("--load = {p} N is invalid: it must be a finite number > 0 N")));
@@ -158,7 +164,7 @@ pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
     let text = std::fs::read(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
     let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).comment(Some(b'#')).from_reader(text.as_slice());
     let header: Vec<String> = rdr.headers().map_err(|e| bad(1, format!("unreadable CSV: {e}")))?.iter().map(str::to_string).collect();
-    let header_line = rdr.headers().ok().and_then(|h| h.position().map(|p| p.line())).unwrap_or(1);
+    let header_line = rdr.headers().ok().and_then(|h| h.position().map(csv::Position::line)).unwrap_or(1);
     let find = |name: &str| -> Result<Option<usize>> {
         let hits: Vec<usize> = header.iter().enumerate().filter(|(_, h)| *h == name).map(|(i, _)| i).collect();
         match hits.as_slice() {
@@ -182,8 +188,8 @@ pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
     };
     let mut r = Record { name: file.clone(), angle: ia.map(|_| Vec::new()), angular_velocity: iw.map(|_| Vec::new()), ..Record::default() };
     for rec in rdr.records() {
-        let rec = rec.map_err(|e| bad(e.position().map_or(0, |p| p.line()), format!("unreadable CSV: {e}")))?;
-        let line = rec.position().map_or(0, |p| p.line());
+        let rec = rec.map_err(|e| bad(e.position().map_or(0, csv::Position::line), format!("unreadable CSV: {e}")))?;
+        let line = rec.position().map_or(0, csv::Position::line);
         let num = |i: usize, name: &str, unit: &str| -> Result<f64> {
             let text = rec.get(i).ok_or_else(|| bad(line, format!("column {name} ({unit}) is missing: the row has {} field(s)", rec.len())))?;
             if text.is_empty() {

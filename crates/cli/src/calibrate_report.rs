@@ -123,8 +123,11 @@ pub fn svgs(c: &Calibration) -> Result<(String, String, String)> {
 
 /// A block of the report.
 enum Block {
+    /// A section heading.
     Heading(String),
+    /// A paragraph of text.
     Para(String),
+    /// A table: header cells, then rows of cells.
     Table(Vec<String>, Vec<Vec<String>>),
     /// An SVG plot: its file name and its index in the inline list.
     Plot(&'static str, usize),

@@ -12,7 +12,9 @@ pub const RAD_S_PER_RPM: f64 = 2.0 * PI / 60.0;
 
 /// The paper's rig experiments (section 4.4): ±40° sine strokes at up to 1 Hz under 5–60 kN.
 pub const RIG_AMPLITUDE_DEG: f64 = 40.0;
+/// Highest stroke frequency of the paper's rig experiments, in Hz.
 pub const RIG_MAX_FREQUENCY_HZ: f64 = 1.0;
+/// Radial load range of the paper's rig experiments (lowest, highest), in N.
 pub const RIG_LOAD_RANGE_N: (f64, f64) = (5e3, 60e3);
 /// The paper's simulated range (section 3.2): 1 to 800 rpm.
 pub const PAPER_RPM_RANGE: (f64, f64) = (1.0, 800.0);
@@ -22,7 +24,12 @@ pub fn rig_peak_speed() -> f64 {
     2.0 * PI * RIG_MAX_FREQUENCY_HZ * RIG_AMPLITUDE_DEG.to_radians()
 }
 
+/// The `--params FILE` (and `--temperature`) options shared by every command that evaluates the
+/// model.
 #[derive(Args, Debug, Clone)]
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct ParamsArg {
     /// Parameter file (TOML, SI units; any subset of keys, the rest keep the paper's values).
     /// `pinjoint params` prints a complete one to start from.
@@ -46,6 +53,8 @@ pub fn set_temperature(p: &mut Params, t: Option<f64>) -> Result<()> {
 }
 
 impl ParamsArg {
+    /// The parameters: the file's (missing keys keep the paper's values) or the defaults, with
+    /// --temperature applied. Fails if the file cannot be read or parsed, or a value is invalid.
     pub fn load(&self) -> Result<Params> {
         let mut p = match &self.params {
             None => Params::default(),
@@ -57,6 +66,8 @@ impl ParamsArg {
         set_temperature(&mut p, self.temperature)?;
         Ok(p)
     }
+    /// The joint built from [`ParamsArg::load`]'s parameters; fails if they are inconsistent (the
+    /// error names the file when there is one).
     pub fn joint(&self) -> Result<Joint> {
         let params = self.load()?;
         Joint::new(&params).map_err(|source| match &self.params {

@@ -35,6 +35,10 @@ Examples:\n  \
 pinjoint cycle --frequency 1 --amplitude 40 --load 20000 --cycles 3 --output out/1Hz\n  \
 pinjoint cycle --frequency 0.03 --amplitude 40 --load 60000 --cycles 2 --method dop853 --output out/slow"
 )]
+/// Arguments of `pinjoint cycle` (its `--help` text is the `#[command]` attribute's).
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct CycleCmd {
     /// Stroke frequency f, in Hz [default: the file's rig.frequency, else 1 Hz]
     #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
@@ -77,13 +81,22 @@ pub struct CycleCmd {
     pub fidelity: FidelityArgs,
 }
 
+/// `--formulation`: how stick at stroke reversal is modelled (see
+/// [`pinjoint::rig::Formulation`]).
 #[derive(Debug, Clone, Copy, ValueEnum)]
+// Variant docs would become the possible values' help in `pinjoint cycle --help` (clap's
+// ValueEnum), changing its text; the values are named after the `pinjoint::rig` types.
+#[allow(missing_docs)]
 pub enum FormulationArg {
     Hybrid,
     Regularised,
 }
 
+/// `--method`: the ODE integrator of the rig (see [`pinjoint::rig::Method`]).
 #[derive(Debug, Clone, Copy, ValueEnum)]
+// Variant docs would become the possible values' help in `pinjoint cycle --help` (clap's
+// ValueEnum), changing its text; the values are named after the `pinjoint::rig` types.
+#[allow(missing_docs)]
 pub enum MethodArg {
     Dopri5,
     Dop853,
@@ -93,6 +106,7 @@ pub enum MethodArg {
 /// Most strokes and samples one run may compute (the samples are streamed to cycle.csv; at
 /// most `cycle_stream::PLOT_SAMPLES` are kept for the plots).
 pub const MAX_CYCLES: usize = 100_000;
+/// Most samples one run may write (see [`MAX_CYCLES`]).
 pub const MAX_SAMPLES: usize = 20_000_000;
 
 /// The model and rig parameters of a file (model sections + `[rig]`), or the defaults.
@@ -164,6 +178,9 @@ fn counts(cmd: &CycleCmd) -> Result<(usize, usize, usize)> {
     Ok((n, skip, k))
 }
 
+/// Runs `pinjoint cycle`: simulates the strokes, streams cycle.csv, draws the plots and prints
+/// the eq. 11 cycle-average friction coefficient. Fails on invalid flags or parameters, or when
+/// the rig simulation cannot go on.
 pub fn run(cmd: &CycleCmd) -> Result<()> {
     refuse_files(&cmd.output, &["cycle.csv", "torque_time.svg", "torque_angle.svg"], cmd.params.as_ref())?;
     let cfg = config(cmd)?;

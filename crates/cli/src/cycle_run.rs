@@ -25,11 +25,14 @@ pub const CYCLE_COLUMNS: [&str; 10] = [
 /// A finished rig run of whole strokes and what the paper computes from it.
 #[derive(Debug, Clone)]
 pub struct CycleRun {
+    /// Model and rig parameters of the run (frequency, amplitude, load, solver).
     pub config: RigConfig,
     /// Strokes simulated (from rest at t = 0).
     pub cycles: usize,
     /// Strokes left out of the averages (start-up transient).
     pub skip: usize,
+    /// Samples kept for the plots: all of them up to [`crate::cycle_stream::PLOT_SAMPLES`], else
+    /// every k-th (every sample went to cycle.csv).
     pub samples: Vec<Sample>,
     /// Eq. 11: mean |recorded torque| over cycles skip+1..=cycles, divided by R·P.
     pub average_friction_coefficient: f64,
@@ -63,6 +66,7 @@ impl CycleRun {
         Ok(run)
     }
 
+    /// Stroke period 1/f, in s.
     pub fn period(&self) -> f64 {
         self.config.rig.period()
     }
@@ -82,6 +86,7 @@ impl CycleRun {
         TAU * self.config.rig.frequency * self.config.rig.amplitude
     }
 
+    /// Radial load P on the pin, in N.
     pub fn load(&self) -> f64 {
         self.config.rig.load
     }

@@ -8,6 +8,8 @@ use pinjoint::fidelity::{Envelope, Evaluation, Evaluator, Fidelity, Source};
 use pinjoint::Params;
 use std::sync::atomic::{AtomicBool, Ordering};
 
+/// The `--fidelity`, `--tolerance` and envelope options shared by `point` and `sweep`: which
+/// approximation of the model answers (see [`pinjoint::fidelity::Fidelity`]).
 #[derive(Args, Debug, Clone)]
 pub struct FidelityArgs {
     /// Fidelity level: full (complete solve), table (Stribeck map tabulated over the envelope

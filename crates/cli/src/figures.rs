@@ -38,6 +38,7 @@ the time-mean of |ω| over the averaged stroke. Progress is shown on standard er
 terminal. A full run takes a few seconds in a release build; --quick is coarser still.\n\n\
 Example:\n  pinjoint figures --output figures"
 )]
+/// Arguments of `pinjoint figures` (its `--help` text is the `#[command]` attribute's).
 pub struct FiguresCmd {
     /// Output directory (created if needed)
     #[arg(long, value_name = "DIR")]
@@ -159,6 +160,8 @@ fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius:
     Ok(paths)
 }
 
+/// Runs `pinjoint figures`: computes every figure on the built-in parameters and writes them,
+/// their data, README.md and index.html into the output directory.
 pub fn run(cmd: &FiguresCmd) -> Result<()> {
     let start = Instant::now();
     let cfg = RigConfig::default();

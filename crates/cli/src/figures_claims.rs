@@ -54,6 +54,7 @@ pub struct Claim {
     pub paper: String,
     /// What this model gives, with numbers.
     pub model: String,
+    /// Whether the model reproduces the statement.
     pub verdict: Verdict,
     /// Why, where known.
     pub reason: String,
@@ -95,7 +96,7 @@ fn region(joint: &Joint) -> Result<(f64, f64, f64, f64)> {
     let (mut mu, mut lambda, mut s_hi, mut s_lo) = (f64::INFINITY, 0.0f64, 0.0f64, f64::INFINITY);
     for &p in &PAPER_LOADS {
         for k in 0..60 {
-            let n = PAPER_RPM.0 * (PAPER_RPM.1 / PAPER_RPM.0).powf(k as f64 / 59.0);
+            let n = PAPER_RPM.0 * (PAPER_RPM.1 / PAPER_RPM.0).powf(f64::from(k) / 59.0);
             let o = joint.evaluate(p, rpm(n))?;
             mu = mu.min(o.friction_coefficient);
             lambda = lambda.max(o.lambda_ratio);
@@ -110,7 +111,7 @@ fn region(joint: &Joint) -> Result<(f64, f64, f64, f64)> {
 fn monotone(joint: &Joint, load: f64, up: bool, q: impl Fn(&OperatingPoint) -> f64) -> Result<bool> {
     let mut prev: Option<f64> = None;
     for k in 0..60 {
-        let n = PAPER_RPM.0 * (PAPER_RPM.1 / PAPER_RPM.0).powf(k as f64 / 59.0);
+        let n = PAPER_RPM.0 * (PAPER_RPM.1 / PAPER_RPM.0).powf(f64::from(k) / 59.0);
         let v = q(&joint.evaluate(load, rpm(n))?);
         if let Some(p) = prev
             && (if up { v <= p } else { v >= p })
@@ -185,7 +186,7 @@ pub fn claims(joint: &Joint, results: &[RigResult], amplitude: f64) -> Result<Ve
     let mu_down = monotone(joint, 20e3, false, |o| o.friction_coefficient)?;
     // Where μ is lowest over 1–800 rpm at 20 kN (200 speeds, log-spaced).
     let (n_min, mu_lowest) = (0..200)
-        .map(|k| PAPER_RPM.0 * (PAPER_RPM.1 / PAPER_RPM.0).powf(k as f64 / 199.0))
+        .map(|k| PAPER_RPM.0 * (PAPER_RPM.1 / PAPER_RPM.0).powf(f64::from(k) / 199.0))
         .map(|n| Ok((n, at(20e3, n)?.friction_coefficient)))
         .collect::<Result<Vec<_>>>()?
         .into_iter()
@@ -629,7 +630,7 @@ mod tests {
             // (the reversals). Measured: 3e-6 relative at 5 kN, 1 Hz; 2.6e-5 at 5 kN, 3 Hz (the end of
             // Figure 8's curves), far below what a plot shows. A finer midpoint sum must come closer.
             assert!((ours / reference - 1.0).abs() < 1e-4, "{p} N, {f} Hz: {ours} vs {reference}");
-            let fine = (0..8192).map(|k| mu(TAU * (k as f64 + 0.5) / 8192.0)).sum::<f64>() / 8192.0;
+            let fine = (0..8192).map(|k| mu(TAU * (f64::from(k) + 0.5) / 8192.0)).sum::<f64>() / 8192.0;
             assert!((fine - reference).abs() <= (ours - reference).abs() + 1e-12, "{p} N, {f} Hz: {fine} vs {ours} vs {reference}");
             // And it is mean|T| / (R·P) of the core's torque over the stroke (eq. 11 read backwards).
             let torque = |phi: f64| j.evaluate(p, peak * phi.cos()).unwrap().torque;

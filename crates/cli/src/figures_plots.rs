@@ -37,6 +37,7 @@ pub struct CoreCurves {
     pub s_per_rad_s: Vec<f64>,
     /// Loads (N) of the curves of Figure 10 and, per paper frequency, the stroke average at each.
     pub loads: Vec<f64>,
+    /// Per paper frequency, the stroke-average μ at each of `loads` (Figure 10).
     pub stroke_averages: Vec<Vec<f64>>,
     /// The Sommerfeld number per rad/s at each of `loads`.
     pub load_s_per_rad_s: Vec<f64>,
@@ -46,6 +47,8 @@ pub struct CoreCurves {
 }
 
 impl CoreCurves {
+    /// Computes the curves for strokes of `amplitude` (rad) with `points` frequencies per curve;
+    /// fails if the model cannot be evaluated at a point.
     pub fn compute(joint: &Joint, amplitude: f64, points: usize) -> Result<Self> {
         let frequencies = log_space(CURVE_FREQUENCIES.0, CURVE_FREQUENCIES.1, points);
         let curves = PAPER_LOADS

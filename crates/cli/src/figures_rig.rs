@@ -16,13 +16,17 @@ use rayon::prelude::*;
 pub const PAPER_FREQUENCIES: [f64; 3] = [0.03, 0.3, 1.0];
 /// Strokes per run: the first (from rest) is left out of every average and plot.
 pub const CYCLES: usize = 2;
+/// Strokes left out of the averages at the start of each run (the one from rest).
 pub const SKIP: usize = 1;
 
 /// How finely the rig runs are resolved.
 #[derive(Debug, Clone, Copy)]
 pub struct RigSettings {
+    /// Output samples per stroke.
     pub samples_per_cycle: usize,
+    /// Relative tolerance of the rig's adaptive ODE solver.
     pub rtol: f64,
+    /// Absolute tolerance of the rig's adaptive ODE solver.
     pub atol: f64,
 }
 
@@ -42,6 +46,7 @@ impl RigSettings {
 /// One test condition's run and what is read from it.
 #[derive(Debug, Clone)]
 pub struct RigResult {
+    /// The simulated strokes.
     pub run: CycleRun,
     /// The core's Sommerfeld number at the run's mean |ω| (eq. 20).
     pub sommerfeld: f64,
@@ -49,6 +54,7 @@ pub struct RigResult {
     pub quasi_static_average: f64,
     /// The core's μ at the command's peak speed 2πfA.
     pub quasi_static_peak: f64,
+    /// Measures of the recorded torque over the averaged stroke.
     pub shape: StrokeShape,
 }
 
@@ -61,6 +67,7 @@ pub struct StrokeShape {
     pub outer_torque: f64,
     /// The same two means of the core's quasi-static torque μ(P, |ω|)·R·P at those samples.
     pub mid_core: f64,
+    /// The core's quasi-static torque averaged like `outer_torque`, N·m.
     pub outer_core: f64,
     /// Fraction of the time stuck (at the reversals).
     pub stuck_fraction: f64,
@@ -80,6 +87,7 @@ impl StrokeShape {
         (self.outer_torque - self.mid_torque) / self.outer_torque
     }
 
+    /// Measures the averaged strokes of `run`.
     pub fn of(run: &CycleRun) -> Self {
         let a = run.config.rig.amplitude;
         let r = run.config.model.geometry.pin_radius;

@@ -71,7 +71,9 @@ fn crossing(joint: &Joint, load: f64, lo: f64, hi: f64, level: f64, f: fn(&Opera
 /// One row of the summary.
 #[derive(Debug, Clone, Copy)]
 pub struct SummaryRow {
+    /// Oil layer thickness h_oil at the inlet, in m (None: flooded, the paper's model).
     pub layer: Option<f64>,
+    /// Radial load, in N.
     pub load: f64,
     /// rpm where μ first falls below 0.11 in 1–800 rpm (None: never).
     pub mu_crossing_rpm: Option<f64>,
@@ -81,6 +83,7 @@ pub struct SummaryRow {
     pub mu_800: f64,
     /// λ (central film) at 1 rpm and at 800 rpm.
     pub lambda_1: f64,
+    /// λ (central film) at 800 rpm.
     pub lambda_800: f64,
     /// The 1 Hz stroke's torque dip: 1 − T(peak speed)/T(at 75 % of the amplitude).
     pub dip_1hz: f64,
@@ -148,7 +151,7 @@ pub fn write(dir: &Path, params: &Params) -> Result<Vec<PathBuf>> {
 
     // The 1 Hz, ±40° commanded stroke: θ = A sin 2πft, ω = 2πfA cos 2πft; T = μ(P, |ω|) R P.
     let a = RIG_AMPLITUDE_DEG.to_radians();
-    let times: Vec<f64> = (0..=400).map(|i| i as f64 / 400.0).collect();
+    let times: Vec<f64> = (0..=400).map(|i| f64::from(i) / 400.0).collect();
     let mut charts = Vec::new();
     let mut cycle_rows = Vec::new();
     for (k, &p) in [20e3, 60e3].iter().enumerate() {

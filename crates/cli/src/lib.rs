@@ -53,14 +53,21 @@ Examples:
 
 Run `pinjoint <command> --help` for each command's details.";
 
+/// The `pinjoint` command line: the parsed arguments (its `--help` text is set by the
+/// `#[command]` attributes, which take precedence over this comment).
 #[derive(Parser, Debug)]
 #[command(name = "pinjoint", version, about = "Friction torque of a grease-lubricated landing-gear pin joint (mixed lubrication)", long_about = LONG_ABOUT)]
 pub struct Cli {
+    /// The subcommand to run.
     #[command(subcommand)]
     pub command: Command,
 }
 
+/// The subcommands; each variant holds its command's arguments and help text.
 #[derive(Subcommand, Debug)]
+// A variant's doc comment would replace its command's `about`/`long_about` in `--help`
+// (clap applies it after the struct's); each command is documented on its struct instead.
+#[allow(missing_docs)]
 pub enum Command {
     Params(params_cmd::ParamsCmd),
     Point(point::PointCmd),
@@ -72,6 +79,7 @@ pub enum Command {
     Calibrate(calibrate::CalibrateCmd),
 }
 
+/// Runs the parsed command; the error is what [`main`] prints.
 pub fn run(cli: &Cli) -> error::Result<()> {
     match &cli.command {
         Command::Params(c) => params_cmd::run(c),

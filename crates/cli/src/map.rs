@@ -28,6 +28,7 @@ Examples:\n  \
 pinjoint map --output out/fig4\n  \
 pinjoint map --min-rpm 0.1 --max-rpm 5000 --speeds 150 --output out/wide"
 )]
+/// Arguments of `pinjoint map` (its `--help` text is the `#[command]` attribute's).
 pub struct MapCmd {
     /// Lowest load, in N
     #[arg(long, value_name = "N", default_value_t = 5e3, allow_negative_numbers = true)]
@@ -47,6 +48,7 @@ pub struct MapCmd {
     /// Number of speeds, log-spaced (>= 2)
     #[arg(long, value_name = "COUNT", default_value_t = 100)]
     pub speeds: usize,
+    /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
     /// Output directory (created if needed)
@@ -60,7 +62,9 @@ pub const PAPER_LOADS: [f64; 5] = [5e3, 10e3, 20e3, 40e3, 60e3];
 /// The map grid: loads (N) and speeds (rad/s).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Grid {
+    /// Loads, in N, evenly spaced.
     pub loads: Vec<f64>,
+    /// Speeds, in rad/s, log-spaced.
     pub speeds: Vec<f64>,
 }
 
@@ -127,14 +131,15 @@ fn curves_plot(joint: &Joint, g: &Grid) -> Result<String> {
     Ok(stacked_plot("Pin joint operation at the paper's loads", &[lambda, mu], (900, 1000))?)
 }
 
-/// Write the CSV and the three plots into `dir`; returns their paths.
-/// `inputs`: the command's input files, never overwritten.
 /// Most loads (and most speeds) of one map: at most 1000 × 1000 = 1e6 solves.
 pub const MAX_GRID_SIDE: usize = 1000;
 
 /// The files `map` writes into its directory.
 pub const MAP_FILES: &[&str] = &["map.csv", "map_lambda.svg", "map_friction.svg", "map_curves.svg"];
 
+/// Write the CSV and the three plots ([`MAP_FILES`]) into `dir`; returns their paths.
+/// `inputs`: the command's input files, never overwritten. Fails if a point cannot be
+/// evaluated or a file cannot be written.
 pub fn write_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
     let ops = evaluate(joint, g)?;
     let lambda = map_plot(
@@ -180,6 +185,7 @@ pub fn write_min_lambda_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Gri
     Ok(path)
 }
 
+/// Runs `pinjoint map`: checks the flags, evaluates the grid and writes the map files.
 pub fn run(cmd: &MapCmd) -> Result<()> {
     refuse_files(&cmd.output, MAP_FILES, cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;

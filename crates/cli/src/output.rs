@@ -43,10 +43,10 @@ pub fn refuse_inputs(outputs: &[&Path], inputs: &[&Path]) -> Result<()> {
     for out in outputs {
         let Ok(out_meta) = fs::metadata(out) else { continue };
         for input in inputs {
-            if let Some(in_meta) = input_metadata(input) {
-                if identity(&in_meta) == identity(&out_meta) {
-                    return Err(CliError::SameFile { output: out.to_path_buf(), input: input.to_path_buf() });
-                }
+            if let Some(in_meta) = input_metadata(input)
+                && identity(&in_meta) == identity(&out_meta)
+            {
+                return Err(CliError::SameFile { output: out.to_path_buf(), input: input.to_path_buf() });
             }
         }
     }

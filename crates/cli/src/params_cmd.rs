@@ -19,7 +19,12 @@ pinjoint params > my-joint.toml        # start a parameter file, then edit it\n 
 pinjoint point --load 20000 --rpm 10 --params my-joint.toml\n  \
 pinjoint params --rig > rig.toml       # model and rig, for `pinjoint cycle --params rig.toml`"
 )]
+/// Arguments of `pinjoint params` (its `--help` text is the `#[command]` attribute's).
+// The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
+// intra-doc links; rewording them would change --help.
+#[allow(rustdoc::broken_intra_doc_links)]
 pub struct ParamsCmd {
+    /// --params and --temperature: the file (and temperature) whose values are printed.
     #[command(flatten)]
     pub params: ParamsArg,
     /// Also print the [rig] section (the file then suits `pinjoint cycle --params`)
@@ -27,6 +32,8 @@ pub struct ParamsCmd {
     pub rig: bool,
 }
 
+/// Runs `pinjoint params`: prints the parameter file (with --rig, the rig section too) to
+/// standard output. Fails if --params cannot be read or holds invalid values.
 pub fn run(cmd: &ParamsCmd) -> Result<()> {
     let text = if cmd.rig { load_rig_config(cmd.params.params.as_ref())?.to_toml_string() } else { cmd.params.load()?.to_toml_string() };
     to_stdout(|w| w.write_all(text.as_bytes()))

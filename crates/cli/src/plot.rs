@@ -18,7 +18,10 @@ use std::fmt;
 
 /// A rendering failure (from plotters), as text.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PlotError(pub String);
+pub struct PlotError(
+    /// plotters' error message.
+    pub String,
+);
 
 impl fmt::Display for PlotError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -34,6 +37,7 @@ fn err<E: fmt::Display>(e: E) -> PlotError {
 /// Axis scale.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Scale {
+    /// Linear axis.
     Linear,
     /// Base-10 logarithmic; non-positive values are left out of the plot.
     Log,
@@ -42,19 +46,24 @@ pub enum Scale {
 /// One axis: its label (with the unit), scale and optional fixed range.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis {
+    /// Axis label, with the unit, e.g. "speed [rad/s]".
     pub label: String,
+    /// Linear or logarithmic.
     pub scale: Scale,
     /// `None`: fitted to the data.
     pub range: Option<(f64, f64)>,
 }
 
 impl Axis {
+    /// A linear axis fitted to the data.
     pub fn linear(label: impl Into<String>) -> Self {
         Self { label: label.into(), scale: Scale::Linear, range: None }
     }
+    /// A base-10 logarithmic axis fitted to the data.
     pub fn log(label: impl Into<String>) -> Self {
         Self { label: label.into(), scale: Scale::Log, range: None }
     }
+    /// The same axis with the fixed range `lo..hi` (in the axis's unit).
     pub fn with_range(mut self, lo: f64, hi: f64) -> Self {
         self.range = Some((lo, hi));
         self
@@ -64,9 +73,13 @@ impl Axis {
 /// How a series is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Style {
+    /// A solid line.
     Line,
+    /// A dashed line.
     Dashed,
+    /// Filled circles at the points, no line.
     Points,
+    /// A solid line with circles at the points.
     LinePoints,
     /// Crosses at the points, no line.
     Crosses,
@@ -76,17 +89,22 @@ pub enum Style {
 /// break the line instead of being drawn.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
+    /// Legend entry; an empty name leaves the series out of the legend.
     pub name: String,
+    /// The (x, y) points, in the axes' units, in drawing order.
     pub points: Vec<(f64, f64)>,
+    /// How the series is drawn.
     pub style: Style,
     /// Index into [`PALETTE`]; `None`: the series' position in the chart.
     pub colour: Option<usize>,
 }
 
 impl Series {
+    /// A solid-line series in the next palette colour.
     pub fn line(name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
         Self { name: name.into(), points, style: Style::Line, colour: None }
     }
+    /// The same series drawn with `style`.
     pub fn styled(mut self, style: Style) -> Self {
         self.style = style;
         self
@@ -101,24 +119,33 @@ impl Series {
 /// A shaded range of x (e.g. an operating range), shown in the legend.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Band {
+    /// Lower end of the range, in the x axis's unit.
     pub from: f64,
+    /// Upper end of the range, in the x axis's unit.
     pub to: f64,
+    /// Legend entry of the band.
     pub label: String,
 }
 
 /// Dashed vertical lines at `xs` (e.g. the ends of a range), one legend entry.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Marker {
+    /// x positions of the lines, in the x axis's unit.
     pub xs: Vec<f64>,
+    /// Legend entry of the lines.
     pub label: String,
 }
 
 /// Where the legend sits.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Corner {
+    /// Top left.
     UpperLeft,
+    /// Top right (the default).
     UpperRight,
+    /// Bottom left.
     LowerLeft,
+    /// Bottom right.
     LowerRight,
 }
 
@@ -136,31 +163,43 @@ impl Corner {
 /// A line chart.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Chart {
+    /// Title above the chart.
     pub title: String,
+    /// Horizontal axis.
     pub x: Axis,
+    /// Vertical axis.
     pub y: Axis,
+    /// Curves and point sets, drawn in order.
     pub series: Vec<Series>,
+    /// Shaded x ranges behind the series.
     pub bands: Vec<Band>,
+    /// Dashed vertical lines.
     pub markers: Vec<Marker>,
+    /// Where the legend sits.
     pub legend: Corner,
 }
 
 impl Chart {
+    /// An empty chart with the legend at the upper right.
     pub fn new(title: impl Into<String>, x: Axis, y: Axis) -> Self {
         Self { title: title.into(), x, y, series: Vec::new(), bands: Vec::new(), markers: Vec::new(), legend: Corner::UpperRight }
     }
+    /// Adds a series.
     pub fn series(mut self, s: Series) -> Self {
         self.series.push(s);
         self
     }
+    /// Adds a shaded x range `from..to` with its legend label.
     pub fn band(mut self, from: f64, to: f64, label: impl Into<String>) -> Self {
         self.bands.push(Band { from, to, label: label.into() });
         self
     }
+    /// Adds dashed vertical lines at `xs` with one legend label.
     pub fn marker(mut self, xs: &[f64], label: impl Into<String>) -> Self {
         self.markers.push(Marker { xs: xs.to_vec(), label: label.into() });
         self
     }
+    /// Moves the legend to `corner`.
     pub fn legend(mut self, corner: Corner) -> Self {
         self.legend = corner;
         self
@@ -263,7 +302,7 @@ pub fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
             bold.extend(mantissas.iter().map(|m| m * p).filter(inside));
         }
         if decades <= 8.0 {
-            light.extend((1..10).map(|m| m as f64 * p).filter(inside));
+            light.extend((1..10).map(|m| f64::from(m) * p).filter(inside));
         }
     }
     (bold, light)
@@ -517,24 +556,34 @@ fn split_segments(points: &[(f64, f64)], xs: Scale, ys: Scale) -> Vec<Vec<(f64, 
 /// An outlined rectangle on a heat map (e.g. an operating region), shown in the legend.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Region {
+    /// x range (from, to), in the x axis's unit.
     pub x: (f64, f64),
+    /// y range (from, to), in the y axis's unit.
     pub y: (f64, f64),
+    /// Legend entry of the rectangle.
     pub label: String,
 }
 
 /// A value `z[iy][ix]` over grid centres `xs` × `ys` (both increasing).
 #[derive(Debug, Clone, PartialEq)]
 pub struct HeatMap {
+    /// Title above the map.
     pub title: String,
+    /// Horizontal axis (its range is that of `xs`).
     pub x: Axis,
+    /// Vertical axis (its range is that of `ys`).
     pub y: Axis,
+    /// Grid centres along x, increasing.
     pub xs: Vec<f64>,
+    /// Grid centres along y, increasing.
     pub ys: Vec<f64>,
+    /// The values, `z[iy][ix]`, in the unit of `z_axis`.
     pub z: Vec<Vec<f64>>,
     /// Colour-bar label (quantity and unit) and scale; a fixed range clamps the colours.
     pub z_axis: Axis,
     /// Contour levels drawn as labelled black lines.
     pub contours: Vec<f64>,
+    /// Outlined rectangles drawn over the map.
     pub regions: Vec<Region>,
 }
 
@@ -554,7 +603,7 @@ pub fn viridis(t: f64) -> RGBColor {
     let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) } * (STOPS.len() - 1) as f64;
     let i = (t.floor() as usize).min(STOPS.len() - 2);
     let f = t - i as f64;
-    let lerp = |a: u8, b: u8| (a as f64 + f * (b as f64 - a as f64)).round() as u8;
+    let lerp = |a: u8, b: u8| (f64::from(a) + f * (f64::from(b) - f64::from(a))).round() as u8;
     let (a, b) = (STOPS[i], STOPS[i + 1]);
     RGBColor(lerp(a.0, b.0), lerp(a.1, b.1), lerp(a.2, b.2))
 }
@@ -821,7 +870,7 @@ mod tests {
         // rounded to whole pixels): every vertex lies within a pixel of its dot, and the line is
         // not rounded (a gentle slope over 400 px would otherwise step one pixel at a time).
         for (xs, ys) in [(Scale::Linear, Scale::Linear), (Scale::Log, Scale::Linear), (Scale::Linear, Scale::Log)] {
-            let pts: Vec<(f64, f64)> = (1..=60).map(|k| (k as f64, 10.0 + 0.05 * k as f64)).collect();
+            let pts: Vec<(f64, f64)> = (1..=60).map(|k| (f64::from(k), 10.0 + 0.05 * f64::from(k))).collect();
             let axis = |s: Scale, name: &str| if s == Scale::Log { Axis::log(name) } else { Axis::linear(name) };
             let c = Chart::new("", axis(xs, "x"), axis(ys, "y"))
                 .series(Series::line("line", pts.clone()))
@@ -904,8 +953,8 @@ mod tests {
 
     #[test]
     fn colour_bar_labels_stand_clear_of_the_bar_and_inside_the_image() {
-        let xs: Vec<f64> = (0..20).map(|i| 1.0 + i as f64).collect();
-        let ys: Vec<f64> = (0..10).map(|j| 5.0 + 6.0 * j as f64).collect();
+        let xs: Vec<f64> = (0..20).map(|i| 1.0 + f64::from(i)).collect();
+        let ys: Vec<f64> = (0..10).map(|j| 5.0 + 6.0 * f64::from(j)).collect();
         let h = HeatMap {
             title: "mu".into(),
             x: Axis::log("speed [rpm]"),

@@ -24,15 +24,19 @@ With --fidelity other than full, the level is built over the envelope (by defaul
 [|ω|/2, 2|ω|] around the point) and standard error says which level answered and its measured \
 error bound."
 )]
+/// Arguments of `pinjoint point` (its `--help` text is the `#[command]` attribute's).
 pub struct PointCmd {
     /// Normal load on the joint P_T, in N (newtons; 20000 = 20 kN); its magnitude is used
     /// (a signed reaction component: -P gives the answer at +P); |P_T| must be > 0
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub load: f64,
+    /// --speed or --rpm: the pin's angular velocity.
     #[command(flatten)]
     pub speed: SpeedArg,
+    /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
+    /// --fidelity, --tolerance and the envelope.
     #[command(flatten)]
     pub fidelity: FidelityArgs,
     /// Print one JSON object (keys in SI units) instead of the table
@@ -40,6 +44,7 @@ pub struct PointCmd {
     pub json: bool,
 }
 
+/// The pin's angular velocity, given as exactly one of --speed (rad/s) and --rpm.
 #[derive(Args, Debug, Clone)]
 #[group(required = true, multiple = false)]
 pub struct SpeedArg {
@@ -65,23 +70,39 @@ impl SpeedArg {
 /// The JSON form of a point: the documented keys first, then extras (all SI).
 #[derive(Serialize)]
 pub struct PointJson {
+    /// Normal load P_T, in N.
     pub load: f64,
     /// rad/s, as given (the model uses |speed|).
     pub speed: f64,
+    /// Friction coefficient μ (eq. 10), dimensionless.
     pub friction_coefficient: f64,
+    /// Friction torque magnitude T = μ·R·P_T (eq. 11), in N·m.
     pub torque: f64,
+    /// Central film thickness h_c, in m.
     pub film_thickness: f64,
+    /// Film parameter λ = h_c/√(σ² + σ_b²) (eq. 21 with the central film), dimensionless.
     pub lambda_ratio: f64,
+    /// Share of the load carried by the fluid film, 1/γ1.
     pub fluid_load_fraction: f64,
+    /// Share of the load carried by the asperities, 1/γ2.
     pub asperity_load_fraction: f64,
+    /// Hertz mean pressure p_m (eq. 6), in Pa.
     pub mean_pressure: f64,
+    /// Hertz contact half-width a (eq. 6), in m.
     pub contact_half_width: f64,
+    /// Sommerfeld number S (eq. 20), dimensionless.
     pub sommerfeld_number: f64,
+    /// Lubrication regime: "boundary", "mixed" or "full-film".
     pub regime: &'static str,
+    /// Sliding speed u = |ω|·R, in m/s.
     pub sliding_speed: f64,
+    /// Hertz peak pressure p0 (eq. 6), in Pa.
     pub peak_pressure: f64,
+    /// Roelands viscosity at p_m (eq. 5), in Pa·s (+∞ where eq. 5 overflows).
     pub contact_viscosity: f64,
+    /// The fluid (Bair–Winer, eq. 3) part of μ, Q_H/P_T.
     pub fluid_friction_coefficient: f64,
+    /// The asperity (eq. 8) part of μ, μ_c/γ2.
     pub asperity_friction_coefficient: f64,
     /// h_min (m), Pan–Hamrock ratio on h_c (extension; `pinjoint::min_film`).
     pub min_film_thickness: f64,
@@ -89,7 +110,9 @@ pub struct PointJson {
     pub min_lambda_ratio: f64,
     /// Lubricant temperature (K) and the viscosity η0 and α at it.
     pub temperature: f64,
+    /// Inlet (ambient-pressure) viscosity η0 at `temperature`, in Pa·s.
     pub inlet_viscosity: f64,
+    /// Pressure-viscosity coefficient α at `temperature`, in 1/Pa.
     pub pressure_viscosity_coefficient: f64,
 }
 
@@ -157,6 +180,9 @@ pub fn table(o: &OperatingPoint) -> Vec<(&'static str, String, &'static str)> {
     ]
 }
 
+/// Runs `pinjoint point`: evaluates the model at one load and speed and prints the table or
+/// JSON to standard output. Fails on invalid flags or parameters, or if the model cannot be
+/// evaluated there.
 pub fn run(cmd: &PointCmd) -> Result<()> {
     let joint = cmd.params.joint()?;
     let omega = cmd.speed.rad_per_s()?;

@@ -24,6 +24,7 @@ Examples:\n  \
 pinjoint stribeck --load 20000 --output out/fig3\n  \
 pinjoint stribeck --load 60000 --min-rpm 0.1 --max-rpm 10000 --points 200 --output out/60kN"
 )]
+/// Arguments of `pinjoint stribeck` (its `--help` text is the `#[command]` attribute's).
 pub struct StribeckCmd {
     /// Normal load P_T, in N (20000 for the paper's Figure 3)
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
@@ -43,6 +44,7 @@ pub struct StribeckCmd {
     /// Number of speeds, log-spaced from the lowest to the highest (>= 2)
     #[arg(long, value_name = "COUNT", default_value_t = 121)]
     pub points: usize,
+    /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
     /// Output directory (created if needed)
@@ -50,6 +52,7 @@ pub struct StribeckCmd {
     pub output: PathBuf,
 }
 
+/// Default speed range of the curve (lowest, highest), in rad/s.
 pub const DEFAULT_SPEED_RANGE: (f64, f64) = (0.01, 1000.0);
 
 /// A speed-range end from rad/s or rpm flags, validated (> 0, finite), in rad/s.
@@ -125,6 +128,7 @@ pub fn write_stribeck(dir: &Path, inputs: &[&Path], joint: &Joint, load: f64, sp
 /// Most points of one Stribeck curve.
 pub const MAX_POINTS: usize = 100_000;
 
+/// Runs `pinjoint stribeck`: evaluates the curve and writes stribeck.csv and stribeck.svg.
 pub fn run(cmd: &StribeckCmd) -> Result<()> {
     refuse_files(&cmd.output, &["stribeck.csv", "stribeck.svg"], cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;

@@ -47,6 +47,7 @@ the input's own load range and |speed| range (or --envelope-load/--envelope-spee
 standard error says which level answered (what auto picked) and the error bound it measured. \
 Rows outside a given envelope are answered by the full solve (said once on standard error)."
 )]
+/// Arguments of `pinjoint sweep` (its `--help` text is the `#[command]` attribute's).
 pub struct SweepCmd {
     /// Input CSV with columns `load` (N) and `speed` (rad/s); `-` reads standard input
     #[arg(long, value_name = "FILE.csv")]
@@ -54,8 +55,10 @@ pub struct SweepCmd {
     /// Output CSV (written atomically); standard output when absent or `-`
     #[arg(long, value_name = "FILE.csv")]
     pub output: Option<PathBuf>,
+    /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
+    /// --fidelity, --tolerance and the envelope.
     #[command(flatten)]
     pub fidelity: FidelityArgs,
 }
@@ -244,10 +247,10 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
         }
         w.write_record(None::<&[u8]>).map_err(io)?;
     }
-    if let (Mode::Level { pool, .. }, Some(ev)) = (mode, ev) {
-        if let Ok(mut p) = pool.lock() {
-            p.push(ev);
-        }
+    if let (Mode::Level { pool, .. }, Some(ev)) = (mode, ev)
+        && let Ok(mut p) = pool.lock()
+    {
+        p.push(ev);
     }
     if let Some(w) = wtr {
         out.text = w.into_inner().map_err(|e| CliError::Invalid(format!("formatting a row: {}", e.error())))?;
@@ -319,7 +322,7 @@ fn open(path: &Path, rewindable: bool) -> Result<(Box<dyn ReadSeek>, Option<u64>
         return Ok((Box::new(io::BufReader::with_capacity(1 << 16, tmp)), len));
     }
     let f = std::fs::File::open(path).map_err(read_err)?;
-    let len = f.metadata().ok().filter(|m| m.is_file()).map(|m| m.len());
+    let len = f.metadata().ok().filter(std::fs::Metadata::is_file).map(|m| m.len());
     Ok((Box::new(io::BufReader::with_capacity(1 << 16, f)), len))
 }
 
@@ -344,7 +347,7 @@ impl<T: BufRead> BufRead for Unseekable<T> {
         self.0.fill_buf()
     }
     fn consume(&mut self, n: usize) {
-        self.0.consume(n)
+        self.0.consume(n);
     }
 }
 impl<T: BufRead> ReadSeek for Unseekable<T> {
@@ -367,6 +370,9 @@ fn progress(len: Option<u64>) -> ProgressBar {
     }
 }
 
+/// Runs `pinjoint sweep`: evaluates every row of the input in parallel and writes the output
+/// CSV in the input's row order. Fails on an unreadable file, a bad row (with its line) or a
+/// point the model cannot evaluate.
 pub fn run(cmd: &SweepCmd) -> Result<()> {
     let mut inputs: Vec<&Path> = vec![cmd.input.as_path()];
     inputs.extend(cmd.params.params.as_deref());
@@ -428,7 +434,7 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         }
         r.map(|_| ()).map_err(|e| {
             let msg = e.to_string();
-            *failure.lock().unwrap_or_else(|p| p.into_inner()) = Some(e);
+            *failure.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(e);
             io::Error::other(msg)
         })
     };
@@ -436,7 +442,7 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         Some(path) if !is_stdio(path) => write_atomic(path, &inputs, fill),
         _ => to_stdout(fill),
     };
-    match failure.into_inner().unwrap_or_else(|p| p.into_inner()) {
+    match failure.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner) {
         Some(e) => Err(e),
         None => written,
     }

@@ -18,22 +18,29 @@ pub const MAX_RECORD_BYTES: u64 = 1 << 20;
 /// the 1-based line on which it starts.
 #[derive(Debug, Clone, Copy)]
 pub struct Record {
+    /// Byte offset of the record's first byte in [`Batch::text`].
     pub start: usize,
+    /// Byte offset just past the record's last byte (terminator excluded).
     pub end: usize,
+    /// 1-based line number on which the record starts.
     pub line: u64,
 }
 
 /// Consecutive records and the text that holds them.
 #[derive(Debug, Default)]
 pub struct Batch {
+    /// The raw bytes of the records.
     pub text: Vec<u8>,
+    /// The records, in input order.
     pub records: Vec<Record>,
 }
 
 impl Batch {
+    /// The bytes of record `r` (without its line terminator).
     pub fn bytes(&self, r: &Record) -> &[u8] {
         &self.text[r.start..r.end]
     }
+    /// Empties the batch, keeping its allocations for the next one.
     pub fn clear(&mut self) {
         self.text.clear();
         self.records.clear();
@@ -51,6 +58,7 @@ pub struct RecordReader<R> {
 }
 
 impl<R: BufRead> RecordReader<R> {
+    /// A reader of `input`, named `file` in error messages, starting at line 1.
     pub fn new(input: R, file: &str) -> Self {
         Self { input, line: 1, consumed: 0, file: file.to_string() }
     }
