@@ -11,18 +11,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 
 /// The columns of `cycle.csv` (SI units: s, rad, rad, rad/s, N·m, N·m, -, m, -, bool).
-pub const CYCLE_COLUMNS: [&str; 10] = [
-    "time",
-    "command_angle",
-    "angle",
-    "angular_velocity",
-    "torque",
-    "friction_torque",
-    "friction_coefficient",
-    "film_thickness",
-    "fluid_load_fraction",
-    "stuck",
-];
+pub const CYCLE_COLUMNS: [&str; 10] = pinjoint::rig::record::COLUMNS;
 
 /// The same limits as `pinjoint cycle`: strokes, and samples held in memory.
 pub const MAX_CYCLES: usize = 100_000;
@@ -105,18 +94,7 @@ pub fn simulate_cycle<'py>(
         .map_err(rig_err)?;
     let d = PyDict::new(py);
     let col = |f: fn(&Sample) -> f64| samples.iter().map(f).collect::<Vec<f64>>();
-    let numeric: [(&str, fn(&Sample) -> f64); 9] = [
-        ("time", |s| s.time),
-        ("command_angle", |s| s.command_angle),
-        ("angle", |s| s.angle),
-        ("angular_velocity", |s| s.angular_velocity),
-        ("torque", |s| s.torque),
-        ("friction_torque", |s| s.friction_torque),
-        ("friction_coefficient", |s| s.friction_coefficient),
-        ("film_thickness", |s| s.film_thickness),
-        ("fluid_load_fraction", |s| s.fluid_load_fraction),
-    ];
-    for (name, f) in numeric {
+    for (name, _, f) in pinjoint::rig::record::NUMERIC_COLUMNS {
         d.set_item(name, col(f).into_pyarray(py))?;
     }
     let stuck: Vec<bool> = samples.iter().map(|s| s.stuck).collect();

@@ -28,6 +28,7 @@ pub mod dynamics;
 pub mod excitation;
 pub mod integrate;
 pub mod params;
+pub mod record;
 pub mod sim;
 
 pub use analysis::{cycle_average_friction_coefficient, energy_residual, run_cycles};

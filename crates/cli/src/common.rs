@@ -137,20 +137,7 @@ pub fn lin_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 
 /// The model's outputs in CSV files, after the input columns (SI units). The h_min columns
 /// (an extension) come last so that the earlier columns keep their positions.
-pub const RESULT_COLUMNS: [&str; 12] = [
-    "friction_coefficient",
-    "torque",
-    "film_thickness",
-    "lambda_ratio",
-    "fluid_load_fraction",
-    "asperity_load_fraction",
-    "mean_pressure",
-    "contact_half_width",
-    "sommerfeld_number",
-    "regime",
-    "min_film_thickness",
-    "min_lambda_ratio",
-];
+pub const RESULT_COLUMNS: [&str; 12] = pinjoint::record::NAMES;
 
 /// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
 /// `BrokenPipe`, which ends the program quietly).
@@ -168,20 +155,10 @@ pub fn exact(v: f64) -> String {
 
 /// The values of [`RESULT_COLUMNS`] for one point, at full precision.
 pub fn result_fields(op: &OperatingPoint) -> [String; 12] {
-    [
-        exact(op.friction_coefficient),
-        exact(op.torque),
-        exact(op.film_thickness),
-        exact(op.lambda_ratio),
-        exact(op.fluid_load_fraction),
-        exact(op.asperity_load_fraction),
-        exact(op.mean_pressure),
-        exact(op.contact_half_width),
-        exact(op.sommerfeld_number),
-        op.regime.as_str().to_string(),
-        exact(op.min_film_thickness),
-        exact(op.min_lambda_ratio),
-    ]
+    pinjoint::record::COLUMNS.map(|c| match c.value {
+        pinjoint::record::Value::Number(f) => exact(f(op)),
+        pinjoint::record::Value::Regime => op.regime.as_str().to_string(),
+    })
 }
 
 /// A number for people: 6 significant digits, fixed or scientific as fits.

@@ -9,18 +9,7 @@ use pinjoint::Joint;
 use std::f64::consts::TAU;
 
 /// The columns of `cycle.csv` (SI units: s, rad, rad, rad/s, N·m, N·m, -, m, -, 0/1).
-pub const CYCLE_COLUMNS: [&str; 10] = [
-    "time",
-    "command_angle",
-    "angle",
-    "angular_velocity",
-    "torque",
-    "friction_torque",
-    "friction_coefficient",
-    "film_thickness",
-    "fluid_load_fraction",
-    "stuck",
-];
+pub const CYCLE_COLUMNS: [&str; 10] = pinjoint::rig::record::COLUMNS;
 
 /// A finished rig run of whole strokes and what the paper computes from it.
 #[derive(Debug, Clone)]
@@ -140,17 +129,11 @@ pub fn core_torque(s: &Sample, pin_radius: f64) -> f64 {
 
 /// One sample as the CSV fields of [`CYCLE_COLUMNS`], in full precision.
 pub fn sample_fields(s: &Sample) -> [String; 10] {
-    [
-        exact(s.time),
-        exact(s.command_angle),
-        exact(s.angle),
-        exact(s.angular_velocity),
-        exact(s.torque),
-        exact(s.friction_torque),
-        exact(s.friction_coefficient),
-        exact(s.film_thickness),
-        exact(s.fluid_load_fraction),
-        u8::from(s.stuck).to_string(),
-    ]
+    let mut out: [String; 10] = Default::default();
+    for (slot, (_, _, f)) in out.iter_mut().zip(pinjoint::rig::record::NUMERIC_COLUMNS) {
+        *slot = exact(f(s));
+    }
+    out[9] = u8::from(s.stuck).to_string();
+    out
 }
 

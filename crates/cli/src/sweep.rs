@@ -224,26 +224,16 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
         for f in rec.iter() {
             w.write_field(f).map_err(io)?;
         }
-        for v in [
-            op.friction_coefficient,
-            op.torque,
-            op.film_thickness,
-            op.lambda_ratio,
-            op.fluid_load_fraction,
-            op.asperity_load_fraction,
-            op.mean_pressure,
-            op.contact_half_width,
-            op.sommerfeld_number,
-        ] {
-            num.clear();
-            push_exact(&mut num, v);
-            w.write_field(&num).map_err(io)?;
-        }
-        w.write_field(op.regime.as_str()).map_err(io)?;
-        for v in [op.min_film_thickness, op.min_lambda_ratio] {
-            num.clear();
-            push_exact(&mut num, v);
-            w.write_field(&num).map_err(io)?;
+        // The one result record's columns, in order (pinjoint::record).
+        for c in &pinjoint::record::COLUMNS {
+            match c.value {
+                pinjoint::record::Value::Number(f) => {
+                    num.clear();
+                    push_exact(&mut num, f(&op));
+                    w.write_field(&num).map_err(io)?;
+                }
+                pinjoint::record::Value::Regime => w.write_field(op.regime.as_str()).map_err(io)?,
+            }
         }
         w.write_record(None::<&[u8]>).map_err(io)?;
     }
