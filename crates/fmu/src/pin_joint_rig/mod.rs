@@ -7,6 +7,7 @@
 
 pub mod doc;
 pub mod model;
+pub mod settings;
 pub mod state;
 pub mod variables;
 

@@ -23,7 +23,7 @@
 
 // Version 3: the `temperature` input is the last setting.
 
-use super::model::Settings;
+use super::settings::Settings;
 use super::variables::{Var, LAYOUT};
 use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
 use fmi_layer::fmi2::model::ModelResult;
