@@ -30,6 +30,7 @@ pub mod joint;
 pub mod min_film;
 pub mod mixed;
 pub mod newton;
+pub mod paper;
 pub mod params;
 pub mod record;
 pub mod rig;

@@ -3,6 +3,7 @@
 
 use super::error::{CliError, Result};
 use clap::Args;
+use pinjoint::rig::RigConfig;
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::PI;
 use std::path::PathBuf;
@@ -17,7 +18,7 @@ pub const RIG_MAX_FREQUENCY_HZ: f64 = 1.0;
 /// Radial load range of the paper's rig experiments (lowest, highest), in N.
 pub const RIG_LOAD_RANGE_N: (f64, f64) = (5e3, 60e3);
 /// The paper's simulated range (section 3.2): 1 to 800 rpm.
-pub const PAPER_RPM_RANGE: (f64, f64) = (1.0, 800.0);
+pub const PAPER_RPM_RANGE: (f64, f64) = pinjoint::paper::SPEED_RANGE_RPM;
 
 /// Peak angular velocity of the fastest rig stroke, 2π f A (≈ 4.39 rad/s ≈ 41.9 rpm).
 pub fn rig_peak_speed() -> f64 {
@@ -204,5 +205,16 @@ mod tests {
         assert_eq!(readable(20000.0), "20000");
         assert_eq!(readable(3.31024e-6), "3.31024e-6");
         assert_eq!(readable(4.134e-4), "4.134e-4");
+    }
+}
+
+/// The model and rig parameters of a file (model sections + `[rig]`), or the defaults.
+pub fn load_rig_config(path: Option<&PathBuf>) -> Result<RigConfig> {
+    match path {
+        None => Ok(RigConfig::default()),
+        Some(path) => {
+            let text = read_param_file(path)?;
+            RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
+        }
     }
 }

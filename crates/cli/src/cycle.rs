@@ -2,7 +2,7 @@
 //! 11–13): the trace as CSV, torque against time and angle as SVG, and the paper's
 //! cycle-average friction coefficient (eq. 11).
 
-use super::common::{positive, readable, RAD_S_PER_RPM};
+use super::common::{load_rig_config, positive, readable, RAD_S_PER_RPM};
 use super::cycle_plots::{torque_angle_svg, torque_time_svg};
 use super::cycle_run::{default_skip, CycleRun};
 use super::cycle_stream::stream_cycles;
@@ -108,17 +108,6 @@ pub enum MethodArg {
 pub const MAX_CYCLES: usize = 100_000;
 /// Most samples one run may write (see [`MAX_CYCLES`]).
 pub const MAX_SAMPLES: usize = 20_000_000;
-
-/// The model and rig parameters of a file (model sections + `[rig]`), or the defaults.
-pub fn load_rig_config(path: Option<&PathBuf>) -> Result<RigConfig> {
-    match path {
-        None => Ok(RigConfig::default()),
-        Some(path) => {
-            let text = super::common::read_param_file(path)?;
-            RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
-        }
-    }
-}
 
 /// The configuration of this run: the file, overridden by the flags, validated.
 fn config(cmd: &CycleCmd) -> Result<RigConfig> {

@@ -11,7 +11,7 @@ use super::cycle_run::stroke_average;
 use super::error::Result;
 use super::figures_index::{nm, pct, sig};
 use super::figures_rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
-use super::map::PAPER_LOADS;
+use pinjoint::paper::LOADS as PAPER_LOADS;
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::TAU;
 
@@ -88,7 +88,7 @@ fn rpm_text(n: Option<f64>) -> String {
 }
 
 /// The paper's simulated region (section 3.2): its loads × 1–800 rpm.
-const PAPER_RPM: (f64, f64) = (1.0, 800.0);
+const PAPER_RPM: (f64, f64) = pinjoint::paper::SPEED_RANGE_RPM;
 
 /// Lowest μ, highest λ and highest S over the paper's loads × 1–800 rpm (log grid, 60 speeds),
 /// and the lowest S.

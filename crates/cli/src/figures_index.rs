@@ -8,7 +8,7 @@ use super::error::Result;
 use super::figures_plots::PAPER_LOW_SPEED_MU;
 use super::figures_plots::CoreCurves;
 use super::figures_rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
-use super::map::PAPER_LOADS;
+use pinjoint::paper::LOADS as PAPER_LOADS;
 use std::f64::consts::TAU;
 use pinjoint::Joint;
 

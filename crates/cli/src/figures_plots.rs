@@ -7,14 +7,14 @@ use super::cycle_run::stroke_average;
 use super::cycle_plots::{overview_svg, run_label, torque_time_chart, RECORDED};
 use super::error::Result;
 use super::figures_rig::{at_frequency, RigResult, PAPER_FREQUENCIES};
-use super::map::PAPER_LOADS;
+use pinjoint::paper::LOADS as PAPER_LOADS;
 use crate::plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
 use pinjoint::Joint;
 use rayon::prelude::*;
 use std::f64::consts::TAU;
 
 /// The paper's measured friction coefficient at low speed (section 5).
-pub const PAPER_LOW_SPEED_MU: f64 = 0.117;
+pub const PAPER_LOW_SPEED_MU: f64 = pinjoint::paper::MEASURED_LOW_SPEED_MU;
 
 /// Frequencies (Hz) of the core's stroke-average curves in Figures 8 and 9: a factor of 3
 /// below the paper's slowest stroke and 3 above its fastest.

@@ -6,14 +6,14 @@
 use super::common::{csv_io, exact};
 use super::cycle_run::{core_torque, CycleRun, CYCLE_COLUMNS};
 use super::error::Result;
-use super::map::PAPER_LOADS;
+use pinjoint::paper::LOADS as PAPER_LOADS;
 use indicatif::ProgressBar;
 use pinjoint::rig::{RigConfig, Sample};
 use pinjoint::Joint;
 use rayon::prelude::*;
 
 /// The paper's stroke frequencies (section 4.4), Hz.
-pub const PAPER_FREQUENCIES: [f64; 3] = [0.03, 0.3, 1.0];
+pub const PAPER_FREQUENCIES: [f64; 3] = pinjoint::paper::FREQUENCIES;
 /// Strokes per run: the first (from rest) is left out of every average and plot.
 pub const CYCLES: usize = 2;
 /// Strokes left out of the averages at the start of each run (the one from rest).

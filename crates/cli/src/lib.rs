@@ -5,6 +5,7 @@
 pub mod calibrate;
 pub mod calibrate_report;
 pub mod common;
+pub mod curves;
 pub mod cycle;
 pub mod cycle_plots;
 pub mod cycle_run;

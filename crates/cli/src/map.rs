@@ -4,7 +4,7 @@
 use super::common::{lin_space, log_space, positive, rig_peak_speed, ParamsArg, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
 use super::error::{CliError, Result};
 use super::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
-use super::stribeck::{curve, points_csv};
+use super::curves::{curve, points_csv};
 use clap::Args;
 use crate::plot::{heat_map, stacked_plot, Axis, Chart, Corner, HeatMap, Region, Series};
 use pinjoint::{Joint, OperatingPoint};
@@ -57,7 +57,7 @@ pub struct MapCmd {
 }
 
 /// The loads of the paper's Table 1, in N: one curve each in map_curves.svg.
-pub const PAPER_LOADS: [f64; 5] = [5e3, 10e3, 20e3, 40e3, 60e3];
+pub const PAPER_LOADS: [f64; 5] = pinjoint::paper::LOADS;
 
 /// The map grid: loads (N) and speeds (rad/s).
 #[derive(Debug, Clone, PartialEq)]

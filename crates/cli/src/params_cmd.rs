@@ -1,7 +1,7 @@
 //! `pinjoint params`: print the complete parameter file (defaults, or a file's values filled up).
 
 use super::common::ParamsArg;
-use super::cycle::load_rig_config;
+use super::common::load_rig_config;
 use super::error::Result;
 use super::output::to_stdout;
 use clap::Args;

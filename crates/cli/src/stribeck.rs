@@ -1,13 +1,13 @@
 //! `pinjoint stribeck`: the paper's Figure 3 — μ, 1/γ1, 1/γ2 and λ against the Sommerfeld
 //! number at one load — as CSV and SVG.
 
-use super::common::{csv_io, exact, log_space, positive, readable, result_fields, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM, RESULT_COLUMNS};
+use super::common::{log_space, positive, readable, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM};
+use super::curves::{curve, points_csv};
 use super::error::{CliError, Result};
 use super::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
 use clap::Args;
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series};
 use pinjoint::{Joint, OperatingPoint};
-use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
 #[derive(Args, Debug)]
@@ -62,23 +62,6 @@ fn end(rad: Option<f64>, rpm: Option<f64>, name: &str, default: f64) -> Result<f
         (None, Some(n)) => Ok(positive(&format!("{name}-rpm"), n, "rpm")? * RAD_S_PER_RPM),
         (None, None) => Ok(default),
     }
-}
-
-/// The model over `speeds` (rad/s) at `load`, on every core, in order.
-pub fn curve(joint: &Joint, load: f64, speeds: &[f64]) -> Result<Vec<OperatingPoint>> {
-    speeds.par_iter().map(|&w| joint.evaluate(load, w).map_err(CliError::from)).collect()
-}
-
-/// CSV: load, speed, speed_rpm, then the result columns.
-pub fn points_csv(w: &mut dyn std::io::Write, ops: &[OperatingPoint]) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(["load", "speed", "speed_rpm"].into_iter().chain(RESULT_COLUMNS)).map_err(csv_io)?;
-    for op in ops {
-        let head = [exact(op.load), exact(op.angular_velocity), exact(op.angular_velocity / RAD_S_PER_RPM)];
-        wtr.write_record(head.into_iter().chain(result_fields(op))).map_err(csv_io)?;
-    }
-    wtr.flush()?;
-    Ok(())
 }
 
 /// The Figure 3 plot: three panels against the Sommerfeld number.
