@@ -222,10 +222,12 @@ fn warm_start_gives_the_same_answer() {
 #[test]
 fn invalid_operating_points_are_named() {
     let j = joint();
-    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+    for bad in [0.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         let e = j.evaluate(bad, 1.0).unwrap_err().to_string();
         assert!(e.contains("load") && e.contains(" N"), "{e}");
     }
+    // A negative load is the magnitude of the radial reaction (issue 9): the same point.
+    assert_eq!(j.evaluate(-1.0, 1.0).unwrap(), j.evaluate(1.0, 1.0).unwrap());
     let e = j.evaluate(1e3, f64::NAN).unwrap_err().to_string();
     assert!(e.contains("angular velocity") && e.contains("rad/s"), "{e}");
 }
