@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Every test of the project, from a fresh machine: installs what it needs (Debian
-# packages, a Python virtualenv with the pinned harness), runs the Rust tests, builds
-# the FMUs and drives them from Python (fmpy) and under valgrind.
+# packages, rustup targets, pinned Python virtualenvs), runs the Rust tests, lints and
+# docs, the Python package's tests, builds the FMUs for every platform and runs them
+# (natively, under wine and qemu), drives them from Python (fmpy) and under valgrind.
+start=$SECONDS
+step() { echo "== test.sh: $1 ($((SECONDS - start)) s so far)"; }
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,20 +20,30 @@ if [ ${#debs[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${debs[@]}" >/dev/null
 fi
 
-# --- Rust: unit, integration, property and doc tests ------------------------------
-cargo test --workspace --release
+# --- Rust: unit, integration, property and doc tests (every test binary runs, then the
+# first failure stops the script)
+step "cargo test"
+cargo test --workspace --release --no-fail-fast
+
+# --- lints and API docs of every crate: no warnings (clippy's lints: [workspace.lints])
+step "clippy, rustdoc"
+cargo clippy --workspace --all-targets --release -- -D warnings
+RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 
 # --- the Python package (python/): pinned venv, `pip install ./python`, pytest (incl. a Dask LocalCluster)
+step "python package"
 bash python/run_tests.sh
 
 # --- the FMU binary cross-built for every platform (fmu_build --platforms all: Linux glibc
 # 2.17, Windows, macOS, aarch64 Linux), each run: natively, under wine, under qemu-aarch64
 # (macOS: exports and load commands inspected only). Installs its own tools (apt, rustup
 # targets, cargo-zigbuild and ziglang from PyPI). Leaves the all-platform FMUs in target/fmu/.
+step "platforms"
 bash tests/platforms/run.sh
 
 # --- the Python harness (fmpy) and the Rust `fmi` crate on those FMUs (linux64 = the
 # shipped glibc-2.17 binary; PINJOINT_KEEP_FMUS: do not rebuild them host-only)
+step "fmpy harness"
 PINJOINT_KEEP_FMUS=1 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
 
 # --- the SciPy reference of `pinjoint bench` against the MODEL_NOTES check values, and
@@ -49,4 +62,6 @@ PY
 
 # --- memory: a C host dlopens the packaged FMU, 50 instantiate/step/free cycles under valgrind
 # (the issue's 1000-cycle check is `bash tests/valgrind.sh 1000`)
+step "valgrind"
 bash tests/valgrind.sh 50
+step "all passed"
