@@ -223,8 +223,7 @@ fn cycle_errors_name_quantity_value_unit_and_write_nothing() {
     fails(&with(&["--frequency", "nan"]), 1, &["frequency = NaN Hz"]);
     fails(&with(&["--amplitude", "-5"]), 1, &["amplitude = -5 deg"]);
     fails(&with(&["--amplitude", "inf"]), 1, &["amplitude = inf deg"]);
-    fails(&with(&["--load", "-20000"]), 1, &["load = -20000 N"]);
-    fails(&with(&["--load", "0"]), 1, &["load = 0 N"]);
+    fails(&with(&["--load", "0"]), 1, &["load magnitude = 0 N"]);
     fails(&["cycle", "--cycles", "0"], 1, &["cycles = 0"]);
     fails(&["cycle", "--cycles", "2", "--skip-cycles", "2"], 1, &["skip-cycles = 2", "cycles = 2"]);
     fails(&["cycle", "--cycles", "1", "--samples-per-cycle", "3"], 1, &["samples-per-cycle = 3"]);
@@ -262,6 +261,8 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
         "fig11_torque_0.03Hz.svg",
         "fig12_torque_0.3Hz.svg",
         "fig13_torque_1Hz.svg",
+        "starvation_stribeck.svg",
+        "starvation_cycle_1Hz.svg",
     ];
     let csvs = [
         "stribeck.csv",
@@ -272,6 +273,9 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
         "fig11_torque_0.03Hz.csv",
         "fig12_torque_0.3Hz.csv",
         "fig13_torque_1Hz.csv",
+        "starvation_stribeck.csv",
+        "starvation_cycle_1Hz.csv",
+        "starvation_summary.csv",
     ];
     let names: BTreeSet<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     let expected: BTreeSet<String> = svgs.iter().chain(&csvs).chain(&["index.html", "README.md"]).map(std::string::ToString::to_string).collect();

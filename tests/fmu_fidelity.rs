@@ -106,7 +106,7 @@ fn fidelity_parameters_are_checked_and_readable() {
     assert_eq!(set_fidelity(c, 4), ERROR);
     assert!(h.last().contains("fidelity = 4") && h.last().contains("3 (auto)"), "{}", h.last());
     // fidelity is an Enumeration (Integer functions): the Real setter refuses it.
-    assert_eq!(set(c, "fidelity", 1.0), ERROR);
+    assert_eq!(unsafe { fmi2SetReal(c, r.as_ptr(), 1, [1.0].as_ptr()) }, ERROR);
     assert!(h.last().contains("an Enumeration variable, not Real"), "{}", h.last());
     // A bad envelope is refused at exit of initialization, naming it with its unit.
     assert_eq!(set_fidelity(c, 1), OK);

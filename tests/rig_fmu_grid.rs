@@ -7,8 +7,10 @@ use pinjoint::rig::{Inputs, RigConfig, RigSim, Sample};
 use rig_host::*;
 
 /// The FMU's outputs (table order) from a library sample.
-fn expected(s: &Sample) -> Vec<f64> {
+fn expected(s: &Sample, joint: &pinjoint::Joint) -> Vec<f64> {
     let contact = s.load > 0.0;
+    // h_min and λ_min from the library's joint at the sample's state (0 without contact).
+    let h_min = if contact { joint.min_film(s.load, s.angular_velocity, s.film_thickness, s.fluid_load_fraction) } else { 0.0 };
     vec![
         s.angle,
         s.angular_velocity,
@@ -22,6 +24,8 @@ fn expected(s: &Sample) -> Vec<f64> {
         s.actuator_work,
         s.friction_dissipation,
         s.kinetic_energy,
+        h_min,
+        h_min / joint.composite_roughness(),
     ]
 }
 
@@ -46,11 +50,12 @@ fn fmu_run(sets: &[(&str, f64)], times: &[f64], load: &dyn Fn(f64) -> f64) -> Ve
 
 fn library_run(cfg: &RigConfig, times: &[f64], load: &dyn Fn(f64) -> f64) -> Vec<Vec<f64>> {
     let mut sim = RigSim::new(cfg).unwrap();
+    let joint = pinjoint::Joint::new(&cfg.model).unwrap();
     let mut rows = Vec::new();
     let mut held = load(times[0]);
     for &t in times {
         sim.advance_to(t, &Inputs { load: Some(held), command_angle: None }).unwrap();
-        rows.push(expected(&sim.sample().unwrap()));
+        rows.push(expected(&sim.sample().unwrap(), &joint));
         held = load(t);
     }
     rows

@@ -232,7 +232,7 @@ fn output(o: Output) -> Variable {
             "Energy dissipated by friction since initialization, D = integral of -T_f omega dt"),
         Output::KineticEnergy => real("kinetic_energy", vr, Out, C, Some("J"), None,
             "Kinetic energy of the rotating parts, J omega^2 / 2 (energy balance: W - D = change of kinetic energy)"),
-        Output::MinFilmThickness => real("min_film_thickness", vr, Out, C, Some("m"), Some("µm"),
+        Output::MinFilmThickness => real("min_film_thickness", vr, Out, C, Some("m"), Some("um"),
             "Minimum film thickness h_min at (P, |omega|): h_c times Pan and Hamrock's (1989) line-contact ratio under eq. 13's substitution (extension; an extrapolation for this joint); 0 at rest and at zero load"),
         Output::MinLambdaRatio => real("min_lambda_ratio", vr, Out, C, None, None,
             "h_min/sqrt(sigma^2 + sigma_b^2) (eq. 21 as printed, with h_min); 0 at rest and at zero load"),
