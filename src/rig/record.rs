@@ -3,9 +3,11 @@
 
 use super::sim::Sample;
 
-/// The numeric columns of a sample: name, SI unit, accessor. `stuck` follows them (see
-/// [`COLUMNS`]).
-pub const NUMERIC_COLUMNS: [(&str, &str, fn(&Sample) -> f64); 9] = [
+/// One numeric column of a sample: name, SI unit, accessor.
+pub type NumericColumn = (&'static str, &'static str, fn(&Sample) -> f64);
+
+/// The numeric columns of a sample. `stuck` follows them (see [`COLUMNS`]).
+pub const NUMERIC_COLUMNS: [NumericColumn; 9] = [
     ("time", "s", |s| s.time),
     ("command_angle", "rad", |s| s.command_angle),
     ("angle", "rad", |s| s.angle),

@@ -179,6 +179,17 @@ pub fn readable(v: f64) -> String {
     }
 }
 
+/// The model and rig parameters of a file (model sections + `[rig]`), or the defaults.
+pub fn load_rig_config(path: Option<&PathBuf>) -> Result<RigConfig> {
+    match path {
+        None => Ok(RigConfig::default()),
+        Some(path) => {
+            let text = read_param_file(path)?;
+            RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -205,16 +216,5 @@ mod tests {
         assert_eq!(readable(20000.0), "20000");
         assert_eq!(readable(3.31024e-6), "3.31024e-6");
         assert_eq!(readable(4.134e-4), "4.134e-4");
-    }
-}
-
-/// The model and rig parameters of a file (model sections + `[rig]`), or the defaults.
-pub fn load_rig_config(path: Option<&PathBuf>) -> Result<RigConfig> {
-    match path {
-        None => Ok(RigConfig::default()),
-        Some(path) => {
-            let text = read_param_file(path)?;
-            RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })
-        }
     }
 }
