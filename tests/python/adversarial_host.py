@@ -83,7 +83,7 @@ class CtypesHost:
         r = (C.c_uint * 1)(vr)
         if kind == "Real":
             return self.dll.fmi2SetReal(C.c_void_p(self.c), r, C.c_size_t(1), (C.c_double * 1)(value))
-        if kind == "Integer":
+        if kind in ("Integer", "Enumeration"):
             return self.dll.fmi2SetInteger(C.c_void_p(self.c), r, C.c_size_t(1), (C.c_int * 1)(int(value)))
         return self.dll.fmi2SetBoolean(C.c_void_p(self.c), r, C.c_size_t(1), (C.c_int * 1)(int(value)))
 
@@ -165,8 +165,8 @@ class FmpyHost:
 
     def set(self, name, value):
         vr, kind = self.v.vars[name]
-        f = {"Real": self.fmu.setReal, "Integer": self.fmu.setInteger, "Boolean": self.fmu.setBoolean}[kind]
-        v = float(value) if kind == "Real" else (int(value) if kind == "Integer" else bool(value))
+        f = {"Real": self.fmu.setReal, "Integer": self.fmu.setInteger, "Enumeration": self.fmu.setInteger, "Boolean": self.fmu.setBoolean}[kind]
+        v = float(value) if kind == "Real" else (int(value) if kind in ("Integer", "Enumeration") else bool(value))
         return self._call(f, [vr], [v])[0]
 
     def get(self, name):

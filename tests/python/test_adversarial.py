@@ -38,6 +38,15 @@ def no_long_numbers(log):
 PJ = "pj"
 RIG = "rig"
 STEP = [["init"]]
+# Byte offsets of values in PinJoint's serialized model state: version byte, count, then the
+# f64 values in order: the parameter-file keys, the band, angle, angular velocity, load, energy.
+N_PARAMS = 26
+
+
+def at(k):
+    return 3 + 8 * k
+
+
 CASES = [
     # PinJoint: fidelity builders that panicked (fmi2Fatal) now return fmi2Error naming why.
     ("pj table envelope past capacity", PJ, [["set", "fidelity", 1], ["set", "envelope.load_max", 6e8], ["init"]],
@@ -61,9 +70,9 @@ CASES = [
     # Deserialized states are validated like the setters.
     ("pj state negative radius", PJ, STEP + [["save"], ["patch", 3, -0.028], ["step", 0.0, 0.1]], [OK, OK, ERROR, OK], ["pin_radius"]),
     ("pj state NaN modulus", PJ, STEP + [["save"], ["patch", 27, float("nan")], ["step", 0.0, 0.1]], [OK, OK, ERROR, OK], ["NaN"]),
-    ("pj state band -1", PJ, STEP + [["save"], ["patch", 171, -1.0]], [OK, OK, ERROR], ["speed_band"]),
-    ("pj state load beyond capacity", PJ, STEP + [["save"], ["patch", 195, 1e300]], [OK, OK, ERROR], ["capacity"]),
-    ("pj state energy NaN", PJ, STEP + [["save"], ["patch", 203, float("nan")]], [OK, OK, ERROR], ["dissipated_energy"]),
+    ("pj state band -1", PJ, STEP + [["save"], ["patch", at(N_PARAMS), -1.0]], [OK, OK, ERROR], ["speed_band"]),
+    ("pj state load beyond capacity", PJ, STEP + [["save"], ["patch", at(N_PARAMS + 3), 1e300]], [OK, OK, ERROR], ["capacity"]),
+    ("pj state energy NaN", PJ, STEP + [["save"], ["patch", at(N_PARAMS + 4), float("nan")]], [OK, OK, ERROR], ["dissipated_energy"]),
     ("pj state time before start", PJ, STEP + [["save"], ["patch", "time", -1e300]], [OK, OK, ERROR], ["time"]),
     ("pj state round trip", PJ, STEP + [["step", 0.0, 0.1], ["save"], ["restore"], ["step", 0.1, 0.1]], [OK, OK, OK, OK, OK], []),
     # PinJointRig.

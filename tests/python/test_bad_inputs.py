@@ -38,7 +38,7 @@ def test_negative_load_is_its_magnitude(unzipped, model_description, load):
     for p in (load, -load):
         s = Slave(unzipped, model_description, "step")
         s.fmu.setReal([2, 3], [0.3, p])
-        s.fmu.doStep(0.0, 0.1)
+        s.fmu.doStep(0.1, 0.1)
         got.append(list(s.fmu.getReal(OUT)))
         s.free()
     assert got[0] == got[1]
@@ -78,7 +78,7 @@ def parameter_cases(model_description):
             continue  # the Integer `fidelity` is checked by fmi2SetInteger itself
         for value in (math.nan, math.inf, -math.inf, -1.0):
             cases.append((v.name, v.valueReference, value))
-        if v.max is not None and v.name != "zero_velocity.speed_band":
+        if v.max is not None and "poisson" in v.name:
             cases.append((v.name, v.valueReference, float(v.max)))  # the Poisson ratios' open bound 0.5
     return cases
 

@@ -28,8 +28,8 @@ def test_interface(rig_model_description):
     cs = md.coSimulation
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
-    assert [n for n in v if v[n].causality == "input"] == ["load", "command_angle"]
-    assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS
+    assert [n for n in v if v[n].causality == "input"] == ["load", "command_angle", "temperature"]
+    assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS + ["min_film_thickness", "min_lambda_ratio"]
     assert v["stuck"].type == "Boolean" and v["stuck"].variability == "discrete"
     assert v["use_command_input"].type == "Boolean" and v["use_command_input"].start in ("false", False)
     # Enumerations since issue 11 (same codes as the former Integer parameters).
@@ -49,7 +49,7 @@ def test_interface(rig_model_description):
     assert all(x.description for x in md.modelVariables)
     deps = {u.variable.name: sorted(d.name for d in u.dependencies) for u in md.outputs}
     assert deps["angle"] == [] and deps["torque"] == [] and deps["actuator_work"] == []
-    assert deps["friction_torque"] == ["load"] and deps["stuck"] == ["load"]
+    assert deps["friction_torque"] == ["load", "temperature"] and deps["stuck"] == ["load", "temperature"]
     assert deps["commanded_angle"] == ["command_angle"]
 
 

@@ -23,10 +23,11 @@ def test_interface(model_description):
     cs = md.coSimulation
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
-    assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load"]
-    assert [n for n in v if v[n].causality == "output"] == OUTPUTS
+    assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load", "temperature"]
+    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio"]
     params = [n for n in v if v[n].causality == "parameter"]
-    assert len(params) == 28 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    # The 26 parameter-file keys, the band, fidelity, tolerance and the 4 envelope bounds.
+    assert len(params) == 33 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
     assert {"fidelity", "tolerance", "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"} <= set(params)
     assert float(v["geometry.pin_radius"].start) == 0.028
     assert float(v["friction.boundary_friction_coefficient"].start) == 0.12
