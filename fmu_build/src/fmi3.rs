@@ -7,10 +7,7 @@
 use crate::extras::Entry;
 use fmi_layer::fmi2::variables::ModelInfo;
 use fmi_layer::fmi3::xml::model_description;
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use zip::write::SimpleFileOptions;
-use zip::{CompressionMethod, DateTime, ZipWriter};
 
 
 /// Write `<out_dir>/fmi3/<modelIdentifier>.fmu` with `binaries`: (platform tuple, library path,
@@ -20,21 +17,8 @@ pub fn package(info: &ModelInfo, binaries: &[(&str, PathBuf, &str)], out_dir: &P
     let dir = out_dir.join("fmi3");
     std::fs::create_dir_all(&dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
     let path = dir.join(format!("{}.fmu", info.model_identifier));
-    let file = std::fs::File::create(&path).map_err(|e| format!("creating {}: {e}", path.display()))?;
-    let mut zip = ZipWriter::new(file);
-    let opts = SimpleFileOptions::default().compression_method(CompressionMethod::Deflated).last_modified_time(DateTime::default());
-    let mut entries: Vec<(String, Vec<u8>, u32)> = vec![("modelDescription.xml".into(), xml.into_bytes(), 0o644)];
-    for (platform, library, ext) in binaries {
-        let bytes = std::fs::read(library).map_err(|e| format!("reading {}: {e}", library.display()))?;
-        entries.push((format!("binaries/{platform}/{}.{ext}", info.model_identifier), bytes, 0o755));
-    }
-    entries.push(("documentation/index.html".into(), (info.documentation)().into_bytes(), 0o644));
-    entries.extend(extras.iter().map(|(n, b)| (n.clone(), b.clone(), 0o644)));
-    for (name, data, mode) in entries {
-        zip.start_file(name.as_str(), opts.unix_permissions(mode)).map_err(|e| e.to_string())?;
-        zip.write_all(&data).map_err(|e| e.to_string())?;
-    }
-    zip.finish().map_err(|e| e.to_string())?;
+    let libraries = binaries.iter().map(|(platform, library, ext)| (*platform, library.as_path(), *ext));
+    crate::write_fmu(&path, info, xml, libraries, extras)?;
     Ok(path)
 }
 

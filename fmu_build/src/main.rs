@@ -27,16 +27,30 @@ use zip::{CompressionMethod, DateTime, ZipWriter};
 /// Write `<out_dir>/<modelIdentifier>.fmu` carrying, for each `(FMI 2.0 folder, extension,
 /// library)`, the library as `binaries/<folder>/<modelIdentifier>.<extension>`.
 fn package(info: &ModelInfo, binaries: &[(&str, &str, PathBuf)], out_dir: &Path, extras: &[extras::Entry]) -> Result<PathBuf, String> {
-    let xml = model_description(info)?;
     let path = out_dir.join(format!("{}.fmu", info.model_identifier));
-    let file = std::fs::File::create(&path).map_err(|e| format!("creating {}: {e}", path.display()))?;
+    let libraries = binaries.iter().map(|(folder, ext, library)| (*folder, library.as_path(), *ext));
+    write_fmu(&path, info, model_description(info)?, libraries, extras)?;
+    Ok(path)
+}
+
+/// Write the archive `path` of either standard: `modelDescription.xml` (`xml`), each
+/// `(platform folder, library, extension)` as `binaries/<folder>/<modelIdentifier>.<ext>`,
+/// `documentation/index.html` and the shared `extras` (licences, model.png). A fixed time
+/// stamp keeps the archive reproducible.
+pub(crate) fn write_fmu<'a>(
+    path: &Path,
+    info: &ModelInfo,
+    xml: String,
+    libraries: impl Iterator<Item = (&'a str, &'a Path, &'a str)>,
+    extras: &[extras::Entry],
+) -> Result<(), String> {
+    let file = std::fs::File::create(path).map_err(|e| format!("creating {}: {e}", path.display()))?;
     let mut zip = ZipWriter::new(file);
-    // A fixed time stamp keeps the archive reproducible.
     let opts = SimpleFileOptions::default()
         .compression_method(CompressionMethod::Deflated)
         .last_modified_time(DateTime::default());
     let mut entries: Vec<(String, Vec<u8>, u32)> = vec![("modelDescription.xml".into(), xml.into_bytes(), 0o644)];
-    for (folder, ext, library) in binaries {
+    for (folder, library, ext) in libraries {
         let binary = std::fs::read(library).map_err(|e| format!("reading {}: {e}", library.display()))?;
         entries.push((format!("binaries/{folder}/{}.{ext}", info.model_identifier), binary, 0o755));
     }
@@ -47,7 +61,7 @@ fn package(info: &ModelInfo, binaries: &[(&str, &str, PathBuf)], out_dir: &Path,
         zip.write_all(&data).map_err(|e| e.to_string())?;
     }
     zip.finish().map_err(|e| e.to_string())?;
-    Ok(path)
+    Ok(())
 }
 
 /// The value of `--platforms` (default `host`).
