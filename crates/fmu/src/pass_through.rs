@@ -66,7 +66,7 @@ impl Model for PassThrough {
         self.u[i % 2]
     }
     fn check_real(&self, i: usize, v: f64) -> ModelResult<()> {
-        if v.is_finite() { Ok(()) } else { Err(format!("input u{} = {v} is not a finite number", i + 1)) }
+        if v.is_finite() { Ok(()) } else { Err(format!("input u{} = {v} is not a finite number", i + 1).into()) }
     }
     fn set_real(&mut self, i: usize, v: f64) {
         self.u[i] = v;

@@ -333,7 +333,7 @@ impl Instance {
     pub fn exit_initialization_mode(&mut self) -> CallResult {
         let init = self.model.exit_initialization(self.start_time);
         self.log_model_message();
-        let checked = init.and_then(|_| {
+        let checked = init.map_err(String::from).and_then(|()| {
             self.outputs_current = false;
             self.update_outputs()
         });
@@ -376,7 +376,7 @@ impl Instance {
                 t - self.time
             ));
         }
-        let stepped = self.update_outputs().and_then(|_| self.model.do_step(t, h)).and_then(|_| self.check_outputs());
+        let stepped = self.update_outputs().and_then(|()| self.model.do_step(t, h).map_err(String::from)).and_then(|_| self.check_outputs());
         self.log_model_message();
         if let Err(e) = stepped {
             self.state = State::Error;

@@ -6,8 +6,40 @@
 //! Variables are addressed by their index in the model's [`ModelInfo::variables`](crate::fmi2::variables::ModelInfo::variables)
 //! table (`super::variables::ModelInfo`), never by value reference.
 
+use std::fmt;
+
+/// Why a model refused a value, a state or a computation; the layer logs its
+/// [`Display`](fmt::Display) form and returns `fmi2Error` / `fmi3Error`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ModelError {
+    /// A message built by the model (transitional: being replaced by typed variants).
+    Message(String),
+}
+
+impl fmt::Display for ModelError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ModelError::Message(m) => f.write_str(m),
+        }
+    }
+}
+
+impl std::error::Error for ModelError {}
+
+impl From<String> for ModelError {
+    fn from(m: String) -> Self {
+        ModelError::Message(m)
+    }
+}
+
+impl From<ModelError> for String {
+    fn from(e: ModelError) -> Self {
+        e.to_string()
+    }
+}
+
 /// A model error, reported through the logger with status `fmi2Error`.
-pub type ModelResult<T> = Result<T, String>;
+pub type ModelResult<T> = Result<T, ModelError>;
 
 /// A model behind the generic layer: it holds its variables (addressed by index in its
 /// [`ModelInfo::variables`](crate::fmi2::variables::ModelInfo::variables) table), computes its outputs and advances over a step; every

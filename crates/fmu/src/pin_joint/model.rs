@@ -132,7 +132,7 @@ impl FidelitySettings {
             format!("parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)", self.code)
         })?;
         let env = crate::envelope_from_parameters(self.envelope)?;
-        Evaluator::new(params, level, self.tolerance, env).map_err(|e| format!("parameter {e}"))
+        Ok(Evaluator::new(params, level, self.tolerance, env).map_err(|e| format!("parameter {e}"))?)
     }
 }
 
@@ -263,29 +263,29 @@ impl Model for PinJointModel {
 
     fn check_real(&self, i: usize, v: f64) -> ModelResult<()> {
         match i {
-            ANGLE if !v.is_finite() => Err(format!("input angle = {} rad is not a finite number", show(v))),
-            ANGULAR_VELOCITY if !v.is_finite() => Err(format!("input angular_velocity = {} rad/s is not a finite number", show(v))),
+            ANGLE if !v.is_finite() => Err(format!("input angle = {} rad is not a finite number", show(v)).into()),
+            ANGULAR_VELOCITY if !v.is_finite() => Err(format!("input angular_velocity = {} rad/s is not a finite number", show(v)).into()),
             LOAD if !v.is_finite() => Err(format!(
                 "input load = {} N is invalid: it must be a finite number (a negative value is taken as its magnitude)",
                 show(v)
-            )),
+            ).into()),
             // Beyond the asperity model's capacity (pinjoint::Joint::capacity) the load is
             // refused here, leaving the instance and its outputs as they were.
             LOAD if self.evaluator.as_ref().is_some_and(|e| v.abs() >= e.joint().capacity()) => Err(format!(
                 "input load = {} N is beyond the asperity model's capacity of {:.6e} N for these parameters",
                 show(v),
                 self.evaluator.as_ref().map_or(f64::NAN, |e| e.joint().capacity())
-            )),
+            ).into()),
             TEMPERATURE if !(v > pinjoint::params::MIN_TEMPERATURE && v <= pinjoint::params::MAX_TEMPERATURE) => Err(format!(
                 "input temperature = {} K is out of range: it must be in ({}, {}] K",
                 show(v),
                 pinjoint::params::MIN_TEMPERATURE,
                 pinjoint::params::MAX_TEMPERATURE
-            )),
+            ).into()),
             FIDELITY if fidelity_of_code(v as i32).is_none() || v.fract() != 0.0 => Err(format!(
                 "parameter fidelity = {} is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)",
                 show(v)
-            )),
+            ).into()),
             // Parameters are checked together at fmi2ExitInitializationMode.
             _ => Ok(()),
         }
@@ -357,7 +357,7 @@ impl Model for PinJointModel {
     fn do_step(&mut self, _time: f64, step: f64) -> ModelResult<()> {
         let e = self.energy + self.out.power_loss * step;
         if !e.is_finite() {
-            return Err(format!("dissipated_energy overflows ({e} J)"));
+            return Err(format!("dissipated_energy overflows ({e} J)").into());
         }
         self.energy = e;
         Ok(())
@@ -385,11 +385,11 @@ impl Model for PinJointModel {
         let mut r = ByteReader::new(bytes);
         let version = r.u8("PinJoint state version")?;
         if version != STATE_VERSION {
-            return Err(format!("PinJoint state version {version}; this FMU reads version {STATE_VERSION}"));
+            return Err(format!("PinJoint state version {version}; this FMU reads version {STATE_VERSION}").into());
         }
         let n = r.u16("value count")? as usize;
         if n != STATE_VALUES {
-            return Err(format!("PinJoint state holds {n} values; version {STATE_VERSION} has {STATE_VALUES}"));
+            return Err(format!("PinJoint state holds {n} values; version {STATE_VERSION} has {STATE_VALUES}").into());
         }
         let mut params = Params::default();
         for s in PARAMS.iter() {
@@ -404,7 +404,7 @@ impl Model for PinJointModel {
             envelope[k] = r.f64(name)?;
         }
         if code.fract() != 0.0 || fidelity_of_code(code as i32).is_none() {
-            return Err(format!("fidelity = {code} in the state is not a fidelity code (0..3)"));
+            return Err(format!("fidelity = {code} in the state is not a fidelity code (0..3)").into());
         }
         let temperature = r.f64("temperature")?;
         let fidelity = FidelitySettings { code: code as i32, tolerance, envelope };
@@ -421,10 +421,10 @@ impl Model for PinJointModel {
         }
         let capacity = joint.capacity();
         if load.abs() >= capacity {
-            return Err(format!("state: load = {} N is beyond the asperity model's capacity of {} N", show(load), show(capacity)));
+            return Err(format!("state: load = {} N is beyond the asperity model's capacity of {} N", show(load), show(capacity)).into());
         }
         if !(energy.is_finite() && energy >= 0.0) {
-            return Err(format!("dissipated_energy = {} J is not a finite number >= 0", show(energy)));
+            return Err(format!("dissipated_energy = {} J is not a finite number >= 0", show(energy)).into());
         }
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
         let same = params == self.params && fidelity == self.fidelity && band == self.band && temperature.to_bits() == self.temperature.to_bits();

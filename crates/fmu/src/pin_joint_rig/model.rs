@@ -71,7 +71,7 @@ pub fn outputs(s: &Sample) -> ModelResult<[f64; Output::ALL.len()]> {
             show(s.load),
             show(s.angle),
             show(s.angular_velocity)
-        ));
+        ).into());
     }
     Ok(out)
 }
@@ -305,7 +305,7 @@ fn check_capacity(load: f64, capacity: f64) -> ModelResult<()> {
             "input load = {} N is beyond the asperity model's capacity of {} N for these parameters",
             show(load),
             show(capacity)
-        ))
+        ).into())
     } else {
         Ok(())
     }

@@ -107,15 +107,15 @@ impl Settings {
             Var::Load if !x.is_finite() => Err(format!(
                 "input load = {} N is invalid: it must be a finite number (a negative value is taken as its magnitude)",
                 show(x)
-            )),
-            Var::CommandAngle if !x.is_finite() => Err(format!("input command_angle = {} rad is not a finite number", show(x))),
+            ).into()),
+            Var::CommandAngle if !x.is_finite() => Err(format!("input command_angle = {} rad is not a finite number", show(x)).into()),
             Var::Temperature if !(x > pinjoint::params::MIN_TEMPERATURE && x <= pinjoint::params::MAX_TEMPERATURE) => Err(format!(
                 "input temperature = {} K is out of range: it must be in ({}, {}] K",
                 show(x),
                 pinjoint::params::MIN_TEMPERATURE,
                 pinjoint::params::MAX_TEMPERATURE
-            )),
-            Var::Fidelity if x.fract() != 0.0 || fidelity_of_code(x as i32).is_none() => Err(fidelity_range(x)),
+            ).into()),
+            Var::Fidelity if x.fract() != 0.0 || fidelity_of_code(x as i32).is_none() => Err(fidelity_range(x).into()),
             _ => Ok(()),
         }
     }
@@ -129,19 +129,19 @@ impl Settings {
             let s = rig_spec(key);
             let x = (s.get)(&cfg.rig);
             if !(x.is_finite() && s.range.contains(x)) {
-                return Err(format!("parameter {key} = {} {} is invalid: it must be a finite number {}", show(x), s.unit, s.range.describe()));
+                return Err(format!("parameter {key} = {} {} is invalid: it must be a finite number {}", show(x), s.unit, s.range.describe()).into());
             }
         }
         cfg.rig.formulation = match self.formulation {
             0.0 => Formulation::Hybrid,
             1.0 => Formulation::Regularised,
-            x => return Err(format!("parameter rig.formulation = {x} is invalid: it must be 0 (hybrid) or 1 (regularised)")),
+            x => return Err(format!("parameter rig.formulation = {x} is invalid: it must be 0 (hybrid) or 1 (regularised)").into()),
         };
         cfg.rig.method = match self.method {
             0.0 => Method::Dopri5,
             1.0 => Method::Dop853,
             2.0 => Method::Rk4,
-            x => return Err(format!("parameter rig.method = {x} is invalid: it must be 0 (Dopri5), 1 (Dop853) or 2 (RK4)")),
+            x => return Err(format!("parameter rig.method = {x} is invalid: it must be 0 (Dopri5), 1 (Dop853) or 2 (RK4)").into()),
         };
         cfg.rig.load = self.load.abs();
         cfg.model.lubricant.temperature = self.temperature;
@@ -157,7 +157,7 @@ impl Settings {
         let level = level.ok_or_else(|| fidelity_range(self.fidelity))?;
         let t = self.tolerance;
         if !(t.is_finite() && t > 0.0) {
-            return Err(format!("parameter tolerance = {} (relative error, dimensionless) is invalid: it must be a finite number > 0", show(t)));
+            return Err(format!("parameter tolerance = {} (relative error, dimensionless) is invalid: it must be a finite number > 0", show(t)).into());
         }
         let env = crate::envelope_from_parameters(self.envelope)?;
         Ok((level, t, env))

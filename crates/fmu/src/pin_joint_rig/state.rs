@@ -64,12 +64,12 @@ pub fn decode(bytes: &[u8]) -> ModelResult<(Settings, f64, Option<RigState>)> {
     let mut r = ByteReader::new(bytes);
     let version = r.u8("PinJointRig state version")?;
     if version != VERSION {
-        return Err(format!("PinJointRig state version {version}; this FMU reads version {VERSION}"));
+        return Err(format!("PinJointRig state version {version}; this FMU reads version {VERSION}").into());
     }
     let n = r.u16("settings count")? as usize;
     let expected = settings_vars().count();
     if n != expected {
-        return Err(format!("PinJointRig state holds {n} settings; version {VERSION} has {expected}"));
+        return Err(format!("PinJointRig state holds {n} settings; version {VERSION} has {expected}").into());
     }
     let mut s = Settings::default();
     for v in settings_vars() {
@@ -77,15 +77,15 @@ pub fn decode(bytes: &[u8]) -> ModelResult<(Settings, f64, Option<RigState>)> {
         Settings::check_input(v, x)?;
         let whole = x.fract() == 0.0;
         match v {
-            Var::UseCommandInput if x != 0.0 && x != 1.0 => return Err(format!("use_command_input = {x} is not a Boolean")),
-            Var::Formulation | Var::Method | Var::Fidelity if !whole => return Err(format!("an Integer parameter holds {x}")),
+            Var::UseCommandInput if x != 0.0 && x != 1.0 => return Err(format!("use_command_input = {x} is not a Boolean").into()),
+            Var::Formulation | Var::Method | Var::Fidelity if !whole => return Err(format!("an Integer parameter holds {x}").into()),
             _ => {}
         }
         s.set(v, x);
     }
     let start_time = r.f64("start time")?;
     if !start_time.is_finite() {
-        return Err(format!("start time {start_time} s is not finite"));
+        return Err(format!("start time {start_time} s is not finite").into());
     }
     let state = match r.u8("simulator flag")? {
         0 => None,
@@ -93,7 +93,7 @@ pub fn decode(bytes: &[u8]) -> ModelResult<(Settings, f64, Option<RigState>)> {
             let m = r.u16("simulator state length")? as usize;
             Some(RigState::from_bytes(r.take(m, "simulator state")?).map_err(|e| e.to_string())?)
         }
-        f => return Err(format!("bad simulator flag {f}")),
+        f => return Err(format!("bad simulator flag {f}").into()),
     };
     r.finish()?;
     Ok((s, start_time, state))
