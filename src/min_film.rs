@@ -2,14 +2,15 @@
 //! relation and its model's unknown is the central film h_c (MODEL_NOTES).
 //!
 //! Relation: Pan & Hamrock (1989), "Simple formulas for performance parameters used in
-//! elastohydrodynamically lubricated line contacts", ASME J. Tribol. 111, 246–251 (also in
-//! Hamrock, *Fundamentals of Fluid Film Lubrication*, the paper's ref. \[8\]), fitted to their
-//! numerical line-contact solutions:
+//! elastohydrodynamically lubricated line contacts", ASME J. Tribol. 111, 246–251, fitted to
+//! their numerical line-contact solutions, as printed in Hamrock, Schmid & Jacobson,
+//! *Fundamentals of Fluid Film Lubrication* (2nd ed., 2004; the paper's ref. \[8\] is Hamrock's
+//! book), eqs. (18.72) and (18.74):
 //!
 //! `h_min/R' = 1.714 W'^−0.128 U^0.694 G^0.568`, `h_c/R' = 2.922 W'^−0.166 U^0.692 G^0.470`,
 //!
-//! with `W' = P_T/(E'R'B)` (as eq. 12's W), `U = η0 ũ/(E'R')` on the MEAN velocity
-//! ũ = u/2 (eq. 12 uses the sum velocity u), `G = αE'`. Their ratio
+//! with `W' = P_T/(E'R'B)` (as eq. 12's W), `U = η0 ũ/(E'R')` (their eq. 18.10) on the MEAN
+//! surface velocity ũ = (u_a + u_b)/2 = u/2 (eq. 12 uses the sum velocity u), `G = αE'`. Their ratio
 //!
 //! `h_min/h_c = (1.714/2.922) W'^0.038 U^0.002 G^0.098`
 //!
@@ -19,8 +20,15 @@
 //! capped at 1 (a minimum cannot exceed the centre value). Using the ratio rather than the
 //! h_min formula alone keeps h_min consistent with the Moes h_c of the load-sharing solve.
 //!
-//! Validity: Pan & Hamrock fitted numerical solutions in the elastic–piezoviscous regime of heavily loaded
-//! steel line contacts (W' of order 1e-5 to 1e-4, G of order 5000). This conformal pin
+//! Neither the paper nor the book was at hand: the coefficients, exponents and equation
+//! numbers were read in an independent transcription (github.com/VictorLier/Tribology,
+//! `Assignment3/A3.py`, course code citing the book), and `tests/published_values.rs` checks
+//! the code against them. Pan & Hamrock's own check values and the range of W', U, G they
+//! fitted were not found.
+//!
+//! Validity: Pan & Hamrock fitted numerical solutions in the elastic–piezoviscous regime of
+//! heavily loaded steel line contacts (W' of order 1e-5 to 1e-4, G of order 5000: the usual
+//! range, written from memory, their stated range not found). This conformal pin
 //! joint has W' ≈ 2e-8–2e-7: far below it, and its film is near the rigid/elastic–isoviscous
 //! boundary (Moes M ≈ 1–100, L ≈ 0.1–1). So h_min here is an extrapolation of the fit. In
 //! particular the fit has no rigid–isoviscous limit (where h_min → h_c): as the fluid share
@@ -39,12 +47,14 @@ pub fn ln_min_to_central(ln_w: f64, ln_u_mean: f64, ln_g: f64, ln_x1: f64) -> f6
     (LN_C + 0.038 * ln_w + 0.002 * (ln_u_mean - ln_x1) + 0.098 * (ln_g + ln_x1)).min(0.0)
 }
 
-/// Pan–Hamrock minimum film h_min/R' (flooded, unscaled).
+/// Pan–Hamrock minimum film h_min/R' (flooded, unscaled): Hamrock, Schmid & Jacobson (2004)
+/// eq. (18.72), for W', mean-velocity U and G.
 pub fn pan_hamrock_min(w: f64, u_mean: f64, g: f64) -> f64 {
     1.714 * w.powf(-0.128) * u_mean.powf(0.694) * g.powf(0.568)
 }
 
-/// Pan–Hamrock central film h_c/R' (flooded, unscaled).
+/// Pan–Hamrock central film h_c/R' (flooded, unscaled): Hamrock, Schmid & Jacobson (2004)
+/// eq. (18.74), for W', mean-velocity U and G.
 pub fn pan_hamrock_central(w: f64, u_mean: f64, g: f64) -> f64 {
     2.922 * w.powf(-0.166) * u_mean.powf(0.692) * g.powf(0.470)
 }

@@ -83,7 +83,8 @@ pub struct Lubricant {
 /// temperature" (section 4.3), an assumption: the paper gives no number.
 pub const DEFAULT_TEMPERATURE: f64 = 293.15;
 /// Default Roelands temperature–viscosity index S0 for a mineral base oil of class ISO VG 100
-/// (see [`crate::viscosity::DEFAULT_S0_SOURCE`]).
+/// (see [`crate::viscosity::DEFAULT_S0_SOURCE`]); inside the 1.04–1.57 fitted to the 13
+/// mineral oils of Stachowiak & Batchelor's Table 2.3 (`tests/published_values.rs`).
 pub const DEFAULT_ROELANDS_TEMPERATURE_INDEX: f64 = 1.262;
 
 /// Starved-inlet correction of the central film (an extension, off by default; see

@@ -11,9 +11,14 @@
 //! a smooth minimum of the flooded film and the layer that feeds it (mass conservation: a film
 //! cannot be thicker than the oil brought to it). R → ∞ is the flooded film; R → 0 gives
 //! h_c → h_oil. γs ≈ 2–3.5 in those papers (it depends weakly on the Moes parameters M, L);
-//! the default 2.8 is the value commonly quoted for Chevalier's relation. The source was not
-//! at hand while this was written: the relation's form is checked by its limits, not by
-//! digitised published points.
+//! the default 2.8 is the value commonly quoted for Chevalier's relation. **Not verified**:
+//! neither paper was at hand, and no published value, example or digitised point of the
+//! relation was found (searches of public pages, code and issue threads; only Damiens et
+//! al.'s abstract, which says that "a single parameter, characteristic of the inlet length of
+//! the contact in the fully flooded regime, determines the starved behavior", i.e. γs depends
+//! on the operating conditions). The form, the γs range and the default are written from
+//! memory; the tests check the form's limits and identities (`tests/published_values.rs`,
+//! `tests/extensions.rs`), not published numbers.
 //!
 //! Here it is applied to the film of eq. 13 (the fluid's share of the load, E'/γ1, P/γ1), so
 //! the load sharing is solved with the starved film: `h_c(x1)^−γs = h_13(x1)^−γs + h_oil^−γs`.
@@ -25,7 +30,7 @@
 //! one-parameter phenomenological description, to be fitted (`pinjoint calibrate` can fit
 //! `starvation.inlet_layer_inverse`).
 
-/// Default γs of the starvation relation.
+/// Default γs of the starvation relation (from memory, not verified against the sources).
 pub const DEFAULT_EXPONENT: f64 = 2.8;
 
 /// The starvation relation in logarithms: ln h_c from ln h_ff (flooded film) with

@@ -232,9 +232,9 @@ fn pressure_viscosity_coefficient_follows_table_2_3_within_its_scatter() {
     let mut errs = Vec::new();
     for row in TABLE_2_3.iter().filter(|r| !r.2[0].is_nan()) {
         let (_, l) = fitted(row);
-        for k in 1..3 {
-            let a = at_temperature(&Lubricant { temperature: TABLE_T[k], ..l }).pressure_viscosity_coefficient;
-            errs.push(a / (row.2[k] * 1e-9) - 1.0);
+        for (t, alpha) in TABLE_T.iter().zip(row.2).skip(1) {
+            let a = at_temperature(&Lubricant { temperature: *t, ..l }).pressure_viscosity_coefficient;
+            errs.push(a / (alpha * 1e-9) - 1.0);
         }
     }
     assert_eq!(errs.len(), 24);
