@@ -89,6 +89,31 @@ fn the_joint_feeds_the_fits_the_mean_velocity_and_the_fluid_share() {
     }
 }
 
+#[test]
+fn pan_hamrock_central_film_is_below_moes_for_heavy_loads() {
+    // Why the model applies Pan & Hamrock's RATIO to its Moes film rather than their h_min
+    // alone: the two published central-film fits differ. For heavily loaded contacts of the
+    // kind Pan & Hamrock fitted (W' 2e-5–5e-4, U 1e-12–1e-10, G 2500–5000; their stated range
+    // was not found) their H_c (mean-velocity U) is 0.67–0.92 of Moes'
+    // (eq. 12 of the paper, sum-velocity U_Σ = 2U), measured; the ratio h_min/h_c of one
+    // consistent fit is the transferable part.
+    let mut lo = f64::INFINITY;
+    let mut hi: f64 = 0.0;
+    for w in [2e-5f64, 1e-4, 5e-4] {
+        for u in [1e-12f64, 1e-11, 1e-10] {
+            for g in [2500.0f64, 5000.0] {
+                let us = 2.0 * u;
+                let (h, _) = pinjoint::film::moes(w * us.powf(-0.5), g * us.powf(0.25));
+                let r = hsj_18_74(w, u, g) / (h * us.sqrt());
+                lo = lo.min(r);
+                hi = hi.max(r);
+            }
+        }
+    }
+    eprintln!("Pan–Hamrock H_c / Moes H_c for heavy loads: {lo:.3}–{hi:.3}");
+    assert!(lo > 0.6 && hi < 0.95, "{lo} {hi}");
+}
+
 // ---------------------------------------------------------------------------------------------
 // Temperature: Roelands' relation against Stachowiak & Batchelor
 // ---------------------------------------------------------------------------------------------
