@@ -225,11 +225,12 @@ fn fitted(row: &(&str, [f64; 3], [f64; 3])) -> (f64, Lubricant) {
 fn roelands_temperature_relation_reproduces_table_2_3_viscosities() {
     // Fitted through each oil's 30 and 100 °C values, the relation predicts its 60 °C value.
     // Measured: RMS error 4.9 % over the 13 oils, median 2.5 %, largest +13.1 % (the HVI light
-    // machine oil, 38 / 12.1 / 5.3 mPa·s, whose printed values bend the other way from every
-    // other row's). The table prints 2–3 significant figures (±0.4–4 %), so most of the spread
-    // is the two-parameter relation's, and it overestimates at mid-range (mean +3.3 %).
+    // machine oil, 38 / 12.1 / 5.3 mPa·s, the only row beyond 7 %). The table prints 2–3
+    // significant figures (±0.4–4 %), so most of the spread is the two-parameter relation's; it
+    // overestimates at mid-range (mean +3.2 %, 11 of the 13 rows above the table).
     let mut sq = 0.0;
     let mut worst: f64 = 0.0;
+    let mut beyond_7 = 0;
     for row in &TABLE_2_3 {
         let (_, l) = fitted(row);
         // The fit carries 30 °C exactly onto 100 °C ...
@@ -241,11 +242,12 @@ fn roelands_temperature_relation_reproduces_table_2_3_viscosities() {
         assert!(e.abs() < 0.15, "{}: {at60} Pa·s vs {} mPa·s ({e:+.3})", row.0, row.1[1]);
         sq += e * e;
         worst = worst.max(e.abs());
+        beyond_7 += usize::from(e.abs() > 0.07);
     }
     let rms = (sq / TABLE_2_3.len() as f64).sqrt();
     eprintln!("η(60 °C): RMS {rms:.4}, largest {worst:.4}");
     assert!(rms < 0.06, "RMS {rms}");
-    assert!(worst > 0.1, "the HVI light machine oil row is the known outlier ({worst})");
+    assert_eq!(beyond_7, 1, "only the HVI light machine oil row is beyond 7 % (largest {worst})");
 }
 
 #[test]
