@@ -289,6 +289,12 @@ fn default_s0_lies_among_the_s0_of_table_2_3_mineral_oils() {
     assert!(DEFAULT_ROELANDS_TEMPERATURE_INDEX > lo && DEFAULT_ROELANDS_TEMPERATURE_INDEX < hi);
     let mvi: Vec<f64> = s[4..9].to_vec();
     assert!(mvi.iter().any(|x| (x - DEFAULT_ROELANDS_TEMPERATURE_INDEX).abs() < 0.002), "{mvi:?}");
+    // What that spread means for a cold soak: Table 3's η0 at 20 °C carried to −55 °C with the
+    // lowest and highest S0 of the table, against the default's 12.25 Pa·s.
+    let cold = |s0: f64| at_temperature(&Lubricant { temperature: 218.15, roelands_temperature_index: s0, ..Lubricant::default() }).viscosity;
+    let (a, b, d) = (cold(lo), cold(hi), cold(DEFAULT_ROELANDS_TEMPERATURE_INDEX));
+    eprintln!("η0 at −55 °C: {a:.3} Pa·s (S0 = {lo:.3}) … {b:.1} Pa·s (S0 = {hi:.3}); default {d:.2} Pa·s");
+    assert!(a > 2.0 && a < 2.6 && b > 150.0 && b < 250.0 && (d / 12.25 - 1.0).abs() < 0.01, "{a} {b} {d}");
 }
 
 // ---------------------------------------------------------------------------------------------
