@@ -60,6 +60,12 @@ print("SciPy reference vs library, 50 points: largest difference", worst)
 sys.exit(0 if worst < 1e-9 else 1)
 PY
 
+# --- Reference-FMUs' fmusim and the FMU Compliance Checker on the FMUs above: neither is on a
+# package registry, so this runs only when FMUSIM / FMUCHECK name their binaries (README,
+# "The FMU Compliance Checker and Reference-FMUs' fmusim"); otherwise it says it skipped
+step "external checkers"
+PINJOINT_KEEP_FMUS=1 bash tests/checkers/run_external.sh
+
 # --- memory: a C host dlopens the packaged FMU, 50 instantiate/step/free cycles under valgrind
 # (the issue's 1000-cycle check is `bash tests/valgrind.sh 1000`)
 step "valgrind"
