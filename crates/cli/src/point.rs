@@ -137,7 +137,7 @@ pub fn run(cmd: &PointCmd) -> Result<()> {
         let w = omega.abs();
         let speeds = if w > 0.0 { (0.5 * w, 2.0 * w) } else { (1e-3, 1.0) };
         let mut ev = cmd.fidelity.build(&cmd.params.load()?, (0.5 * p, 2.0 * p), speeds)?;
-        let e = ev.evaluate(cmd.load, omega).map_err(|e| super::error::CliError::Invalid(e.to_string()))?;
+        let e = ev.evaluate(cmd.load, omega)?;
         note_fallback(&e, &ev, &Default::default());
         eprintln!("fidelity: answered by {}", e.source.as_str());
         ev.operating_point(&e)
