@@ -5,8 +5,15 @@
 //!
 //! The order is the sweep's: the nine quantities of the paper's model, `regime`, then the
 //! extensions (h_min, eq. 21 as printed), so the earlier columns keep their positions.
+//!
+//! [`POINT`] is every quantity of an operating point (the CSV columns with the inputs and the
+//! parts of μ), in the order of `pinjoint point --json`; [`LUBRICANT`] the lubricant state a
+//! joint evaluates with; [`Record`] serialises both as one object. Names, units and
+//! descriptions are written here once.
 
 use crate::joint::{OperatingPoint, Regime};
+use crate::params::Lubricant;
+use serde::ser::{Serialize, SerializeMap, Serializer};
 
 /// How a column's value is read from an [`OperatingPoint`].
 #[derive(Debug, Clone, Copy)]
@@ -46,6 +53,90 @@ pub const COLUMNS: [Column; 12] = [
     Column { name: "min_lambda_ratio", unit: "1", description: "λ from h_min (eq. 21 as printed; extension)", value: Value::Number(|o| o.min_lambda_ratio) },
 ];
 
+/// The inputs of an operating point: the load magnitude and the angular velocity as given.
+pub const INPUTS: [Column; 2] = [
+    Column { name: "load", unit: "N", description: "normal load P_T (its magnitude)", value: Value::Number(|o| o.load) },
+    Column { name: "speed", unit: "rad/s", description: "angular velocity ω as given (the model uses |ω|)", value: Value::Number(|o| o.angular_velocity) },
+];
+
+/// The quantities of an operating point that are not CSV columns: the sliding speed, the
+/// Hertz peak pressure, the viscosity at p_m and the two parts of μ.
+pub const DETAILS: [Column; 5] = [
+    Column { name: "sliding_speed", unit: "m/s", description: "sliding speed u = |ω|·R", value: Value::Number(|o| o.sliding_speed) },
+    Column { name: "peak_pressure", unit: "Pa", description: "Hertz peak pressure p0 (eq. 6)", value: Value::Number(|o| o.peak_pressure) },
+    Column { name: "contact_viscosity", unit: "Pa.s", description: "Roelands viscosity at p_m (eq. 5; +inf where it overflows)", value: Value::Number(|o| o.contact_viscosity) },
+    Column { name: "fluid_friction_coefficient", unit: "1", description: "fluid (Bair–Winer) part of μ, Q_H/P_T (eq. 3)", value: Value::Number(|o| o.fluid_friction_coefficient) },
+    Column { name: "asperity_friction_coefficient", unit: "1", description: "asperity part of μ, μ_c/γ2 (eq. 8)", value: Value::Number(|o| o.asperity_friction_coefficient) },
+];
+
+/// Every quantity of an operating point but the solver's `logit`, in the order of `pinjoint
+/// point --json`: [`INPUTS`], [`COLUMNS`] up to `regime`, [`DETAILS`], then the h_min columns.
+pub const POINT: [Column; 19] = {
+    let mut all = [COLUMNS[0]; 19];
+    let mut k = 0;
+    while k < 19 {
+        all[k] = match k {
+            0..2 => INPUTS[k],
+            2..12 => COLUMNS[k - 2],
+            12..17 => DETAILS[k - 12],
+            _ => COLUMNS[k - 7],
+        };
+        k += 1;
+    }
+    all
+};
+
+/// The column of [`POINT`] named `name`.
+pub fn column(name: &str) -> Option<&'static Column> {
+    POINT.iter().find(|c| c.name == name)
+}
+
+/// A quantity of the lubricant state a joint evaluates with ([`crate::Joint::lubricant`]).
+#[derive(Debug, Clone, Copy)]
+pub struct LubricantColumn {
+    /// Its name (JSON key).
+    pub name: &'static str,
+    /// Its SI unit.
+    pub unit: &'static str,
+    /// What it holds.
+    pub description: &'static str,
+    /// How to read it.
+    pub value: fn(&Lubricant) -> f64,
+}
+
+/// The lubricant's temperature and the viscosity parameters at it, after the [`POINT`] quantities.
+pub const LUBRICANT: [LubricantColumn; 3] = [
+    LubricantColumn { name: "temperature", unit: "K", description: "lubricant temperature T", value: |l| l.temperature },
+    LubricantColumn { name: "inlet_viscosity", unit: "Pa.s", description: "inlet (ambient-pressure) viscosity η0 at T", value: |l| l.viscosity },
+    LubricantColumn { name: "pressure_viscosity_coefficient", unit: "1/Pa", description: "pressure-viscosity coefficient α at T", value: |l| l.pressure_viscosity_coefficient },
+];
+
+/// One operating point with the lubricant state it was evaluated with: serialises as one
+/// object, [`POINT`] then [`LUBRICANT`] in order (numbers in SI units, `regime` as its name).
+#[derive(Debug, Clone, Copy)]
+pub struct Record<'a> {
+    /// The operating point.
+    pub point: &'a OperatingPoint,
+    /// The lubricant at the joint's temperature ([`crate::Joint::lubricant`]).
+    pub lubricant: &'a Lubricant,
+}
+
+impl Serialize for Record<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(POINT.len() + LUBRICANT.len()))?;
+        for c in &POINT {
+            match c.value {
+                Value::Number(f) => map.serialize_entry(c.name, &f(self.point))?,
+                Value::Regime => map.serialize_entry(c.name, self.point.regime.as_str())?,
+            }
+        }
+        for c in &LUBRICANT {
+            map.serialize_entry(c.name, &(c.value)(self.lubricant))?;
+        }
+        map.end()
+    }
+}
+
 /// The names of [`COLUMNS`], in order.
 pub const NAMES: [&str; 12] = {
     let mut names = [""; 12];
@@ -74,32 +165,63 @@ mod tests {
     use super::*;
     use crate::{Joint, Params};
 
+    /// The operating point as a table of its fields, by serde's names (independent of the
+    /// accessors in the record).
+    fn fields(op: &OperatingPoint) -> toml::Table {
+        toml::Table::try_from(op).unwrap()
+    }
+
     #[test]
-    fn every_numeric_column_reads_its_own_field() {
-        let op = Joint::new(&Params::default()).unwrap().evaluate(20e3, 3.0).unwrap();
-        let expect = [
-            op.friction_coefficient,
-            op.torque,
-            op.film_thickness,
-            op.lambda_ratio,
-            op.fluid_load_fraction,
-            op.asperity_load_fraction,
-            op.mean_pressure,
-            op.contact_half_width,
-            op.sommerfeld_number,
-        ];
-        let numbers: Vec<f64> = COLUMNS
-            .iter()
-            .filter_map(|c| match c.value {
-                Value::Number(f) => Some(f(&op)),
-                Value::Regime => None,
-            })
-            .collect();
-        assert_eq!(numbers[..9], expect);
-        assert_eq!(numbers[9..], [op.min_film_thickness, op.min_lambda_ratio]);
+    fn every_column_reads_its_own_field() {
+        let j = Joint::new(&Params::default()).unwrap();
+        for (load, omega) in [(20e3, 3.0), (60e3, -0.01), (5e3, 0.0)] {
+            let op = j.evaluate(load, omega).unwrap();
+            let t = fields(&op);
+            for c in &POINT {
+                let field = if c.name == "speed" { "angular_velocity" } else { c.name };
+                match c.value {
+                    Value::Number(f) => assert_eq!(t[field].as_float().unwrap().to_bits(), f(&op).to_bits(), "{}", c.name),
+                    Value::Regime => assert_eq!(t[field].as_str().unwrap(), op.regime.as_str()),
+                }
+            }
+            // Every field but the solver's warm start is in the record, once.
+            let mut names: Vec<&str> = POINT.iter().map(|c| if c.name == "speed" { "angular_velocity" } else { c.name }).collect();
+            names.push("logit");
+            names.sort_unstable();
+            let mut keys: Vec<&str> = t.keys().map(String::as_str).collect();
+            keys.sort_unstable();
+            assert_eq!(names, keys);
+        }
         assert_eq!(NAMES[9], "regime");
         for (k, r) in REGIMES.iter().enumerate() {
             assert_eq!(usize::from(regime_code(*r)), k);
         }
+    }
+
+    #[test]
+    fn the_point_holds_the_columns_in_their_order() {
+        let names: Vec<&str> = POINT.iter().map(|c| c.name).collect();
+        let columns: Vec<&str> = names.iter().copied().filter(|n| NAMES.contains(n)).collect();
+        assert_eq!(columns, NAMES);
+        assert_eq!(names[..2], ["load", "speed"]);
+        assert_eq!(names[12..17], DETAILS.map(|c| c.name));
+        assert_eq!(column("peak_pressure").unwrap().unit, "Pa");
+        assert!(column("logit").is_none());
+    }
+
+    #[test]
+    fn the_record_serialises_in_order_with_the_lubricant() {
+        let j = Joint::new(&Params::default()).unwrap();
+        let op = j.evaluate(20e3, 0.2).unwrap();
+        let t = toml::Table::try_from(Record { point: &op, lubricant: j.lubricant() }).unwrap();
+        let mut keys: Vec<&str> = t.keys().map(String::as_str).collect();
+        keys.sort_unstable();
+        let mut expect: Vec<&str> = POINT.iter().map(|c| c.name).chain(LUBRICANT.iter().map(|c| c.name)).collect();
+        expect.sort_unstable();
+        assert_eq!(keys, expect);
+        assert_eq!(t["temperature"].as_float(), Some(j.lubricant().temperature));
+        assert_eq!(t["inlet_viscosity"].as_float(), Some(j.lubricant().viscosity));
+        assert_eq!(t["pressure_viscosity_coefficient"].as_float(), Some(j.lubricant().pressure_viscosity_coefficient));
+        assert_eq!(t["regime"].as_str(), Some(op.regime.as_str()));
     }
 }

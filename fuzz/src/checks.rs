@@ -107,7 +107,11 @@ pub fn value(inp: &mut Input, typical: f64, lo: Option<f64>, hi: Option<f64>) ->
 pub mod core {
     use super::{value, Input, SPECIAL};
     use pinjoint::params::PARAMS;
+    use pinjoint::record::{Value, POINT};
     use pinjoint::{Joint, ModelError, OperatingPoint, Params};
+
+    /// The record's numbers [`check_point`] does not require >= 0 (or checks otherwise).
+    const UNSIGNED_EXEMPT: [&str; 6] = ["load", "speed", "fluid_load_fraction", "asperity_load_fraction", "min_film_thickness", "min_lambda_ratio"];
 
     /// A load (N): around 20 kN by 2^±32 (5 µN to 86 GN), special values or raw bits.
     pub fn load(inp: &mut Input) -> f64 {
@@ -179,20 +183,12 @@ pub mod core {
 
     /// Every quantity of an operating point with the property it must have.
     fn check_point(op: &OperatingPoint, load: f64, omega: f64, envelope: bool, envelope_mode: bool, what: &str) {
-        let nonneg = [
-            ("friction_coefficient", op.friction_coefficient),
-            ("torque", op.torque),
-            ("film_thickness", op.film_thickness),
-            ("lambda_ratio", op.lambda_ratio),
-            ("mean_pressure", op.mean_pressure),
-            ("peak_pressure", op.peak_pressure),
-            ("contact_half_width", op.contact_half_width),
-            ("sommerfeld_number", op.sommerfeld_number),
-            ("contact_viscosity", op.contact_viscosity),
-            ("fluid_friction_coefficient", op.fluid_friction_coefficient),
-            ("asperity_friction_coefficient", op.asperity_friction_coefficient),
-            ("sliding_speed", op.sliding_speed),
-        ];
+        // Every number of the record but the signed speed, the load shares (checked below)
+        // and the h_min extension: must be >= 0, never NaN.
+        let nonneg = POINT.iter().filter_map(|c| match c.value {
+            Value::Number(f) if !UNSIGNED_EXEMPT.contains(&c.name) => Some((c.name, f(op))),
+            _ => None,
+        });
         for (name, v) in nonneg {
             // Open core finding 2 (fuzz/README.md): where the asperities cannot carry the
             // load at (or near) rest, eq. 19 gives a negative separation. The envelope

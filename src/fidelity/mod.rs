@@ -108,19 +108,24 @@ pub enum Level {
 }
 
 impl Level {
-    /// Lower-case name, as accepted by the parser and written in reports (`full`, `table`, ...).
-    pub fn as_str(&self) -> &'static str {
+    /// The fidelity that asks for this level.
+    pub fn fidelity(self) -> Fidelity {
         match self {
-            Level::Full => "full",
-            Level::Table => "table",
-            Level::Boundary => "boundary",
+            Level::Full => Fidelity::Full,
+            Level::Table => Fidelity::Table,
+            Level::Boundary => Fidelity::Boundary,
         }
+    }
+    /// Lower-case name, as accepted by the parser and written in reports (`full`, `table`, ...):
+    /// its [`Fidelity`]'s.
+    pub fn as_str(&self) -> &'static str {
+        self.fidelity().as_str()
     }
 }
 
 impl fmt::Display for Level {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.as_str())
+        self.fidelity().fmt(f)
     }
 }
 

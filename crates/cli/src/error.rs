@@ -2,6 +2,7 @@
 //! file and line, so the user can fix the input without reading the source.
 
 use crate::plot::PlotError;
+use pinjoint::fidelity::FidelityError;
 use pinjoint::rig::RigError;
 use pinjoint::{ModelError, ParamError};
 use std::io;
@@ -63,6 +64,10 @@ pub enum CliError {
     /// A flag value outside its allowed range.
     #[error("{0}")]
     Invalid(String),
+    /// A fidelity flag (--fidelity, --tolerance, the envelope) the library refuses, or a point
+    /// a fidelity level cannot evaluate.
+    #[error("{0}")]
+    Fidelity(#[from] FidelityError),
     /// An SVG chart could not be drawn.
     #[error(transparent)]
     Plot(#[from] PlotError),

@@ -55,14 +55,14 @@ pub fn range_of(values: impl Iterator<Item = f64>, fallback: (f64, f64)) -> (f64
 impl FidelityArgs {
     /// The requested level.
     pub fn level(&self) -> Result<Fidelity> {
-        self.fidelity.parse().map_err(|e: pinjoint::fidelity::FidelityError| CliError::Invalid(e.to_string()))
+        Ok(self.fidelity.parse::<Fidelity>()?)
     }
 
     /// Whether the complete, cold solve of the library is asked for (the default: outputs
     /// unchanged bit for bit from before fidelity levels existed).
     /// The tolerance is checked in every case, so a mistyped flag is never silently ignored.
     pub fn is_full(&self) -> Result<bool> {
-        pinjoint::fidelity::validate_tolerance(self.tolerance).map_err(|e| CliError::Invalid(e.to_string()))?;
+        pinjoint::fidelity::validate_tolerance(self.tolerance)?;
         Ok(self.level()? == Fidelity::Full)
     }
 
@@ -76,14 +76,14 @@ impl FidelityArgs {
             Some(t) => parse_range("--envelope-speed", t, "rad/s")?,
             None => speeds,
         };
-        Envelope::new(l.0, l.1, s.0, s.1).map_err(|e| CliError::Invalid(e.to_string()))
+        Ok(Envelope::new(l.0, l.1, s.0, s.1)?)
     }
 
     /// Build the evaluator and say on standard error what it is.
     pub fn build(&self, params: &Params, loads: (f64, f64), speeds: (f64, f64)) -> Result<Evaluator> {
         let level = self.level()?;
         let env = self.envelope(loads, speeds)?;
-        let ev = Evaluator::new(params, level, self.tolerance, env).map_err(|e| CliError::Invalid(e.to_string()))?;
+        let ev = Evaluator::new(params, level, self.tolerance, env)?;
         eprintln!("{}", describe(&ev));
         Ok(ev)
     }

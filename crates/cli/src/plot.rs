@@ -17,18 +17,12 @@ use plotters::prelude::*;
 use std::fmt;
 
 /// A rendering failure (from plotters), as text.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("plot rendering failed: {0}")]
 pub struct PlotError(
     /// plotters' error message.
     pub String,
 );
-
-impl fmt::Display for PlotError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "plot rendering failed: {}", self.0)
-    }
-}
-impl std::error::Error for PlotError {}
 
 fn err<E: fmt::Display>(e: E) -> PlotError {
     PlotError(e.to_string())

@@ -5,8 +5,8 @@ use super::error::Result;
 use super::fidelity_args::{note_fallback, FidelityArgs};
 use super::output::to_stdout;
 use clap::Args;
+use pinjoint::record::{Record, Value, LUBRICANT};
 use pinjoint::OperatingPoint;
-use serde::Serialize;
 
 #[derive(Args, Debug)]
 #[command(
@@ -67,117 +67,61 @@ impl SpeedArg {
     }
 }
 
-/// The JSON form of a point: the documented keys first, then extras (all SI).
-#[derive(Serialize)]
-pub struct PointJson {
-    /// Normal load P_T, in N.
-    pub load: f64,
-    /// rad/s, as given (the model uses |speed|).
-    pub speed: f64,
-    /// Friction coefficient μ (eq. 10), dimensionless.
-    pub friction_coefficient: f64,
-    /// Friction torque magnitude T = μ·R·P_T (eq. 11), in N·m.
-    pub torque: f64,
-    /// Central film thickness h_c, in m.
-    pub film_thickness: f64,
-    /// Film parameter λ = h_c/√(σ² + σ_b²) (eq. 21 with the central film), dimensionless.
-    pub lambda_ratio: f64,
-    /// Share of the load carried by the fluid film, 1/γ1.
-    pub fluid_load_fraction: f64,
-    /// Share of the load carried by the asperities, 1/γ2.
-    pub asperity_load_fraction: f64,
-    /// Hertz mean pressure p_m (eq. 6), in Pa.
-    pub mean_pressure: f64,
-    /// Hertz contact half-width a (eq. 6), in m.
-    pub contact_half_width: f64,
-    /// Sommerfeld number S (eq. 20), dimensionless.
-    pub sommerfeld_number: f64,
-    /// Lubrication regime: "boundary", "mixed" or "full-film".
-    pub regime: &'static str,
-    /// Sliding speed u = |ω|·R, in m/s.
-    pub sliding_speed: f64,
-    /// Hertz peak pressure p0 (eq. 6), in Pa.
-    pub peak_pressure: f64,
-    /// Roelands viscosity at p_m (eq. 5), in Pa·s (+∞ where eq. 5 overflows).
-    pub contact_viscosity: f64,
-    /// The fluid (Bair–Winer, eq. 3) part of μ, Q_H/P_T.
-    pub fluid_friction_coefficient: f64,
-    /// The asperity (eq. 8) part of μ, μ_c/γ2.
-    pub asperity_friction_coefficient: f64,
-    /// h_min (m), Pan–Hamrock ratio on h_c (extension; `pinjoint::min_film`).
-    pub min_film_thickness: f64,
-    /// h_min/√(σ² + σ_b²) (eq. 21 as printed).
-    pub min_lambda_ratio: f64,
-    /// Lubricant temperature (K) and the viscosity η0 and α at it.
-    pub temperature: f64,
-    /// Inlet (ambient-pressure) viscosity η0 at `temperature`, in Pa·s.
-    pub inlet_viscosity: f64,
-    /// Pressure-viscosity coefficient α at `temperature`, in 1/Pa.
-    pub pressure_viscosity_coefficient: f64,
-}
+/// The rows of the table, in order: a label for people and the [`pinjoint::record::POINT`]
+/// quantity it shows (value and unit come from the record). `speed` is followed by its value
+/// in rpm.
+pub const TABLE: [(&str, &str); 19] = [
+    ("load P_T", "load"),
+    ("angular velocity ω", "speed"),
+    ("sliding speed u = |ω|R", "sliding_speed"),
+    ("friction coefficient μ (eq. 10)", "friction_coefficient"),
+    ("  fluid part Q_H/P_T (eq. 3)", "fluid_friction_coefficient"),
+    ("  asperity part μ_c/γ2 (eq. 8)", "asperity_friction_coefficient"),
+    ("torque T = μRP_T (eq. 11)", "torque"),
+    ("central film thickness h_c", "film_thickness"),
+    ("lambda ratio h_c/√(σ²+σ_b²) (eq. 21)", "lambda_ratio"),
+    ("minimum film thickness h_min (Pan–Hamrock)", "min_film_thickness"),
+    ("lambda ratio h_min/√(σ²+σ_b²) (eq. 21)", "min_lambda_ratio"),
+    ("fluid load fraction 1/γ1", "fluid_load_fraction"),
+    ("asperity load fraction 1/γ2", "asperity_load_fraction"),
+    ("Hertz mean pressure p_m (eq. 6)", "mean_pressure"),
+    ("Hertz peak pressure p0 (eq. 6)", "peak_pressure"),
+    ("contact half-width a (eq. 6)", "contact_half_width"),
+    ("viscosity at p_m (Roelands, eq. 5)", "contact_viscosity"),
+    ("Sommerfeld number S (eq. 20)", "sommerfeld_number"),
+    ("regime", "regime"),
+];
 
-impl PointJson {
-    /// The JSON form of `o`, with the lubricant state of `joint`.
-    pub fn new(o: &OperatingPoint, joint: &pinjoint::Joint) -> Self {
-        let l = joint.lubricant();
-        Self { temperature: l.temperature, inlet_viscosity: l.viscosity, pressure_viscosity_coefficient: l.pressure_viscosity_coefficient, ..Self::from(o) }
-    }
-}
+/// The labels of the lubricant rows after [`TABLE`], in [`pinjoint::record::LUBRICANT`] order.
+pub const LUBRICANT_LABELS: [&str; 3] = ["lubricant temperature T", "inlet viscosity η0 at T", "pressure-viscosity coefficient α at T"];
 
-impl From<&OperatingPoint> for PointJson {
-    fn from(o: &OperatingPoint) -> Self {
-        Self {
-            load: o.load,
-            speed: o.angular_velocity,
-            friction_coefficient: o.friction_coefficient,
-            torque: o.torque,
-            film_thickness: o.film_thickness,
-            lambda_ratio: o.lambda_ratio,
-            fluid_load_fraction: o.fluid_load_fraction,
-            asperity_load_fraction: o.asperity_load_fraction,
-            mean_pressure: o.mean_pressure,
-            contact_half_width: o.contact_half_width,
-            sommerfeld_number: o.sommerfeld_number,
-            regime: o.regime.as_str(),
-            sliding_speed: o.sliding_speed,
-            peak_pressure: o.peak_pressure,
-            contact_viscosity: o.contact_viscosity,
-            fluid_friction_coefficient: o.fluid_friction_coefficient,
-            asperity_friction_coefficient: o.asperity_friction_coefficient,
-            min_film_thickness: o.min_film_thickness,
-            min_lambda_ratio: o.min_lambda_ratio,
-            temperature: f64::NAN,
-            inlet_viscosity: f64::NAN,
-            pressure_viscosity_coefficient: f64::NAN,
-        }
+/// A record unit as the table shows it: `-` for a pure number, nothing for the regime's name,
+/// middle dots in products.
+pub fn display_unit(unit: &'static str) -> &'static str {
+    match unit {
+        "1" => "-",
+        "-" => "",
+        "N.m" => "N·m",
+        "Pa.s" => "Pa·s",
+        u => u,
     }
 }
 
 /// The table rows: quantity, value, unit.
 pub fn table(o: &OperatingPoint) -> Vec<(&'static str, String, &'static str)> {
-    let r = readable;
-    vec![
-        ("load P_T", r(o.load), "N"),
-        ("angular velocity ω", r(o.angular_velocity), "rad/s"),
-        ("  (in rpm)", r(o.angular_velocity / RAD_S_PER_RPM), "rpm"),
-        ("sliding speed u = |ω|R", r(o.sliding_speed), "m/s"),
-        ("friction coefficient μ (eq. 10)", r(o.friction_coefficient), "-"),
-        ("  fluid part Q_H/P_T (eq. 3)", r(o.fluid_friction_coefficient), "-"),
-        ("  asperity part μ_c/γ2 (eq. 8)", r(o.asperity_friction_coefficient), "-"),
-        ("torque T = μRP_T (eq. 11)", r(o.torque), "N·m"),
-        ("central film thickness h_c", r(o.film_thickness), "m"),
-        ("lambda ratio h_c/√(σ²+σ_b²) (eq. 21)", r(o.lambda_ratio), "-"),
-        ("minimum film thickness h_min (Pan–Hamrock)", r(o.min_film_thickness), "m"),
-        ("lambda ratio h_min/√(σ²+σ_b²) (eq. 21)", r(o.min_lambda_ratio), "-"),
-        ("fluid load fraction 1/γ1", r(o.fluid_load_fraction), "-"),
-        ("asperity load fraction 1/γ2", r(o.asperity_load_fraction), "-"),
-        ("Hertz mean pressure p_m (eq. 6)", r(o.mean_pressure), "Pa"),
-        ("Hertz peak pressure p0 (eq. 6)", r(o.peak_pressure), "Pa"),
-        ("contact half-width a (eq. 6)", r(o.contact_half_width), "m"),
-        ("viscosity at p_m (Roelands, eq. 5)", r(o.contact_viscosity), "Pa·s"),
-        ("Sommerfeld number S (eq. 20)", r(o.sommerfeld_number), "-"),
-        ("regime", o.regime.as_str().to_string(), ""),
-    ]
+    let mut rows = Vec::with_capacity(TABLE.len() + 1);
+    for (label, name) in &TABLE {
+        let c = pinjoint::record::column(name).expect("every table row names a record quantity");
+        let value = match c.value {
+            Value::Number(f) => readable(f(o)),
+            Value::Regime => o.regime.as_str().to_string(),
+        };
+        rows.push((*label, value, display_unit(c.unit)));
+        if *name == "speed" {
+            rows.push(("  (in rpm)", readable(o.angular_velocity / RAD_S_PER_RPM), "rpm"));
+        }
+    }
+    rows
 }
 
 /// Runs `pinjoint point`: evaluates the model at one load and speed and prints the table or
@@ -193,20 +137,20 @@ pub fn run(cmd: &PointCmd) -> Result<()> {
         let w = omega.abs();
         let speeds = if w > 0.0 { (0.5 * w, 2.0 * w) } else { (1e-3, 1.0) };
         let mut ev = cmd.fidelity.build(&cmd.params.load()?, (0.5 * p, 2.0 * p), speeds)?;
-        let e = ev.evaluate(cmd.load, omega).map_err(|e| super::error::CliError::Invalid(e.to_string()))?;
+        let e = ev.evaluate(cmd.load, omega)?;
         note_fallback(&e, &ev, &Default::default());
         eprintln!("fidelity: answered by {}", e.source.as_str());
         ev.operating_point(&e)
     };
     if cmd.json {
-        let text = serde_json::to_string(&PointJson::new(&op, &joint)).expect("plain struct of numbers serialises");
+        let record = Record { point: &op, lubricant: joint.lubricant() };
+        let text = serde_json::to_string(&record).expect("a map of numbers and names serialises");
         return to_stdout(|w| writeln!(w, "{text}"));
     }
     let mut rows = table(&op);
-    let l = joint.lubricant();
-    rows.push(("lubricant temperature T", readable(l.temperature), "K"));
-    rows.push(("inlet viscosity η0 at T", readable(l.viscosity), "Pa·s"));
-    rows.push(("pressure-viscosity coefficient α at T", readable(l.pressure_viscosity_coefficient), "1/Pa"));
+    for (label, c) in LUBRICANT_LABELS.into_iter().zip(&LUBRICANT) {
+        rows.push((label, readable((c.value)(joint.lubricant())), display_unit(c.unit)));
+    }
     let width = rows.iter().map(|r| r.0.chars().count()).max().unwrap_or(0);
     let vwidth = rows.iter().map(|r| r.1.len()).max().unwrap_or(0);
     to_stdout(|w| {
@@ -218,4 +162,25 @@ pub fn run(cmd: &PointCmd) -> Result<()> {
         }
         Ok(())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn json_keys_follow_the_record_and_the_table_shows_every_quantity() {
+        let j = pinjoint::Joint::new(&pinjoint::Params::default()).unwrap();
+        let op = j.evaluate(20e3, 0.2).unwrap();
+        let text = serde_json::to_string(&Record { point: &op, lubricant: j.lubricant() }).unwrap();
+        let names = pinjoint::record::POINT.iter().map(|c| c.name).chain(LUBRICANT.iter().map(|c| c.name));
+        let at: Vec<usize> = names.map(|n| text.find(&format!("\"{n}\":")).unwrap()).collect();
+        assert!(at.windows(2).all(|w| w[0] < w[1]), "{text}");
+        let mut shown: Vec<&str> = TABLE.iter().map(|r| r.1).collect();
+        shown.sort_unstable();
+        let mut all: Vec<&str> = pinjoint::record::POINT.iter().map(|c| c.name).collect();
+        all.sort_unstable();
+        assert_eq!(shown, all);
+        assert_eq!(table(&op).len(), TABLE.len() + 1);
+    }
 }

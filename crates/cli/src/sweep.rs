@@ -173,7 +173,7 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
     for r in recs {
         let line = r.line;
         let bad = |message: String| CliError::Input { file: file.to_string(), line, message };
-        split(batch.bytes(r), &mut rec).map_err(bad)?;
+        split(batch.bytes(r), &mut rec).map_err(|e| bad(e.to_string()))?;
         if let Err(e) = std::str::from_utf8(rec.as_slice()) {
             return Err(bad(format!("unreadable CSV: invalid UTF-8: {e}")));
         }

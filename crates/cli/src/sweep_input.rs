@@ -137,7 +137,7 @@ impl<R: BufRead> RecordReader<R> {
         let mut text = Vec::new();
         let Some(r) = self.next_record(&mut text)? else { return Ok((Vec::new(), 1)) };
         let mut rec = csv::ByteRecord::new();
-        split(&text[r.start..r.end], &mut rec).map_err(|m| self.bad(r.line, m))?;
+        split(&text[r.start..r.end], &mut rec).map_err(|e| self.bad(r.line, e.to_string()))?;
         let mut header = Vec::with_capacity(rec.len());
         for f in rec.iter() {
             let s = std::str::from_utf8(f).map_err(|e| self.bad(r.line, format!("unreadable CSV: invalid UTF-8 in the header: {e}")))?;
@@ -147,10 +147,21 @@ impl<R: BufRead> RecordReader<R> {
     }
 }
 
+/// Why [`split`] could not cut a record.
+#[derive(Debug, thiserror::Error)]
+pub enum SplitError {
+    /// The `csv` reader refused the record.
+    #[error("unreadable CSV: {0}")]
+    Csv(#[from] csv::Error),
+    /// The `csv` reader splits it into several records.
+    #[error("unreadable CSV: a line break inside the record that is not within quotes (a carriage return alone?)")]
+    LineBreak,
+}
+
 /// Cut one record (terminator removed) into trimmed fields, replacing `out`'s contents.
 /// Errors: a record the `csv` reader splits into several (a line break inside it that is
 /// not within quotes, i.e. a carriage return alone).
-pub fn split(bytes: &[u8], out: &mut csv::ByteRecord) -> std::result::Result<(), String> {
+pub fn split(bytes: &[u8], out: &mut csv::ByteRecord) -> std::result::Result<(), SplitError> {
     out.clear();
     if !bytes.iter().any(|&b| b == b'"' || b == b'\r') {
         for f in bytes.split(|&b| b == b',') {
@@ -162,11 +173,11 @@ pub fn split(bytes: &[u8], out: &mut csv::ByteRecord) -> std::result::Result<(),
     match rdr.read_byte_record(out) {
         Ok(true) => {}
         Ok(false) => out.push_field(b""),
-        Err(e) => return Err(format!("unreadable CSV: {e}")),
+        Err(e) => return Err(e.into()),
     }
     let mut extra = csv::ByteRecord::new();
     if matches!(rdr.read_byte_record(&mut extra), Ok(true)) {
-        return Err("unreadable CSV: a line break inside the record that is not within quotes (a carriage return alone?)".into());
+        return Err(SplitError::LineBreak);
     }
     Ok(())
 }
