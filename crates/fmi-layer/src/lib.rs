@@ -11,7 +11,11 @@
 //! `pinjoint-fmu` crate) passes its registry of models in from its own root with
 //! [`export_fmi2!`], the one entry point that must choose a model by GUID.
 
+pub mod error;
 pub mod fmi2;
 pub mod fmi3;
+mod xml;
+
+pub use error::{CallError, StateFormatError, XmlError};
 
 use numfmt as fmt;

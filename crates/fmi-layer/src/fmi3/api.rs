@@ -10,6 +10,7 @@
 #![allow(non_snake_case)]
 
 use super::types::*;
+use crate::error::CallError;
 use crate::fmi2::api::common::{
     deserialize_fmu_state, free_fmu_state, get_fmu_state, looks_like_uri, serialize_fmu_state, serialized_fmu_state_size,
     set_fmu_state, text,
@@ -162,9 +163,9 @@ pub unsafe extern "C" fn fmi3SetDebugLogging(
         let mut parsed = Vec::with_capacity(cats.len());
         for &p in cats {
             // SAFETY: each entry is NULL or a NUL-terminated string.
-            let name = unsafe { text(p) }.ok_or("a category name is NULL")?;
+            let name = unsafe { text(p) }.ok_or(CallError::Null("a category name"))?;
             let known: Vec<&str> = Category::ALL.iter().map(|c| c.name()).collect();
-            parsed.push(Category::from_name(&name).ok_or_else(|| format!("unknown log category '{name}' (known: {})", known.join(", ")))?);
+            parsed.push(Category::from_name(&name).ok_or_else(|| CallError::UnknownCategory { name, known: known.join(", ") })?);
         }
         if parsed.is_empty() {
             inst.logger.set_all(loggingOn != 0);
@@ -227,9 +228,9 @@ pub extern "C" fn fmi3Reset(instance: Fmi3Instance) -> Fmi3StatusC {
 }
 
 /// All variables are scalars: one value per value reference.
-fn check_n_values(nvr: usize, n_values: usize) -> Result<(), String> {
+fn check_n_values(nvr: usize, n_values: usize) -> Result<(), CallError> {
     if nvr != n_values {
-        return Err(format!("nValues = {n_values} but nValueReferences = {nvr}: every variable of this FMU is a scalar"));
+        return Err(CallError::NotScalar { nvr, n_values });
     }
     Ok(())
 }
@@ -269,7 +270,7 @@ unsafe fn set_as<T: Copy>(
     nvr: usize,
     values: *const T,
     n_values: usize,
-    from: impl Fn(T) -> Result<f64, String>,
+    from: impl Fn(T) -> Result<f64, CallError>,
 ) -> CallResult {
     check_n_values(nvr, n_values)?;
     // SAFETY: per the contract.
@@ -356,7 +357,7 @@ pub unsafe extern "C" fn fmi3GetFloat64(instance: Fmi3Instance, valueReferences:
 typed!(fmi3GetInt32, fmi3SetInt32, "Int32 (FMI 2.0 Integer)", i32, Kind::Integer, |v| v as i32, |v: i32| Ok(f64::from(v)));
 typed!(fmi3GetInt64, fmi3SetInt64, "Enumeration (accessed as Int64)", i64, Kind::Enumeration(&ANY_ENUMERATION), |v| v as i64, |v: i64| {
     // Enumeration codes are small; anything beyond i32 is no item of any type here.
-    i32::try_from(v).map(f64::from).map_err(|_| format!("value {v} is no item of an enumeration of this FMU"))
+    i32::try_from(v).map(f64::from).map_err(|_| CallError::NotAnEnumerationItem(v))
 });
 typed!(fmi3GetBoolean, fmi3SetBoolean, "Boolean (any non-zero byte is true)", u8, Kind::Boolean, |v| u8::from(v != 0.0), |v: u8| Ok(if v != 0 { 1.0 } else { 0.0 }));
 
@@ -443,7 +444,7 @@ pub unsafe extern "C" fn fmi3SetBinary(
 }
 
 fn no_clocks(instance: Fmi3Instance, name: &'static str) -> Fmi3StatusC {
-    call(instance, name, state::RESET, |_| Err("this FMU has no clocks".into()))
+    call(instance, name, state::RESET, |_| Err(CallError::Unsupported("this FMU has no clocks")))
 }
 
 /// `fmi3GetClock` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
@@ -521,7 +522,7 @@ pub unsafe extern "C" fn fmi3GetNumberOfVariableDependencies(instance: Fmi3Insta
     call(instance, "fmi3GetNumberOfVariableDependencies", state::RESET, |inst| {
         let deps = dependencies(inst, valueReference)?;
         if nDependencies.is_null() {
-            return Err("nDependencies is NULL".into());
+            return Err(CallError::Null("nDependencies"));
         }
         // SAFETY: non-NULL and writable per the contract.
         unsafe { *nDependencies = deps.len() };
@@ -531,16 +532,16 @@ pub unsafe extern "C" fn fmi3GetNumberOfVariableDependencies(instance: Fmi3Insta
 
 /// The value references an output depends on directly (all scalar: element index 0, kind
 /// `fmi3Dependent`).
-fn dependencies(inst: &Instance, vr: u32) -> Result<Vec<u32>, String> {
+fn dependencies(inst: &Instance, vr: u32) -> Result<Vec<u32>, CallError> {
     let info = inst.info;
-    let i = info.index_of(vr).ok_or_else(|| format!("unknown value reference {vr}"))?;
+    let i = info.index_of(vr).ok_or(CallError::UnknownDependent(vr))?;
     let v = &info.variables[i];
     if v.causality != Causality::Output {
         return Ok(vec![]);
     }
     v.depends_on
         .iter()
-        .map(|n| info.index_by_name(n).map(|j| info.variables[j].value_reference).ok_or_else(|| format!("{} depends on unknown {n}", v.name)))
+        .map(|n| info.index_by_name(n).map(|j| info.variables[j].value_reference).ok_or_else(|| CallError::UnknownInput { output: v.name.clone(), name: n }))
         .collect()
 }
 
@@ -564,7 +565,7 @@ pub unsafe extern "C" fn fmi3GetVariableDependencies(
     call(instance, "fmi3GetVariableDependencies", state::RESET, |inst| {
         let deps = dependencies(inst, dependent)?;
         if deps.len() != nDependencies {
-            return Err(format!("nDependencies = {nDependencies}, but value reference {dependent} has {} dependencies", deps.len()));
+            return Err(CallError::DependencyCount { given: nDependencies, vr: dependent, actual: deps.len() });
         }
         // SAFETY: per the contract.
         let (a, b, c, d) = unsafe {
@@ -653,7 +654,7 @@ pub unsafe extern "C" fn fmi3DeserializeFMUState(
 }
 
 fn refuse(instance: Fmi3Instance, name: &'static str, why: &'static str) -> Fmi3StatusC {
-    call(instance, name, state::RESET, |_| Err(why.into()))
+    call(instance, name, state::RESET, |_| Err(CallError::Unsupported(why)))
 }
 
 /// `fmi3GetDirectionalDerivative` (FMI 3.0): not provided
@@ -820,7 +821,7 @@ no_states!(fmi3GetNominalsOfContinuousStates, state::GET_CONTINUOUS_STATES, "nCo
 pub unsafe extern "C" fn fmi3GetNumberOfEventIndicators(instance: Fmi3Instance, nEventIndicators: *mut usize) -> Fmi3StatusC {
     call(instance, "fmi3GetNumberOfEventIndicators", state::RESET, |_| {
         if nEventIndicators.is_null() {
-            return Err("nEventIndicators is NULL".into());
+            return Err(CallError::Null("nEventIndicators"));
         }
         // SAFETY: non-NULL, writable.
         unsafe { *nEventIndicators = 0 };
@@ -837,7 +838,7 @@ pub unsafe extern "C" fn fmi3GetNumberOfEventIndicators(instance: Fmi3Instance, 
 pub unsafe extern "C" fn fmi3GetNumberOfContinuousStates(instance: Fmi3Instance, nContinuousStates: *mut usize) -> Fmi3StatusC {
     call(instance, "fmi3GetNumberOfContinuousStates", state::RESET, |_| {
         if nContinuousStates.is_null() {
-            return Err("nContinuousStates is NULL".into());
+            return Err(CallError::Null("nContinuousStates"));
         }
         // SAFETY: non-NULL, writable.
         unsafe { *nContinuousStates = 0 };
@@ -850,7 +851,7 @@ pub unsafe extern "C" fn fmi3GetNumberOfContinuousStates(instance: Fmi3Instance,
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi3EnterStepMode(instance: Fmi3Instance) -> Fmi3StatusC {
     call(instance, "fmi3EnterStepMode", state::ENTER_STEP_MODE, |_| {
-        Err("this FMU's Co-Simulation has no event mode (hasEventMode = false), so there is no step mode to return to".into())
+        Err(CallError::Unsupported("this FMU's Co-Simulation has no event mode (hasEventMode = false), so there is no step mode to return to"))
     })
 }
 

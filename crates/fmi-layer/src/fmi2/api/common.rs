@@ -9,6 +9,7 @@
 #![allow(non_snake_case)]
 
 use super::guard::{call, maybe_forced_panic, slice, slice_mut};
+use crate::error::CallError;
 use crate::fmi2::instance::{Instance, Interface};
 use crate::fmi2::logging::{Category, Logger};
 use crate::fmi2::snapshot::Snapshot;
@@ -195,11 +196,9 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
         let mut parsed = Vec::with_capacity(cats.len());
         for &p in cats {
             // SAFETY: each entry is NULL or a NUL-terminated string.
-            let name = unsafe { text(p) }.ok_or("a category name is NULL")?;
+            let name = unsafe { text(p) }.ok_or(CallError::Null("a category name"))?;
             let known: Vec<&str> = Category::ALL.iter().map(|c| c.name()).collect();
-            parsed.push(Category::from_name(&name).ok_or_else(|| {
-                format!("unknown log category '{name}' (known: {})", known.join(", "))
-            })?);
+            parsed.push(Category::from_name(&name).ok_or_else(|| CallError::UnknownCategory { name, known: known.join(", ") })?);
         }
         if parsed.is_empty() {
             inst.logger.set_all(on);
@@ -399,7 +398,7 @@ pub unsafe extern "C" fn fmi2GetFMUstate(c: Fmi2Component, FMUstate: *mut Fmi2Fm
 pub(crate) unsafe fn get_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: *mut Fmi2FmuState) -> Fmi2StatusC {
     call(c, name, state::FMU_STATE, |inst| {
         if FMUstate.is_null() {
-            return Err("FMUstate is NULL".into());
+            return Err(CallError::Null("FMUstate"));
         }
         let snap = inst.snapshot();
         // SAFETY: non-NULL pointer to the host's slot.
@@ -411,7 +410,7 @@ pub(crate) unsafe fn get_fmu_state(name: &'static str, c: Fmi2Component, FMUstat
             // SAFETY: a non-NULL slot holds a state returned by this FMU.
             let old = unsafe { &mut *(*slot as *mut Snapshot) };
             if !old.is_live() {
-                return Err("*FMUstate is neither NULL nor an FMU state of this FMU".into());
+                return Err(CallError::NotReusableState);
             }
             *old = snap;
         }
@@ -425,14 +424,14 @@ pub(crate) unsafe fn get_fmu_state(name: &'static str, c: Fmi2Component, FMUstat
 ///
 /// # Safety
 /// A non-NULL `s` must be an FMU state returned by this FMU.
-unsafe fn live_state<'a>(s: Fmi2FmuState) -> Result<&'a mut Snapshot, String> {
+unsafe fn live_state<'a>(s: Fmi2FmuState, handle: &'static str) -> Result<&'a mut Snapshot, CallError> {
     if s.is_null() {
-        return Err("FMUstate is NULL".into());
+        return Err(CallError::Null(handle));
     }
     // SAFETY: per the contract; the tag catches most foreign or freed pointers.
     let snap = unsafe { &mut *(s as *mut Snapshot) };
     if !snap.is_live() {
-        return Err("FMUstate is not a live FMU state of this FMU (freed or foreign)".into());
+        return Err(CallError::NotLiveState { handle });
     }
     Ok(snap)
 }
@@ -456,7 +455,7 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: Fmi2Component, FMUstate: Fmi2FmuStat
 pub(crate) unsafe fn set_fmu_state(name: &'static str, c: Fmi2Component, FMUstate: Fmi2FmuState) -> Fmi2StatusC {
     call(c, name, state::FMU_STATE, |inst| {
         // SAFETY: per the contract.
-        let snap = unsafe { live_state(FMUstate) }?;
+        let snap = unsafe { live_state(FMUstate, "FMUstate") }?;
         inst.restore(snap)
     })
 }
@@ -484,7 +483,7 @@ pub(crate) unsafe fn free_fmu_state(name: &'static str, c: Fmi2Component, FMUsta
             return Ok(Status::Ok); // nothing to free
         }
         // SAFETY: per the contract.
-        let snap = unsafe { live_state(*FMUstate) }?;
+        let snap = unsafe { live_state(*FMUstate, "FMUstate") }?;
         snap.kill();
         // SAFETY: the state came from Box::into_raw in this module.
         unsafe {
@@ -514,9 +513,9 @@ pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: Fmi2Component, FMUstate: 
 pub(crate) unsafe fn serialized_fmu_state_size(name: &'static str, c: Fmi2Component, FMUstate: Fmi2FmuState, size: *mut usize) -> Fmi2StatusC {
     call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
-        let snap = unsafe { live_state(FMUstate) }?;
+        let snap = unsafe { live_state(FMUstate, "FMUstate") }?;
         if size.is_null() {
-            return Err("size is NULL".into());
+            return Err(CallError::Null("size"));
         }
         // SAFETY: non-NULL.
         unsafe { *size = snap.encode().len() };
@@ -554,10 +553,10 @@ pub(crate) unsafe fn serialize_fmu_state(name: &'static str,
 ) -> Fmi2StatusC {
     call(c, name, state::FMU_STATE, |_inst| {
         // SAFETY: per the contract.
-        let snap = unsafe { live_state(FMUstate) }?;
+        let snap = unsafe { live_state(FMUstate, "FMUstate") }?;
         let bytes = snap.encode();
         if size != bytes.len() {
-            return Err(format!("size = {size} bytes, but this FMU state serializes to {} bytes (see fmi2SerializedFMUstateSize)", bytes.len()));
+            return Err(CallError::StateSize { given: size, actual: bytes.len() });
         }
         // SAFETY: per the contract.
         let out = unsafe { slice_mut(serializedState as *mut u8, size, "serializedState[]") }?;
@@ -597,7 +596,7 @@ pub(crate) unsafe fn deserialize_fmu_state(name: &'static str,
 ) -> Fmi2StatusC {
     call(c, name, state::FMU_STATE, |inst| {
         if FMUstate.is_null() {
-            return Err("FMUstate is NULL".into());
+            return Err(CallError::Null("FMUstate"));
         }
         // SAFETY: per the contract.
         let bytes = unsafe { slice(serializedState as *const u8, size, "serializedState[]") }?;
@@ -608,7 +607,7 @@ pub(crate) unsafe fn deserialize_fmu_state(name: &'static str,
             *slot = Box::into_raw(Box::new(snap)) as Fmi2FmuState;
         } else {
             // SAFETY: a non-NULL slot holds a state of this FMU.
-            let old = unsafe { live_state(*slot) }.map_err(|e| format!("*{e}"))?;
+            let old = unsafe { live_state(*slot, "*FMUstate") }?;
             *old = snap;
         }
         Ok(Status::Ok)
@@ -628,6 +627,6 @@ pub extern "C" fn fmi2GetDirectionalDerivative(
     _dvUnknown: *mut Fmi2Real,
 ) -> Fmi2StatusC {
     call(c, "fmi2GetDirectionalDerivative", state::GET_DIRECTIONAL_DERIVATIVE, |_| {
-        Err("directional derivatives are not provided (providesDirectionalDerivative = false)".into())
+        Err(CallError::Unsupported("directional derivatives are not provided (providesDirectionalDerivative = false)"))
     })
 }

@@ -3,6 +3,8 @@
 #![allow(non_snake_case)]
 
 use super::guard::call;
+use crate::error::CallError;
+use crate::fmi2::instance::CallResult;
 use crate::fmi2::state;
 use crate::fmi2::types::*;
 use std::ffi::c_int;
@@ -26,7 +28,7 @@ pub extern "C" fn fmi2DoStep(
 /// (`stepInProgress`) is never met, so it always returns `fmi2Error`.
 #[unsafe(no_mangle)]
 pub extern "C" fn fmi2CancelStep(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2CancelStep", state::CANCEL_STEP, |_| Err("no step is in progress".into()))
+    call(c, "fmi2CancelStep", state::CANCEL_STEP, |_| Err(CallError::Unsupported("no step is in progress")))
 }
 
 /// `fmi2SetRealInputDerivatives` (FMI 2.0 §4.2.1): rejected with `fmi2Error`
@@ -40,7 +42,7 @@ pub extern "C" fn fmi2SetRealInputDerivatives(
     _value: *const Fmi2Real,
 ) -> Fmi2StatusC {
     call(c, "fmi2SetRealInputDerivatives", state::SET_REAL_INPUT_DERIVATIVES, |_| {
-        Err("input derivatives are not used (canInterpolateInputs = false)".into())
+        Err(CallError::Unsupported("input derivatives are not used (canInterpolateInputs = false)"))
     })
 }
 
@@ -55,22 +57,12 @@ pub extern "C" fn fmi2GetRealOutputDerivatives(
     _value: *mut Fmi2Real,
 ) -> Fmi2StatusC {
     call(c, "fmi2GetRealOutputDerivatives", state::GET_REAL_OUTPUT_DERIVATIVES, |_| {
-        Err("output derivatives are not provided (maxOutputDerivativeOrder = 0)".into())
+        Err(CallError::Unsupported("output derivatives are not provided (maxOutputDerivativeOrder = 0)"))
     })
 }
 
-fn kind_name(s: c_int) -> String {
-    match s {
-        FMI2_DO_STEP_STATUS => "fmi2DoStepStatus".into(),
-        FMI2_PENDING_STATUS => "fmi2PendingStatus".into(),
-        FMI2_LAST_SUCCESSFUL_TIME => "fmi2LastSuccessfulTime".into(),
-        FMI2_TERMINATED => "fmi2Terminated".into(),
-        k => format!("status kind {k} (not an fmi2StatusKind)"),
-    }
-}
-
-fn unsupported(func: &str, s: c_int) -> Result<crate::fmi2::types::Status, String> {
-    Err(format!("{} is not available through {func} (this FMU steps synchronously)", kind_name(s)))
+fn unsupported(func: &'static str, kind: c_int) -> CallResult {
+    Err(CallError::StatusKind { kind, func })
 }
 
 /// `fmi2GetStatus` (FMI 2.0 §4.2.3): no status kind is available through it (this FMU
@@ -96,7 +88,7 @@ pub unsafe extern "C" fn fmi2GetRealStatus(c: Fmi2Component, s: c_int, value: *m
             return unsupported("fmi2GetRealStatus", s);
         }
         if value.is_null() {
-            return Err("value is NULL".into());
+            return Err(CallError::Null("value"));
         }
         // SAFETY: non-NULL and writable per the contract.
         unsafe { *value = inst.time };
@@ -127,7 +119,7 @@ pub unsafe extern "C" fn fmi2GetBooleanStatus(c: Fmi2Component, s: c_int, value:
             return unsupported("fmi2GetBooleanStatus", s);
         }
         if value.is_null() {
-            return Err("value is NULL".into());
+            return Err(CallError::Null("value"));
         }
         // SAFETY: non-NULL and writable per the contract.
         unsafe { *value = FMI2_FALSE };

@@ -3,6 +3,7 @@
 //! one that happens inside a call returns `fmi2Fatal` and puts the instance in the
 //! `fatal` state, in which only `fmi2FreeInstance` is accepted).
 
+use crate::error::CallError;
 use crate::fmi2::instance::{CallResult, Instance};
 use crate::fmi2::logging::Category;
 use crate::fmi2::state::{Mask, State};
@@ -125,12 +126,12 @@ pub(crate) fn call(
 ///
 /// # Safety
 /// For `n > 0` a non-NULL `p` must point to `n` readable values.
-pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&'a [T], String> {
+pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &'static str) -> Result<&'a [T], CallError> {
     if n == 0 {
         return Ok(&[]);
     }
     if p.is_null() {
-        return Err(format!("{what} is NULL but its length is {n}"));
+        return Err(CallError::NullArray { what, len: n });
     }
     // SAFETY: per the contract above.
     Ok(unsafe { std::slice::from_raw_parts(p, n) })
@@ -140,12 +141,12 @@ pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&
 ///
 /// # Safety
 /// For `n > 0` a non-NULL `p` must point to `n` writable values.
-pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &str) -> Result<&'a mut [T], String> {
+pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &'static str) -> Result<&'a mut [T], CallError> {
     if n == 0 {
         return Ok(&mut []);
     }
     if p.is_null() {
-        return Err(format!("{what} is NULL but its length is {n}"));
+        return Err(CallError::NullArray { what, len: n });
     }
     // SAFETY: per the contract above.
     Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })

@@ -8,6 +8,7 @@
 #![allow(non_snake_case)]
 
 use super::guard::call;
+use crate::error::CallError;
 use crate::fmi2::instance::Instance;
 use crate::fmi2::state;
 use crate::fmi2::types::*;
@@ -48,7 +49,7 @@ pub unsafe extern "C" fn fmi2NewDiscreteStates(c: Fmi2Component, eventInfo: *mut
     call(c, "fmi2NewDiscreteStates", state::NEW_DISCRETE_STATES, |inst| {
         inst.require_model_exchange()?;
         if eventInfo.is_null() {
-            return Err("eventInfo is NULL".into());
+            return Err(CallError::Null("eventInfo"));
         }
         inst.refresh_outputs()?;
         // SAFETY: non-NULL and writable per the contract.
@@ -89,7 +90,7 @@ pub unsafe extern "C" fn fmi2CompletedIntegratorStep(
     call(c, "fmi2CompletedIntegratorStep", state::COMPLETED_INTEGRATOR_STEP, |inst| {
         inst.require_model_exchange()?;
         if enterEventMode.is_null() || terminateSimulation.is_null() {
-            return Err("enterEventMode or terminateSimulation is NULL".into());
+            return Err(CallError::Null("enterEventMode or terminateSimulation"));
         }
         inst.refresh_outputs()?;
         // SAFETY: non-NULL and writable per the contract.
