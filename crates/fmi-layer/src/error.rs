@@ -84,6 +84,31 @@ impl fmt::Display for StatusKindName {
 /// initialization or a step moves it to the `error` state (see [`crate::fmi2::instance`]).
 #[derive(Debug, thiserror::Error)]
 pub enum CallError {
+    /// An instantiation without an instance name.
+    #[error("instanceName must be a non-empty string")]
+    EmptyInstanceName,
+    /// `fmi2Instantiate` with an `fmuType` that is no `fmi2Type`.
+    #[error("fmuType = {0} is not an fmi2Type (0 = Model Exchange, 1 = Co-Simulation)")]
+    FmuType(c_int),
+    /// A GUID (instantiation token) of no model of this library.
+    #[error("{arg} {token} matches no model of this binary (known: {known}); the modelDescription.xml does not belong to this binary")]
+    UnknownToken {
+        /// The argument, `fmuGUID` or `instantiationToken`.
+        arg: &'static str,
+        /// The token the host passed.
+        token: String,
+        /// The models of the library with their GUIDs.
+        known: String,
+    },
+    /// `fmi2Instantiate` for Model Exchange of a Co-Simulation-only model.
+    #[error("fmuType = 0 (Model Exchange): {0} implements Co-Simulation (fmuType = 1) only")]
+    Fmi2CoSimulationOnly(&'static str),
+    /// `fmi3InstantiateModelExchange` of a Co-Simulation-only model.
+    #[error("{0} implements Co-Simulation only")]
+    CoSimulationOnly(&'static str),
+    /// `fmi3InstantiateCoSimulation` with `eventModeUsed`.
+    #[error("eventModeUsed = true, but this FMU's Co-Simulation has no event mode (hasEventMode = false)")]
+    EventModeUsed,
     /// A value reference the model does not declare.
     #[error("unknown value reference {vr}: {model} has no variable with this value reference")]
     UnknownValueReference {

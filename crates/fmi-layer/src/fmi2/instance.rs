@@ -270,8 +270,10 @@ impl Instance {
     }
 
     /// Model Exchange: the host's solver time. The model is stateless in time (its outputs
-    /// depend on the inputs only), so this only records it; a time before the start is refused.
+    /// depend on the inputs only), so this only records it; a time that is not finite, or a
+    /// Co-Simulation instance, is refused.
     pub fn set_time(&mut self, t: f64) -> CallResult {
+        self.require_model_exchange()?;
         if !t.is_finite() {
             return Err(CallError::NotFinite { what: "time", value: t });
         }

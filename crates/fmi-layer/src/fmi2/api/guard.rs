@@ -151,3 +151,55 @@ pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &'static str) -
     // SAFETY: per the contract above.
     Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
 }
+
+/// Define exported FMI functions whose whole body runs through [`call`]: for each entry
+///
+/// ```text
+/// /// doc
+/// [unsafe] fn NAME(instance: Type, arg: Type, ...) -> Status: MASK => BODY;
+/// ```
+///
+/// a `#[unsafe(no_mangle)] pub [unsafe] extern "C" fn NAME` with exactly that signature that
+/// runs `BODY` (an `FnOnce(&mut Instance) -> CallResult`, which may use the arguments) for the
+/// instance if the state mask `crate::fmi2::state::MASK` allows its state, logging an error
+/// under the function's name. Both standards' exports are written with it, so the guard
+/// boilerplate (NULL and dead instances, masks, logging, panics) is in one place.
+macro_rules! guarded {
+    () => {};
+    ($(#[$attr:meta])* unsafe fn $name:ident($c:ident: $ct:ty $(, $p:ident: $t:ty)* $(,)?) -> $ret:ty: $mask:ident => $body:expr; $($rest:tt)*) => {
+        $(#[$attr])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
+            $crate::fmi2::api::guard::call($c, stringify!($name), $crate::fmi2::state::$mask, $body)
+        }
+        $crate::fmi2::api::guard::guarded!($($rest)*);
+    };
+    ($(#[$attr:meta])* fn $name:ident($c:ident: $ct:ty $(, $p:ident: $t:ty)* $(,)?) -> $ret:ty: $mask:ident => $body:expr; $($rest:tt)*) => {
+        $(#[$attr])*
+        #[unsafe(no_mangle)]
+        pub extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
+            $crate::fmi2::api::guard::call($c, stringify!($name), $crate::fmi2::state::$mask, $body)
+        }
+        $crate::fmi2::api::guard::guarded!($($rest)*);
+    };
+}
+pub(crate) use guarded;
+
+/// The body of a function this layer does not provide: `fmi2Error` with `why` (after the
+/// state check).
+pub(crate) fn refuse(why: &'static str) -> impl FnOnce(&mut Instance) -> CallResult {
+    move |_| Err(CallError::Unsupported(why))
+}
+
+/// Write `v` through the host's pointer `p` (named `what` in the error for NULL).
+///
+/// # Safety
+/// `p` is NULL or writable.
+pub(crate) unsafe fn write_out<T>(p: *mut T, v: T, what: &'static str) -> CallResult {
+    if p.is_null() {
+        return Err(CallError::Null(what));
+    }
+    // SAFETY: non-NULL and writable per the contract.
+    unsafe { *p = v };
+    Ok(crate::fmi2::types::Status::Ok)
+}
