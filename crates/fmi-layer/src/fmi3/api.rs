@@ -70,7 +70,7 @@ pub unsafe fn instantiate_from(
         });
         let (name, info, token) = match checked {
             Ok(c) => c,
-            Err(e) => return refuse_instance(&logger, func, e),
+            Err(e) => return refuse_instance(&logger, func, &e),
         };
         // This FMU needs no resources: NULL or "" is fine; a path that is not absolute is a warning.
         if let Some(r) = resources.as_deref().filter(|r| !r.is_empty() && !r.starts_with('/') && !looks_like_uri(r) && !r.contains('\\')) {

@@ -84,7 +84,7 @@ pub unsafe fn instantiate_from(
         });
         let (name, info, guid) = match checked {
             Ok(c) => c,
-            Err(e) => return refuse_instance(&logger, "fmi2Instantiate", e),
+            Err(e) => return refuse_instance(&logger, "fmi2Instantiate", &e),
         };
         let interface = if fmu_type == FMI2_MODEL_EXCHANGE { Interface::ModelExchange } else { Interface::CoSimulation };
         // This FMU needs no resources: NULL or "" is fine (no message); a location that is
@@ -124,7 +124,7 @@ pub(crate) fn model_of(registry: &[&'static ModelInfo], token: Option<String>, a
 }
 
 /// Log why the instantiation function `func` refuses, and return its NULL instance.
-pub(crate) fn refuse_instance(logger: &Logger, func: &str, e: CallError) -> Fmi2Component {
+pub(crate) fn refuse_instance(logger: &Logger, func: &str, e: &CallError) -> Fmi2Component {
     logger.log(Status::Error, Category::StatusError, &format!("{func}: {e}"));
     null_mut()
 }
