@@ -454,3 +454,66 @@ pub enum XmlError {
     #[error("value reference {0} is reserved for the independent variable time in FMI 3.0")]
     ReservedTimeVr(u32),
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn var() -> VariableName {
+        VariableName { causality: "input", name: "load".into(), value_reference: 3 }
+    }
+
+    #[test]
+    fn call_errors_read_as_the_host_has_always_seen_them() {
+        let cases: Vec<(CallError, &str)> = vec![
+            (CallError::UnknownValueReference { vr: 99, model: "M" }, "unknown value reference 99: M has no variable with this value reference"),
+            (
+                CallError::WrongType { variable: var(), article: "n", actual: "Integer", requested: "Real" },
+                "input 'load' (value reference 3) is an Integer variable, not Real",
+            ),
+            (
+                CallError::NotSettable { variable: var(), why: NotSettable::Fixed { state: "stepComplete" } },
+                "input 'load' (value reference 3) has variability 'fixed': it can only be set before fmi2ExitInitializationMode (state is stepComplete)",
+            ),
+            (CallError::NullArray { what: "vr[]", len: 2 }, "vr[] is NULL but its length is 2"),
+            (CallError::Null("FMUstate"), "FMUstate is NULL"),
+            (CallError::NotLiveState { handle: "*FMUstate" }, "*FMUstate is not a live FMU state of this FMU (freed or foreign)"),
+            (CallError::StepSize(-1e308), "communicationStepSize = -1e308 s must be a finite number > 0 s"),
+            (
+                CallError::Discontinuous { t: 1.5, last: 1.0, tol: 1e-6 },
+                "currentCommunicationPoint = 1.5 s does not continue the last step, which ended at 1 s (difference 5e-1 s exceeds the tolerance 1e-6 s)",
+            ),
+            (
+                CallError::StepFailed { t: 0.0, h: 0.5, source: Box::new(CallError::NotFinite { what: "x", value: f64::NAN }) },
+                "step from t = 0 s over 0.5 s failed: x = NaN s is not a finite number",
+            ),
+            (
+                CallError::OutputOutOfRange { name: "h".into(), value: -1e-9, unit: "m", bound: OutputBound::BelowMin(0.0) },
+                "the model gives output h = -1e-9 m which is below its declared minimum 0: the inputs or parameters are outside the range in which the model is defined",
+            ),
+            (CallError::StatusKind { kind: 7, func: "fmi2GetStatus" }, "status kind 7 (not an fmi2StatusKind) is not available through fmi2GetStatus (this FMU steps synchronously)"),
+            (CallError::StatusKind { kind: 0, func: "fmi2GetRealStatus" }, "fmi2DoStepStatus is not available through fmi2GetRealStatus (this FMU steps synchronously)"),
+            (CallError::StateRejected(ModelError::from("bad".to_owned())), "FMU state rejected: bad"),
+            (CallError::StateFormat(StateFormatError::Crc), "serialized FMU state is corrupted (CRC-32 mismatch)"),
+        ];
+        for (e, text) in cases {
+            assert_eq!(e.to_string(), text);
+        }
+    }
+
+    #[test]
+    fn state_and_xml_errors_name_what_and_where() {
+        let e = StateFormatError::Truncated { what: "GUID".into(), needed: 38, offset: 15, remaining: 2 };
+        assert_eq!(e.to_string(), "truncated: GUID needs 38 bytes at offset 15 but only 2 remain");
+        assert_eq!(
+            StateFormatError::Time { time: 1.0, start: 2.0 }.to_string(),
+            "serialized FMU state holds an invalid time (1 s, start 2 s): both must be finite, time >= start"
+        );
+        assert_eq!(
+            XmlError::UnknownDisplayUnit { variable: "angle".into(), display: "deg", unit: "m" }.to_string(),
+            "variable angle: display unit deg is not defined for unit m"
+        );
+        // A model's part that is not well formed is the model's error, with the same text.
+        assert_eq!(ModelError::from(StateFormatError::Trailing(3)).to_string(), "3 unexpected trailing bytes");
+    }
+}
