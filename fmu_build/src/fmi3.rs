@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 /// Write `<out_dir>/fmi3/<modelIdentifier>.fmu` with `binaries`: (platform tuple, library path,
 /// extension) per platform, and the shared `extras` (licences, model.png).
 pub fn package(info: &ModelInfo, binaries: &[(&str, PathBuf, &str)], out_dir: &Path, extras: &[Entry]) -> Result<PathBuf, String> {
-    let xml = model_description(info)?;
+    let xml = model_description(info).map_err(|e| e.to_string())?;
     let dir = out_dir.join("fmi3");
     std::fs::create_dir_all(&dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
     let path = dir.join(format!("{}.fmu", info.model_identifier));

@@ -29,7 +29,7 @@ use zip::{CompressionMethod, DateTime, ZipWriter};
 fn package(info: &ModelInfo, binaries: &[(&str, &str, PathBuf)], out_dir: &Path, extras: &[extras::Entry]) -> Result<PathBuf, String> {
     let path = out_dir.join(format!("{}.fmu", info.model_identifier));
     let libraries = binaries.iter().map(|(folder, ext, library)| (*folder, library.as_path(), *ext));
-    write_fmu(&path, info, model_description(info)?, libraries, extras)?;
+    write_fmu(&path, info, model_description(info).map_err(|e| e.to_string())?, libraries, extras)?;
     Ok(path)
 }
 

@@ -7,11 +7,22 @@
 //! modelDescription.xml generator); a model only stores values, computes its
 //! outputs and advances.
 //!
+//! Errors are typed at every boundary ([`error`]): [`CallError`] for why an exported
+//! function fails (its text is what the host's logger receives), [`StateFormatError`] for a
+//! serialized FMU state that is not well formed, [`XmlError`] for a model table no valid
+//! modelDescription.xml can be written from. The parts both standards share (the instance,
+//! state machine, FMU state functions, typed get/set bodies, the XML writer for the common
+//! attributes) exist once; `fmi2` and `fmi3` only spell their own functions and elements.
+//!
 //! This crate knows no physics. The shared library that exports the models (the
 //! `pinjoint-fmu` crate) passes its registry of models in from its own root with
 //! [`export_fmi2!`], the one entry point that must choose a model by GUID.
 
+pub mod error;
 pub mod fmi2;
 pub mod fmi3;
+mod xml;
+
+pub use error::{CallError, StateFormatError, XmlError};
 
 use numfmt as fmt;

@@ -1,5 +1,7 @@
 //! Little-endian byte writer/reader and CRC-32 for the serialized FMU state.
 
+use crate::error::StateFormatError;
+
 /// Appends fixed-width little-endian values.
 #[derive(Debug, Default)]
 pub struct ByteWriter {
@@ -30,51 +32,60 @@ impl ByteWriter {
     }
 }
 
-/// Reads what [`ByteWriter`] wrote; every read checks the remaining length.
+/// Reads what [`ByteWriter`] wrote; every read checks the remaining length and fails with a
+/// [`StateFormatError`] naming the field and its offset.
 #[derive(Debug)]
 pub struct ByteReader<'a> {
-    data: &'a [u8],
-    pos: usize,
+    /// The bytes not read yet.
+    rest: &'a [u8],
+    /// The length of the whole input, for offsets in messages.
+    total: usize,
 }
 
 impl<'a> ByteReader<'a> {
     /// A reader at the start of `data`.
     pub fn new(data: &'a [u8]) -> Self {
-        Self { data, pos: 0 }
+        Self { rest: data, total: data.len() }
     }
     /// The next `n` bytes; an error names `what` was being read when fewer remain.
-    pub fn take(&mut self, n: usize, what: &str) -> Result<&'a [u8], String> {
-        if self.data.len() - self.pos < n {
-            return Err(format!(
-                "truncated: {what} needs {n} bytes at offset {} but only {} remain",
-                self.pos,
-                self.data.len() - self.pos
-            ));
-        }
-        let s = &self.data[self.pos..self.pos + n];
-        self.pos += n;
-        Ok(s)
+    pub fn take(&mut self, n: usize, what: &str) -> Result<&'a [u8], StateFormatError> {
+        let Some((head, tail)) = self.rest.split_at_checked(n) else {
+            return Err(StateFormatError::Truncated {
+                what: what.to_owned(),
+                needed: n,
+                offset: self.total - self.rest.len(),
+                remaining: self.rest.len(),
+            });
+        };
+        self.rest = tail;
+        Ok(head)
+    }
+    /// The next `N` bytes as an array.
+    fn array<const N: usize>(&mut self, what: &str) -> Result<[u8; N], StateFormatError> {
+        let mut a = [0; N];
+        a.copy_from_slice(self.take(N, what)?);
+        Ok(a)
     }
     /// Read one byte (`what`: for the error message).
-    pub fn u8(&mut self, what: &str) -> Result<u8, String> {
-        Ok(self.take(1, what)?[0])
+    pub fn u8(&mut self, what: &str) -> Result<u8, StateFormatError> {
+        Ok(self.array::<1>(what)?[0])
     }
     /// Read a little-endian u16.
-    pub fn u16(&mut self, what: &str) -> Result<u16, String> {
-        Ok(u16::from_le_bytes(self.take(2, what)?.try_into().unwrap()))
+    pub fn u16(&mut self, what: &str) -> Result<u16, StateFormatError> {
+        self.array(what).map(u16::from_le_bytes)
     }
     /// Read a little-endian u32.
-    pub fn u32(&mut self, what: &str) -> Result<u32, String> {
-        Ok(u32::from_le_bytes(self.take(4, what)?.try_into().unwrap()))
+    pub fn u32(&mut self, what: &str) -> Result<u32, StateFormatError> {
+        self.array(what).map(u32::from_le_bytes)
     }
     /// Read an f64 from its exact bit pattern.
-    pub fn f64(&mut self, what: &str) -> Result<f64, String> {
-        Ok(f64::from_bits(u64::from_le_bytes(self.take(8, what)?.try_into().unwrap())))
+    pub fn f64(&mut self, what: &str) -> Result<f64, StateFormatError> {
+        self.array(what).map(|b| f64::from_bits(u64::from_le_bytes(b)))
     }
     /// Fail unless every byte was read.
-    pub fn finish(&self) -> Result<(), String> {
-        if self.pos != self.data.len() {
-            return Err(format!("{} unexpected trailing bytes", self.data.len() - self.pos));
+    pub fn finish(&self) -> Result<(), StateFormatError> {
+        if !self.rest.is_empty() {
+            return Err(StateFormatError::Trailing(self.rest.len()));
         }
         Ok(())
     }
@@ -120,7 +131,8 @@ mod tests {
         r.finish().unwrap();
         let mut r = ByteReader::new(&w.buf[..4]);
         r.u8("a").unwrap();
-        let e = r.u32("c").unwrap_err();
-        assert!(e.contains("truncated") && e.contains('c'), "{e}");
+        let e = r.u32("c").unwrap_err().to_string();
+        assert_eq!(e, "truncated: c needs 4 bytes at offset 1 but only 3 remain");
+        assert_eq!(ByteReader::new(&[1, 2]).finish().unwrap_err().to_string(), "2 unexpected trailing bytes");
     }
 }

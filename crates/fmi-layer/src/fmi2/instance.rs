@@ -2,7 +2,7 @@
 //! [`Model`] trait. The methods here hold the standard's rules in safe Rust; the
 //! `extern "C"` functions in [`super::api`] only convert pointers and call them.
 //!
-//! Errors: a method returns `Err(message)`; the caller logs it with status
+//! Errors: a method returns a [`CallError`]; the caller logs it with status
 //! `fmi2Error`. Argument errors (NULL arrays, unknown value references, a set on an
 //! output, a non-finite input, a discontinuous communication point) leave the
 //! instance exactly as it was, so the host may correct the call. A failure of the
@@ -10,7 +10,8 @@
 //! cannot be computed) moves the instance to the `error` state, from which the
 //! standard allows getters, `fmi2SetFMUstate`, `fmi2Reset` and `fmi2FreeInstance`.
 
-use super::logging::{show, Category, Logger};
+use super::logging::{Category, Logger};
+use crate::error::{CallError, NotSettable, OutputBound, VariableName};
 use super::model::Model;
 use super::snapshot::Snapshot;
 use super::state::State;
@@ -19,9 +20,9 @@ use super::variables::{Causality, Kind, ModelInfo, Variability};
 
 const TAG: u64 = 0x504a_464d_4932_4f4b;
 
-/// The outcome of an instance method: the status to return, or a message that the caller
+/// The outcome of an instance method: the status to return, or the error that the caller
 /// logs and returns as `fmi2Error`.
-pub type CallResult = Result<Status, String>;
+pub type CallResult = Result<Status, CallError>;
 
 /// The interface the host instantiated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -105,46 +106,39 @@ impl Instance {
         self.logger.log(Status::Ok, Category::Events, message);
     }
 
-    fn lookup(&self, vr: u32) -> Result<usize, String> {
-        self.info.index_of(vr).ok_or_else(|| {
-            format!("unknown value reference {vr}: {} has no variable with this value reference", self.info.model_name)
-        })
+    fn lookup(&self, vr: u32) -> Result<usize, CallError> {
+        self.info.index_of(vr).ok_or(CallError::UnknownValueReference { vr, model: self.info.model_name })
     }
 
-    fn describe(&self, i: usize) -> String {
+    fn describe(&self, i: usize) -> VariableName {
         let v = &self.info.variables[i];
-        format!("{} '{}' (value reference {})", v.causality.as_str(), v.name, v.value_reference)
+        VariableName { causality: v.causality.as_str(), name: v.name.clone(), value_reference: v.value_reference }
     }
 
-    fn check_settable(&self, i: usize) -> Result<(), String> {
+    fn check_settable(&self, i: usize) -> Result<(), CallError> {
         let v = &self.info.variables[i];
-        match (v.causality, v.variability) {
-            (Causality::Output, _) => Err(format!("{} cannot be set: outputs are computed by the FMU", self.describe(i))),
+        let why = match (v.causality, v.variability) {
+            (Causality::Output, _) => NotSettable::Output,
             (Causality::Parameter, Variability::Fixed)
                 if !matches!(self.state, State::Instantiated | State::InitializationMode) =>
             {
-                Err(format!(
-                    "{} has variability 'fixed': it can only be set before fmi2ExitInitializationMode (state is {})",
-                    self.describe(i),
-                    self.state.name()
-                ))
+                NotSettable::Fixed { state: self.state.name() }
             }
-            (Causality::Parameter, _) if self.state == State::ContinuousTimeMode => Err(format!(
-                "{} is a parameter: in continuousTimeMode only continuous inputs may be set (enter event mode first)",
-                self.describe(i)
-            )),
-            _ => Ok(()),
-        }
+            (Causality::Parameter, _) if self.state == State::ContinuousTimeMode => NotSettable::ParameterInContinuousTime,
+            _ => return Ok(()),
+        };
+        Err(CallError::NotSettable { variable: self.describe(i), why })
     }
 
     /// The index of `vr`, which must be a variable of type `kind` (FMI 2.0: an Enumeration
     /// through the Integer functions; FMI 3.0: Integer as Int32, Enumeration as Int64).
-    fn lookup_kind(&self, vr: u32, kind: Kind) -> Result<usize, String> {
+    fn lookup_kind(&self, vr: u32, kind: Kind) -> Result<usize, CallError> {
         let i = self.lookup(vr)?;
         let k = self.info.variables[i].kind;
         let ok = if self.fmi3 { std::mem::discriminant(&k) == std::mem::discriminant(&kind) } else { k.fmi2_accessed_as(kind) };
         if !ok {
-            return Err(format!("{} is a{} {} variable, not {}", self.describe(i), if matches!(k, Kind::Integer | Kind::Enumeration(_)) { "n" } else { "" }, k.as_str(), kind.as_str()));
+            let article = if matches!(k, Kind::Integer | Kind::Enumeration(_)) { "n" } else { "" };
+            return Err(CallError::WrongType { variable: self.describe(i), article, actual: k.as_str(), requested: kind.as_str() });
         }
         Ok(i)
     }
@@ -173,7 +167,7 @@ impl Instance {
         self.set_values(Kind::Real, vrs, values)
     }
 
-    fn update_outputs(&mut self) -> Result<(), String> {
+    fn update_outputs(&mut self) -> Result<(), CallError> {
         if !self.outputs_current {
             let r = self.model.compute_outputs();
             self.log_model_message();
@@ -188,26 +182,21 @@ impl Instance {
     /// model that computes anything else (e.g. a negative film thickness, found by
     /// fuzzing, fuzz/README.md) fails the call with a message naming the output,
     /// instead of handing the host a value the interface rules out.
-    fn check_outputs(&self) -> Result<(), String> {
+    fn check_outputs(&self) -> Result<(), CallError> {
         for (i, v) in self.info.variables.iter().enumerate() {
             if v.causality != Causality::Output {
                 continue;
             }
             let x = self.model.get_real(i);
             let bound = if !x.is_finite() {
-                Some("is not a finite number".to_owned())
+                Some(OutputBound::NotFinite)
             } else if let Some(m) = v.min.filter(|m| x < *m) {
-                Some(format!("is below its declared minimum {}", show(m)))
+                Some(OutputBound::BelowMin(m))
             } else {
-                v.max.filter(|m| x > *m).map(|m| format!("is above its declared maximum {}", show(m)))
+                v.max.filter(|m| x > *m).map(OutputBound::AboveMax)
             };
-            if let Some(b) = bound {
-                return Err(format!(
-                    "the model gives output {} = {} {} which {b}: the inputs or parameters are outside the range in which the model is defined",
-                    v.name,
-                    show(x),
-                    v.unit_text()
-                ));
+            if let Some(bound) = bound {
+                return Err(CallError::OutputOutOfRange { name: v.name.clone(), value: x, unit: v.unit_text(), bound });
             }
         }
         Ok(())
@@ -242,15 +231,17 @@ impl Instance {
     }
 
     /// Getters and setters of the types this layer's models do not have.
-    pub fn reject_type(&self, type_name: &str, vrs: &[u32]) -> CallResult {
+    pub fn reject_type(&self, type_name: &'static str, vrs: &[u32]) -> CallResult {
         match vrs.first() {
             None => Ok(Status::Ok),
             Some(&vr) => Err(match self.info.index_of(vr) {
-                Some(i) => format!("{} is a {} variable, not {type_name}", self.describe(i), self.info.variables[i].kind.as_str()),
-                None => format!(
-                    "unknown value reference {vr}: {} has no {type_name} variables",
-                    self.info.model_name
-                ),
+                Some(i) => CallError::WrongType {
+                    variable: self.describe(i),
+                    article: "",
+                    actual: self.info.variables[i].kind.as_str(),
+                    requested: type_name,
+                },
+                None => CallError::NoVariablesOfType { vr, model: self.info.model_name, type_name },
             }),
         }
     }
@@ -259,12 +250,12 @@ impl Instance {
     /// an error for a non-finite time or a stop time before the start.
     pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> CallResult {
         if !start.is_finite() {
-            return Err(format!("startTime = {start} s is not a finite number"));
+            return Err(CallError::NotFinite { what: "startTime", value: start });
         }
         if let Some(stop) = stop
             && !(stop.is_finite() && stop >= start)
         {
-            return Err(format!("stopTime = {stop} s must be a finite number >= startTime = {start} s"));
+            return Err(CallError::StopTime { stop, start });
         }
         self.start_time = start;
         self.time = start;
@@ -279,10 +270,12 @@ impl Instance {
     }
 
     /// Model Exchange: the host's solver time. The model is stateless in time (its outputs
-    /// depend on the inputs only), so this only records it; a time before the start is refused.
+    /// depend on the inputs only), so this only records it; a time that is not finite, or a
+    /// Co-Simulation instance, is refused.
     pub fn set_time(&mut self, t: f64) -> CallResult {
+        self.require_model_exchange()?;
         if !t.is_finite() {
-            return Err(format!("time = {} s is not a finite number", show(t)));
+            return Err(CallError::NotFinite { what: "time", value: t });
         }
         self.time = t;
         Ok(Status::Ok)
@@ -304,25 +297,25 @@ impl Instance {
 
     /// Model Exchange: the outputs at the current inputs, checked against their ranges
     /// (what a completed integrator step or event iteration needs of this stateless model).
-    pub fn refresh_outputs(&mut self) -> Result<(), String> {
+    pub fn refresh_outputs(&mut self) -> Result<(), CallError> {
         self.update_outputs()
     }
 
     /// An error unless the instance was created for Model Exchange (guards the Model Exchange
     /// functions).
-    pub fn require_model_exchange(&self) -> Result<(), String> {
+    pub fn require_model_exchange(&self) -> Result<(), CallError> {
         if self.interface != Interface::ModelExchange {
-            return Err("this is a Model Exchange function and the instance was instantiated for Co-Simulation".into());
+            return Err(CallError::NotModelExchange);
         }
         Ok(())
     }
 
     /// Model Exchange arrays of continuous states or event indicators: this layer's
     /// models have none, so the length must be 0.
-    pub fn require_none(&self, what: &str, n: usize) -> Result<(), String> {
+    pub fn require_none(&self, what: &'static str, n: usize) -> Result<(), CallError> {
         self.require_model_exchange()?;
         if n != 0 {
-            return Err(format!("{what} = {n}, but {} has no continuous states and no event indicators (0)", self.info.model_name));
+            return Err(CallError::NoContinuousStates { what, n, model: self.info.model_name });
         }
         Ok(())
     }
@@ -333,7 +326,7 @@ impl Instance {
     pub fn exit_initialization_mode(&mut self) -> CallResult {
         let init = self.model.exit_initialization(self.start_time);
         self.log_model_message();
-        let checked = init.map_err(String::from).and_then(|()| {
+        let checked = init.map_err(CallError::Model).and_then(|()| {
             self.outputs_current = false;
             self.update_outputs()
         });
@@ -352,35 +345,25 @@ impl Instance {
     /// `fmi2DoStep`: the step must be positive and continue the previous one.
     pub fn do_step(&mut self, t: f64, h: f64) -> CallResult {
         if !t.is_finite() {
-            return Err(format!("currentCommunicationPoint = {} s is not a finite number", show(t)));
+            return Err(CallError::NotFinite { what: "currentCommunicationPoint", value: t });
         }
         if !(h.is_finite() && h > 0.0) {
-            return Err(format!("communicationStepSize = {} s must be a finite number > 0 s", show(h)));
+            return Err(CallError::StepSize(h));
         }
         // An end that is not a finite number is refused before anything changes.
         if !(t + h).is_finite() {
-            return Err(format!(
-                "currentCommunicationPoint + communicationStepSize = {} s + {} s is not a finite number",
-                show(t),
-                show(h)
-            ));
+            return Err(CallError::StepEnd { t, h });
         }
         // The host's time may differ from the sum of its steps by rounding only.
         let tol = 1e-6 * h + 16.0 * f64::EPSILON * t.abs().max(self.time.abs());
         if (t - self.time).abs() > tol {
-            return Err(format!(
-                "currentCommunicationPoint = {} s does not continue the last step, which ended at {} s \
-                 (difference {:e} s exceeds the tolerance {tol:e} s)",
-                show(t),
-                show(self.time),
-                t - self.time
-            ));
+            return Err(CallError::Discontinuous { t, last: self.time, tol });
         }
-        let stepped = self.update_outputs().and_then(|()| self.model.do_step(t, h).map_err(String::from)).and_then(|_| self.check_outputs());
+        let stepped = self.update_outputs().and_then(|()| self.model.do_step(t, h).map_err(CallError::Model)).and_then(|_| self.check_outputs());
         self.log_model_message();
         if let Err(e) = stepped {
             self.state = State::Error;
-            return Err(format!("step from t = {} s over {} s failed: {e}", show(t), show(h)));
+            return Err(CallError::StepFailed { t, h, source: Box::new(e) });
         }
         self.time = t + h;
         Ok(Status::Ok)
@@ -415,14 +398,14 @@ impl Instance {
     /// `fmi2SetFMUstate`: the model checks its part before anything changes.
     pub fn restore(&mut self, s: &Snapshot) -> CallResult {
         if s.guid != self.guid {
-            return Err(format!("FMU state belongs to GUID {} but this instance is {}", s.guid, self.guid));
+            return Err(CallError::ForeignState { state_guid: s.guid.clone(), guid: self.guid.clone() });
         }
         let me_state = matches!(s.state, State::EventMode | State::ContinuousTimeMode);
         let cs_state = matches!(s.state, State::StepComplete | State::StepFailed | State::StepCanceled);
         if (me_state && self.interface != Interface::ModelExchange) || (cs_state && self.interface != Interface::CoSimulation) {
-            return Err(format!("FMU state is in state {}, which an instance of this interface ({:?}) cannot take", s.state.name(), self.interface));
+            return Err(CallError::StateForInterface { state: s.state.name(), interface: self.interface });
         }
-        self.model.deserialize(&s.model).map_err(|e| format!("FMU state rejected: {e}"))?;
+        self.model.deserialize(&s.model).map_err(CallError::StateRejected)?;
         self.state = s.state;
         self.time = s.time;
         self.start_time = s.start_time;
@@ -433,10 +416,10 @@ impl Instance {
 
     /// `fmi2DeSerializeFMUstate`: the container and the model part are both checked
     /// (the latter on a scratch model, so that this instance is not touched).
-    pub fn decode_state(&self, bytes: &[u8]) -> Result<Snapshot, String> {
+    pub fn decode_state(&self, bytes: &[u8]) -> Result<Snapshot, CallError> {
         let s = Snapshot::decode(bytes, &self.guid)?;
         let mut scratch = (self.info.create)();
-        scratch.deserialize(&s.model).map_err(|e| format!("serialized FMU state rejected: {e}"))?;
+        scratch.deserialize(&s.model).map_err(CallError::SerializedStateRejected)?;
         Ok(s)
     }
 }

@@ -42,20 +42,9 @@ macro_rules! export_fmi2 {
         /// # Safety
         /// Pointers as in the FMI 2.0 standard; NULL is handled everywhere.
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi2Instantiate(
-            instance_name: $crate::fmi2::types::Fmi2String,
-            fmu_type: ::std::ffi::c_int,
-            guid: $crate::fmi2::types::Fmi2String,
-            resource_location: $crate::fmi2::types::Fmi2String,
-            functions: *const $crate::fmi2::types::Fmi2CallbackFunctions,
-            _visible: $crate::fmi2::types::Fmi2Boolean,
-            logging_on: $crate::fmi2::types::Fmi2Boolean,
-        ) -> $crate::fmi2::types::Fmi2Component {
-            let models = $registry();
+        pub unsafe extern "C" fn fmi2Instantiate(instance_name: $crate::fmi2::types::Fmi2String, fmu_type: ::std::ffi::c_int, guid: $crate::fmi2::types::Fmi2String, resource_location: $crate::fmi2::types::Fmi2String, functions: *const $crate::fmi2::types::Fmi2CallbackFunctions, _visible: $crate::fmi2::types::Fmi2Boolean, logging_on: $crate::fmi2::types::Fmi2Boolean) -> $crate::fmi2::types::Fmi2Component {
             // SAFETY: forwarded from the host under the same contract.
-            unsafe {
-                $crate::fmi2::api::common::instantiate_from(&models, instance_name, fmu_type, guid, resource_location, functions, logging_on)
-            }
+            unsafe { $crate::fmi2::api::common::instantiate_from(&$registry(), instance_name, fmu_type, guid, resource_location, functions, logging_on) }
         }
     };
 }

@@ -21,6 +21,7 @@
 
 use super::bytes::{crc32, ByteReader, ByteWriter};
 use super::state::{self, State};
+use crate::error::StateFormatError;
 
 /// The first 8 bytes of every serialized FMU state.
 pub const MAGIC: [u8; 8] = *b"FMI2STAT";
@@ -85,47 +86,37 @@ impl Snapshot {
 
     /// Parse and check a serialized state for the model with `guid`. The model part
     /// is returned as bytes; the caller has the model check it.
-    pub fn decode(bytes: &[u8], guid: &str) -> Result<Snapshot, String> {
+    pub fn decode(bytes: &[u8], guid: &str) -> Result<Snapshot, StateFormatError> {
         let mut r = ByteReader::new(bytes);
         if r.take(8, "magic")? != MAGIC {
-            return Err("not a serialized FMU state of this FMU (bad magic bytes)".into());
+            return Err(StateFormatError::BadMagic);
         }
         let version = r.u16("format version")?;
         if version != FORMAT_VERSION {
-            return Err(format!("serialized FMU state has format version {version}; this FMU reads version {FORMAT_VERSION}"));
+            return Err(StateFormatError::Version { found: version, reads: FORMAT_VERSION });
         }
         let total = r.u32("total length")? as usize;
         if total != bytes.len() {
-            return Err(format!(
-                "serialized FMU state is {} bytes but its header says {total} (truncated or extended)",
-                bytes.len()
-            ));
+            return Err(StateFormatError::Length { actual: bytes.len(), header: total });
         }
         let body = &bytes[..bytes.len() - 4];
         let stored = u32::from_le_bytes(bytes[bytes.len() - 4..].try_into().unwrap());
         if crc32(body) != stored {
-            return Err("serialized FMU state is corrupted (CRC-32 mismatch)".into());
+            return Err(StateFormatError::Crc);
         }
         let n = r.u8("GUID length")? as usize;
         let g = r.take(n, "GUID")?;
         if g != guid.as_bytes() {
-            return Err(format!(
-                "serialized FMU state belongs to GUID {} but this instance is {guid}",
-                String::from_utf8_lossy(g)
-            ));
+            return Err(StateFormatError::OtherGuid { found: String::from_utf8_lossy(g).into_owned(), guid: guid.to_owned() });
         }
         let code = r.u8("life-cycle state")?;
         let st = State::from_code(code)
             .filter(|s| state::FMU_STATE.allows(*s))
-            .ok_or_else(|| format!("serialized FMU state holds an invalid life-cycle state code {code}"))?;
+            .ok_or(StateFormatError::LifeCycleCode(code))?;
         let time = r.f64("time")?;
         let start_time = r.f64("start time")?;
         if !time.is_finite() || !start_time.is_finite() || time < start_time {
-            return Err(format!(
-                "serialized FMU state holds an invalid time ({} s, start {} s): both must be finite, time >= start",
-                crate::fmt::Num(time),
-                crate::fmt::Num(start_time)
-            ));
+            return Err(StateFormatError::Time { time, start: start_time });
         }
         let m = r.u32("model state length")? as usize;
         let model = r.take(m, "model state")?.to_vec();
@@ -175,8 +166,8 @@ mod tests {
         let n = b.len();
         let crc = crc32(&b[..n - 4]);
         b[n - 4..].copy_from_slice(&crc.to_le_bytes());
-        assert!(Snapshot::decode(&b, "{g}").unwrap_err().contains("format version 2"));
-        let e = Snapshot::decode(&sample().encode(), "{other}").unwrap_err();
+        assert!(Snapshot::decode(&b, "{g}").unwrap_err().to_string().contains("format version 2"));
+        let e = Snapshot::decode(&sample().encode(), "{other}").unwrap_err().to_string();
         assert!(e.contains("GUID"), "{e}");
     }
 }

@@ -6,35 +6,35 @@
 //! layout). One deliberate difference: `fmi2FreeInstance` is also accepted in
 //! the `Fatal` state, so that a host can always release the memory.
 
-/// One state of the instance's life cycle, as a single bit.
+/// One state of the instance's life cycle; in a [`Mask`] it is the bit `1 << code`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[repr(u32)]
+#[repr(u8)]
 pub enum State {
     /// Before `fmi2Instantiate` / after `fmi2FreeInstance` (never held by an instance).
-    StartAndEnd = 1 << 0,
+    StartAndEnd,
     /// After `fmi2Instantiate` (or `fmi2Reset`): parameters and start values may be set.
-    Instantiated = 1 << 1,
+    Instantiated,
     /// Between `fmi2EnterInitializationMode` and `fmi2ExitInitializationMode`.
-    InitializationMode = 1 << 2,
+    InitializationMode,
     /// Co-Simulation: initialized and ready for the next `fmi2DoStep` (FMI 3.0 step mode).
-    StepComplete = 1 << 3,
+    StepComplete,
     /// Only reached by asynchronous slaves; this FMU steps synchronously.
-    StepInProgress = 1 << 4,
+    StepInProgress,
     /// Co-Simulation: a step was discarded (`fmi2Discard`); this FMU never discards a step.
-    StepFailed = 1 << 5,
+    StepFailed,
     /// Co-Simulation: an asynchronous step was cancelled (never reached here).
-    StepCanceled = 1 << 6,
+    StepCanceled,
     /// After `fmi2Terminate`: values may still be read, then reset or free.
-    Terminated = 1 << 7,
+    Terminated,
     /// After a call returned `fmi2Error` that left the instance inconsistent (a failed step or
     /// initialization): only getters, FMU state functions, reset and free are allowed.
-    Error = 1 << 8,
+    Error,
     /// After a contained panic (`fmi2Fatal`): only `fmi2FreeInstance` is allowed.
-    Fatal = 1 << 9,
+    Fatal,
     /// Model Exchange (both standards): event mode, after initialization.
-    EventMode = 1 << 10,
+    EventMode,
     /// Model Exchange: continuous-time mode, in which the host's solver integrates.
-    ContinuousTimeMode = 1 << 11,
+    ContinuousTimeMode,
 }
 
 impl State {
@@ -72,9 +72,14 @@ impl State {
         }
     }
 
-    /// A small code for the serialized FMU state.
+    /// A small code for the serialized FMU state (the state's bit number in a [`Mask`]).
     pub fn code(self) -> u8 {
-        (self as u32).trailing_zeros() as u8
+        self as u8
+    }
+
+    /// The state's bit in a [`Mask`].
+    const fn bit(self) -> u32 {
+        1 << self as u32
     }
 
     /// The state whose [`State::code`] is `code`, or `None` for a code no state has
@@ -93,7 +98,7 @@ impl Mask {
         let mut bits = 0;
         let mut i = 0;
         while i < states.len() {
-            bits |= states[i] as u32;
+            bits |= states[i].bit();
             i += 1;
         }
         Mask(bits)
@@ -101,7 +106,7 @@ impl Mask {
 
     /// Whether the state `s` is in the set.
     pub fn allows(self, s: State) -> bool {
-        self.0 & (s as u32) != 0
+        self.0 & s.bit() != 0
     }
 
     /// The allowed states, for messages: "instantiated, initializationMode".

@@ -38,30 +38,10 @@ macro_rules! export_fmi3 {
         /// # Safety
         /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3InstantiateModelExchange(
-            instance_name: $crate::fmi3::types::Fmi3String,
-            instantiation_token: $crate::fmi3::types::Fmi3String,
-            resource_path: $crate::fmi3::types::Fmi3String,
-            _visible: $crate::fmi3::types::Fmi3Boolean,
-            logging_on: $crate::fmi3::types::Fmi3Boolean,
-            instance_environment: *mut ::std::ffi::c_void,
-            log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>,
-        ) -> *mut ::std::ffi::c_void {
-            let models = $registry();
+        pub unsafe extern "C" fn fmi3InstantiateModelExchange(instance_name: $crate::fmi3::types::Fmi3String, instantiation_token: $crate::fmi3::types::Fmi3String, resource_path: $crate::fmi3::types::Fmi3String, _visible: $crate::fmi3::types::Fmi3Boolean, logging_on: $crate::fmi3::types::Fmi3Boolean, instance_environment: *mut ::std::ffi::c_void, log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>) -> *mut ::std::ffi::c_void {
+            let interface = $crate::fmi2::instance::Interface::ModelExchange;
             // SAFETY: forwarded from the host under the same contract.
-            unsafe {
-                $crate::fmi3::api::instantiate_from(
-                    &models,
-                    $crate::fmi2::instance::Interface::ModelExchange,
-                    instance_name,
-                    instantiation_token,
-                    resource_path,
-                    logging_on,
-                    0,
-                    instance_environment,
-                    log_message,
-                )
-            }
+            unsafe { $crate::fmi3::api::instantiate_from(&$registry(), interface, instance_name, instantiation_token, resource_path, logging_on, 0, instance_environment, log_message) }
         }
 
         /// `fmi3InstantiateCoSimulation` (FMI 3.0) for the models of this library: finds the
@@ -74,35 +54,10 @@ macro_rules! export_fmi3 {
         /// # Safety
         /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
-            instance_name: $crate::fmi3::types::Fmi3String,
-            instantiation_token: $crate::fmi3::types::Fmi3String,
-            resource_path: $crate::fmi3::types::Fmi3String,
-            _visible: $crate::fmi3::types::Fmi3Boolean,
-            logging_on: $crate::fmi3::types::Fmi3Boolean,
-            event_mode_used: $crate::fmi3::types::Fmi3Boolean,
-            _early_return_allowed: $crate::fmi3::types::Fmi3Boolean,
-            _required_intermediate_variables: *const u32,
-            _n_required_intermediate_variables: usize,
-            instance_environment: *mut ::std::ffi::c_void,
-            log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>,
-            _intermediate_update: *mut ::std::ffi::c_void,
-        ) -> *mut ::std::ffi::c_void {
-            let models = $registry();
+        pub unsafe extern "C" fn fmi3InstantiateCoSimulation(instance_name: $crate::fmi3::types::Fmi3String, instantiation_token: $crate::fmi3::types::Fmi3String, resource_path: $crate::fmi3::types::Fmi3String, _visible: $crate::fmi3::types::Fmi3Boolean, logging_on: $crate::fmi3::types::Fmi3Boolean, event_mode_used: $crate::fmi3::types::Fmi3Boolean, _early_return_allowed: $crate::fmi3::types::Fmi3Boolean, _required_intermediate_variables: *const u32, _n_required_intermediate_variables: usize, instance_environment: *mut ::std::ffi::c_void, log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>, _intermediate_update: *mut ::std::ffi::c_void) -> *mut ::std::ffi::c_void {
+            let interface = $crate::fmi2::instance::Interface::CoSimulation;
             // SAFETY: forwarded from the host under the same contract.
-            unsafe {
-                $crate::fmi3::api::instantiate_from(
-                    &models,
-                    $crate::fmi2::instance::Interface::CoSimulation,
-                    instance_name,
-                    instantiation_token,
-                    resource_path,
-                    logging_on,
-                    event_mode_used,
-                    instance_environment,
-                    log_message,
-                )
-            }
+            unsafe { $crate::fmi3::api::instantiate_from(&$registry(), interface, instance_name, instantiation_token, resource_path, logging_on, event_mode_used, instance_environment, log_message) }
         }
     };
 }

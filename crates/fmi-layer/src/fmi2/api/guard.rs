@@ -3,6 +3,7 @@
 //! one that happens inside a call returns `fmi2Fatal` and puts the instance in the
 //! `fatal` state, in which only `fmi2FreeInstance` is accepted).
 
+use crate::error::CallError;
 use crate::fmi2::instance::{CallResult, Instance};
 use crate::fmi2::logging::Category;
 use crate::fmi2::state::{Mask, State};
@@ -125,12 +126,12 @@ pub(crate) fn call(
 ///
 /// # Safety
 /// For `n > 0` a non-NULL `p` must point to `n` readable values.
-pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&'a [T], String> {
+pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &'static str) -> Result<&'a [T], CallError> {
     if n == 0 {
         return Ok(&[]);
     }
     if p.is_null() {
-        return Err(format!("{what} is NULL but its length is {n}"));
+        return Err(CallError::NullArray { what, len: n });
     }
     // SAFETY: per the contract above.
     Ok(unsafe { std::slice::from_raw_parts(p, n) })
@@ -140,13 +141,65 @@ pub(crate) unsafe fn slice<'a, T>(p: *const T, n: usize, what: &str) -> Result<&
 ///
 /// # Safety
 /// For `n > 0` a non-NULL `p` must point to `n` writable values.
-pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &str) -> Result<&'a mut [T], String> {
+pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &'static str) -> Result<&'a mut [T], CallError> {
     if n == 0 {
         return Ok(&mut []);
     }
     if p.is_null() {
-        return Err(format!("{what} is NULL but its length is {n}"));
+        return Err(CallError::NullArray { what, len: n });
     }
     // SAFETY: per the contract above.
     Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
+}
+
+/// Define exported FMI functions whose whole body runs through [`call`]: for each entry
+///
+/// ```text
+/// /// doc
+/// [unsafe] fn NAME(instance: Type, arg: Type, ...) -> Status: MASK => BODY;
+/// ```
+///
+/// a `#[unsafe(no_mangle)] pub [unsafe] extern "C" fn NAME` with exactly that signature that
+/// runs `BODY` (an `FnOnce(&mut Instance) -> CallResult`, which may use the arguments) for the
+/// instance if the state mask `crate::fmi2::state::MASK` allows its state, logging an error
+/// under the function's name. Both standards' exports are written with it, so the guard
+/// boilerplate (NULL and dead instances, masks, logging, panics) is in one place.
+macro_rules! guarded {
+    () => {};
+    ($(#[$attr:meta])* unsafe fn $name:ident($c:ident: $ct:ty $(, $p:ident: $t:ty)* $(,)?) -> $ret:ty: $mask:ident => $body:expr; $($rest:tt)*) => {
+        $(#[$attr])*
+        #[unsafe(no_mangle)]
+        pub unsafe extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
+            $crate::fmi2::api::guard::call($c, stringify!($name), $crate::fmi2::state::$mask, $body)
+        }
+        $crate::fmi2::api::guard::guarded!($($rest)*);
+    };
+    ($(#[$attr:meta])* fn $name:ident($c:ident: $ct:ty $(, $p:ident: $t:ty)* $(,)?) -> $ret:ty: $mask:ident => $body:expr; $($rest:tt)*) => {
+        $(#[$attr])*
+        #[unsafe(no_mangle)]
+        pub extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
+            $crate::fmi2::api::guard::call($c, stringify!($name), $crate::fmi2::state::$mask, $body)
+        }
+        $crate::fmi2::api::guard::guarded!($($rest)*);
+    };
+}
+pub(crate) use guarded;
+
+/// The body of a function this layer does not provide: `fmi2Error` with `why` (after the
+/// state check).
+pub(crate) fn refuse(why: &'static str) -> impl FnOnce(&mut Instance) -> CallResult {
+    move |_| Err(CallError::Unsupported(why))
+}
+
+/// Write `v` through the host's pointer `p` (named `what` in the error for NULL).
+///
+/// # Safety
+/// `p` is NULL or writable.
+pub(crate) unsafe fn write_out<T>(p: *mut T, v: T, what: &'static str) -> CallResult {
+    if p.is_null() {
+        return Err(CallError::Null(what));
+    }
+    // SAFETY: non-NULL and writable per the contract.
+    unsafe { *p = v };
+    Ok(crate::fmi2::types::Status::Ok)
 }

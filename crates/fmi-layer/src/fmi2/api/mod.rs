@@ -2,7 +2,9 @@
 
 pub mod common;
 pub mod cosim;
+pub(crate) mod fmu_state;
 pub(crate) mod guard;
 pub mod model_exchange;
+pub(crate) mod values;
 
 pub use guard::{force_panic_in, pinjoint_test_force_panic};

@@ -4,13 +4,18 @@
 //! the current inputs. Event mode has nothing to iterate: `fmi2NewDiscreteStates` reports
 //! no discrete-state update, no next time event. The functions are refused on a
 //! Co-Simulation instance (and their masks keep them out of Co-Simulation states).
+//!
+//! The functions with an array of continuous states or event indicators are the same in
+//! both standards (the length must be 0) and are written here for both; [`crate::fmi3::api`]
+//! re-exports the FMI 3.0 ones.
 
 #![allow(non_snake_case)]
 
-use super::guard::call;
-use crate::fmi2::instance::Instance;
-use crate::fmi2::state;
+use super::guard::{guarded, write_out};
+use crate::error::CallError;
+use crate::fmi2::instance::{CallResult, Instance};
 use crate::fmi2::types::*;
+use crate::fmi3::types::{Fmi3Instance, Fmi3StatusC};
 use std::ffi::c_void;
 
 /// `fmi2EventInfo` (FMI 2.0 `fmi2FunctionTypes.h`).
@@ -30,66 +35,54 @@ pub struct Fmi2EventInfo {
     pub next_event_time: Fmi2Real,
 }
 
-/// `fmi2EnterEventMode` (FMI 2.0 §3.2.2): Model Exchange, to event mode; `fmi2Error` on a
-/// Co-Simulation instance.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2EnterEventMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterEventMode", state::ENTER_EVENT_MODE, Instance::enter_event_mode)
-}
+guarded! {
+    /// `fmi2EnterEventMode` (FMI 2.0 §3.2.2): Model Exchange, to event mode; `fmi2Error` on a
+    /// Co-Simulation instance.
+    fn fmi2EnterEventMode(c: Fmi2Component) -> Fmi2StatusC: ENTER_EVENT_MODE => Instance::enter_event_mode;
 
-/// `fmi2NewDiscreteStates` (FMI 2.0 §3.2.2): the event iteration. Checks the outputs at
-/// the current inputs (a model failure is `fmi2Error`), then writes an `fmi2EventInfo` with
-/// every flag false and no next time event: nothing discrete to update.
-///
-/// # Safety
-/// `eventInfo` is NULL or points to a writable `fmi2EventInfo`.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi2NewDiscreteStates(c: Fmi2Component, eventInfo: *mut c_void) -> Fmi2StatusC {
-    call(c, "fmi2NewDiscreteStates", state::NEW_DISCRETE_STATES, |inst| {
+    /// `fmi2NewDiscreteStates` (FMI 2.0 §3.2.2): the event iteration. Checks the outputs at
+    /// the current inputs (a model failure is `fmi2Error`), then writes an `fmi2EventInfo` with
+    /// every flag false and no next time event: nothing discrete to update.
+    ///
+    /// # Safety
+    /// `eventInfo` is NULL or points to a writable `fmi2EventInfo`.
+    unsafe fn fmi2NewDiscreteStates(c: Fmi2Component, eventInfo: *mut c_void) -> Fmi2StatusC: NEW_DISCRETE_STATES => |inst| {
         inst.require_model_exchange()?;
         if eventInfo.is_null() {
-            return Err("eventInfo is NULL".into());
+            return Err(CallError::Null("eventInfo"));
         }
         inst.refresh_outputs()?;
+        let none = Fmi2EventInfo {
+            new_discrete_states_needed: FMI2_FALSE,
+            terminate_simulation: FMI2_FALSE,
+            nominals_of_continuous_states_changed: FMI2_FALSE,
+            values_of_continuous_states_changed: FMI2_FALSE,
+            next_event_time_defined: FMI2_FALSE,
+            next_event_time: 0.0,
+        };
         // SAFETY: non-NULL and writable per the contract.
-        unsafe {
-            *(eventInfo as *mut Fmi2EventInfo) = Fmi2EventInfo {
-                new_discrete_states_needed: FMI2_FALSE,
-                terminate_simulation: FMI2_FALSE,
-                nominals_of_continuous_states_changed: FMI2_FALSE,
-                values_of_continuous_states_changed: FMI2_FALSE,
-                next_event_time_defined: FMI2_FALSE,
-                next_event_time: 0.0,
-            };
-        }
-        Ok(Status::Ok)
-    })
-}
+        unsafe { write_out(eventInfo.cast::<Fmi2EventInfo>(), none, "eventInfo") }
+    };
 
-/// `fmi2EnterContinuousTimeMode` (FMI 2.0 §3.2.2): Model Exchange, from event mode to
-/// continuous-time mode; `fmi2Error` on a Co-Simulation instance.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2EnterContinuousTimeMode(c: Fmi2Component) -> Fmi2StatusC {
-    call(c, "fmi2EnterContinuousTimeMode", state::ENTER_CONTINUOUS_TIME_MODE, Instance::enter_continuous_time_mode)
-}
+    /// `fmi2EnterContinuousTimeMode` (FMI 2.0 §3.2.2): Model Exchange, from event mode to
+    /// continuous-time mode; `fmi2Error` on a Co-Simulation instance.
+    fn fmi2EnterContinuousTimeMode(c: Fmi2Component) -> Fmi2StatusC: ENTER_CONTINUOUS_TIME_MODE => Instance::enter_continuous_time_mode;
 
-/// `fmi2CompletedIntegratorStep` (FMI 2.0 §3.2.2): checks the outputs at the current
-/// inputs (a model failure is `fmi2Error`); never asks for an event or termination (both
-/// flags `fmi2False`). `fmi2Error` if either pointer is NULL.
-///
-/// # Safety
-/// `enterEventMode` and `terminateSimulation` are writable.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi2CompletedIntegratorStep(
-    c: Fmi2Component,
-    _noSetFMUStatePriorToCurrentPoint: Fmi2Boolean,
-    enterEventMode: *mut Fmi2Boolean,
-    terminateSimulation: *mut Fmi2Boolean,
-) -> Fmi2StatusC {
-    call(c, "fmi2CompletedIntegratorStep", state::COMPLETED_INTEGRATOR_STEP, |inst| {
+    /// `fmi2CompletedIntegratorStep` (FMI 2.0 §3.2.2): checks the outputs at the current
+    /// inputs (a model failure is `fmi2Error`); never asks for an event or termination (both
+    /// flags `fmi2False`). `fmi2Error` if either pointer is NULL.
+    ///
+    /// # Safety
+    /// `enterEventMode` and `terminateSimulation` are writable.
+    unsafe fn fmi2CompletedIntegratorStep(
+        c: Fmi2Component,
+        _noSetFMUStatePriorToCurrentPoint: Fmi2Boolean,
+        enterEventMode: *mut Fmi2Boolean,
+        terminateSimulation: *mut Fmi2Boolean,
+    ) -> Fmi2StatusC: COMPLETED_INTEGRATOR_STEP => |inst| {
         inst.require_model_exchange()?;
         if enterEventMode.is_null() || terminateSimulation.is_null() {
-            return Err("enterEventMode or terminateSimulation is NULL".into());
+            return Err(CallError::Null("enterEventMode or terminateSimulation"));
         }
         inst.refresh_outputs()?;
         // SAFETY: non-NULL and writable per the contract.
@@ -98,47 +91,52 @@ pub unsafe extern "C" fn fmi2CompletedIntegratorStep(
             *terminateSimulation = FMI2_FALSE;
         }
         Ok(Status::Ok)
-    })
+    };
+
+    /// `fmi2SetTime` (FMI 2.0 §3.2.1): Model Exchange, records the host's solver time `time`
+    /// in s (the outputs depend on the inputs only); `fmi2Error` for a non-finite time or on a
+    /// Co-Simulation instance.
+    fn fmi2SetTime(c: Fmi2Component, time: Fmi2Real) -> Fmi2StatusC: SET_TIME => |inst| inst.set_time(time);
+
+    /// `fmi2SetContinuousStates` (FMI 2.0 §3.2.1): this FMU has no continuous states, so `nx`
+    /// must be 0 (then `fmi2OK`, nothing read); `fmi2Error` otherwise.
+    fn fmi2SetContinuousStates(c: Fmi2Component, _x: *const Fmi2Real, nx: usize) -> Fmi2StatusC: SET_CONTINUOUS_STATES => none("nx", nx);
+    /// `fmi3SetContinuousStates` (FMI 3.0, Model Exchange): this FMU has no continuous
+    /// states, so `nContinuousStates` must be 0 (then `fmi3OK`, nothing read); `fmi3Error`
+    /// otherwise or on a Co-Simulation instance.
+    fn fmi3SetContinuousStates(instance: Fmi3Instance, _values: *const f64, n: usize) -> Fmi3StatusC: SET_CONTINUOUS_STATES => none("nContinuousStates", n);
+    /// `fmi2GetDerivatives` (FMI 2.0 §3.2.2): this FMU has no continuous states, so `nx` must
+    /// be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
+    fn fmi2GetDerivatives(c: Fmi2Component, _derivatives: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_DERIVATIVES => none("nx", nx);
+    /// `fmi3GetContinuousStateDerivatives` (FMI 3.0, Model Exchange): this FMU has no
+    /// continuous states, so `nContinuousStates` must be 0 (then `fmi3OK`, nothing written);
+    /// `fmi3Error` otherwise or on a Co-Simulation instance.
+    fn fmi3GetContinuousStateDerivatives(instance: Fmi3Instance, _values: *mut f64, n: usize) -> Fmi3StatusC: GET_DERIVATIVES => none("nContinuousStates", n);
+    /// `fmi2GetEventIndicators` (FMI 2.0 §3.2.2): this FMU has no event indicators, so `ni`
+    /// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
+    fn fmi2GetEventIndicators(c: Fmi2Component, _eventIndicators: *mut Fmi2Real, ni: usize) -> Fmi2StatusC: GET_DERIVATIVES => none("ni", ni);
+    /// `fmi3GetEventIndicators` (FMI 3.0, Model Exchange): this FMU has no event indicators,
+    /// so `nEventIndicators` must be 0 (then `fmi3OK`, nothing written); `fmi3Error` otherwise
+    /// or on a Co-Simulation instance.
+    fn fmi3GetEventIndicators(instance: Fmi3Instance, _values: *mut f64, n: usize) -> Fmi3StatusC: GET_DERIVATIVES => none("nEventIndicators", n);
+    /// `fmi2GetContinuousStates` (FMI 2.0 §3.2.2): this FMU has no continuous states, so `nx`
+    /// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
+    fn fmi2GetContinuousStates(c: Fmi2Component, _x: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_CONTINUOUS_STATES => none("nx", nx);
+    /// `fmi3GetContinuousStates` (FMI 3.0, Model Exchange): this FMU has no continuous
+    /// states, so `nContinuousStates` must be 0 (then `fmi3OK`, nothing written); `fmi3Error`
+    /// otherwise or on a Co-Simulation instance.
+    fn fmi3GetContinuousStates(instance: Fmi3Instance, _values: *mut f64, n: usize) -> Fmi3StatusC: GET_CONTINUOUS_STATES => none("nContinuousStates", n);
+    /// `fmi2GetNominalsOfContinuousStates` (FMI 2.0 §3.2.2): this FMU has no continuous
+    /// states, so `nx` must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
+    fn fmi2GetNominalsOfContinuousStates(c: Fmi2Component, _x_nominal: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_CONTINUOUS_STATES => none("nx", nx);
+    /// `fmi3GetNominalsOfContinuousStates` (FMI 3.0, Model Exchange): this FMU has no
+    /// continuous states, so `nContinuousStates` must be 0 (then `fmi3OK`, nothing written);
+    /// `fmi3Error` otherwise or on a Co-Simulation instance.
+    fn fmi3GetNominalsOfContinuousStates(instance: Fmi3Instance, _values: *mut f64, n: usize) -> Fmi3StatusC: GET_CONTINUOUS_STATES => none("nContinuousStates", n);
 }
 
-/// `fmi2SetTime` (FMI 2.0 §3.2.1): Model Exchange, records the host's solver time `time`
-/// in s (the outputs depend on the inputs only); `fmi2Error` for a non-finite time or on a
-/// Co-Simulation instance.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2SetTime(c: Fmi2Component, time: Fmi2Real) -> Fmi2StatusC {
-    call(c, "fmi2SetTime", state::SET_TIME, |inst| {
-        inst.require_model_exchange()?;
-        inst.set_time(time)
-    })
-}
-
-/// `fmi2SetContinuousStates` (FMI 2.0 §3.2.1): this FMU has no continuous states, so `nx`
-/// must be 0 (then `fmi2OK`, nothing read); `fmi2Error` otherwise.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2SetContinuousStates(c: Fmi2Component, _x: *const Fmi2Real, nx: usize) -> Fmi2StatusC {
-    call(c, "fmi2SetContinuousStates", state::SET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
-}
-/// `fmi2GetDerivatives` (FMI 2.0 §3.2.2): this FMU has no continuous states, so `nx` must
-/// be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetDerivatives(c: Fmi2Component, _derivatives: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
-    call(c, "fmi2GetDerivatives", state::GET_DERIVATIVES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
-}
-/// `fmi2GetEventIndicators` (FMI 2.0 §3.2.2): this FMU has no event indicators, so `ni`
-/// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetEventIndicators(c: Fmi2Component, _eventIndicators: *mut Fmi2Real, ni: usize) -> Fmi2StatusC {
-    call(c, "fmi2GetEventIndicators", state::GET_DERIVATIVES, |inst| inst.require_none("ni", ni).map(|_| Status::Ok))
-}
-/// `fmi2GetContinuousStates` (FMI 2.0 §3.2.2): this FMU has no continuous states, so `nx`
-/// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetContinuousStates(c: Fmi2Component, _x: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
-    call(c, "fmi2GetContinuousStates", state::GET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
-}
-/// `fmi2GetNominalsOfContinuousStates` (FMI 2.0 §3.2.2): this FMU has no continuous
-/// states, so `nx` must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
-#[unsafe(no_mangle)]
-pub extern "C" fn fmi2GetNominalsOfContinuousStates(c: Fmi2Component, _x_nominal: *mut Fmi2Real, nx: usize) -> Fmi2StatusC {
-    call(c, "fmi2GetNominalsOfContinuousStates", state::GET_CONTINUOUS_STATES, |inst| inst.require_none("nx", nx).map(|_| Status::Ok))
+/// The body of the Model Exchange functions with an array of continuous states or event
+/// indicators (`what` = `n`), of which this layer's models have none: `n` must be 0.
+pub(crate) fn none(what: &'static str, n: usize) -> impl FnOnce(&mut Instance) -> CallResult {
+    move |inst| inst.require_none(what, n).map(|()| Status::Ok)
 }
