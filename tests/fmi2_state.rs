@@ -188,3 +188,32 @@ fn set_state_restores_the_life_cycle_state_and_recovers_from_error() {
     unsafe { fmi2FreeInstance(c) };
     unsafe { fmi2FreeInstance(d) };
 }
+
+/// A handle that is not a live FMU state — freed, or the state passed where the standard
+/// passes its address (as Reference-FMUs' fmusim v0.0.39 does in `fmi2FreeFMUstate`) — is an
+/// error, and the host carries on: no read through the bad pointer, no crash.
+#[test]
+fn freed_and_misplaced_state_handles_are_errors_not_crashes() {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    let mut s: Fmi2FmuState = null_mut();
+    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    let kept = s;
+    // fmusim's slip: the state itself as the slot; its first bytes are no live handle.
+    assert_eq!(unsafe { fmi2FreeFMUstate(c, kept as *mut Fmi2FmuState) }, ERROR);
+    assert_eq!(unsafe { fmi2SetFMUstate(c, kept) }, OK, "the state is still live after the refused free");
+    assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
+    assert!(s.is_null());
+    // The freed handle, used again: refused without being read.
+    let mut stale = kept;
+    assert_eq!(unsafe { fmi2SetFMUstate(c, kept) }, ERROR);
+    assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut stale) }, ERROR);
+    let mut size = 0usize;
+    assert_eq!(unsafe { fmi2SerializedFMUstateSize(c, kept, &mut size) }, ERROR);
+    // A pointer into ordinary memory is no state either.
+    let mut junk = [0u64; 8];
+    assert_eq!(unsafe { fmi2SetFMUstate(c, junk.as_mut_ptr().cast()) }, ERROR);
+    // The instance still steps.
+    drive(c, 0, 10);
+    unsafe { fmi2FreeInstance(c) };
+}

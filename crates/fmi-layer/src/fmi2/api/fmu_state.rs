@@ -12,7 +12,34 @@ use crate::fmi2::instance::{CallResult, Instance};
 use crate::fmi2::snapshot::Snapshot;
 use crate::fmi2::types::{Fmi2Byte, Fmi2Component, Fmi2FmuState, Fmi2StatusC, Status};
 use crate::fmi3::types::{Fmi3Byte, Fmi3FmuState, Fmi3Instance, Fmi3StatusC};
+use std::collections::BTreeSet;
 use std::ptr::null_mut;
+use std::sync::{Mutex, PoisonError};
+
+/// Addresses of the FMU states this library has handed out and not yet freed. A handle is
+/// dereferenced only when it is one of them, so a freed, foreign or garbage handle is an
+/// `fmi2Error`, never a read through a bad pointer: Reference-FMUs' fmusim v0.0.39, for one,
+/// passes the state itself to `fmi2FreeFMUstate` where the standard passes its address,
+/// which used to crash the host. Process-wide (states may move between instances of the
+/// same model); a lock per state call, negligible next to encoding a state.
+static LIVE: Mutex<BTreeSet<usize>> = Mutex::new(BTreeSet::new());
+
+/// Whether `s` is a live FMU state of this library.
+fn is_live(s: Fmi2FmuState) -> bool {
+    LIVE.lock().unwrap_or_else(PoisonError::into_inner).contains(&(s as usize))
+}
+
+/// A new FMU state: `snap` on the heap, registered as live.
+fn hand_out(snap: Snapshot) -> Fmi2FmuState {
+    let s = Box::into_raw(Box::new(snap)) as Fmi2FmuState;
+    LIVE.lock().unwrap_or_else(PoisonError::into_inner).insert(s as usize);
+    s
+}
+
+/// Unregister `s`; true when it was live (then the caller owns the box).
+fn take_back(s: Fmi2FmuState) -> bool {
+    LIVE.lock().unwrap_or_else(PoisonError::into_inner).remove(&(s as usize))
+}
 
 /// The FMU state behind the handle `s` (named `handle` in messages), or an error for NULL
 /// or a handle that is not (any more) a live FMU state of this FMU.
@@ -23,7 +50,11 @@ unsafe fn live_state<'a>(s: Fmi2FmuState, handle: &'static str) -> Result<&'a mu
     if s.is_null() {
         return Err(CallError::Null(handle));
     }
-    // SAFETY: per the contract; the tag catches most foreign or freed pointers.
+    if !is_live(s) {
+        return Err(CallError::NotLiveState { handle });
+    }
+    // SAFETY: `s` is a live state handed out by `hand_out` and not freed (the registry);
+    // the tag is a second check.
     let snap = unsafe { &mut *(s as *mut Snapshot) };
     if !snap.is_live() {
         return Err(CallError::NotLiveState { handle });
@@ -43,7 +74,7 @@ unsafe fn store(slot: *mut Fmi2FmuState, snap: Snapshot, reuse_error: impl FnOnc
     // SAFETY: non-NULL pointer to the host's slot.
     let slot = unsafe { &mut *slot };
     if slot.is_null() {
-        *slot = Box::into_raw(Box::new(snap)) as Fmi2FmuState;
+        *slot = hand_out(snap);
     } else {
         // The standard lets the host pass back a state for reuse.
         // SAFETY: a non-NULL slot holds a state returned by this FMU.
@@ -82,8 +113,13 @@ unsafe fn free_state(slot: *mut Fmi2FmuState) -> CallResult {
         return Ok(Status::Ok); // nothing to free
     }
     // SAFETY: per the contract.
-    unsafe { live_state(*slot, "FMUstate") }?.kill();
-    // SAFETY: the state came from Box::into_raw in this module.
+    let s = unsafe { *slot };
+    // SAFETY: `live_state` dereferences only a registered state.
+    unsafe { live_state(s, "FMUstate") }?.kill();
+    if !take_back(s) {
+        return Err(CallError::NotLiveState { handle: "FMUstate" });
+    }
+    // SAFETY: the state came from Box::into_raw in `hand_out` and was live until just now.
     unsafe {
         drop(Box::from_raw(*slot as *mut Snapshot));
         *slot = null_mut();
