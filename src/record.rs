@@ -57,6 +57,12 @@ pub const NAMES: [&str; 12] = {
     names
 };
 
+/// The column named `name`, if the record has one (how the FMU outputs find their
+/// quantities in the record).
+pub fn column(name: &str) -> Option<&'static Column> {
+    COLUMNS.iter().find(|c| c.name == name)
+}
+
 /// Every regime, in the order of their codes 0, 1, 2 (see [`regime_code`]).
 pub const REGIMES: [Regime; 3] = [Regime::Boundary, Regime::Mixed, Regime::FullFilm];
 
@@ -98,6 +104,8 @@ mod tests {
         assert_eq!(numbers[..9], expect);
         assert_eq!(numbers[9..], [op.min_film_thickness, op.min_lambda_ratio]);
         assert_eq!(NAMES[9], "regime");
+        assert_eq!(column("lambda_ratio").map(|c| c.unit), Some("1"));
+        assert!(column("power_loss").is_none());
         for (k, r) in REGIMES.iter().enumerate() {
             assert_eq!(usize::from(regime_code(*r)), k);
         }
