@@ -12,6 +12,8 @@ use fmi_layer::fmi2::variables::{Causality, EnumType, Kind, Variable};
 pub type Getter<S> = Box<dyn Fn(&S) -> f64 + Send + Sync>;
 /// Stores a value that passed the row's [`Rule`] into the model's values `S`.
 pub type Setter<S> = Box<dyn Fn(&mut S, f64) + Send + Sync>;
+/// A plain getter and setter of one value of `S` (what most rows are built from).
+pub type Access<S> = (fn(&S) -> f64, fn(&mut S, f64));
 
 /// The check of a value when the host sets it (and when a state is restored). A value
 /// that breaks it is refused with [`ModelError::InvalidValue`] naming the variable's
@@ -166,10 +168,23 @@ impl<S> Table<S> {
     }
 
     /// Store a checked value in row `i` (the FMI layer never sets an output: a row without
-    /// a setter ignores it).
-    pub fn set(&self, s: &mut S, i: usize, x: f64) {
-        if let Some(set) = &self.rows[i].set {
+    /// a setter ignores it); returns the row's declaration (the caller drops what a changed
+    /// parameter invalidates).
+    pub fn set(&self, s: &mut S, i: usize, x: f64) -> &Variable {
+        let row = &self.rows[i];
+        if let Some(set) = &row.set {
             set(s, x);
+        }
+        &row.var
+    }
+
+    /// [`Table::check`], and for the `load` input the joint's asperity `capacity` once one
+    /// is built ([`crate::inputs::check_capacity`]).
+    pub fn check_input(&self, i: usize, x: f64, capacity: Option<f64>) -> ModelResult<()> {
+        self.check(i, x)?;
+        match capacity {
+            Some(c) if self.rows[i].var.name == "load" => crate::inputs::check_capacity(x, c),
+            _ => Ok(()),
         }
     }
 
@@ -222,4 +237,39 @@ impl<S> Table<S> {
 /// A byte-level failure of a state read ([`ByteReader`]) as a rejected state.
 pub fn rejected(e: impl std::fmt::Display) -> ModelError {
     ModelError::RejectedState(e.to_string())
+}
+
+/// Test support: every stored row of a table takes a value of its own, keeps it through
+/// get/set and through the state's bytes.
+#[cfg(test)]
+pub(crate) fn assert_round_trip<S: Default>(table: &Table<S>, model: &str, version: u8) {
+    let rows = table.rows();
+    let mut v = S::default();
+    for (i, row) in rows.iter().enumerate() {
+        assert_eq!(table.get(&v, i).to_bits(), row.var.start.unwrap_or(0.0).to_bits(), "start of {}", row.var.name);
+    }
+    for &i in table.stored() {
+        let row = &rows[i];
+        let x = match row.var.kind {
+            Kind::Boolean | Kind::Integer | Kind::Enumeration(_) => 1.0,
+            _ if row.var.name == "temperature" => 300.0,
+            _ => row.var.start.unwrap_or(0.0) * 1.25 + i as f64,
+        };
+        table.check(i, x).unwrap();
+        table.set(&mut v, i, x);
+        assert_eq!(table.get(&v, i), x, "{}", row.var.name);
+    }
+    let mut w = ByteWriter::default();
+    table.write(version, &v, &mut w);
+    assert_eq!(w.buf.len(), 1 + 2 + 8 * table.stored().len());
+    let mut back = S::default();
+    let mut r = ByteReader::new(&w.buf);
+    table.read(model, version, &mut r, &mut back).unwrap();
+    r.finish().unwrap();
+    for &i in table.stored() {
+        assert_eq!(table.get(&back, i).to_bits(), table.get(&v, i).to_bits(), "{}", rows[i].var.name);
+    }
+    let mut r = ByteReader::new(&w.buf);
+    let e = table.read(model, version.wrapping_add(1), &mut r, &mut back).unwrap_err().to_string();
+    assert_eq!(e, format!("{model} state version {version}; this FMU reads version {}", version.wrapping_add(1)));
 }

@@ -112,18 +112,14 @@ impl Model for PinJointModel {
     }
 
     fn check_real(&self, i: usize, x: f64) -> ModelResult<()> {
-        TABLE.check(i, x)?;
         // Beyond the asperity model's capacity the load is refused here, leaving the
         // instance and its outputs as they were.
-        match &self.evaluator {
-            Some(e) if TABLE.rows()[i].var.name == "load" => check_capacity(x, e.joint().capacity()),
-            _ => Ok(()),
-        }
+        TABLE.check_input(i, x, self.evaluator.as_ref().map(|e| e.joint().capacity()))
     }
 
     fn set_real(&mut self, i: usize, x: f64) {
-        TABLE.set(&mut self.v, i, x);
-        if TABLE.rows()[i].var.causality == Causality::Parameter {
+        // A parameter drops the evaluator (a new temperature input is seen at next use).
+        if TABLE.set(&mut self.v, i, x).causality == Causality::Parameter {
             self.evaluator = None;
         }
     }

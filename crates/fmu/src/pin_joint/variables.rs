@@ -15,7 +15,7 @@
 use super::zero_speed::DEFAULT_SPEED_BAND;
 use crate::declare::declare;
 use crate::fidelity::{self, FidelitySettings};
-use crate::table::{Row, Rule, Table};
+use crate::table::{Access, Row, Rule, Table};
 use fmi_layer::fmi2::variables::{Causality, Kind, UnitDef, Variable};
 use pinjoint::params::PARAMS;
 use pinjoint::record::{self, Value};
@@ -102,19 +102,9 @@ pub static UNITS: LazyLock<Vec<UnitDef>> = LazyLock::new(|| crate::units::used_b
 /// The outputs depend on these inputs (all but `mean_pressure` and `dissipated_energy`).
 const SPEED_LOAD: [&str; 3] = ["angular_velocity", "load", "temperature"];
 
-/// An input row at state position `slot`.
-#[allow(clippy::too_many_arguments)]
-fn input(
-    name: &str,
-    vr: u32,
-    unit: &'static str,
-    display: &'static str,
-    start: f64,
-    rule: Rule,
-    slot: usize,
-    (get, set): (fn(&Values) -> f64, fn(&mut Values, f64)),
-    d: &str,
-) -> Row<Values> {
+/// An input row at state position `slot`; `units`: its unit and display unit.
+fn input(name: &str, vr: u32, units: (&'static str, &'static str), (start, rule): (f64, Rule), slot: usize, (get, set): Access<Values>, d: &str) -> Row<Values> {
+    let (unit, display) = units;
     let mut v = declare(name, vr, Kind::Real, Causality::Input, Some(unit), Some(display), d);
     v.start = Some(start);
     Row::new(v, get, set, rule).at_slot(slot)
@@ -151,11 +141,11 @@ fn rows() -> Vec<Row<Values>> {
     let zero = Some(0.0);
     let share = (zero, Some(1.0));
     let mut rows = vec![
-        input("angle", 1, "rad", "deg", 0.0, crate::inputs::FINITE, p + 1, (|s| s.angle, |s, x| s.angle = x),
+        input("angle", 1, ("rad", "deg"), (0.0, crate::inputs::FINITE), p + 1, (|s| s.angle, |s, x| s.angle = x),
             "Angle of the pin relative to the bush. The friction law does not depend on position: no output uses it; it is kept in the FMU state for hosts that wire the full joint kinematics"),
-        input("angular_velocity", 2, "rad/s", "deg/s", 0.0, crate::inputs::FINITE, p + 2, (|s| s.omega, |s, x| s.omega = x),
+        input("angular_velocity", 2, ("rad/s", "deg/s"), (0.0, crate::inputs::FINITE), p + 2, (|s| s.omega, |s, x| s.omega = x),
             "Angular velocity omega of the pin relative to the bush (any finite value; sliding speed u = |omega| R)"),
-        input("load", 3, "N", "kN", DEFAULT_LOAD, crate::inputs::LOAD_RULE, p + 3, (|s| s.load, |s, x| s.load = x),
+        input("load", 3, ("N", "kN"), (DEFAULT_LOAD, crate::inputs::LOAD_RULE), p + 3, (|s| s.load, |s, x| s.load = x),
             "Radial load P_T on the joint: any finite value, its magnitude |P_T| is the load (a signed reaction component is accepted; the outputs at -P equal those at +P); at 0 the joint is unloaded and every output but dissipated_energy is 0"),
         Row::output(output("torque", 10, Some("N.m"), None, (None, None), &SPEED_LOAD,
             "Friction torque on the pin, opposite to the angular velocity: -sign(omega) mu R P_T (eq. 11); linear in omega inside the zero-velocity band"),
@@ -200,39 +190,14 @@ fn rows() -> Vec<Row<Values>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
 
     /// Every stored row round-trips through get/set and the state; every variable of the
     /// table is addressed by its own row (a new row needs nothing else).
     #[test]
     fn every_row_round_trips_get_set_and_the_state() {
-        let rows = TABLE.rows();
-        let mut v = Values::default();
-        for (i, row) in rows.iter().enumerate() {
-            assert_eq!(TABLE.get(&v, i).to_bits(), row.var.start.unwrap_or(0.0).to_bits(), "start of {}", row.var.name);
-        }
-        // A distinct valid value per stored row.
-        let distinct = |i: usize, row: &Row<Values>| match row.var.kind {
-            Kind::Enumeration(_) => 2.0,
-            _ => row.var.start.unwrap_or(0.0) * 1.25 + if row.var.name == "temperature" { 0.0 } else { i as f64 },
-        };
-        for &i in TABLE.stored() {
-            let x = distinct(i, &rows[i]);
-            TABLE.check(i, x).unwrap();
-            TABLE.set(&mut v, i, x);
-            assert_eq!(TABLE.get(&v, i), x, "{}", rows[i].var.name);
-        }
-        let mut w = ByteWriter::default();
-        TABLE.write(STATE_VERSION, &v, &mut w);
-        assert_eq!(w.buf.len(), 1 + 2 + 8 * TABLE.stored().len());
-        let mut back = Values::default();
-        let mut r = ByteReader::new(&w.buf);
-        TABLE.read("PinJoint", STATE_VERSION, &mut r, &mut back).unwrap();
-        r.finish().unwrap();
-        for &i in TABLE.stored() {
-            assert_eq!(TABLE.get(&back, i).to_bits(), TABLE.get(&v, i).to_bits(), "{}", rows[i].var.name);
-        }
+        crate::table::assert_round_trip(&TABLE, "PinJoint", STATE_VERSION);
         // Every settable variable and the energy are stored; nothing else is.
+        let rows = TABLE.rows();
         let settable: Vec<usize> = (0..rows.len()).filter(|&i| rows[i].var.causality != Causality::Output || rows[i].var.name == "dissipated_energy").collect();
         let mut stored = TABLE.stored().to_vec();
         stored.sort_unstable();
@@ -245,7 +210,7 @@ mod tests {
     fn the_state_order_is_that_of_version_4() {
         let names: Vec<&str> = TABLE.stored().iter().map(|&i| TABLE.rows()[i].var.name.as_str()).collect();
         let p = PARAMS.len();
-        assert_eq!(names[..p], PARAMS.iter().map(|s| s.name()).collect::<Vec<_>>()[..]);
+        assert_eq!(names[..p], PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect::<Vec<_>>()[..]);
         assert_eq!(
             names[p..],
             [

@@ -193,18 +193,13 @@ impl Model for RigModel {
     }
 
     fn check_real(&self, i: usize, x: f64) -> ModelResult<()> {
-        TABLE.check(i, x)?;
-        // Beyond the asperity model's capacity (pinjoint::Joint::capacity) the load is refused
-        // here, leaving the simulation as it was.
-        match &self.sim {
-            Some(sim) if TABLE.rows()[i].var.name == "load" => check_capacity(x, sim.joint().capacity()),
-            _ => Ok(()),
-        }
+        // Beyond the asperity model's capacity the load is refused here, leaving the
+        // simulation as it was.
+        TABLE.check_input(i, x, self.sim.as_ref().map(|s| s.joint().capacity()))
     }
 
     fn set_real(&mut self, i: usize, x: f64) {
-        TABLE.set(&mut self.v, i, x);
-        let var = &TABLE.rows()[i].var;
+        let var = TABLE.set(&mut self.v, i, x);
         // The temperature input is applied at the next refresh (rebuilding the friction model
         // and keeping the simulator's state); parameters drop the simulator.
         if var.causality == Causality::Parameter {
