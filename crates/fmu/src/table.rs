@@ -241,9 +241,13 @@ pub fn rejected(e: impl std::fmt::Display) -> ModelError {
 
 /// Test support: every stored row of a table takes a value of its own, keeps it through
 /// get/set and through the state's bytes.
+/// `stored` says which variables the state must hold.
 #[cfg(test)]
-pub(crate) fn assert_round_trip<S: Default>(table: &Table<S>, model: &str, version: u8) {
+pub(crate) fn assert_round_trip<S: Default>(table: &Table<S>, model: &str, version: u8, stored: fn(&Variable) -> bool) {
     let rows = table.rows();
+    let mut order = table.stored().to_vec();
+    order.sort_unstable();
+    assert_eq!(order, (0..rows.len()).filter(|&i| stored(&rows[i].var)).collect::<Vec<_>>(), "the stored variables");
     let mut v = S::default();
     for (i, row) in rows.iter().enumerate() {
         assert_eq!(table.get(&v, i).to_bits(), row.var.start.unwrap_or(0.0).to_bits(), "start of {}", row.var.name);

@@ -45,7 +45,7 @@ pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelRes
 
 /// A PinJoint instance: the values of its variables and the evaluator built from them; it
 /// implements the FMI layer's [`Model`].
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct PinJointModel {
     v: Values,
     /// Built from the parameters, the temperature input and the fidelity settings on first
@@ -59,7 +59,7 @@ pub struct PinJointModel {
 impl PinJointModel {
     /// An instance at the start values of every variable (no evaluator built yet).
     pub fn new() -> Self {
-        PinJointModel { v: Values::default(), evaluator: None, message: None }
+        Self::default()
     }
 
     fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
@@ -93,12 +93,6 @@ impl PinJointModel {
     /// The evaluator in use (after initialization).
     pub fn current_evaluator(&self) -> Option<&Evaluator> {
         self.evaluator.as_ref()
-    }
-}
-
-impl Default for PinJointModel {
-    fn default() -> Self {
-        Self::new()
     }
 }
 

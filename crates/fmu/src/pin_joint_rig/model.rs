@@ -49,7 +49,7 @@ fn is_fidelity_setting(name: &str) -> bool {
 
 /// A PinJointRig instance: the settings, the start time, the rig simulator and the last
 /// outputs; it implements the FMI layer's [`Model`].
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct RigModel {
     /// The settings and the outputs of the last sample.
     pub(super) v: Values,
@@ -68,13 +68,7 @@ pub struct RigModel {
 impl RigModel {
     /// An instance at the start values of every variable (no simulator built yet).
     pub fn new() -> Self {
-        RigModel {
-            v: Values::default(),
-            start_time: 0.0,
-            sim: None,
-            message: None,
-            fallback_logged: false,
-        }
+        Self::default()
     }
 
     /// A model with these settings and, if given, a simulator resumed from `state`; `reuse`
@@ -174,12 +168,6 @@ impl RigModel {
             return Err(e);
         }
         Ok(())
-    }
-}
-
-impl Default for RigModel {
-    fn default() -> Self {
-        Self::new()
     }
 }
 

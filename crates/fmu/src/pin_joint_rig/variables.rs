@@ -241,17 +241,10 @@ fn rows() -> Vec<Row<Values>> {
     rows
 }
 
+/// The state holds every input and parameter, in table order (a new row needs nothing else).
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every input and parameter round-trips through get/set and the state, in table
-    /// order; no output is stored (a new row needs nothing else).
-    #[test]
-    fn every_row_round_trips_get_set_and_the_state() {
-        crate::table::assert_round_trip(&TABLE, "PinJointRig", STATE_VERSION);
-        let rows = TABLE.rows();
-        let settable: Vec<usize> = (0..rows.len()).filter(|&i| rows[i].var.causality != Causality::Output).collect();
-        assert_eq!(TABLE.stored(), settable, "the state holds every setting in table order");
-    }
+#[test]
+fn every_row_round_trips_get_set_and_the_state() {
+    crate::table::assert_round_trip(&TABLE, "PinJointRig", STATE_VERSION, |v| v.causality != Causality::Output);
+    assert!(TABLE.stored().windows(2).all(|w| w[0] < w[1]));
 }
