@@ -139,3 +139,16 @@ pub trait Model {
     /// without changing the model.
     fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()>;
 }
+
+#[cfg(test)]
+mod tests {
+    use super::ModelError;
+
+    #[test]
+    fn invalid_values_name_role_quantity_short_value_and_unit() {
+        let e = ModelError::invalid("input", "load", 1e308, "N", "is too large");
+        assert_eq!(e.to_string(), "input load = 1e308 N is too large");
+        let e = ModelError::invalid("", "fidelity", 0.5, "", "is not a code");
+        assert_eq!(e.to_string(), "fidelity = 0.5 is not a code");
+    }
+}

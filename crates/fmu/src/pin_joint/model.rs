@@ -178,3 +178,35 @@ impl Model for PinJointModel {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::error::Error;
+
+    /// A parameter the library rejects: the host sees the library's message, and the
+    /// error carries the library's typed error as its source.
+    #[test]
+    fn a_rejected_parameter_carries_the_library_error() {
+        let mut m = PinJointModel::new();
+        m.set_real(TABLE.index("geometry.pin_radius").unwrap(), -0.028);
+        let e = m.exit_initialization(0.0).unwrap_err();
+        assert!(e.to_string().starts_with("parameter geometry.pin_radius = -0.028 m "), "{e}");
+        let source = e.source().and_then(|s| s.downcast_ref::<pinjoint::ParamError>());
+        assert!(matches!(source, Some(pinjoint::ParamError::OutOfRange { .. })), "{source:?}");
+    }
+
+    /// A state with another layout version is rejected by name, nothing changed.
+    #[test]
+    fn a_foreign_state_is_rejected() {
+        let mut m = PinJointModel::new();
+        let mut bytes = Vec::new();
+        m.serialize(&mut bytes);
+        bytes[0] = 9;
+        let e = m.deserialize(&bytes).unwrap_err();
+        assert!(matches!(e, ModelError::RejectedState(_)));
+        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 4");
+        bytes[0] = STATE_VERSION;
+        m.deserialize(&bytes).unwrap();
+    }
+}
