@@ -4,6 +4,12 @@
 //! benchmark baseline, `pinjoint-bench`), each plugged into the generic
 //! [`fmi_layer::fmi2`] layer. The registry below is passed to that layer from this
 //! root with [`fmi_layer::export_fmi2!`]; `fmi2Instantiate` finds a model in it by GUID.
+//!
+//! Each model is one declarative variable table ([`table::Table`]): a row declares the
+//! variable (XML), reads and stores it, checks it and places it in the FMU state. The rows
+//! both models share are written once: [`parameters`] (the parameter file),
+//! [`fidelity`] (fidelity, tolerance, envelope), [`inputs`] (load rule, temperature,
+//! capacity), [`units`].
 
 pub mod declare;
 pub mod doc_table;
