@@ -86,7 +86,8 @@ pub const POINT: [Column; 19] = {
     all
 };
 
-/// The column of [`POINT`] named `name`.
+/// The column of [`POINT`] named `name`, if the record has one (how `point` and the FMU
+/// outputs find their quantities in the record).
 pub fn column(name: &str) -> Option<&'static Column> {
     POINT.iter().find(|c| c.name == name)
 }
@@ -193,6 +194,8 @@ mod tests {
             assert_eq!(names, keys);
         }
         assert_eq!(NAMES[9], "regime");
+        assert_eq!(column("lambda_ratio").map(|c| c.unit), Some("1"));
+        assert!(column("power_loss").is_none());
         for (k, r) in REGIMES.iter().enumerate() {
             assert_eq!(usize::from(regime_code(*r)), k);
         }

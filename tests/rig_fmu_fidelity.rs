@@ -255,10 +255,7 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
 /// before the CRC, of known length (version, count, settings, start time, flag, length,
 /// 112-byte simulator state).
 fn model_part_offset(bytes: &[u8]) -> usize {
-    let settings = pinjoint_fmu::pin_joint_rig::variables::LAYOUT
-        .iter()
-        .filter(|v| !matches!(v, pinjoint_fmu::pin_joint_rig::variables::Var::Out(_)))
-        .count();
+    let settings = pinjoint_fmu::pin_joint_rig::variables::TABLE.stored().len();
     let len = 1 + 2 + 8 * settings + 8 + 1 + 2 + 112;
     bytes.len() - 4 - len
 }

@@ -403,7 +403,7 @@ pub enum StateFormatError {
 /// (what the model's `deserialize` returns when a [`crate::fmi2::bytes::ByteReader`] read fails).
 impl From<StateFormatError> for ModelError {
     fn from(e: StateFormatError) -> Self {
-        ModelError::from(e.to_string())
+        ModelError::RejectedState(e.to_string())
     }
 }
 
@@ -493,7 +493,7 @@ mod tests {
             ),
             (CallError::StatusKind { kind: 7, func: "fmi2GetStatus" }, "status kind 7 (not an fmi2StatusKind) is not available through fmi2GetStatus (this FMU steps synchronously)"),
             (CallError::StatusKind { kind: 0, func: "fmi2GetRealStatus" }, "fmi2DoStepStatus is not available through fmi2GetRealStatus (this FMU steps synchronously)"),
-            (CallError::StateRejected(ModelError::from("bad".to_owned())), "FMU state rejected: bad"),
+            (CallError::StateRejected(ModelError::RejectedState("bad".to_owned())), "FMU state rejected: bad"),
             (CallError::StateFormat(StateFormatError::Crc), "serialized FMU state is corrupted (CRC-32 mismatch)"),
         ];
         for (e, text) in cases {

@@ -4,13 +4,28 @@
 //! benchmark baseline, `pinjoint-bench`), each plugged into the generic
 //! [`fmi_layer::fmi2`] layer. The registry below is passed to that layer from this
 //! root with [`fmi_layer::export_fmi2!`]; `fmi2Instantiate` finds a model in it by GUID.
+//!
+//! Each model is one declarative variable table ([`table::Table`]): a row declares the
+//! variable (XML), reads and stores it, checks it and places it in the FMU state. The rows
+//! both models share are written once: [`parameters`] (the parameter file),
+//! [`fidelity`] (fidelity, tolerance, envelope), [`inputs`] (load rule, temperature,
+//! capacity), [`units`].
 
+pub mod declare;
+pub mod doc_table;
+pub mod extensions_doc;
+pub mod fidelity;
+pub mod inputs;
+pub mod parameters;
 pub mod pass_through;
 pub mod pin_joint;
 pub mod pin_joint_rig;
 pub mod platforms_doc;
+pub mod table;
+pub mod units;
 
-use fmi_layer::fmi2::variables::{Legal, ModelInfo};
+use fmi_layer::fmi2::model::Model;
+use fmi_layer::fmi2::variables::{Legal, ModelInfo, UnitDef, Variable};
 
 fmi_layer::export_fmi2!(crate::registry);
 fmi_layer::export_fmi3!(crate::registry);
@@ -54,27 +69,27 @@ pub fn registry() -> Vec<&'static ModelInfo> {
     vec![&*pin_joint::INFO, &*pin_joint_rig::INFO, &*pass_through::INFO]
 }
 
-/// The envelope parameters of both FMUs (`envelope.*`), with their units.
-pub const ENVELOPE_NAMES: [(&str, &str); 4] =
-    [("envelope.load_min", "N"), ("envelope.load_max", "N"), ("envelope.speed_min", "rad/s"), ("envelope.speed_max", "rad/s")];
-
-/// The envelope from the four `envelope.*` parameter values; an error names the parameter,
-/// its value and unit.
-pub fn envelope_from_parameters(values: [f64; 4]) -> Result<pinjoint::fidelity::Envelope, String> {
-    use fmi_layer::fmi2::logging::show;
-    for (k, (name, unit)) in ENVELOPE_NAMES.iter().enumerate() {
-        let x = values[k];
-        if !(x.is_finite() && x > 0.0) {
-            return Err(format!("parameter {name} = {} {unit} is invalid: it must be a finite number > 0 {unit}", show(x)));
-        }
+/// A model of this library (identifier = name, this crate's version, [`LEGAL`]):
+/// Co-Simulation only unless the caller sets `model_exchange`.
+pub fn model_info(
+    name: &'static str,
+    description: &'static str,
+    (variables, units): (Vec<Variable>, &'static [UnitDef]),
+    default_experiment: (f64, f64, f64),
+    create: fn() -> Box<dyn Model>,
+    documentation: fn() -> String,
+) -> ModelInfo {
+    ModelInfo {
+        model_name: name,
+        model_identifier: name,
+        description,
+        version: env!("CARGO_PKG_VERSION"),
+        units,
+        variables,
+        default_experiment,
+        create,
+        documentation,
+        model_exchange: false,
+        legal: LEGAL,
     }
-    for k in [0, 2] {
-        let ((lo_name, unit), (hi_name, _)) = (ENVELOPE_NAMES[k], ENVELOPE_NAMES[k + 1]);
-        let (lo, hi) = (values[k], values[k + 1]);
-        if lo >= hi {
-            return Err(format!("parameter {lo_name} = {} {unit} is invalid: it must be below {hi_name} = {} {unit}", show(lo), show(hi)));
-        }
-    }
-    let [a, b, c, d] = values;
-    pinjoint::fidelity::Envelope::new(a, b, c, d).map_err(|e| format!("parameter {e}"))
 }

@@ -66,7 +66,7 @@ impl Model for PassThrough {
         self.u[i % 2]
     }
     fn check_real(&self, i: usize, v: f64) -> ModelResult<()> {
-        if v.is_finite() { Ok(()) } else { Err(format!("input u{} = {v} is not a finite number", i + 1).into()) }
+        if v.is_finite() { Ok(()) } else { Err(fmi_layer::fmi2::model::ModelError::invalid("input", format!("u{}", i + 1), v, "", "is not a finite number")) }
     }
     fn set_real(&mut self, i: usize, v: f64) {
         self.u[i] = v;
@@ -88,8 +88,8 @@ impl Model for PassThrough {
     }
     fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()> {
         let mut r = ByteReader::new(bytes);
-        let u = [r.f64("u1")?, r.f64("u2")?];
-        r.finish()?;
+        let u = [r.f64("u1").map_err(crate::table::rejected)?, r.f64("u2").map_err(crate::table::rejected)?];
+        r.finish().map_err(crate::table::rejected)?;
         self.u = u;
         Ok(())
     }

@@ -6,35 +6,81 @@
 //! Variables are addressed by their index in the model's [`ModelInfo::variables`](crate::fmi2::variables::ModelInfo::variables)
 //! table (`super::variables::ModelInfo`), never by value reference.
 
+use std::error::Error;
 use std::fmt;
 
 /// Why a model refused a value, a state or a computation; the layer logs its
 /// [`Display`](fmt::Display) form and returns `fmi2Error` / `fmi3Error`.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug)]
 pub enum ModelError {
-    /// A message built by the model (transitional: being replaced by typed variants).
-    Message(String),
+    /// A value a variable cannot take, named with its causality, value (short round-trip
+    /// form) and unit: `"{role} {name} = {value} {unit} {rule}"`, e.g. `input load = NaN N is
+    /// invalid: it must be a finite number`.
+    InvalidValue {
+        /// `input`, `parameter`, or empty (a value read from a state).
+        role: &'static str,
+        /// The variable's name.
+        name: String,
+        /// The rejected value, in `unit`.
+        value: f64,
+        /// The value's unit as the message shows it (empty for none).
+        unit: &'static str,
+        /// What is wrong, as a predicate: `is not a finite number`, `is out of range: …`.
+        rule: String,
+    },
+    /// A rejected serialized state: the reason (wrong version or count, a value no instance
+    /// could hold, a truncated or over-long byte form).
+    RejectedState(String),
+    /// A computation of the model's library failed; `context` prefixes the library's own
+    /// message (e.g. `parameter `, `state: `, `fidelity table: `).
+    Failed {
+        /// What was being done, written before the source's message.
+        context: String,
+        /// The library's typed error.
+        source: Box<dyn Error + Send + Sync>,
+    },
+    /// A computed quantity that is not finite (an overflow): `what` names it with its value,
+    /// unit and the inputs it came from.
+    NotFinite(String),
+}
+
+impl ModelError {
+    /// A [`ModelError::InvalidValue`].
+    pub fn invalid(role: &'static str, name: impl Into<String>, value: f64, unit: &'static str, rule: impl Into<String>) -> Self {
+        ModelError::InvalidValue { role, name: name.into(), value, unit, rule: rule.into() }
+    }
+
+    /// A [`ModelError::Failed`] with `context` before the library error's message.
+    pub fn failed(context: impl Into<String>, source: impl Error + Send + Sync + 'static) -> Self {
+        ModelError::Failed { context: context.into(), source: Box::new(source) }
+    }
 }
 
 impl fmt::Display for ModelError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            ModelError::Message(m) => f.write_str(m),
+            ModelError::InvalidValue { role, name, value, unit, rule } => {
+                if !role.is_empty() {
+                    write!(f, "{role} ")?;
+                }
+                write!(f, "{name} = {}", super::logging::show(*value))?;
+                if !unit.is_empty() {
+                    write!(f, " {unit}")?;
+                }
+                write!(f, " {rule}")
+            }
+            ModelError::RejectedState(m) | ModelError::NotFinite(m) => f.write_str(m),
+            ModelError::Failed { context, source } => write!(f, "{context}{source}"),
         }
     }
 }
 
-impl std::error::Error for ModelError {}
-
-impl From<String> for ModelError {
-    fn from(m: String) -> Self {
-        ModelError::Message(m)
-    }
-}
-
-impl From<ModelError> for String {
-    fn from(e: ModelError) -> Self {
-        e.to_string()
+impl Error for ModelError {
+    fn source(&self) -> Option<&(dyn Error + 'static)> {
+        match self {
+            ModelError::Failed { source, .. } => Some(source.as_ref()),
+            _ => None,
+        }
     }
 }
 
@@ -86,4 +132,17 @@ pub trait Model {
     /// else (wrong version, wrong length, values the model could never hold)
     /// without changing the model.
     fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()>;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::ModelError;
+
+    #[test]
+    fn invalid_values_name_role_quantity_short_value_and_unit() {
+        let e = ModelError::invalid("input", "load", 1e308, "N", "is too large");
+        assert_eq!(e.to_string(), "input load = 1e308 N is too large");
+        let e = ModelError::invalid("", "fidelity", 0.5, "", "is not a code");
+        assert_eq!(e.to_string(), "fidelity = 0.5 is not a code");
+    }
 }

@@ -1,37 +1,12 @@
 //! `documentation/index.html` of the PinJoint FMU, generated from the same variable
 //! table as the modelDescription, with a table of values computed by the library.
 
-use super::variables::{FIRST_OUTPUT, FIRST_PARAM, TEMPERATURE};
 use super::zero_speed::DEFAULT_SPEED_BAND;
 use super::INFO;
-use fmi_layer::fmi2::variables::Variable;
-use fmi_layer::fmi2::xml::escape;
+use crate::doc_table::{head, rows, Style};
+use fmi_layer::fmi2::variables::Causality;
 use pinjoint::{Joint, Params};
 use std::fmt::Write;
-
-fn num(v: Option<f64>) -> String {
-    v.map(|x| format!("{x:e}").replace("e0", "")).unwrap_or_else(|| "&ndash;".into())
-}
-
-fn rows(vars: &[Variable]) -> String {
-    let mut s = String::new();
-    for v in vars {
-        writeln!(
-            s,
-            "<tr><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
-            escape(&v.name),
-            v.value_reference,
-            v.unit.unwrap_or("1"),
-            v.display_unit.unwrap_or(""),
-            num(v.start),
-            num(v.min),
-            num(v.max),
-            escape(&v.description)
-        )
-        .unwrap();
-    }
-    s
-}
 
 fn check_values() -> String {
     let j = Joint::new(&Params::default()).expect("defaults are valid");
@@ -56,39 +31,13 @@ fn check_values() -> String {
     s
 }
 
-/// The extensions beyond the paper (h_min, temperature, starved inlet), shared by both FMUs'
-/// documentation pages.
-pub const EXTENSIONS_HTML: &str = r#"<h2>Extensions beyond the paper (neutral or off by default)</h2>
-<ul>
-<li><b>Minimum film</b> (outputs <code>min_film_thickness</code>, <code>min_lambda_ratio</code>): eq. 21 names h<sub>min</sub> but the paper gives
-no relation for it; <code>film_thickness</code> and <code>lambda_ratio</code> stay the central film h<sub>c</sub>. h<sub>min</sub> = h<sub>c</sub>&middot;r with
-Pan &amp; Hamrock's (1989, ASME J. Tribol. 111, 246&ndash;251) line-contact ratio
-r = (1.714/2.922) W&prime;<sup>0.038</sup> U<sup>0.002</sup> G<sup>0.098</sup> (U on the mean velocity u/2), with eq. 13's substitution
-E&prime;&rarr;E&prime;/&gamma;<sub>1</sub>, P<sub>T</sub>&rarr;P<sub>T</sub>/&gamma;<sub>1</sub> (U&rarr;&gamma;<sub>1</sub>U, G&rarr;G/&gamma;<sub>1</sub>), capped at 1.
-Validity: the fits are for heavily loaded elastic&ndash;piezoviscous contacts (W&prime; of order 1e-5); this joint has W&prime; &asymp; 2e-8&ndash;2e-7,
-so h<sub>min</sub> is an extrapolation, and as the fluid share goes to 0 (speed &rarr; 0) r goes to 0: 0 at rest.</li>
-<li><b>Temperature</b> (input <code>temperature</code>, K, display degC; parameters <code>lubricant.reference_temperature</code>,
-<code>lubricant.roelands_temperature_index</code>): &eta;<sub>0</sub> and &alpha; of Table 3 hold at the reference temperature (default 293.15 K,
-the paper's room temperature, assumed). Roelands' temperature relation ln(&eta;<sub>0</sub>(T)/&eta;<sub>&infin;</sub>) = ln(&eta;<sub>0</sub>(T<sub>ref</sub>)/&eta;<sub>&infin;</sub>)&middot;f,
-f = [(135 + &theta;)/(135 + &theta;<sub>ref</sub>)]<sup>&minus;S<sub>0</sub></sup> (&theta; in &deg;C, &eta;<sub>&infin;</sub> = 6.31e-5 Pa&middot;s of eq. 5), and at fixed Roelands Z
-&alpha;(T) = &alpha;(T<sub>ref</sub>)&middot;f. Default S<sub>0</sub> = 1.262: Roelands' relation through an ISO VG 100 mineral oil
-(100 mm&sup2;/s at 40 &deg;C, 11.1 mm&sup2;/s at 100 &deg;C): a class-typical base oil, not the paper's grease. At T = T<sub>ref</sub> the outputs are
-exactly the paper model's. With the defaults &eta;<sub>0</sub> is 12.25 Pa&middot;s at &minus;55 &deg;C and 2.59 mPa&middot;s at +70 &deg;C (12.45 mPa&middot;s at 20 &deg;C).
-Below about 0 &deg;C this is an extrapolation of the relation; &tau;<sub>L0</sub>, &beta;<sub>0</sub> and &mu;<sub>c</sub> do not change with temperature here.
-The parameter <code>lubricant.temperature</code> exists because every parameter-file key is a parameter; in the FMU the input sets the temperature.</li>
-<li><b>Starved inlet</b> (parameters <code>starvation.inlet_layer_inverse</code> = 1/h<sub>oil</sub> in 1/m, default 0 = fully flooded, the paper's model;
-<code>starvation.exponent</code> &gamma;<sub>s</sub>, default 2.8): the film of eq. 13 is replaced by h<sup>&minus;&gamma;<sub>s</sub></sup> = h<sub>13</sub><sup>&minus;&gamma;<sub>s</sub></sup> + h<sub>oil</sub><sup>&minus;&gamma;<sub>s</sub></sup>,
-Chevalier et al.'s (1998, ASME J. Tribol. 120, 126&ndash;133) starvation relation h/h<sub>ff</sub> = R/(1 + R<sup>&gamma;<sub>s</sub></sup>)<sup>1/&gamma;<sub>s</sub></sup>, R = h<sub>oil</sub>/h<sub>ff</sub>,
-inside the load-sharing solve. A phenomenological stand-in for the grease the stroke squeezes out (the paper, section 5); fit it to
-measurements (<code>pinjoint calibrate</code> can fit <code>starvation.inlet_layer_inverse</code>).</li>
-</ul>
-"#;
-
-const HEAD: &str = "<tr><th>name</th><th>value reference</th><th>unit</th><th>display unit</th><th>start</th><th>min</th><th>max</th><th>description</th></tr>";
-
 /// The HTML page.
 pub fn index_html() -> String {
     let v = &INFO.variables;
+    let (guid, version, requirements) = (INFO.guid(), INFO.version, crate::requirements_html());
+    let (platforms, extensions) = (crate::platforms_doc::PLATFORMS_HTML, crate::extensions_doc::EXTENSIONS_HTML);
+    let [inputs, outputs, params] = [Causality::Input, Causality::Output, Causality::Parameter].map(|c| rows(v, c, Style::Plain));
+    let header = head(Style::Plain);
     let j = Joint::new(&Params::default()).expect("defaults are valid");
     format!(
         r#"<!DOCTYPE html>
@@ -154,10 +103,10 @@ defined behaviour of every bad input.</li>
 <table><tr><th>load (kN)</th><th>&omega; (rad/s)</th><th>&mu;</th><th>T (N&middot;m)</th><th>h<sub>c</sub> (&micro;m)</th><th>&lambda;</th><th>1/&gamma;<sub>1</sub></th><th>p<sub>m</sub> (MPa)</th></tr>
 {checks}</table>
 
-<h2>Inputs</h2><table>{HEAD}{inputs}</table>
-<h2>Outputs</h2><table>{HEAD}{outputs}</table>
+<h2>Inputs</h2><table>{header}{inputs}</table>
+<h2>Outputs</h2><table>{header}{outputs}</table>
 <h2>Parameters</h2><p>Named <code>section.key</code> as in the parameter file; defaults from Tables 1&ndash;3 of the paper.
-All have variability <em>fixed</em>: set them before fmi2ExitInitializationMode.</p><table>{HEAD}{params}</table>
+All have variability <em>fixed</em>: set them before fmi2ExitInitializationMode.</p><table>{header}{params}</table>
 
 <h2>Model Exchange</h2>
 <p>The friction law is a stateless map of the inputs, so as Model Exchange the FMU has <b>no continuous states</b> (nx = 0) and
@@ -196,19 +145,11 @@ debug logging off.</li>
 
 {platforms}</body></html>
 "#,
-        guid = INFO.guid(),
-        platforms = crate::platforms_doc::PLATFORMS_HTML,
-        version = INFO.version,
-        requirements = crate::requirements_html(),
         r_red = j.reduced_radius(),
         e_eff = j.effective_modulus() / 1e9,
         tb20 = j.boundary_torque(20e3),
         tb60 = j.boundary_torque(60e3),
         band = DEFAULT_SPEED_BAND,
         checks = check_values(),
-        inputs = rows(&v[..FIRST_OUTPUT]) + &rows(&v[TEMPERATURE..]),
-        outputs = rows(&v[FIRST_OUTPUT..FIRST_PARAM]),
-        params = rows(&v[FIRST_PARAM..TEMPERATURE]),
-        extensions = EXTENSIONS_HTML,
     )
 }

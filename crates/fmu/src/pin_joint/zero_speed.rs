@@ -43,14 +43,12 @@ pub fn friction_torque(joint: &Joint, load: f64, omega: f64, band: f64, at_omega
 }
 
 /// Check ω_b; the message names the parameter, its value and unit.
-pub fn check_band(band: f64) -> Result<(), String> {
+pub fn check_band(band: f64) -> fmi_layer::fmi2::model::ModelResult<()> {
     if band.is_finite() && band >= 0.0 {
         Ok(())
     } else {
-        Err(format!(
-            "parameter zero_velocity.speed_band = {} rad/s is out of range: it must be a finite number >= 0",
-            fmi_layer::fmi2::logging::show(band)
-        ))
+        let rule = "is out of range: it must be a finite number >= 0";
+        Err(fmi_layer::fmi2::model::ModelError::invalid("parameter", "zero_velocity.speed_band", band, "rad/s", rule))
     }
 }
 
@@ -97,7 +95,7 @@ mod tests {
     #[test]
     fn band_check_names_the_parameter() {
         assert!(check_band(0.0).is_ok());
-        let e = check_band(-1.0).unwrap_err();
+        let e = check_band(-1.0).unwrap_err().to_string();
         assert!(e.contains("zero_velocity.speed_band = -1 rad/s"), "{e}");
         assert!(check_band(f64::NAN).is_err());
     }

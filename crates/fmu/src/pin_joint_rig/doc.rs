@@ -1,46 +1,11 @@
 //! `documentation/index.html` of the PinJointRig FMU, generated from the same
 //! variable table as the modelDescription, with numbers computed by the library.
 
-use super::variables::{Var, LAYOUT};
 use super::INFO;
-use fmi_layer::fmi2::variables::{Kind, Variable};
-use fmi_layer::fmi2::xml::escape;
+use crate::doc_table::{head, rows, Style};
+use fmi_layer::fmi2::variables::Causality;
 use pinjoint::rig::RigParams;
 use pinjoint::{Joint, Params};
-use std::fmt::Write;
-
-fn num(v: &Variable, x: Option<f64>) -> String {
-    match (v.kind, x) {
-        (_, None) => "&ndash;".into(),
-        (Kind::Boolean, Some(x)) => (x != 0.0).to_string(),
-        (Kind::Integer, Some(x)) => format!("{}", x as i64),
-        (Kind::Enumeration(t), Some(x)) => format!("{} ({})", x as i64, t.item(x as i64).unwrap_or("?")),
-        (Kind::Real, Some(x)) => format!("{x:e}").replace("e0", ""),
-    }
-}
-
-fn rows(pick: impl Fn(Var) -> bool) -> String {
-    let mut s = String::new();
-    for (v, _) in INFO.variables.iter().zip(LAYOUT.iter()).filter(|(_, l)| pick(**l)) {
-        writeln!(
-            s,
-            "<tr><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
-            escape(&v.name),
-            v.value_reference,
-            v.kind.as_str(),
-            v.unit.unwrap_or(if v.kind == Kind::Real { "1" } else { "" }),
-            v.display_unit.unwrap_or(""),
-            num(v, v.start),
-            num(v, v.min),
-            num(v, v.max),
-            escape(&v.description)
-        )
-        .unwrap();
-    }
-    s
-}
-
-const HEAD: &str = "<tr><th>name</th><th>value reference</th><th>type</th><th>unit</th><th>display unit</th><th>start</th><th>min</th><th>max</th><th>description</th></tr>";
 
 /// The defaults' reasoning, as written in [`pinjoint::rig::params`] (one item per constant).
 const REASONING: &str = r#"<ul>
@@ -73,6 +38,11 @@ RK4 step 1e-4 s, events located to 1e-10 s, internal segments of 0.05 s.</li>
 pub fn index_html() -> String {
     let j = Joint::new(&Params::default()).expect("defaults are valid");
     let r = RigParams::default();
+    let v = &INFO.variables;
+    let (guid, version, requirements) = (INFO.guid(), INFO.version, crate::requirements_html());
+    let (platforms, extensions) = (crate::platforms_doc::PLATFORMS_HTML, crate::extensions_doc::EXTENSIONS_HTML);
+    let [inputs, outputs, params] = [Causality::Input, Causality::Output, Causality::Parameter].map(|c| rows(v, c, Style::Typed));
+    let header = head(Style::Typed);
     format!(
         r#"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>PinJointRig FMU</title>
@@ -163,13 +133,13 @@ unit; a code out of range already by fmi2SetInteger.</li>
 </ul>
 
 {extensions}
-<h2>Inputs</h2><table>{HEAD}{inputs}</table>
-<h2>Outputs</h2><table>{HEAD}{outputs}</table>
+<h2>Inputs</h2><table>{header}{inputs}</table>
+<h2>Outputs</h2><table>{header}{outputs}</table>
 <h2>Parameters</h2>
 <p>The <code>[rig]</code> section of the parameter file maps to <code>frequency</code>, <code>amplitude</code> (stroke), the <code>load</code>
 input, and <code>rig.&lt;key&gt;</code> for every other key (<code>formulation</code> and <code>method</code> as Integer codes); the model's
 sections are <code>section.key</code> as in the PinJoint FMU (Tables 1&ndash;3 of the paper). All have variability <em>fixed</em>.</p>
-<table>{HEAD}{params}</table>
+<table>{header}{params}</table>
 
 <h2>FMI notes</h2>
 <ul>
@@ -184,10 +154,6 @@ former Integer parameters, set through fmi2SetInteger / fmi3SetInt64); everythin
 
 {platforms}</body></html>
 "#,
-        guid = INFO.guid(),
-        platforms = crate::platforms_doc::PLATFORMS_HTML,
-        version = INFO.version,
-        requirements = crate::requirements_html(),
         tb20 = r.breakaway_factor * j.boundary_torque(20e3),
         tb60 = r.breakaway_factor * j.boundary_torque(60e3),
         reasoning = REASONING,
@@ -196,22 +162,20 @@ former Integer parameters, set through fmi2SetInteger / fmi3SetInt64); everythin
         freq = r.frequency,
         load = r.load,
         lag = (j.boundary_torque(20e3) / r.position_gain).to_degrees(),
-        inputs = rows(|v| matches!(v, Var::Load | Var::CommandAngle | Var::Temperature)),
-        outputs = rows(|v| matches!(v, Var::Out(_))),
-        params = rows(|v| !matches!(v, Var::Load | Var::CommandAngle | Var::Temperature | Var::Out(_))),
-        extensions = crate::pin_joint::doc::EXTENSIONS_HTML,
     )
 }
 
 #[cfg(test)]
 mod tests {
+    use fmi_layer::fmi2::variables::Causality;
+
     #[test]
     fn every_variable_and_output_is_documented() {
         let html = super::index_html();
         for v in &super::INFO.variables {
             assert!(html.contains(&format!("<code>{}</code>", v.name)), "{}", v.name);
         }
-        assert_eq!(crate::pin_joint_rig::variables::Output::ALL.len(), 14);
+        assert_eq!(super::INFO.variables.iter().filter(|v| v.causality == Causality::Output).count(), 14);
         assert!(html.contains("Pan &amp; Hamrock") && html.contains("Roelands' temperature relation") && html.contains("Chevalier"));
         assert!(html.contains("Routh") && html.contains("67.2 N&middot;m at 20 kN"), "breakaway torque from the library");
     }

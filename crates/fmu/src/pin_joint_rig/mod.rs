@@ -15,20 +15,17 @@ use fmi_layer::fmi2::variables::ModelInfo;
 use std::sync::LazyLock;
 
 /// The PinJointRig model's description for the registry: its variable table
-/// ([`variables::table`]), units, default experiment (0 to 3 s, step 1 ms), documentation
+/// ([`variables::TABLE`]), units, default experiment (0 to 3 s, step 1 ms), documentation
 /// page and constructor; Co-Simulation only.
-pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
-    model_name: "PinJointRig",
-    model_identifier: "PinJointRig",
-    description: "Landing-gear pin joint on the paper's torsion-actuator rig: a servo-hydraulic actuator in angle control \
-                  swings the pin (sine strokes or a command input) against the mixed-lubrication friction torque, \
-                  with stick and breakaway at reversals; the recorded torque is what the rig's transducer reads",
-    version: env!("CARGO_PKG_VERSION"),
-    units: variables::UNITS.as_slice(),
-    variables: variables::table(),
-    default_experiment: (0.0, 3.0, 1e-3),
-    create: || Box::new(model::RigModel::new()),
-    documentation: doc::index_html,
-    model_exchange: false,
-    legal: crate::LEGAL,
+pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| {
+    crate::model_info(
+        "PinJointRig",
+        "Landing-gear pin joint on the paper's torsion-actuator rig: a servo-hydraulic actuator in angle control \
+         swings the pin (sine strokes or a command input) against the mixed-lubrication friction torque, \
+         with stick and breakaway at reversals; the recorded torque is what the rig's transducer reads",
+        (variables::table(), &variables::UNITS),
+        (0.0, 3.0, 1e-3),
+        || Box::new(model::RigModel::new()),
+        doc::index_html,
+    )
 });

@@ -1,0 +1,35 @@
+//! The inputs both FMUs share: the `load` rule, the `temperature` input and the check of a
+//! load against the joint's asperity capacity.
+
+use crate::declare::declare;
+use crate::table::{Row, Rule};
+use fmi_layer::fmi2::logging::show;
+use fmi_layer::fmi2::model::{ModelError, ModelResult};
+use fmi_layer::fmi2::variables::{Causality, Kind};
+use pinjoint::params::{DEFAULT_TEMPERATURE, MAX_TEMPERATURE, MIN_TEMPERATURE};
+
+/// The rule of the `load` input (N): any finite number, its magnitude the load.
+pub const LOAD_RULE: Rule = Rule::Finite("is invalid: it must be a finite number (a negative value is taken as its magnitude)");
+
+/// The rule of an angle or speed input: any finite number.
+pub const FINITE: Rule = Rule::Finite("is not a finite number");
+
+/// The `temperature` input (K, display degC) at value reference `vr`: the lubricant
+/// temperature, in (138.15, 673.15] K, start 293.15 K; `description` is the model's.
+pub fn temperature<S: 'static>(vr: u32, description: &str, get: fn(&S) -> f64, set: fn(&mut S, f64)) -> Row<S> {
+    let mut v = declare("temperature", vr, Kind::Real, Causality::Input, Some("K"), Some("degC"), description);
+    v.start = Some(DEFAULT_TEMPERATURE);
+    v.min = Some(MIN_TEMPERATURE);
+    v.max = Some(MAX_TEMPERATURE);
+    Row::new(v, get, set, Rule::OpenClosed(MIN_TEMPERATURE, MAX_TEMPERATURE))
+}
+
+/// A load at or beyond the joint's asperity capacity ([`pinjoint::Joint::capacity`]) is an
+/// error naming both.
+pub fn check_capacity(load: f64, capacity: f64) -> ModelResult<()> {
+    if load.abs() >= capacity {
+        let rule = format!("is beyond the asperity model's capacity of {} N for these parameters", show(capacity));
+        return Err(ModelError::invalid("input", "load", load, "N", rule));
+    }
+    Ok(())
+}
