@@ -4,50 +4,11 @@
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::collections::BTreeSet;
 use std::f64::consts::PI;
-use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-struct Out {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-fn run_with(args: &[&str], stdin: Option<&str>) -> Out {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    {
-        let mut input = child.stdin.take().unwrap();
-        input.write_all(stdin.unwrap_or("").as_bytes()).unwrap();
-    }
-    let o = child.wait_with_output().unwrap();
-    Out {
-        code: o.status.code().expect("exited, not killed by a signal (no panic abort)"),
-        stdout: String::from_utf8(o.stdout).unwrap(),
-        stderr: String::from_utf8(o.stderr).unwrap(),
-    }
-}
-
-fn run(args: &[&str]) -> Out {
-    run_with(args, None)
-}
-
-/// Runs and expects failure with exit code `code` and every `needles` in standard error.
-fn fails(args: &[&str], stdin: Option<&str>, code: i32, needles: &[&str]) -> Out {
-    let o = run_with(args, stdin);
-    assert_eq!(o.code, code, "{args:?}: stdout {} stderr {}", o.stdout, o.stderr);
-    for n in needles {
-        assert!(o.stderr.contains(n), "{args:?}: stderr lacks {n:?}:\n{}", o.stderr);
-    }
-    assert!(!o.stderr.contains("panicked"), "{}", o.stderr);
-    o
-}
+mod cli_support;
+use cli_support::{fails, run, run_with};
 
 fn joint() -> Joint {
     Joint::new(&Params::default()).unwrap()
@@ -72,18 +33,19 @@ const RESULT_COLUMNS: [&str; 12] = [
     "min_lambda_ratio",
 ];
 
-/// The result columns of a point, as the library computes them.
-fn lib_values(op: &OperatingPoint) -> [f64; 9] {
+/// The numeric result columns of a point (the first nine of `RESULT_COLUMNS`), each with
+/// the library's value.
+fn lib_values(op: &OperatingPoint) -> [(&'static str, f64); 9] {
     [
-        op.friction_coefficient,
-        op.torque,
-        op.film_thickness,
-        op.lambda_ratio,
-        op.fluid_load_fraction,
-        op.asperity_load_fraction,
-        op.mean_pressure,
-        op.contact_half_width,
-        op.sommerfeld_number,
+        ("friction_coefficient", op.friction_coefficient),
+        ("torque", op.torque),
+        ("film_thickness", op.film_thickness),
+        ("lambda_ratio", op.lambda_ratio),
+        ("fluid_load_fraction", op.fluid_load_fraction),
+        ("asperity_load_fraction", op.asperity_load_fraction),
+        ("mean_pressure", op.mean_pressure),
+        ("contact_half_width", op.contact_half_width),
+        ("sommerfeld_number", op.sommerfeld_number),
     ]
 }
 
@@ -187,20 +149,8 @@ fn close(a: f64, b: f64) -> bool {
 #[test]
 fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
     let m = point_json(&["point", "--load", "20000", "--speed", "0.2", "--json"]);
-    let required = [
-        "load",
-        "speed",
-        "friction_coefficient",
-        "torque",
-        "film_thickness",
-        "lambda_ratio",
-        "fluid_load_fraction",
-        "asperity_load_fraction",
-        "mean_pressure",
-        "contact_half_width",
-        "sommerfeld_number",
-        "regime",
-    ];
+    // load, speed, then the result columns up to and with regime.
+    let required: Vec<&str> = ["load", "speed"].iter().chain(&RESULT_COLUMNS[..10]).copied().collect();
     let extras = [
         "sliding_speed",
         "peak_pressure",
@@ -221,7 +171,7 @@ fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
     assert_eq!(num(&m, "load"), 20000.0);
     assert_eq!(num(&m, "speed"), 0.2);
     assert_eq!(m["regime"], op.regime.as_str());
-    for (k, v) in RESULT_COLUMNS.iter().zip(lib_values(&op)) {
+    for (k, v) in lib_values(&op) {
         assert!(close(num(&m, k), v), "{k}: {} vs {v}", num(&m, k));
     }
     assert!(close(num(&m, "peak_pressure"), op.peak_pressure));
@@ -314,9 +264,10 @@ fn check_sweep_output(text: &str, points: &[(f64, f64)], joint: &Joint) {
         assert_eq!(row[1].parse::<f64>().unwrap().to_bits(), p.to_bits());
         assert_eq!(row[2].parse::<f64>().unwrap().to_bits(), w.to_bits());
         let op = joint.evaluate(p, w).unwrap();
-        for (k, v) in lib_values(&op).iter().enumerate() {
+        for (k, (name, v)) in lib_values(&op).iter().enumerate() {
+            assert_eq!(h[3 + k], *name);
             let got: f64 = row[3 + k].parse().unwrap();
-            assert_eq!(got.to_bits(), v.to_bits(), "row {i} column {}: {got} vs {v}", RESULT_COLUMNS[k]);
+            assert_eq!(got.to_bits(), v.to_bits(), "row {i} column {name}: {got} vs {v}");
         }
         assert_eq!(row[12], op.regime.as_str());
         regimes.insert(row[12].clone());

@@ -2,75 +2,17 @@
 //! private files or the input itself; inputs that panicked or hung before. Every run has a
 //! time limit and must exit 0, 1 or 2 (never 101, never a signal).
 
-use std::io::Read;
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
 use std::path::Path;
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::process::Command;
+use std::time::Duration;
 
-struct Out {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
+mod cli_support;
+use cli_support::{run, run_limited, s, Out};
 
-/// Run the binary with a time limit (killed and failed beyond it).
-fn run_limited(args: &[&str], limit: Duration) -> Out {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
-        .args(args)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    let (mut so, mut se) = (child.stdout.take().unwrap(), child.stderr.take().unwrap());
-    let ho = std::thread::spawn(move || {
-        let mut s = String::new();
-        so.read_to_string(&mut s).ok();
-        s
-    });
-    let he = std::thread::spawn(move || {
-        let mut s = String::new();
-        se.read_to_string(&mut s).ok();
-        s
-    });
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().unwrap() {
-            break s;
-        }
-        if start.elapsed() > limit {
-            child.kill().ok();
-            child.wait().ok();
-            panic!("{args:?} ran longer than {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let out = Out {
-        code: status.code().unwrap_or_else(|| panic!("{args:?} killed by a signal")),
-        stdout: ho.join().unwrap(),
-        stderr: he.join().unwrap(),
-    };
-    assert!(!out.stderr.contains("panicked"), "{args:?}: {}", out.stderr);
-    assert_ne!(out.code, 101, "{args:?}: {}", out.stderr);
-    out
-}
-
-fn run(args: &[&str]) -> Out {
-    run_limited(args, Duration::from_secs(120))
-}
-
+/// Runs and expects failure (exit code 1) with every `needles` in standard error.
 fn fails(args: &[&str], needles: &[&str]) -> Out {
-    let o = run(args);
-    assert_eq!(o.code, 1, "{args:?}: stdout {} stderr {}", o.stdout, o.stderr);
-    for n in needles {
-        assert!(o.stderr.contains(n), "{args:?}: stderr lacks {n:?}:\n{}", o.stderr);
-    }
-    o
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
+    cli_support::fails(args, None, 1, needles)
 }
 
 const INPUT: &str = "# my precious comments\nload,speed\n20000,0.5\n5000,-1\n";
@@ -289,7 +231,7 @@ fn rig_parameters_that_hung_or_aborted_end_in_bounded_time() {
         let p = d.path().join(name);
         std::fs::write(&p, text).unwrap();
         let args = ["cycle", "--cycles", "1", "--frequency", f, "--params", s(&p), "--output", s(d.path())];
-        let o = run_limited(&args, Duration::from_secs(150));
+        let o = run_limited(&args, None, Duration::from_secs(150));
         assert!(o.code == 0 || o.code == 1, "{name}: {}", o.stderr);
     }
 }
