@@ -11,9 +11,7 @@ use fmi_layer::fmi2::types::*;
 use std::ffi::CStr;
 use std::ptr::{null, null_mut};
 
-const OK: i32 = 0;
 const WARNING: i32 = 1;
-const ERROR: i32 = 3;
 
 #[test]
 fn version_and_platform() {

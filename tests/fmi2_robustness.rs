@@ -7,8 +7,6 @@ use fmi_layer::fmi2::api::cosim::*;
 use fmi_layer::fmi2::api::force_panic_in;
 use fmi_layer::fmi2::types::*;
 
-const OK: i32 = 0;
-const ERROR: i32 = 3;
 const FATAL: i32 = 4;
 
 #[test]
@@ -80,8 +78,7 @@ fn many_instantiate_step_free_cycles() {
     for k in 0..200 {
         let c = h.ready(&[("angular_velocity", 0.1 * f64::from(k))]);
         assert_eq!(fmi2DoStep(c, 0.0, 0.01, 0), OK);
-        let mut s: Fmi2FmuState = std::ptr::null_mut();
-        assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+        let mut s = get_state(c);
         assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
         unsafe { fmi2FreeInstance(c) };
     }

@@ -8,8 +8,6 @@ use fmi_layer::fmi2::api::cosim::*;
 use pinjoint::{Joint, Params};
 use std::ptr::{null, null_mut};
 
-const OK: i32 = 0;
-const ERROR: i32 = 3;
 
 #[test]
 fn null_arrays_unknown_references_and_wrong_types() {
