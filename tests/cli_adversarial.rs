@@ -3,7 +3,7 @@
 //! time limit and must exit 0, 1 or 2 (never 101, never a signal).
 
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Duration;
 
@@ -17,6 +17,14 @@ fn fails(args: &[&str], needles: &[&str]) -> Out {
 
 const INPUT: &str = "# my precious comments\nload,speed\n20000,0.5\n5000,-1\n";
 
+/// A temporary directory holding `in.csv` = [`INPUT`], and that file's path.
+fn input_dir() -> (tempfile::TempDir, PathBuf) {
+    let d = tempfile::tempdir().unwrap();
+    let inp = d.path().join("in.csv");
+    std::fs::write(&inp, INPUT).unwrap();
+    (d, inp)
+}
+
 fn sweep_to(input: &Path, output: &str) -> Out {
     run(&["sweep", "--input", s(input), "--output", output])
 }
@@ -25,9 +33,7 @@ fn sweep_to(input: &Path, output: &str) -> Out {
 
 #[test]
 fn output_equal_to_the_input_is_refused_before_anything_is_read_or_written() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (d, inp) = input_dir();
     // Same path, another spelling, a hard link, a symlink: all the same inode.
     let link = d.path().join("hard.csv");
     std::fs::hard_link(&inp, &link).unwrap();
@@ -70,9 +76,7 @@ fn output_equal_to_the_input_is_refused_before_anything_is_read_or_written() {
 
 #[test]
 fn a_private_file_keeps_its_permissions_and_a_symlink_stays_a_link() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (d, inp) = input_dir();
     let private = d.path().join("private.csv");
     std::fs::write(&private, "old").unwrap();
     std::fs::set_permissions(&private, std::fs::Permissions::from_mode(0o600)).unwrap();
@@ -103,9 +107,7 @@ fn a_private_file_keeps_its_permissions_and_a_symlink_stays_a_link() {
 
 #[test]
 fn a_fifo_is_written_in_place_streaming() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (d, inp) = input_dir();
     let fifo = d.path().join("fifo");
     let ok = Command::new("mkfifo").arg(&fifo).status().unwrap().success();
     assert!(ok, "mkfifo");
@@ -120,9 +122,7 @@ fn a_fifo_is_written_in_place_streaming() {
 
 #[test]
 fn dev_null_stays_a_character_device() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (_d, inp) = input_dir();
     let o = sweep_to(&inp, "/dev/null");
     assert_eq!(o.code, 0, "{}", o.stderr);
     let m = std::fs::symlink_metadata("/dev/null").unwrap();
