@@ -11,8 +11,7 @@ const FATAL: i32 = 4;
 
 #[test]
 fn a_panic_inside_a_call_returns_fatal_and_is_logged() {
-    let h = Host::new();
-    let c = h.ready(&[]);
+    let (h, c) = ready_pin_joint();
     force_panic_in("fmi2DoStep");
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), FATAL);
     let m = h.messages().into_iter().last().unwrap();

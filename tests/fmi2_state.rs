@@ -23,6 +23,14 @@ fn drive(c: Fmi2Component, from: usize, to: usize) -> Vec<u64> {
     out
 }
 
+/// A default PinJoint host and instance driven for `steps` steps, and its state there.
+fn driven(steps: usize) -> (Host, Fmi2Component, Fmi2FmuState) {
+    let (h, c) = ready_pin_joint();
+    drive(c, 0, steps);
+    let s = get_state(c);
+    (h, c, s)
+}
+
 #[test]
 fn get_set_round_trip_is_bit_exact_after_reversals() {
     let h = Host::new();
@@ -72,10 +80,7 @@ fn serialize_round_trip_across_instances_is_bit_exact() {
 
 #[test]
 fn truncated_corrupted_and_wrong_version_states_are_rejected() {
-    let h = Host::new();
-    let c = h.ready(&[]);
-    drive(c, 0, 100);
-    let mut s = get_state(c);
+    let (h, c, mut s) = driven(100);
     let bytes = serialize(c, s);
     let before = all_outputs(c);
 
@@ -140,10 +145,7 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
 
 #[test]
 fn set_state_restores_the_life_cycle_state_and_recovers_from_error() {
-    let h = Host::new();
-    let c = h.ready(&[]);
-    drive(c, 0, 10);
-    let mut s = get_state(c);
+    let (_h, c, mut s) = driven(10);
     // Provoke the error state with a step whose dissipated energy overflows.
     assert_eq!(set(c, "load", 5e8), OK);
     assert_eq!(set(c, "angular_velocity", 1e6), OK);

@@ -94,8 +94,7 @@ fn regularised_and_rk4_states_round_trip_too() {
 
 #[test]
 fn damaged_and_foreign_states_are_rejected() {
-    let h = new_host();
-    let c = ready(&h, &[]);
+    let (h, c) = ready_rig();
     drive(&h, c, 0.0, 20);
     let bytes = serialize(c, get_state(c));
     let n = bytes.len();

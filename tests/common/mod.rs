@@ -247,6 +247,13 @@ fn pin_joint() -> &'static ModelInfo {
     &pinjoint_fmu::pin_joint::INFO
 }
 
+/// A PinJoint host and an instance of it with the default parameters, initialized at t = 0.
+pub fn ready_pin_joint() -> (Host, Fmi2Component) {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    (h, c)
+}
+
 /// PinJoint's GUID.
 pub fn guid() -> String {
     pin_joint().guid()

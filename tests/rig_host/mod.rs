@@ -83,3 +83,10 @@ pub fn step(h: &Host, c: Fmi2Component, t: f64, t_next: f64) -> Vec<f64> {
 pub fn new_host() -> Host {
     Host::for_model(rig())
 }
+
+/// A PinJointRig host and an instance of it with the default parameters, initialized at t = 0.
+pub fn ready_rig() -> (Host, Fmi2Component) {
+    let h = new_host();
+    let c = h.ready(&[]);
+    (h, c)
+}
