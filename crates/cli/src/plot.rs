@@ -356,8 +356,11 @@ where
         .axis_desc_style((FONT, 15))
 }
 
+/// A chart drawn on an [`Area`] over the coordinates of `X` and `Y`.
+type Plane<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<<X as AsRangedCoord>::CoordDescType, <Y as AsRangedCoord>::CoordDescType>>;
+
 /// A chart with a title on `area`, in the house layout (margin, label areas).
-fn titled_chart<'a, 'b, X: PlotAxis, Y: PlotAxis>(area: &'a Area<'b>, title: &str, x: X, y: Y) -> Result<ChartContext<'a, SVGBackend<'b>, Cartesian2d<X::CoordDescType, Y::CoordDescType>>, PlotError> {
+fn titled_chart<'a, 'b, X: PlotAxis, Y: PlotAxis>(area: &'a Area<'b>, title: &str, x: X, y: Y) -> Result<Plane<'a, 'b, X, Y>, PlotError> {
     ChartBuilder::on(area)
         .caption(title, (FONT, 18))
         .margin(12)
