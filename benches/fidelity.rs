@@ -8,7 +8,6 @@
 //! those points and on 20 000 random points of the envelope. Run:
 //! `cargo bench -p pinjoint --bench fidelity`; the summary lines (`summary ...`) come from one run.
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use pinjoint::fidelity::check::CheckRng;
 use pinjoint::fidelity::{Envelope, ErrorReport, Evaluator, Fidelity};
 use pinjoint::{Joint, Params};
 use std::hint::black_box;
@@ -16,42 +15,18 @@ use std::time::Instant;
 
 const N: usize = 1024;
 
-fn path(env: &Envelope) -> Vec<(f64, f64)> {
-    (0..N)
-        .map(|k| {
-            let s = k as f64 / N as f64 * std::f64::consts::TAU;
-            let (p, w) = env.at_log_fraction(0.5 + 0.5 * (3.0 * s).sin(), 0.5 - 0.5 * (7.0 * s).cos());
-            (p, if (7.0 * s).sin() >= 0.0 { w } else { -w })
-        })
-        .collect()
-}
+#[path = "../crates/bench/src/eval_path.rs"]
+mod eval_path;
+use eval_path::path;
 
+/// Largest errors against the complete solve on the path and 20 000 random points.
 fn errors(ev: &mut Evaluator, j: &Joint, pts: &[(f64, f64)]) -> ErrorReport {
-    let env = *ev.envelope();
-    let mut rng = CheckRng::new(0xbe9c_0001);
-    let random = (0..20_000).map(|_| env.at_log_fraction(rng.uniform(), rng.uniform()));
-    let mut r = ErrorReport::default();
-    for (p, w) in pts.iter().copied().chain(random) {
-        r.add(&ev.evaluate(p, w).unwrap(), &j.evaluate(p, w).unwrap());
-    }
-    r
+    eval_path::errors(ev, j, pts, 20_000, 0xbe9c_0001)
 }
 
 /// Median over 15 repetitions of the time per evaluation along the path, ns.
-fn ns_per_eval(mut f: impl FnMut(f64, f64) -> f64, pts: &[(f64, f64)]) -> f64 {
-    let mut v: Vec<f64> = (0..15)
-        .map(|_| {
-            let t = Instant::now();
-            let mut acc = 0.0;
-            for &(p, w) in pts {
-                acc += f(black_box(p), black_box(w));
-            }
-            black_box(acc);
-            t.elapsed().as_secs_f64() * 1e9 / pts.len() as f64
-        })
-        .collect();
-    v.sort_by(|a, b| a.partial_cmp(b).unwrap());
-    v[7]
+fn ns_per_eval(f: impl FnMut(f64, f64) -> f64, pts: &[(f64, f64)]) -> f64 {
+    eval_path::ns_per_eval(f, pts, 15)
 }
 
 fn fidelity(c: &mut Criterion) {
@@ -62,7 +37,7 @@ fn fidelity(c: &mut Criterion) {
         ("wide", Envelope::new(5e3, 60e3, 0.01, 100.0).unwrap(), &[1e-2, 1e-4, 1e-5][..]),
     ];
     for (name, env, tols) in envelopes {
-        let pts = path(&env);
+        let pts = path(&env, N);
         let mut g = c.benchmark_group(format!("fidelity_{name}"));
         g.throughput(Throughput::Elements(N as u64));
         g.warm_up_time(std::time::Duration::from_millis(300)).measurement_time(std::time::Duration::from_secs(1));

@@ -4,50 +4,11 @@
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::collections::BTreeSet;
 use std::f64::consts::PI;
-use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-struct Out {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-fn run_with(args: &[&str], stdin: Option<&str>) -> Out {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    {
-        let mut input = child.stdin.take().unwrap();
-        input.write_all(stdin.unwrap_or("").as_bytes()).unwrap();
-    }
-    let o = child.wait_with_output().unwrap();
-    Out {
-        code: o.status.code().expect("exited, not killed by a signal (no panic abort)"),
-        stdout: String::from_utf8(o.stdout).unwrap(),
-        stderr: String::from_utf8(o.stderr).unwrap(),
-    }
-}
-
-fn run(args: &[&str]) -> Out {
-    run_with(args, None)
-}
-
-/// Runs and expects failure with exit code `code` and every `needles` in standard error.
-fn fails(args: &[&str], stdin: Option<&str>, code: i32, needles: &[&str]) -> Out {
-    let o = run_with(args, stdin);
-    assert_eq!(o.code, code, "{args:?}: stdout {} stderr {}", o.stdout, o.stderr);
-    for n in needles {
-        assert!(o.stderr.contains(n), "{args:?}: stderr lacks {n:?}:\n{}", o.stderr);
-    }
-    assert!(!o.stderr.contains("panicked"), "{}", o.stderr);
-    o
-}
+mod cli_support;
+use cli_support::{fails, ok, run, run_with, temp_file};
 
 fn joint() -> Joint {
     Joint::new(&Params::default()).unwrap()
@@ -72,19 +33,18 @@ const RESULT_COLUMNS: [&str; 12] = [
     "min_lambda_ratio",
 ];
 
-/// The result columns of a point, as the library computes them.
-fn lib_values(op: &OperatingPoint) -> [f64; 9] {
-    [
-        op.friction_coefficient,
-        op.torque,
-        op.film_thickness,
-        op.lambda_ratio,
-        op.fluid_load_fraction,
-        op.asperity_load_fraction,
-        op.mean_pressure,
-        op.contact_half_width,
-        op.sommerfeld_number,
-    ]
+/// The numeric result columns of a point with the library's values: (position among the
+/// result columns, name, value), read through the library's record table
+/// (`pinjoint::record::COLUMNS`, whose own test checks that each column reads its own field).
+fn lib_values(op: &OperatingPoint) -> Vec<(usize, &'static str, f64)> {
+    pinjoint::record::COLUMNS
+        .iter()
+        .enumerate()
+        .filter_map(|(i, c)| match c.value {
+            pinjoint::record::Value::Number(f) => Some((i, c.name, f(op))),
+            pinjoint::record::Value::Regime => None,
+        })
+        .collect()
 }
 
 fn parse_csv(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
@@ -148,11 +108,8 @@ fn params_prints_the_full_default_file_and_it_loads_back() {
 
 #[test]
 fn params_fills_a_partial_file_and_rejects_a_bad_one() {
-    let d = tempfile::tempdir().unwrap();
-    let f = d.path().join("p.toml");
-    std::fs::write(&f, "[friction]\nboundary_friction_coefficient = 0.1\n").unwrap();
-    let o = run(&["params", "--params", f.to_str().unwrap()]);
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    let (_d, f) = temp_file("p.toml", "[friction]\nboundary_friction_coefficient = 0.1\n");
+    let o = ok(&["params", "--params", f.to_str().unwrap()]);
     let p = Params::from_toml_str(&o.stdout).unwrap();
     assert_eq!(p.friction.boundary_friction_coefficient, 0.1);
     assert_eq!(p.geometry, Params::default().geometry);
@@ -187,20 +144,8 @@ fn close(a: f64, b: f64) -> bool {
 #[test]
 fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
     let m = point_json(&["point", "--load", "20000", "--speed", "0.2", "--json"]);
-    let required = [
-        "load",
-        "speed",
-        "friction_coefficient",
-        "torque",
-        "film_thickness",
-        "lambda_ratio",
-        "fluid_load_fraction",
-        "asperity_load_fraction",
-        "mean_pressure",
-        "contact_half_width",
-        "sommerfeld_number",
-        "regime",
-    ];
+    // load, speed, then the result columns up to and with regime.
+    let required: Vec<&str> = ["load", "speed"].iter().chain(&RESULT_COLUMNS[..10]).copied().collect();
     let extras = [
         "sliding_speed",
         "peak_pressure",
@@ -221,7 +166,7 @@ fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
     assert_eq!(num(&m, "load"), 20000.0);
     assert_eq!(num(&m, "speed"), 0.2);
     assert_eq!(m["regime"], op.regime.as_str());
-    for (k, v) in RESULT_COLUMNS.iter().zip(lib_values(&op)) {
+    for (_, k, v) in lib_values(&op) {
         assert!(close(num(&m, k), v), "{k}: {} vs {v}", num(&m, k));
     }
     assert!(close(num(&m, "peak_pressure"), op.peak_pressure));
@@ -314,9 +259,10 @@ fn check_sweep_output(text: &str, points: &[(f64, f64)], joint: &Joint) {
         assert_eq!(row[1].parse::<f64>().unwrap().to_bits(), p.to_bits());
         assert_eq!(row[2].parse::<f64>().unwrap().to_bits(), w.to_bits());
         let op = joint.evaluate(p, w).unwrap();
-        for (k, v) in lib_values(&op).iter().enumerate() {
+        for (k, name, v) in lib_values(&op) {
+            assert_eq!(h[3 + k], name);
             let got: f64 = row[3 + k].parse().unwrap();
-            assert_eq!(got.to_bits(), v.to_bits(), "row {i} column {}: {got} vs {v}", RESULT_COLUMNS[k]);
+            assert_eq!(got.to_bits(), v.to_bits(), "row {i} column {name}: {got} vs {v}");
         }
         assert_eq!(row[12], op.regime.as_str());
         regimes.insert(row[12].clone());
@@ -329,11 +275,8 @@ fn check_sweep_output(text: &str, points: &[(f64, f64)], joint: &Joint) {
 
 #[test]
 fn sweep_temperature_column_and_flag_match_the_library() {
-    let d = tempfile::tempdir().unwrap();
-    let input = d.path().join("t.csv");
-    std::fs::write(&input, "load,speed,temperature\n20000,0.5,253.15\n20000,0.5,293.15\n20000,0.5,333.15\n").unwrap();
-    let o = run(&["sweep", "--input", input.to_str().unwrap()]);
-    assert_eq!(o.code, 0, "{}", o.stderr);
+    let (_d, input) = temp_file("t.csv", "load,speed,temperature\n20000,0.5,253.15\n20000,0.5,293.15\n20000,0.5,333.15\n");
+    let o = ok(&["sweep", "--input", input.to_str().unwrap()]);
     let (h, rows) = parse_csv(&o.stdout);
     let mu_col = h.iter().position(|c| c == "friction_coefficient").unwrap();
     for (row, t) in rows.iter().zip([253.15, 293.15, 333.15]) {
@@ -392,9 +335,7 @@ fn sweep_reads_standard_input_skips_blank_and_comment_lines_and_trims() {
 
 #[test]
 fn sweep_uses_the_parameter_file() {
-    let d = tempfile::tempdir().unwrap();
-    let pf = d.path().join("p.toml");
-    std::fs::write(&pf, "[friction]\nboundary_friction_coefficient = 0.08\n[lubricant]\nviscosity = 0.05\n").unwrap();
+    let (d, pf) = temp_file("p.toml", "[friction]\nboundary_friction_coefficient = 0.08\n[lubricant]\nviscosity = 0.05\n");
     let pts = vec![(20e3, 0.0), (20e3, 5.0), (5e3, 100.0)];
     let input = d.path().join("pts.csv");
     std::fs::write(&input, points_csv(&pts)).unwrap();
@@ -444,9 +385,7 @@ fn sweep_malformed_rows_name_line_column_value_and_unit_and_leave_no_file() {
 
 #[test]
 fn sweep_failure_keeps_an_existing_output_file_intact() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, "load,speed\n1,1\n2,x\n").unwrap();
+    let (d, inp) = temp_file("in.csv", "load,speed\n1,1\n2,x\n");
     let out = d.path().join("out.csv");
     std::fs::write(&out, "precious\n").unwrap();
     fails(&["sweep", "--input", inp.to_str().unwrap(), "--output", out.to_str().unwrap()], None, 1, &["line 3"]);
@@ -457,9 +396,7 @@ fn sweep_failure_keeps_an_existing_output_file_intact() {
 #[test]
 fn sweep_io_errors_name_the_path() {
     fails(&["sweep", "--input", "/no/such/in.csv"], None, 1, &["cannot read /no/such/in.csv"]);
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, "load,speed\n1,1\n").unwrap();
+    let (_d, inp) = temp_file("in.csv", "load,speed\n1,1\n");
     fails(&["sweep", "--input", inp.to_str().unwrap(), "--output", "/no/such/dir/out.csv"], None, 1, &["cannot write /no/such/dir/out.csv"]);
 }
 
@@ -502,14 +439,25 @@ fn stribeck_writes_figure_3_csv_and_svg_from_the_library() {
 
 #[test]
 fn stribeck_rejects_bad_ranges() {
+    rejects(&[
+        (&["stribeck", "--load", "0"], 1, &["load = 0 N"]),
+        (&["stribeck", "--load", "1", "--min-speed", "10", "--max-speed", "1"], 1, &["10 rad/s", "1 rad/s"]),
+        (&["stribeck", "--load", "1", "--min-rpm", "-1"], 1, &["min-rpm = -1 rpm"]),
+        (&["stribeck", "--load", "1", "--points", "1"], 1, &["points = 1"]),
+        (&["stribeck", "--load", "1", "--min-speed", "1", "--min-rpm", "1"], 2, &["cannot be used with"]),
+    ]);
+}
+
+/// Runs each case's arguments with `--output` a path in a fresh directory: each fails with
+/// its exit code and every one of its messages, and nothing is written at that path.
+fn rejects(cases: &[(&[&str], i32, &[&str])]) {
     let d = tempfile::tempdir().unwrap();
     let out = d.path().join("x");
-    let o = out.to_str().unwrap();
-    fails(&["stribeck", "--load", "0", "--output", o], None, 1, &["load = 0 N"]);
-    fails(&["stribeck", "--load", "1", "--min-speed", "10", "--max-speed", "1", "--output", o], None, 1, &["10 rad/s", "1 rad/s"]);
-    fails(&["stribeck", "--load", "1", "--min-rpm", "-1", "--output", o], None, 1, &["min-rpm = -1 rpm"]);
-    fails(&["stribeck", "--load", "1", "--points", "1", "--output", o], None, 1, &["points = 1"]);
-    fails(&["stribeck", "--load", "1", "--min-speed", "1", "--min-rpm", "1", "--output", o], None, 2, &["cannot be used with"]);
+    for (args, code, needles) in cases {
+        let mut args = args.to_vec();
+        args.extend(["--output", out.to_str().unwrap()]);
+        fails(&args, None, *code, needles);
+    }
     assert!(!out.exists(), "nothing written on error");
 }
 
@@ -554,12 +502,11 @@ fn map_writes_figure_4_csv_and_plots_from_the_library() {
 
 #[test]
 fn map_rejects_bad_grids() {
-    let d = tempfile::tempdir().unwrap();
-    let o = d.path().join("x");
-    let o = o.to_str().unwrap();
-    fails(&["map", "--min-load", "60000", "--max-load", "5000", "--output", o], None, 1, &["min-load 60000 N", "max-load 5000 N"]);
-    fails(&["map", "--min-rpm", "0", "--output", o], None, 1, &["min-rpm = 0 rpm"]);
-    fails(&["map", "--speeds", "1", "--output", o], None, 1, &["speeds = 1"]);
+    rejects(&[
+        (&["map", "--min-load", "60000", "--max-load", "5000"], 1, &["min-load 60000 N", "max-load 5000 N"]),
+        (&["map", "--min-rpm", "0"], 1, &["min-rpm = 0 rpm"]),
+        (&["map", "--speeds", "1"], 1, &["speeds = 1"]),
+    ]);
     fails(&["map", "--output", "/proc/no-such-place/x"], None, 1, &["cannot write /proc/no-such-place/x"]);
 }
 

@@ -2,78 +2,28 @@
 //! private files or the input itself; inputs that panicked or hung before. Every run has a
 //! time limit and must exit 0, 1 or 2 (never 101, never a signal).
 
-use std::io::Read;
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
-use std::path::Path;
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Duration;
 
-struct Out {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
+mod cli_support;
+use cli_support::{run, run_limited, s, Out};
 
-/// Run the binary with a time limit (killed and failed beyond it).
-fn run_limited(args: &[&str], limit: Duration) -> Out {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
-        .args(args)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("binary runs");
-    let (mut so, mut se) = (child.stdout.take().unwrap(), child.stderr.take().unwrap());
-    let ho = std::thread::spawn(move || {
-        let mut s = String::new();
-        so.read_to_string(&mut s).ok();
-        s
-    });
-    let he = std::thread::spawn(move || {
-        let mut s = String::new();
-        se.read_to_string(&mut s).ok();
-        s
-    });
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().unwrap() {
-            break s;
-        }
-        if start.elapsed() > limit {
-            child.kill().ok();
-            child.wait().ok();
-            panic!("{args:?} ran longer than {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let out = Out {
-        code: status.code().unwrap_or_else(|| panic!("{args:?} killed by a signal")),
-        stdout: ho.join().unwrap(),
-        stderr: he.join().unwrap(),
-    };
-    assert!(!out.stderr.contains("panicked"), "{args:?}: {}", out.stderr);
-    assert_ne!(out.code, 101, "{args:?}: {}", out.stderr);
-    out
-}
-
-fn run(args: &[&str]) -> Out {
-    run_limited(args, Duration::from_secs(120))
-}
-
+/// Runs and expects failure (exit code 1) with every `needles` in standard error.
 fn fails(args: &[&str], needles: &[&str]) -> Out {
-    let o = run(args);
-    assert_eq!(o.code, 1, "{args:?}: stdout {} stderr {}", o.stdout, o.stderr);
-    for n in needles {
-        assert!(o.stderr.contains(n), "{args:?}: stderr lacks {n:?}:\n{}", o.stderr);
-    }
-    o
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
+    cli_support::fails(args, None, 1, needles)
 }
 
 const INPUT: &str = "# my precious comments\nload,speed\n20000,0.5\n5000,-1\n";
+
+/// A temporary directory holding `in.csv` = [`INPUT`], and that file's path.
+fn input_dir() -> (tempfile::TempDir, PathBuf) {
+    let d = tempfile::tempdir().unwrap();
+    let inp = d.path().join("in.csv");
+    std::fs::write(&inp, INPUT).unwrap();
+    (d, inp)
+}
 
 fn sweep_to(input: &Path, output: &str) -> Out {
     run(&["sweep", "--input", s(input), "--output", output])
@@ -83,9 +33,7 @@ fn sweep_to(input: &Path, output: &str) -> Out {
 
 #[test]
 fn output_equal_to_the_input_is_refused_before_anything_is_read_or_written() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (d, inp) = input_dir();
     // Same path, another spelling, a hard link, a symlink: all the same inode.
     let link = d.path().join("hard.csv");
     std::fs::hard_link(&inp, &link).unwrap();
@@ -128,9 +76,7 @@ fn output_equal_to_the_input_is_refused_before_anything_is_read_or_written() {
 
 #[test]
 fn a_private_file_keeps_its_permissions_and_a_symlink_stays_a_link() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (d, inp) = input_dir();
     let private = d.path().join("private.csv");
     std::fs::write(&private, "old").unwrap();
     std::fs::set_permissions(&private, std::fs::Permissions::from_mode(0o600)).unwrap();
@@ -161,9 +107,7 @@ fn a_private_file_keeps_its_permissions_and_a_symlink_stays_a_link() {
 
 #[test]
 fn a_fifo_is_written_in_place_streaming() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (d, inp) = input_dir();
     let fifo = d.path().join("fifo");
     let ok = Command::new("mkfifo").arg(&fifo).status().unwrap().success();
     assert!(ok, "mkfifo");
@@ -178,9 +122,7 @@ fn a_fifo_is_written_in_place_streaming() {
 
 #[test]
 fn dev_null_stays_a_character_device() {
-    let d = tempfile::tempdir().unwrap();
-    let inp = d.path().join("in.csv");
-    std::fs::write(&inp, INPUT).unwrap();
+    let (_d, inp) = input_dir();
     let o = sweep_to(&inp, "/dev/null");
     assert_eq!(o.code, 0, "{}", o.stderr);
     let m = std::fs::symlink_metadata("/dev/null").unwrap();
@@ -289,7 +231,7 @@ fn rig_parameters_that_hung_or_aborted_end_in_bounded_time() {
         let p = d.path().join(name);
         std::fs::write(&p, text).unwrap();
         let args = ["cycle", "--cycles", "1", "--frequency", f, "--params", s(&p), "--output", s(d.path())];
-        let o = run_limited(&args, Duration::from_secs(150));
+        let o = run_limited(&args, None, Duration::from_secs(150));
         assert!(o.code == 0 || o.code == 1, "{name}: {}", o.stderr);
     }
 }

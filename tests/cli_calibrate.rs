@@ -3,24 +3,9 @@
 //! read back by `pinjoint point`; and clear errors for bad files.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
-struct Out {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-fn run(args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint")).args(args).output().expect("binary runs");
-    Out { code: o.status.code().expect("exited"), stdout: String::from_utf8(o.stdout).unwrap(), stderr: String::from_utf8(o.stderr).unwrap() }
-}
-
-fn ok(args: &[&str]) -> Out {
-    let o = run(args);
-    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
-    o
-}
+mod cli_support;
+use cli_support::{ok, run, s};
 
 fn fail(args: &[&str]) -> String {
     let o = run(args);
@@ -35,10 +20,6 @@ fn cycle(dir: &Path, name: &str, load: &str) -> PathBuf {
     let out = dir.join(name);
     ok(&["cycle", "--frequency", "1", "--load", load, "--cycles", "8", "--samples-per-cycle", "1000", "--params", params.to_str().unwrap(), "--output", out.to_str().unwrap()]);
     out.join("cycle.csv")
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
 }
 
 #[test]

@@ -7,28 +7,9 @@ use pinjoint::{Joint, Params};
 use std::collections::BTreeSet;
 use std::f64::consts::TAU;
 use std::path::Path;
-use std::process::Command;
 
-struct Out {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-fn run(args: &[&str]) -> Out {
-    let o = Command::new(env!("CARGO_BIN_EXE_pinjoint")).args(args).output().expect("binary runs");
-    Out {
-        code: o.status.code().expect("exited, not killed by a signal"),
-        stdout: String::from_utf8(o.stdout).unwrap(),
-        stderr: String::from_utf8(o.stderr).unwrap(),
-    }
-}
-
-fn ok(args: &[&str]) -> Out {
-    let o = run(args);
-    assert_eq!(o.code, 0, "{args:?}: {}", o.stderr);
-    o
-}
+mod cli_support;
+use cli_support::{ok, run};
 
 const COLUMNS: [&str; 10] = [
     "time",

@@ -5,17 +5,27 @@
 
 use pinjoint::fidelity::check::CheckRng;
 use pinjoint::fidelity::{Envelope, ErrorReport, Evaluator, Fidelity, FidelityError, Level, Source, FULL_ERROR_BOUND};
-use pinjoint::{Joint, Params};
+use pinjoint::{Joint, OperatingPoint, Params};
 
 fn joint() -> Joint {
     Joint::new(&Params::default()).unwrap()
+}
+
+/// The brief's envelope: 5 to 60 kN, 0.01 to 10 rad/s.
+fn brief() -> Envelope {
+    Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap()
+}
+
+/// An evaluator of the default joint at `fidelity` and `tolerance` over [`brief`].
+fn brief_evaluator(fidelity: Fidelity, tolerance: f64) -> Evaluator {
+    Evaluator::new(&Params::default(), fidelity, tolerance, brief()).unwrap()
 }
 
 /// Envelopes: deep boundary, the brief's, mixed, mixed into full film, spanning all regimes.
 fn envelopes() -> Vec<(&'static str, Envelope)> {
     vec![
         ("deep-boundary", Envelope::new(5e3, 60e3, 1e-5, 1e-3).unwrap()),
-        ("brief", Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap()),
+        ("brief", brief()),
         ("mixed", Envelope::new(10e3, 60e3, 1.0, 30.0).unwrap()),
         ("spanning", Envelope::new(1e3, 200e3, 1e-3, 1e3).unwrap()),
     ]
@@ -58,7 +68,7 @@ fn fidelity_names_parse_and_print() {
 #[test]
 fn inputs_are_validated_with_quantity_value_and_unit() {
     let p = Params::default();
-    let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
+    let env = brief();
     for bad in [0.0, -1e-3, f64::NAN, f64::INFINITY] {
         let e = Evaluator::new(&p, Fidelity::Table, bad, env).unwrap_err();
         assert!(matches!(e, FidelityError::Tolerance(_)));
@@ -108,7 +118,7 @@ fn table_meets_its_advertised_bound_on_fresh_points() {
 #[test]
 fn table_is_continuous_across_cells() {
     let j = joint();
-    let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
+    let env = brief();
     let t = pinjoint::fidelity::StribeckTable::build(&j, &env, 1e-4).unwrap();
     let s = t.stats();
     assert!(s.load_cells >= 2 && s.speed_cells >= 2 && s.node_solves >= (s.load_cells + 5) * (s.speed_cells + 5));
@@ -187,7 +197,7 @@ fn boundary_level_reports_its_measured_error() {
 fn outside_the_envelope_table_and_boundary_fall_back_to_full_and_say_so_once() {
     let j = joint();
     let p = Params::default();
-    let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
+    let env = brief();
     for f in [Fidelity::Table, Fidelity::Boundary] {
         let mut ev = Evaluator::new(&p, f, 1e-2, env).unwrap();
         let inside = ev.evaluate(20e3, 1.0).unwrap();
@@ -215,7 +225,7 @@ fn outside_the_envelope_table_and_boundary_fall_back_to_full_and_say_so_once() {
 fn rest_is_exact_at_every_level() {
     let j = joint();
     let p = Params::default();
-    let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
+    let env = brief();
     let mut rng = CheckRng::new(0x0e57);
     for f in Fidelity::ALL {
         let tol = 1e-4;
@@ -240,9 +250,7 @@ fn rest_is_exact_at_every_level() {
 #[test]
 fn full_level_is_the_complete_solve_warm_started() {
     let j = joint();
-    let p = Params::default();
-    let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
-    let mut ev = Evaluator::new(&p, Fidelity::Full, 1e-4, env).unwrap();
+    let mut ev = brief_evaluator(Fidelity::Full, 1e-4);
     assert_eq!((ev.chosen(), ev.error_bound()), (Level::Full, FULL_ERROR_BOUND));
     // A rig-like trajectory through rest, boundary, mixed and full film, in and out of the envelope.
     for k in 0..2000 {
@@ -263,21 +271,14 @@ fn full_level_is_the_complete_solve_warm_started() {
 #[test]
 fn completed_operating_point_matches_the_full_one() {
     let j = joint();
-    let p = Params::default();
-    let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
-    let mut ev = Evaluator::new(&p, Fidelity::Table, 1e-6, env).unwrap();
+    let mut ev = brief_evaluator(Fidelity::Table, 1e-6);
     for (load, omega) in [(7e3, 0.05), (20e3, -3.0), (55e3, 9.0), (20e3, 0.0)] {
         let (op, src) = ev.evaluate_point(load, omega).unwrap();
         let full = j.evaluate(load, omega).unwrap();
         assert!(matches!(src, Source::Table | Source::Rest));
         // Load- and speed-only quantities: the core's formulas, to rounding.
-        for (a, b) in [
-            (op.mean_pressure, full.mean_pressure),
-            (op.peak_pressure, full.peak_pressure),
-            (op.contact_half_width, full.contact_half_width),
-            (op.contact_viscosity, full.contact_viscosity),
-            (op.sommerfeld_number, full.sommerfeld_number),
-        ] {
+        let exact = |o: &OperatingPoint| [o.mean_pressure, o.peak_pressure, o.contact_half_width, o.contact_viscosity, o.sommerfeld_number];
+        for (a, b) in exact(&op).into_iter().zip(exact(&full)) {
             assert!(a == b || ((a - b) / b).abs() < 1e-13, "{a} vs {b}");
         }
         assert_eq!(op.sliding_speed, full.sliding_speed);

@@ -11,9 +11,7 @@ use fmi_layer::fmi2::types::*;
 use std::ffi::CStr;
 use std::ptr::{null, null_mut};
 
-const OK: i32 = 0;
 const WARNING: i32 = 1;
-const ERROR: i32 = 3;
 
 #[test]
 fn version_and_platform() {
@@ -119,8 +117,7 @@ fn illegal_call_sequences_are_refused_and_logged() {
 
 #[test]
 fn free_without_terminate_and_in_initialization_mode() {
-    let h = Host::new();
-    let c = h.ready(&[]);
+    let (h, c) = ready_pin_joint();
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), OK);
     unsafe { fmi2FreeInstance(c) };
     let c = h.instantiate();
@@ -201,8 +198,7 @@ fn model_exchange_is_a_stateless_map_of_the_inputs() {
 
 #[test]
 fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
-    let h = Host::new();
-    let c = h.ready(&[]);
+    let (h, c) = ready_pin_joint();
     let mut x = [0.0; 2];
     let mut b = 0;
     let calls: Vec<(&str, i32)> = vec![
@@ -242,8 +238,7 @@ fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
 
 #[test]
 fn status_functions() {
-    let h = Host::new();
-    let c = h.ready(&[]);
+    let (h, c) = ready_pin_joint();
     assert_eq!(fmi2DoStep(c, 0.0, 0.25, 0), OK);
     assert_eq!(fmi2DoStep(c, 0.25, 0.5, 0), OK);
     let mut t = 0.0;

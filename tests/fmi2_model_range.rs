@@ -9,8 +9,6 @@ use fmi_layer::fmi2::api::common::*;
 use fmi_layer::fmi2::api::cosim::*;
 use pinjoint::{Joint, Params};
 
-const OK: i32 = 0;
-const ERROR: i32 = 3;
 
 /// fuzz/findings/core/negative-film-at-rest: the library's value at rest, 20 kN.
 fn sparse_asperities() -> [(&'static str, f64); 4] {
@@ -20,6 +18,13 @@ fn sparse_asperities() -> [(&'static str, f64); 4] {
         ("surface.summit_height_std", 1.8331541852530975e-6),
         ("lubricant.viscosity", 6.593932009391239e-5),
     ]
+}
+
+/// [`sparse_asperities`] and the start load `load` (N).
+fn sparse_asperities_at(load: f64) -> Vec<(&'static str, f64)> {
+    let mut sets = sparse_asperities().to_vec();
+    sets.push(("load", load));
+    sets
 }
 
 #[test]
@@ -39,27 +44,14 @@ fn loads_beyond_the_asperity_capacity_are_refused_naming_it() {
 
     // Initialization at the start load 20 kN fails, naming the load and the capacity.
     let h = Host::new();
-    let c = h.instantiate();
-    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
-    for (n, v) in sparse_asperities() {
-        assert_eq!(set(c, n, v), OK);
-    }
-    assert_eq!(set(c, "load", 20e3), OK);
-    assert_eq!(fmi2EnterInitializationMode(c), OK);
-    assert_eq!(fmi2ExitInitializationMode(c), ERROR);
+    let (c, status) = h.initialize(&sparse_asperities_at(20e3));
+    assert_eq!(status, ERROR);
     assert!(h.last().contains("load = 20000 N") && h.last().contains("capacity"), "{}", h.last());
     unsafe { fmi2FreeInstance(c) };
 
     // Initialized at 1 N, a later load beyond the capacity is refused at fmi2SetReal and
     // the instance steps on with its previous inputs.
-    let c = h.instantiate();
-    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
-    for (n, v) in sparse_asperities() {
-        assert_eq!(set(c, n, v), OK);
-    }
-    assert_eq!(set(c, "load", 1.0), OK);
-    assert_eq!(fmi2EnterInitializationMode(c), OK);
-    assert_eq!(fmi2ExitInitializationMode(c), OK);
+    let c = h.ready(&sparse_asperities_at(1.0));
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), OK);
     let light = j.evaluate(1.0, 0.0).unwrap();
     assert_eq!(get(c, "film_thickness"), light.film_thickness);

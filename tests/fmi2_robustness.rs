@@ -7,14 +7,11 @@ use fmi_layer::fmi2::api::cosim::*;
 use fmi_layer::fmi2::api::force_panic_in;
 use fmi_layer::fmi2::types::*;
 
-const OK: i32 = 0;
-const ERROR: i32 = 3;
 const FATAL: i32 = 4;
 
 #[test]
 fn a_panic_inside_a_call_returns_fatal_and_is_logged() {
-    let h = Host::new();
-    let c = h.ready(&[]);
+    let (h, c) = ready_pin_joint();
     force_panic_in("fmi2DoStep");
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), FATAL);
     let m = h.messages().into_iter().last().unwrap();
@@ -80,8 +77,7 @@ fn many_instantiate_step_free_cycles() {
     for k in 0..200 {
         let c = h.ready(&[("angular_velocity", 0.1 * f64::from(k))]);
         assert_eq!(fmi2DoStep(c, 0.0, 0.01, 0), OK);
-        let mut s: Fmi2FmuState = std::ptr::null_mut();
-        assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+        let mut s = get_state(c);
         assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
         unsafe { fmi2FreeInstance(c) };
     }

@@ -9,8 +9,6 @@ use fmi_layer::fmi2::bytes::crc32;
 use fmi_layer::fmi2::types::*;
 use std::ptr::null_mut;
 
-const OK: i32 = 0;
-const ERROR: i32 = 3;
 
 fn drive(c: Fmi2Component, from: usize, to: usize) -> Vec<u64> {
     let mut out = Vec::new();
@@ -25,18 +23,12 @@ fn drive(c: Fmi2Component, from: usize, to: usize) -> Vec<u64> {
     out
 }
 
-fn serialize(c: Fmi2Component, s: Fmi2FmuState) -> Vec<u8> {
-    let mut n = 0usize;
-    assert_eq!(unsafe { fmi2SerializedFMUstateSize(c, s, &mut n) }, OK);
-    let mut buf = vec![0u8; n];
-    assert_eq!(unsafe { fmi2SerializeFMUstate(c, s, buf.as_mut_ptr() as *mut Fmi2Byte, n) }, OK);
-    buf
-}
-
-fn deserialize(c: Fmi2Component, bytes: &[u8]) -> Result<Fmi2FmuState, i32> {
-    let mut s: Fmi2FmuState = null_mut();
-    let st = unsafe { fmi2DeSerializeFMUstate(c, bytes.as_ptr() as *const Fmi2Byte, bytes.len(), &mut s) };
-    if st == OK { Ok(s) } else { Err(st) }
+/// A default PinJoint host and instance driven for `steps` steps, and its state there.
+fn driven(steps: usize) -> (Host, Fmi2Component, Fmi2FmuState) {
+    let (h, c) = ready_pin_joint();
+    drive(c, 0, steps);
+    let s = get_state(c);
+    (h, c, s)
 }
 
 #[test]
@@ -44,8 +36,7 @@ fn get_set_round_trip_is_bit_exact_after_reversals() {
     let h = Host::new();
     let c = h.ready(&[("zero_velocity.speed_band", 0.05)]);
     drive(c, 0, 300); // passes two reversals
-    let mut s: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    let mut s = get_state(c);
     let first = drive(c, 300, 500);
     assert_eq!(unsafe { fmi2SetFMUstate(c, s) }, OK);
     assert_eq!(get(c, "zero_velocity.speed_band"), 0.05);
@@ -66,8 +57,7 @@ fn serialize_round_trip_across_instances_is_bit_exact() {
     let h = Host::new();
     let a = h.ready(&[("friction.boundary_friction_coefficient", 0.1)]);
     drive(a, 0, 250);
-    let mut s: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(a, &mut s) }, OK);
+    let mut s = get_state(a);
     let bytes = serialize(a, s);
     assert!(bytes.len() < 400, "small: {} bytes", bytes.len());
     assert_eq!(&bytes[..8], b"FMI2STAT");
@@ -90,11 +80,7 @@ fn serialize_round_trip_across_instances_is_bit_exact() {
 
 #[test]
 fn truncated_corrupted_and_wrong_version_states_are_rejected() {
-    let h = Host::new();
-    let c = h.ready(&[]);
-    drive(c, 0, 100);
-    let mut s: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    let (h, c, mut s) = driven(100);
     let bytes = serialize(c, s);
     let before = all_outputs(c);
 
@@ -159,11 +145,7 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
 
 #[test]
 fn set_state_restores_the_life_cycle_state_and_recovers_from_error() {
-    let h = Host::new();
-    let c = h.ready(&[]);
-    drive(c, 0, 10);
-    let mut s: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    let (_h, c, mut s) = driven(10);
     // Provoke the error state with a step whose dissipated energy overflows.
     assert_eq!(set(c, "load", 5e8), OK);
     assert_eq!(set(c, "angular_velocity", 1e6), OK);
@@ -175,8 +157,7 @@ fn set_state_restores_the_life_cycle_state_and_recovers_from_error() {
     // A state taken before initialization takes the instance back there.
     let h2 = Host::new();
     let d = h2.instantiate();
-    let mut early: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(d, &mut early) }, OK);
+    let mut early = get_state(d);
     assert_eq!(fmi2EnterInitializationMode(d), OK);
     assert_eq!(fmi2ExitInitializationMode(d), OK);
     assert_eq!(unsafe { fmi2SetFMUstate(d, early) }, OK);

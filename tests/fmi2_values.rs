@@ -8,13 +8,10 @@ use fmi_layer::fmi2::api::cosim::*;
 use pinjoint::{Joint, Params};
 use std::ptr::{null, null_mut};
 
-const OK: i32 = 0;
-const ERROR: i32 = 3;
 
 #[test]
 fn null_arrays_unknown_references_and_wrong_types() {
-    let h = Host::new();
-    let c = h.ready(&[]);
+    let (h, c) = ready_pin_joint();
     let r = [vr("torque")];
     let mut v = [0.0];
     assert_eq!(unsafe { fmi2GetReal(c, null(), 1, v.as_mut_ptr()) }, ERROR);
@@ -89,8 +86,7 @@ fn bad_input_values_are_rejected_with_name_value_and_unit() {
 
 #[test]
 fn extreme_but_valid_inputs_give_finite_outputs_or_an_error_never_nan() {
-    let h = Host::new();
-    let c = h.ready(&[]);
+    let (h, c) = ready_pin_joint();
     // Zero load: unloaded, every output 0 (documented), energy unchanged.
     assert_eq!(set(c, "load", 0.0), OK);
     assert_eq!(set(c, "angular_velocity", 1.0), OK);

@@ -13,15 +13,11 @@ use fmi::fmi2::instance::{CoSimulation, Common};
 use pinjoint_fmu::pin_joint::INFO;
 use pinjoint::{Joint, Params};
 
-fn vr(name: &str) -> u32 {
-    packaged::vr(&INFO, name)
-}
-
 #[test]
 fn fmi_crate_loads_and_steps_the_fmu_with_the_library_outputs() {
     let import = packaged::import("PINJOINT_FMU", &INFO, "test");
-    let mut inst = import.instantiate_cs("pin", false, true).expect("instantiate");
-    inst.setup_experiment(None, 0.0, None).unwrap();
+    let mut inst = packaged::cs_instance(&import, "pin");
+    let vr = |name: &str| packaged::vr(&INFO, name);
     inst.set_real(&[vr("friction.boundary_friction_coefficient")], &[0.1]).unwrap();
     inst.enter_initialization_mode().unwrap();
     inst.exit_initialization_mode().unwrap();

@@ -12,15 +12,11 @@ use fmi::fmi2::instance::{CoSimulation, Common};
 use pinjoint_fmu::pin_joint_rig::INFO;
 use pinjoint::rig::{Inputs, Method, RigConfig, RigSim};
 
-fn vr(name: &str) -> u32 {
-    packaged::vr(&INFO, name)
-}
-
 #[test]
 fn fmi_crate_loads_and_steps_the_rig_fmu_with_the_library_outputs() {
     let import = packaged::import("PINJOINT_RIG_FMU", &INFO, "rig-test");
-    let mut inst = import.instantiate_cs("rig", false, true).expect("instantiate");
-    inst.setup_experiment(None, 0.0, None).unwrap();
+    let mut inst = packaged::cs_instance(&import, "rig");
+    let vr = |name: &str| packaged::vr(&INFO, name);
     inst.set_real(&[vr("frequency"), vr("rig.breakaway_factor")], &[0.6, 1.3]).unwrap();
     inst.set_integer(&[vr("rig.method")], &[1]).unwrap();
     inst.set_boolean(&[vr("use_command_input")], &[0]).unwrap();

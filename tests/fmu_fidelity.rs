@@ -10,9 +10,6 @@ use fmi_layer::fmi2::api::cosim::*;
 use fmi_layer::fmi2::types::Fmi2Component;
 use pinjoint::{Joint, Params};
 
-const OK: i32 = 0;
-const ERROR: i32 = 3;
-
 fn set_fidelity(c: Fmi2Component, code: i32) -> i32 {
     let r = [vr("fidelity")];
     unsafe { fmi2SetInteger(c, r.as_ptr(), 1, [code].as_ptr()) }

@@ -7,14 +7,19 @@
 #[path = "../fuzz/src/checks.rs"]
 mod checks;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 fn replay(target: &str, check: fn(&[u8])) -> usize {
     replay_dir("regressions", target, check)
 }
 
+/// `fuzz/<kind>/<target>/` of the repository.
+fn fuzz_dir(kind: &str, target: &str) -> PathBuf {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("fuzz").join(kind).join(target)
+}
+
 fn replay_dir(kind: &str, target: &str, check: fn(&[u8])) -> usize {
-    let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("fuzz").join(kind).join(target);
+    let dir = fuzz_dir(kind, target);
     let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())).map(|e| e.unwrap().path()).collect();
     files.sort();
     for f in &files {
@@ -43,6 +48,13 @@ fn random_inputs(seed: u64, count: usize, max_len: usize) -> impl Iterator<Item 
     })
 }
 
+/// `check` on `count` inputs of [`random_inputs`].
+fn check_random(seed: u64, count: usize, max_len: usize, check: fn(&[u8])) {
+    for data in random_inputs(seed, count, max_len) {
+        check(&data);
+    }
+}
+
 #[test]
 fn core_regression_corpus() {
     assert!(replay("core", checks::core::check) >= 4, "the corpus holds seeds");
@@ -51,9 +63,7 @@ fn core_regression_corpus() {
 /// Pseudo-random cases inside the envelope (see `checks::core::check_in_envelope`).
 #[test]
 fn core_random_inputs_in_the_envelope() {
-    for data in random_inputs(0x9E37_79B9_7F4A_7C15, 3000, 220) {
-        checks::core::check_in_envelope(&data);
-    }
+    check_random(0x9E37_79B9_7F4A_7C15, 3000, 220, checks::core::check_in_envelope);
 }
 
 /// The open core findings (fuzz/findings/core*/, listed in fuzz/README.md): inputs that
@@ -66,7 +76,7 @@ fn core_random_inputs_in_the_envelope() {
 fn core_open_findings() {
     let mut failing = Vec::new();
     for (target, check) in [("core", checks::core::check as fn(&[u8])), ("core_envelope", checks::core::check_in_envelope)] {
-        let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../..")).join("fuzz/findings").join(target);
+        let dir = fuzz_dir("findings", target);
         for f in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()) {
             let data = std::fs::read(&f).unwrap();
             if std::panic::catch_unwind(|| check(&data)).is_err() {
@@ -84,9 +94,7 @@ fn fmi_calls_regression_corpus() {
 
 #[test]
 fn fmi_calls_random_inputs() {
-    for data in random_inputs(0xD1B5_4A32_D192_ED03, 1500, 600) {
-        checks::fmi::check(&data);
-    }
+    check_random(0xD1B5_4A32_D192_ED03, 1500, 600, checks::fmi::check);
 }
 
 /// The checks can fail: a panic inside the FMU (forced through the test hook) comes

@@ -7,6 +7,8 @@ use fmi_layer::fmi2::xml::model_description;
 use pinjoint_fmu::registry;
 use std::path::Path;
 
+mod model_table;
+
 #[test]
 fn committed_model_descriptions_match_the_generator() {
     for info in registry() {
@@ -94,20 +96,7 @@ fn pin_joint_table_is_complete_and_consistent() {
         assert_eq!(info.variables[info.index_by_name(n).unwrap()].causality, Causality::Output, "{n}");
     }
     assert!(names.contains(&"zero_velocity.speed_band"));
-    let mut vrs: Vec<u32> = info.variables.iter().map(|v| v.value_reference).collect();
-    vrs.sort();
-    vrs.dedup();
-    assert_eq!(vrs.len(), info.variables.len(), "value references are unique");
-    for v in &info.variables {
-        assert!(!v.description.is_empty(), "{} has no description", v.name);
-        if let Some(u) = v.unit {
-            assert!(info.unit(u).is_some(), "unit {u} of {} is not defined", v.name);
-        }
-    }
-    // Every defined unit is used.
-    for u in info.units {
-        assert!(info.variables.iter().any(|v| v.unit == Some(u.name)), "unit {} unused", u.name);
-    }
+    model_table::assert_consistent(info);
 }
 
 #[test]

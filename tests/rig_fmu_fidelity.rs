@@ -11,7 +11,6 @@ use fmi_layer::fmi2::api::common::*;
 use fmi_layer::fmi2::types::*;
 use pinjoint::rig::{Inputs, RigConfig, RigSim};
 use rig_host::*;
-use std::ptr::null_mut;
 
 /// The default rig (1 Hz, 40 deg stroke, 20 kN) at `sets`, with logging on.
 fn logged(h: &Host, sets: &[(&str, f64)]) -> Fmi2Component {
@@ -31,7 +30,7 @@ fn run(h: &Host, c: Fmi2Component, t0: f64, n: usize) -> Vec<Vec<f64>> {
 }
 
 fn col(rows: &[Vec<f64>], name: &str) -> Vec<f64> {
-    let i = OUTPUTS.iter().position(|n| *n == name).unwrap();
+    let i = output_index(name);
     rows.iter().map(|r| r[i]).collect()
 }
 
@@ -144,9 +143,7 @@ fn auto_logs_its_pick_and_the_first_fallback_once() {
 #[test]
 fn fidelity_parameters_have_defaults_and_bad_values_are_refused_by_name() {
     let h = new_host();
-    let c = instantiate(&h);
-    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
-    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    let c = h.init_mode();
     assert_eq!(get(c, "fidelity"), 0.0);
     assert_eq!(get(c, "tolerance"), 1e-4);
     let env: Vec<f64> = ["envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"].iter().map(|n| get(c, n)).collect();
@@ -171,30 +168,11 @@ fn fidelity_parameters_have_defaults_and_bad_values_are_refused_by_name() {
         (&[("fidelity", 2.0), ("envelope.speed_max", 1e-3)], "envelope.speed_min = 0.001 rad/s is invalid: it must be below envelope.speed_max = 0.001 rad/s"),
     ];
     for (sets, expect) in cases {
-        let c = instantiate(&h);
-        assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
-        for (n, v) in *sets {
-            assert_eq!(set(c, n, *v), OK, "{n}");
-        }
-        assert_eq!(fmi2EnterInitializationMode(c), OK);
-        assert_eq!(fmi2ExitInitializationMode(c), ERROR, "{sets:?}");
+        let (c, status) = h.initialize(sets);
+        assert_eq!(status, ERROR, "{sets:?}");
         assert!(h.last().contains(expect), "{sets:?}: {}", h.last());
         free(c);
     }
-}
-
-fn get_state(c: Fmi2Component) -> Fmi2FmuState {
-    let mut s: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
-    s
-}
-
-fn serialize(c: Fmi2Component, s: Fmi2FmuState) -> Vec<u8> {
-    let mut n = 0usize;
-    assert_eq!(unsafe { fmi2SerializedFMUstateSize(c, s, &mut n) }, OK);
-    let mut buf = vec![0u8; n];
-    assert_eq!(unsafe { fmi2SerializeFMUstate(c, s, buf.as_mut_ptr() as *mut Fmi2Byte, n) }, OK);
-    buf
 }
 
 /// Get/set and serialize/deserialize with fidelity table: the continuation is bit for bit,
@@ -217,8 +195,7 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     let d = instantiate(&h);
     assert_eq!(set(d, "fidelity", 2.0), OK);
     assert_eq!(set(d, "tolerance", 0.5), OK);
-    let mut sd: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2DeSerializeFMUstate(d, bytes.as_ptr() as *const Fmi2Byte, bytes.len(), &mut sd) }, OK, "{}", h.last());
+    let mut sd = deserialize(d, &bytes).unwrap_or_else(|st| panic!("deserialize returned {st}: {}", h.last()));
     assert_eq!(unsafe { fmi2SetFMUstate(d, sd) }, OK, "{}", h.last());
     for (n, v) in sets {
         assert_eq!(get(d, n), v, "{n} restored");
@@ -240,8 +217,7 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     let n = old.len();
     let crc = fmi_layer::fmi2::bytes::crc32(&old[..n - 4]);
     old[n - 4..].copy_from_slice(&crc.to_le_bytes());
-    let mut so: Fmi2FmuState = null_mut();
-    assert_ne!(unsafe { fmi2DeSerializeFMUstate(d, old.as_ptr() as *const Fmi2Byte, old.len(), &mut so) }, OK);
+    assert!(deserialize(d, &old).is_err());
     assert!(h.last().contains("PinJointRig state version 2; this FMU reads version 3"), "{}", h.last());
     let mut s = s;
     assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);

@@ -159,8 +159,7 @@ fn bad_parameters_are_rejected_at_exit_initialization_by_name_value_and_unit() {
 
 #[test]
 fn bad_inputs_and_wrong_types_are_refused_without_change() {
-    let h = new_host();
-    let c = ready(&h, &[]);
+    let (h, c) = ready_rig();
     for (name, v, fragment) in [
         ("load", f64::NAN, "input load = NaN N is invalid"),
         ("load", f64::INFINITY, "input load = inf N"),
@@ -229,8 +228,7 @@ fn start_time_shifts_the_stroke() {
 
 #[test]
 fn panic_inside_a_step_is_contained() {
-    let h = new_host();
-    let c = ready(&h, &[]);
+    let (_h, c) = ready_rig();
     fmi_layer::fmi2::api::force_panic_in("fmi2DoStep");
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), Status::Fatal.c());
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), ERROR);

@@ -6,7 +6,6 @@ mod rig_host;
 use fmi_layer::fmi2::api::common::*;
 use fmi_layer::fmi2::types::*;
 use rig_host::*;
-use std::ptr::null_mut;
 
 /// Steps of 7 ms from `t0` for `n` steps, the load changing every 50 steps.
 fn drive(h: &Host, c: Fmi2Component, t0: f64, n: usize) -> (Vec<u64>, f64) {
@@ -19,26 +18,6 @@ fn drive(h: &Host, c: Fmi2Component, t0: f64, n: usize) -> (Vec<u64>, f64) {
         t += 0.007;
     }
     (out, t)
-}
-
-fn get_state(c: Fmi2Component) -> Fmi2FmuState {
-    let mut s: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
-    s
-}
-
-fn serialize(c: Fmi2Component, s: Fmi2FmuState) -> Vec<u8> {
-    let mut n = 0usize;
-    assert_eq!(unsafe { fmi2SerializedFMUstateSize(c, s, &mut n) }, OK);
-    let mut buf = vec![0u8; n];
-    assert_eq!(unsafe { fmi2SerializeFMUstate(c, s, buf.as_mut_ptr() as *mut Fmi2Byte, n) }, OK);
-    buf
-}
-
-fn deserialize(c: Fmi2Component, bytes: &[u8]) -> Result<Fmi2FmuState, i32> {
-    let mut s: Fmi2FmuState = null_mut();
-    let st = unsafe { fmi2DeSerializeFMUstate(c, bytes.as_ptr() as *const Fmi2Byte, bytes.len(), &mut s) };
-    if st == OK { Ok(s) } else { Err(st) }
 }
 
 #[test]
@@ -115,8 +94,7 @@ fn regularised_and_rk4_states_round_trip_too() {
 
 #[test]
 fn damaged_and_foreign_states_are_rejected() {
-    let h = new_host();
-    let c = ready(&h, &[]);
+    let (h, c) = ready_rig();
     drive(&h, c, 0.0, 20);
     let bytes = serialize(c, get_state(c));
     let n = bytes.len();
@@ -135,8 +113,7 @@ fn damaged_and_foreign_states_are_rejected() {
     assert!(h.last().contains("bad phase code 5"), "{}", h.last());
     // A PinJoint state is refused by GUID.
     let p = h.instantiate_with("pj", FMI2_CO_SIMULATION, &pinjoint_fmu::pin_joint::INFO.guid(), Some("file:///x"), false);
-    let mut ps: Fmi2FmuState = null_mut();
-    assert_eq!(unsafe { fmi2GetFMUstate(p, &mut ps) }, OK);
+    let ps = get_state(p);
     let pbytes = serialize(p, ps);
     assert!(deserialize(c, &pbytes).is_err());
     assert!(h.last().contains("GUID"), "{}", h.last());

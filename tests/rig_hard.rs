@@ -3,19 +3,8 @@
 use pinjoint::rig::{energy_residual, Inputs, Method, RigConfig, RigSim, Sample, SineCommand, SineDrive, StepLoad};
 use std::sync::Arc;
 
-fn cfg(frequency: f64, load: f64) -> RigConfig {
-    let mut c = RigConfig::default();
-    c.rig.frequency = frequency;
-    c.rig.load = load;
-    c
-}
-
-fn run(c: &RigConfig, cycles: f64, per_cycle: usize) -> (RigSim, Vec<Sample>) {
-    let mut sim = RigSim::new(c).unwrap();
-    let p = c.rig.period();
-    let tr = sim.run(cycles * p, p / per_cycle as f64).unwrap();
-    (sim, tr)
-}
+mod rig_support;
+use rig_support::{cfg, run};
 
 #[test]
 fn many_reversals_stick_once_each_without_chatter_and_conserve_energy() {

@@ -1,20 +1,9 @@
 //! Physics checks of the rig (issue 4, item 6) and the rig behaviours the paper describes.
 
-use pinjoint::rig::{cycle_average_friction_coefficient, Formulation, RigConfig, RigSim, Sample};
+use pinjoint::rig::{cycle_average_friction_coefficient, Formulation, RigSim, Sample};
 
-fn cfg(frequency: f64, load: f64) -> RigConfig {
-    let mut c = RigConfig::default();
-    c.rig.frequency = frequency;
-    c.rig.load = load;
-    c
-}
-
-fn run(c: &RigConfig, cycles: f64, per_cycle: usize) -> (RigSim, Vec<Sample>) {
-    let mut sim = RigSim::new(c).unwrap();
-    let p = c.rig.period();
-    let tr = sim.run(cycles * p, p / per_cycle as f64).unwrap();
-    (sim, tr)
-}
+mod rig_support;
+use rig_support::{cfg, run};
 
 /// The core's quasi-static torque μ(P, |ω|)·R·P at a sample's load and speed.
 fn quasi(sim: &RigSim, s: &Sample) -> f64 {

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Memory check of the packaged FMU: a plain C host (tests/valgrind/fmu_cycles.c)
+# Memory check of the packaged FMU: a plain C host (tests/valgrind/fmu_cycles.c, with the
+# hosts' shared tests/c/fmi2_host.h)
 # dlopens binaries/linux64/PinJoint.so from target/fmu/PinJoint.fmu (or
 # $PINJOINT_FMU) and runs instantiate / initialize / 20 steps / FMU state get, set,
 # serialize, deserialize (also damaged) / rejected calls / terminate or not / free,

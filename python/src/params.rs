@@ -167,20 +167,7 @@ impl PyParams {
 /// dimensionless), range, default, description and source in the paper.
 #[pyfunction]
 pub fn param_table<'py>(py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
-    PARAMS
-        .iter()
-        .map(|s| {
-            let d = PyDict::new(py);
-            d.set_item("name", s.name())?;
-            d.set_item("symbol", s.symbol)?;
-            d.set_item("unit", s.unit)?;
-            d.set_item("range", s.range.describe())?;
-            d.set_item("default", s.default_value())?;
-            d.set_item("description", s.description)?;
-            d.set_item("source", s.source)?;
-            Ok(d)
-        })
-        .collect()
+    table(py, PARAMS.iter().map(|s| Row { name: s.name(), symbol: Some(s.symbol), unit: s.unit, range: s.range.describe(), default: s.default_value(), description: s.description, source: Some(s.source) }))
 }
 
 /// One dict per numeric `[rig]` parameter (the keyword arguments of `simulate_cycle`):
@@ -188,16 +175,36 @@ pub fn param_table<'py>(py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
 #[pyfunction]
 pub fn rig_param_table<'py>(py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
     let def = pinjoint::rig::RigParams::default();
-    RIG_PARAMS
-        .iter()
-        .map(|s| {
-            let d = PyDict::new(py);
-            d.set_item("name", s.name())?;
-            d.set_item("unit", s.unit)?;
-            d.set_item("range", s.range.describe())?;
-            d.set_item("default", (s.get)(&def))?;
-            d.set_item("description", s.description)?;
-            Ok(d)
-        })
-        .collect()
+    table(py, RIG_PARAMS.iter().map(|s| Row { name: s.name(), symbol: None, unit: s.unit, range: s.range.describe(), default: (s.get)(&def), description: s.description, source: None }))
+}
+
+/// One row of a parameter table; `symbol` and `source` are keys only where given.
+struct Row {
+    name: String,
+    symbol: Option<&'static str>,
+    unit: &'static str,
+    range: String,
+    default: f64,
+    description: &'static str,
+    source: Option<&'static str>,
+}
+
+/// The rows as dicts, keys in the order name, symbol, unit, range, default, description, source.
+fn table<'py>(py: Python<'py>, rows: impl Iterator<Item = Row>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    rows.map(|r| {
+        let d = PyDict::new(py);
+        d.set_item("name", r.name)?;
+        if let Some(symbol) = r.symbol {
+            d.set_item("symbol", symbol)?;
+        }
+        d.set_item("unit", r.unit)?;
+        d.set_item("range", r.range)?;
+        d.set_item("default", r.default)?;
+        d.set_item("description", r.description)?;
+        if let Some(source) = r.source {
+            d.set_item("source", source)?;
+        }
+        Ok(d)
+    })
+    .collect()
 }

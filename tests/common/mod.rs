@@ -110,15 +110,37 @@ impl Host {
         c
     }
 
-    /// Instantiate, set `sets` (parameters and inputs, by name), initialize at `start`.
-    pub fn ready_at(&self, start: f64, sets: &[(&str, f64)]) -> Fmi2Component {
+    /// Instantiate, set up the experiment at t = 0 without a stop time and enter
+    /// initialization mode.
+    pub fn init_mode(&self) -> Fmi2Component {
+        let c = self.instantiate();
+        assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
+        assert_eq!(fmi2EnterInitializationMode(c), OK);
+        c
+    }
+
+    /// Instantiate, set up the experiment at `start`, set `sets` (parameters and inputs, by
+    /// name, each accepted), enter initialization mode; the instance and what
+    /// `fmi2ExitInitializationMode` returned.
+    pub fn initialize_at(&self, start: f64, sets: &[(&str, f64)]) -> (Fmi2Component, i32) {
         let c = self.instantiate();
         assert_eq!(fmi2SetupExperiment(c, 0, 0.0, start, 0, 0.0), OK);
         for (n, v) in sets {
             assert_eq!(set_in(self.info, c, n, *v), OK, "{n}: {}", self.last());
         }
         assert_eq!(fmi2EnterInitializationMode(c), OK);
-        assert_eq!(fmi2ExitInitializationMode(c), OK, "{}", self.last());
+        (c, fmi2ExitInitializationMode(c))
+    }
+
+    /// [`Host::initialize_at`] t = 0.
+    pub fn initialize(&self, sets: &[(&str, f64)]) -> (Fmi2Component, i32) {
+        self.initialize_at(0.0, sets)
+    }
+
+    /// Instantiate, set `sets` (parameters and inputs, by name), initialize at `start`.
+    pub fn ready_at(&self, start: f64, sets: &[(&str, f64)]) -> Fmi2Component {
+        let (c, status) = self.initialize_at(start, sets);
+        assert_eq!(status, OK, "{}", self.last());
         c
     }
 
@@ -198,8 +220,38 @@ pub fn free(c: Fmi2Component) {
     unsafe { fmi2FreeInstance(c) };
 }
 
+/// The instance's FMU state (`fmi2GetFMUstate`, which must succeed).
+pub fn get_state(c: Fmi2Component) -> Fmi2FmuState {
+    let mut s: Fmi2FmuState = std::ptr::null_mut();
+    assert_eq!(unsafe { fmi2GetFMUstate(c, &mut s) }, OK);
+    s
+}
+
+/// A state serialized (size, then the bytes; both must succeed).
+pub fn serialize(c: Fmi2Component, s: Fmi2FmuState) -> Vec<u8> {
+    let mut n = 0usize;
+    assert_eq!(unsafe { fmi2SerializedFMUstateSize(c, s, &mut n) }, OK);
+    let mut buf = vec![0u8; n];
+    assert_eq!(unsafe { fmi2SerializeFMUstate(c, s, buf.as_mut_ptr() as *mut Fmi2Byte, n) }, OK);
+    buf
+}
+
+/// `bytes` deserialized into a new state, or the status of the refusal.
+pub fn deserialize(c: Fmi2Component, bytes: &[u8]) -> Result<Fmi2FmuState, i32> {
+    let mut s: Fmi2FmuState = std::ptr::null_mut();
+    let st = unsafe { fmi2DeSerializeFMUstate(c, bytes.as_ptr() as *const Fmi2Byte, bytes.len(), &mut s) };
+    if st == OK { Ok(s) } else { Err(st) }
+}
+
 fn pin_joint() -> &'static ModelInfo {
     &pinjoint_fmu::pin_joint::INFO
+}
+
+/// A PinJoint host and an instance of it with the default parameters, initialized at t = 0.
+pub fn ready_pin_joint() -> (Host, Fmi2Component) {
+    let h = Host::new();
+    let c = h.ready(&[]);
+    (h, c)
 }
 
 /// PinJoint's GUID.

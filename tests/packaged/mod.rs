@@ -45,3 +45,14 @@ pub fn import(env_var: &str, info: &ModelInfo, tag: &str) -> fmi::fmi2::import::
     }
     import
 }
+
+/// A Co-Simulation instance `name` of `import` (logging on), its experiment set up at t = 0
+/// without tolerance or stop time.
+// Not used by every test that includes this module.
+#[allow(dead_code)]
+pub fn cs_instance(import: &fmi::fmi2::import::Fmi2Import, name: &str) -> fmi::fmi2::instance::InstanceCS {
+    use fmi::fmi2::instance::Common;
+    let mut inst = import.instantiate_cs(name, false, true).expect("instantiate");
+    inst.setup_experiment(None, 0.0, None).unwrap();
+    inst
+}

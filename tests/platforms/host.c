@@ -21,87 +21,7 @@
  *     unwinds (the cross-built ones link their own unwinder).
  * Exit status 0 when every call returned what it must, 1 otherwise, 2 on a load failure.
  */
-#if defined(_WIN32)
-#define __USE_MINGW_ANSI_STDIO 1 /* mingw's C99 printf: %.17g exact whatever the C runtime */
-#endif
-#include <math.h>
-#include <stdarg.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#if defined(_WIN32)
-#include <windows.h>
-typedef HMODULE Lib;
-static Lib lib_open(const char *path) { return LoadLibraryA(path); }
-static void *lib_sym(Lib l, const char *name) { return (void *)GetProcAddress(l, name); }
-static const char *lib_error(void) { static char buf[64]; snprintf(buf, sizeof buf, "Windows error %lu", (unsigned long)GetLastError()); return buf; }
-#else
-#include <dlfcn.h>
-typedef void *Lib;
-static Lib lib_open(const char *path) { return dlopen(path, RTLD_NOW | RTLD_LOCAL); }
-static void *lib_sym(Lib l, const char *name) { return dlsym(l, name); }
-static const char *lib_error(void) { return dlerror(); }
-#endif
-
-typedef void *C;
-typedef unsigned int VR;
-typedef void (*Logger)(void *, const char *, int, const char *, const char *, ...);
-typedef struct {
-    Logger logger;
-    void *(*allocateMemory)(size_t, size_t);
-    void (*freeMemory)(void *);
-    void (*stepFinished)(void *, int);
-    void *componentEnvironment;
-} Callbacks;
-
-enum { FMI_OK = 0, FMI_ERROR = 3, FMI_FATAL = 4 };
-static int last_status = -1;
-static char last_message[4096];
-
-static void logger(void *env, const char *name, int status, const char *category, const char *fmt, ...) {
-    va_list ap;
-    (void)env; (void)name; (void)category;
-    va_start(ap, fmt);
-    vsnprintf(last_message, sizeof last_message, fmt, ap);
-    va_end(ap);
-    last_status = status;
-}
-
-/* The FMI 2.0 functions this host calls. */
-typedef struct {
-    C (*Instantiate)(const char *, int, const char *, const char *, const Callbacks *, int, int);
-    void (*FreeInstance)(C);
-    int (*SetupExperiment)(C, int, double, double, int, double);
-    int (*EnterInitializationMode)(C);
-    int (*ExitInitializationMode)(C);
-    int (*Terminate)(C);
-    int (*SetReal)(C, const VR *, size_t, const double *);
-    int (*GetReal)(C, const VR *, size_t, double *);
-    int (*SetInteger)(C, const VR *, size_t, const int *);
-    int (*GetBoolean)(C, const VR *, size_t, int *);
-    int (*DoStep)(C, double, double, int);
-    int (*force_panic)(const char *);
-} Api;
-
-static int load(const char *path, Api *a) {
-    Lib l = lib_open(path);
-    if (!l) { fprintf(stderr, "cannot load %s: %s\n", path, lib_error()); return 0; }
-#define SYM(field, name) if (!(*(void **)&a->field = lib_sym(l, name))) { fprintf(stderr, "%s: missing %s\n", path, name); return 0; }
-    SYM(Instantiate, "fmi2Instantiate")
-    SYM(FreeInstance, "fmi2FreeInstance")
-    SYM(SetupExperiment, "fmi2SetupExperiment")
-    SYM(EnterInitializationMode, "fmi2EnterInitializationMode")
-    SYM(ExitInitializationMode, "fmi2ExitInitializationMode")
-    SYM(Terminate, "fmi2Terminate")
-    SYM(SetReal, "fmi2SetReal")
-    SYM(GetReal, "fmi2GetReal")
-    SYM(SetInteger, "fmi2SetInteger")
-    SYM(GetBoolean, "fmi2GetBoolean")
-    SYM(DoStep, "fmi2DoStep")
-    SYM(force_panic, "pinjoint_test_force_panic")
-#undef SYM
-    return 1;
-}
+#include "../c/fmi2_host.h"
 
 static int failures = 0;
 #define EXPECT(call, want) do { int s_ = (call); if (s_ != (want)) { \
@@ -201,7 +121,8 @@ int main(int argc, char **argv) {
         return 2;
     }
     Api pj, rg;
-    if (!load(argv[1], &pj) || !load(argv[3], &rg)) return 2;
+    if (!fmi2_host_load(argv[1], &pj) || !fmi2_host_load(argv[3], &rg)) return 2;
+    if (!pj.force_panic) { fprintf(stderr, "%s: missing pinjoint_test_force_panic\n", argv[1]); return 2; }
     for (int fidelity = 0; fidelity <= 1; fidelity++) pin_joint_grid(&pj, argv[2], "default", fidelity, NULL, NULL, 0);
     const VR vr[2] = {PJ_MU_C, PJ_BAND};
     const double x[2] = {0.11, 0.0};

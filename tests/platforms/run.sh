@@ -8,7 +8,7 @@
 #     the FMI 3.0 platform set in target/fmu/platforms/;
 #  3. fmu_build/tests/platform_binaries.rs: exports, needed libraries, glibc versions,
 #     Mach-O load commands of every binary;
-#  4. tests/platforms/host.c, compiled natively, for Windows and for aarch64 Linux, drives
+#  4. tests/platforms/host.c (with the C hosts' shared tests/c/fmi2_host.h), compiled natively, for Windows and for aarch64 Linux, drives
 #     PinJoint and PinJointRig through FMI 2.0 with the native build (reference), the
 #     FMU's linux64 binary, the FMU's win64 DLL under wine and the aarch64 library under
 #     qemu-aarch64; compare.py checks them against the reference and the library.

@@ -30,41 +30,51 @@ OUTPUTS = [
 DEFAULT_BAND = 0.01  # rad/s, zero_velocity.speed_band
 
 
-@pytest.fixture(scope="session")
-def fmu_path():
-    assert FMU.is_file(), f"{FMU} is missing: run `cargo run --release -p fmu_build` (or tests/python/run.sh)"
-    return str(FMU)
+def _fmu_fixtures(prefix, locate, tmp_name):
+    """The session fixtures of one FMU, named `<prefix>fmu_path` (the archive, which must
+    exist), `<prefix>unzipped` (extracted once) and `<prefix>model_description`; `locate()`
+    gives the archive's Path."""
+
+    def existing():
+        path = locate()
+        assert path.is_file(), f"{path} is missing: run `cargo run --release -p fmu_build` (or tests/python/run.sh)"
+        return str(path)
+
+    def extracted(tmp_path_factory):
+        from fmpy import extract
+        return extract(existing(), str(tmp_path_factory.mktemp(tmp_name)))
+
+    def described():
+        from fmpy import read_model_description
+        return read_model_description(existing())
+
+    session = {"scope": "session"}
+    return (pytest.fixture(existing, name=prefix + "fmu_path", **session),
+            pytest.fixture(extracted, name=prefix + "unzipped", **session),
+            pytest.fixture(described, name=prefix + "model_description", **session))
 
 
-@pytest.fixture(scope="session")
-def unzipped(fmu_path, tmp_path_factory):
-    from fmpy import extract
-    return extract(fmu_path, str(tmp_path_factory.mktemp("fmu")))
-
-
-@pytest.fixture(scope="session")
-def model_description(fmu_path):
-    from fmpy import read_model_description
-    return read_model_description(fmu_path)
-
-
-@pytest.fixture(scope="session")
-def rig_fmu_path():
+def _rig_fmu():
     from rig_support import RIG_FMU
-    assert RIG_FMU.is_file(), f"{RIG_FMU} is missing: run `cargo run --release -p fmu_build` (or tests/python/run.sh)"
-    return str(RIG_FMU)
+    return RIG_FMU
 
 
-@pytest.fixture(scope="session")
-def rig_unzipped(rig_fmu_path, tmp_path_factory):
-    from fmpy import extract
-    return extract(rig_fmu_path, str(tmp_path_factory.mktemp("rigfmu")))
+fmu_path, unzipped, model_description = _fmu_fixtures("", lambda: FMU, "fmu")
+rig_fmu_path, rig_unzipped, rig_model_description = _fmu_fixtures("rig_", _rig_fmu, "rigfmu")
 
 
-@pytest.fixture(scope="session")
-def rig_model_description(rig_fmu_path):
-    from fmpy import read_model_description
-    return read_model_description(rig_fmu_path)
+def failed_simulation(path, start_values, stop_time=0.1):
+    """Simulate `path` (fmpy) with `start_values`, which must fail: the exception's text
+    and every message the FMU logged.
+
+    A logger is passed: fmpy's logger proxy keeps the previous simulation's Python logger
+    otherwise, which crashes fmpy 0.3.32 once that one is freed."""
+    from fmpy import simulate_fmu
+    messages = []
+    with pytest.raises(Exception) as e:
+        simulate_fmu(path, stop_time=stop_time, start_values=start_values,
+                     logger=lambda env, name, status, cat, msg: messages.append(msg.decode()))
+    return str(e.value), messages
 
 
 def reference(load, omega, params=None):

@@ -2,7 +2,7 @@
 and bad arguments return fmi2Error with a message saying what was wrong, the
 interpreter survives, and the instance stays usable where the standard allows."""
 
-from ctypes import POINTER, byref, c_double, c_int, c_size_t, c_uint, c_void_p
+from ctypes import byref, c_double, c_int, c_size_t, c_uint, c_void_p
 
 import numpy as np
 import pytest

@@ -6,7 +6,7 @@
 mod common;
 // Not every test that includes this module uses every re-export (ERROR: rig_fmu_lifecycle only).
 #[allow(unused_imports)]
-pub use common::{free, Host, ERROR, OK};
+pub use common::{deserialize, free, get_state, serialize, Host, ERROR, OK};
 
 use fmi_layer::fmi2::types::Fmi2Component;
 use fmi_layer::fmi2::variables::{Kind, ModelInfo};
@@ -15,21 +15,14 @@ fn rig() -> &'static ModelInfo {
     &pinjoint_fmu::pin_joint_rig::INFO
 }
 
-/// Every output, in table order.
-pub const OUTPUTS: [&str; 12] = [
-    "angle",
-    "angular_velocity",
-    "torque",
-    "friction_torque",
-    "friction_coefficient",
-    "film_thickness",
-    "fluid_load_fraction",
-    "stuck",
-    "commanded_angle",
-    "actuator_work",
-    "friction_dissipation",
-    "kinetic_energy",
-];
+/// The position of output `name` in [`outputs`] (the table's order of the outputs).
+pub fn output_index(name: &str) -> usize {
+    rig().variables
+        .iter()
+        .filter(|v| v.causality == fmi_layer::fmi2::variables::Causality::Output)
+        .position(|v| v.name == name)
+        .unwrap_or_else(|| panic!("PinJointRig has no output {name}"))
+}
 
 /// The rig's GUID.
 pub fn guid() -> String {
@@ -89,4 +82,11 @@ pub fn step(h: &Host, c: Fmi2Component, t: f64, t_next: f64) -> Vec<f64> {
 /// A host of PinJointRig.
 pub fn new_host() -> Host {
     Host::for_model(rig())
+}
+
+/// A PinJointRig host and an instance of it with the default parameters, initialized at t = 0.
+pub fn ready_rig() -> (Host, Fmi2Component) {
+    let h = new_host();
+    let c = h.ready(&[]);
+    (h, c)
 }

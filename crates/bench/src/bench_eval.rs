@@ -7,11 +7,17 @@
 //! solve on the path and on random points of the envelope (a seed of this module, not used by
 //! the tests).
 
-use pinjoint::fidelity::check::CheckRng;
+use crate::eval_path::{ns_per_eval, path};
 use pinjoint::fidelity::{Envelope, ErrorReport, Evaluator, Fidelity};
 use pinjoint::{Joint, Params};
-use std::hint::black_box;
 use std::time::Instant;
+
+/// The seed of the random error points (not used by the tests).
+const SEED: u64 = 0x6265_6e63_6802;
+
+fn errors(ev: &mut Evaluator, j: &Joint, pts: &[(f64, f64)], random: usize) -> ErrorReport {
+    crate::eval_path::errors(ev, j, pts, random, SEED)
+}
 
 /// What one fidelity level (or cold/warm full solve) measured along the benchmark path of one envelope.
 #[derive(Debug, Clone, PartialEq)]
@@ -43,43 +49,6 @@ pub fn envelopes() -> [(&'static str, Envelope); 2] {
         ("rig: 5-60 kN, 0.01-10 rad/s", Envelope::new(5e3, 60e3, 0.01, 10.0).expect("valid")),
         ("wide: 5-60 kN, 0.01-100 rad/s", Envelope::new(5e3, 60e3, 0.01, 100.0).expect("valid")),
     ]
-}
-
-fn path(env: &Envelope, n: usize) -> Vec<(f64, f64)> {
-    (0..n)
-        .map(|k| {
-            let s = k as f64 / n as f64 * std::f64::consts::TAU;
-            let (p, w) = env.at_log_fraction(0.5 + 0.5 * (3.0 * s).sin(), 0.5 - 0.5 * (7.0 * s).cos());
-            (p, if (7.0 * s).sin() >= 0.0 { w } else { -w })
-        })
-        .collect()
-}
-
-fn ns_per_eval(mut f: impl FnMut(f64, f64) -> f64, pts: &[(f64, f64)], reps: usize) -> f64 {
-    let mut v: Vec<f64> = (0..reps)
-        .map(|_| {
-            let t = Instant::now();
-            let mut acc = 0.0;
-            for &(p, w) in pts {
-                acc += f(black_box(p), black_box(w));
-            }
-            black_box(acc);
-            t.elapsed().as_secs_f64() * 1e9 / pts.len() as f64
-        })
-        .collect();
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
-fn errors(ev: &mut Evaluator, j: &Joint, pts: &[(f64, f64)], random: usize) -> ErrorReport {
-    let env = *ev.envelope();
-    let mut rng = CheckRng::new(0x6265_6e63_6802);
-    let rand = (0..random).map(|_| env.at_log_fraction(rng.uniform(), rng.uniform()));
-    let mut r = ErrorReport::default();
-    for (p, w) in pts.iter().copied().chain(rand) {
-        r.add(&ev.evaluate(p, w).expect("inside the model's range"), &j.evaluate(p, w).expect("inside the model's range"));
-    }
-    r
 }
 
 /// Measure every level over both envelopes. `quick`: fewer points and repetitions.

@@ -7,6 +7,7 @@ mod bench_eval;
 mod bench_report;
 mod bench_rig;
 mod bench_throughput;
+mod eval_path;
 
 use clap::Parser;
 use std::process::ExitCode;

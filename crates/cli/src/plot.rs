@@ -12,6 +12,7 @@
 //! with a built-in estimate), so any SVG viewer renders it with its own sans-serif font.
 
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::chart::MeshStyle;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt;
@@ -222,17 +223,7 @@ pub fn tick_label(v: f64) -> String {
     if v == 0.0 {
         return "0".into();
     }
-    let a = v.abs();
-    if (1e-3..1e5).contains(&a) {
-        let decimals = (3 - a.log10().floor() as i32).clamp(0, 6) as usize;
-        let s = format!("{v:.decimals$}");
-        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
-    } else {
-        let s = format!("{v:.2e}");
-        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
-        let m = if m.contains('.') { m.trim_end_matches('0').trim_end_matches('.') } else { m };
-        format!("{m}e{e}")
-    }
+    crate::common::trimmed(v, 4, 2)
 }
 
 fn usable(scale: Scale, v: f64) -> bool {
@@ -334,6 +325,45 @@ macro_rules! with_ranges {
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 
+/// An axis coordinate over `f64` whose ticks can be labelled: what every chart here is drawn on.
+trait PlotAxis: AsRangedCoord<Value = f64, CoordDescType: ValueFormatter<f64>> {}
+impl<T: AsRangedCoord<Value = f64, CoordDescType: ValueFormatter<f64>>> PlotAxis for T {}
+
+/// [`tick_label`] of a value, for plotters' label formatters.
+fn tick_label_of(v: &f64) -> String {
+    tick_label(*v)
+}
+
+/// The axis descriptions of `x` and `y` on a mesh, with [`tick_label`] tick labels in the
+/// house fonts.
+fn labelled<'m, 'a, 'b, X, Y, DB>(mesh: &'m mut MeshStyle<'a, 'b, X, Y, DB>, x: &Axis, y: &Axis) -> &'m mut MeshStyle<'a, 'b, X, Y, DB>
+where
+    DB: DrawingBackend,
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    mesh.x_desc(x.label.as_str())
+        .y_desc(y.label.as_str())
+        .x_label_formatter(&tick_label_of)
+        .y_label_formatter(&tick_label_of)
+        .label_style((FONT, 13))
+        .axis_desc_style((FONT, 15))
+}
+
+/// A chart drawn on an [`Area`] over the coordinates of `X` and `Y`.
+type Plane<'a, 'b, X, Y> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<<X as AsRangedCoord>::CoordDescType, <Y as AsRangedCoord>::CoordDescType>>;
+
+/// A chart with a title on `area`, in the house layout (margin, label areas).
+fn titled_chart<'a, 'b, X: PlotAxis, Y: PlotAxis>(area: &'a Area<'b>, title: &str, x: X, y: Y) -> Result<Plane<'a, 'b, X, Y>, PlotError> {
+    ChartBuilder::on(area)
+        .caption(title, (FONT, 18))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x, y)
+        .map_err(err)
+}
+
 /// Render one chart to SVG.
 pub fn line_plot(chart: &Chart, size: (u32, u32)) -> Result<String, PlotError> {
     let mut svg = String::new();
@@ -426,27 +456,9 @@ fn draw_chart(area: &Area<'_>, c: &Chart, paths: &mut Vec<String>) -> Result<(),
     with_ranges!(c.x.scale, xr, c.y.scale, yr, |x, y| draw_chart_in(area, c, x, y, xr, yr, paths))
 }
 
-fn draw_chart_in<X, Y>(area: &Area<'_>, c: &Chart, x: X, y: Y, xr: (f64, f64), yr: (f64, f64), paths: &mut Vec<String>) -> Result<(), PlotError>
-where
-    X: AsRangedCoord<Value = f64>,
-    Y: AsRangedCoord<Value = f64>,
-    X::CoordDescType: ValueFormatter<f64>,
-    Y::CoordDescType: ValueFormatter<f64>,
-{
-    let mut ch = ChartBuilder::on(area)
-        .caption(&c.title, (FONT, 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x, y)
-        .map_err(err)?;
-    ch.configure_mesh()
-        .x_desc(c.x.label.as_str())
-        .y_desc(c.y.label.as_str())
-        .x_label_formatter(&|v| tick_label(*v))
-        .y_label_formatter(&|v| tick_label(*v))
-        .label_style((FONT, 13))
-        .axis_desc_style((FONT, 15))
+fn draw_chart_in<X: PlotAxis, Y: PlotAxis>(area: &Area<'_>, c: &Chart, x: X, y: Y, xr: (f64, f64), yr: (f64, f64), paths: &mut Vec<String>) -> Result<(), PlotError> {
+    let mut ch = titled_chart(area, &c.title, x, y)?;
+    labelled(&mut ch.configure_mesh(), &c.x, &c.y)
         .light_line_style(RGBColor(235, 235, 235))
         .draw()
         .map_err(err)?;
@@ -565,10 +577,10 @@ pub struct HeatMap {
     pub title: String,
     /// Horizontal axis (its range is that of `xs`).
     pub x: Axis,
-    /// Vertical axis (its range is that of `ys`).
-    pub y: Axis,
     /// Grid centres along x, increasing.
     pub xs: Vec<f64>,
+    /// Vertical axis (its range is that of `ys`).
+    pub y: Axis,
     /// Grid centres along y, increasing.
     pub ys: Vec<f64>,
     /// The values, `z[iy][ix]`, in the unit of `z_axis`.
@@ -701,20 +713,8 @@ pub fn heat_map(h: &HeatMap, size: (u32, u32)) -> Result<String, PlotError> {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn draw_heat_in<X, Y>(area: &Area<'_>, h: &HeatMap, x: X, y: Y, xe: &[f64], ye: &[f64], zr: (f64, f64)) -> Result<(), PlotError>
-where
-    X: AsRangedCoord<Value = f64>,
-    Y: AsRangedCoord<Value = f64>,
-    X::CoordDescType: ValueFormatter<f64>,
-    Y::CoordDescType: ValueFormatter<f64>,
-{
-    let mut ch = ChartBuilder::on(area)
-        .caption(&h.title, (FONT, 18))
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x, y)
-        .map_err(err)?;
+fn draw_heat_in<X: PlotAxis, Y: PlotAxis>(area: &Area<'_>, h: &HeatMap, x: X, y: Y, xe: &[f64], ye: &[f64], zr: (f64, f64)) -> Result<(), PlotError> {
+    let mut ch = titled_chart(area, &h.title, x, y)?;
     let mut cells = Vec::with_capacity(h.xs.len() * h.ys.len());
     for (j, row) in h.z.iter().enumerate() {
         for (i, &v) in row.iter().enumerate() {
@@ -723,14 +723,8 @@ where
         }
     }
     ch.draw_series(cells).map_err(err)?;
-    ch.configure_mesh()
+    labelled(&mut ch.configure_mesh(), &h.x, &h.y)
         .disable_mesh()
-        .x_desc(h.x.label.as_str())
-        .y_desc(h.y.label.as_str())
-        .x_label_formatter(&|v| tick_label(*v))
-        .y_label_formatter(&|v| tick_label(*v))
-        .label_style((FONT, 13))
-        .axis_desc_style((FONT, 15))
         .draw()
         .map_err(err)?;
 
@@ -782,13 +776,7 @@ where
 /// Tick mark length on the colour bar (px); labels sit twice as far from the bar.
 const COLOUR_BAR_TICK: i32 = 5;
 
-fn draw_colour_bar<X, Y>(area: &Area<'_>, h: &HeatMap, x: X, y: Y, zr: (f64, f64)) -> Result<(), PlotError>
-where
-    X: AsRangedCoord<Value = f64>,
-    Y: AsRangedCoord<Value = f64>,
-    X::CoordDescType: ValueFormatter<f64>,
-    Y::CoordDescType: ValueFormatter<f64>,
-{
+fn draw_colour_bar<X: PlotAxis, Y: PlotAxis>(area: &Area<'_>, h: &HeatMap, x: X, y: Y, zr: (f64, f64)) -> Result<(), PlotError> {
     let mut ch = ChartBuilder::on(area)
         .margin_top(42)
         .margin_bottom(57)
