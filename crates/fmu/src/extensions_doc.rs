@@ -10,7 +10,8 @@ Pan &amp; Hamrock's (1989, ASME J. Tribol. 111, 246&ndash;251) line-contact rati
 r = (1.714/2.922) W&prime;<sup>0.038</sup> U<sup>0.002</sup> G<sup>0.098</sup> (U on the mean velocity u/2), with eq. 13's substitution
 E&prime;&rarr;E&prime;/&gamma;<sub>1</sub>, P<sub>T</sub>&rarr;P<sub>T</sub>/&gamma;<sub>1</sub> (U&rarr;&gamma;<sub>1</sub>U, G&rarr;G/&gamma;<sub>1</sub>), capped at 1.
 Validity: the fits are for heavily loaded elastic&ndash;piezoviscous contacts (W&prime; of order 1e-5); this joint has W&prime; &asymp; 2e-8&ndash;2e-7,
-so h<sub>min</sub> is an extrapolation, and as the fluid share goes to 0 (speed &rarr; 0) r goes to 0: 0 at rest.</li>
+so h<sub>min</sub> is an extrapolation, and as the fluid share goes to 0 (speed &rarr; 0) r goes to 0: 0 at rest. The coefficients and exponents
+are the printed fits (tested); Pan &amp; Hamrock's own check values and stated validity range were not available, so the range above is from memory.</li>
 <li><b>Temperature</b> (input <code>temperature</code>, K, display degC; parameters <code>lubricant.reference_temperature</code>,
 <code>lubricant.roelands_temperature_index</code>): &eta;<sub>0</sub> and &alpha; of Table 3 hold at the reference temperature (default 293.15 K,
 the paper's room temperature, assumed). Roelands' temperature relation ln(&eta;<sub>0</sub>(T)/&eta;<sub>&infin;</sub>) = ln(&eta;<sub>0</sub>(T<sub>ref</sub>)/&eta;<sub>&infin;</sub>)&middot;f,
@@ -23,7 +24,9 @@ The parameter <code>lubricant.temperature</code> exists because every parameter-
 <li><b>Starved inlet</b> (parameters <code>starvation.inlet_layer_inverse</code> = 1/h<sub>oil</sub> in 1/m, default 0 = fully flooded, the paper's model;
 <code>starvation.exponent</code> &gamma;<sub>s</sub>, default 2.8): the film of eq. 13 is replaced by h<sup>&minus;&gamma;<sub>s</sub></sup> = h<sub>13</sub><sup>&minus;&gamma;<sub>s</sub></sup> + h<sub>oil</sub><sup>&minus;&gamma;<sub>s</sub></sup>,
 Chevalier et al.'s (1998, ASME J. Tribol. 120, 126&ndash;133) starvation relation h/h<sub>ff</sub> = R/(1 + R<sup>&gamma;<sub>s</sub></sup>)<sup>1/&gamma;<sub>s</sub></sup>, R = h<sub>oil</sub>/h<sub>ff</sub>,
-inside the load-sharing solve. A phenomenological stand-in for the grease the stroke squeezes out (the paper, section 5); fit it to
+inside the load-sharing solve. <b>Not verified against the source</b>: neither Chevalier et al. nor Damiens et al. (2004) was available, and
+no published example of the relation was found; the form and &gamma;<sub>s</sub> = 2.8 are written from memory, and only the relation's limits
+(flooded as h<sub>oil</sub> &rarr; &infin;, h &rarr; h<sub>oil</sub> for a thin layer) are tested. A phenomenological stand-in for the grease the stroke squeezes out (the paper, section 5); fit it to
 measurements (<code>pinjoint calibrate</code> can fit <code>starvation.inlet_layer_inverse</code>).</li>
 </ul>
 "#;
