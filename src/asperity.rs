@@ -80,9 +80,16 @@ impl AsperityGroups {
 
     /// [`Self::required_ln_f32`] and its derivative with respect to ln x2.
     pub fn required_ln_f32_slope(&self, ln_x2: f64) -> (f64, f64) {
+        let (v, d, _) = self.required_ln_f32_grad(ln_x2);
+        (v, d)
+    }
+
+    /// [`Self::required_ln_f32`], its derivative with respect to ln x2, and its derivative
+    /// with respect to ln K (the sigmoid of eq. 18's bracket; ∂/∂ln C is −1).
+    pub fn required_ln_f32_grad(&self, ln_x2: f64) -> (f64, f64, f64) {
         let z = A4 * (self.ln_k - A2 * ln_x2);
         let (sp, sigmoid) = softplus_sigmoid(z);
-        (ln_x2 + sp / A4 - self.ln_c, 1.0 - A2 * sigmoid)
+        (ln_x2 + sp / A4 - self.ln_c, 1.0 - A2 * sigmoid, sigmoid)
     }
 }
 
