@@ -430,8 +430,7 @@ impl Joint {
     /// `torque` and `friction_coefficient` of [`Joint::evaluate_from`] with the same guess,
     /// without the quantities a time integration of the torque does not need (h_min, S, λ),
     /// and with the solve's sensitivities for the next start. Errors as
-    /// [`Joint::evaluate_from`] for a non-finite speed, a non-finite μ or torque, or a film
-    /// thickness that is not a finite positive number.
+    /// [`Joint::evaluate_from`] (the same checks on the same numbers).
     pub fn friction_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> Result<Friction, ModelError> {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
@@ -439,15 +438,25 @@ impl Joint {
         let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess);
         let mu = mu_fluid + mu_asperity;
         let torque = mu * self.params.geometry.pin_radius * lt.load;
-        let not_finite = |quantity, value| ModelError::NotFinite { quantity, value, load: lt.load, omega };
-        if !mu.is_finite() {
-            return Err(not_finite("friction_coefficient", mu));
-        }
-        if !torque.is_finite() {
-            return Err(not_finite("torque", torque));
-        }
-        if !(ls.film_thickness.is_finite() && ls.film_thickness > 0.0) {
-            return Err(not_finite("film_thickness", ls.film_thickness));
+        // The checks of `check_finite`, in its order, on the same numbers (h_min and λ_min are
+        // finite whenever h_c is: h_min = h_c·e^{ln r} with ln r ≤ 0 or −∞).
+        let hz = &lt.hertz;
+        let fields = [
+            ("friction_coefficient", mu),
+            ("torque", torque),
+            ("film_thickness", ls.film_thickness),
+            ("lambda_ratio", ls.film_thickness / self.roughness),
+            ("fluid_load_fraction", ls.fluid_fraction),
+            ("asperity_load_fraction", ls.asperity_fraction),
+            ("mean_pressure", hz.mean_pressure),
+            ("peak_pressure", hz.peak_pressure),
+            ("contact_half_width", hz.half_width),
+            ("sommerfeld_number", self.sommerfeld(lt, omega)),
+        ];
+        for (quantity, value) in fields {
+            if !value.is_finite() || (quantity == "film_thickness" && value <= 0.0) {
+                return Err(ModelError::NotFinite { quantity, value, load: lt.load, omega });
+            }
         }
         Ok(Friction {
             friction_coefficient: mu,
@@ -455,6 +464,7 @@ impl Joint {
             logit: ls.logit,
             dlogit_dln_load: ls.dlogit_dln_load,
             dlogit_dln_speed: ls.dlogit_dln_speed,
+            evaluations: ls.evaluations,
         })
     }
 
@@ -532,6 +542,8 @@ pub struct Friction {
     pub dlogit_dln_load: f64,
     /// ∂logit/∂ln u at fixed load (0 at rest).
     pub dlogit_dln_speed: f64,
+    /// Residual evaluations the solve took.
+    pub evaluations: u32,
 }
 
 /// Solve eq. 19 at rest for the load at which h_c = 0, i.e. t = −d_d/σ_s. The required

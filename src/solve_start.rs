@@ -126,27 +126,31 @@ impl StartTable {
         };
         let (i, fp) = cell(ln_p, self.ln_p0, self.dp, self.np);
         let (j, fu) = cell(ln_u, self.ln_u0, self.du, self.nu);
-        let k = |a: usize, b: usize| a.min(self.np - 1) * self.nu + b.min(self.nu - 1);
-        let at = |a: usize, b: usize| &self.nodes[k(a, b)];
-        // Along ln u in each of the two rows: the value and ∂y/∂ln P, each cubic Hermite.
-        let row = |a: usize| {
-            let (n0, n1) = (at(a, j), at(a, j + 1));
-            let v = hermite(fu, n0.y, self.du * n0.dy_dln_speed, n1.y, self.du * n1.dy_dln_speed);
-            let (c0, c1) = (self.cross[k(a, j)], self.cross[k(a, j + 1)]);
-            let g = hermite(fu, n0.dy_dln_load, self.du * c0, n1.dy_dln_load, self.du * c1);
-            (v, self.dp * g)
-        };
-        let ((v0, g0), (v1, g1)) = (row(i), row(i + 1));
+        let (i1, j1) = ((i + 1).min(self.np - 1), (j + 1).min(self.nu - 1));
+        let (v0, g0) = self.row(i * self.nu, j, j1, fu);
+        let (v1, g1) = self.row(i1 * self.nu, j, j1, fu);
         let y = hermite(fp, v0, g0, v1, g1);
         if y.is_finite() {
             y
         } else {
             // A corner without derivatives (or without a root): the bilinear value (NaN if a
             // corner has no root).
-            let lo = at(i, j).y + fu * (at(i, j + 1).y - at(i, j).y);
-            let hi = at(i + 1, j).y + fu * (at(i + 1, j + 1).y - at(i + 1, j).y);
+            let at = |a: usize, b: usize| self.nodes[a * self.nu + b].y;
+            let lo = at(i, j) + fu * (at(i, j1) - at(i, j));
+            let hi = at(i1, j) + fu * (at(i1, j1) - at(i1, j));
             lo + fp * (hi - lo)
         }
+    }
+
+    /// Along ln u in the row starting at node `base`, between columns `j` and `j1` at
+    /// fraction `fu`: the value and Δln P·∂y/∂ln P, each cubic Hermite.
+    #[inline]
+    fn row(&self, base: usize, j: usize, j1: usize, fu: f64) -> (f64, f64) {
+        let (n0, n1) = (&self.nodes[base + j], &self.nodes[base + j1]);
+        let v = hermite(fu, n0.y, self.du * n0.dy_dln_speed, n1.y, self.du * n1.dy_dln_speed);
+        let (c0, c1) = (self.cross[base + j], self.cross[base + j1]);
+        let g = hermite(fu, n0.dy_dln_load, self.du * c0, n1.dy_dln_load, self.du * c1);
+        (v, self.dp * g)
     }
 
     /// Nodes in the table.
