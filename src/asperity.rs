@@ -28,8 +28,8 @@ pub fn softplus(x: f64) -> f64 {
 
 /// `ln(1 + eˣ)` and its derivative `1/(1 + e^{−x})`, from one exponential.
 pub fn softplus_sigmoid(x: f64) -> (f64, f64) {
-    let e = (-x.abs()).exp();
-    let l = (1.0 + e).ln();
+    let e = crate::fast_math::exp(-x.abs());
+    let l = crate::fast_math::ln_1p_unit(e);
     if x > 0.0 { (x + l, 1.0 / (1.0 + e)) } else { (l, e / (1.0 + e)) }
 }
 

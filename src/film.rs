@@ -20,6 +20,8 @@ pub fn log_add_exp(a: f64, b: f64) -> f64 {
     hi + (lo - hi).exp().ln_1p()
 }
 
+use crate::fast_math::exp;
+
 const LN_3: f64 = 1.098_612_288_668_109_8; // ln 3
 const C_EI: f64 = 2.621;
 const C_RP: f64 = 1.287;
@@ -51,8 +53,8 @@ pub fn ln_moes_grad(ln_m: f64, ln_l: f64) -> (f64, f64, f64, f64) {
     let ln_hei = LN_C_EI - ln_m / 5.0;
     let ln_hrp = LN_C_RP + 2.0 / 3.0 * ln_l;
     let ln_hep = LN_C_EP - ln_m / 8.0 + 0.75 * ln_l;
-    let q = (ln_hei - ln_hri).exp(); // H_EI/H_RI
-    let e2q = (-2.0 * q).exp();
+    let q = exp(ln_hei - ln_hri); // H_EI/H_RI
+    let e2q = exp(-2.0 * q);
     let s = (7.0 + 8.0 * e2q) / 5.0;
     // A = ln(H_RI^{7/3} + H_EI^{7/3}), B = ln(H_RP^{-7/2} + H_EP^{-7/2}), with softmax weights.
     let (a, va) = log_add_exp_weight(7.0 / 3.0 * ln_hri, 7.0 / 3.0 * ln_hei);
@@ -81,11 +83,11 @@ fn log_add_exp_weight(a: f64, b: f64) -> (f64, f64) {
     if lo == f64::NEG_INFINITY || hi == f64::INFINITY {
         return (hi, if a_hi { 1.0 } else { 0.0 });
     }
-    let e = (lo - hi).exp(); // ≤ 1
+    let e = exp(lo - hi); // ≤ 1
     let w_hi = 1.0 / (1.0 + e);
-    // ln(1 + e) rather than ln_1p(e): an absolute error of ε in a logarithm is a relative
-    // error of ε in the quantity, and ln is about half the cost of ln_1p (callgrind).
-    (hi + (1.0 + e).ln(), if a_hi { w_hi } else { e * w_hi })
+    // ln(1 + e) to an absolute error of ε (crate::fast_math::ln_1p_unit): an absolute error of ε
+    // in a logarithm is a relative error of ε in the quantity.
+    (hi + crate::fast_math::ln_1p_unit(e), if a_hi { w_hi } else { e * w_hi })
 }
 
 /// Unscaled Moes central film H_C (eq. 12) and its exponent s.

@@ -416,7 +416,7 @@ impl Joint {
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
         let mu_fluid = if u > 0.0 {
             let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ls.film_thickness.ln();
-            lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-ln_x.exp()).exp_m1()
+            lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::fast_math::exp(ln_x)).exp_m1()
         } else {
             0.0
         };

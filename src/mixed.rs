@@ -22,6 +22,7 @@
 use crate::asperity::{AsperityGroups, A2, A3};
 use crate::film::{ln_scaled_moes, ln_scaled_moes_grad};
 use crate::gw::{inverse_ln_f32, ln_f32_slope};
+use crate::fast_math::exp;
 use crate::newton::newton_increasing;
 use crate::params::Surface;
 
@@ -155,7 +156,7 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
             dln_h *= ws;
             w = ws;
         }
-        let h = ln_h.exp();
+        let h = exp(ln_h);
         let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
         let (ln_f, dln_f) = ln_f32_slope(t);
         let (req, dreq, sigmoid) = asp.required_ln_f32_grad(sh.ln_x2); // d ln x2/dy = −x1
@@ -177,7 +178,7 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
         fluid_fraction: sh.x1,
         asperity_fraction: sh.x2,
         logit: y,
-        film_thickness: ln_h.exp(),
+        film_thickness: exp(ln_h),
         evaluations,
         dlogit_dln_load: finite_or_zero(last.3),
         dlogit_dln_speed: finite_or_zero(last.4),
@@ -196,8 +197,8 @@ struct Shares {
 
 impl Shares {
     fn new(y: f64) -> Self {
-        let e = (-y.abs()).exp();
-        let l = (1.0 + e).ln(); // absolute accuracy ε suffices for logarithms (see film.rs)
+        let e = exp(-y.abs());
+        let l = crate::fast_math::ln_1p_unit(e); // absolute accuracy ε suffices for logarithms (see film.rs)
         let (big, small) = (1.0 / (1.0 + e), e / (1.0 + e));
         if y >= 0.0 {
             Shares { x1: big, x2: small, ln_x1: -l, ln_x2: -y - l }
