@@ -313,15 +313,28 @@ impl Joint {
     /// Hertz quantities, sliding speed, Sommerfeld number and the rheology at p_m: the parts
     /// of an operating point that do not need the load-sharing solve.
     pub fn load_speed(&self, load: f64, omega: f64) -> LoadSpeed {
-        let lt = self.load_terms_unchecked(load.abs());
+        let load = load.abs();
+        let (hertz, ln_eta, tau_l) = self.rheology(load);
         LoadSpeed {
-            hertz: lt.hertz,
+            hertz,
             sliding_speed: omega.abs() * self.params.geometry.pin_radius,
-            sommerfeld_number: self.sommerfeld(&lt, omega),
-            contact_viscosity: lt.contact_viscosity,
-            ln_contact_viscosity: lt.ln_contact_viscosity,
-            limiting_shear_stress: lt.limiting_shear_stress,
+            sommerfeld_number: self.sommerfeld_at(load / self.projected_area, omega),
+            contact_viscosity: ln_eta.exp(),
+            ln_contact_viscosity: ln_eta,
+            limiting_shear_stress: tau_l,
         }
+    }
+
+    /// Eq. 6 under `load` (scaled from 1 N: a, p_m, p0 ∝ √P_T), ln η (eq. 5) and τ_L (eq. 4) at p_m.
+    fn rheology(&self, load: f64) -> (crate::contact::Hertz, f64, f64) {
+        let sqrt_p = load.sqrt();
+        let hertz = crate::contact::Hertz {
+            half_width: self.hertz_unit.half_width * sqrt_p,
+            mean_pressure: self.hertz_unit.mean_pressure * sqrt_p,
+            peak_pressure: self.hertz_unit.peak_pressure * sqrt_p,
+        };
+        let ln_eta = ln_roelands_from(&self.lub, hertz.mean_pressure, self.ln_eta0, self.ln_eta_ratio);
+        (hertz, ln_eta, limiting_shear_stress(&self.lub, hertz.mean_pressure))
     }
 
     /// The parts of an evaluation that depend on the load alone, checked as
@@ -339,15 +352,7 @@ impl Joint {
     }
 
     fn load_terms_unchecked(&self, load: f64) -> LoadTerms {
-        // Eq. 6 scaled from 1 N: a, p_m, p0 ∝ √P_T.
-        let sqrt_p = load.sqrt();
-        let hertz = crate::contact::Hertz {
-            half_width: self.hertz_unit.half_width * sqrt_p,
-            mean_pressure: self.hertz_unit.mean_pressure * sqrt_p,
-            peak_pressure: self.hertz_unit.peak_pressure * sqrt_p,
-        };
-        let ln_eta = ln_roelands_from(&self.lub, hertz.mean_pressure, self.ln_eta0, self.ln_eta_ratio);
-        let tau_l = limiting_shear_stress(&self.lub, hertz.mean_pressure);
+        let (hertz, ln_eta, tau_l) = self.rheology(load);
         let ln_load = load.ln();
         LoadTerms {
             load,
@@ -364,7 +369,12 @@ impl Joint {
 
     /// S, eq. 20, with P_L = P/(2RB) and c = R_b − R.
     fn sommerfeld(&self, lt: &LoadTerms, omega: f64) -> f64 {
-        self.lub.viscosity * omega.abs() / (2.0 * PI * lt.line_load) * self.clearance_ratio_sq
+        self.sommerfeld_at(lt.line_load, omega)
+    }
+
+    #[inline]
+    fn sommerfeld_at(&self, line_load: f64, omega: f64) -> f64 {
+        self.lub.viscosity * omega.abs() / (2.0 * PI * line_load) * self.clearance_ratio_sq
     }
 
     /// The boundary-friction torque μ_c R |P| at `load` (N): the ω → 0 limit of eq. 11.
@@ -415,7 +425,7 @@ impl Joint {
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (MODEL_NOTES), whatever η.
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
         let mu_fluid = if u > 0.0 {
-            let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ls.film_thickness.ln();
+            let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ls.ln_film_thickness;
             lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::fast_math::exp(ln_x)).exp_m1()
         } else {
             0.0

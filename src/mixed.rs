@@ -73,6 +73,8 @@ pub struct LoadSharing {
     pub logit: f64,
     /// Central film thickness h_c (m).
     pub film_thickness: f64,
+    /// ln h_c, as the solve has it (h_c is its exponential).
+    pub ln_film_thickness: f64,
     /// Residual evaluations used.
     pub evaluations: u32,
     /// ∂y/∂ln P_T of the root at fixed speed (implicit function theorem at the last
@@ -116,11 +118,13 @@ pub struct StarvedInlet {
 pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>) -> LoadSharing {
     let rest = |asp: &AsperityGroups| {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
+        let h = s.summit_mean_plane_offset + t * s.summit_height_std;
         LoadSharing {
             fluid_fraction: 0.0,
             asperity_fraction: 1.0,
             logit: f64::NEG_INFINITY,
-            film_thickness: s.summit_mean_plane_offset + t * s.summit_height_std,
+            film_thickness: h,
+            ln_film_thickness: h.ln(),
             evaluations: 0,
             dlogit_dln_load: 0.0,
             dlogit_dln_speed: 0.0,
@@ -179,6 +183,7 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
         asperity_fraction: sh.x2,
         logit: y,
         film_thickness: exp(ln_h),
+        ln_film_thickness: ln_h,
         evaluations,
         dlogit_dln_load: finite_or_zero(last.3),
         dlogit_dln_speed: finite_or_zero(last.4),
