@@ -91,7 +91,7 @@ impl StartTable {
             for j in 0..nu {
                 let v = root(ln_p, ln_u0 + du * j as f64, warm);
                 // The next node's start: first order in ln u from this one.
-                warm = v.y.is_finite().then(|| v.y + du * v.dy_dln_speed).filter(|w| w.is_finite());
+                warm = Some(v.y + du * v.dy_dln_speed).filter(|w| w.is_finite());
                 nodes.push(v);
             }
         }

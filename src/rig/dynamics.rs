@@ -85,7 +85,7 @@ impl Predictor {
     fn predict(&self, y: f64, load: f64, speed: f64) -> Option<f64> {
         let d_ln = |x: f64, x0: f64| 2.0 * (x - x0) / (x + x0);
         let (dp, du) = (d_ln(load, self.load), d_ln(speed, self.speed));
-        (du.abs() <= 0.5 && dp.abs() <= 0.5).then(|| y + self.dy_dln_load * dp + self.dy_dln_speed * du)
+        (du.abs() <= 0.5 && dp.abs() <= 0.5).then_some(y + self.dy_dln_load * dp + self.dy_dln_speed * du)
     }
 }
 
