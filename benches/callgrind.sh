@@ -8,12 +8,14 @@
 #
 #   bash benches/callgrind.sh [OUTDIR]      # default: the repository root
 #
+# (`sed -n 1,60p` rather than `head`: under pipefail, head closing the pipe early fails the script.)
 # Needs valgrind (callgrind_annotate), a C compiler, python3; builds the binaries and FMU.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 OUT="${1:-$ROOT}"
-cargo build --release -q --bin pinjoint --example icount
+cargo build --release -q --bin pinjoint
+cargo build --release -q -p pinjoint --example icount
 cargo run --release -q -p fmu_build >/dev/null
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
@@ -30,8 +32,8 @@ with open(sys.argv[1], "w") as f:
 PY
 annotate() { # file title
     { echo "# $2"; echo "# valgrind --tool=callgrind, $(valgrind --version); callgrind_annotate (self, then inclusive)"; echo;
-      callgrind_annotate --threshold=99 "$1" | head -60; echo; echo "## inclusive";
-      callgrind_annotate --inclusive=yes --threshold=99 "$1" | head -60; } > "$3"
+      callgrind_annotate --threshold=99 "$1" | sed -n 1,60p; echo; echo "## inclusive";
+      callgrind_annotate --inclusive=yes --threshold=99 "$1" | sed -n 1,60p; } > "$3"
 }
 RAYON_NUM_THREADS=1 valgrind --tool=callgrind --callgrind-out-file="$work/sweep.out" \
     target/release/pinjoint sweep --input "$work/in.csv" --output "$work/out.csv" 2>/dev/null

@@ -28,8 +28,8 @@ pub fn softplus(x: f64) -> f64 {
 
 /// `ln(1 + eˣ)` and its derivative `1/(1 + e^{−x})`, from one exponential.
 pub fn softplus_sigmoid(x: f64) -> (f64, f64) {
-    let e = (-x.abs()).exp();
-    let l = (1.0 + e).ln();
+    let e = crate::fast_math::exp(-x.abs());
+    let l = crate::fast_math::ln_1p_unit(e);
     if x > 0.0 { (x + l, 1.0 / (1.0 + e)) } else { (l, e / (1.0 + e)) }
 }
 
@@ -80,9 +80,16 @@ impl AsperityGroups {
 
     /// [`Self::required_ln_f32`] and its derivative with respect to ln x2.
     pub fn required_ln_f32_slope(&self, ln_x2: f64) -> (f64, f64) {
+        let (v, d, _) = self.required_ln_f32_grad(ln_x2);
+        (v, d)
+    }
+
+    /// [`Self::required_ln_f32`], its derivative with respect to ln x2, and its derivative
+    /// with respect to ln K (the sigmoid of eq. 18's bracket; ∂/∂ln C is −1).
+    pub fn required_ln_f32_grad(&self, ln_x2: f64) -> (f64, f64, f64) {
         let z = A4 * (self.ln_k - A2 * ln_x2);
         let (sp, sigmoid) = softplus_sigmoid(z);
-        (ln_x2 + sp / A4 - self.ln_c, 1.0 - A2 * sigmoid)
+        (ln_x2 + sp / A4 - self.ln_c, 1.0 - A2 * sigmoid, sigmoid)
     }
 }
 

@@ -20,6 +20,8 @@ pub fn log_add_exp(a: f64, b: f64) -> f64 {
     hi + (lo - hi).exp().ln_1p()
 }
 
+use crate::fast_math::exp;
+
 const LN_3: f64 = 1.098_612_288_668_109_8; // ln 3
 const C_EI: f64 = 2.621;
 const C_RP: f64 = 1.287;
@@ -39,30 +41,36 @@ pub fn ln_moes(ln_m: f64, ln_l: f64) -> (f64, f64) {
 /// a change (d ln M, d ln L) = (`dm`, `dl`). The derivative is exact (chain rule through
 /// the log-sum-exp weights and through s); it costs no extra transcendental function.
 pub fn ln_moes_slope(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) {
+    let (ln_h, s, g_m, g_l) = ln_moes_grad(ln_m, ln_l);
+    (ln_h, s, g_m * dm + g_l * dl)
+}
+
+/// Eq. 12 in logarithms with its gradient: returns (ln H_C, s, ∂ln H_C/∂ln M, ∂ln H_C/∂ln L).
+/// Exact (chain rule through the log-sum-exp weights and through s), from the same five
+/// exponentials and three logarithms as the value.
+pub fn ln_moes_grad(ln_m: f64, ln_l: f64) -> (f64, f64, f64, f64) {
     let ln_hri = LN_3 - ln_m;
     let ln_hei = LN_C_EI - ln_m / 5.0;
     let ln_hrp = LN_C_RP + 2.0 / 3.0 * ln_l;
     let ln_hep = LN_C_EP - ln_m / 8.0 + 0.75 * ln_l;
-    let q = (ln_hei - ln_hri).exp(); // H_EI/H_RI
-    let e2q = (-2.0 * q).exp();
+    let q = exp(ln_hei - ln_hri); // H_EI/H_RI
+    let e2q = exp(-2.0 * q);
     let s = (7.0 + 8.0 * e2q) / 5.0;
     // A = ln(H_RI^{7/3} + H_EI^{7/3}), B = ln(H_RP^{-7/2} + H_EP^{-7/2}), with softmax weights.
     let (a, va) = log_add_exp_weight(7.0 / 3.0 * ln_hri, 7.0 / 3.0 * ln_hei);
     let (b, ub) = log_add_exp_weight(-3.5 * ln_hrp, -3.5 * ln_hep);
     let (phi, w1) = log_add_exp_weight(3.0 * s / 7.0 * a, -2.0 * s / 7.0 * b);
     let ln_h = phi / s;
-    // Directional derivatives of the four ln H's.
-    let d_hri = -dm;
-    let d_hei = -dm / 5.0;
-    let d_hrp = 2.0 / 3.0 * dl;
-    let d_hep = -dm / 8.0 + 0.75 * dl;
-    let ds = 8.0 / 5.0 * e2q * (-2.0 * q) * (d_hei - d_hri);
+    // ∂/∂ln M of the four ln H's: −1, −1/5, 0, −1/8; ∂/∂ln L: 0, 0, 2/3, 3/4.
+    // s depends on ln M only: ∂s/∂ln M = (8/5) e^{−2q} (−2q) ∂ln q/∂ln M, ∂ln q/∂ln M = 4/5.
+    let ds_m = 8.0 / 5.0 * e2q * (-2.0 * q) * 0.8;
     let w2 = 1.0 - w1;
-    let da_term = va * d_hri + (1.0 - va) * d_hei; // (3/7)·dA
-    let db_term = ub * d_hrp + (1.0 - ub) * d_hep; // −(2/7)·dB
+    let da_m = -va - (1.0 - va) / 5.0; // (3/7)·∂A/∂ln M
+    let db_m = -(1.0 - ub) / 8.0; // −(2/7)·∂B/∂ln M
+    let db_l = ub * (2.0 / 3.0) + (1.0 - ub) * 0.75; // −(2/7)·∂B/∂ln L
     let terms = if w1 > 0.0 { 3.0 / 7.0 * w1 * a } else { 0.0 } - if w2 > 0.0 { 2.0 / 7.0 * w2 * b } else { 0.0 };
-    let d_ln_h = if ds != 0.0 { ds * (-phi / (s * s) + terms / s) } else { 0.0 } + w1 * da_term + w2 * db_term;
-    (ln_h, s, d_ln_h)
+    let g_m = if ds_m != 0.0 { ds_m * (-phi / (s * s) + terms / s) } else { 0.0 } + w1 * da_m + w2 * db_m;
+    (ln_h, s, g_m, w2 * db_l)
 }
 
 /// ln(eᵃ + eᵇ) and the weight eᵃ/(eᵃ + eᵇ) of its first argument, from one exponential.
@@ -75,11 +83,11 @@ fn log_add_exp_weight(a: f64, b: f64) -> (f64, f64) {
     if lo == f64::NEG_INFINITY || hi == f64::INFINITY {
         return (hi, if a_hi { 1.0 } else { 0.0 });
     }
-    let e = (lo - hi).exp(); // ≤ 1
+    let e = exp(lo - hi); // ≤ 1
     let w_hi = 1.0 / (1.0 + e);
-    // ln(1 + e) rather than ln_1p(e): an absolute error of ε in a logarithm is a relative
-    // error of ε in the quantity, and ln is about half the cost of ln_1p (callgrind).
-    (hi + (1.0 + e).ln(), if a_hi { w_hi } else { e * w_hi })
+    // ln(1 + e) to an absolute error of ε (crate::fast_math::ln_1p_unit): an absolute error of ε
+    // in a logarithm is a relative error of ε in the quantity.
+    (hi + crate::fast_math::ln_1p_unit(e), if a_hi { w_hi } else { e * w_hi })
 }
 
 /// Unscaled Moes central film H_C (eq. 12) and its exponent s.
@@ -101,8 +109,15 @@ pub fn ln_scaled_moes(ln_m: f64, ln_l: f64, ln_x1: f64) -> (f64, f64) {
 
 /// [`ln_scaled_moes`] and its derivative with respect to ln x1.
 pub fn ln_scaled_moes_slope(ln_m: f64, ln_l: f64, ln_x1: f64) -> (f64, f64) {
-    let (ln_h, _, d) = ln_moes_slope(ln_m + 0.5 * ln_x1, ln_l + 0.75 * ln_x1, 0.5, 0.75);
-    (ln_h - 0.5 * ln_x1, d - 0.5)
+    let (ln_h, g_m, g_l) = ln_scaled_moes_grad(ln_m, ln_l, ln_x1);
+    (ln_h, 0.5 * g_m + 0.75 * g_l - 0.5)
+}
+
+/// [`ln_scaled_moes`] and its partial derivatives with respect to ln M and ln L (at fixed
+/// ln x1); its derivative with respect to ln x1 is `0.5·∂_M + 0.75·∂_L − 0.5`.
+pub fn ln_scaled_moes_grad(ln_m: f64, ln_l: f64, ln_x1: f64) -> (f64, f64, f64) {
+    let (ln_h, _, g_m, g_l) = ln_moes_grad(ln_m + 0.5 * ln_x1, ln_l + 0.75 * ln_x1);
+    (ln_h - 0.5 * ln_x1, g_m, g_l)
 }
 
 /// Eq. 13 in its closed form with the corrected exponents (errata 2 and 3):

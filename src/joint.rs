@@ -3,10 +3,10 @@
 
 use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
-use crate::mixed::{solve_starved, FilmGroups};
+use crate::mixed::{solve_starved, FilmGroups, LoadSharing};
 use crate::params::{Lubricant, ParamError, Params};
 use crate::solve_start::StartTable;
-use crate::viscosity::{limiting_shear_stress, ln_roelands_with};
+use crate::viscosity::{limiting_shear_stress, ln_roelands_from};
 use serde::Serialize;
 use std::f64::consts::PI;
 use thiserror::Error;
@@ -184,6 +184,12 @@ pub struct Joint {
     hertz_unit: crate::contact::Hertz,
     /// ln(η∞/η0) for eq. 5.
     ln_eta_ratio: f64,
+    /// ln η0 for eq. 5.
+    ln_eta0: f64,
+    /// 2RB, the projected area of eq. 20's P_L = P/(2RB), m².
+    projected_area: f64,
+    /// (R/c)² of eq. 20.
+    clearance_ratio_sq: f64,
     /// The load (N) at which the rest film of eq. 19 reaches zero (see [`Joint::capacity`]).
     capacity: f64,
     /// Converged logits over (ln P_T, ln u): the deterministic start of a cold solve.
@@ -238,6 +244,9 @@ impl Joint {
             film_unit: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, lub.viscosity, lub.pressure_viscosity_coefficient),
             hertz_unit: hertz(1.0, r_red, e_eff, g.bush_length),
             ln_eta_ratio: (lub.roelands_viscosity_limit / lub.viscosity).ln(),
+            ln_eta0: lub.viscosity.ln(),
+            projected_area: 2.0 * g.pin_radius * g.bush_length,
+            clearance_ratio_sq: (g.pin_radius / params.radial_clearance()).powi(2),
             capacity: asperity_capacity(&params.surface, &AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length)),
             lub: *lub,
             ln_w_unit: (1.0 / (e_eff * r_red * g.bush_length)).ln(),
@@ -250,7 +259,8 @@ impl Joint {
         joint.start = StartTable::build(joint.capacity, |ln_p, ln_u, warm| {
             let asp = joint.asp_unit.at_load_ratio(ln_p);
             let film = joint.film_unit.at_ratio(ln_p, ln_u);
-            solve_starved(Some(&film), &asp, &joint.params.surface, warm, joint.starved).logit
+            let ls = solve_starved(Some(&film), &asp, &joint.params.surface, warm, joint.starved);
+            crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
         });
         Ok(joint)
     }
@@ -304,24 +314,67 @@ impl Joint {
     /// of an operating point that do not need the load-sharing solve.
     pub fn load_speed(&self, load: f64, omega: f64) -> LoadSpeed {
         let load = load.abs();
-        let (g, lub) = (&self.params.geometry, &self.lub);
-        // Eq. 6 scaled from 1 N: a, p_m, p0 ∝ √P_T.
+        let (hertz, ln_eta, tau_l) = self.rheology(load);
+        LoadSpeed {
+            hertz,
+            sliding_speed: omega.abs() * self.params.geometry.pin_radius,
+            sommerfeld_number: self.sommerfeld_at(load / self.projected_area, omega),
+            contact_viscosity: ln_eta.exp(),
+            ln_contact_viscosity: ln_eta,
+            limiting_shear_stress: tau_l,
+        }
+    }
+
+    /// Eq. 6 under `load` (scaled from 1 N: a, p_m, p0 ∝ √P_T), ln η (eq. 5) and τ_L (eq. 4) at p_m.
+    fn rheology(&self, load: f64) -> (crate::contact::Hertz, f64, f64) {
         let sqrt_p = load.sqrt();
         let hertz = crate::contact::Hertz {
             half_width: self.hertz_unit.half_width * sqrt_p,
             mean_pressure: self.hertz_unit.mean_pressure * sqrt_p,
             peak_pressure: self.hertz_unit.peak_pressure * sqrt_p,
         };
-        let p_l = load / (2.0 * g.pin_radius * g.bush_length);
-        let ln_eta = ln_roelands_with(lub, hertz.mean_pressure, self.ln_eta_ratio);
-        LoadSpeed {
+        let ln_eta = ln_roelands_from(&self.lub, hertz.mean_pressure, self.ln_eta0, self.ln_eta_ratio);
+        (hertz, ln_eta, limiting_shear_stress(&self.lub, hertz.mean_pressure))
+    }
+
+    /// The parts of an evaluation that depend on the load alone, checked as
+    /// [`Joint::evaluate`] checks the load (its magnitude is used). A host that evaluates
+    /// many speeds at one load computes them once ([`Joint::friction_at`]).
+    pub fn load_terms(&self, load: f64) -> Result<LoadTerms, ModelError> {
+        let load = load.abs();
+        if !(load.is_finite() && load > 0.0) {
+            return Err(ModelError::Load(load));
+        }
+        if load >= self.capacity {
+            return Err(ModelError::BeyondCapacity { load, capacity: self.capacity });
+        }
+        Ok(self.load_terms_unchecked(load))
+    }
+
+    fn load_terms_unchecked(&self, load: f64) -> LoadTerms {
+        let (hertz, ln_eta, tau_l) = self.rheology(load);
+        let ln_load = load.ln();
+        LoadTerms {
+            load,
+            ln_load,
             hertz,
-            sliding_speed: omega.abs() * g.pin_radius,
-            sommerfeld_number: lub.viscosity * omega.abs() / (2.0 * PI * p_l) * (g.pin_radius / self.params.radial_clearance()).powi(2),
+            line_load: load / self.projected_area,
             contact_viscosity: ln_eta.exp(),
             ln_contact_viscosity: ln_eta,
-            limiting_shear_stress: limiting_shear_stress(lub, hertz.mean_pressure),
+            limiting_shear_stress: tau_l,
+            ln_limiting_shear_stress: tau_l.ln(),
+            asperity: self.asp_unit.at_load_ratio(ln_load),
         }
+    }
+
+    /// S, eq. 20, with P_L = P/(2RB) and c = R_b − R.
+    fn sommerfeld(&self, lt: &LoadTerms, omega: f64) -> f64 {
+        self.sommerfeld_at(lt.line_load, omega)
+    }
+
+    #[inline]
+    fn sommerfeld_at(&self, line_load: f64, omega: f64) -> f64 {
+        self.lub.viscosity * omega.abs() / (2.0 * PI * line_load) * self.clearance_ratio_sq
     }
 
     /// The boundary-friction torque μ_c R |P| at `load` (N): the ω → 0 limit of eq. 11.
@@ -350,38 +403,88 @@ impl Joint {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
         }
-        if load >= self.capacity {
-            return Err(ModelError::BeyondCapacity { load, capacity: self.capacity });
-        }
+        let lt = self.load_terms(load)?;
+        let (op, _) = self.evaluate_at(&lt, omega, guess)?;
+        Ok(op)
+    }
+
+    /// The load-sharing solve and μ (eqs. 3, 8, 10) at the load of `lt` and speed u = |ω|R:
+    /// (ln u, the solve, μ_fluid, μ_asperity). `omega` must be finite.
+    fn solve_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> (f64, LoadSharing, f64, f64) {
         let p = &self.params;
-        let g = &p.geometry;
-        let ls_q = self.load_speed(load, omega);
-        let (hz, u) = (ls_q.hertz, ls_q.sliding_speed);
-        let ln_p = load.ln();
-        let asp = self.asp_unit.at_load_ratio(ln_p);
+        let u = omega.abs() * p.geometry.pin_radius;
         let ln_u = u.ln();
-        let film = (u > 0.0).then(|| self.film_unit.at_ratio(ln_p, ln_u));
+        let film = (u > 0.0).then(|| self.film_unit.at_ratio(lt.ln_load, ln_u));
         let guess = match guess {
             Some(g) => Some(g),
-            None if u > 0.0 => Some(self.start.guess(ln_p, ln_u)),
+            None if u > 0.0 => Some(self.start.guess(lt.ln_load, ln_u)),
             None => None,
         };
-        let ls = solve_starved(film.as_ref(), &asp, &p.surface, guess, self.starved);
-
+        let ls = solve_starved(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved);
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (MODEL_NOTES), whatever η.
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
-        let (eta, tau_l) = (ls_q.contact_viscosity, ls_q.limiting_shear_stress);
         let mu_fluid = if u > 0.0 {
-            let ln_x = ls_q.ln_contact_viscosity + ln_u - tau_l.ln() - ls.film_thickness.ln();
-            tau_l / hz.mean_pressure * -(-ln_x.exp()).exp_m1()
+            let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ls.ln_film_thickness;
+            lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::fast_math::exp(ln_x)).exp_m1()
         } else {
             0.0
         };
         // Eq. 8: Q_C = μ_c P_C = μ_c P_T/γ2.
         let mu_asperity = p.friction.boundary_friction_coefficient * ls.asperity_fraction;
+        (ln_u, ls, mu_fluid, mu_asperity)
+    }
+
+    /// The torque magnitude T = μ R P (eq. 11) at the load of `lt` and angular velocity
+    /// `omega`, the solve started from `guess` as in [`Joint::evaluate_from`]: bit for bit the
+    /// `torque` and `friction_coefficient` of [`Joint::evaluate_from`] with the same guess,
+    /// without the quantities a time integration of the torque does not need (h_min, S, λ),
+    /// and with the solve's sensitivities for the next start. Errors as
+    /// [`Joint::evaluate_from`] (the same checks on the same numbers).
+    pub fn friction_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> Result<Friction, ModelError> {
+        if !omega.is_finite() {
+            return Err(ModelError::Speed(omega));
+        }
+        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess);
         let mu = mu_fluid + mu_asperity;
-        let sommerfeld = ls_q.sommerfeld_number;
+        let torque = mu * self.params.geometry.pin_radius * lt.load;
+        // The checks of `check_finite`, in its order, on the same numbers (h_min and λ_min are
+        // finite whenever h_c is: h_min = h_c·e^{ln r} with ln r ≤ 0 or −∞).
+        let hz = &lt.hertz;
+        let fields = [
+            ("friction_coefficient", mu),
+            ("torque", torque),
+            ("film_thickness", ls.film_thickness),
+            ("lambda_ratio", ls.film_thickness / self.roughness),
+            ("fluid_load_fraction", ls.fluid_fraction),
+            ("asperity_load_fraction", ls.asperity_fraction),
+            ("mean_pressure", hz.mean_pressure),
+            ("peak_pressure", hz.peak_pressure),
+            ("contact_half_width", hz.half_width),
+            ("sommerfeld_number", self.sommerfeld(lt, omega)),
+        ];
+        for (quantity, value) in fields {
+            if !value.is_finite() || (quantity == "film_thickness" && value <= 0.0) {
+                return Err(ModelError::NotFinite { quantity, value, load: lt.load, omega });
+            }
+        }
+        Ok(Friction {
+            friction_coefficient: mu,
+            torque,
+            logit: ls.logit,
+            dlogit_dln_load: ls.dlogit_dln_load,
+            dlogit_dln_speed: ls.dlogit_dln_speed,
+            evaluations: ls.evaluations,
+        })
+    }
+
+    /// [`Joint::evaluate_from`] at the load of `lt`: the operating point and the solve.
+    fn evaluate_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> Result<(OperatingPoint, LoadSharing), ModelError> {
+        let g = &self.params.geometry;
+        let (load, hz) = (lt.load, lt.hertz);
+        let u = omega.abs() * g.pin_radius;
+        let (ln_u, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess);
+        let mu = mu_fluid + mu_asperity;
         let op = OperatingPoint {
             load,
             angular_velocity: omega,
@@ -395,8 +498,8 @@ impl Joint {
             mean_pressure: hz.mean_pressure,
             peak_pressure: hz.peak_pressure,
             contact_half_width: hz.half_width,
-            sommerfeld_number: sommerfeld,
-            contact_viscosity: eta,
+            sommerfeld_number: self.sommerfeld(lt, omega),
+            contact_viscosity: lt.contact_viscosity,
             fluid_friction_coefficient: mu_fluid,
             asperity_friction_coefficient: mu_asperity,
             logit: ls.logit,
@@ -404,11 +507,53 @@ impl Joint {
             min_film_thickness: 0.0,
             min_lambda_ratio: 0.0,
         };
-        let h_min = self.min_film(load, omega, op.film_thickness, op.fluid_load_fraction);
+        // h_min (as Joint::min_film, with ln P_T and ln u already at hand).
+        let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + lt.ln_load, self.ln_u_mean_unit + ln_u, self.ln_g, op.fluid_load_fraction.ln());
+        let h_min = op.film_thickness * ln_r.exp();
         let op = OperatingPoint { min_film_thickness: h_min, min_lambda_ratio: h_min / self.roughness, ..op };
         check_finite(&op)?;
-        Ok(op)
+        Ok((op, ls))
     }
+}
+
+/// The parts of an evaluation that depend on the load alone ([`Joint::load_terms`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadTerms {
+    /// |P_T|, N.
+    pub load: f64,
+    /// ln |P_T|.
+    pub ln_load: f64,
+    /// Eq. 6 under the whole load.
+    pub hertz: crate::contact::Hertz,
+    /// P_L = P/(2RB) of eq. 20, Pa.
+    pub line_load: f64,
+    /// Roelands viscosity at p_m (eq. 5), Pa·s (+∞ where it overflows).
+    pub contact_viscosity: f64,
+    /// Its logarithm.
+    pub ln_contact_viscosity: f64,
+    /// Bair–Winer limiting shear stress at p_m (eq. 4), Pa.
+    pub limiting_shear_stress: f64,
+    /// Its logarithm.
+    pub ln_limiting_shear_stress: f64,
+    /// Eq. 19's groups at this load.
+    pub asperity: AsperityGroups,
+}
+
+/// What [`Joint::friction_at`] gives: μ, the torque and the solve's root with its sensitivities.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Friction {
+    /// μ, eq. 10.
+    pub friction_coefficient: f64,
+    /// T = μ R P_T, eq. 11, N·m (a magnitude).
+    pub torque: f64,
+    /// ln(x1/x2) of the solve (−∞ at rest): a warm start for the next call.
+    pub logit: f64,
+    /// ∂logit/∂ln P_T at fixed speed (0 at rest).
+    pub dlogit_dln_load: f64,
+    /// ∂logit/∂ln u at fixed load (0 at rest).
+    pub dlogit_dln_speed: f64,
+    /// Residual evaluations the solve took.
+    pub evaluations: u32,
 }
 
 /// Solve eq. 19 at rest for the load at which h_c = 0, i.e. t = −d_d/σ_s. The required

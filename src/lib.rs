@@ -23,6 +23,7 @@
 
 pub mod asperity;
 pub mod contact;
+pub mod fast_math;
 pub mod fidelity;
 pub mod film;
 pub mod gw;

@@ -19,9 +19,10 @@
 //! relative, and μ (a smooth function of them) likewise; `tests/solver.rs` checks
 //! 1e-10 against a bisection to the last bit.
 
-use crate::asperity::AsperityGroups;
-use crate::film::{ln_scaled_moes, ln_scaled_moes_slope};
+use crate::asperity::{AsperityGroups, A2, A3};
+use crate::film::{ln_scaled_moes, ln_scaled_moes_grad};
 use crate::gw::{inverse_ln_f32, ln_f32_slope};
+use crate::fast_math::exp;
 use crate::newton::newton_increasing;
 use crate::params::Surface;
 
@@ -72,8 +73,16 @@ pub struct LoadSharing {
     pub logit: f64,
     /// Central film thickness h_c (m).
     pub film_thickness: f64,
+    /// ln h_c, as the solve has it (h_c is its exponential).
+    pub ln_film_thickness: f64,
     /// Residual evaluations used.
     pub evaluations: u32,
+    /// ∂y/∂ln P_T of the root at fixed speed (implicit function theorem at the last
+    /// evaluated point; 0 at rest): with [`Self::dlogit_dln_speed`] a first-order predictor
+    /// of the root at a nearby operating point, for starting the next solve.
+    pub dlogit_dln_load: f64,
+    /// ∂y/∂ln u of the root at fixed load (0 at rest).
+    pub dlogit_dln_speed: f64,
 }
 
 /// Step tolerance on the logit.
@@ -109,12 +118,16 @@ pub struct StarvedInlet {
 pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>) -> LoadSharing {
     let rest = |asp: &AsperityGroups| {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
+        let h = s.summit_mean_plane_offset + t * s.summit_height_std;
         LoadSharing {
             fluid_fraction: 0.0,
             asperity_fraction: 1.0,
             logit: f64::NEG_INFINITY,
-            film_thickness: s.summit_mean_plane_offset + t * s.summit_height_std,
+            film_thickness: h,
+            ln_film_thickness: h.ln(),
             evaluations: 0,
+            dlogit_dln_load: 0.0,
+            dlogit_dln_speed: 0.0,
         }
     };
     if let (Some(_), Some(st)) = (film, starved) {
@@ -128,33 +141,53 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
     let Some(film) = film else {
         return rest(asp);
     };
-    // r(y) and r'(y): every factor's derivative is analytic (film::ln_moes_slope,
-    // gw::ln_f32_slope, AsperityGroups::required_ln_f32_slope). The film at the last
-    // evaluated point is kept, so the final h_c costs no further film evaluation.
-    let mut last = (f64::NAN, f64::NAN, f64::NAN); // (y, ln h_c, d ln h_c/dy)
+    // r(y) and r'(y): every factor's derivative is analytic (film::ln_moes_grad,
+    // gw::ln_f32_slope, AsperityGroups::required_ln_f32_grad). The film at the last
+    // evaluated point is kept, so the final h_c costs no further film evaluation, and so are
+    // r's partial derivatives in ln P_T and ln u at fixed y (for the caller's next start):
+    // ln M' = 1, ln L' = 0, ln R'U^½' = 0, ln C' = −½, ln K' = a2 − a3 in ln P_T, and
+    // ln M' = −½, ln L' = ¼, ln R'U^½' = ½ in ln u (FilmGroups::at_ratio, AsperityGroups::at_load_ratio).
+    let mut last = (f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN); // (y, ln h_c, d ln h_c/dy, r_P/r_y, r_u/r_y)
     let residual = |y: f64| {
         let sh = Shares::new(y);
-        let (ln_hs, dln_hs) = ln_scaled_moes_slope(film.ln_m, film.ln_l, sh.ln_x1);
+        let (ln_hs, g_m, g_l) = ln_scaled_moes_grad(film.ln_m, film.ln_l, sh.ln_x1);
         let mut ln_h = film.ln_scale + ln_hs;
-        let mut dln_h = sh.x2 * dln_hs; // d ln x1/dy = x2
+        let mut dln_h = sh.x2 * (0.5 * g_m + 0.75 * g_l - 0.5); // d ln x1/dy = x2
+        let mut w = 1.0;
         if let Some(st) = starved {
-            let (l, w) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
+            let (l, ws) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
             ln_h = l;
-            dln_h *= w;
+            dln_h *= ws;
+            w = ws;
         }
-        last = (y, ln_h, dln_h);
-        let h = ln_h.exp();
+        let h = exp(ln_h);
         let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
         let (ln_f, dln_f) = ln_f32_slope(t);
-        let (req, dreq) = asp.required_ln_f32_slope(sh.ln_x2); // d ln x2/dy = −x1
-        compress(ln_f - req, dln_f * h / s.summit_height_std * dln_h + dreq * sh.x1)
+        let (req, dreq, sigmoid) = asp.required_ln_f32_grad(sh.ln_x2); // d ln x2/dy = −x1
+        let k = dln_f * h / s.summit_height_std; // ∂ ln F/∂ ln h_c
+        let dr = k * dln_h + dreq * sh.x1;
+        let dr_load = k * w * g_m - (sigmoid * (A2 - A3) + 0.5);
+        let dr_speed = k * w * (0.5 - 0.5 * g_m + 0.25 * g_l);
+        last = (y, ln_h, dln_h, dr_load / dr, dr_speed / dr);
+        compress(ln_f - req, dr)
     };
     let y0 = guess.filter(|g| g.is_finite()).unwrap_or(0.0);
     let (y, evaluations) = newton_increasing(residual, y0, y_tol);
     // The last step is below tol (or zero), so first order is exact to O(tol²).
     let ln_h = last.1 + last.2 * (y - last.0);
     let sh = Shares::new(y);
-    LoadSharing { fluid_fraction: sh.x1, asperity_fraction: sh.x2, logit: y, film_thickness: ln_h.exp(), evaluations }
+    // Implicit function theorem: dy/dθ = −(∂r/∂θ)/(∂r/∂y) (the compression g(r) scales both alike).
+    let finite_or_zero = |v: f64| if v.is_finite() { -v } else { 0.0 };
+    LoadSharing {
+        fluid_fraction: sh.x1,
+        asperity_fraction: sh.x2,
+        logit: y,
+        film_thickness: exp(ln_h),
+        ln_film_thickness: ln_h,
+        evaluations,
+        dlogit_dln_load: finite_or_zero(last.3),
+        dlogit_dln_speed: finite_or_zero(last.4),
+    }
 }
 
 /// The two load shares and their logarithms from the logit y, with one exponential and
@@ -169,8 +202,8 @@ struct Shares {
 
 impl Shares {
     fn new(y: f64) -> Self {
-        let e = (-y.abs()).exp();
-        let l = (1.0 + e).ln(); // absolute accuracy ε suffices for logarithms (see film.rs)
+        let e = exp(-y.abs());
+        let l = crate::fast_math::ln_1p_unit(e); // absolute accuracy ε suffices for logarithms (see film.rs)
         let (big, small) = (1.0 / (1.0 + e), e / (1.0 + e));
         if y >= 0.0 {
             Shares { x1: big, x2: small, ln_x1: -l, ln_x2: -y - l }

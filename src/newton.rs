@@ -35,6 +35,14 @@ pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn
         // at least halves every two evaluations, whatever the shape of f.
         let reach = 8f64.max(y.abs());
         let newton = y - r / dr;
+        // A Newton step below the tolerance ends the iteration here, also when it rounds onto
+        // the bracket end just evaluated (a step under half an ulp of y leaves y unchanged): it
+        // must not count as leaving the bracket, which would bisect a bracket that is already
+        // converged down to tol, one evaluation per halving.
+        if newton >= lo && newton <= hi && (newton - y).abs() <= tol(newton) {
+            y = newton;
+            break;
+        }
         let in_bracket = newton > lo && newton < hi && newton.is_finite();
         let bracketed = lo.is_finite() && hi.is_finite();
         let next = if in_bracket && (newton - y).abs() <= 1e3 * reach && (!bracketed || (newton - y).abs() <= 0.5 * step_before_last.abs()) {

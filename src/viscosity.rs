@@ -17,8 +17,13 @@ pub fn roelands_with(l: &Lubricant, p: f64, ln_eta_ratio: f64) -> f64 {
 
 /// ln η of eq. 5, which stays finite where η itself overflows (large Z at GPa pressures).
 pub fn ln_roelands_with(l: &Lubricant, p: f64, ln_eta_ratio: f64) -> f64 {
+    ln_roelands_from(l, p, l.viscosity.ln(), ln_eta_ratio)
+}
+
+/// [`ln_roelands_with`] with ln η0 precomputed too (the same number, bit for bit).
+pub fn ln_roelands_from(l: &Lubricant, p: f64, ln_eta0: f64, ln_eta_ratio: f64) -> f64 {
     let expo = -((l.roelands_index * (p / l.roelands_pressure_constant).ln_1p()).exp_m1());
-    l.viscosity.ln() + expo * ln_eta_ratio
+    ln_eta0 + expo * ln_eta_ratio
 }
 
 /// Limiting shear stress at pressure `p` (Pa), eq. 4: `τ_L = τ_L0 + β0 p`, Pa.

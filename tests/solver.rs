@@ -314,3 +314,57 @@ fn degenerate_but_valid_parameters_never_give_nan() {
         }
     }
 }
+
+#[test]
+fn friction_at_is_the_evaluations_torque_bit_for_bit() {
+    // Joint::friction_at (the rig's lean path, load terms computed once) gives the torque, μ and
+    // root of Joint::evaluate_from with the same start, bit for bit, and the same errors.
+    let j = joint();
+    for load in [5e3, 20e3, -60e3] {
+        let lt = j.load_terms(load).unwrap();
+        for omega in speeds(40).into_iter().chain([0.0, -3.0]) {
+            for guess in [None, Some(-1.0), Some(40.0)] {
+                let op = j.evaluate_from(load, omega, guess).unwrap();
+                let f = j.friction_at(&lt, omega, guess).unwrap();
+                assert_eq!(f.torque.to_bits(), op.torque.to_bits(), "P={load} ω={omega} {guess:?}");
+                assert_eq!(f.friction_coefficient.to_bits(), op.friction_coefficient.to_bits());
+                assert_eq!(f.logit.to_bits(), op.logit.to_bits());
+            }
+        }
+    }
+    assert_eq!(j.load_terms(0.0).unwrap_err(), j.evaluate(0.0, 1.0).unwrap_err());
+    assert_eq!(j.load_terms(1e12).unwrap_err(), j.evaluate(1e12, 1.0).unwrap_err());
+    let lt = j.load_terms(20e3).unwrap();
+    assert_eq!(j.friction_at(&lt, f64::NAN, None).unwrap_err().to_string(), j.evaluate(20e3, f64::NAN).unwrap_err().to_string());
+}
+
+#[test]
+fn root_sensitivities_match_finite_differences() {
+    // ∂y/∂ln u and ∂y/∂ln P from the implicit function theorem (the rig's predictor, the start
+    // table's derivatives) against central differences of converged roots.
+    let j = joint();
+    let lt = |p: f64| j.load_terms(p).unwrap();
+    for (load, omega) in [(5e3, 0.05), (20e3, 0.6), (20e3, 6.0), (60e3, 10.0), (30e3, 30.0)] {
+        let f = j.friction_at(&lt(load), omega, None).unwrap();
+        let e: f64 = 1e-5;
+        let y = |p: f64, w: f64| j.evaluate(p, w).unwrap().logit;
+        let du = (y(load, omega * e.exp()) - y(load, omega * (-e).exp())) / (2.0 * e);
+        let dp = (y(load * e.exp(), omega) - y(load * (-e).exp(), omega)) / (2.0 * e);
+        assert!((f.dlogit_dln_speed - du).abs() < 1e-6 * (1.0 + du.abs()), "P={load} ω={omega}: {} vs {du}", f.dlogit_dln_speed);
+        assert!((f.dlogit_dln_load - dp).abs() < 1e-6 * (1.0 + dp.abs()), "P={load} ω={omega}: {} vs {dp}", f.dlogit_dln_load);
+    }
+}
+
+#[test]
+fn a_start_within_rounding_of_the_root_stops_at_once() {
+    // A Newton step below the tolerance ends the solve even when it rounds onto the end of
+    // the bracket just evaluated (it used to bisect that converged bracket, 10 evaluations).
+    let j = joint();
+    let lt = j.load_terms(20e3).unwrap();
+    let root = j.evaluate(20e3, 1.0177).unwrap().logit;
+    for d in [0.0, 8.8e-12, -8.8e-12, 1e-9] {
+        let f = j.friction_at(&lt, 1.0177, Some(root + d)).unwrap();
+        assert!(f.evaluations <= 2, "start {d:e} off: {} evaluations", f.evaluations);
+        assert!((f.logit - root).abs() < 1e-12, "{d:e}");
+    }
+}

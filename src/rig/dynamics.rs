@@ -25,7 +25,7 @@
 use super::excitation::Excitation;
 use super::params::RigParams;
 use crate::fidelity::{Evaluation, Evaluator, Source};
-use crate::joint::{Joint, ModelError};
+use crate::joint::{Joint, LoadTerms, ModelError};
 use serde::{Deserialize, Serialize};
 use std::cell::{Cell, RefCell};
 
@@ -68,6 +68,27 @@ pub(crate) struct Friction {
     pub op: Option<Evaluation>,
 }
 
+/// The last solve's position and sensitivities: a first-order start for the next.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Predictor {
+    load: f64,
+    speed: f64,
+    dy_dln_load: f64,
+    dy_dln_speed: f64,
+}
+
+impl Predictor {
+    /// The root `y` (found at this predictor's load and speed) moved to (`load`, `speed`):
+    /// y + ∂y/∂ln P·Δln P + ∂y/∂ln u·Δln u, with Δln x ≈ 2(x − x₀)/(x + x₀) (no logarithm;
+    /// third-order accurate). Only a start: the solve converges to its own rule from it. None
+    /// for far moves (|Δln u| or |Δln P| > 0.5, e.g. towards a reversal).
+    fn predict(&self, y: f64, load: f64, speed: f64) -> Option<f64> {
+        let d_ln = |x: f64, x0: f64| 2.0 * (x - x0) / (x + x0);
+        let (dp, du) = (d_ln(load, self.load), d_ln(speed, self.speed));
+        (du.abs() <= 0.5 && dp.abs() <= 0.5).then_some(y + self.dy_dln_load * dp + self.dy_dln_speed * du)
+    }
+}
+
 /// The right-hand side for one phase.
 pub(crate) struct Dynamics<'a> {
     pub joint: &'a Joint,
@@ -76,6 +97,11 @@ pub(crate) struct Dynamics<'a> {
     pub phase: Phase,
     /// Warm start of the core's load-sharing solve (its last logit).
     pub guess: Cell<f64>,
+    /// Where the last solve of the derivative's friction was, with its sensitivities, so the
+    /// next one starts from a first-order prediction (this Dynamics' own history only).
+    pub predictor: Cell<Option<Predictor>>,
+    /// The core's load terms at the last load met (the drive's load is often constant).
+    pub load_terms: Cell<Option<LoadTerms>>,
     /// First invalid load met (time, value); the derivative is NaN from then on.
     pub fault: Cell<Option<(f64, f64)>>,
     /// First friction evaluation the model could not answer (load, speed, why); the
@@ -95,6 +121,8 @@ impl<'a> Dynamics<'a> {
             excitation,
             phase,
             guess: Cell::new(guess),
+            predictor: Cell::new(None),
+            load_terms: Cell::new(None),
             fault: Cell::new(None),
             model_fault: RefCell::new(None),
             level: None,
@@ -140,6 +168,58 @@ impl<'a> Dynamics<'a> {
         Some(Evaluation::from_point(&op, source))
     }
 
+    /// The friction torque magnitude μ R P at (P, speed ≥ 0) for the equations of motion: the
+    /// fidelity level inside its envelope, else the full solve ([`Joint::friction_at`], the
+    /// same torque as [`Joint::evaluate_from`] bit for bit for the same start) with the load
+    /// terms kept while the load is unchanged, started from the last root moved to first
+    /// order in ln P and ln u (its sensitivities from the last solve). 0 at zero load; on a
+    /// model error, 0 with the error recorded in `model_fault`, as [`Self::operating_point`].
+    pub fn torque(&self, load: f64, speed: f64) -> f64 {
+        if load == 0.0 {
+            return 0.0;
+        }
+        if self.level.is_some() {
+            return self.operating_point(load, speed).map_or(0.0, |o| o.torque);
+        }
+        let fail = |e: ModelError| {
+            let mut fault = self.model_fault.borrow_mut();
+            if fault.is_none() {
+                *fault = Some((load, speed, e));
+            }
+            0.0
+        };
+        let lt = match self.load_terms.get() {
+            Some(lt) if lt.load == load.abs() => lt,
+            _ => match self.joint.load_terms(load) {
+                Ok(lt) => {
+                    self.load_terms.set(Some(lt));
+                    lt
+                }
+                Err(e) => return fail(e),
+            },
+        };
+        // Near the last solve: its root moved to first order. Otherwise (the first solve of
+        // this Dynamics, or a far move such as the approach to a reversal) the start table's
+        // guess, a function of (P, u) alone.
+        let g = self.guess.get();
+        let predicted = self.predictor.get().filter(|_| g.is_finite() && speed > 0.0).and_then(|p| p.predict(g, lt.load, speed));
+        let start = match predicted {
+            Some(y) => y,
+            None if speed > 0.0 => self.joint.cold_start(lt.load, speed),
+            None => g,
+        };
+        match self.joint.friction_at(&lt, speed, start.is_finite().then_some(start)) {
+            Ok(f) => {
+                if f.logit.is_finite() {
+                    self.guess.set(f.logit);
+                    self.predictor.set(Some(Predictor { load: lt.load, speed, dy_dln_load: f.dlogit_dln_load, dy_dln_speed: f.dlogit_dln_speed }));
+                }
+                f.torque
+            }
+            Err(e) => fail(e),
+        }
+    }
+
     /// Breakaway torque k_b·μ_c·R·P.
     pub fn breakaway_torque(&self, load: f64) -> f64 {
         self.rig.breakaway_factor * self.joint.boundary_torque(load)
@@ -170,6 +250,20 @@ impl<'a> Dynamics<'a> {
         }
     }
 
+    /// The signed friction torque on the pin in this phase at (t, y) with load P, as
+    /// [`Self::friction`]'s `torque` (bit for bit for the same start), without the operating point.
+    pub fn friction_torque(&self, load: f64, y: &State) -> f64 {
+        let w = y[SPEED];
+        match self.phase {
+            Phase::Slip(s) => {
+                let s = f64::from(s);
+                -s * self.torque(load, (s * w).max(0.0))
+            }
+            Phase::Stick => -y[TORQUE],
+            Phase::Smooth => -self.torque(load, w.abs()) * (w / self.rig.regularisation_speed).tanh(),
+        }
+    }
+
     /// dy/dt. The time is taken from the state (y[TIME]), not from the integrator.
     pub fn derivative(&self, _t: f64, y: &State) -> State {
         let t = y[TIME];
@@ -188,7 +282,7 @@ impl<'a> Dynamics<'a> {
         if self.phase == Phase::Stick {
             return State::from([0.0, 0.0, torque_rate, 0.0, 0.0, 1.0]);
         }
-        let tf = self.friction(load, y).torque;
+        let tf = self.friction_torque(load, y);
         if self.model_fault.borrow().is_some() {
             return State::repeat(f64::NAN);
         }

@@ -24,6 +24,11 @@ pub fn push_exact(out: &mut Vec<u8>, v: f64) {
     let mut buf = zmij::Buffer::new();
     let s = buf.format_finite(v).as_bytes();
     let a = v.abs();
+    // Shortest digits from 1e-4 to below 1e15 stay in fixed notation in both (no exponent).
+    if (1e-4..1e15).contains(&a) {
+        out.extend_from_slice(s);
+        return;
+    }
     if (1e-5..1e-4).contains(&a) {
         // "-0.0000ddd" -> "-d.dde-5" (shortest digits d, at least one).
         let (sign, rest) = if v < 0.0 { (&b"-"[..], &s[1..]) } else { (&b""[..], s) };
@@ -61,6 +66,10 @@ fn tie_impossible(v: f64) -> bool {
     e += tz as i32;
     if e >= 0 {
         return false;
+    }
+    // log10 m ≥ 0 (m ≥ 1): from −e ≥ 27 the second term alone is ≥ 18.87 (no logarithm needed).
+    if e <= -27 {
+        return true;
     }
     (m as f64).log10() + f64::from(-e) * std::f64::consts::LOG10_2.mul_add(-1.0, 1.0) >= 18.5
 }

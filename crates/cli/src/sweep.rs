@@ -161,11 +161,9 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
     let width = cols.header.len();
     let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
     let mut rec = csv::ByteRecord::with_capacity(64, width);
-    let mut wtr = match mode {
-        Mode::Scan => None,
-        _ => Some(csv::Writer::from_writer(Vec::with_capacity(recs.len() * 256))),
-    };
-    let mut num = Vec::with_capacity(32);
+    if !matches!(mode, Mode::Scan) {
+        out.text.reserve(recs.len() * 320);
+    }
     let mut ev = match mode {
         Mode::Level { proto, pool, .. } => Some(pool.lock().ok().and_then(|mut p| p.pop()).unwrap_or_else(|| (*proto).clone())),
         _ => None,
@@ -219,33 +217,49 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
             }
             (Mode::Level { .. }, None) => unreachable!("an evaluator is taken for every chunk at a fidelity level"),
         };
-        let w = wtr.as_mut().expect("a writer unless scanning");
-        let io = |e: csv::Error| CliError::Invalid(format!("formatting a row: {}", csv_io(e)));
-        for f in rec.iter() {
-            w.write_field(f).map_err(io)?;
+        // The row, written directly (as the `csv` writer with its defaults would: fields
+        // quoted only when they hold a comma, a quote or a line break; `\n` after the record):
+        // the input fields as read, then the one result record's columns (pinjoint::record).
+        let text = &mut out.text;
+        for (k, f) in rec.iter().enumerate() {
+            if k > 0 {
+                text.push(b',');
+            }
+            push_field(text, f);
         }
-        // The one result record's columns, in order (pinjoint::record).
         for c in &pinjoint::record::COLUMNS {
+            text.push(b',');
             match c.value {
-                pinjoint::record::Value::Number(f) => {
-                    num.clear();
-                    push_exact(&mut num, f(&op));
-                    w.write_field(&num).map_err(io)?;
-                }
-                pinjoint::record::Value::Regime => w.write_field(op.regime.as_str()).map_err(io)?,
+                pinjoint::record::Value::Number(f) => push_exact(text, f(&op)),
+                pinjoint::record::Value::Regime => text.extend_from_slice(op.regime.as_str().as_bytes()),
             }
         }
-        w.write_record(None::<&[u8]>).map_err(io)?;
+        text.push(b'\n');
     }
     if let (Mode::Level { pool, .. }, Some(ev)) = (mode, ev)
         && let Ok(mut p) = pool.lock()
     {
         p.push(ev);
     }
-    if let Some(w) = wtr {
-        out.text = w.into_inner().map_err(|e| CliError::Invalid(format!("formatting a row: {}", e.error())))?;
-    }
     Ok(out)
+}
+
+/// One CSV field as the `csv` crate's writer writes it by default (`QuoteStyle::Necessary`,
+/// double quotes, `\n` terminator): as is, or in quotes with its quotes doubled when it holds
+/// a comma, a quote, a carriage return or a line feed.
+fn push_field(out: &mut Vec<u8>, f: &[u8]) {
+    if !f.iter().any(|&b| matches!(b, b',' | b'"' | b'\r' | b'\n')) {
+        out.extend_from_slice(f);
+        return;
+    }
+    out.push(b'"');
+    for &b in f {
+        if b == b'"' {
+            out.push(b'"');
+        }
+        out.push(b);
+    }
+    out.push(b'"');
 }
 
 /// Every chunk of a batch on every core; the first error in input order wins.
