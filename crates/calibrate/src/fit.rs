@@ -8,7 +8,7 @@ use super::prepare::{prepare, Prepared, STICK_SLIP_IRREGULARITY};
 use super::record::Record;
 use super::result::{Calibration, Estimate, Series};
 use super::uncertainty::{analyse, Uncertainty, MIN_BOOTSTRAP_CLUSTERS, MIN_CLUSTERS};
-use super::Options;
+use super::{Model, Options};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
 use pinjoint::Params;
@@ -44,6 +44,9 @@ pub const MAX_SETTLE_EXTENSIONS: usize = 6;
 /// time and the fit repeated (at most [`MAX_SETTLE_EXTENSIONS`] times, and only while at least
 /// half the samples stay in use). The report says so.
 pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, CalibrationError> {
+    if options.model == Model::Rig {
+        return super::rig_fit::calibrate_rig(records, options);
+    }
     let mut o = options.clone();
     let step = 0.5 * options.exclusion.settle_time;
     let (mut best, mut deviates) = calibrate_once(records, &o)?;
@@ -99,7 +102,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     }
     options.params.validate()?;
     check_options(options)?;
-    let extras = resolve(&options.fit, &options.params)?;
+    let extras = resolve(&options.fit, &options.params, &options.rig, false)?;
     let prepared = records.iter().map(|r| prepare(r, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
     let j_inertia = options.inertia;
     let mut clusters: HashMap<(usize, usize), usize> = HashMap::new();
@@ -153,7 +156,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     // Start: the extras at their start values, μ_c and T_0 by linear least squares.
     let mut beta = DVector::zeros(np);
     for (k, e) in extras.iter().enumerate() {
-        beta[k] = e.transform.forward((e.spec.get)(&options.params)).expect("checked by resolve");
+        beta[k] = e.transform.forward(e.start).expect("checked by resolve");
     }
     let linear = problem.linear_solve(&beta)?;
     beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
@@ -190,7 +193,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     let keys = keys_of(&extras, options.fit_offset);
     let transforms: Vec<(Transform, &'static str, f64)> = extras
         .iter()
-        .map(|e| (e.transform, e.spec.unit, (e.spec.get)(&options.params)))
+        .map(|e| (e.transform, e.key.unit(), e.start))
         .chain(std::iter::once((Transform::Identity, "1", options.params.friction.boundary_friction_coefficient)))
         .chain(options.fit_offset.then_some((Transform::Identity, "N.m", 0.0)))
         .collect();
@@ -224,6 +227,10 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     let points_used = points.len();
     let deviation = settle_deviation(&points, &r, options.exclusion.settle_time);
     Ok((Calibration {
+        model: Model::Core,
+        rig: None,
+        simulations: 0,
+        commands: Vec::new(),
         params,
         estimates,
         offset,
@@ -246,7 +253,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     }, deviation))
 }
 
-fn check_options(o: &Options) -> Result<(), CalibrationError> {
+pub(crate) fn check_options(o: &Options) -> Result<(), CalibrationError> {
     let bad = |what: String| Err(CalibrationError::Option(what));
     if !(o.inertia.is_finite() && o.inertia >= 0.0) {
         return bad(format!("inertia = {} kg.m2 is invalid: it must be a finite number >= 0", o.inertia));
@@ -265,11 +272,11 @@ fn check_options(o: &Options) -> Result<(), CalibrationError> {
     Ok(())
 }
 
-fn keys_of(extras: &[Extra], offset: bool) -> Vec<String> {
-    extras.iter().map(|e| e.spec.name()).chain(std::iter::once(MU_C.to_string())).chain(offset.then(|| "torque_offset".to_string())).collect()
+pub(crate) fn keys_of(extras: &[Extra], offset: bool) -> Vec<String> {
+    extras.iter().map(|e| e.key.name()).chain(std::iter::once(MU_C.to_string())).chain(offset.then(|| "torque_offset".to_string())).collect()
 }
 
-fn estimate(key: &str, (t, unit, initial): (Transform, &'static str, f64), b: f64, u: &Uncertainty, k: usize) -> Estimate {
+pub(crate) fn estimate(key: &str, (t, unit, initial): (Transform, &'static str, f64), b: f64, u: &Uncertainty, k: usize) -> Estimate {
     let slope = t.slope(b);
     let (lo, hi) = u.ci95[k];
     Estimate {
@@ -286,7 +293,7 @@ fn estimate(key: &str, (t, unit, initial): (Transform, &'static str, f64), b: f6
 }
 
 #[allow(clippy::too_many_arguments)]
-fn warnings(
+pub(crate) fn warnings(
     extras: &[Extra],
     jac: &DMatrix<f64>,
     model: &DVector<f64>,
@@ -305,7 +312,7 @@ fn warnings(
             w.push(format!(
                 "{} is not identifiable from these records: a 1 % change of it moves the fitted torque by {:.2e} % (rms); \
                  its interval means nothing (e.g. viscosity from records that never leave the boundary regime)",
-                e.spec.name(),
+                e.key.name(),
                 rel
             ));
         }
@@ -383,9 +390,9 @@ struct Problem<'a> {
 
 impl Problem<'_> {
     fn params_at(&self, beta: &DVector<f64>) -> Params {
-        let mut p = self.base;
+        let (mut p, mut rig) = (self.base, pinjoint::rig::RigParams::default());
         for (k, e) in self.extras.iter().enumerate() {
-            (e.spec.set)(&mut p, e.transform.inverse(beta[k]));
+            e.key.set(&mut p, &mut rig, e.transform.inverse(beta[k]));
         }
         p.friction.boundary_friction_coefficient = beta[self.extras.len()];
         p
