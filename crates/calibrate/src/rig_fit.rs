@@ -39,23 +39,28 @@ use super::{Model, Options};
 use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
 use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
 use pinjoint::rig::{FnExcitation, Inputs, RigConfig, RigSim, Sample};
-use std::cell::{Cell, RefCell};
+use rayon::prelude::*;
+use std::cell::RefCell;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
 /// Default [`Options::max_simulations`].
-pub const DEFAULT_MAX_SIMULATIONS: usize = 100;
+pub const DEFAULT_MAX_SIMULATIONS: usize = 200;
 /// Most samples over all records the rig fit takes.
 pub const MAX_RIG_SAMPLES: usize = 200_000;
 /// Most record time over all records the rig fit takes (s).
 pub const MAX_RIG_DURATION: f64 = 3600.0;
 /// Most refinements of the command estimate (each one simulation of the record set).
 pub const MAX_COMMAND_ITERATIONS: usize = 4;
+/// Most alternations of the command estimate and the fit.
+pub const MAX_ROUNDS: usize = 4;
 /// Finite-difference step in the fit coordinates (μ_c: absolute; ln/logit: relative).
 const STEP: f64 = 1e-4;
 /// Used samples needed per fitted quantity (as the quasi-static fit).
 const MIN_POINTS_PER_PARAMETER: usize = super::fit::MIN_POINTS_PER_PARAMETER;
 
 /// One record as the rig fit sees it.
+#[derive(Clone)]
 struct RigRecord {
     name: String,
     /// Time since the record's first sample (s).
@@ -100,20 +105,37 @@ fn simulate(cfg: &RigConfig, rec: &RigRecord) -> Result<Vec<Sample>, Calibration
         .map_err(err)
 }
 
-/// The model over the used samples in the fit coordinates β = [extras…, μ_c, T_0?].
+/// The model over the used samples in the fit coordinates
+/// β = [extras…, μ_c, T_0?, (c, a, b, f) of each record's command].
+///
+/// The residuals are the torque and, for the commands, the angle: K_p·(θ_sim − θ_rec) in N·m
+/// (the torque the position loop makes of that angle error), at the used samples.
 struct RigProblem<'a> {
     records: &'a [RigRecord],
     base: RigConfig,
     extras: &'a [Extra],
     offset: bool,
+    /// [recorded torque; K_p·recorded angle] at the used samples.
     y: DVector<f64>,
-    /// Simulations of the record set run so far, and the most allowed now.
-    sims: Cell<usize>,
-    limit: Cell<usize>,
+    /// Rows of torque (the angle rows follow).
+    torque_rows: usize,
+    /// Record simulations run so far, and the most allowed now.
+    sims: AtomicUsize,
+    limit: AtomicUsize,
     total_limit: usize,
 }
 
+/// Index in β of record `j`'s command, given the quantities before the commands.
+fn command_index(quantities: usize, j: usize) -> usize {
+    quantities + 4 * j
+}
+
 impl RigProblem<'_> {
+    /// Fitted quantities before the commands: extras, μ_c, T_0?.
+    fn quantities(&self) -> usize {
+        self.extras.len() + 1 + usize::from(self.offset)
+    }
+
     fn config_at(&self, beta: &DVector<f64>) -> RigConfig {
         let mut c = self.base;
         for (k, e) in self.extras.iter().enumerate() {
@@ -123,73 +145,101 @@ impl RigProblem<'_> {
         c
     }
 
+    fn command_at(&self, beta: &DVector<f64>, j: usize) -> Command {
+        let i = command_index(self.quantities(), j);
+        Command { offset: beta[i], sin: beta[i + 1], cos: beta[i + 2], frequency: beta[i + 3] }
+    }
+
     fn offset_of(&self, beta: &DVector<f64>) -> f64 {
         if self.offset { beta[self.extras.len() + 1] } else { 0.0 }
     }
 
-    /// Every record simulated at β (counts one simulation of the record set).
-    fn run(&self, beta: &DVector<f64>) -> Result<Vec<Vec<Sample>>, CalibrationError> {
-        if self.sims.get() >= self.limit.get() {
+    /// Count `n` record simulations against the budget.
+    fn spend(&self, n: usize) -> Result<(), CalibrationError> {
+        let done = self.sims.fetch_add(n, Ordering::SeqCst);
+        if done + n > self.limit.load(Ordering::SeqCst) {
+            let records = self.records.len();
             let duration: f64 = self.records.iter().map(|r| r.tau.last().copied().unwrap_or(0.0)).sum();
             return Err(CalibrationError::Budget(format!(
-                "the rig fit stopped after {} simulations of the {} records ({duration} s of rig time each time), the limit \
+                "the rig fit stopped after {} simulations of the {records} records ({duration} s of rig time each time), the limit \
                  (max_simulations = {}, --max-simulations): start closer to the solution (--params), fit fewer keys, \
                  use shorter records or allow more",
-                self.sims.get(),
-                self.records.len(),
+                done.div_ceil(records),
                 self.total_limit
             )));
         }
-        self.sims.set(self.sims.get() + 1);
-        let cfg = self.config_at(beta);
-        self.records.iter().map(|r| simulate(&cfg, r)).collect()
+        Ok(())
     }
 
-    /// Simulated torque (+ T_0) at the used samples.
+    /// Every record (or only record `only`) simulated at β.
+    fn run(&self, beta: &DVector<f64>, only: Option<usize>) -> Result<Vec<Vec<Sample>>, CalibrationError> {
+        let cfg = self.config_at(beta);
+        let which: Vec<usize> = only.map_or_else(|| (0..self.records.len()).collect(), |j| vec![j]);
+        self.spend(which.len())?;
+        which
+            .par_iter()
+            .map(|&j| simulate(&cfg, &RigRecord { command: self.command_at(beta, j), ..self.records[j].clone() }))
+            .collect()
+    }
+
+    /// [simulated torque + T_0; K_p·simulated angle] at the used samples.
     fn stack(&self, runs: &[Vec<Sample>], beta: &DVector<f64>) -> DVector<f64> {
         let off = self.offset_of(beta);
-        let v: Vec<f64> = self
-            .records
-            .iter()
-            .zip(runs)
-            .flat_map(|(r, s)| s.iter().zip(&r.used).filter(|(_, u)| **u).map(|(s, _)| s.torque + off))
-            .collect();
+        let kp = self.base.rig.position_gain;
+        let used = || self.records.iter().zip(runs).flat_map(|(r, s)| s.iter().zip(&r.used).filter(|(_, u)| **u).map(|(s, _)| s));
+        let v: Vec<f64> = used().map(|s| s.torque + off).chain(used().map(|s| kp * s.angle)).collect();
         DVector::from_vec(v)
     }
 
-    fn model(&self, beta: &DVector<f64>) -> Result<DVector<f64>, CalibrationError> {
-        Ok(self.stack(&self.run(beta)?, beta))
+    /// The column of β's coordinate `k` at β, with `base` the runs at β: forward differences
+    /// (central when `central`; one-sided the other way where a step leaves the parameters'
+    /// domain); a command's coordinate simulates only its record.
+    fn column(&self, beta: &DVector<f64>, base: &[Vec<Sample>], k: usize, central: bool) -> Result<DVector<f64>, CalibrationError> {
+        let (m, q) = (self.extras.len(), self.quantities());
+        let mut col = DVector::zeros(self.y.len());
+        if self.offset && k == m + 1 {
+            col.rows_mut(0, self.torque_rows).fill(1.0);
+            return Ok(col);
+        }
+        let only = (k >= q).then(|| (k - q) / 4);
+        let h = if k == m {
+            STEP
+        } else if k < m {
+            STEP * beta[k].abs().max(1.0)
+        } else if (k - q) % 4 == 3 {
+            1e-7 * beta[k]
+        } else {
+            1e-6
+        };
+        let base_model = self.stack(base, beta);
+        let shifted = |d: f64| -> Result<DVector<f64>, CalibrationError> {
+            let mut b = beta.clone();
+            b[k] += d;
+            let runs = self.run(&b, only)?;
+            let all: Vec<Vec<Sample>> = match only {
+                Some(j) => base.iter().enumerate().map(|(i, s)| if i == j { runs[0].clone() } else { s.clone() }).collect(),
+                None => runs,
+            };
+            Ok(self.stack(&all, &b))
+        };
+        let d = match (shifted(h), central) {
+            (Ok(p), true) => match shifted(-h) {
+                Ok(q) => (p - q) / (2.0 * h),
+                Err(e @ CalibrationError::Budget(_)) => return Err(e),
+                Err(_) => (p - &base_model) / h,
+            },
+            (Ok(p), false) => (p - &base_model) / h,
+            (Err(e @ CalibrationError::Budget(_)), _) => return Err(e),
+            (Err(_), _) => (&base_model - shifted(-h)?) / h,
+        };
+        col.copy_from(&d);
+        Ok(col)
     }
 
-    /// Jacobian at β with the model `base` there: forward differences (central when
-    /// `central`; one-sided the other way where a step leaves the parameters' domain), exact
-    /// for T_0.
-    fn jacobian(&self, beta: &DVector<f64>, base: &DVector<f64>, central: bool) -> Result<DMatrix<f64>, CalibrationError> {
-        let m = self.extras.len();
-        let mut j = DMatrix::zeros(base.len(), beta.len());
-        for k in 0..=m {
-            let h = STEP * if k == m { 1.0 } else { beta[k].abs().max(1.0) };
-            let shifted = |d: f64| {
-                let mut b = beta.clone();
-                b[k] += d;
-                self.model(&b)
-            };
-            let col = match (shifted(h), central) {
-                (Ok(p), true) => match shifted(-h) {
-                    Ok(q) => (p - q) / (2.0 * h),
-                    Err(CalibrationError::Budget(s)) => return Err(CalibrationError::Budget(s)),
-                    Err(_) => (p - base) / h,
-                },
-                (Ok(p), false) => (p - base) / h,
-                (Err(CalibrationError::Budget(s)), _) => return Err(CalibrationError::Budget(s)),
-                (Err(_), _) => (base - shifted(-h)?) / h,
-            };
-            j.set_column(k, &col);
-        }
-        if self.offset {
-            j.column_mut(m + 1).fill(1.0);
-        }
-        Ok(j)
+    /// The Jacobian at β (the columns in parallel).
+    fn jacobian(&self, beta: &DVector<f64>, base: &[Vec<Sample>], central: bool) -> Result<DMatrix<f64>, CalibrationError> {
+        let cols = (0..beta.len()).into_par_iter().map(|k| self.column(beta, base, k, central)).collect::<Result<Vec<_>, _>>()?;
+        Ok(DMatrix::from_columns(&cols))
     }
 }
 
@@ -197,8 +247,8 @@ impl RigProblem<'_> {
 struct Lm<'a, 'b> {
     p: &'a RigProblem<'b>,
     beta: DVector<f64>,
-    /// The last model evaluated and its β (the Jacobian's base point).
-    last: RefCell<Option<(DVector<f64>, DVector<f64>)>>,
+    /// The last runs evaluated and their β (the Jacobian's base point).
+    last: RefCell<Option<(DVector<f64>, Vec<Vec<Sample>>)>>,
     error: RefCell<Option<CalibrationError>>,
     /// Residual given to a step outside the rig's domain (LM then shortens the step).
     outside: f64,
@@ -216,10 +266,10 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Lm<'_, '_> {
         self.beta.clone()
     }
     fn residuals(&self) -> Option<DVector<f64>> {
-        match self.p.model(&self.beta) {
-            Ok(m) => {
-                let r = &m - &self.p.y;
-                *self.last.borrow_mut() = Some((self.beta.clone(), m));
+        match self.p.run(&self.beta, None) {
+            Ok(runs) => {
+                let r = self.p.stack(&runs, &self.beta) - &self.p.y;
+                *self.last.borrow_mut() = Some((self.beta.clone(), runs));
                 Some(r)
             }
             Err(e @ CalibrationError::Budget(_)) => {
@@ -233,11 +283,11 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Lm<'_, '_> {
         }
     }
     fn jacobian(&self) -> Option<DMatrix<f64>> {
-        let cached = self.last.borrow().as_ref().filter(|(b, _)| *b == self.beta).map(|(_, m)| m.clone());
+        let cached = self.last.borrow().as_ref().filter(|(b, _)| *b == self.beta).map(|(_, r)| r.clone());
         let base = match cached {
-            Some(m) => m,
-            None => match self.p.model(&self.beta) {
-                Ok(m) => m,
+            Some(r) => r,
+            None => match self.p.run(&self.beta, None) {
+                Ok(r) => r,
                 Err(e) => {
                     *self.error.borrow_mut() = Some(e);
                     return None;
@@ -277,7 +327,9 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     let np = 1 + usize::from(options.fit_offset) + extras.len();
     let fd = np - usize::from(options.fit_offset);
     // Command estimate, one LM iteration and the final central Jacobian, at the least.
-    let least = MAX_COMMAND_ITERATIONS + 2 + fd + 2 * fd;
+    // (a command's Jacobian column simulates its record only: 4 columns, one record-set's worth)
+    let reserve = 2 * (fd + 4) + 1;
+    let least = MAX_COMMAND_ITERATIONS + BREAKAWAY_SCAN.len() + 2 + (fd + 4) + reserve;
     if options.max_simulations < least {
         return Err(CalibrationError::Budget(format!(
             "max_simulations = {} is too small: the rig fit of {np} quantities needs at least {least} simulations of the record set",
@@ -349,50 +401,86 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         e.key.set(&mut start.model, &mut start.rig, e.start);
     }
     start.model.friction.boundary_friction_coefficient = mu0;
-    let refinements = refine_commands(&mut recs, &start)?;
-    let commands: Vec<Command> = recs.iter().map(|r| r.command).collect();
+    let (mut sims, _) = refine_commands(&mut recs, &start)?;
+    let records_n = recs.len();
+    let torque_rows = y.len();
+    let kp = base.rig.position_gain;
+    let angle_rows = recs.iter().flat_map(|r| r.angle.iter().zip(&r.used).filter(|(_, u)| **u).map(|(a, _)| kp * a));
+    let y_all = DVector::from_iterator(torque_rows + torque_rows, y.iter().copied().chain(angle_rows));
+    let make = |recs: &[RigRecord], sims: usize, beta: &DVector<f64>| -> (DVector<f64>, AtomicUsize) {
+        let mut full = DVector::zeros(np + 4 * records_n);
+        full.rows_mut(0, np).copy_from(&beta);
+        for (j, r) in recs.iter().enumerate() {
+            let c = r.command;
+            full.rows_mut(command_index(np, j), 4).copy_from(&DVector::from_vec(vec![c.offset, c.sin, c.cos, c.frequency]));
+        }
+        (full, AtomicUsize::new(sims * records_n))
+    };
+    // The breakaway factor given on its bound: scan it, then estimate the command again there.
+    for (k, e) in extras.iter().enumerate() {
+        if e.key.name() == "rig.breakaway_factor" && e.start != e.key.get(&options.params, &base.rig) {
+            let (full, count) = make(&recs, sims, &beta);
+            let problem = RigProblem {
+                records: &recs,
+                base,
+                extras: &extras,
+                offset: options.fit_offset,
+                y: y_all.clone(),
+                torque_rows,
+                sims: count,
+                limit: AtomicUsize::new(usize::MAX),
+                total_limit: options.max_simulations,
+            };
+            beta[k] = breakaway_scan(&problem, &full, k, e.transform)?;
+            sims = problem.sims.load(Ordering::SeqCst).div_ceil(records_n);
+            e.key.set(&mut start.model, &mut start.rig, e.transform.inverse(beta[k]));
+            sims += refine_commands(&mut recs, &start)?.0;
+        }
+    }
+    let (mut full, count) = make(&recs, sims, &beta);
     let problem = RigProblem {
         records: &recs,
         base,
         extras: &extras,
         offset: options.fit_offset,
-        y,
-        sims: Cell::new(refinements),
-        limit: Cell::new(options.max_simulations - 2 * fd),
+        y: y_all,
+        torque_rows,
+        sims: count,
+        // The final central Jacobian is kept out of LM's share.
+        limit: AtomicUsize::new((options.max_simulations - reserve) * records_n),
         total_limit: options.max_simulations,
     };
     if options.fit_offset {
-        let m = problem.model(&beta)?;
-        beta[np - 1] = (&problem.y - m).mean();
+        let m = problem.stack(&problem.run(&full, None)?, &full);
+        full[np - 1] = (problem.y.rows(0, torque_rows) - m.rows(0, torque_rows)).mean();
     }
-
-    let scale = problem.y.amax().max(1.0);
-    let lm = Lm { p: &problem, beta: beta.clone(), last: RefCell::new(None), error: RefCell::new(None), outside: 1e3 * scale };
-    let (lm, report) = LevenbergMarquardt::new().with_xtol(1e-8).with_patience(options.max_simulations).minimize(lm);
-    let evaluations = report.number_of_evaluations;
-    if !report.termination.was_successful() {
-        let stored = lm.error.into_inner();
-        return Err(match stored {
-            Some(e @ CalibrationError::Budget(_)) => e,
-            Some(e) if matches!(report.termination, levenberg_marquardt::TerminationReason::User(_)) => e,
-            _ => CalibrationError::NoConvergence(format!("{:?} after {evaluations} evaluations", report.termination)),
-        });
-    }
-    beta = lm.beta;
-    problem.limit.set(options.max_simulations);
-    let runs = problem.run(&beta)?;
-    let model = problem.stack(&runs, &beta);
-    let jac = problem.jacobian(&beta, &model, true)?;
-    let r = &problem.y - &model;
-    let u = analyse(&jac, &r, &clusters, ncl, options.resamples, options.seed).ok_or_else(|| CalibrationError::Unidentifiable {
+    let start_beta = full.clone();
+    let mut evaluations = 0;
+    full = lm_fit(&problem, &full, options.max_simulations, &mut evaluations)?;
+    problem.limit.store(options.max_simulations * records_n, Ordering::SeqCst);
+    let runs = problem.run(&full, None)?;
+    let model_all = problem.stack(&runs, &full);
+    let jac = problem.jacobian(&full, &runs, true)?;
+    let r_all = &problem.y - &model_all;
+    let cl_all: Vec<usize> = clusters.iter().chain(clusters.iter()).copied().collect();
+    let u = analyse(&jac, &r_all, &cl_all, ncl, options.resamples, options.seed).ok_or_else(|| CalibrationError::Unidentifiable {
         what: "the fitted quantities cannot be determined from these records (singular normal matrix)".into(),
     })?;
-
+    let u = super::uncertainty::Uncertainty {
+        correlation: u.correlation.iter().take(np).map(|row| row[..np].to_vec()).collect(),
+        ..u
+    };
+    let commands: Vec<Command> = (0..records_n).map(|j| problem.command_at(&full, j)).collect();
+    let beta = full.rows(0, np).into_owned();
+    let model = model_all.rows(0, torque_rows).into_owned();
+    let r = problem.y.rows(0, torque_rows) - &model;
+    let jac_t = jac.view((0, 0), (torque_rows, np)).into_owned();
     let cfg = problem.config_at(&beta);
     let keys = keys_of(&extras, options.fit_offset);
     let transforms: Vec<(Transform, &'static str, f64)> = extras
         .iter()
-        .map(|e| (e.transform, e.key.unit(), e.start))
+        .enumerate()
+        .map(|(k, e)| (e.transform, e.key.unit(), e.transform.inverse(start_beta[k])))
         .chain(std::iter::once((Transform::Identity, "1", mu0)))
         .chain(options.fit_offset.then_some((Transform::Identity, "N.m", 0.0)))
         .collect();
@@ -401,14 +489,14 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     let mu = estimates.pop().expect("mu_c follows the extras");
     estimates.insert(0, mu);
     let strokes = clusters.iter().collect::<std::collections::HashSet<_>>().len();
-    let mut warn = warnings(&extras, &jac, &model, &u, &estimates, &keys, strokes, options);
-    for e in &extras {
+    let mut warn = warnings(&extras, &jac_t, &model, &u, &estimates, &keys, strokes, options);
+    for (k, e) in extras.iter().enumerate() {
         let v = e.key.get(&cfg.model, &cfg.rig);
         if e.start != e.key.get(&options.params, &base.rig) {
             warn.push(format!(
-                "{} started at {}{} (its given start value lies on the bound of its range {})",
+                "{} started at {}{} (the best of a scan: its given start value lies on the bound of its range {})",
                 e.key.name(),
-                e.start,
+                e.transform.inverse(start_beta[k]),
                 unit_suffix(e.key.unit()),
                 e.key.range().describe()
             ));
@@ -419,7 +507,7 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
             warn.push(format!("{} = {v}{} is at the bound of its range: the records ask for a value outside it", e.key.name(), unit_suffix(e.key.unit())));
         }
     }
-    let mean_abs = problem.y.iter().map(|v| v.abs()).sum::<f64>() / problem.y.len() as f64;
+    let mean_abs = model.iter().map(|v| v.abs()).sum::<f64>() / model.len() as f64;
     let rms = (r.norm_squared() / r.len() as f64).sqrt();
     if rms > 0.1 * mean_abs {
         warn.push(format!(
@@ -467,24 +555,63 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         inertia: cfg.rig.inertia,
         settle_time: options.exclusion.settle_time,
         evaluations,
-        simulations: problem.sims.get(),
+        simulations: problem.sims.load(Ordering::SeqCst).div_ceil(records_n),
         commands,
         series,
     })
 }
 
+/// Breakaway factors tried for the start when the given one is on its bound (the default 1).
+pub const BREAKAWAY_SCAN: [f64; 7] = [1.05, 1.1, 1.2, 1.3, 1.45, 1.65, 2.0];
+
+/// The scanned breakaway factor whose simulation (other quantities at their start, the offset
+/// at its least-squares value) has the least residual: the records' stick-slip makes the
+/// residual multimodal in k_b, so LM starts from the best of a coarse scan.
+fn breakaway_scan(p: &RigProblem<'_>, beta: &DVector<f64>, k: usize, t: Transform) -> Result<f64, CalibrationError> {
+    let (mut best, mut at) = (f64::INFINITY, beta[k]);
+    for v in BREAKAWAY_SCAN {
+        let mut b = beta.clone();
+        b[k] = t.forward(v).expect("inside the range");
+        let r = p.y.rows(0, p.torque_rows) - p.stack(&p.run(&b, None)?, &b).rows(0, p.torque_rows);
+        let rss = if p.offset { r.add_scalar(-r.mean()).norm_squared() } else { r.norm_squared() };
+        if rss < best {
+            (best, at) = (rss, b[k]);
+        }
+    }
+    Ok(at)
+}
+
+/// Levenberg–Marquardt from `beta`; adds its evaluations to `evaluations`.
+fn lm_fit(problem: &RigProblem<'_>, beta: &DVector<f64>, patience: usize, evaluations: &mut usize) -> Result<DVector<f64>, CalibrationError> {
+    let scale = problem.y.amax().max(1.0);
+    let lm = Lm { p: problem, beta: beta.clone(), last: RefCell::new(None), error: RefCell::new(None), outside: 1e3 * scale };
+    let (lm, report) = LevenbergMarquardt::new().with_xtol(1e-8).with_patience(patience).minimize(lm);
+    *evaluations += report.number_of_evaluations;
+    if !report.termination.was_successful() {
+        let stored = lm.error.into_inner();
+        return Err(match stored {
+            Some(e @ CalibrationError::Budget(_)) => e,
+            Some(e) if matches!(report.termination, levenberg_marquardt::TerminationReason::User(_)) => e,
+            _ => CalibrationError::NoConvergence(format!("{:?} after {} evaluations", report.termination, report.number_of_evaluations)),
+        });
+    }
+    Ok(lm.beta)
+}
+
 /// Step 2 of [`crate::command`]: move each command by the difference between the recorded and
 /// the simulated angle's sine (over the used samples), at the start parameters `cfg`, until no
 /// command moves by more than [`COMMAND_TOLERANCE`] (at most [`MAX_COMMAND_ITERATIONS`]
-/// simulations of the record set). Returns the simulations run.
-fn refine_commands(recs: &mut [RigRecord], cfg: &RigConfig) -> Result<usize, CalibrationError> {
+/// simulations of the record set). Returns the simulations run and the first move (rad).
+fn refine_commands(recs: &mut [RigRecord], cfg: &RigConfig) -> Result<(usize, f64), CalibrationError> {
     let singular = |name: &str| CalibrationError::Unidentifiable { what: format!("record {name}: no sine fits the angle after the start-up") };
     let sine = |r: &RigRecord, angle: &[f64]| fit_sine_near(&r.tau, angle, &r.used, r.command.frequency, 0.01).ok_or_else(|| singular(&r.name));
     let targets: Vec<Command> = recs.iter().map(|r| sine(r, &r.angle)).collect::<Result<_, _>>()?;
+    let mut first = 0.0;
     for k in 1..=MAX_COMMAND_ITERATIONS {
         let mut moved = 0.0f64;
-        for (r, t) in recs.iter_mut().zip(&targets) {
-            let angle: Vec<f64> = simulate(cfg, r)?.iter().map(|s| s.angle).collect();
+        let sims = recs.par_iter().map(|r| simulate(cfg, r)).collect::<Result<Vec<_>, _>>()?;
+        for ((r, t), sim) in recs.iter_mut().zip(&targets).zip(sims) {
+            let angle: Vec<f64> = sim.iter().map(|s| s.angle).collect();
             let s = sine(r, &angle)?;
             let span = r.tau.last().copied().unwrap_or(0.0);
             let d = [t.offset - s.offset, t.sin - s.sin, t.cos - s.cos, t.frequency - s.frequency];
@@ -494,11 +621,14 @@ fn refine_commands(recs: &mut [RigRecord], cfg: &RigConfig) -> Result<usize, Cal
             r.command.frequency += d[3];
             moved = [d[0], d[1], d[2], d[3] * span].iter().fold(moved, |m, x| m.max(x.abs()));
         }
+        if k == 1 {
+            first = moved;
+        }
         if moved < COMMAND_TOLERANCE {
-            return Ok(k);
+            return Ok((k, first));
         }
     }
-    Ok(MAX_COMMAND_ITERATIONS)
+    Ok((MAX_COMMAND_ITERATIONS, first))
 }
 
 /// " unit", or nothing for a dimensionless quantity.

@@ -9,11 +9,17 @@ use pinjoint_calibrate::Record;
 /// A rig run: `load` N, `frequency` Hz, ±40°, `cycles` strokes from rest, `spc` samples a cycle,
 /// μ_c = `mu_c`, breakaway factor `breakaway` (the static peak at each reversal).
 pub fn rig_run(load: f64, frequency: f64, mu_c: f64, breakaway: f64, cycles: usize, spc: usize) -> Vec<Sample> {
+    rig_run_servo(load, frequency, mu_c, breakaway, RigConfig::default().rig.servo_time_constant, cycles, spc)
+}
+
+/// [`rig_run`] with the servo time constant `servo` (s) too.
+pub fn rig_run_servo(load: f64, frequency: f64, mu_c: f64, breakaway: f64, servo: f64, cycles: usize, spc: usize) -> Vec<Sample> {
     let mut cfg = RigConfig::default();
     cfg.model.friction.boundary_friction_coefficient = mu_c;
     cfg.rig.load = load;
     cfg.rig.frequency = frequency;
     cfg.rig.breakaway_factor = breakaway;
+    cfg.rig.servo_time_constant = servo;
     run_cycles(&cfg, cycles as f64, spc).expect("rig runs")
 }
 
