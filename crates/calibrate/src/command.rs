@@ -122,8 +122,9 @@ mod tests {
         let angle: Vec<f64> = tau.iter().map(|&t| (cmd.at(t).0 / q).round() * q).collect();
         let f = fit_sine(&tau, &angle).unwrap();
         assert!((f.frequency / 0.7 - 1.0).abs() < 1e-6, "{f:?}");
+        // Quantisation errors of 4.8e-5 rad average to a few 1e-7 rad over 5000 samples.
         for (x, y) in [(f.offset, 0.01), (f.sin, 0.6), (f.cos, -0.05)] {
-            assert!((x - y).abs() < 1e-6, "{f:?}");
+            assert!((x - y).abs() < 5e-6, "{f:?}");
         }
         // The rate is the derivative of the angle.
         let h = 1e-6;

@@ -25,15 +25,15 @@ pub fn rig_run_servo(load: f64, frequency: f64, mu_c: f64, breakaway: f64, servo
 
 /// Standard normal deviate (Box–Muller).
 pub fn normal(rng: &mut SplitMix) -> f64 {
-    let u1 = ((rng.next_u64() >> 11) as f64 + 0.5) / (1u64 << 53) as f64;
-    let u2 = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+    let u1 = rng.uniform() + 0.5 / (1u64 << 53) as f64;
+    let u2 = rng.uniform();
     (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }
 
 /// What a data logger records of a run: the angle quantised to `quantum` rad, the torque with
 /// white noise of `noise` N·m (plus `offset` N·m), no velocity column.
 pub fn record(name: &str, s: &[Sample], noise: f64, quantum: f64, offset: f64, seed: u64) -> Record {
-    let mut rng = SplitMix(seed);
+    let mut rng = SplitMix::new(seed);
     let q = |a: f64| if quantum > 0.0 { (a / quantum).round() * quantum } else { a };
     Record {
         name: name.into(),
