@@ -243,12 +243,15 @@ impl RigProblem<'_> {
     }
 }
 
+/// Samples of every record's simulation.
+type Runs = Vec<Vec<Sample>>;
+
 /// The `levenberg-marquardt` crate's view: residuals model − y.
 struct Lm<'a, 'b> {
     p: &'a RigProblem<'b>,
     beta: DVector<f64>,
     /// The last runs evaluated and their β (the Jacobian's base point).
-    last: RefCell<Option<(DVector<f64>, Vec<Vec<Sample>>)>>,
+    last: RefCell<Option<(DVector<f64>, Runs)>>,
     error: RefCell<Option<CalibrationError>>,
     /// Residual given to a step outside the rig's domain (LM then shortens the step).
     outside: f64,
@@ -409,7 +412,7 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     let y_all = DVector::from_iterator(torque_rows + torque_rows, y.iter().copied().chain(angle_rows));
     let make = |recs: &[RigRecord], sims: usize, beta: &DVector<f64>| -> (DVector<f64>, AtomicUsize) {
         let mut full = DVector::zeros(np + 4 * records_n);
-        full.rows_mut(0, np).copy_from(&beta);
+        full.rows_mut(0, np).copy_from(beta);
         for (j, r) in recs.iter().enumerate() {
             let c = r.command;
             full.rows_mut(command_index(np, j), 4).copy_from(&DVector::from_vec(vec![c.offset, c.sin, c.cos, c.frequency]));

@@ -10,7 +10,7 @@ use pinjoint_calibrate::{calibrate, CalibrationError, Model, Options, Record, MU
 const MU: f64 = 0.105;
 
 fn rig_options(keys: &[&str]) -> Options {
-    Options { model: Model::Rig, fit: keys.iter().map(|k| k.to_string()).collect(), ..Options::default() }
+    Options { model: Model::Rig, fit: keys.iter().map(ToString::to_string).collect(), ..Options::default() }
 }
 
 fn within(e: &pinjoint_calibrate::Estimate, truth: f64) {
@@ -58,10 +58,10 @@ fn bad_uses_are_clear_errors() {
     let s = rig_run(20e3, 1.0, MU, 1.3, 3, 500);
     let rec = record("r", &s, 0.0, 0.0, 0.0, 1);
     // A rig key without the rig model.
-    let e = calibrate(&[rec.clone()], &Options { fit: vec!["rig.breakaway_factor".into()], ..Options::default() }).unwrap_err().to_string();
+    let e = calibrate(std::slice::from_ref(&rec), &Options { fit: vec!["rig.breakaway_factor".into()], ..Options::default() }).unwrap_err().to_string();
     assert!(e.contains("rig.breakaway_factor") && e.contains("--model rig"), "{e}");
     // An excitation key is not fitted.
-    let e = calibrate(&[rec.clone()], &rig_options(&["rig.frequency"])).unwrap_err().to_string();
+    let e = calibrate(std::slice::from_ref(&rec), &rig_options(&["rig.frequency"])).unwrap_err().to_string();
     assert!(e.contains("rig.frequency") && e.contains("record"), "{e}");
     // Less than a cycle of angle: no command to estimate.
     let short = Record { time: rec.time[..350].to_vec(), angle: rec.angle.as_ref().map(|a| a[..350].to_vec()), torque: rec.torque[..350].to_vec(),
@@ -75,7 +75,7 @@ fn bad_uses_are_clear_errors() {
     assert!(e.contains("angle column"), "{e}");
     // Bounded work: too small a simulation budget is refused before any simulation, and a
     // budget the fit runs out of is refused naming the limit.
-    let e = calibrate(&[rec.clone()], &Options { max_simulations: 3, ..rig_options(&[]) }).unwrap_err().to_string();
+    let e = calibrate(std::slice::from_ref(&rec), &Options { max_simulations: 3, ..rig_options(&[]) }).unwrap_err().to_string();
     assert!(e.contains("max_simulations = 3") && e.contains("at least"), "{e}");
     let e = calibrate(&[rec], &Options { max_simulations: 40, ..rig_options(&["rig.breakaway_factor", "rig.servo_time_constant"]) }).unwrap_err();
     assert!(matches!(e, CalibrationError::Budget(_)) && e.to_string().contains("--max-simulations"), "{e}");
