@@ -9,8 +9,9 @@ use super::record::Record;
 use super::result::{Calibration, Estimate, Series};
 use super::uncertainty::{analyse, Uncertainty, MIN_BOOTSTRAP_CLUSTERS, MIN_CLUSTERS};
 use super::{Model, Options};
-use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
-use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
+use super::lm::{Adapter, Residuals};
+use levenberg_marquardt::LevenbergMarquardt;
+use nalgebra::{DMatrix, DVector};
 use pinjoint::Params;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -162,8 +163,8 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
     let mut evaluations = 0;
     if !extras.is_empty() {
-        let lm = LmProblem { p: &problem, beta: beta.clone(), error: RefCell::new(None), evals: RefCell::new(0) };
-        let (lm, report) = LevenbergMarquardt::new().with_patience(200).minimize(lm);
+        let lm = LmProblem { p: &problem, error: RefCell::new(None), evals: RefCell::new(0) };
+        let (found, report) = LevenbergMarquardt::new().with_patience(200).minimize(Adapter { fit: &lm, beta: beta.clone() });
         if !report.termination.was_successful() {
             // A model error met on the way is the likelier cause; else LM's own reason.
             return Err(lm.error.into_inner().unwrap_or_else(|| {
@@ -171,7 +172,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
             }));
         }
         evaluations = report.number_of_evaluations;
-        beta = lm.beta;
+        beta = found.beta;
         // μ_c and T_0 exactly at the optimum of the others.
         let linear = problem.linear_solve(&beta)?;
         beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
@@ -459,39 +460,27 @@ impl Problem<'_> {
     }
 }
 
-/// The `levenberg-marquardt` crate's view: residuals model − y over β.
+/// The quasi-static problem for LM ([`Adapter`]): residuals model − y over β.
 struct LmProblem<'a, 'b> {
     p: &'a Problem<'b>,
-    beta: DVector<f64>,
     error: RefCell<Option<CalibrationError>>,
     evals: RefCell<usize>,
 }
 
-impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
-    type ResidualStorage = Owned<f64, Dyn>;
-    type JacobianStorage = Owned<f64, Dyn, Dyn>;
-    type ParameterStorage = Owned<f64, Dyn>;
-
-    fn set_params(&mut self, x: &DVector<f64>) {
-        self.beta.copy_from(x);
-    }
-    fn params(&self) -> DVector<f64> {
-        self.beta.clone()
-    }
-    fn residuals(&self) -> Option<DVector<f64>> {
+impl Residuals for LmProblem<'_, '_> {
+    fn residuals_at(&self, beta: &DVector<f64>) -> Option<DVector<f64>> {
         *self.evals.borrow_mut() += 1;
-        match self.p.model(&self.beta) {
+        match self.p.model(beta) {
             Ok(m) => Some(m - self.p.y),
             Err(e) => {
-                // A step outside the model's domain: let LM shrink its step; keep the first error
-                // in case it never recovers.
+                // A step outside the model's domain ends LM; keep the first error to report.
                 self.error.borrow_mut().get_or_insert(e);
                 None
             }
         }
     }
-    fn jacobian(&self) -> Option<DMatrix<f64>> {
-        match self.p.jacobian(&self.beta) {
+    fn jacobian_at(&self, beta: &DVector<f64>) -> Option<DMatrix<f64>> {
+        match self.p.jacobian(beta) {
             Ok((j, _)) => Some(j),
             Err(e) => {
                 self.error.borrow_mut().get_or_insert(e);

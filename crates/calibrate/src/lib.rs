@@ -50,6 +50,7 @@ pub mod derivative;
 pub mod error;
 pub mod exclusion;
 pub mod fit;
+pub mod lm;
 pub mod model;
 pub mod prepare;
 pub mod record;

@@ -36,8 +36,9 @@ use super::record::Record;
 use super::result::{Calibration, Estimate, Series};
 use super::uncertainty::analyse;
 use super::{Model, Options};
-use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
-use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
+use super::lm::{Adapter, Residuals};
+use levenberg_marquardt::LevenbergMarquardt;
+use nalgebra::{DMatrix, DVector};
 use pinjoint::rig::{FnExcitation, Inputs, RigConfig, RigSim, Sample};
 use rayon::prelude::*;
 use std::cell::RefCell;
@@ -246,10 +247,9 @@ impl RigProblem<'_> {
 /// Samples of every record's simulation.
 type Runs = Vec<Vec<Sample>>;
 
-/// The `levenberg-marquardt` crate's view: residuals model − y.
+/// The rig problem for LM ([`Adapter`]): residuals model − y.
 struct Lm<'a, 'b> {
     p: &'a RigProblem<'b>,
-    beta: DVector<f64>,
     /// The last runs evaluated and their β (the Jacobian's base point).
     last: RefCell<Option<(DVector<f64>, Runs)>>,
     error: RefCell<Option<CalibrationError>>,
@@ -257,22 +257,12 @@ struct Lm<'a, 'b> {
     outside: f64,
 }
 
-impl LeastSquaresProblem<f64, Dyn, Dyn> for Lm<'_, '_> {
-    type ResidualStorage = Owned<f64, Dyn>;
-    type JacobianStorage = Owned<f64, Dyn, Dyn>;
-    type ParameterStorage = Owned<f64, Dyn>;
-
-    fn set_params(&mut self, x: &DVector<f64>) {
-        self.beta.copy_from(x);
-    }
-    fn params(&self) -> DVector<f64> {
-        self.beta.clone()
-    }
-    fn residuals(&self) -> Option<DVector<f64>> {
-        match self.p.run(&self.beta, None) {
+impl Residuals for Lm<'_, '_> {
+    fn residuals_at(&self, beta: &DVector<f64>) -> Option<DVector<f64>> {
+        match self.p.run(beta, None) {
             Ok(runs) => {
-                let r = self.p.stack(&runs, &self.beta) - &self.p.y;
-                *self.last.borrow_mut() = Some((self.beta.clone(), runs));
+                let r = self.p.stack(&runs, beta) - &self.p.y;
+                *self.last.borrow_mut() = Some((beta.clone(), runs));
                 Some(r)
             }
             Err(e @ CalibrationError::Budget(_)) => {
@@ -285,11 +275,11 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Lm<'_, '_> {
             }
         }
     }
-    fn jacobian(&self) -> Option<DMatrix<f64>> {
-        let cached = self.last.borrow().as_ref().filter(|(b, _)| *b == self.beta).map(|(_, r)| r.clone());
+    fn jacobian_at(&self, beta: &DVector<f64>) -> Option<DMatrix<f64>> {
+        let cached = self.last.borrow().as_ref().filter(|(b, _)| b == beta).map(|(_, r)| r.clone());
         let base = match cached {
             Some(r) => r,
-            None => match self.p.run(&self.beta, None) {
+            None => match self.p.run(beta, None) {
                 Ok(r) => r,
                 Err(e) => {
                     *self.error.borrow_mut() = Some(e);
@@ -297,7 +287,7 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Lm<'_, '_> {
                 }
             },
         };
-        match self.p.jacobian(&self.beta, &base, false) {
+        match self.p.jacobian(beta, &base, false) {
             Ok(j) => Some(j),
             Err(e) => {
                 *self.error.borrow_mut() = Some(e);
@@ -587,8 +577,8 @@ fn breakaway_scan(p: &RigProblem<'_>, beta: &DVector<f64>, k: usize, t: Transfor
 /// Levenberg–Marquardt from `beta`; adds its evaluations to `evaluations`.
 fn lm_fit(problem: &RigProblem<'_>, beta: &DVector<f64>, patience: usize, evaluations: &mut usize) -> Result<DVector<f64>, CalibrationError> {
     let scale = problem.y.amax().max(1.0);
-    let lm = Lm { p: problem, beta: beta.clone(), last: RefCell::new(None), error: RefCell::new(None), outside: 1e3 * scale };
-    let (lm, report) = LevenbergMarquardt::new().with_xtol(1e-8).with_patience(patience).minimize(lm);
+    let lm = Lm { p: problem, last: RefCell::new(None), error: RefCell::new(None), outside: 1e3 * scale };
+    let (found, report) = LevenbergMarquardt::new().with_xtol(1e-8).with_patience(patience).minimize(Adapter { fit: &lm, beta: beta.clone() });
     *evaluations += report.number_of_evaluations;
     if !report.termination.was_successful() {
         let stored = lm.error.into_inner();
@@ -598,7 +588,7 @@ fn lm_fit(problem: &RigProblem<'_>, beta: &DVector<f64>, patience: usize, evalua
             _ => CalibrationError::NoConvergence(format!("{:?} after {} evaluations", report.termination, report.number_of_evaluations)),
         });
     }
-    Ok(lm.beta)
+    Ok(found.beta)
 }
 
 /// Step 2 of [`crate::command`]: move each command by the difference between the recorded and
