@@ -364,17 +364,7 @@ fn series(prepared: &[Prepared], params: &Params, beta: &DVector<f64>, o: &Optio
             let s = shapes(params, &pts, &|i| (p.name.clone(), i))?;
             let inertia_torque: Vec<f64> = p.alpha.iter().map(|a| o.inertia * a).collect();
             let fitted = s.iter().zip(&inertia_torque).map(|(s, ja)| ja + s.fluid + mu * s.boundary + off).collect();
-            Ok(Series {
-                record: p.name.clone(),
-                time: p.time.clone(),
-                angle: p.angle.clone(),
-                angular_velocity: p.omega.clone(),
-                load: p.load.clone(),
-                measured: p.torque.clone(),
-                inertia_torque,
-                fitted,
-                used: p.stroke.iter().map(Option::is_some).collect(),
-            })
+            Ok(p.series(inertia_torque, fitted, p.stroke.iter().map(Option::is_some).collect()))
         })
         .collect()
 }

@@ -33,7 +33,7 @@ use super::exclusion::{Reason, Window};
 use super::fit::{check_options, estimate, keys_of, warnings};
 use super::prepare::prepare;
 use super::record::Record;
-use super::result::{Calibration, Estimate, Series};
+use super::result::{Calibration, Estimate};
 use super::uncertainty::analyse;
 use super::{Model, Options};
 use super::lm::{Adapter, Residuals};
@@ -514,16 +514,8 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         .iter()
         .zip(&runs)
         .zip(&recs)
-        .map(|((p, s), x)| Series {
-            record: p.name.clone(),
-            time: p.time.clone(),
-            angle: p.angle.clone(),
-            angular_velocity: p.omega.clone(),
-            load: p.load.clone(),
-            measured: p.torque.clone(),
-            inertia_torque: s.iter().map(|s| s.torque + s.friction_torque).collect(),
-            fitted: s.iter().map(|s| s.torque + off).collect(),
-            used: x.used.clone(),
+        .map(|((p, s), x)| {
+            p.series(s.iter().map(|s| s.torque + s.friction_torque).collect(), s.iter().map(|s| s.torque + off).collect(), x.used.clone())
         })
         .collect();
     let points_used = r.len();
