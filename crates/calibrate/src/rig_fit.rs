@@ -15,6 +15,8 @@
 //! and T_0, jointly, by Levenberg–Marquardt with forward-difference Jacobians (central ones for
 //! the intervals). μ_c starts from the quasi-static fit.
 //!
+//! Only the angle is used (a recorded angular velocity is ignored when there is an angle).
+//!
 //! Exclusion differs from the quasi-static fit: the low-speed and settling windows are *used*
 //! (they are what the rig model describes and where k_b and τ_s show); left out is the start-up,
 //! every sample up to the record's first reversal plus the settling time (the simulation starts
@@ -308,6 +310,12 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     base.rig.inertia = options.inertia;
     base.validate()?;
     let extras = resolve(&options.fit, &options.params, &base.rig, true)?;
+    // The rig fit uses the angle only: a recorded angular velocity is dropped (when there is an
+    // angle), so that a stick-slipping record, whose sampled velocity disagrees with the angle's
+    // smoothed derivative, is not refused as inconsistent.
+    let stripped: Vec<Record> =
+        records.iter().map(|r| if r.angle.is_some() { Record { angular_velocity: None, ..r.clone() } } else { r.clone() }).collect();
+    let records = &stripped[..];
     let prepared = records.iter().map(|r| prepare(r, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
     let samples: usize = records.iter().map(Record::len).sum();
     let duration: f64 = records.iter().map(|r| r.time[r.len() - 1] - r.time[0]).sum();
