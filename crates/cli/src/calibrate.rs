@@ -36,9 +36,9 @@ Intervals: the larger of the iid and the cluster-robust (strokes as clusters) st
 Student-t quantiles, joined with a bootstrap over strokes when there are at least 20.\n\n\
 --model rig fits through the rig simulation instead (what `pinjoint cycle` runs: the position loop, \
 servo lag, stick and breakaway peak at each reversal): each record is simulated from rest on a sine command \
-estimated from its angle (refined by simulation until the simulated angle's sine matches the recorded one), \
-and every sample after the start-up (the first reversal plus --settle-time) is fitted, reversals included. \
-μ_c, T0 and the --fit keys (model keys and rig.* keys of the [rig] table, e.g. rig.breakaway_factor, \
+estimated from its angle (refined by simulation, then fitted jointly: the residuals are the torque and \
+K_p × the angle error), and every sample after the start-up (the first reversal plus --settle-time) is fitted, \
+reversals included; a recorded angular_velocity is ignored. μ_c, T0 and the --fit keys (model keys and rig.* keys of the [rig] table, e.g. rig.breakaway_factor, \
 rig.servo_time_constant; not the excitation or integrator settings) by Levenberg-Marquardt, intervals from \
 the Jacobian as above. The rig constants not fitted come from --params [rig]. Each evaluation simulates \
 every record: at most --max-simulations of them (refused beyond), 2e5 samples and 3600 s of records. \
