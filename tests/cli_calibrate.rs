@@ -96,3 +96,38 @@ fn bad_files_are_named_with_line_column_and_unit() {
     assert!(fail(&["calibrate", "--input", s(&tmp.path().join("missing.csv")), "--output", s(&out)]).contains("missing.csv"));
     assert!(!out.join("calibrated.toml").exists(), "no output after a failure");
 }
+
+#[test]
+fn model_rig_fits_the_breakaway_factor_through_the_rig_simulation() {
+    let tmp = tempfile::tempdir().unwrap();
+    let params = tmp.path().join("truth.toml");
+    std::fs::write(&params, "[friction]\nboundary_friction_coefficient = 0.105\n[rig]\nbreakaway_factor = 1.3\n").unwrap();
+    let rec = tmp.path().join("rec");
+    ok(&["cycle", "--frequency", "1", "--load", "20000", "--cycles", "3", "--samples-per-cycle", "500", "--params", s(&params), "--output", s(&rec)]);
+    let a = rec.join("cycle.csv");
+    let out = tmp.path().join("cal");
+    let o = ok(&["calibrate", "--input", s(&a), "--load", "20000", "--model", "rig", "--fit", "rig.breakaway_factor", "--output", s(&out), "--json"]);
+    println!("{}", o.stdout);
+    let v: serde_json::Value = serde_json::from_str(o.stdout.trim()).expect("one JSON object");
+    for (key, truth, tol) in [("friction.boundary_friction_coefficient", 0.105, 1e-4), ("rig.breakaway_factor", 1.3, 1e-3)] {
+        let e = &v["parameters"][key];
+        let value = e["value"].as_f64().unwrap();
+        assert!((value - truth).abs() < tol, "{key} = {value}");
+        assert!(e["standard_error"].as_f64().unwrap() > 0.0 && e["ci95"][0].as_f64().unwrap() <= value, "{key}");
+    }
+    // The documented keys, the same shape as the quasi-static fit's.
+    for k in ["parameters", "rms_residual", "points_used", "points_excluded", "torque_offset", "warnings"] {
+        assert!(v.get(k).is_some(), "{k}");
+    }
+    // The calibrated file carries the fitted [rig] section and reads back.
+    let toml = std::fs::read_to_string(out.join("calibrated.toml")).unwrap();
+    let kb: f64 = toml.lines().find_map(|l| l.strip_prefix("breakaway_factor = ")).expect("a breakaway_factor line").parse().unwrap();
+    assert!(toml.contains("[rig]") && (kb - 1.3).abs() < 1e-3, "{toml}");
+    ok(&["cycle", "--frequency", "1", "--load", "20000", "--cycles", "1", "--params", s(&out.join("calibrated.toml")), "--output", s(&tmp.path().join("again"))]);
+    // A rig key without --model rig, and a key that is not a rig property, are named.
+    let e = fail(&["calibrate", "--input", s(&a), "--load", "20000", "--fit", "rig.breakaway_factor", "--output", s(&out)]);
+    assert!(e.contains("rig.breakaway_factor") && e.contains("--model rig"), "{e}");
+    let e = fail(&["calibrate", "--input", s(&a), "--load", "20000", "--model", "rig", "--fit", "rig.rtol", "--output", s(&out)]);
+    assert!(e.contains("rig.rtol") && e.contains("integrator"), "{e}");
+    assert!(ok(&["calibrate", "--help"]).stdout.contains("--model rig"));
+}

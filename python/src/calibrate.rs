@@ -172,6 +172,7 @@ pub fn calibrate<'py>(
         half_width: half_width.or(def.half_width),
         resamples: resamples.unwrap_or(def.resamples),
         seed: seed.unwrap_or(def.seed),
+        ..def
     };
     let cal = py.detach(|| fit(&records, &options)).map_err(|e| PyValueError::new_err(calibration_error(&e)))?;
     Ok((to_dict(py, &cal)?, PyParams { inner: cal.params.clone() }))

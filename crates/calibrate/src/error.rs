@@ -154,6 +154,17 @@ pub enum CalibrationError {
         /// The model's error.
         source: ModelError,
     },
+    /// The rig simulation of a record failed (rig fit only).
+    #[error("record {record}: the rig simulation failed: {source}")]
+    Simulation {
+        /// Name of the offending record.
+        record: String,
+        /// The simulator's error.
+        source: pinjoint::rig::RigError,
+    },
+    /// The rig fit would need more work than it is allowed.
+    #[error("{0}")]
+    Budget(String),
     /// The nonlinear fit did not converge.
     #[error("the nonlinear fit did not converge: {0}")]
     NoConvergence(String),

@@ -20,6 +20,9 @@ pub enum Reason {
     LowSpeed,
     /// Within the settling time after a reversal or the record's start.
     Settling,
+    /// Rig fit: before the first reversal plus the settling time (the simulation starts at
+    /// rest; a record taken from a running rig does not).
+    StartUp,
 }
 
 impl Reason {
@@ -28,6 +31,7 @@ impl Reason {
         match self {
             Reason::LowSpeed => "low speed",
             Reason::Settling => "settling after reversal",
+            Reason::StartUp => "start-up (to the first reversal and settling)",
         }
     }
 }
@@ -75,6 +79,8 @@ pub struct RecordExclusion {
     pub low_speed: usize,
     /// Samples excluded as settling after a reversal or the record's start.
     pub settling: usize,
+    /// Rig fit: samples excluded as the start-up (0 for the core model).
+    pub start_up: usize,
     /// Samples kept for the fit.
     pub used: usize,
 }
@@ -158,6 +164,7 @@ pub fn classify(record: &str, time: &[f64], omega: &[f64], rule: &ExclusionRule)
         windows,
         low_speed,
         settling,
+        start_up: 0,
         used: n - low_speed - settling,
     };
     Classified { stroke, since, summary }

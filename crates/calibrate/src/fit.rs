@@ -8,9 +8,10 @@ use super::prepare::{prepare, Prepared, STICK_SLIP_IRREGULARITY};
 use super::record::Record;
 use super::result::{Calibration, Estimate, Series};
 use super::uncertainty::{analyse, Uncertainty, MIN_BOOTSTRAP_CLUSTERS, MIN_CLUSTERS};
-use super::Options;
-use levenberg_marquardt::{LeastSquaresProblem, LevenbergMarquardt};
-use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
+use super::{Model, Options};
+use super::lm::{Adapter, Residuals};
+use levenberg_marquardt::LevenbergMarquardt;
+use nalgebra::{DMatrix, DVector};
 use pinjoint::Params;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -44,6 +45,9 @@ pub const MAX_SETTLE_EXTENSIONS: usize = 6;
 /// time and the fit repeated (at most [`MAX_SETTLE_EXTENSIONS`] times, and only while at least
 /// half the samples stay in use). The report says so.
 pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, CalibrationError> {
+    if options.model == Model::Rig {
+        return super::rig_fit::calibrate_rig(records, options);
+    }
     let mut o = options.clone();
     let step = 0.5 * options.exclusion.settle_time;
     let (mut best, mut deviates) = calibrate_once(records, &o)?;
@@ -99,7 +103,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     }
     options.params.validate()?;
     check_options(options)?;
-    let extras = resolve(&options.fit, &options.params)?;
+    let extras = resolve(&options.fit, &options.params, &options.rig, false)?;
     let prepared = records.iter().map(|r| prepare(r, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
     let j_inertia = options.inertia;
     let mut clusters: HashMap<(usize, usize), usize> = HashMap::new();
@@ -153,14 +157,14 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     // Start: the extras at their start values, μ_c and T_0 by linear least squares.
     let mut beta = DVector::zeros(np);
     for (k, e) in extras.iter().enumerate() {
-        beta[k] = e.transform.forward((e.spec.get)(&options.params)).expect("checked by resolve");
+        beta[k] = e.transform.forward(e.start).expect("checked by resolve");
     }
     let linear = problem.linear_solve(&beta)?;
     beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
     let mut evaluations = 0;
     if !extras.is_empty() {
-        let lm = LmProblem { p: &problem, beta: beta.clone(), error: RefCell::new(None), evals: RefCell::new(0) };
-        let (lm, report) = LevenbergMarquardt::new().with_patience(200).minimize(lm);
+        let lm = LmProblem { p: &problem, error: RefCell::new(None), evals: RefCell::new(0) };
+        let (found, report) = LevenbergMarquardt::new().with_patience(200).minimize(Adapter { fit: &lm, beta: beta.clone() });
         if !report.termination.was_successful() {
             // A model error met on the way is the likelier cause; else LM's own reason.
             return Err(lm.error.into_inner().unwrap_or_else(|| {
@@ -168,7 +172,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
             }));
         }
         evaluations = report.number_of_evaluations;
-        beta = lm.beta;
+        beta = found.beta;
         // μ_c and T_0 exactly at the optimum of the others.
         let linear = problem.linear_solve(&beta)?;
         beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
@@ -190,7 +194,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     let keys = keys_of(&extras, options.fit_offset);
     let transforms: Vec<(Transform, &'static str, f64)> = extras
         .iter()
-        .map(|e| (e.transform, e.spec.unit, (e.spec.get)(&options.params)))
+        .map(|e| (e.transform, e.key.unit(), e.start))
         .chain(std::iter::once((Transform::Identity, "1", options.params.friction.boundary_friction_coefficient)))
         .chain(options.fit_offset.then_some((Transform::Identity, "N.m", 0.0)))
         .collect();
@@ -224,6 +228,10 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     let points_used = points.len();
     let deviation = settle_deviation(&points, &r, options.exclusion.settle_time);
     Ok((Calibration {
+        model: Model::Core,
+        rig: None,
+        simulations: 0,
+        commands: Vec::new(),
         params,
         estimates,
         offset,
@@ -246,7 +254,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     }, deviation))
 }
 
-fn check_options(o: &Options) -> Result<(), CalibrationError> {
+pub(crate) fn check_options(o: &Options) -> Result<(), CalibrationError> {
     let bad = |what: String| Err(CalibrationError::Option(what));
     if !(o.inertia.is_finite() && o.inertia >= 0.0) {
         return bad(format!("inertia = {} kg.m2 is invalid: it must be a finite number >= 0", o.inertia));
@@ -265,11 +273,11 @@ fn check_options(o: &Options) -> Result<(), CalibrationError> {
     Ok(())
 }
 
-fn keys_of(extras: &[Extra], offset: bool) -> Vec<String> {
-    extras.iter().map(|e| e.spec.name()).chain(std::iter::once(MU_C.to_string())).chain(offset.then(|| "torque_offset".to_string())).collect()
+pub(crate) fn keys_of(extras: &[Extra], offset: bool) -> Vec<String> {
+    extras.iter().map(|e| e.key.name()).chain(std::iter::once(MU_C.to_string())).chain(offset.then(|| "torque_offset".to_string())).collect()
 }
 
-fn estimate(key: &str, (t, unit, initial): (Transform, &'static str, f64), b: f64, u: &Uncertainty, k: usize) -> Estimate {
+pub(crate) fn estimate(key: &str, (t, unit, initial): (Transform, &'static str, f64), b: f64, u: &Uncertainty, k: usize) -> Estimate {
     let slope = t.slope(b);
     let (lo, hi) = u.ci95[k];
     Estimate {
@@ -286,7 +294,7 @@ fn estimate(key: &str, (t, unit, initial): (Transform, &'static str, f64), b: f6
 }
 
 #[allow(clippy::too_many_arguments)]
-fn warnings(
+pub(crate) fn warnings(
     extras: &[Extra],
     jac: &DMatrix<f64>,
     model: &DVector<f64>,
@@ -305,7 +313,7 @@ fn warnings(
             w.push(format!(
                 "{} is not identifiable from these records: a 1 % change of it moves the fitted torque by {:.2e} % (rms); \
                  its interval means nothing (e.g. viscosity from records that never leave the boundary regime)",
-                e.spec.name(),
+                e.key.name(),
                 rel
             ));
         }
@@ -356,17 +364,7 @@ fn series(prepared: &[Prepared], params: &Params, beta: &DVector<f64>, o: &Optio
             let s = shapes(params, &pts, &|i| (p.name.clone(), i))?;
             let inertia_torque: Vec<f64> = p.alpha.iter().map(|a| o.inertia * a).collect();
             let fitted = s.iter().zip(&inertia_torque).map(|(s, ja)| ja + s.fluid + mu * s.boundary + off).collect();
-            Ok(Series {
-                record: p.name.clone(),
-                time: p.time.clone(),
-                angle: p.angle.clone(),
-                angular_velocity: p.omega.clone(),
-                load: p.load.clone(),
-                measured: p.torque.clone(),
-                inertia_torque,
-                fitted,
-                used: p.stroke.iter().map(Option::is_some).collect(),
-            })
+            Ok(p.series(inertia_torque, fitted, p.stroke.iter().map(Option::is_some).collect()))
         })
         .collect()
 }
@@ -383,9 +381,9 @@ struct Problem<'a> {
 
 impl Problem<'_> {
     fn params_at(&self, beta: &DVector<f64>) -> Params {
-        let mut p = self.base;
+        let (mut p, mut rig) = (self.base, pinjoint::rig::RigParams::default());
         for (k, e) in self.extras.iter().enumerate() {
-            (e.spec.set)(&mut p, e.transform.inverse(beta[k]));
+            e.key.set(&mut p, &mut rig, e.transform.inverse(beta[k]));
         }
         p.friction.boundary_friction_coefficient = beta[self.extras.len()];
         p
@@ -452,39 +450,27 @@ impl Problem<'_> {
     }
 }
 
-/// The `levenberg-marquardt` crate's view: residuals model − y over β.
+/// The quasi-static problem for LM ([`Adapter`]): residuals model − y over β.
 struct LmProblem<'a, 'b> {
     p: &'a Problem<'b>,
-    beta: DVector<f64>,
     error: RefCell<Option<CalibrationError>>,
     evals: RefCell<usize>,
 }
 
-impl LeastSquaresProblem<f64, Dyn, Dyn> for LmProblem<'_, '_> {
-    type ResidualStorage = Owned<f64, Dyn>;
-    type JacobianStorage = Owned<f64, Dyn, Dyn>;
-    type ParameterStorage = Owned<f64, Dyn>;
-
-    fn set_params(&mut self, x: &DVector<f64>) {
-        self.beta.copy_from(x);
-    }
-    fn params(&self) -> DVector<f64> {
-        self.beta.clone()
-    }
-    fn residuals(&self) -> Option<DVector<f64>> {
+impl Residuals for LmProblem<'_, '_> {
+    fn residuals_at(&self, beta: &DVector<f64>) -> Option<DVector<f64>> {
         *self.evals.borrow_mut() += 1;
-        match self.p.model(&self.beta) {
+        match self.p.model(beta) {
             Ok(m) => Some(m - self.p.y),
             Err(e) => {
-                // A step outside the model's domain: let LM shrink its step; keep the first error
-                // in case it never recovers.
+                // A step outside the model's domain ends LM; keep the first error to report.
                 self.error.borrow_mut().get_or_insert(e);
                 None
             }
         }
     }
-    fn jacobian(&self) -> Option<DMatrix<f64>> {
-        match self.p.jacobian(&self.beta) {
+    fn jacobian_at(&self, beta: &DVector<f64>) -> Option<DMatrix<f64>> {
+        match self.p.jacobian(beta) {
             Ok((j, _)) => Some(j),
             Err(e) => {
                 self.error.borrow_mut().get_or_insert(e);

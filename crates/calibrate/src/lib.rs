@@ -44,17 +44,21 @@
 //! assert!((cal.estimates[0].value - 0.1).abs() < 1e-5, "{}", cal.estimates[0].value);
 //! ```
 
+pub mod command;
 pub mod coords;
 pub mod derivative;
 pub mod error;
 pub mod exclusion;
 pub mod fit;
+pub mod lm;
 pub mod model;
 pub mod prepare;
 pub mod record;
 pub mod result;
+pub mod rig_fit;
 pub mod uncertainty;
 
+pub use command::Command;
 pub use coords::MU_C;
 pub use error::CalibrationError;
 pub use exclusion::{ExclusionRule, Reason, RecordExclusion, Window};
@@ -62,7 +66,20 @@ pub use fit::calibrate;
 pub use record::Record;
 pub use result::{Calibration, Estimate, Series};
 
+use pinjoint::rig::RigParams;
 use pinjoint::Params;
+
+/// Which model of the record is fitted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Model {
+    /// The quasi-static model T = J·α + sign(ω)·μRP + T_0, away from reversals (the default).
+    #[default]
+    Core,
+    /// The rig simulation (`pinjoint::rig`, what `pinjoint cycle` runs) driven by a sine
+    /// command estimated from each record's angle: stick, breakaway peaks and servo ringing
+    /// included; fits `rig.*` keys besides μ_c ([`rig_fit`]).
+    Rig,
+}
 
 /// How to calibrate.
 #[derive(Debug, Clone, PartialEq)]
@@ -84,6 +101,16 @@ pub struct Options {
     pub resamples: usize,
     /// Bootstrap seed.
     pub seed: u64,
+    /// The model fitted (default [`Model::Core`]).
+    pub model: Model,
+    /// The rig's parameters for [`Model::Rig`]: start values of `rig.*` keys and every rig
+    /// constant not fitted. Its `inertia` is replaced by [`Options::inertia`] (J has one
+    /// meaning: subtracted as J·α by the core model, simulated by the rig model); its
+    /// amplitude, frequency and load are not used (each record gives its own).
+    pub rig: RigParams,
+    /// [`Model::Rig`]: the most simulations of the whole record set the fit may run
+    /// (default [`rig_fit::DEFAULT_MAX_SIMULATIONS`]); beyond it the fit is refused, saying so.
+    pub max_simulations: usize,
 }
 
 impl Default for Options {
@@ -97,6 +124,9 @@ impl Default for Options {
             half_width: None,
             resamples: 1000,
             seed: 0x5EED,
+            model: Model::Core,
+            rig: RigParams::default(),
+            max_simulations: rig_fit::DEFAULT_MAX_SIMULATIONS,
         }
     }
 }

@@ -5,6 +5,7 @@ use super::derivative::{default_half_width, local_poly_derivatives, stroke_count
 use super::error::CalibrationError;
 use super::exclusion::{classify, ExclusionRule, RecordExclusion};
 use super::record::{range_of, Record, MAX_SPEED, MIN_MOTION_SPEED};
+use super::result::Series;
 
 /// The samples needed in a record at the least.
 pub const MIN_SAMPLES: usize = 20;
@@ -38,6 +39,23 @@ pub struct Prepared {
     /// being the angle's central difference: ≈ 0 for smooth motion, ≈ 1 for stick-slip
     /// (None without an angle column).
     pub irregularity: Option<f64>,
+}
+
+impl Prepared {
+    /// The record's [`Series`] with the model's J·α, fitted torque and used flags.
+    pub fn series(&self, inertia_torque: Vec<f64>, fitted: Vec<f64>, used: Vec<bool>) -> Series {
+        Series {
+            record: self.name.clone(),
+            time: self.time.clone(),
+            angle: self.angle.clone(),
+            angular_velocity: self.omega.clone(),
+            load: self.load.clone(),
+            measured: self.torque.clone(),
+            inertia_torque,
+            fitted,
+            used,
+        }
+    }
 }
 
 /// Irregularity above which a record is reported as stick-slip.

@@ -1,6 +1,9 @@
 //! What a calibration returns.
 
+use super::command::Command;
 use super::exclusion::RecordExclusion;
+use super::Model;
+use pinjoint::rig::RigParams;
 use pinjoint::Params;
 
 /// One fitted quantity (SI units).
@@ -53,8 +56,12 @@ pub struct Series {
 /// The result of [`crate::calibrate`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Calibration {
+    /// The model fitted.
+    pub model: Model,
     /// The complete parameter set with the fitted values.
     pub params: Params,
+    /// [`Model::Rig`]: the rig's parameters with the fitted `rig.*` values (None for the core model).
+    pub rig: Option<RigParams>,
     /// μ_c first, then the `--fit` keys in order.
     pub estimates: Vec<Estimate>,
     /// T_0, if fitted.
@@ -89,6 +96,10 @@ pub struct Calibration {
     pub settle_time: f64,
     /// Levenberg–Marquardt evaluations (0 for the linear fit).
     pub evaluations: usize,
+    /// [`Model::Rig`]: simulations of the record set run (command estimate, LM, Jacobians).
+    pub simulations: usize,
+    /// [`Model::Rig`]: the command estimated for each record (empty for the core model).
+    pub commands: Vec<Command>,
     /// Measured and fitted torque of each record, in input order.
     pub series: Vec<Series>,
 }

@@ -57,21 +57,13 @@ pub fn t975(nu: usize) -> f64 {
         + (3.0 * z7 + 19.0 * z5 + 17.0 * z3 - 15.0 * z) / (384.0 * v * v * v)
 }
 
-/// SplitMix64: a small, seeded, reproducible generator for the bootstrap draws.
-pub struct SplitMix(pub u64);
-impl SplitMix {
-    /// Next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform integer in 0..n (n > 0).
-    pub fn below(&mut self, n: usize) -> usize {
-        ((self.next_u64() >> 11) as f64 / (1u64 << 53) as f64 * n as f64) as usize % n
-    }
+/// SplitMix64, the library's seeded generator (`pinjoint::fidelity::check::CheckRng`), for the
+/// bootstrap draws.
+pub use pinjoint::fidelity::check::CheckRng as SplitMix;
+
+/// Uniform integer in 0..n (n > 0) from `rng`.
+pub fn below(rng: &mut SplitMix, n: usize) -> usize {
+    (rng.uniform() * n as f64) as usize % n
 }
 
 /// Uncertainty of β from the Jacobian `j` (n × p, of the model with respect to β) and residuals
@@ -119,12 +111,12 @@ pub fn analyse(j: &DMatrix<f64>, r: &DVector<f64>, cluster: &[usize], clusters: 
     let q = t975(dof);
     let zero = DVector::<f64>::zeros(p);
     let bootstrap = (gc >= MIN_BOOTSTRAP_CLUSTERS && resamples >= 40).then(|| {
-        let mut rng = SplitMix(seed);
+        let mut rng = SplitMix::new(seed);
         let mut draws: Vec<Vec<f64>> = vec![Vec::with_capacity(resamples); p];
         for _ in 0..resamples {
             let (mut am, mut gv) = (DMatrix::<f64>::zeros(p, p), zero.clone());
             for _ in 0..gc {
-                let c = live[rng.below(gc)];
+                let c = live[below(&mut rng, gc)];
                 am += &a[c];
                 gv += &g[c];
             }
@@ -209,12 +201,12 @@ mod tests {
     #[test]
     fn cluster_errors_see_correlated_residuals() {
         // 30 clusters of 100 identical residuals: the iid error is √100 too small.
-        let mut rng = SplitMix(7);
+        let mut rng = SplitMix::new(7);
         let (g, m) = (30, 100);
         let mut r = Vec::new();
         let mut cl = Vec::new();
         for c in 0..g {
-            let e = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            let e = rng.uniform() - 0.5;
             for _ in 0..m {
                 r.push(e);
                 cl.push(c);

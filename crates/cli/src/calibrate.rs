@@ -10,7 +10,7 @@ use pinjoint_calibrate as cal;
 use super::calibrate_report::{fit_csv, report_html, report_json, report_md, svgs, toml_file};
 use super::error::{CliError, Result};
 use super::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
-use cal::{Calibration, ExclusionRule, Options, Record};
+use cal::{Calibration, ExclusionRule, Model, Options, Record};
 use clap::Args;
 use pinjoint::rig::RigConfig;
 use std::io::Write;
@@ -34,11 +34,22 @@ percentile), and the first --settle-time seconds of each stroke above that speed
 ringing) and of the record.\n\n\
 Intervals: the larger of the iid and the cluster-robust (strokes as clusters) standard error with \
 Student-t quantiles, joined with a bootstrap over strokes when there are at least 20.\n\n\
+--model rig fits through the rig simulation instead (what `pinjoint cycle` runs: the position loop, \
+servo lag, stick and breakaway peak at each reversal): each record is simulated from rest on a sine command \
+estimated from its angle (refined by simulation, then fitted jointly: the residuals are the torque and \
+K_p × the angle error), and every sample after the start-up (the first reversal plus --settle-time) is fitted, \
+reversals included; a recorded angular_velocity is ignored. μ_c, T0 and the --fit keys (model keys and rig.* keys of the [rig] table, e.g. rig.breakaway_factor, \
+rig.servo_time_constant; not the excitation or integrator settings) by Levenberg-Marquardt, intervals from \
+the Jacobian as above. The rig constants not fitted come from --params [rig]. Each evaluation simulates \
+every record: at most --max-simulations of them (refused beyond), 2e5 samples and 3600 s of records. \
+Use it when the quasi-static fit is biased by stick-slip (slow strokes with a static peak) or to fit the \
+rig's own keys.\n\n\
 Writes DIR/calibrated.toml (a complete parameter file for --params and as FMU start values), \
 DIR/report.md, DIR/report.html, DIR/fit.csv, DIR/torque_time.svg, DIR/torque_angle.svg, DIR/residuals.svg.\n\n\
 Examples:\n  \
 pinjoint calibrate --input a.csv --load 20000 --input b.csv --load 40000 --output out/cal\n  \
-pinjoint calibrate --input rig.csv --load 20000 --fit lubricant.viscosity --output out/cal --json"
+pinjoint calibrate --input rig.csv --load 20000 --fit lubricant.viscosity --output out/cal --json\n  \
+pinjoint calibrate --input a.csv --load 20000 --model rig --fit rig.breakaway_factor --output out/cal"
 )]
 /// Arguments of `pinjoint calibrate` (its `--help` text is the `#[command]` attribute's).
 // The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
@@ -70,6 +81,14 @@ pub struct CalibrateCmd {
     /// Exclude this many seconds at the start of each stroke above the speed threshold
     #[arg(long, value_name = "S", default_value_t = ExclusionRule::default().settle_time, allow_negative_numbers = true)]
     pub settle_time: f64,
+    /// The model fitted: `core`, the quasi-static model away from reversals, or `rig`, the rig
+    /// simulation (stick, breakaway peak, servo lag) driven by a sine command estimated from each
+    /// record's angle; `rig` also fits rig.* keys (e.g. rig.breakaway_factor, rig.servo_time_constant)
+    #[arg(long, value_name = "MODEL", default_value = "core", value_parser = ["core", "rig"])]
+    pub model: String,
+    /// With --model rig: the most simulations of the record set the fit may run (refused beyond)
+    #[arg(long, value_name = "N", default_value_t = cal::rig_fit::DEFAULT_MAX_SIMULATIONS)]
+    pub max_simulations: usize,
     /// Output directory (created if needed)
     #[arg(long, value_name = "DIR")]
     pub output: PathBuf,
@@ -100,7 +119,11 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
         }
     };
     let records = cmd.input.iter().enumerate().map(|(i, p)| read_record(p, load_of(i))).collect::<Result<Vec<_>>>()?;
+    let model = if cmd.model == "rig" { Model::Rig } else { Model::Core };
     let options = Options {
+        model,
+        rig: config.rig,
+        max_simulations: cmd.max_simulations,
         params: config.model,
         fit: cmd.fit.iter().map(|k| k.trim().to_string()).filter(|k| !k.is_empty()).collect(),
         inertia: cmd.inertia.unwrap_or(config.rig.inertia),

@@ -1,7 +1,8 @@
 //! What `pinjoint calibrate` writes: the calibrated parameter file, the report (Markdown and
 //! HTML, from one list of blocks), the fit as CSV, the plots, and the JSON summary.
 
-use pinjoint_calibrate::{Calibration, Estimate, Reason, MU_C};
+use pinjoint::rig::RigConfig;
+use pinjoint_calibrate::{Calibration, Estimate, Model, Reason, MU_C};
 use super::common::exact;
 use super::error::Result;
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series, Style};
@@ -24,7 +25,10 @@ pub fn toml_file(c: &Calibration, inputs: &[String]) -> String {
         head.push_str(&format!("# {} = {} (standard error {:.3e}, 95 % interval [{}, {}])\n", e.key, exact(e.value), e.standard_error, exact(e.ci95.0), exact(e.ci95.1)));
     }
     head.push_str(&format!("# rms residual {:.4} N.m over {} samples ({} excluded).\n", c.rms_residual, c.points_used, c.points_excluded));
-    head + &c.params.to_toml_string()
+    match c.rig {
+        Some(rig) => head + &RigConfig { model: c.params, rig }.to_toml_string(),
+        None => head + &c.params.to_toml_string(),
+    }
 }
 
 /// The `--json` object.
@@ -137,21 +141,38 @@ fn g(v: f64) -> String {
     if v == 0.0 || (1e-3..1e5).contains(&v.abs()) { format!("{v:.6}") } else { format!("{v:.4e}") }
 }
 
-fn blocks(c: &Calibration, inputs: &[String]) -> Vec<Block> {
-    use Block::*;
-    let mut b = vec![Heading("Calibration of the pin-joint friction model".into())];
-    b.push(Para(format!("Inputs: {}.", inputs.join(", "))));
-    b.push(Para(format!(
+/// The report's paragraph on the model fitted.
+fn model_text(c: &Calibration) -> String {
+    let offset = if c.offset.is_some() { "" } else { " (not fitted)" };
+    if c.model == Model::Rig {
+        let cmds: Vec<String> = c.commands.iter().map(|m| format!("{} rad at {} Hz", g(m.amplitude()), g(m.frequency))).collect();
+        return format!(
+            "Model of the recorded torque: the rig simulation (pinjoint::rig, as `pinjoint cycle`) with J = {} kg·m², started at rest \
+             on a sine command estimated from each record's angle ({}), T = T_a + T0 with T0 a fitted sensor offset{offset}. \
+             μ_c and the --fit keys by Levenberg-Marquardt (ln/logit coordinates), {} evaluations, {} simulations of the records.",
+            g(c.inertia),
+            cmds.join("; "),
+            c.evaluations,
+            c.simulations
+        );
+    }
+    format!(
         "Model of the recorded torque: T = J·α + sign(ω)·μ(P,|ω|)·R·P + T0 with μ = μ_fluid + μ_c/γ2 (eqs. 3, 8, 10, 11); \
-         J = {} kg·m² (J·α subtracted), T0 a fitted sensor offset{}. {}",
+         J = {} kg·m² (J·α subtracted), T0 a fitted sensor offset{offset}. {}",
         g(c.inertia),
-        if c.offset.is_some() { "" } else { " (not fitted)" },
         if c.evaluations == 0 {
             "μ_c by linear least squares on the model's shape (γ2 and μ_fluid do not depend on μ_c).".to_string()
         } else {
             format!("Levenberg-Marquardt over the --fit keys in log/logit coordinates, {} evaluations; μ_c and T0 linear at its optimum.", c.evaluations)
         }
-    )));
+    )
+}
+
+fn blocks(c: &Calibration, inputs: &[String]) -> Vec<Block> {
+    use Block::*;
+    let mut b = vec![Heading("Calibration of the pin-joint friction model".into())];
+    b.push(Para(format!("Inputs: {}.", inputs.join(", "))));
+    b.push(Para(model_text(c)));
     b.push(Heading("Fitted values".into()));
     let rows = c
         .estimates
@@ -197,22 +218,39 @@ fn blocks(c: &Calibration, inputs: &[String]) -> Vec<Block> {
         b.push(Para(format!("⚠ {w}")));
     }
     b.push(Heading("Excluded samples".into()));
-    b.push(Para(format!(
-        "Rule: a sample is left out when |ω| is below the speed threshold (the stated fraction of the record's 95th-percentile \
-         speed: the stick and static peak at each reversal), or within the settling time ({} s used) after the motion rose \
-         above that threshold past a reversal, or after the record's start (breakaway, servo ringing).",
-        g(c.settle_time)
-    )));
+    b.push(Para(if c.model == Model::Rig {
+        format!(
+            "Rule (rig model): every sample is fitted (the stick, breakaway peak and servo ringing are what the rig \
+             describes) except the start-up: up to the first reversal plus the settling time ({} s), since the simulation starts \
+             at rest and a record taken from a running rig does not.",
+            g(c.settle_time)
+        )
+    } else {
+        format!(
+            "Rule: a sample is left out when |ω| is below the speed threshold (the stated fraction of the record's 95th-percentile \
+             speed: the stick and static peak at each reversal), or within the settling time ({} s used) after the motion rose \
+             above that threshold past a reversal, or after the record's start (breakaway, servo ringing).",
+            g(c.settle_time)
+        )
+    }));
     let rows = c
         .exclusions
         .iter()
         .zip(&c.half_widths)
         .map(|(x, k)| {
-            vec![x.record.clone(), g(x.speed_threshold), x.reversals.len().to_string(), x.low_speed.to_string(), x.settling.to_string(), x.used.to_string(), k.to_string()]
+            vec![
+                x.record.clone(),
+                g(x.speed_threshold),
+                x.reversals.len().to_string(),
+                x.low_speed.to_string(),
+                (x.settling + x.start_up).to_string(),
+                x.used.to_string(),
+                k.to_string(),
+            ]
         })
         .collect();
     b.push(Table(
-        ["record", "speed threshold [rad/s]", "reversals", "low speed", "settling", "used", "differentiator half-width [samples]"].map(String::from).to_vec(),
+        ["record", "speed threshold [rad/s]", "reversals", "low speed", "settling or start-up", "used", "differentiator half-width [samples]"].map(String::from).to_vec(),
         rows,
     ));
     for x in &c.exclusions {
@@ -220,7 +258,11 @@ fn blocks(c: &Calibration, inputs: &[String]) -> Vec<Block> {
             .windows
             .iter()
             .take(12)
-            .map(|w| format!("{}–{} s ({}, {} samples)", g(w.start), g(w.end), if w.reason == Reason::LowSpeed { "low speed" } else { "settling" }, w.samples))
+            .map(|w| format!("{}–{} s ({}, {} samples)", g(w.start), g(w.end), match w.reason {
+                Reason::LowSpeed => "low speed",
+                Reason::Settling => "settling",
+                Reason::StartUp => "start-up",
+            }, w.samples))
             .collect();
         let more = x.windows.len().saturating_sub(12);
         b.push(Para(format!("{}: {}{}", x.record, list.join("; "), if more > 0 { format!("; … and {more} more windows (all in fit.csv, column used)") } else { String::new() })));
