@@ -3,6 +3,7 @@
 //! dependency tree, `cargo tree -p pinjoint-fmu -e normal`, and of the Rust standard library,
 //! which is linked statically) and `model.png` (a drawing of the pin joint, drawn here).
 
+use crate::error::BuildError;
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -14,24 +15,24 @@ pub type Entry = (String, Vec<u8>);
 /// the FMU library's normal dependency tree.
 // The row tuple is documented just above; a named type would be a refactor beyond this lint pass.
 #[allow(clippy::type_complexity)]
-fn crates(cargo: &str, root: &Path, package: &str) -> Result<Vec<(String, String, String, Option<PathBuf>)>, String> {
+fn crates(cargo: &str, root: &Path, package: &str) -> Result<Vec<(String, String, String, Option<PathBuf>)>, BuildError> {
     let out = Command::new(cargo)
         .args(["tree", "-p", package, "-e", "normal", "--prefix", "none", "-f", "{p}|{l}"])
         .current_dir(root)
         .output()
-        .map_err(|e| format!("running cargo tree: {e}"))?;
+        .map_err(|source| BuildError::Spawn { program: "cargo tree".into(), source, hint: "" })?;
     if !out.status.success() {
-        return Err(format!("cargo tree failed: {}", String::from_utf8_lossy(&out.stderr)));
+        return Err(BuildError::CargoTree { stderr: String::from_utf8_lossy(&out.stderr).into_owned() });
     }
     let registry = std::env::var_os("CARGO_HOME")
         .map(PathBuf::from)
         .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cargo")))
-        .ok_or("neither CARGO_HOME nor HOME is set")?
+        .ok_or(BuildError::NoCargoHome)?
         .join("registry/src");
     let mut seen = BTreeSet::new();
     let mut rows = Vec::new();
     for line in String::from_utf8_lossy(&out.stdout).lines() {
-        let (p, l) = line.split_once('|').ok_or_else(|| format!("unexpected cargo tree line {line}"))?;
+        let (p, l) = line.split_once('|').ok_or_else(|| BuildError::CargoTreeLine(line.to_owned()))?;
         let mut words = p.split_whitespace();
         let (Some(name), Some(version)) = (words.next(), words.next()) else { continue };
         let version = version.trim_start_matches('v').to_owned();
@@ -45,11 +46,11 @@ fn crates(cargo: &str, root: &Path, package: &str) -> Result<Vec<(String, String
         } else {
             let folder = format!("{name}-{version}");
             let found = std::fs::read_dir(&registry)
-                .map_err(|e| format!("reading {}: {e}", registry.display()))?
+                .map_err(BuildError::io("reading", &registry))?
                 .flatten()
                 .map(|d| d.path().join(&folder))
                 .find(|p| p.is_dir());
-            Some(found.ok_or_else(|| format!("no source of {folder} under {}", registry.display()))?)
+            Some(found.ok_or_else(|| BuildError::NoCrateSource { folder, registry: registry.clone() })?)
         };
         rows.push((name.to_owned(), version, licence, dir));
     }
@@ -62,14 +63,14 @@ fn is_notice(file: &str) -> bool {
 }
 
 /// `documentation/licenses/`: an index and the notice files of each crate.
-pub fn licenses(cargo: &str, root: &Path, package: &str) -> Result<Vec<Entry>, String> {
+pub fn licenses(cargo: &str, root: &Path, package: &str) -> Result<Vec<Entry>, BuildError> {
     let mut entries = Vec::new();
     let mut rows = String::new();
     for (name, version, licence, dir) in crates(cargo, root, package)? {
         let mut files = Vec::new();
         if let Some(dir) = &dir {
             let mut names: Vec<String> = std::fs::read_dir(dir)
-                .map_err(|e| format!("reading {}: {e}", dir.display()))?
+                .map_err(BuildError::io("reading", dir))?
                 .flatten()
                 .filter(|d| d.path().is_file())
                 .map(|d| d.file_name().to_string_lossy().into_owned())
@@ -77,7 +78,7 @@ pub fn licenses(cargo: &str, root: &Path, package: &str) -> Result<Vec<Entry>, S
                 .collect();
             names.sort();
             for f in names {
-                let bytes = std::fs::read(dir.join(&f)).map_err(|e| format!("reading {f} of {name}: {e}"))?;
+                let bytes = std::fs::read(dir.join(&f)).map_err(|source| BuildError::Notice { file: f.clone(), krate: name.clone(), source })?;
                 let path = format!("{name}-{version}/{f}");
                 files.push(format!(r#"<a href="{path}">{f}</a>"#));
                 entries.push((format!("documentation/licenses/{path}"), bytes));
@@ -91,7 +92,7 @@ pub fn licenses(cargo: &str, root: &Path, package: &str) -> Result<Vec<Entry>, S
         rows.push_str(&format!("<tr><td>{name}</td><td>{version}</td><td>{licence}</td><td>{note}</td></tr>\n"));
     }
     // The Rust standard library (core, alloc, std) is linked statically into every Rust cdylib.
-    let sysroot = Command::new("rustc").args(["--print", "sysroot"]).output().map_err(|e| format!("rustc: {e}"))?;
+    let sysroot = Command::new("rustc").args(["--print", "sysroot"]).output().map_err(BuildError::Rustc)?;
     let doc = PathBuf::from(String::from_utf8_lossy(&sysroot.stdout).trim()).join("share/doc/rust");
     let mut std_files = Vec::new();
     for (sub, prefix) in [(doc.join("licenses"), "rust-std/licenses"), (doc.clone(), "rust-std")] {
@@ -99,17 +100,17 @@ pub fn licenses(cargo: &str, root: &Path, package: &str) -> Result<Vec<Entry>, S
         let mut names: Vec<_> = rd.flatten().filter(|d| d.path().is_file()).map(|d| d.file_name().to_string_lossy().into_owned()).collect();
         names.sort();
         for f in names.into_iter().filter(|f| f.ends_with(".txt") || f.starts_with("COPYRIGHT") || f.starts_with("LICENSE")) {
-            let bytes = std::fs::read(sub.join(&f)).map_err(|e| format!("reading {f}: {e}"))?;
+            let bytes = std::fs::read(sub.join(&f)).map_err(|source| BuildError::Notice { file: f.clone(), krate: String::new(), source })?;
             std_files.push(format!(r#"<a href="{prefix}/{f}">{f}</a>"#).replace("rust-std/", ""));
             entries.push((format!("documentation/licenses/{prefix}/{f}"), bytes));
         }
     }
     if std_files.is_empty() {
-        return Err(format!("no licence files of the Rust standard library under {}", doc.display()));
+        return Err(BuildError::NoStdLicences(doc));
     }
     rows.push_str(&format!(
         "<tr><td>Rust standard library (core, alloc, std)</td><td>{}</td><td>MIT OR Apache-2.0</td><td>rust-std/: {}</td></tr>\n",
-        String::from_utf8_lossy(&Command::new("rustc").arg("--version").output().map_err(|e| e.to_string())?.stdout).trim(),
+        String::from_utf8_lossy(&Command::new("rustc").arg("--version").output().map_err(BuildError::Rustc)?.stdout).trim(),
         std_files.join(", ")
     ));
     let index = format!(

@@ -4,6 +4,7 @@
 //! the licences and `model.png`, one binary per FMI 3.0 platform tuple that `--platforms` built
 //! (`x86_64-linux` alone for the default host build on Linux x86-64).
 
+use crate::error::BuildError;
 use crate::extras::Entry;
 use fmi_layer::fmi2::variables::ModelInfo;
 use fmi_layer::fmi3::xml::model_description;
@@ -12,10 +13,10 @@ use std::path::{Path, PathBuf};
 
 /// Write `<out_dir>/fmi3/<modelIdentifier>.fmu` with `binaries`: (platform tuple, library path,
 /// extension) per platform, and the shared `extras` (licences, model.png).
-pub fn package(info: &ModelInfo, binaries: &[(&str, PathBuf, &str)], out_dir: &Path, extras: &[Entry]) -> Result<PathBuf, String> {
-    let xml = model_description(info).map_err(|e| e.to_string())?;
+pub fn package(info: &ModelInfo, binaries: &[(&str, PathBuf, &str)], out_dir: &Path, extras: &[Entry]) -> Result<PathBuf, BuildError> {
+    let xml = model_description(info)?;
     let dir = out_dir.join("fmi3");
-    std::fs::create_dir_all(&dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+    std::fs::create_dir_all(&dir).map_err(BuildError::io("creating", &dir))?;
     let path = dir.join(format!("{}.fmu", info.model_identifier));
     let libraries = binaries.iter().map(|(platform, library, ext)| (*platform, library.as_path(), *ext));
     crate::write_fmu(&path, info, xml, libraries, extras)?;

@@ -12,10 +12,12 @@
 //! platform, FMI 3.0 ones included, are kept in `target/fmu/platforms/<dir>/`.
 //! `-- --platforms x86_64-linux,x86_64-windows` builds the named ones only.
 
+mod error;
 mod extras;
 mod fmi3;
 mod platforms;
 
+use error::BuildError;
 use fmi_layer::fmi2::variables::ModelInfo;
 use fmi_layer::fmi2::xml::model_description;
 use std::io::Write;
@@ -26,10 +28,10 @@ use zip::{CompressionMethod, DateTime, ZipWriter};
 
 /// Write `<out_dir>/<modelIdentifier>.fmu` carrying, for each `(FMI 2.0 folder, extension,
 /// library)`, the library as `binaries/<folder>/<modelIdentifier>.<extension>`.
-fn package(info: &ModelInfo, binaries: &[(&str, &str, PathBuf)], out_dir: &Path, extras: &[extras::Entry]) -> Result<PathBuf, String> {
+fn package(info: &ModelInfo, binaries: &[(&str, &str, PathBuf)], out_dir: &Path, extras: &[extras::Entry]) -> Result<PathBuf, BuildError> {
     let path = out_dir.join(format!("{}.fmu", info.model_identifier));
     let libraries = binaries.iter().map(|(folder, ext, library)| (*folder, library.as_path(), *ext));
-    write_fmu(&path, info, model_description(info).map_err(|e| e.to_string())?, libraries, extras)?;
+    write_fmu(&path, info, model_description(info)?, libraries, extras)?;
     Ok(path)
 }
 
@@ -43,48 +45,49 @@ pub(crate) fn write_fmu<'a>(
     xml: String,
     libraries: impl Iterator<Item = (&'a str, &'a Path, &'a str)>,
     extras: &[extras::Entry],
-) -> Result<(), String> {
-    let file = std::fs::File::create(path).map_err(|e| format!("creating {}: {e}", path.display()))?;
+) -> Result<(), BuildError> {
+    let file = std::fs::File::create(path).map_err(BuildError::io("creating", path))?;
     let mut zip = ZipWriter::new(file);
     let opts = SimpleFileOptions::default()
         .compression_method(CompressionMethod::Deflated)
         .last_modified_time(DateTime::default());
     let mut entries: Vec<(String, Vec<u8>, u32)> = vec![("modelDescription.xml".into(), xml.into_bytes(), 0o644)];
     for (folder, library, ext) in libraries {
-        let binary = std::fs::read(library).map_err(|e| format!("reading {}: {e}", library.display()))?;
+        let binary = std::fs::read(library).map_err(BuildError::io("reading", library))?;
         entries.push((format!("binaries/{folder}/{}.{ext}", info.model_identifier), binary, 0o755));
     }
     entries.push(("documentation/index.html".into(), (info.documentation)().into_bytes(), 0o644));
     entries.extend(extras.iter().map(|(n, b)| (n.clone(), b.clone(), 0o644)));
     for (name, data, mode) in entries {
-        zip.start_file(name.as_str(), opts.unix_permissions(mode)).map_err(|e| e.to_string())?;
-        zip.write_all(&data).map_err(|e| e.to_string())?;
+        let zip_error = |source| BuildError::Zip { path: path.to_path_buf(), source };
+        zip.start_file(name.as_str(), opts.unix_permissions(mode)).map_err(zip_error)?;
+        zip.write_all(&data).map_err(|e| zip_error(e.into()))?;
     }
-    zip.finish().map_err(|e| e.to_string())?;
+    zip.finish().map_err(|source| BuildError::Zip { path: path.to_path_buf(), source })?;
     Ok(())
 }
 
 /// The value of `--platforms` (default `host`).
-fn platforms_arg() -> Result<String, String> {
+fn platforms_arg() -> Result<String, BuildError> {
     let mut args = std::env::args().skip(1);
     let mut spec = "host".to_owned();
     while let Some(a) = args.next() {
         match a.as_str() {
-            "--platforms" => spec = args.next().ok_or("--platforms needs a value: all, host or a list of platforms")?,
+            "--platforms" => spec = args.next().ok_or(BuildError::MissingPlatforms)?,
             s if s.starts_with("--platforms=") => spec = s["--platforms=".len()..].to_owned(),
             "-h" | "--help" => {
                 println!("usage: fmu_build [--platforms host|all|<dir>,<dir>...]");
                 std::process::exit(0);
             }
-            other => return Err(format!("unknown argument '{other}' (usage: fmu_build [--platforms host|all|<dir>,...])")),
+            other => return Err(BuildError::UnknownArgument(other.to_owned())),
         }
     }
     Ok(spec)
 }
 
-fn run() -> Result<(), String> {
+fn run() -> Result<(), BuildError> {
     let selected = platforms::select(&platforms_arg()?)?;
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().ok_or("no workspace root")?.to_path_buf();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().ok_or(BuildError::NoWorkspaceRoot)?.to_path_buf();
     let target = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).unwrap_or_else(|| root.join("target"));
     let target = if target.is_relative() { root.join(target) } else { target };
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
@@ -100,7 +103,7 @@ fn run() -> Result<(), String> {
         }
     }
     let out_dir = target.join("fmu");
-    std::fs::create_dir_all(&out_dir).map_err(|e| format!("creating {}: {e}", out_dir.display()))?;
+    std::fs::create_dir_all(&out_dir).map_err(BuildError::io("creating", &out_dir))?;
     // Licence notices and model.png: the same in every FMU, both standards.
     let mut extras = extras::licenses(&cargo, &root, platforms::FMU_PACKAGE)?;
     extras.push(("model.png".into(), extras::model_png()));

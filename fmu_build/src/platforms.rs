@@ -7,6 +7,7 @@
 //! `x86_64-pc-windows-gnu` (libgcc's unwinder and winpthreads linked statically).
 //! Every built library is copied to `target/fmu/platforms/<dir>/<file>` for packaging.
 
+use crate::error::BuildError;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -69,7 +70,7 @@ pub const ALL: [Platform; 6] = [
 /// The platform of `--platforms host` (the default): this machine's, built by plain
 /// `cargo build` into `target/release/` (fast; on Linux it needs the build machine's
 /// glibc and libgcc_s).
-pub fn host() -> Result<Platform, String> {
+pub fn host() -> Result<Platform, BuildError> {
     let (fmi2, fmi3, file, ext) = match (std::env::consts::OS, std::env::consts::ARCH) {
         ("linux", "x86_64") => (Some("linux64"), Some("x86_64-linux"), SO, "so"),
         ("linux", "x86") => (Some("linux32"), Some("x86-linux"), SO, "so"),
@@ -77,24 +78,21 @@ pub fn host() -> Result<Platform, String> {
         ("macos", "x86_64") => (Some("darwin64"), Some("x86_64-darwin"), DYLIB, "dylib"),
         ("macos", "aarch64") => (Some("darwin64"), Some("aarch64-darwin"), DYLIB, "dylib"),
         ("windows", "x86_64") => (Some("win64"), Some("x86_64-windows"), DLL, "dll"),
-        (os, arch) => return Err(format!("no FMI platform folder for {os}/{arch}")),
+        (os, arch) => return Err(BuildError::UnsupportedHost { os, arch }),
     };
     Ok(Platform { dir: "host", triple: "", linker: Linker::Cargo, zig_suffix: "", fmi2, fmi3, file, ext })
 }
 
 /// The platforms named by `--platforms`: `all`, `host`, or a comma-separated list of
 /// [`Platform::dir`] names.
-pub fn select(spec: &str) -> Result<Vec<Platform>, String> {
+pub fn select(spec: &str) -> Result<Vec<Platform>, BuildError> {
     match spec {
         "host" => Ok(vec![host()?]),
         "all" => Ok(ALL.to_vec()),
         list => list
             .split(',')
             .map(|name| {
-                ALL.iter().copied().find(|p| p.dir == name.trim()).ok_or_else(|| {
-                    let known: Vec<&str> = ALL.iter().map(|p| p.dir).collect();
-                    format!("--platforms: unknown platform '{name}' (known: all, host, {})", known.join(", "))
-                })
+                ALL.iter().copied().find(|p| p.dir == name.trim()).ok_or_else(|| BuildError::UnknownPlatform(name.to_owned()))
             })
             .collect(),
     }
@@ -108,7 +106,7 @@ pub fn kept_library(target: &Path, p: &Platform) -> PathBuf {
 /// Build the FMU cdylib of [`FMU_PACKAGE`] for the platform `p` in release, copy it to
 /// [`kept_library`] and return that path. `root` is the workspace, `target` its target
 /// directory. Cargo's own up-to-date check makes a repeated call cheap.
-pub fn build_library(root: &Path, target: &Path, p: &Platform) -> Result<PathBuf, String> {
+pub fn build_library(root: &Path, target: &Path, p: &Platform) -> Result<PathBuf, BuildError> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let zig_target = format!("{}{}", p.triple, p.zig_suffix);
     let (program, mut args): (String, Vec<&str>) = match (p.linker, p.triple.is_empty()) {
@@ -124,25 +122,19 @@ pub fn build_library(root: &Path, target: &Path, p: &Platform) -> Result<PathBuf
     if p.triple.contains("apple-darwin") {
         command.env("MACOSX_DEPLOYMENT_TARGET", MACOS_DEPLOYMENT_TARGET);
     }
-    let status = command.status().map_err(|e| {
-        if p.linker == Linker::Zig {
-            format!(
-                "running {program}: {e} (install the pinned cargo-zigbuild and ziglang: \
-                 pip install -r tests/platforms/requirements.txt into a venv and put its bin/ on PATH; \
-                 tests/platforms/run.sh does)"
-            )
+    let status = command.status().map_err(|source| BuildError::Spawn {
+        program: program.clone(),
+        source,
+        hint: if p.linker == Linker::Zig {
+            " (install the pinned cargo-zigbuild and ziglang: \
+             pip install -r tests/platforms/requirements.txt into a venv and put its bin/ on PATH; \
+             tests/platforms/run.sh does)"
         } else {
-            format!("running {program}: {e}")
-        }
+            ""
+        },
     })?;
     if !status.success() {
-        return Err(format!(
-            "building {} for {} failed ({status}); the Rust target needs `rustup target add {}`{}",
-            FMU_PACKAGE,
-            if p.triple.is_empty() { "the host" } else { p.triple },
-            if p.triple.starts_with("universal2") { "x86_64-apple-darwin aarch64-apple-darwin" } else { p.triple },
-            if p.triple.contains("windows-gnu") { " and MinGW-w64's gcc (Debian: gcc-mingw-w64-x86-64)" } else { "" }
-        ));
+        return Err(BuildError::Build { package: FMU_PACKAGE, triple: p.triple, status });
     }
     let built = if p.triple.is_empty() { target.join("release") } else { target.join(p.triple).join("release") }.join(p.file);
     if p.triple.is_empty() {
@@ -150,8 +142,8 @@ pub fn build_library(root: &Path, target: &Path, p: &Platform) -> Result<PathBuf
         return Ok(built);
     }
     let kept = kept_library(target, p);
-    let dir = kept.parent().ok_or("no parent folder")?;
-    std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
-    std::fs::copy(&built, &kept).map_err(|e| format!("copying {} to {}: {e}", built.display(), kept.display()))?;
+    let dir = kept.parent().ok_or_else(|| BuildError::NoParent(kept.clone()))?;
+    std::fs::create_dir_all(dir).map_err(BuildError::io("creating", dir))?;
+    std::fs::copy(&built, &kept).map_err(|source| BuildError::Copy { from: built.clone(), to: kept.clone(), source })?;
     Ok(kept)
 }

@@ -3,6 +3,7 @@
 
 use super::bench_eval::EvalResult;
 use super::bench_rig::{RigResult, CYCLES};
+use super::bench_error::ThroughputError;
 use super::bench_throughput::Throughput;
 use pinjoint_cli::error::Result;
 use pinjoint_cli::output::write_text;
@@ -31,7 +32,7 @@ pub struct Report {
     /// Time per FMU step, or why it was not measured.
     pub fmu: FmuSection,
     /// The sweep throughput and SciPy comparison, or why they failed.
-    pub throughput: std::result::Result<Throughput, String>,
+    pub throughput: std::result::Result<Throughput, ThroughputError>,
     /// Wall time of the whole benchmark run, in s.
     pub seconds: f64,
 }

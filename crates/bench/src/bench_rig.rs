@@ -11,7 +11,7 @@
 
 use pinjoint_cli::error::Result;
 use pinjoint::fidelity::Fidelity;
-use pinjoint::rig::{cycle_average_friction_coefficient, Formulation, Method, RigConfig, RigSim, Sample};
+use pinjoint::rig::{cycle_average_friction_coefficient, Formulation, Method, RigConfig, RigError, RigSim, Sample};
 use std::time::Instant;
 
 /// One configuration of the rig run.
@@ -54,7 +54,7 @@ pub struct RigResult {
     /// Steps where the solver fell back (as counted by the rig's statistics).
     pub fallbacks: u64,
     /// Why the run failed, if it did (the errors are then NaN).
-    pub error: Option<String>,
+    pub error: Option<RigError>,
 }
 
 /// Stroke cycles each rig run simulates (at 1 Hz, 20 kN).
@@ -78,19 +78,19 @@ pub fn config(case: &RigCase) -> RigConfig {
 }
 
 /// One run: (samples, stats fallbacks, steps, table build seconds, run seconds).
-fn run_once(case: &RigCase) -> std::result::Result<(Vec<Sample>, u64, u64, f64, f64), String> {
+fn run_once(case: &RigCase) -> std::result::Result<(Vec<Sample>, u64, u64, f64, f64), RigError> {
     let cfg = config(case);
     let t0 = Instant::now();
-    let mut sim = RigSim::new(&cfg).map_err(|e| e.to_string())?;
+    let mut sim = RigSim::new(&cfg)?;
     let mut build = 0.0;
     if let Some(tol) = case.table {
-        let env = RigSim::drive_envelope(&cfg).map_err(|e| e.to_string())?;
+        let env = RigSim::drive_envelope(&cfg)?;
         let b = Instant::now();
-        sim.set_fidelity(Fidelity::Table, tol, env).map_err(|e| e.to_string())?;
+        sim.set_fidelity(Fidelity::Table, tol, env)?;
         build = b.elapsed().as_secs_f64();
     }
     let period = cfg.rig.period();
-    let samples = sim.run(CYCLES * period, period / case.samples_per_cycle as f64).map_err(|e| e.to_string())?;
+    let samples = sim.run(CYCLES * period, period / case.samples_per_cycle as f64)?;
     let total = t0.elapsed().as_secs_f64() - build;
     let st = sim.stats();
     Ok((samples, st.fallbacks, st.steps, build, total))

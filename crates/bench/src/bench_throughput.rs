@@ -4,6 +4,7 @@
 //! model (benches/scipy_reference.py) per point on the first rows of the sweep's output,
 //! with its largest difference from the library. Every figure from one run.
 
+use crate::bench_error::ThroughputError;
 use pinjoint::{Joint, Params};
 use std::hint::black_box;
 use std::io::Write;
@@ -36,7 +37,7 @@ pub struct Scipy {
 }
 
 /// The throughput section of the report: the sweep process, the library per point, SciPy.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct Throughput {
     /// Fastest of the repeats, at the full row count.
     pub sweep: SweepRun,
@@ -49,7 +50,7 @@ pub struct Throughput {
     /// Worker threads of the rayon pool (the sweep's parallelism).
     pub threads: usize,
     /// The SciPy reference, or why it could not run.
-    pub scipy: Result<Scipy, String>,
+    pub scipy: Result<Scipy, ThroughputError>,
 }
 
 /// Deterministic rows over 5–60 kN and 1e-3–100 rad/s (both signs), log-uniform.
@@ -80,7 +81,7 @@ fn write_points(path: &Path, pts: &[(f64, f64)]) -> std::io::Result<()> {
 }
 
 /// Run `exe sweep` on `input` into `output`; its wall time and peak RSS (wait4's rusage).
-fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize) -> Result<SweepRun, String> {
+fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize) -> Result<SweepRun, ThroughputError> {
     let t0 = Instant::now();
     let child = Command::new(exe)
         .args(["sweep", "--input"])
@@ -90,7 +91,7 @@ fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize) -> Result<S
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
         .spawn()
-        .map_err(|e| format!("running {}: {e}", exe.display()))?;
+        .map_err(|source| ThroughputError::Spawn { program: exe.to_path_buf(), source })?;
     let pid = child.id() as libc::pid_t;
     let mut status: libc::c_int = 0;
     // SAFETY: rusage is plain data, zero is a valid value; wait4 reaps our own child by pid.
@@ -98,30 +99,31 @@ fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize) -> Result<S
     let r = unsafe { libc::wait4(pid, &mut status, 0, &mut usage) };
     let seconds = t0.elapsed().as_secs_f64();
     if r != pid || !libc::WIFEXITED(status) || libc::WEXITSTATUS(status) != 0 {
-        return Err(format!("pinjoint sweep over {rows} rows failed (status {status})"));
+        return Err(ThroughputError::Sweep { rows, status });
     }
     // ru_maxrss is in KiB on Linux.
     Ok(SweepRun { rows, seconds, peak_rss_mib: usage.ru_maxrss as f64 / 1024.0 })
 }
 
-fn scipy(python: &Path, sweep_output: &Path, points: usize) -> Result<Scipy, String> {
+fn scipy(python: &Path, sweep_output: &Path, points: usize) -> Result<Scipy, ThroughputError> {
     let script = [PathBuf::from("benches/scipy_reference.py"), Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/scipy_reference.py")]
         .into_iter()
         .find(|p| p.is_file())
-        .ok_or("benches/scipy_reference.py not found")?;
+        .ok_or(ThroughputError::NoScipyScript)?;
     if !python.is_file() {
-        return Err(format!("no Python at {}", python.display()));
+        return Err(ThroughputError::NoPython(python.to_path_buf()));
     }
     let o = Command::new(python)
         .arg(&script)
         .arg(sweep_output)
         .args(["--limit", &points.to_string()])
         .output()
-        .map_err(|e| format!("running {}: {e}", python.display()))?;
+        .map_err(|source| ThroughputError::Spawn { program: python.to_path_buf(), source })?;
     if !o.status.success() {
-        return Err(format!("{} failed: {}", script.display(), String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("")));
+        let stderr_tail = String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("").to_owned();
+        return Err(ThroughputError::Scipy { script, stderr_tail });
     }
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).map_err(|e| format!("unreadable output of {}: {e}", script.display()))?;
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).map_err(|source| ThroughputError::ScipyOutput { script, source })?;
     Ok(Scipy {
         points: v["points"].as_u64().unwrap_or(0) as usize,
         seconds_per_point: v["seconds_per_point"].as_f64().unwrap_or(f64::NAN),
@@ -141,19 +143,19 @@ fn median(mut v: Vec<f64>) -> f64 {
 }
 
 /// Measure. `quick`: 1e4 rows, few SciPy points. `work` is a scratch directory.
-pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, String> {
+pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, ThroughputError> {
     // The `pinjoint` binary of the same build, beside this one (target/release/).
-    let own = std::env::current_exe().map_err(|e| format!("own executable: {e}"))?;
+    let own = std::env::current_exe().map_err(ThroughputError::OwnExecutable)?;
     let exe = own.with_file_name(format!("pinjoint{}", std::env::consts::EXE_SUFFIX));
     if !exe.is_file() {
-        return Err(format!("{} not found: build it with `cargo build --release`", exe.display()));
+        return Err(ThroughputError::NoPinjoint(exe));
     }
     let rows = if quick { 10_000 } else { 1_000_000 };
     let reps = if quick { 1 } else { 3 };
     let pts = points(rows);
     let (big_in, small_in, out) = (work.join("sweep_in.csv"), work.join("sweep_in_small.csv"), work.join("sweep_out.csv"));
-    write_points(&big_in, &pts).map_err(|e| format!("writing {}: {e}", big_in.display()))?;
-    write_points(&small_in, &pts[..rows / 10]).map_err(|e| format!("writing {}: {e}", small_in.display()))?;
+    write_points(&big_in, &pts).map_err(|source| ThroughputError::Write { path: big_in.clone(), source })?;
+    write_points(&small_in, &pts[..rows / 10]).map_err(|source| ThroughputError::Write { path: small_in.clone(), source })?;
     progress(&format!("throughput: pinjoint sweep over {} and {} rows", rows / 10, rows));
     let small = sweep_child(&exe, &small_in, &out, rows / 10)?;
     let mut runs = Vec::new();
@@ -163,7 +165,7 @@ pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str))
     let sweep = *runs.iter().min_by(|a, b| a.seconds.total_cmp(&b.seconds)).expect("at least one run");
     let sweep = SweepRun { peak_rss_mib: runs.iter().map(|r| r.peak_rss_mib).fold(0.0, f64::max), ..sweep };
     progress("throughput: library cold evaluation per point");
-    let j = Joint::new(&Params::default()).map_err(|e| e.to_string())?;
+    let j = Joint::new(&Params::default())?;
     let n = pts.len().min(100_000);
     let model_ns = median(
         (0..reps.max(3))
