@@ -101,14 +101,14 @@ struct Temperatures(Mutex<std::collections::HashMap<u64, std::sync::Arc<Joint>>>
 const MAX_TEMPERATURES: usize = 256;
 
 impl Temperatures {
-    fn joint(&self, base: &Joint, t: f64) -> std::result::Result<std::sync::Arc<Joint>, String> {
+    fn joint(&self, base: &Joint, t: f64) -> std::result::Result<std::sync::Arc<Joint>, pinjoint::ParamError> {
         let mut map = self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         if let Some(j) = map.get(&t.to_bits()) {
             return Ok(j.clone());
         }
         let mut p = *base.params();
         p.lubricant.temperature = t;
-        let j = std::sync::Arc::new(Joint::new(&p).map_err(|e| e.to_string())?);
+        let j = std::sync::Arc::new(Joint::new(&p)?);
         if map.len() >= MAX_TEMPERATURES {
             map.clear();
         }
@@ -208,7 +208,7 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
             (Mode::Full(joint, _), _) if temperature.is_none() => joint.evaluate(load, speed).map_err(|e| bad(e.to_string()))?,
             (Mode::Full(joint, by_t), _) => {
                 let t = temperature.unwrap_or_default();
-                by_t.joint(joint, t).map_err(&bad)?.evaluate(load, speed).map_err(|e| bad(e.to_string()))?
+                by_t.joint(joint, t).map_err(|e| bad(e.to_string()))?.evaluate(load, speed).map_err(|e| bad(e.to_string()))?
             }
             (Mode::Level { said, .. }, Some(ev)) => {
                 let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
