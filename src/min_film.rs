@@ -24,7 +24,13 @@
 //! numbers were read in an independent transcription (github.com/VictorLier/Tribology,
 //! `Assignment3/A3.py`, course code citing the book), and `tests/published_values.rs` checks
 //! the code against them. Pan & Hamrock's own check values and the range of W', U, G they
-//! fitted were not found.
+//! fitted were not found: searched 2026-11-23 in stored public web pages, documentation, code
+//! and GitHub issue threads (the paper's title and authors, a NASA report version of it, the
+//! book and its NASA predecessor RP-1255, worked examples in Hamrock, Schmid & Jacobson's
+//! *Fundamentals of Machine Elements*, the coefficient strings 1.714/2.922 and exponents);
+//! only the paper's citation and the transcription above turned up, no tabulated solution or
+//! worked example with numbers. So issue 13's "matches its source's check values" is not
+//! tested; what is tested is that the code is the printed fits.
 //!
 //! Validity: Pan & Hamrock fitted numerical solutions in the elastic–piezoviscous regime of
 //! heavily loaded steel line contacts (W' of order 1e-5 to 1e-4, G of order 5000: the usual

@@ -10,15 +10,30 @@
 //!
 //! a smooth minimum of the flooded film and the layer that feeds it (mass conservation: a film
 //! cannot be thicker than the oil brought to it). R → ∞ is the flooded film; R → 0 gives
-//! h_c → h_oil. γs ≈ 2–3.5 in those papers (it depends weakly on the Moes parameters M, L);
-//! the default 2.8 is the value commonly quoted for Chevalier's relation. **Not verified**:
-//! neither paper was at hand, and no published value, example or digitised point of the
-//! relation was found (searches of public pages, code and issue threads; only Damiens et
-//! al.'s abstract, which says that "a single parameter, characteristic of the inlet length of
-//! the contact in the fully flooded regime, determines the starved behavior", i.e. γs depends
-//! on the operating conditions). The form, the γs range and the default are written from
-//! memory; the tests check the form's limits and identities (`tests/published_values.rs`,
-//! `tests/extensions.rs`), not published numbers.
+//! h_c → h_oil. The default γs = 2.8 is a circular-contact value written from memory.
+//!
+//! **Not verified against the sources.** Neither paper was at hand, and no published value,
+//! table, worked example or digitised figure point of the relation, nor any γs for a line
+//! contact, was found (searched 2026-11-23 in stored public web pages, documentation, code and
+//! GitHub issue threads: the titles and authors of Chevalier et al. 1998, Damiens et al. 2004,
+//! Cann, Damiens & Lubrecht 2004, Wedeven, Evans & Cameron 1971, Hamrock & Dowson 1977 (part
+//! IV, starvation), Wolveridge, Baglin & Archard 1970; the relation's symbols and phrases;
+//! tribology code repositories). Found: (1) Damiens et al.'s abstract (University of Twente
+//! repository): "a single parameter, characteristic of the inlet length of the contact in the
+//! fully flooded regime, determines the starved behavior", i.e. γs depends on the operating
+//! conditions, no number; (2) a secondary source, an AI-assisted Korean summary in public
+//! GitHub notes (dated 2026-03-10) of Lugt, *Grease Lubrication in Rolling Bearings* (Wiley,
+//! 2013), ch. 9, whose eq. (9.73) is this form, h_c/h_cff = r/(1 + r^γ)^(1/γ), with γ "about 3
+//! for circular contacts, up to 15 for wide elliptical contacts". That corroborates the form
+//! (not the 1998 paper's own wording) and says nothing sure about a line contact, except that
+//! γs there may be well above 2.8. Over 2.8–15 the starvation figure's numbers move a lot:
+//! at 20 kN, h_oil = 4 µm, μ = 0.11 is crossed at 26.5 rpm with γs = 2.8 and 17.1 rpm with
+//! γs = 15 (flooded: 17.0); h_oil = 3.4 µm: 69.2 and 19.5 rpm
+//! (`tests/published_values.rs::starvation_exponent_sensitivity_over_the_quoted_range`). So
+//! γs (`starvation.exponent`, a parameter-file key like the layer) is as uncertain as the
+//! layer itself. The
+//! tests check the form's limits and identities (`tests/published_values.rs`,
+//! `tests/extensions.rs`) and that sensitivity, not published numbers.
 //!
 //! Here it is applied to the film of eq. 13 (the fluid's share of the load, E'/γ1, P/γ1), so
 //! the load sharing is solved with the starved film: `h_c(x1)^−γs = h_13(x1)^−γs + h_oil^−γs`.
@@ -30,7 +45,9 @@
 //! one-parameter phenomenological description, to be fitted (`pinjoint calibrate` can fit
 //! `starvation.inlet_layer_inverse`).
 
-/// Default γs of the starvation relation (from memory, not verified against the sources).
+/// Default γs of the starvation relation: a circular-contact value from memory, not verified
+/// against the sources (a secondary summary of Lugt 2013 quotes about 3 for circular and up to
+/// 15 for wide elliptical contacts; see the module doc).
 pub const DEFAULT_EXPONENT: f64 = 2.8;
 
 /// The starvation relation in logarithms: ln h_c from ln h_ff (flooded film) with

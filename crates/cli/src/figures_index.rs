@@ -378,8 +378,9 @@ fn starvation() -> Entry {
         caption: "μ and the asperities' load share 1/γ2 against speed at 20 kN, and the core's torque along the 1 Hz ±40° \
 stroke at 20 kN (no servo dynamics), for inlet oil layers h_oil = ∞ (the paper's fully flooded model), 10, 4 and 3.4 µm: \
 Chevalier et al.'s starvation relation h^−γs = h_flooded^−γs + h_oil^−γs (γs = 2.8) inside the load-sharing solve \
-(`[starvation] inlet_layer_inverse` = 1/h_oil); the form and γs are from memory, not checked against the 1998 paper \
-(not available here), and only the relation's limits are tested. A thin layer keeps the joint boundary-dominated to higher speeds, as \
+(`[starvation] inlet_layer_inverse` = 1/h_oil); not checked against the 1998 paper (not available here): the form was \
+found only in a secondary summary of Lugt (2013, eq. 9.73; γ about 3 for circular, up to 15 for wide elliptical contacts), \
+γs = 2.8 is from memory and may be low for this line contact, and only the relation's limits and its γs sensitivity are tested. A thin layer keeps the joint boundary-dominated to higher speeds, as \
 the paper's experiments suggest, but a constant layer makes the lightest load the most boundary, the opposite of the \
 measured load trend; the per-layer numbers (μ = 0.11 crossings, half-load speed, μ at 800 rpm, the 1 Hz dip) are in \
 starvation_summary.csv and the README's extension section."

@@ -25,8 +25,9 @@ The parameter <code>lubricant.temperature</code> exists because every parameter-
 <code>starvation.exponent</code> &gamma;<sub>s</sub>, default 2.8): the film of eq. 13 is replaced by h<sup>&minus;&gamma;<sub>s</sub></sup> = h<sub>13</sub><sup>&minus;&gamma;<sub>s</sub></sup> + h<sub>oil</sub><sup>&minus;&gamma;<sub>s</sub></sup>,
 Chevalier et al.'s (1998, ASME J. Tribol. 120, 126&ndash;133) starvation relation h/h<sub>ff</sub> = R/(1 + R<sup>&gamma;<sub>s</sub></sup>)<sup>1/&gamma;<sub>s</sub></sup>, R = h<sub>oil</sub>/h<sub>ff</sub>,
 inside the load-sharing solve. <b>Not verified against the source</b>: neither Chevalier et al. nor Damiens et al. (2004) was available, and
-no published example of the relation was found; the form and &gamma;<sub>s</sub> = 2.8 are written from memory, and only the relation's limits
-(flooded as h<sub>oil</sub> &rarr; &infin;, h &rarr; h<sub>oil</sub> for a thin layer) are tested. A phenomenological stand-in for the grease the stroke squeezes out (the paper, section 5); fit it to
+no published example of the relation was found; the form was found only in a secondary summary of Lugt (2013, eq. 9.73; &gamma; about 3 for circular,
+up to 15 for wide elliptical contacts), &gamma;<sub>s</sub> = 2.8 is written from memory and may be low for this line contact, and only the relation's limits
+(flooded as h<sub>oil</sub> &rarr; &infin;, h &rarr; h<sub>oil</sub> for a thin layer) and its &gamma;<sub>s</sub> sensitivity are tested. A phenomenological stand-in for the grease the stroke squeezes out (the paper, section 5); fit it to
 measurements (<code>pinjoint calibrate</code> can fit <code>starvation.inlet_layer_inverse</code>).</li>
 </ul>
 "#;
