@@ -11,14 +11,24 @@
 /// and by a doubling step (at least 8) while one end is still infinite. It stops when a step is below `tol(y)`: a Newton step of that size
 /// means an error of order tol² (quadratic convergence), a bisection step of that size
 /// means a bracket of width 2·tol. Returns the root and the number of evaluations.
-pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, tol: fn(f64) -> f64) -> (f64, u32) {
+pub fn newton_increasing<F: FnMut(f64) -> (f64, f64)>(f: F, y0: f64, tol: fn(f64) -> f64) -> (f64, u32) {
+    newton_increasing_seeded(f, y0, None, tol)
+}
+
+/// [`newton_increasing`] when f(`y0`) and f′(`y0`) are already known (`first`, counted as one
+/// evaluation): the same iterates as without it, one call of `f` fewer.
+pub fn newton_increasing_seeded<F: FnMut(f64) -> (f64, f64)>(mut f: F, y0: f64, first: Option<(f64, f64)>, tol: fn(f64) -> f64) -> (f64, u32) {
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
     let mut y = y0;
     let mut evals = 0;
     let (mut last_step, mut step_before_last) = (f64::INFINITY, f64::INFINITY);
     let mut last_was_newton = false;
+    let mut first = first;
     while evals < 400 {
-        let (r, dr) = f(y);
+        let (r, dr) = match first.take() {
+            Some(v) => v,
+            None => f(y),
+        };
         evals += 1;
         if r == 0.0 {
             break;

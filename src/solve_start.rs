@@ -18,7 +18,7 @@
 //! safeguarded by a bracket and converges from any finite start).
 
 /// Grid points per decade of load and of speed.
-pub const PER_DECADE: f64 = 4.0;
+pub const PER_DECADE: f64 = 8.0;
 /// Load range of the grid, N (cut at half the asperity model's capacity).
 pub const LOAD_RANGE: (f64, f64) = (1e-1, 1e8);
 /// Sliding-speed range of the grid, m/s.
