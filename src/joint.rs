@@ -260,21 +260,30 @@ impl Joint {
             starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
             start: StartTable::empty(),
         };
-        // The deterministic start of a cold solve, from the same (starved or flooded) solve.
-        joint.start = StartTable::build(joint.capacity, |ln_p, ln_u, warm| {
-            let asp = joint.asp_unit.at_load_ratio(ln_p);
-            let film = joint.film_unit.at_ratio(ln_p, ln_u);
-            let ls = solve_starved(Some(&film), &asp, &joint.params.surface, warm, joint.starved);
-            crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
-        });
+        joint.start = StartTable::new(joint.capacity);
         Ok(joint)
+    }
+
+    /// A node of the start table: the root at (ln P_T, ln u) from `warm`, by the same (starved
+    /// or flooded) solve, with its sensitivities.
+    fn start_node(&self, ln_p: f64, ln_u: f64, warm: Option<f64>) -> crate::solve_start::Node {
+        let asp = self.asp_unit.at_load_ratio(ln_p);
+        let film = self.film_unit.at_ratio(ln_p, ln_u);
+        let ls = solve_starved(Some(&film), &asp, &self.params.surface, warm, self.starved);
+        crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
+    }
+
+    /// The start table's value at (ln P_T, ln u) (its rows there solved first if not yet).
+    #[inline]
+    fn table_start(&self, ln_p: f64, ln_u: f64) -> f64 {
+        self.start.guess(ln_p, ln_u, |a, b, w| self.start_node(a, b, w))
     }
 
     /// Where a solve at (`load`, `omega`) starts without a warm start: a function of the
     /// operating point alone ([`crate::solve_start`]); NaN at rest.
     pub fn cold_start(&self, load: f64, omega: f64) -> f64 {
         let u = omega.abs() * self.params.geometry.pin_radius;
-        if u > 0.0 { self.start.guess(load.abs().ln(), u.ln()) } else { f64::NAN }
+        if u > 0.0 { self.table_start(load.abs().ln(), u.ln()) } else { f64::NAN }
     }
 
     /// The parameter set the joint was built with.
@@ -421,7 +430,7 @@ impl Joint {
     /// or when the table has no value there.
     #[inline]
     fn start_from(&self, guess: Option<f64>, ln_load: f64, ln_u: f64) -> f64 {
-        let table = self.start.guess(ln_load, ln_u);
+        let table = self.table_start(ln_load, ln_u);
         match guess {
             Some(g) if g.is_finite() && (table.is_nan() || (g - table).abs() <= START_AGREEMENT) => g,
             _ => table,

@@ -408,3 +408,33 @@ fn the_one_evaluation_solve_agrees_with_newton_to_1e_13() {
     // start is 1e-4 to 1e-2 off.)
     assert!(one * 100 >= total * 85, "{one} of {total} boundary/mixed solves took one evaluation");
 }
+
+#[test]
+fn a_cold_evaluation_is_the_same_whatever_was_evaluated_before() {
+    // The start table's rows are solved on first use; each is a function of its load alone,
+    // so a cold evaluation is bit-identical whichever points (and rows) came before, in
+    // whichever order, on whichever thread, and in a clone.
+    let points = [(20e3, 6.0), (5e3, 0.05), (60e3, 30.0), (20e3, -6.0), (1.0, 1e-3), (7e5, 2.0), (20e3, 6.3)];
+    let fresh: Vec<_> = points.iter().map(|&(p, w)| joint().evaluate(p, w).unwrap()).collect();
+    let j = joint();
+    let mut order: Vec<usize> = (0..points.len()).rev().collect();
+    order.rotate_left(2);
+    for &k in &order {
+        let (p, w) = points[k];
+        assert_eq!(j.evaluate(p, w).unwrap(), fresh[k], "after others: P={p} ω={w}");
+    }
+    let j2 = joint();
+    std::thread::scope(|s| {
+        for (k, &(p, w)) in points.iter().enumerate() {
+            let (j2, fresh) = (&j2, &fresh);
+            s.spawn(move || assert_eq!(j2.evaluate(p, w).unwrap(), fresh[k], "threaded: P={p} ω={w}"));
+        }
+    });
+    let c = j.clone();
+    for (k, &(p, w)) in points.iter().enumerate() {
+        assert_eq!(c.evaluate(p, w).unwrap(), fresh[k], "clone: P={p} ω={w}");
+        let warm = c.evaluate_from(p, w, Some(fresh[k].logit)).unwrap().friction_coefficient;
+        assert!((warm / fresh[k].friction_coefficient - 1.0).abs() < 1e-13, "started at the root: P={p} ω={w}");
+    }
+    assert_eq!(c, joint(), "equal joints whatever rows each has solved");
+}
