@@ -73,14 +73,14 @@ pub fn ln_moes_grad(ln_m: f64, ln_l: f64) -> (f64, f64, f64, f64) {
     (ln_h, s, g_m, w2 * db_l)
 }
 
-/// [`ln_moes_grad`] and the second derivative of ln H_C along the direction (d ln M, d ln L) =
-/// (`dm`, `dl`): returns (ln H_C, ∂ln H_C/∂ln M, ∂ln H_C/∂ln L, d²ln H_C/dτ²) for
-/// ln M = ln M₀ + dm·τ, ln L = ln L₀ + dl·τ. The second derivative follows the chain rule
-/// through the same log-sum-exp weights (for ln(eᵃ + eᵇ) with weights w, 1 − w:
-/// (w a″ + (1 − w) b″) + w(1 − w)(a′ − b′)²) and through s of eq. 14; it is the curvature
-/// of the load-sharing residual's film term ([`crate::mixed`]'s first, third-order step).
+/// Eq. 12 in logarithms with its first and second derivatives along the direction
+/// (d ln M, d ln L) = (`dm`, `dl`): returns (ln H_C, d ln H_C/dτ, d²ln H_C/dτ²) for
+/// ln M = ln M₀ + dm·τ, ln L = ln L₀ + dl·τ. The chain rule through the same log-sum-exp
+/// weights (for ln(eᵃ + eᵇ) with weights w, 1 − w: the first derivative is w a′ + (1 − w) b′,
+/// the second w a″ + (1 − w) b″ + w(1 − w)(a′ − b′)²) and through s of eq. 14; the curvature
+/// of the load-sharing residual's film term ([`crate::mixed`]'s third-order first step).
 /// Not guarded for infinite intermediate values (the caller checks the result is finite).
-pub fn ln_moes_grad2(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64, f64) {
+pub fn ln_moes_directional(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) {
     let ln_hri = LN_3 - ln_m;
     let ln_hei = LN_C_EI - ln_m / 5.0;
     let ln_hrp = LN_C_RP + 2.0 / 3.0 * ln_l;
@@ -93,14 +93,6 @@ pub fn ln_moes_grad2(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64, 
     let (phi, w1) = log_add_exp_weight(3.0 * s / 7.0 * a, -2.0 * s / 7.0 * b);
     let ln_h = phi / s;
     let w2 = 1.0 - w1;
-    // The gradient, as ln_moes_grad.
-    let ds_m = 8.0 / 5.0 * e2q * (-2.0 * q) * 0.8;
-    let da_m = -va - (1.0 - va) / 5.0;
-    let db_m = -(1.0 - ub) / 8.0;
-    let db_l = ub * (2.0 / 3.0) + (1.0 - ub) * 0.75;
-    let terms = if w1 > 0.0 { 3.0 / 7.0 * w1 * a } else { 0.0 } - if w2 > 0.0 { 2.0 / 7.0 * w2 * b } else { 0.0 };
-    let g_m = if ds_m != 0.0 { ds_m * (-phi / (s * s) + terms / s) } else { 0.0 } + w1 * da_m + w2 * db_m;
-    let g_l = w2 * db_l;
     // Along τ: q′ = q·c_q with c_q = (4/5)dm; s′ = −(16/5) q′ e^{−2q}, s″ = −(16/5) c_q q′ e^{−2q}(1 − 2q).
     let c_q = 0.8 * dm;
     let s1 = -3.2 * c_q * q * e2q;
@@ -121,9 +113,10 @@ pub fn ln_moes_grad2(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64, 
     let phi_1 = w1 * p1_1 + w2 * p2_1;
     let phi_2 = w1 * p1_2 + w2 * p2_2 + w1 * w2 * (p1_1 - p2_1) * (p1_1 - p2_1);
     // ln H = φ/s: (ln H)′ = (φ′ − ln H·s′)/s, (ln H)″ = (φ″ − 2(ln H)′s′ − ln H·s″)/s.
-    let h_1 = (phi_1 - ln_h * s1) / s;
-    let h_2 = (phi_2 - 2.0 * h_1 * s1 - ln_h * s2) / s;
-    (ln_h, g_m, g_l, h_2)
+    let inv_s = 1.0 / s;
+    let h_1 = (phi_1 - ln_h * s1) * inv_s;
+    let h_2 = (phi_2 - 2.0 * h_1 * s1 - ln_h * s2) * inv_s;
+    (ln_h, h_1, h_2)
 }
 
 /// ln(eᵃ + eᵇ) and the weight eᵃ/(eᵃ + eᵇ) of its first argument, from one exponential.
@@ -294,17 +287,18 @@ mod tests {
     }
 
     #[test]
-    fn second_derivative_matches_differences_of_the_first() {
-        // d²ln H/dτ² along (dm, dl) against central differences of the exact directional
-        // first derivative (ln_moes_slope), across the regimes of eq. 12.
+    fn directional_derivatives_match_the_gradient_and_differences() {
+        // d ln H/dτ against the gradient of ln_moes_grad, d²ln H/dτ² against central
+        // differences of that exact first derivative, across the regimes of eq. 12.
         for (lm, ll) in [(0.0, 0.0), (2.3, 2.3), (4.6, 2.3), (6.9, 1.6), (-3.0, -5.0), (15.0, 4.0), (-0.5, 0.7), (1.2, 3.0)] {
             for (dm, dl) in [(1.0, 0.0), (0.0, 1.0), (0.5, 0.75), (-0.5, 0.25)] {
-                let (ln_h, g_m, g_l, d2) = ln_moes_grad2(lm, ll, dm, dl);
-                let (v, _, gm0, gl0) = ln_moes_grad(lm, ll);
-                assert_eq!((ln_h, g_m, g_l), (v, gm0, gl0), "the value and gradient are ln_moes_grad's");
+                let (ln_h, d1, d2) = ln_moes_directional(lm, ll, dm, dl);
+                let (v, _, g) = ln_moes_slope(lm, ll, dm, dl);
+                assert_eq!(ln_h, v, "the value is ln_moes_grad's");
+                assert!((d1 - g).abs() < 1e-13 * (1.0 + g.abs()), "({lm},{ll}) dir ({dm},{dl}): {d1} vs {g}");
                 let e = 1e-5;
-                let d1 = |k: f64| ln_moes_slope(lm + k * e * dm, ll + k * e * dl, dm, dl).2;
-                let fd = (d1(1.0) - d1(-1.0)) / (2.0 * e);
+                let slope = |k: f64| ln_moes_slope(lm + k * e * dm, ll + k * e * dl, dm, dl).2;
+                let fd = (slope(1.0) - slope(-1.0)) / (2.0 * e);
                 assert!((d2 - fd).abs() < 1e-6 * (1.0 + fd.abs()), "({lm},{ll}) dir ({dm},{dl}): {d2} vs {fd}");
             }
         }

@@ -23,7 +23,7 @@
 
 use crate::asperity::{AsperityGroups, A2, A3};
 use crate::fast_math::exp;
-use crate::film::{ln_moes_grad, ln_moes_grad2, ln_scaled_moes};
+use crate::film::{ln_moes_directional, ln_moes_grad, ln_scaled_moes};
 use crate::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
 use crate::newton::newton_increasing_seeded;
 use crate::params::Surface;
@@ -80,10 +80,11 @@ pub struct LoadSharing {
     /// Residual evaluations used.
     pub evaluations: u32,
     /// ∂y/∂ln P_T of the root at fixed speed (implicit function theorem at the last
-    /// evaluated point; 0 at rest): with [`Self::dlogit_dln_speed`] a first-order predictor
-    /// of the root at a nearby operating point, for starting the next solve.
+    /// evaluated point, within a Newton step below tolerance of the root; 0 at rest; NaN when
+    /// not asked for, [`solve_starved_with`]): with [`Self::dlogit_dln_speed`] a first-order
+    /// predictor of the root at a nearby operating point, for starting the next solve.
     pub dlogit_dln_load: f64,
-    /// ∂y/∂ln u of the root at fixed load (0 at rest).
+    /// ∂y/∂ln u of the root at fixed load (0 at rest; NaN when not asked for).
     pub dlogit_dln_speed: f64,
 }
 
@@ -122,11 +123,10 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
 }
 
 /// [`solve_starved`], with the root's sensitivities ([`LoadSharing::dlogit_dln_load`],
-/// [`LoadSharing::dlogit_dln_speed`]) evaluated at the root only when `sensitivities` is true.
-/// When false and the solve ended with its third-order step ([`THIRD_ORDER_ACCEPT`]), they
-/// are the implicit function theorem's at the start, at most [`THIRD_ORDER_ACCEPT`] from the
-/// root in y (a relative error of that order), and the solve costs one residual evaluation
-/// fewer. The root, the shares and h_c are the same either way, bit for bit.
+/// [`LoadSharing::dlogit_dln_speed`]) only when `sensitivities` is true (NaN otherwise,
+/// unless at rest, where they are 0). When the solve ends with its third-order step
+/// ([`THIRD_ORDER_ACCEPT`]) they cost one more residual evaluation, at the root. The root, the
+/// shares and h_c are the same either way, bit for bit.
 pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>, sensitivities: bool) -> LoadSharing {
     let rest = |asp: &AsperityGroups| {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
@@ -184,7 +184,10 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
     };
     // The sensitivities at the root: after a third-order step the only evaluation is up to
     // THIRD_ORDER_ACCEPT away, so they are evaluated once more at the root when asked for.
-    let (dlogit_dln_load, dlogit_dln_speed) = if sensitivities && evaluations == 1 && y != last.y {
+    // (The first evaluation, when it had r″, did not compute r's gradient in ln P_T and ln u.)
+    let (dlogit_dln_load, dlogit_dln_speed) = if !sensitivities {
+        (f64::NAN, f64::NAN)
+    } else if last.g_m.is_nan() || (evaluations == 1 && y != last.y) {
         evaluations += 1;
         Point::at(film, asp, s, starved, y, false).sensitivities()
     } else {
@@ -242,13 +245,15 @@ impl Point {
         // Eq. 13 by eq. 12's substitution (film::ln_scaled_moes_grad): along y, ln x1 moves
         // by x2, and (ln M, ln L) by (1/2, 3/4) per unit ln x1.
         let (ln_m, ln_l) = (film.ln_m + 0.5 * sh.ln_x1, film.ln_l + 0.75 * sh.ln_x1);
-        let (ln_hm, g_m, g_l, d2m) = if second {
-            ln_moes_grad2(ln_m, ln_l, 0.5, 0.75)
+        // With `second`, only the derivatives along that direction (the gradient, for the
+        // sensitivities, is then NaN).
+        let (ln_hm, g_m, g_l, q1, d2m) = if second {
+            let (v, d1, d2) = ln_moes_directional(ln_m, ln_l, 0.5, 0.75);
+            (v, f64::NAN, f64::NAN, d1 - 0.5, d2)
         } else {
             let (a, _, b, c) = ln_moes_grad(ln_m, ln_l);
-            (a, b, c, f64::NAN)
-        };
-        let q1 = 0.5 * g_m + 0.75 * g_l - 0.5; // d ln h_c/d ln x1
+            (a, b, c, 0.5 * b + 0.75 * c - 0.5, f64::NAN)
+        }; // q1 = d ln h_c/d ln x1
         let mut ln_h = film.ln_scale + (ln_hm - 0.5 * sh.ln_x1);
         let mut dln_h = sh.x2 * q1; // d ln x1/dy = x2
         let mut d2ln_h = sh.x2 * sh.x2 * d2m - sh.x1 * sh.x2 * q1; // d² ln x1/dy² = −x1·x2
