@@ -25,7 +25,7 @@ use crate::asperity::{AsperityGroups, A2, A3};
 use crate::fast_math::exp;
 use crate::film::{ln_moes_directional, ln_moes_grad, ln_scaled_moes};
 use crate::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
-use crate::newton::newton_increasing_seeded;
+use crate::newton::{newton_increasing_seeded, Seed};
 use crate::params::Surface;
 
 /// The speed-dependent film groups of eq. 12, in logarithms.
@@ -162,7 +162,7 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
     // The first evaluation also gives r″ (flooded inlet only). From a start whose Newton step
     // s = −r/r′ is at most THIRD_ORDER_ACCEPT, Halley's step y0 + s/(1 + K s) (K = r″/2r′)
     // leaves an error C·s³ with C = K² − r‴/6r′, and the solve ends after one evaluation.
-    // Otherwise Newton's iteration continues from y0, exactly as without the first r″.
+    // Otherwise Newton's iteration continues from y0, its first step Halley's.
     let p0 = Point::at(film, asp, s, starved, y0, starved.is_none());
     let step = -p0.r / p0.dr;
     let k = p0.d2r / (2.0 * p0.dr);
@@ -178,7 +178,10 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
             last = p;
             (p.r, p.dr)
         };
-        let (y, evaluations) = newton_increasing_seeded(residual, y0, Some((p0.r, p0.dr)), y_tol);
+        // The first step is Halley's where r″ is known and the compression is the identity.
+        let curvature = if p0.raw_r >= COMPRESS_FROM { k } else { f64::NAN };
+        let seed = Seed { value: p0.r, slope: p0.dr, curvature };
+        let (y, evaluations) = newton_increasing_seeded(residual, y0, Some(seed), y_tol);
         // The last step is below tol (or zero), so first order is exact to O(tol²).
         (y, last.ln_h + last.dln_h * (y - last.y), last, evaluations)
     };
@@ -362,6 +365,29 @@ mod tests {
         let (r, n) = newton_increasing(f, 2.0, |_| 1e-14);
         assert!(f(r).0.abs() < 1e-12, "{r} after {n}");
         assert!(n < 60, "{n} evaluations");
+    }
+
+    #[test]
+    fn a_seeded_halley_step_converges_to_tolerance_in_fewer_evaluations() {
+        // f(x) = e^x − 2 + x (increasing, curved): from 0.3 off, the first step Halley's.
+        let root = {
+            let (r, _) = newton_increasing(|x: f64| (x.exp() - 2.0 + x, x.exp() + 1.0), 0.0, |_| 1e-15);
+            r
+        };
+        let f = |x: f64| (x.exp() - 2.0 + x, x.exp() + 1.0);
+        for d in [3e-1, 3e-2, -1e-2, 1e-3, -1e-4] {
+            let x0 = root + d;
+            let (r, dr) = f(x0);
+            let seed = crate::newton::Seed { value: r, slope: dr, curvature: x0.exp() / (2.0 * dr) };
+            let (with, n_with) = newton_increasing_seeded(f, x0, Some(seed), y_tol);
+            let (without, n_without) = newton_increasing(f, x0, y_tol);
+            assert!((with - root).abs() < 1e-14 && (without - root).abs() < 1e-14, "{d}: {with} {without} vs {root}");
+            assert!(n_with <= n_without, "{d}: {n_with} vs {n_without} evaluations");
+            // Without a curvature the seeded iteration is newton_increasing's, bit for bit.
+            let plain = crate::newton::Seed { curvature: f64::NAN, ..seed };
+            let (same, n_same) = newton_increasing_seeded(f, x0, Some(plain), y_tol);
+            assert_eq!((same.to_bits(), n_same), (without.to_bits(), n_without));
+        }
     }
 
     #[test]
