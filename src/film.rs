@@ -81,6 +81,18 @@ pub fn ln_moes_grad(ln_m: f64, ln_l: f64) -> (f64, f64, f64, f64) {
 /// of the load-sharing residual's film term ([`crate::mixed`]'s third-order first step).
 /// Not guarded for infinite intermediate values (the caller checks the result is finite).
 pub fn ln_moes_directional(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) {
+    let (ln_h, _, _, d1, d2) = moes_second::<false>(ln_m, ln_l, dm, dl);
+    (ln_h, d1, d2)
+}
+
+/// [`ln_moes_directional`] and the gradient of [`ln_moes_grad`] (bit for bit): returns
+/// (ln H_C, ∂ln H_C/∂ln M, ∂ln H_C/∂ln L, d ln H_C/dτ, d²ln H_C/dτ²).
+pub fn ln_moes_grad_directional(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64, f64, f64) {
+    moes_second::<true>(ln_m, ln_l, dm, dl)
+}
+
+#[inline(always)]
+fn moes_second<const GRAD: bool>(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64, f64, f64) {
     let ln_hri = LN_3 - ln_m;
     let ln_hei = LN_C_EI - ln_m / 5.0;
     let ln_hrp = LN_C_RP + 2.0 / 3.0 * ln_l;
@@ -116,7 +128,17 @@ pub fn ln_moes_directional(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64,
     let inv_s = 1.0 / s;
     let h_1 = (phi_1 - ln_h * s1) * inv_s;
     let h_2 = (phi_2 - 2.0 * h_1 * s1 - ln_h * s2) * inv_s;
-    (ln_h, h_1, h_2)
+    if !GRAD {
+        return (ln_h, f64::NAN, f64::NAN, h_1, h_2);
+    }
+    // The gradient, as ln_moes_grad.
+    let ds_m = 8.0 / 5.0 * e2q * (-2.0 * q) * 0.8;
+    let da_m = -va - (1.0 - va) / 5.0;
+    let db_m = -(1.0 - ub) / 8.0;
+    let db_l = ub * (2.0 / 3.0) + (1.0 - ub) * 0.75;
+    let terms = if w1 > 0.0 { 3.0 / 7.0 * w1 * a } else { 0.0 } - if w2 > 0.0 { 2.0 / 7.0 * w2 * b } else { 0.0 };
+    let g_m = if ds_m != 0.0 { ds_m * (-phi / (s * s) + terms / s) } else { 0.0 } + w1 * da_m + w2 * db_m;
+    (ln_h, g_m, w2 * db_l, h_1, h_2)
 }
 
 /// ln(eᵃ + eᵇ) and the weight eᵃ/(eᵃ + eᵇ) of its first argument, from one exponential.
@@ -295,6 +317,9 @@ mod tests {
                 let (ln_h, d1, d2) = ln_moes_directional(lm, ll, dm, dl);
                 let (v, _, g) = ln_moes_slope(lm, ll, dm, dl);
                 assert_eq!(ln_h, v, "the value is ln_moes_grad's");
+                let (v2, g_m, g_l, d1b, d2b) = ln_moes_grad_directional(lm, ll, dm, dl);
+                let (_, _, gm0, gl0) = ln_moes_grad(lm, ll);
+                assert_eq!((v2, g_m, g_l, d1b, d2b), (ln_h, gm0, gl0, d1, d2), "the same numbers with the gradient");
                 assert!((d1 - g).abs() < 1e-13 * (1.0 + g.abs()), "({lm},{ll}) dir ({dm},{dl}): {d1} vs {g}");
                 let e = 1e-5;
                 let slope = |k: f64| ln_moes_slope(lm + k * e * dm, ll + k * e * dl, dm, dl).2;

@@ -23,7 +23,7 @@
 
 use crate::asperity::{AsperityGroups, A2, A3};
 use crate::fast_math::exp;
-use crate::film::{ln_moes_directional, ln_moes_grad, ln_scaled_moes};
+use crate::film::{ln_moes_directional, ln_moes_grad, ln_moes_grad_directional, ln_scaled_moes};
 use crate::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
 use crate::newton::{newton_increasing_seeded, Seed};
 use crate::params::Surface;
@@ -124,8 +124,8 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
 
 /// [`solve_starved`], with the root's sensitivities ([`LoadSharing::dlogit_dln_load`],
 /// [`LoadSharing::dlogit_dln_speed`]) only when `sensitivities` is true (NaN otherwise,
-/// unless at rest, where they are 0). When the solve ends with its third-order step
-/// ([`THIRD_ORDER_ACCEPT`]) they cost one more residual evaluation, at the root. The root, the
+/// unless at rest, where they are 0). When the solve ends with its third-order step more than
+/// 1e-7 from its start they cost one more residual evaluation, at the root. The root, the
 /// shares and h_c are the same either way, bit for bit.
 pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>, sensitivities: bool) -> LoadSharing {
     let rest = |asp: &AsperityGroups| {
@@ -163,7 +163,7 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
     // s = −r/r′ is at most THIRD_ORDER_ACCEPT, Halley's step y0 + s/(1 + K s) (K = r″/2r′)
     // leaves an error C·s³ with C = K² − r‴/6r′, and the solve ends after one evaluation.
     // Otherwise Newton's iteration continues from y0, its first step Halley's.
-    let p0 = Point::at(film, asp, s, starved, y0, starved.is_none());
+    let p0 = Point::at(film, asp, s, starved, y0, starved.is_none(), sensitivities);
     let step = -p0.r / p0.dr;
     let k = p0.d2r / (2.0 * p0.dr);
     let (y, ln_h, last, mut evaluations) = if p0.raw_r >= COMPRESS_FROM && step.abs() <= THIRD_ORDER_ACCEPT && (k * step).abs() <= 0.1 {
@@ -174,7 +174,7 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
     } else {
         let mut last = p0;
         let residual = |y: f64| {
-            let p = Point::at(film, asp, s, starved, y, false);
+            let p = Point::at(film, asp, s, starved, y, false, true);
             last = p;
             (p.r, p.dr)
         };
@@ -185,14 +185,15 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
         // The last step is below tol (or zero), so first order is exact to O(tol²).
         (y, last.ln_h + last.dln_h * (y - last.y), last, evaluations)
     };
-    // The sensitivities at the root: after a third-order step the only evaluation is up to
-    // THIRD_ORDER_ACCEPT away, so they are evaluated once more at the root when asked for.
-    // (The first evaluation, when it had r″, did not compute r's gradient in ln P_T and ln u.)
+    // The sensitivities at the root: after the one-evaluation solve its evaluation may be up
+    // to THIRD_ORDER_ACCEPT away, so beyond SENSITIVITY_REUSE they are evaluated once more at
+    // the root (within it, their relative error is of that order; after Newton's iteration
+    // the last evaluation is within its last step, below 5e-7, as before).
     let (dlogit_dln_load, dlogit_dln_speed) = if !sensitivities {
         (f64::NAN, f64::NAN)
-    } else if last.g_m.is_nan() || (evaluations == 1 && y != last.y) {
+    } else if last.g_m.is_nan() || (evaluations == 1 && (y - last.y).abs() > SENSITIVITY_REUSE) {
         evaluations += 1;
-        Point::at(film, asp, s, starved, y, false).sensitivities()
+        Point::at(film, asp, s, starved, y, false, true).sensitivities()
     } else {
         last.sensitivities()
     };
@@ -215,6 +216,10 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
 /// 1 MN), so the error is below 8e-15 with a margin of 3 on C: 10× below the absolute
 /// tolerance of [`y_tol`]. `tests/solver.rs` checks the roots against sign changes of r.
 pub const THIRD_ORDER_ACCEPT: f64 = 2e-5;
+
+/// How far (in y) from the root the last evaluation may be for its sensitivities to be the
+/// root's (their relative error is of this order; the test asks 1e-6).
+const SENSITIVITY_REUSE: f64 = 1e-7;
 
 /// The residual (compressed) and what the solve keeps of one evaluation at y.
 #[derive(Debug, Clone, Copy)]
@@ -241,16 +246,20 @@ struct Point {
 
 impl Point {
     /// r and its derivatives at y; with `second`, r″ and d²ln h_c/dy² too (flooded inlet, t
-    /// inside the Chebyshev interval of F_{3/2}; NaN otherwise).
+    /// inside the Chebyshev interval of F_{3/2}; NaN otherwise), and with it the parts of the
+    /// sensitivities only if `gradient` (NaN otherwise).
     #[inline(always)]
-    fn at(film: &FilmGroups, asp: &AsperityGroups, s: &Surface, starved: Option<StarvedInlet>, y: f64, second: bool) -> Self {
+    fn at(film: &FilmGroups, asp: &AsperityGroups, s: &Surface, starved: Option<StarvedInlet>, y: f64, second: bool, gradient: bool) -> Self {
         let sh = Shares::new(y);
         // Eq. 13 by eq. 12's substitution (film::ln_scaled_moes_grad): along y, ln x1 moves
         // by x2, and (ln M, ln L) by (1/2, 3/4) per unit ln x1.
         let (ln_m, ln_l) = (film.ln_m + 0.5 * sh.ln_x1, film.ln_l + 0.75 * sh.ln_x1);
         // With `second`, only the derivatives along that direction (the gradient, for the
         // sensitivities, is then NaN).
-        let (ln_hm, g_m, g_l, q1, d2m) = if second {
+        let (ln_hm, g_m, g_l, q1, d2m) = if second && gradient {
+            let (v, g_m, g_l, d1, d2) = ln_moes_grad_directional(ln_m, ln_l, 0.5, 0.75);
+            (v, g_m, g_l, d1 - 0.5, d2)
+        } else if second {
             let (v, d1, d2) = ln_moes_directional(ln_m, ln_l, 0.5, 0.75);
             (v, f64::NAN, f64::NAN, d1 - 0.5, d2)
         } else {
