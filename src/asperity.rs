@@ -91,6 +91,13 @@ impl AsperityGroups {
         let (sp, sigmoid) = softplus_sigmoid(z);
         (ln_x2 + sp / A4 - self.ln_c, 1.0 - A2 * sigmoid, sigmoid)
     }
+
+    /// The second derivative of [`Self::required_ln_f32`] with respect to ln x2 given the
+    /// sigmoid σ of [`Self::required_ln_f32_grad`]: a2²·a4·σ(1 − σ) (z = a4(ln K − a2 ln x2)
+    /// moves by −a4·a2 per unit ln x2, and softplus″ = σ(1 − σ)).
+    pub fn required_ln_f32_curvature(sigmoid: f64) -> f64 {
+        A2 * A2 * A4 * sigmoid * (1.0 - sigmoid)
+    }
 }
 
 /// Greenwood–Williamson central asperity pressure of eq. 17 (Pa) at separation `h` (m).
@@ -182,6 +189,21 @@ mod tests {
             let v = g.ln_rhs(ln_x2);
             assert!(v > prev);
             prev = v;
+        }
+    }
+
+    #[test]
+    fn curvature_matches_differences_of_the_slope() {
+        let (s, r, e, b) = setup();
+        for p in [1.0, 20e3, 1e7] {
+            let g = AsperityGroups::new(&s, p, r, e, b);
+            for ln_x2 in [-30.0, -3.0, -0.3, 0.0] {
+                let (_, _, sigmoid) = g.required_ln_f32_grad(ln_x2);
+                let c = AsperityGroups::required_ln_f32_curvature(sigmoid);
+                let h = 1e-4;
+                let fd = (g.required_ln_f32_slope(ln_x2 + h).1 - g.required_ln_f32_slope(ln_x2 - h).1) / (2.0 * h);
+                assert!((c - fd).abs() < 1e-9 + 1e-6 * fd.abs(), "P={p} ln x2={ln_x2}: {c} vs {fd}");
+            }
         }
     }
 

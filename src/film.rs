@@ -73,6 +73,74 @@ pub fn ln_moes_grad(ln_m: f64, ln_l: f64) -> (f64, f64, f64, f64) {
     (ln_h, s, g_m, w2 * db_l)
 }
 
+/// Eq. 12 in logarithms with its first and second derivatives along the direction
+/// (d ln M, d ln L) = (`dm`, `dl`): returns (ln H_C, d ln H_C/dτ, d²ln H_C/dτ²) for
+/// ln M = ln M₀ + dm·τ, ln L = ln L₀ + dl·τ. The chain rule through the same log-sum-exp
+/// weights (for ln(eᵃ + eᵇ) with weights w, 1 − w: the first derivative is w a′ + (1 − w) b′,
+/// the second w a″ + (1 − w) b″ + w(1 − w)(a′ − b′)²) and through s of eq. 14; the curvature
+/// of the load-sharing residual's film term ([`crate::mixed`]'s third-order first step).
+/// Not guarded for infinite intermediate values (the caller checks the result is finite).
+pub fn ln_moes_directional(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) {
+    let (ln_h, _, _, d1, d2) = moes_second::<false>(ln_m, ln_l, dm, dl);
+    (ln_h, d1, d2)
+}
+
+/// [`ln_moes_directional`] and the gradient of [`ln_moes_grad`] (bit for bit): returns
+/// (ln H_C, ∂ln H_C/∂ln M, ∂ln H_C/∂ln L, d ln H_C/dτ, d²ln H_C/dτ²).
+pub fn ln_moes_grad_directional(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64, f64, f64) {
+    moes_second::<true>(ln_m, ln_l, dm, dl)
+}
+
+#[inline(always)]
+fn moes_second<const GRAD: bool>(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64, f64, f64) {
+    let ln_hri = LN_3 - ln_m;
+    let ln_hei = LN_C_EI - ln_m / 5.0;
+    let ln_hrp = LN_C_RP + 2.0 / 3.0 * ln_l;
+    let ln_hep = LN_C_EP - ln_m / 8.0 + 0.75 * ln_l;
+    let q = exp(ln_hei - ln_hri);
+    let e2q = exp(-2.0 * q);
+    let s = (7.0 + 8.0 * e2q) / 5.0;
+    let (a, va) = log_add_exp_weight(7.0 / 3.0 * ln_hri, 7.0 / 3.0 * ln_hei);
+    let (b, ub) = log_add_exp_weight(-3.5 * ln_hrp, -3.5 * ln_hep);
+    let (phi, w1) = log_add_exp_weight(3.0 * s / 7.0 * a, -2.0 * s / 7.0 * b);
+    let ln_h = phi / s;
+    let w2 = 1.0 - w1;
+    // Along τ: q′ = q·c_q with c_q = (4/5)dm; s′ = −(16/5) q′ e^{−2q}, s″ = −(16/5) c_q q′ e^{−2q}(1 − 2q).
+    let c_q = 0.8 * dm;
+    let s1 = -3.2 * c_q * q * e2q;
+    let s2 = s1 * c_q * (1.0 - 2.0 * q);
+    // A = ln(e^{a1} + e^{a2}) with a1′ = −(7/3)dm, a2′ = −(7/15)dm; B likewise with
+    // b1′ = −(7/3)dl, b2′ = (7/16)dm − (21/8)dl.
+    let (a1, a2) = (-7.0 / 3.0 * dm, -7.0 / 15.0 * dm);
+    let (b1, b2) = (-7.0 / 3.0 * dl, 0.4375 * dm - 2.625 * dl);
+    let a_1 = va * a1 + (1.0 - va) * a2;
+    let a_2 = va * (1.0 - va) * (a1 - a2) * (a1 - a2);
+    let b_1 = ub * b1 + (1.0 - ub) * b2;
+    let b_2 = ub * (1.0 - ub) * (b1 - b2) * (b1 - b2);
+    // φ = ln(e^{P1} + e^{P2}), P1 = (3s/7)A, P2 = −(2s/7)B.
+    let p1_1 = 3.0 / 7.0 * (s1 * a + s * a_1);
+    let p1_2 = 3.0 / 7.0 * (s2 * a + 2.0 * s1 * a_1 + s * a_2);
+    let p2_1 = -2.0 / 7.0 * (s1 * b + s * b_1);
+    let p2_2 = -2.0 / 7.0 * (s2 * b + 2.0 * s1 * b_1 + s * b_2);
+    let phi_1 = w1 * p1_1 + w2 * p2_1;
+    let phi_2 = w1 * p1_2 + w2 * p2_2 + w1 * w2 * (p1_1 - p2_1) * (p1_1 - p2_1);
+    // ln H = φ/s: (ln H)′ = (φ′ − ln H·s′)/s, (ln H)″ = (φ″ − 2(ln H)′s′ − ln H·s″)/s.
+    let inv_s = 1.0 / s;
+    let h_1 = (phi_1 - ln_h * s1) * inv_s;
+    let h_2 = (phi_2 - 2.0 * h_1 * s1 - ln_h * s2) * inv_s;
+    if !GRAD {
+        return (ln_h, f64::NAN, f64::NAN, h_1, h_2);
+    }
+    // The gradient, as ln_moes_grad.
+    let ds_m = 8.0 / 5.0 * e2q * (-2.0 * q) * 0.8;
+    let da_m = -va - (1.0 - va) / 5.0;
+    let db_m = -(1.0 - ub) / 8.0;
+    let db_l = ub * (2.0 / 3.0) + (1.0 - ub) * 0.75;
+    let terms = if w1 > 0.0 { 3.0 / 7.0 * w1 * a } else { 0.0 } - if w2 > 0.0 { 2.0 / 7.0 * w2 * b } else { 0.0 };
+    let g_m = if ds_m != 0.0 { ds_m * (-phi / (s * s) + terms / s) } else { 0.0 } + w1 * da_m + w2 * db_m;
+    (ln_h, g_m, w2 * db_l, h_1, h_2)
+}
+
 /// ln(eᵃ + eᵇ) and the weight eᵃ/(eᵃ + eᵇ) of its first argument, from one exponential.
 fn log_add_exp_weight(a: f64, b: f64) -> (f64, f64) {
     if a == b {
@@ -236,6 +304,27 @@ mod tests {
                 let e = 1e-6;
                 let fd = (ln_moes(lm + e * dm, ll + e * dl).0 - ln_moes(lm - e * dm, ll - e * dl).0) / (2.0 * e);
                 assert!((d - fd).abs() < 1e-7 * (1.0 + fd.abs()), "({lm},{ll}) dir ({dm},{dl}): {d} vs {fd}");
+            }
+        }
+    }
+
+    #[test]
+    fn directional_derivatives_match_the_gradient_and_differences() {
+        // d ln H/dτ against the gradient of ln_moes_grad, d²ln H/dτ² against central
+        // differences of that exact first derivative, across the regimes of eq. 12.
+        for (lm, ll) in [(0.0, 0.0), (2.3, 2.3), (4.6, 2.3), (6.9, 1.6), (-3.0, -5.0), (15.0, 4.0), (-0.5, 0.7), (1.2, 3.0)] {
+            for (dm, dl) in [(1.0, 0.0), (0.0, 1.0), (0.5, 0.75), (-0.5, 0.25)] {
+                let (ln_h, d1, d2) = ln_moes_directional(lm, ll, dm, dl);
+                let (v, _, g) = ln_moes_slope(lm, ll, dm, dl);
+                assert_eq!(ln_h, v, "the value is ln_moes_grad's");
+                let (v2, g_m, g_l, d1b, d2b) = ln_moes_grad_directional(lm, ll, dm, dl);
+                let (_, _, gm0, gl0) = ln_moes_grad(lm, ll);
+                assert_eq!((v2, g_m, g_l, d1b, d2b), (ln_h, gm0, gl0, d1, d2), "the same numbers with the gradient");
+                assert!((d1 - g).abs() < 1e-13 * (1.0 + g.abs()), "({lm},{ll}) dir ({dm},{dl}): {d1} vs {g}");
+                let e = 1e-5;
+                let slope = |k: f64| ln_moes_slope(lm + k * e * dm, ll + k * e * dl, dm, dl).2;
+                let fd = (slope(1.0) - slope(-1.0)) / (2.0 * e);
+                assert!((d2 - fd).abs() < 1e-6 * (1.0 + fd.abs()), "({lm},{ll}) dir ({dm},{dl}): {d2} vs {fd}");
             }
         }
     }

@@ -166,6 +166,38 @@ fn ln_f_very_negative(t: f64) -> (f64, f64) {
     (1.5 * (-t).ln() + sum.ln(), (1.5 - dsum / sum) / t)
 }
 
+/// ln F_{3/2}(t) with its first and second derivatives on the interpolated interval
+/// [`T_LO`, `T_HI`] (Clenshaw's recurrence differentiated twice:
+/// b″_k = 4 b′_{k+1} + 2x b″_{k+1} − b″_{k+2}); the second derivative is NaN outside it. The
+/// value and the first derivative are [`ln_f32_slope`]'s, bit for bit.
+pub fn ln_f32_slope2(t: f64) -> (f64, f64, f64) {
+    #[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(…)` also sends NaN to the general path
+    if !((T_LO..=T_HI).contains(&t)) {
+        let (v, d) = ln_f32_slope(t);
+        return (v, d, f64::NAN);
+    }
+    let tab = table();
+    let p = (((t - T_LO) / PANEL) as usize).min(PANELS - 1);
+    let a = T_LO + p as f64 * PANEL;
+    let x = 2.0 * (t - a) / PANEL - 1.0;
+    let c = &tab.coef[p];
+    let (mut b1, mut b2, mut d1, mut d2, mut e1, mut e2) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    for &ck in c[1..].iter().rev() {
+        let b0 = 2.0 * x * b1 - b2 + ck;
+        let d0 = 2.0 * b1 + 2.0 * x * d1 - d2;
+        let e0 = 4.0 * d1 + 2.0 * x * e1 - e2;
+        b2 = b1;
+        b1 = b0;
+        d2 = d1;
+        d1 = d0;
+        e2 = e1;
+        e1 = e0;
+    }
+    let (g, dg) = (x * b1 - b2 + 0.5 * c[0], (b1 + x * d1 - d2) * 2.0 / PANEL);
+    let ddg = (2.0 * d1 + x * e1 - e2) * (2.0 / PANEL) * (2.0 / PANEL);
+    (g - t * t / 2.0 - HALF_LN_2PI, dg - t, ddg - 1.0)
+}
+
 /// ln F_{3/2}(t), eq. 16, for every finite t; −∞ for t = +∞.
 pub fn ln_f32(t: f64) -> f64 {
     ln_f32_slope(t).0
@@ -303,6 +335,18 @@ mod tests {
         let (lnf, d) = ln_f32_slope(0.0);
         // A Chebyshev interpolant's derivative is ~N² less accurate than its values: 1e-12.
         assert!((d * lnf.exp() / (-1.5 * f_half_0) - 1.0).abs() < 1e-12, "{} vs {}", d * lnf.exp(), -1.5 * f_half_0);
+    }
+
+    #[test]
+    fn second_derivative_matches_differences_and_agrees_with_slope() {
+        for t in [-9.9, -3.0, -0.2, 0.0, 0.7, 2.49, 2.5, 5.5, 11.9] {
+            let (v, d, dd) = ln_f32_slope2(t);
+            assert_eq!((v, d), ln_f32_slope(t), "t={t}");
+            let e = 1e-4;
+            let fd = (ln_f32_slope(t + e).1 - ln_f32_slope(t - e).1) / (2.0 * e);
+            assert!((dd - fd).abs() < 1e-6 * (1.0 + fd.abs()), "t={t}: {dd} vs {fd}");
+        }
+        assert!(ln_f32_slope2(12.5).2.is_nan() && ln_f32_slope2(-10.5).2.is_nan() && ln_f32_slope2(f64::NAN).2.is_nan());
     }
 
     #[test]

@@ -3,13 +3,18 @@
 
 use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
-use crate::mixed::{solve_starved, FilmGroups, LoadSharing};
+use crate::mixed::{solve_starved, solve_starved_with, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
 use crate::params::{Lubricant, ParamError, Params};
 use crate::solve_start::StartTable;
 use crate::viscosity::{limiting_shear_stress, ln_roelands_from};
 use serde::Serialize;
 use std::f64::consts::PI;
 use thiserror::Error;
+
+/// How close (in the logit) a caller's start must be to the start table's for the solve to
+/// begin from it ([`Joint::evaluate_from`]): half the step the solve ends in one evaluation
+/// after ([`THIRD_ORDER_ACCEPT`]).
+pub const START_AGREEMENT: f64 = 0.5 * THIRD_ORDER_ACCEPT;
 
 /// Share of the load below which a carrier counts as absent when naming the regime.
 pub const REGIME_SHARE: f64 = 0.01;
@@ -255,21 +260,30 @@ impl Joint {
             starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
             start: StartTable::empty(),
         };
-        // The deterministic start of a cold solve, from the same (starved or flooded) solve.
-        joint.start = StartTable::build(joint.capacity, |ln_p, ln_u, warm| {
-            let asp = joint.asp_unit.at_load_ratio(ln_p);
-            let film = joint.film_unit.at_ratio(ln_p, ln_u);
-            let ls = solve_starved(Some(&film), &asp, &joint.params.surface, warm, joint.starved);
-            crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
-        });
+        joint.start = StartTable::new(joint.capacity);
         Ok(joint)
+    }
+
+    /// A node of the start table: the root at (ln P_T, ln u) from `warm`, by the same (starved
+    /// or flooded) solve, with its sensitivities.
+    fn start_node(&self, ln_p: f64, ln_u: f64, warm: Option<f64>) -> crate::solve_start::Node {
+        let asp = self.asp_unit.at_load_ratio(ln_p);
+        let film = self.film_unit.at_ratio(ln_p, ln_u);
+        let ls = solve_starved(Some(&film), &asp, &self.params.surface, warm, self.starved);
+        crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
+    }
+
+    /// The start table's value at (ln P_T, ln u) (its rows there solved first if not yet).
+    #[inline]
+    fn table_start(&self, ln_p: f64, ln_u: f64) -> f64 {
+        self.start.guess(ln_p, ln_u, |a, b, w| self.start_node(a, b, w))
     }
 
     /// Where a solve at (`load`, `omega`) starts without a warm start: a function of the
     /// operating point alone ([`crate::solve_start`]); NaN at rest.
     pub fn cold_start(&self, load: f64, omega: f64) -> f64 {
         let u = omega.abs() * self.params.geometry.pin_radius;
-        if u > 0.0 { self.start.guess(load.abs().ln(), u.ln()) } else { f64::NAN }
+        if u > 0.0 { self.table_start(load.abs().ln(), u.ln()) } else { f64::NAN }
     }
 
     /// The parameter set the joint was built with.
@@ -392,9 +406,10 @@ impl Joint {
     }
 
     /// As [`Joint::evaluate`], starting the solve from `guess` (the `logit` of a nearby
-    /// point); the answer is the same to the solver tolerance, only cheaper. Without a guess
-    /// the solve starts from [`Joint::cold_start`], so the answer depends on (`load`,
-    /// `omega`) and the parameters alone.
+    /// point) when it agrees with [`Joint::cold_start`] to [`START_AGREEMENT`], else from
+    /// [`Joint::cold_start`] (a guess further off is most likely the worse start); the answer
+    /// is the same to the solver tolerance. Without a guess the solve starts from
+    /// [`Joint::cold_start`], so the answer depends on (`load`, `omega`) and the parameters alone.
     pub fn evaluate_from(&self, load: f64, omega: f64, guess: Option<f64>) -> Result<OperatingPoint, ModelError> {
         let load = load.abs();
         if !(load.is_finite() && load > 0.0) {
@@ -408,19 +423,29 @@ impl Joint {
         Ok(op)
     }
 
+    /// Where a moving solve starts: the start table's value at (ln P_T, ln u), or the caller's
+    /// `guess` when it agrees with the table's to [`START_AGREEMENT`] (a guess further off is
+    /// most likely worse than the table, whose error is ~1e-6 in the mixed regime: a
+    /// neighbour's root a few per cent away in speed is ~1e-2 off and would cost Newton steps),
+    /// or when the table has no value there.
+    #[inline]
+    fn start_from(&self, guess: Option<f64>, ln_load: f64, ln_u: f64) -> f64 {
+        let table = self.table_start(ln_load, ln_u);
+        match guess {
+            Some(g) if g.is_finite() && (table.is_nan() || (g - table).abs() <= START_AGREEMENT) => g,
+            _ => table,
+        }
+    }
+
     /// The load-sharing solve and μ (eqs. 3, 8, 10) at the load of `lt` and speed u = |ω|R:
     /// (ln u, the solve, μ_fluid, μ_asperity). `omega` must be finite.
-    fn solve_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> (f64, LoadSharing, f64, f64) {
+    fn solve_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>, sensitivities: bool) -> (f64, LoadSharing, f64, f64) {
         let p = &self.params;
         let u = omega.abs() * p.geometry.pin_radius;
         let ln_u = u.ln();
         let film = (u > 0.0).then(|| self.film_unit.at_ratio(lt.ln_load, ln_u));
-        let guess = match guess {
-            Some(g) => Some(g),
-            None if u > 0.0 => Some(self.start.guess(lt.ln_load, ln_u)),
-            None => None,
-        };
-        let ls = solve_starved(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved);
+        let guess = if u > 0.0 { Some(self.start_from(guess, lt.ln_load, ln_u)) } else { guess };
+        let ls = solve_starved_with(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved, sensitivities);
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (MODEL_NOTES), whatever η.
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
@@ -445,7 +470,7 @@ impl Joint {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
         }
-        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess);
+        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess, true);
         let mu = mu_fluid + mu_asperity;
         let torque = mu * self.params.geometry.pin_radius * lt.load;
         // The checks of `check_finite`, in its order, on the same numbers (h_min and λ_min are
@@ -483,7 +508,7 @@ impl Joint {
         let g = &self.params.geometry;
         let (load, hz) = (lt.load, lt.hertz);
         let u = omega.abs() * g.pin_radius;
-        let (ln_u, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess);
+        let (ln_u, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess, false);
         let mu = mu_fluid + mu_asperity;
         let op = OperatingPoint {
             load,

@@ -12,18 +12,20 @@
 //! (x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), both without cancellation, so x1 + x2 = 1 to
 //! rounding), and working in logarithms keeps F_{3/2} finite in full film.
 //!
-//! Convergence: the root is bracketed by stepping outward from the initial guess until
-//! r changes sign, then Brent's method keeps the bracket and stops when it is narrower
-//! than `Y_TOL(y) = 1e-13 + 4ε|y|`. Since ∂ln x1/∂y = x2 ≤ 1, ∂ln x2/∂y = −x1 and
+//! Convergence: Newton's method safeguarded by a bracket ([`crate::newton`]) stops when a
+//! step is below `y_tol(y) = 1e-13 + 4ε|y|`. Its first evaluation also gives r″, and when that
+//! first Newton step is at most [`THIRD_ORDER_ACCEPT`] (a start from the start table,
+//! [`crate::solve_start`], in the boundary and mixed regimes) Halley's step ends the solve
+//! after that one evaluation with an error below 1e-14. Since ∂ln x1/∂y = x2 ≤ 1, ∂ln x2/∂y = −x1 and
 //! |∂ln h_c/∂y| ≤ 1/2 + 3/4·... is O(1), the shares and h_c are then exact to ~1e-12
 //! relative, and μ (a smooth function of them) likewise; `tests/solver.rs` checks
 //! 1e-10 against a bisection to the last bit.
 
 use crate::asperity::{AsperityGroups, A2, A3};
-use crate::film::{ln_scaled_moes, ln_scaled_moes_grad};
-use crate::gw::{inverse_ln_f32, ln_f32_slope};
 use crate::fast_math::exp;
-use crate::newton::newton_increasing;
+use crate::film::{ln_moes_directional, ln_moes_grad, ln_moes_grad_directional, ln_scaled_moes};
+use crate::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
+use crate::newton::{newton_increasing_seeded, Seed};
 use crate::params::Surface;
 
 /// The speed-dependent film groups of eq. 12, in logarithms.
@@ -78,10 +80,11 @@ pub struct LoadSharing {
     /// Residual evaluations used.
     pub evaluations: u32,
     /// ∂y/∂ln P_T of the root at fixed speed (implicit function theorem at the last
-    /// evaluated point; 0 at rest): with [`Self::dlogit_dln_speed`] a first-order predictor
-    /// of the root at a nearby operating point, for starting the next solve.
+    /// evaluated point, within a Newton step below tolerance of the root; 0 at rest; NaN when
+    /// not asked for, [`solve_starved_with`]): with [`Self::dlogit_dln_speed`] a first-order
+    /// predictor of the root at a nearby operating point, for starting the next solve.
     pub dlogit_dln_load: f64,
-    /// ∂y/∂ln u of the root at fixed load (0 at rest).
+    /// ∂y/∂ln u of the root at fixed load (0 at rest; NaN when not asked for).
     pub dlogit_dln_speed: f64,
 }
 
@@ -116,6 +119,15 @@ pub struct StarvedInlet {
 /// when r(−∞) ≥ 0 the layer is too thin to lift the surfaces off the asperities' rest
 /// separation and the fluid carries nothing (the zero-speed solution, 1/γ1 = 0).
 pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>) -> LoadSharing {
+    solve_starved_with(film, asp, s, guess, starved, true)
+}
+
+/// [`solve_starved`], with the root's sensitivities ([`LoadSharing::dlogit_dln_load`],
+/// [`LoadSharing::dlogit_dln_speed`]) only when `sensitivities` is true (NaN otherwise,
+/// unless at rest, where they are 0). When the solve ends with its third-order step more than
+/// 1e-7 from its start they cost one more residual evaluation, at the root. The root, the
+/// shares and h_c are the same either way, bit for bit.
+pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>, sensitivities: bool) -> LoadSharing {
     let rest = |asp: &AsperityGroups| {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
         let h = s.summit_mean_plane_offset + t * s.summit_height_std;
@@ -144,40 +156,48 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
     // r(y) and r'(y): every factor's derivative is analytic (film::ln_moes_grad,
     // gw::ln_f32_slope, AsperityGroups::required_ln_f32_grad). The film at the last
     // evaluated point is kept, so the final h_c costs no further film evaluation, and so are
-    // r's partial derivatives in ln P_T and ln u at fixed y (for the caller's next start):
-    // ln M' = 1, ln L' = 0, ln R'U^½' = 0, ln C' = −½, ln K' = a2 − a3 in ln P_T, and
-    // ln M' = −½, ln L' = ¼, ln R'U^½' = ½ in ln u (FilmGroups::at_ratio, AsperityGroups::at_load_ratio).
-    let mut last = (f64::NAN, f64::NAN, f64::NAN, f64::NAN, f64::NAN); // (y, ln h_c, d ln h_c/dy, r_P/r_y, r_u/r_y)
-    let residual = |y: f64| {
-        let sh = Shares::new(y);
-        let (ln_hs, g_m, g_l) = ln_scaled_moes_grad(film.ln_m, film.ln_l, sh.ln_x1);
-        let mut ln_h = film.ln_scale + ln_hs;
-        let mut dln_h = sh.x2 * (0.5 * g_m + 0.75 * g_l - 0.5); // d ln x1/dy = x2
-        let mut w = 1.0;
-        if let Some(st) = starved {
-            let (l, ws) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
-            ln_h = l;
-            dln_h *= ws;
-            w = ws;
-        }
-        let h = exp(ln_h);
-        let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
-        let (ln_f, dln_f) = ln_f32_slope(t);
-        let (req, dreq, sigmoid) = asp.required_ln_f32_grad(sh.ln_x2); // d ln x2/dy = −x1
-        let k = dln_f * h / s.summit_height_std; // ∂ ln F/∂ ln h_c
-        let dr = k * dln_h + dreq * sh.x1;
-        let dr_load = k * w * g_m - (sigmoid * (A2 - A3) + 0.5);
-        let dr_speed = k * w * (0.5 - 0.5 * g_m + 0.25 * g_l);
-        last = (y, ln_h, dln_h, dr_load / dr, dr_speed / dr);
-        compress(ln_f - req, dr)
-    };
+    // the parts of r's partial derivatives in ln P_T and ln u at fixed y (for the caller's
+    // next start; see `Point::sensitivities`).
     let y0 = guess.filter(|g| g.is_finite()).unwrap_or(0.0);
-    let (y, evaluations) = newton_increasing(residual, y0, y_tol);
-    // The last step is below tol (or zero), so first order is exact to O(tol²).
-    let ln_h = last.1 + last.2 * (y - last.0);
+    // The first evaluation also gives r″ (flooded inlet only). From a start whose Newton step
+    // s = −r/r′ is at most THIRD_ORDER_ACCEPT, Halley's step y0 + s/(1 + K s) (K = r″/2r′)
+    // leaves an error C·s³ with C = K² − r‴/6r′, and the solve ends after one evaluation.
+    // Otherwise Newton's iteration continues from y0, its first step Halley's.
+    let p0 = Point::at(film, asp, s, starved, y0, starved.is_none(), sensitivities);
+    let step = -p0.r / p0.dr;
+    let k = p0.d2r / (2.0 * p0.dr);
+    let (y, ln_h, last, mut evaluations) = if p0.raw_r >= COMPRESS_FROM && step.abs() <= THIRD_ORDER_ACCEPT && (k * step).abs() <= 0.1 {
+        let y = y0 + step / (1.0 + k * step);
+        let d = y - y0;
+        // ln h_c to second order in the move: the error is O(d³) ≤ 1e-14.
+        (y, p0.ln_h + d * (p0.dln_h + 0.5 * d * p0.d2ln_h), p0, 1)
+    } else {
+        let mut last = p0;
+        let residual = |y: f64| {
+            let p = Point::at(film, asp, s, starved, y, false, true);
+            last = p;
+            (p.r, p.dr)
+        };
+        // The first step is Halley's where r″ is known and the compression is the identity.
+        let curvature = if p0.raw_r >= COMPRESS_FROM { k } else { f64::NAN };
+        let seed = Seed { value: p0.r, slope: p0.dr, curvature };
+        let (y, evaluations) = newton_increasing_seeded(residual, y0, Some(seed), y_tol);
+        // The last step is below tol (or zero), so first order is exact to O(tol²).
+        (y, last.ln_h + last.dln_h * (y - last.y), last, evaluations)
+    };
+    // The sensitivities at the root: after the one-evaluation solve its evaluation may be up
+    // to THIRD_ORDER_ACCEPT away, so beyond SENSITIVITY_REUSE they are evaluated once more at
+    // the root (within it, their relative error is of that order; after Newton's iteration
+    // the last evaluation is within its last step, below 5e-7, as before).
+    let (dlogit_dln_load, dlogit_dln_speed) = if !sensitivities {
+        (f64::NAN, f64::NAN)
+    } else if last.g_m.is_nan() || (evaluations == 1 && (y - last.y).abs() > SENSITIVITY_REUSE) {
+        evaluations += 1;
+        Point::at(film, asp, s, starved, y, false, true).sensitivities()
+    } else {
+        last.sensitivities()
+    };
     let sh = Shares::new(y);
-    // Implicit function theorem: dy/dθ = −(∂r/∂θ)/(∂r/∂y) (the compression g(r) scales both alike).
-    let finite_or_zero = |v: f64| if v.is_finite() { -v } else { 0.0 };
     LoadSharing {
         fluid_fraction: sh.x1,
         asperity_fraction: sh.x2,
@@ -185,8 +205,113 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
         film_thickness: exp(ln_h),
         ln_film_thickness: ln_h,
         evaluations,
-        dlogit_dln_load: finite_or_zero(last.3),
-        dlogit_dln_speed: finite_or_zero(last.4),
+        dlogit_dln_load,
+        dlogit_dln_speed,
+    }
+}
+
+/// Largest first Newton step |s| = |r/r′| after which the solve ends with Halley's step (third
+/// order): the error left is C·s³ with C = K² − r‴/(6r′), K = r″/(2r′). |C| ≤ 0.32 over the
+/// boundary and mixed regimes of the paper's joint (finite differences of r at the roots of
+/// 8 loads from 1 N to 1 MN × 400 speeds from 1e-6 to 100 rad/s, y < 20), so the error is
+/// below 8e-15 with a margin of 3 on C: 10× below the absolute tolerance of [`y_tol`].
+/// `tests/solver.rs` checks such roots against Newton's and against sign changes of r, and
+/// `tests/properties.rs` against Newton's over random parameter sets.
+pub const THIRD_ORDER_ACCEPT: f64 = 2e-5;
+
+/// How far (in y) from the root the last evaluation may be for its sensitivities to be the
+/// root's (their relative error is of this order; the test asks 1e-6).
+const SENSITIVITY_REUSE: f64 = 1e-7;
+
+/// The residual (compressed) and what the solve keeps of one evaluation at y.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    y: f64,
+    /// g(r) and g′(r)·r′ (the compression g of [`compress`]).
+    r: f64,
+    dr: f64,
+    /// r itself, and r′ and r″ uncompressed (r″ NaN unless asked for and available).
+    raw_r: f64,
+    raw_dr: f64,
+    d2r: f64,
+    /// ln h_c and its first two derivatives in y (the second NaN unless asked for).
+    ln_h: f64,
+    dln_h: f64,
+    d2ln_h: f64,
+    /// ∂ln F/∂ln h_c times the starvation weight, ∂ln H/∂ln M, ∂ln H/∂ln L, and the sigmoid
+    /// of eq. 18's bracket: the parts of r's partial derivatives in ln P_T and ln u at fixed y.
+    kw: f64,
+    g_m: f64,
+    g_l: f64,
+    sigmoid: f64,
+}
+
+impl Point {
+    /// r and its derivatives at y; with `second`, r″ and d²ln h_c/dy² too (flooded inlet, t
+    /// inside the Chebyshev interval of F_{3/2}; NaN otherwise), and with it the parts of the
+    /// sensitivities only if `gradient` (NaN otherwise).
+    #[inline(always)]
+    fn at(film: &FilmGroups, asp: &AsperityGroups, s: &Surface, starved: Option<StarvedInlet>, y: f64, second: bool, gradient: bool) -> Self {
+        let sh = Shares::new(y);
+        // Eq. 13 by eq. 12's substitution (film::ln_scaled_moes_grad): along y, ln x1 moves
+        // by x2, and (ln M, ln L) by (1/2, 3/4) per unit ln x1.
+        let (ln_m, ln_l) = (film.ln_m + 0.5 * sh.ln_x1, film.ln_l + 0.75 * sh.ln_x1);
+        // With `second`, only the derivatives along that direction (the gradient, for the
+        // sensitivities, is then NaN).
+        let (ln_hm, g_m, g_l, q1, d2m) = if second && gradient {
+            let (v, g_m, g_l, d1, d2) = ln_moes_grad_directional(ln_m, ln_l, 0.5, 0.75);
+            (v, g_m, g_l, d1 - 0.5, d2)
+        } else if second {
+            let (v, d1, d2) = ln_moes_directional(ln_m, ln_l, 0.5, 0.75);
+            (v, f64::NAN, f64::NAN, d1 - 0.5, d2)
+        } else {
+            let (a, _, b, c) = ln_moes_grad(ln_m, ln_l);
+            (a, b, c, 0.5 * b + 0.75 * c - 0.5, f64::NAN)
+        }; // q1 = d ln h_c/d ln x1
+        let mut ln_h = film.ln_scale + (ln_hm - 0.5 * sh.ln_x1);
+        let mut dln_h = sh.x2 * q1; // d ln x1/dy = x2
+        let mut d2ln_h = sh.x2 * sh.x2 * d2m - sh.x1 * sh.x2 * q1; // d² ln x1/dy² = −x1·x2
+        let mut w = 1.0;
+        if let Some(st) = starved {
+            let (l, ws) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
+            ln_h = l;
+            dln_h *= ws;
+            w = ws;
+            d2ln_h = f64::NAN;
+        }
+        let h = exp(ln_h);
+        let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
+        let (ln_f, dln_f, d2ln_f) = if second {
+            ln_f32_slope2(t)
+        } else {
+            let (a, b) = ln_f32_slope(t);
+            (a, b, f64::NAN)
+        };
+        let (req, dreq, sigmoid) = asp.required_ln_f32_grad(sh.ln_x2); // d ln x2/dy = −x1
+        let k = dln_f * h / s.summit_height_std; // ∂ ln F/∂ ln h_c
+        let raw_dr = k * dln_h + dreq * sh.x1;
+        let raw_r = ln_f - req;
+        let d2r = if second {
+            // t′ = h·ln h′/σ_s, t″ = h·(ln h′² + ln h″)/σ_s; d² ln x2/dy² = −x1·x2.
+            let t1 = h * dln_h / s.summit_height_std;
+            let t2 = h * (dln_h * dln_h + d2ln_h) / s.summit_height_std;
+            d2ln_f * t1 * t1 + dln_f * t2 - AsperityGroups::required_ln_f32_curvature(sigmoid) * sh.x1 * sh.x1 + dreq * sh.x1 * sh.x2
+        } else {
+            f64::NAN
+        };
+        let (r, dr) = compress(raw_r, raw_dr);
+        Self { y, r, dr, raw_r, raw_dr, d2r, ln_h, dln_h, d2ln_h, kw: k * w, g_m, g_l, sigmoid }
+    }
+
+    /// dy/dln P_T and dy/dln u by the implicit function theorem at this point,
+    /// −(∂r/∂θ)/(∂r/∂y) (0 where not finite; the compression scales both alike): ln M′ = 1,
+    /// ln L′ = 0, ln R′U^½′ = 0, ln C′ = −½, ln K′ = a2 − a3 in ln P_T, and ln M′ = −½,
+    /// ln L′ = ¼, ln R′U^½′ = ½ in ln u (FilmGroups::at_ratio, AsperityGroups::at_load_ratio).
+    fn sensitivities(&self) -> (f64, f64) {
+        let dr_load = self.kw * self.g_m - (self.sigmoid * (A2 - A3) + 0.5);
+        let dr_speed = self.kw * (0.5 - 0.5 * self.g_m + 0.25 * self.g_l);
+        let finite_or_zero = |v: f64| if v.is_finite() { -v } else { 0.0 };
+        (finite_or_zero(dr_load / self.raw_dr), finite_or_zero(dr_speed / self.raw_dr))
     }
 }
 
@@ -213,16 +338,21 @@ impl Shares {
     }
 }
 
-/// g(r) = r for r ≥ 0, −ln(1 − r) for r < 0: monotone, C¹ at the root, same root.
-/// Towards zero speed r falls like −exp(e^{−1.2 y}) (ln F ≈ −t²/2 with t ∝ x1^{−0.6});
-/// g makes that side nearly linear in y, so Newton does not crawl.
+/// Where the compression of [`compress`] starts.
+const COMPRESS_FROM: f64 = -1.0;
+
+/// g(r) = r for r ≥ −1, −1 − ln(−r) for r < −1: monotone, C¹, the same root, and the
+/// identity near it (so the third-order first step sees r itself). Towards zero speed r falls
+/// like −exp(e^{−1.2 y}) (ln F ≈ −t²/2 with t ∝ x1^{−0.6}); g makes that side nearly linear
+/// in y, so Newton does not crawl.
 fn compress(r: f64, dr: f64) -> (f64, f64) {
-    if r >= 0.0 { (r, dr) } else { (-(-r).ln_1p(), dr / (1.0 - r)) }
+    if r >= COMPRESS_FROM { (r, dr) } else { (COMPRESS_FROM - (-r).ln(), -dr / r) }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::newton::newton_increasing;
 
     #[test]
     fn shares_are_exact_complements() {
@@ -246,6 +376,29 @@ mod tests {
         let (r, n) = newton_increasing(f, 2.0, |_| 1e-14);
         assert!(f(r).0.abs() < 1e-12, "{r} after {n}");
         assert!(n < 60, "{n} evaluations");
+    }
+
+    #[test]
+    fn a_seeded_halley_step_converges_to_tolerance_in_fewer_evaluations() {
+        // f(x) = e^x − 2 + x (increasing, curved): from 0.3 off, the first step Halley's.
+        let root = {
+            let (r, _) = newton_increasing(|x: f64| (x.exp() - 2.0 + x, x.exp() + 1.0), 0.0, |_| 1e-15);
+            r
+        };
+        let f = |x: f64| (x.exp() - 2.0 + x, x.exp() + 1.0);
+        for d in [3e-1, 3e-2, -1e-2, 1e-3, -1e-4] {
+            let x0 = root + d;
+            let (r, dr) = f(x0);
+            let seed = crate::newton::Seed { value: r, slope: dr, curvature: x0.exp() / (2.0 * dr) };
+            let (with, n_with) = newton_increasing_seeded(f, x0, Some(seed), y_tol);
+            let (without, n_without) = newton_increasing(f, x0, y_tol);
+            assert!((with - root).abs() < 1e-14 && (without - root).abs() < 1e-14, "{d}: {with} {without} vs {root}");
+            assert!(n_with <= n_without, "{d}: {n_with} vs {n_without} evaluations");
+            // Without a curvature the seeded iteration is newton_increasing's, bit for bit.
+            let plain = crate::newton::Seed { curvature: f64::NAN, ..seed };
+            let (same, n_same) = newton_increasing_seeded(f, x0, Some(plain), y_tol);
+            assert_eq!((same.to_bits(), n_same), (without.to_bits(), n_without));
+        }
     }
 
     #[test]

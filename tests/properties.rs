@@ -78,3 +78,29 @@ proptest! {
         prop_assert!(b.film_thickness >= a.film_thickness * (1.0 - 1e-12));
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    /// The cold evaluation (from the start table, often one residual evaluation ended by
+    /// Halley's step) gives the root of a Newton iteration started far away, for any valid
+    /// parameter set: to 1e-12 + 1e-13·|y| in the logit, and the asperity share accordingly.
+    #[test]
+    fn cold_root_is_newtons_root(p in params(), load in log_uniform(1.0, 1e6), omega in log_uniform(1e-9, 1e4)) {
+        use pinjoint::asperity::AsperityGroups;
+        use pinjoint::mixed::{solve_starved_with, FilmGroups};
+        let j = Joint::new(&p).unwrap();
+        prop_assume!(load < 0.5 * j.capacity() && p.starvation.inlet_layer_inverse == 0.0);
+        let op = j.evaluate(load, omega).unwrap();
+        let (r, e, b, l) = (j.reduced_radius(), j.effective_modulus(), p.geometry.bush_length, j.lubricant());
+        let film = FilmGroups::new(omega * p.geometry.pin_radius, r, e, b, load, l.viscosity, l.pressure_viscosity_coefficient);
+        let asp = AsperityGroups::new(&p.surface, load, r, e, b);
+        // (0.5 away, and beyond the tolerance 4ε|y| in deep full film, where |y| reaches 1e12.)
+        let newton = solve_starved_with(Some(&film), &asp, &p.surface, Some(op.logit + 0.5 + 1e-6 * op.logit.abs()), None, false);
+        prop_assert!(newton.evaluations > 1);
+        prop_assert!((op.logit - newton.logit).abs() <= 1e-12 + 1e-13 * op.logit.abs(), "{} vs {} (Newton)", op.logit, newton.logit);
+        // ∂ln x2/∂y = −x1: the shares move relatively by at most the logit's difference.
+        let dy = 1e-12 + 1e-13 * op.logit.abs();
+        prop_assert!((op.asperity_load_fraction - newton.asperity_fraction).abs() <= (2.0 * dy + 1e-14) * newton.asperity_fraction);
+    }
+}

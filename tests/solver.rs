@@ -368,3 +368,73 @@ fn a_start_within_rounding_of_the_root_stops_at_once() {
         assert!((f.logit - root).abs() < 1e-12, "{d:e}");
     }
 }
+
+#[test]
+fn the_one_evaluation_solve_agrees_with_newton_to_1e_13() {
+    // A cold solve that ends with the third-order step after one residual evaluation gives the
+    // root of a Newton iteration from a far start (0.5 away: no third-order step) to 1e-13 in
+    // the logit, and h_c to 1e-12; and in the boundary and mixed regimes, on the start table's
+    // speed range, it is the common case (the table's start within THIRD_ORDER_ACCEPT of the root).
+    use pinjoint::mixed::{solve_starved_with, THIRD_ORDER_ACCEPT};
+    let j = joint();
+    let p = j.params();
+    let g = &p.geometry;
+    let (mut one, mut total) = (0, 0);
+    for load in [1.0, 300.0, 5e3, 20e3, 60e3, 1e6] {
+        let asp = AsperityGroups::new(&p.surface, load, j.reduced_radius(), j.effective_modulus(), g.bush_length);
+        for omega in speeds(400) {
+            let u = omega * g.pin_radius;
+            let film = FilmGroups::new(u, j.reduced_radius(), j.effective_modulus(), g.bush_length, load, p.lubricant.viscosity, p.lubricant.pressure_viscosity_coefficient);
+            let start = j.cold_start(load, omega);
+            let cold = solve_starved_with(Some(&film), &asp, &p.surface, Some(start), None, false);
+            let far = solve_starved_with(Some(&film), &asp, &p.surface, Some(start + 0.5), None, false);
+            assert!(far.evaluations > 1);
+            let tol = 1e-13 + 8.0 * f64::EPSILON * cold.logit.abs();
+            assert!((cold.logit - far.logit).abs() <= tol, "P={load} ω={omega}: {} vs {} ({} evaluations)", cold.logit, far.logit, cold.evaluations);
+            assert!((cold.film_thickness / far.film_thickness - 1.0).abs() < 1e-12, "P={load} ω={omega}: h_c");
+            let op = j.evaluate(load, omega).unwrap();
+            // (The joint scales its groups from 1 N and 1 m/s: the same solve to rounding.)
+            assert!((op.logit - cold.logit).abs() <= 1e-12 + 1e-13 * cold.logit.abs(), "P={load} ω={omega}: evaluate {} vs {}", op.logit, cold.logit);
+            if cold.asperity_fraction > 0.01 && u >= pinjoint::solve_start::SPEED_RANGE.0 {
+                total += 1;
+                if cold.evaluations == 1 {
+                    one += 1;
+                    assert!((start - cold.logit).abs() <= 1.1 * THIRD_ORDER_ACCEPT);
+                }
+            }
+        }
+    }
+    // (The others are in the last part of the transition to full film, where the table's
+    // start is 1e-4 to 1e-2 off.)
+    assert!(one * 100 >= total * 85, "{one} of {total} boundary/mixed solves took one evaluation");
+}
+
+#[test]
+fn a_cold_evaluation_is_the_same_whatever_was_evaluated_before() {
+    // The start table's rows are solved on first use; each is a function of its load alone,
+    // so a cold evaluation is bit-identical whichever points (and rows) came before, in
+    // whichever order, on whichever thread, and in a clone.
+    let points = [(20e3, 6.0), (5e3, 0.05), (60e3, 30.0), (20e3, -6.0), (1.0, 1e-3), (7e5, 2.0), (20e3, 6.3)];
+    let fresh: Vec<_> = points.iter().map(|&(p, w)| joint().evaluate(p, w).unwrap()).collect();
+    let j = joint();
+    let mut order: Vec<usize> = (0..points.len()).rev().collect();
+    order.rotate_left(2);
+    for &k in &order {
+        let (p, w) = points[k];
+        assert_eq!(j.evaluate(p, w).unwrap(), fresh[k], "after others: P={p} ω={w}");
+    }
+    let j2 = joint();
+    std::thread::scope(|s| {
+        for (k, &(p, w)) in points.iter().enumerate() {
+            let (j2, fresh) = (&j2, &fresh);
+            s.spawn(move || assert_eq!(j2.evaluate(p, w).unwrap(), fresh[k], "threaded: P={p} ω={w}"));
+        }
+    });
+    let c = j.clone();
+    for (k, &(p, w)) in points.iter().enumerate() {
+        assert_eq!(c.evaluate(p, w).unwrap(), fresh[k], "clone: P={p} ω={w}");
+        let warm = c.evaluate_from(p, w, Some(fresh[k].logit)).unwrap().friction_coefficient;
+        assert!((warm / fresh[k].friction_coefficient - 1.0).abs() < 1e-13, "started at the root: P={p} ω={w}");
+    }
+    assert_eq!(c, joint(), "equal joints whatever rows each has solved");
+}
