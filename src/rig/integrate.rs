@@ -25,7 +25,11 @@
 use super::dynamics::{Dynamics, State, TIME};
 use super::params::{Method, RigParams};
 use super::RigError;
+use ode_solvers::continuous_output_model::ContinuousOutputModel;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
+
+/// The continuous extension of a segment's accepted steps ([`Method::Dopri5Dense`]).
+pub(crate) type Dense = ContinuousOutputModel<f64, State>;
 
 /// The accepted steps of one segment.
 #[derive(Debug, Clone)]
@@ -36,6 +40,8 @@ pub(crate) struct Run {
     pub stopped: bool,
     /// Step size to start the next segment with.
     pub h_next: f64,
+    /// [`Method::Dopri5Dense`]: the continuous extension over every accepted step.
+    pub dense: Option<Dense>,
 }
 
 /// Adapter giving `ode_solvers` the right-hand side and the stop test.
@@ -102,6 +108,7 @@ pub(crate) fn segment(
     let mut y0 = y0;
     y0[TIME] = t0;
     let mut hit = false;
+    let mut dense = None;
     let nodes: Vec<(f64, State)> = match rig.method {
         Method::Rk4 => {
             // `as` saturates; span ≤ segment_length and rk4_step ≥ its minimum keep n ≤ 1e9.
@@ -122,14 +129,15 @@ pub(crate) fn segment(
             }
             nodes
         }
-        Method::Dopri5 | Method::Dop853 => {
+        Method::Dopri5 | Method::Dop853 | Method::Dopri5Dense => {
             let h = h0.min(span).max(0.0);
             let mut full = false;
             let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full };
-            let (xs, ys) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
+            let (xs, ys, model) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
                 Err(e) => e,
                 Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
             })?;
+            dense = model;
             let mut nodes: Vec<(f64, State)> = xs.into_iter().zip(ys).collect();
             if !hit && !full {
                 // The last step was aimed at t1; remove rounding in its time.
@@ -150,10 +158,14 @@ pub(crate) fn segment(
         2 => nodes[1].0 - nodes[0].0,
         _ => (nodes[n - 1].0 - nodes[n - 2].0).max(nodes[n - 2].0 - nodes[n - 3].0),
     };
-    Ok(Run { nodes, stopped: hit, h_next })
+    Ok(Run { nodes, stopped: hit, h_next, dense })
 }
 
-/// Run Dopri5 or Dop853 in sparse mode; returns the accepted (t, y).
+/// Accepted (t, y) of one adaptive run, with the continuous extension for [`Method::Dopri5Dense`].
+type Accepted = (Vec<f64>, Vec<State>, Option<Dense>);
+
+/// Run Dopri5 or Dop853 in sparse mode (Dopri5Dense: with its continuous output model);
+/// returns the accepted (t, y), the start included.
 fn adaptive<S: System<f64, State>>(
     rig: &RigParams,
     f: S,
@@ -162,7 +174,7 @@ fn adaptive<S: System<f64, State>>(
     t1: f64,
     h: f64,
     h_max: f64,
-) -> Result<(Vec<f64>, Vec<State>), ode_solvers::dop_shared::IntegrationError> {
+) -> Result<Accepted, ode_solvers::dop_shared::IntegrationError> {
     // n_stiff = u32::MAX disables the stiffness abort: the regularised formulation is stiff by
     // design and must be integrated anyway (with small steps).
     match rig.method {
@@ -171,14 +183,31 @@ fn adaptive<S: System<f64, State>>(
                 f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Sparse,
             );
             s.integrate()?;
-            Ok((s.x_out().clone(), s.y_out().clone()))
+            Ok((s.x_out().clone(), s.y_out().clone(), None))
+        }
+        Method::Dopri5Dense => {
+            // The same method and controller as Dopri5 (the same accepted steps); the continuous
+            // mode keeps every step's interpolation coefficients and, unlike the sparse mode,
+            // does not record the start point.
+            let mut s = Dopri5::from_param(
+                f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Continuous,
+            );
+            let mut model = Dense::new();
+            s.integrate_with_continuous_output_model(&mut model)?;
+            let mut xs = Vec::with_capacity(s.x_out().len() + 1);
+            xs.push(t0);
+            xs.extend_from_slice(s.x_out());
+            let mut ys = Vec::with_capacity(xs.len());
+            ys.push(y0);
+            ys.extend_from_slice(s.y_out());
+            Ok((xs, ys, Some(model)))
         }
         _ => {
             let mut s = Dop853::from_param(
                 f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.0, 0.333, 6.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Sparse,
             );
             s.integrate()?;
-            Ok((s.x_out().clone(), s.y_out().clone()))
+            Ok((s.x_out().clone(), s.y_out().clone(), None))
         }
     }
 }
@@ -186,6 +215,8 @@ fn adaptive<S: System<f64, State>>(
 /// The state at t1 ≥ t0 by one step of the method from (t0, y0) (an adaptive method may split
 /// it if its error test rejects the full step).
 pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f64) -> Result<State, RigError> {
+    // Dopri5Dense re-integrates (event location) exactly as Dopri5.
+    let rig = &RigParams { method: if rig.method == Method::Dopri5Dense { Method::Dopri5 } else { rig.method }, ..*rig };
     let h = t1 - t0;
     let mut y0 = y0;
     y0[TIME] = t0;
@@ -209,7 +240,7 @@ pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f6
             let never = |_: f64, _: &State| false;
             let (mut hit, mut full) = (false, false);
             let stepper = Stepper { dynamics: d, outside: &never, hit: &mut hit, accepted: 0, full: &mut full };
-            let (_, ys) = adaptive(rig, stepper, t0, y0, t1, h, h).map_err(|e| match check(d, t0, &y0) {
+            let (_, ys, _) = adaptive(rig, stepper, t0, y0, t1, h, h).map_err(|e| match check(d, t0, &y0) {
                 Err(e) => e,
                 Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
             })?;

@@ -73,6 +73,11 @@ pub enum Method {
     Dop853,
     /// Classical Runge–Kutta 4, fixed step `rk4_step`.
     Rk4,
+    /// Dormand–Prince 5(4), adaptive (`rtol`, `atol`), the same steps as `Dopri5`, with the
+    /// states between steps (samples, communication points) read from the method's 4th-order
+    /// continuous extension instead of one re-integration step each: no right-hand-side
+    /// evaluations per sample. Event times are located by re-integration as with `Dopri5`.
+    Dopri5Dense,
 }
 
 /// Every rig constant (SI units). See the module documentation for the equations and defaults.
