@@ -179,7 +179,9 @@ pub struct Stats {
     pub evaluations: u64,
     /// Full friction solves (the core's load-sharing Newton solve), including those of samples.
     pub friction_solves: u64,
-    /// Residual evaluations of those solves (their Newton iterations, with line-search trials).
+    /// Residual evaluations of the solves inside the equations of motion (their Newton
+    /// iterations with line-search trials; the samples' solves are counted in
+    /// `friction_solves` only).
     pub solve_residuals: u64,
 }
 
