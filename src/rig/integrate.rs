@@ -12,13 +12,18 @@
 //! the predicate holds — so a breakaway always starts with |T_a| above the breakaway torque and
 //! a stick never starts with the speed still in the old direction (no chattering).
 //!
+//! `Dopri5Dense` takes Dopri5's steps and keeps each step's continuous extension (order 4,
+//! `ode_solvers`' continuous output model): the trial states of event location, and the
+//! simulator's states between nodes, are read from it instead of re-integrated.
+//!
 //! RK4 takes uniform steps of at most `rk4_step`, the step shortened so the segment end is hit.
 //!
 //! # Bounded work and memory
 //! A segment keeps at most [`MAX_SEGMENT_NODES`] accepted steps: when that many are taken
 //! before t₁ (a stiff phase, a tiny `rk4_step` in a long segment) the segment simply ends at
 //! its last node and the next one starts there, so memory is bounded by what is kept
-//! (≤ 14.7 MB), never by span/step. Step attempts (accepted + rejected) of the adaptive methods
+//! (≤ 14.7 MB; `Dopri5Dense` also keeps each step's five interpolation vectors in
+//! `ode_solvers`' model, ≈ 300 B a step with their allocations: ≤ 80 MB), never by span/step. Step attempts (accepted + rejected) of the adaptive methods
 //! are bounded by [`MAX_SEGMENT_ATTEMPTS`]. The caller ([`super::sim::RigSim`]) bounds the
 //! number of segments per call, so one call does bounded work.
 
@@ -256,13 +261,16 @@ pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f6
 
 /// Locate the event in (ta, tb]: `g` is continuous, `outside` ⇔ the event has happened;
 /// `outside` is false at ta and true at tb. Returns the first trial time found with `outside`
-/// true within `tol` of the last time found with it false, and the state there.
+/// true within `tol` of the last time found with it false, and the state there. Each trial
+/// state is one re-integration step from (ta, ya), or with `dense` (the continuous extension
+/// of the step from ta to tb, [`Method::Dopri5Dense`]) read from it without evaluations.
 pub(crate) fn locate(
     rig: &RigParams,
     d: &Dynamics,
     (ta, ya): (f64, State),
     (tb, yb): (f64, State),
     event: &dyn Fn(f64, &State) -> (f64, bool),
+    dense: Option<&Dense>,
 ) -> Result<(f64, State), RigError> {
     let tol = rig.event_tolerance;
     let (mut a, mut b, mut y_b) = (ta, tb, yb);
@@ -283,7 +291,13 @@ pub(crate) fn locate(
         }
         // Never closer than tol/4 to an end: each trial shrinks the bracket by at least that.
         t = t.clamp(a + 0.25 * tol.min(0.5 * width), b - 0.25 * tol.min(0.5 * width));
-        let y = sub_step(rig, d, ta, ya, t)?;
+        let y = match dense.and_then(|m| m.evaluate(t)) {
+            Some(mut y) => {
+                y[TIME] = t;
+                y
+            }
+            None => sub_step(rig, d, ta, ya, t)?,
+        };
         let (g, out) = event(t, &y);
         if out {
             b = t;

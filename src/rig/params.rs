@@ -74,9 +74,9 @@ pub enum Method {
     /// Classical Runge–Kutta 4, fixed step `rk4_step`.
     Rk4,
     /// Dormand–Prince 5(4), adaptive (`rtol`, `atol`), the same steps as `Dopri5`, with the
-    /// states between steps (samples, communication points) read from the method's 4th-order
-    /// continuous extension instead of one re-integration step each: no right-hand-side
-    /// evaluations per sample. Event times are located by re-integration as with `Dopri5`.
+    /// states between steps (samples, communication points, event location trials) read from
+    /// the method's 4th-order continuous extension instead of one re-integration step each:
+    /// no right-hand-side evaluations for them.
     Dopri5Dense,
 }
 

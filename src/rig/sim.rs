@@ -603,7 +603,7 @@ impl RigSim {
         let (end, next) = if run.stopped {
             let b = nodes.pop().unwrap();
             let a = *nodes.last().unwrap();
-            let (te, mut ye) = locate(&rig, &d, a, b, &event)?;
+            let (te, mut ye) = locate(&rig, &d, a, b, &event, dense.as_ref())?;
             ye[SPEED] = 0.0;
             let load = d.load(te).map_err(|p| RigError::Load { time: te, value: p })?;
             let ta = ye[TORQUE];
