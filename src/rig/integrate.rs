@@ -12,9 +12,11 @@
 //! the predicate holds — so a breakaway always starts with |T_a| above the breakaway torque and
 //! a stick never starts with the speed still in the old direction (no chattering).
 //!
-//! `Dopri5Dense` takes Dopri5's steps and keeps each step's continuous extension (order 4,
-//! `ode_solvers`' continuous output model): the trial states of event location, and the
-//! simulator's states between nodes, are read from it instead of re-integrated.
+//! `Dopri5Dense` runs Dopri5 in slip phases on u = (y − y_s(t))/scale, the deviation from the
+//! loop's steady response to the sine command ([`super::steady`]; an exact change of
+//! variables, taken when the excitation is a sine), and keeps each step's continuous extension
+//! (order 4, `ode_solvers`' continuous output model): the trial states of event location, and
+//! the simulator's states between nodes, are read from it instead of re-integrated.
 //!
 //! RK4 takes uniform steps of at most `rk4_step`, the step shortened so the segment end is hit.
 //!
@@ -27,14 +29,47 @@
 //! are bounded by [`MAX_SEGMENT_ATTEMPTS`]. The caller ([`super::sim::RigSim`]) bounds the
 //! number of segments per call, so one call does bounded work.
 
-use super::dynamics::{Dynamics, State, TIME};
+use super::dynamics::{Dynamics, Phase, State, TIME};
+use super::steady::Steady;
 use super::params::{Method, RigParams};
 use super::RigError;
 use ode_solvers::continuous_output_model::ContinuousOutputModel;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
 
-/// The continuous extension of a segment's accepted steps ([`Method::Dopri5Dense`]).
-pub(crate) type Dense = ContinuousOutputModel<f64, State>;
+/// The continuous extension of a segment's accepted steps ([`Method::Dopri5Dense`]), in the
+/// integrated variables u, with the change of variables back to y (see [`super::steady`]).
+#[derive(Debug, Clone)]
+pub(crate) struct Dense {
+    model: ContinuousOutputModel<f64, State>,
+    shift: Option<Steady>,
+}
+
+impl Dense {
+    /// The state y at `t` (within the steps integrated), its time component exactly `t`.
+    pub fn evaluate(&self, t: f64) -> Option<State> {
+        let u = self.model.evaluate(t)?;
+        let mut y = self.shift.map_or(u, |s| s.to_y(t, &u));
+        y[TIME] = t;
+        Some(y)
+    }
+}
+
+/// For [`Method::Dopri5Dense`] in a slip (or the regularised) phase driven by a sine command:
+/// the loop's steady response to integrate the deviation from, with the constant part of the
+/// friction, s·μ_c·R·P at the load at `t0` (see [`super::steady`]). None otherwise.
+fn steady(rig: &RigParams, d: &Dynamics, t0: f64) -> Option<Steady> {
+    if rig.method != Method::Dopri5Dense {
+        return None;
+    }
+    let command = d.excitation.sine()?;
+    let torque = match d.phase {
+        Phase::Slip(s) => f64::from(s) * d.joint.boundary_torque(d.load(t0).ok()?),
+        Phase::Smooth => 0.0,
+        Phase::Stick => return None,
+    };
+    let st = Steady::new(rig, command, torque);
+    st.scale.iter().all(|x| x.is_finite()).then_some(st)
+}
 
 /// The accepted steps of one segment.
 #[derive(Debug, Clone)]
@@ -57,14 +92,25 @@ struct Stepper<'a, 'b> {
     /// Accepted steps so far; the run stops (`full`) at [`MAX_SEGMENT_NODES`].
     accepted: usize,
     full: &'a mut bool,
+    /// The change of variables y = y_s(t) + scale·u, when the integrated state is u.
+    shift: Option<Steady>,
 }
 
 impl System<f64, State> for Stepper<'_, '_> {
     fn system(&self, t: f64, y: &State, dy: &mut State) {
-        *dy = self.dynamics.derivative(t, y);
+        *dy = match &self.shift {
+            None => self.dynamics.derivative(t, y),
+            Some(s) => {
+                // The time is the state's own (unshifted, unscaled) component.
+                let tt = y[TIME];
+                let (ys, rate) = s.at(tt);
+                (self.dynamics.derivative(t, &(y.component_mul(&s.scale) + ys)) - rate).component_div(&s.scale)
+            }
+        };
     }
     fn solout(&mut self, t: f64, y: &State, _dy: &State) -> bool {
-        if (self.outside)(t, y) {
+        let y = self.shift.map_or(*y, |s| s.to_y(y[TIME], y));
+        if (self.outside)(t, &y) {
             *self.hit = true;
         }
         self.accepted += 1;
@@ -137,7 +183,8 @@ pub(crate) fn segment(
         Method::Dopri5 | Method::Dop853 | Method::Dopri5Dense => {
             let h = h0.min(span).max(0.0);
             let mut full = false;
-            let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full };
+            let shift = steady(rig, d, t0);
+            let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full, shift };
             let (xs, ys, model) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
                 Err(e) => e,
                 Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
@@ -171,9 +218,9 @@ type Accepted = (Vec<f64>, Vec<State>, Option<Dense>);
 
 /// Run Dopri5 or Dop853 in sparse mode (Dopri5Dense: with its continuous output model);
 /// returns the accepted (t, y), the start included.
-fn adaptive<S: System<f64, State>>(
+fn adaptive(
     rig: &RigParams,
-    f: S,
+    f: Stepper,
     t0: f64,
     y0: State,
     t1: f64,
@@ -194,18 +241,20 @@ fn adaptive<S: System<f64, State>>(
             // The same method and controller as Dopri5 (the same accepted steps); the continuous
             // mode keeps every step's interpolation coefficients and, unlike the sparse mode,
             // does not record the start point.
+            let shift = f.shift;
+            let u0 = shift.map_or(y0, |st| st.to_u(t0, &y0));
             let mut s = Dopri5::from_param(
-                f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Continuous,
+                f, t0, t1, 0.0, u0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Continuous,
             );
-            let mut model = Dense::new();
+            let mut model = ContinuousOutputModel::new();
             s.integrate_with_continuous_output_model(&mut model)?;
             let mut xs = Vec::with_capacity(s.x_out().len() + 1);
             xs.push(t0);
             xs.extend_from_slice(s.x_out());
             let mut ys = Vec::with_capacity(xs.len());
             ys.push(y0);
-            ys.extend_from_slice(s.y_out());
-            Ok((xs, ys, Some(model)))
+            ys.extend(s.y_out().iter().map(|u| shift.map_or(*u, |st| st.to_y(u[TIME], u))));
+            Ok((xs, ys, Some(Dense { model, shift })))
         }
         _ => {
             let mut s = Dop853::from_param(
@@ -244,7 +293,7 @@ pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f6
         _ => {
             let never = |_: f64, _: &State| false;
             let (mut hit, mut full) = (false, false);
-            let stepper = Stepper { dynamics: d, outside: &never, hit: &mut hit, accepted: 0, full: &mut full };
+            let stepper = Stepper { dynamics: d, outside: &never, hit: &mut hit, accepted: 0, full: &mut full, shift: None };
             let (_, ys, _) = adaptive(rig, stepper, t0, y0, t1, h, h).map_err(|e| match check(d, t0, &y0) {
                 Err(e) => e,
                 Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
