@@ -138,7 +138,7 @@ pub fn cases(quick: bool) -> Vec<RigCase> {
     for tol in [1e-5, 1e-7] {
         v.push(c("Dopri5 regularised, 2000 samples/cycle", Dopri5, Regularised, tol, 2000, None));
     }
-    for tol in [1e-4, 3e-5, 2e-5] {
+    for tol in [3e-5, 5e-6, 3e-6] {
         v.push(c("Dopri5 dense, 100 samples/cycle", Dopri5Dense, Hybrid, tol, 100, None));
     }
     for tol in [1e-5, 1e-6, 1e-7, 1e-8] {
