@@ -13,7 +13,7 @@
 //! a stick never starts with the speed still in the old direction (no chattering).
 //!
 //! `Dopri5Dense` runs Dopri5 in slip phases on u = (y − y_s(t))/scale, the deviation from the
-//! loop's steady response to the sine command ([`super::steady`]; an exact change of
+//! loop's steady response to the sine command (`rig/steady.rs`; an exact change of
 //! variables, taken when the excitation is a sine), and keeps each step's continuous extension
 //! (order 4, `ode_solvers`' continuous output model): the trial states of event location, and
 //! the simulator's states between nodes, are read from it instead of re-integrated.
@@ -37,7 +37,7 @@ use ode_solvers::continuous_output_model::ContinuousOutputModel;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
 
 /// The continuous extension of a segment's accepted steps ([`Method::Dopri5Dense`]), in the
-/// integrated variables u, with the change of variables back to y (see [`super::steady`]).
+/// integrated variables u, with the change of variables back to y (see `rig/steady.rs`).
 #[derive(Debug, Clone)]
 pub(crate) struct Dense {
     model: ContinuousOutputModel<f64, State>,
@@ -48,7 +48,7 @@ impl Dense {
     /// The state y at `t` (within the steps integrated), its time component exactly `t`.
     pub fn evaluate(&self, t: f64) -> Option<State> {
         let u = self.model.evaluate(t)?;
-        let mut y = self.shift.map_or(u, |s| s.to_y(t, &u));
+        let mut y = self.shift.map_or(u, |s| s.state_of(t, &u));
         y[TIME] = t;
         Some(y)
     }
@@ -56,7 +56,7 @@ impl Dense {
 
 /// For [`Method::Dopri5Dense`] in a slip (or the regularised) phase driven by a sine command:
 /// the loop's steady response to integrate the deviation from, with the constant part of the
-/// friction, s·μ_c·R·P at the load at `t0` (see [`super::steady`]). None otherwise.
+/// friction, s·μ_c·R·P at the load at `t0` (see `rig/steady.rs`). None otherwise.
 fn steady(rig: &RigParams, d: &Dynamics, t0: f64) -> Option<Steady> {
     if rig.method != Method::Dopri5Dense {
         return None;
@@ -109,7 +109,7 @@ impl System<f64, State> for Stepper<'_, '_> {
         };
     }
     fn solout(&mut self, t: f64, y: &State, _dy: &State) -> bool {
-        let y = self.shift.map_or(*y, |s| s.to_y(y[TIME], y));
+        let y = self.shift.map_or(*y, |s| s.state_of(y[TIME], y));
         if (self.outside)(t, &y) {
             *self.hit = true;
         }
@@ -242,7 +242,7 @@ fn adaptive(
             // mode keeps every step's interpolation coefficients and, unlike the sparse mode,
             // does not record the start point.
             let shift = f.shift;
-            let u0 = shift.map_or(y0, |st| st.to_u(t0, &y0));
+            let u0 = shift.map_or(y0, |st| st.deviation_of(t0, &y0));
             let mut s = Dopri5::from_param(
                 f, t0, t1, 0.0, u0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Continuous,
             );
@@ -253,7 +253,7 @@ fn adaptive(
             xs.extend_from_slice(s.x_out());
             let mut ys = Vec::with_capacity(xs.len());
             ys.push(y0);
-            ys.extend(s.y_out().iter().map(|u| shift.map_or(*u, |st| st.to_y(u[TIME], u))));
+            ys.extend(s.y_out().iter().map(|u| shift.map_or(*u, |st| st.state_of(u[TIME], u))));
             Ok((xs, ys, Some(Dense { model, shift })))
         }
         _ => {

@@ -71,12 +71,12 @@ impl Steady {
     }
 
     /// y from u at time t.
-    pub fn to_y(&self, t: f64, u: &State) -> State {
+    pub fn state_of(&self, t: f64, u: &State) -> State {
         u.component_mul(&self.scale) + self.at(t).0
     }
 
     /// u from y at time t.
-    pub fn to_u(&self, t: f64, y: &State) -> State {
+    pub fn deviation_of(&self, t: f64, y: &State) -> State {
         (y - self.at(t).0).component_div(&self.scale)
     }
 }
@@ -87,15 +87,15 @@ mod tests {
 
     /// y_s solves the frictionless (constant friction) unsaturated loop: θ̇ = ω,
     /// J ω̇ = T_a − s·T_c, τ Ṫ_a = K_p(θ_cmd − θ) + K_d(θ̇_cmd − ω) − T_a, to round-off; and
-    /// to_u/to_y are inverse.
+    /// deviation_of/state_of are inverse.
     #[test]
     fn steady_response_solves_the_linear_loop() {
         let rig = RigParams::default();
         let cmd = SineCommand { amplitude: 0.7, frequency: 1.3 };
         let tc = -67.2;
         let st = Steady::new(&rig, cmd, tc);
-        for k in 0..50 {
-            let t = 0.037 * k as f64;
+        for k in 0..50u32 {
+            let t = 0.037 * f64::from(k);
             let (y, dy) = st.at(t);
             let (c, cr) = cmd.at(t);
             let r0 = dy[0] - y[1];
@@ -104,7 +104,7 @@ mod tests {
                 - (rig.position_gain * (c - y[0]) + rig.velocity_gain * (cr - y[1]) - y[2]);
             assert!(r0.abs() < 1e-12 && r1.abs() < 1e-11 && r2.abs() < 1e-10, "t = {t}: {r0:e} {r1:e} {r2:e}");
             let u = State::from([0.1, -2.0, 3.0, 4.0, 5.0, t]);
-            assert!((st.to_u(t, &st.to_y(t, &u)) - u).norm() < 1e-13);
+            assert!((st.deviation_of(t, &st.state_of(t, &u)) - u).norm() < 1e-13);
         }
         // The lag of θ behind the command at 1.3 Hz is small but not zero (|G| ≈ 1).
         assert!((st.amp.0.hypot(st.amp.1) / 0.7 - 1.0).abs() < 0.05 && st.amp.1 != 0.0);

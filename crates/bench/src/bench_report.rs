@@ -171,8 +171,9 @@ fn rig_section(r: &Report, md: &mut String) -> String {
          set, given beside it). Evaluations: right-hand-side evaluations (accepted and rejected steps, event \
          location, re-integration to samples); friction solves: the full solves among them plus one per sample. \
          With Dopri5, Dop853 and RK4 every sample costs one re-integration step from the last accepted node, which is \
-         why the output sampling matters (Dopri5 dense takes Dopri5's steps and reads samples from its continuous \
-         extension instead: no evaluation per sample beyond the friction solve of its outputs): at 100 samples a stroke the torque at the samples keeps the \
+         why the output sampling matters (Dopri5 dense, which integrates the deviation from the position loop's \
+         steady response to the sine command, reads samples from its continuous extension instead: no evaluation \
+         per sample beyond the friction solve of its outputs): at 100 samples a stroke the torque at the samples keeps the \
          integrator's accuracy, but an eq. 11 average taken from so few samples carries the trapezoidal rule's \
          own error (the eq. 11 column), so use more samples when that average is the result wanted. The \
          regularised formulation's error does not fall with the tolerance: it is a different model (creep at \
