@@ -165,7 +165,7 @@ fn parameter_file_rig_section_and_flags_override_it() {
 #[test]
 fn formulations_and_methods_agree_on_the_average() {
     let mut mus = Vec::new();
-    for extra in [&[][..], &["--formulation", "regularised"], &["--method", "dop853"], &["--method", "rk4"]] {
+    for extra in [&[][..], &["--formulation", "regularised"], &["--method", "dop853"], &["--method", "rk4"], &["--method", "dopri5-dense"]] {
         let tmp = tempfile::tempdir().unwrap();
         let mut args = vec!["cycle", "--frequency", "1", "--load", "20000", "--cycles", "2", "--samples-per-cycle", "500", "--output"];
         args.push(tmp.path().to_str().unwrap());

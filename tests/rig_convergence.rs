@@ -26,7 +26,7 @@ fn torque_trace_converges_as_the_tolerance_tightens() {
     // The two adaptive methods agree with each other at tight tolerance.
     let dopri_tight = trace(Method::Dopri5, 1e-12, 0.0);
     assert!(max_error(&dopri_tight, &reference) < 1e-6);
-    for method in [Method::Dopri5, Method::Dop853] {
+    for method in [Method::Dopri5, Method::Dop853, Method::Dopri5Dense] {
         let tols = [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10];
         let errs: Vec<f64> = tols.iter().map(|&t| max_error(&trace(method, t, 0.0), &reference)).collect();
         for (t, e) in tols.iter().zip(&errs) {

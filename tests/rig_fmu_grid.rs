@@ -136,3 +136,33 @@ fn host_steps_of_1e_5_s_and_of_1_s_work_and_agree() {
     }
     assert!(c.iter().all(|r| r.iter().all(|x| x.is_finite())));
 }
+
+/// rig.method = 3 (Dopri5 dense): the states between steps come from the continuous
+/// extension of steps that do not depend on the grid, so shared points agree across hosts,
+/// and the outputs equal the library's with the same method bit for bit.
+#[test]
+fn dense_method_is_grid_independent_and_equals_the_library() {
+    let sets = [("rig.method", 3.0)];
+    let fine = grid(1e-3, 1.5);
+    let coarse = grid(0.1, 1.5);
+    let a = fmu_run(&sets, &fine, &load_step);
+    let b = fmu_run(&sets, &coarse, &load_step);
+    let mut exact = 0;
+    for (j, t) in coarse.iter().enumerate() {
+        let k = fine.iter().position(|x| (x - t).abs() < 1e-9).unwrap();
+        if fine[k] == *t {
+            assert_eq!(bits(&a[k]), bits(&b[j]), "t = {t}");
+            exact += 1;
+        }
+        for (x, y) in a[k].iter().zip(&b[j]) {
+            assert!((x - y).abs() <= 1e-12 * x.abs().max(1e-3), "t = {t}: {x} vs {y}");
+        }
+    }
+    assert!(exact >= 8, "{exact} bitwise-equal shared times");
+    let mut cfg = RigConfig::default();
+    cfg.rig.method = pinjoint::rig::Method::Dopri5Dense;
+    let lib = library_run(&cfg, &coarse, &load_step);
+    for (k, (x, y)) in b.iter().zip(&lib).enumerate() {
+        assert_eq!(bits(x), bits(y), "t = {}: {x:?} vs {y:?}", coarse[k]);
+    }
+}

@@ -92,6 +92,24 @@ fn regularised_and_rk4_states_round_trip_too() {
     free(d);
 }
 
+/// Dopri5 dense (rig.method = 3): a restored state recomputes the segment and its continuous
+/// extension from the saved node, so the continuation is the original's bit for bit.
+#[test]
+fn dense_states_round_trip_too() {
+    let h = new_host();
+    let c = ready(&h, &[("rig.method", 3.0)]);
+    let (_, t) = drive(&h, c, 0.0, 40);
+    let bytes = serialize(c, get_state(c));
+    let (expect, _) = drive(&h, c, t, 30);
+    let d = instantiate(&h);
+    let s = deserialize(d, &bytes).unwrap();
+    assert_eq!(unsafe { fmi2SetFMUstate(d, s) }, OK);
+    assert_eq!(get(d, "rig.method"), 3.0);
+    assert_eq!(drive(&h, d, t, 30).0, expect);
+    free(c);
+    free(d);
+}
+
 #[test]
 fn damaged_and_foreign_states_are_rejected() {
     let (h, c) = ready_rig();

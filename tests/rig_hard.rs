@@ -274,7 +274,7 @@ fn thousand_cycles_without_drift() {
 fn methods_agree() {
     let c0 = cfg(1.0, 20e3);
     let (_, reference) = run(&c0, 1.5, 200);
-    for (method, tol) in [(Method::Dop853, 1e-4), (Method::Rk4, 1e-2)] {
+    for (method, tol) in [(Method::Dop853, 1e-4), (Method::Rk4, 1e-2), (Method::Dopri5Dense, 1e-4)] {
         let mut c = c0;
         c.rig.method = method;
         let (sim, tr) = run(&c, 1.5, 200);

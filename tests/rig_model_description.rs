@@ -70,5 +70,5 @@ fn output_dependencies_are_the_physical_ones() {
         assert_eq!(deps(n), format!("{} {}", idx("load"), idx("temperature")), "{n}");
     }
     assert_eq!(deps("commanded_angle"), idx("command_angle").to_string());
-    assert!(xml.contains(r#"<Boolean start="false"/>"#) && xml.contains(r#"<Enumeration declaredType="RigMethod" min="0" max="2" start="0"/>"#));
+    assert!(xml.contains(r#"<Boolean start="false"/>"#) && xml.contains(r#"<Enumeration declaredType="RigMethod" min="0" max="3" start="0"/>"#));
 }

@@ -111,6 +111,12 @@ pub(crate) struct Dynamics<'a> {
     pub level: Option<&'a Evaluator>,
     /// Evaluations outside that level's envelope, answered by the full solve.
     pub fallbacks: Cell<u64>,
+    /// Right-hand-side evaluations ([`Self::derivative`] calls).
+    pub evaluations: Cell<u64>,
+    /// Full friction solves ([`Self::torque`] without a level, [`Self::operating_point`] outside one).
+    pub solves: Cell<u64>,
+    /// Residual evaluations those solves took ([`crate::joint::Friction::evaluations`]).
+    pub residuals: Cell<u64>,
 }
 
 impl<'a> Dynamics<'a> {
@@ -127,6 +133,9 @@ impl<'a> Dynamics<'a> {
             model_fault: RefCell::new(None),
             level: None,
             fallbacks: Cell::new(0),
+            evaluations: Cell::new(0),
+            solves: Cell::new(0),
+            residuals: Cell::new(0),
         }
     }
 
@@ -151,6 +160,7 @@ impl<'a> Dynamics<'a> {
             self.fallbacks.set(self.fallbacks.get() + 1);
         }
         let g = self.guess.get();
+        self.solves.set(self.solves.get() + 1);
         let op = match self.joint.evaluate_from(load, speed, g.is_finite().then_some(g)) {
             Ok(op) => op,
             Err(e) => {
@@ -208,8 +218,10 @@ impl<'a> Dynamics<'a> {
             None if speed > 0.0 => self.joint.cold_start(lt.load, speed),
             None => g,
         };
+        self.solves.set(self.solves.get() + 1);
         match self.joint.friction_at(&lt, speed, start.is_finite().then_some(start)) {
             Ok(f) => {
+                self.residuals.set(self.residuals.get() + u64::from(f.evaluations));
                 if f.logit.is_finite() {
                     self.guess.set(f.logit);
                     self.predictor.set(Some(Predictor { load: lt.load, speed, dy_dln_load: f.dlogit_dln_load, dy_dln_speed: f.dlogit_dln_speed }));
@@ -266,6 +278,7 @@ impl<'a> Dynamics<'a> {
 
     /// dy/dt. The time is taken from the state (y[TIME]), not from the integrator.
     pub fn derivative(&self, _t: f64, y: &State) -> State {
+        self.evaluations.set(self.evaluations.get() + 1);
         let t = y[TIME];
         let load = match self.load(t) {
             Ok(p) => p,

@@ -18,6 +18,11 @@ pub trait Excitation: Send + Sync {
     fn next_discontinuity(&self, _t: f64) -> f64 {
         f64::INFINITY
     }
+    /// The command when it is exactly a [`SineCommand`] at all times (None otherwise): lets
+    /// `Method::Dopri5Dense` integrate the deviation from the loop's steady response to it.
+    fn sine(&self) -> Option<SineCommand> {
+        None
+    }
 }
 
 /// θ_cmd = A·sin(2π f t), θ̇_cmd = 2π f A·cos(2π f t).
@@ -81,6 +86,9 @@ impl Excitation for SineDrive {
     fn next_discontinuity(&self, t: f64) -> f64 {
         self.load.next_step(t)
     }
+    fn sine(&self) -> Option<SineCommand> {
+        Some(self.command)
+    }
 }
 
 /// Closures for the load and the command (e.g. a host's signals); `jumps` lists the times where
@@ -139,6 +147,9 @@ impl Excitation for Held {
     }
     fn next_discontinuity(&self, t: f64) -> f64 {
         self.base.next_discontinuity(t)
+    }
+    fn sine(&self) -> Option<SineCommand> {
+        if self.inputs.command_angle.is_some() { None } else { self.base.sine() }
     }
 }
 

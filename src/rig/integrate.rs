@@ -12,20 +12,64 @@
 //! the predicate holds — so a breakaway always starts with |T_a| above the breakaway torque and
 //! a stick never starts with the speed still in the old direction (no chattering).
 //!
+//! `Dopri5Dense` runs Dopri5 in slip phases on u = (y − y_s(t))/scale, the deviation from the
+//! loop's steady response to the sine command (`rig/steady.rs`; an exact change of
+//! variables, taken when the excitation is a sine), and keeps each step's continuous extension
+//! (order 4, `ode_solvers`' continuous output model): the trial states of event location, and
+//! the simulator's states between nodes, are read from it instead of re-integrated.
+//!
 //! RK4 takes uniform steps of at most `rk4_step`, the step shortened so the segment end is hit.
 //!
 //! # Bounded work and memory
 //! A segment keeps at most [`MAX_SEGMENT_NODES`] accepted steps: when that many are taken
 //! before t₁ (a stiff phase, a tiny `rk4_step` in a long segment) the segment simply ends at
 //! its last node and the next one starts there, so memory is bounded by what is kept
-//! (≤ 14.7 MB), never by span/step. Step attempts (accepted + rejected) of the adaptive methods
+//! (≤ 14.7 MB; `Dopri5Dense` also keeps each step's five interpolation vectors in
+//! `ode_solvers`' model, ≈ 300 B a step with their allocations: ≤ 80 MB), never by span/step. Step attempts (accepted + rejected) of the adaptive methods
 //! are bounded by [`MAX_SEGMENT_ATTEMPTS`]. The caller ([`super::sim::RigSim`]) bounds the
 //! number of segments per call, so one call does bounded work.
 
-use super::dynamics::{Dynamics, State, TIME};
+use super::dynamics::{Dynamics, Phase, State, TIME};
+use super::steady::Steady;
 use super::params::{Method, RigParams};
 use super::RigError;
+use ode_solvers::continuous_output_model::ContinuousOutputModel;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
+
+/// The continuous extension of a segment's accepted steps ([`Method::Dopri5Dense`]), in the
+/// integrated variables u, with the change of variables back to y (see `rig/steady.rs`).
+#[derive(Debug, Clone)]
+pub(crate) struct Dense {
+    model: ContinuousOutputModel<f64, State>,
+    shift: Option<Steady>,
+}
+
+impl Dense {
+    /// The state y at `t` (within the steps integrated), its time component exactly `t`.
+    pub fn evaluate(&self, t: f64) -> Option<State> {
+        let u = self.model.evaluate(t)?;
+        let mut y = self.shift.map_or(u, |s| s.state_of(t, &u));
+        y[TIME] = t;
+        Some(y)
+    }
+}
+
+/// For [`Method::Dopri5Dense`] in a slip (or the regularised) phase driven by a sine command:
+/// the loop's steady response to integrate the deviation from, with the constant part of the
+/// friction, s·μ_c·R·P at the load at `t0` (see `rig/steady.rs`). None otherwise.
+fn steady(rig: &RigParams, d: &Dynamics, t0: f64) -> Option<Steady> {
+    if rig.method != Method::Dopri5Dense {
+        return None;
+    }
+    let command = d.excitation.sine()?;
+    let torque = match d.phase {
+        Phase::Slip(s) => f64::from(s) * d.joint.boundary_torque(d.load(t0).ok()?),
+        Phase::Smooth => 0.0,
+        Phase::Stick => return None,
+    };
+    let st = Steady::new(rig, command, torque);
+    st.scale.iter().all(|x| x.is_finite()).then_some(st)
+}
 
 /// The accepted steps of one segment.
 #[derive(Debug, Clone)]
@@ -36,6 +80,8 @@ pub(crate) struct Run {
     pub stopped: bool,
     /// Step size to start the next segment with.
     pub h_next: f64,
+    /// [`Method::Dopri5Dense`]: the continuous extension over every accepted step.
+    pub dense: Option<Dense>,
 }
 
 /// Adapter giving `ode_solvers` the right-hand side and the stop test.
@@ -46,14 +92,25 @@ struct Stepper<'a, 'b> {
     /// Accepted steps so far; the run stops (`full`) at [`MAX_SEGMENT_NODES`].
     accepted: usize,
     full: &'a mut bool,
+    /// The change of variables y = y_s(t) + scale·u, when the integrated state is u.
+    shift: Option<Steady>,
 }
 
 impl System<f64, State> for Stepper<'_, '_> {
     fn system(&self, t: f64, y: &State, dy: &mut State) {
-        *dy = self.dynamics.derivative(t, y);
+        *dy = match &self.shift {
+            None => self.dynamics.derivative(t, y),
+            Some(s) => {
+                // The time is the state's own (unshifted, unscaled) component.
+                let tt = y[TIME];
+                let (ys, rate) = s.at(tt);
+                (self.dynamics.derivative(t, &(y.component_mul(&s.scale) + ys)) - rate).component_div(&s.scale)
+            }
+        };
     }
     fn solout(&mut self, t: f64, y: &State, _dy: &State) -> bool {
-        if (self.outside)(t, y) {
+        let y = self.shift.map_or(*y, |s| s.state_of(y[TIME], y));
+        if (self.outside)(t, &y) {
             *self.hit = true;
         }
         self.accepted += 1;
@@ -102,6 +159,7 @@ pub(crate) fn segment(
     let mut y0 = y0;
     y0[TIME] = t0;
     let mut hit = false;
+    let mut dense = None;
     let nodes: Vec<(f64, State)> = match rig.method {
         Method::Rk4 => {
             // `as` saturates; span ≤ segment_length and rk4_step ≥ its minimum keep n ≤ 1e9.
@@ -122,14 +180,16 @@ pub(crate) fn segment(
             }
             nodes
         }
-        Method::Dopri5 | Method::Dop853 => {
+        Method::Dopri5 | Method::Dop853 | Method::Dopri5Dense => {
             let h = h0.min(span).max(0.0);
             let mut full = false;
-            let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full };
-            let (xs, ys) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
+            let shift = steady(rig, d, t0);
+            let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full, shift };
+            let (xs, ys, model) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
                 Err(e) => e,
                 Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
             })?;
+            dense = model;
             let mut nodes: Vec<(f64, State)> = xs.into_iter().zip(ys).collect();
             if !hit && !full {
                 // The last step was aimed at t1; remove rounding in its time.
@@ -150,19 +210,23 @@ pub(crate) fn segment(
         2 => nodes[1].0 - nodes[0].0,
         _ => (nodes[n - 1].0 - nodes[n - 2].0).max(nodes[n - 2].0 - nodes[n - 3].0),
     };
-    Ok(Run { nodes, stopped: hit, h_next })
+    Ok(Run { nodes, stopped: hit, h_next, dense })
 }
 
-/// Run Dopri5 or Dop853 in sparse mode; returns the accepted (t, y).
-fn adaptive<S: System<f64, State>>(
+/// Accepted (t, y) of one adaptive run, with the continuous extension for [`Method::Dopri5Dense`].
+type Accepted = (Vec<f64>, Vec<State>, Option<Dense>);
+
+/// Run Dopri5 or Dop853 in sparse mode (Dopri5Dense: with its continuous output model);
+/// returns the accepted (t, y), the start included.
+fn adaptive(
     rig: &RigParams,
-    f: S,
+    f: Stepper,
     t0: f64,
     y0: State,
     t1: f64,
     h: f64,
     h_max: f64,
-) -> Result<(Vec<f64>, Vec<State>), ode_solvers::dop_shared::IntegrationError> {
+) -> Result<Accepted, ode_solvers::dop_shared::IntegrationError> {
     // n_stiff = u32::MAX disables the stiffness abort: the regularised formulation is stiff by
     // design and must be integrated anyway (with small steps).
     match rig.method {
@@ -171,14 +235,33 @@ fn adaptive<S: System<f64, State>>(
                 f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Sparse,
             );
             s.integrate()?;
-            Ok((s.x_out().clone(), s.y_out().clone()))
+            Ok((s.x_out().clone(), s.y_out().clone(), None))
+        }
+        Method::Dopri5Dense => {
+            // The same method and controller as Dopri5 (the same accepted steps); the continuous
+            // mode keeps every step's interpolation coefficients and, unlike the sparse mode,
+            // does not record the start point.
+            let shift = f.shift;
+            let u0 = shift.map_or(y0, |st| st.deviation_of(t0, &y0));
+            let mut s = Dopri5::from_param(
+                f, t0, t1, 0.0, u0, rig.rtol, rig.atol, 0.9, 0.04, 0.2, 10.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Continuous,
+            );
+            let mut model = ContinuousOutputModel::new();
+            s.integrate_with_continuous_output_model(&mut model)?;
+            let mut xs = Vec::with_capacity(s.x_out().len() + 1);
+            xs.push(t0);
+            xs.extend_from_slice(s.x_out());
+            let mut ys = Vec::with_capacity(xs.len());
+            ys.push(y0);
+            ys.extend(s.y_out().iter().map(|u| shift.map_or(*u, |st| st.state_of(u[TIME], u))));
+            Ok((xs, ys, Some(Dense { model, shift })))
         }
         _ => {
             let mut s = Dop853::from_param(
                 f, t0, t1, 0.0, y0, rig.rtol, rig.atol, 0.9, 0.0, 0.333, 6.0, h_max, h, MAX_SEGMENT_ATTEMPTS, u32::MAX, OutputType::Sparse,
             );
             s.integrate()?;
-            Ok((s.x_out().clone(), s.y_out().clone()))
+            Ok((s.x_out().clone(), s.y_out().clone(), None))
         }
     }
 }
@@ -186,6 +269,8 @@ fn adaptive<S: System<f64, State>>(
 /// The state at t1 ≥ t0 by one step of the method from (t0, y0) (an adaptive method may split
 /// it if its error test rejects the full step).
 pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f64) -> Result<State, RigError> {
+    // Dopri5Dense re-integrates (event location) exactly as Dopri5.
+    let rig = &RigParams { method: if rig.method == Method::Dopri5Dense { Method::Dopri5 } else { rig.method }, ..*rig };
     let h = t1 - t0;
     let mut y0 = y0;
     y0[TIME] = t0;
@@ -208,8 +293,8 @@ pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f6
         _ => {
             let never = |_: f64, _: &State| false;
             let (mut hit, mut full) = (false, false);
-            let stepper = Stepper { dynamics: d, outside: &never, hit: &mut hit, accepted: 0, full: &mut full };
-            let (_, ys) = adaptive(rig, stepper, t0, y0, t1, h, h).map_err(|e| match check(d, t0, &y0) {
+            let stepper = Stepper { dynamics: d, outside: &never, hit: &mut hit, accepted: 0, full: &mut full, shift: None };
+            let (_, ys, _) = adaptive(rig, stepper, t0, y0, t1, h, h).map_err(|e| match check(d, t0, &y0) {
                 Err(e) => e,
                 Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
             })?;
@@ -225,13 +310,16 @@ pub(crate) fn sub_step(rig: &RigParams, d: &Dynamics, t0: f64, y0: State, t1: f6
 
 /// Locate the event in (ta, tb]: `g` is continuous, `outside` ⇔ the event has happened;
 /// `outside` is false at ta and true at tb. Returns the first trial time found with `outside`
-/// true within `tol` of the last time found with it false, and the state there.
+/// true within `tol` of the last time found with it false, and the state there. Each trial
+/// state is one re-integration step from (ta, ya), or with `dense` (the continuous extension
+/// of the step from ta to tb, [`Method::Dopri5Dense`]) read from it without evaluations.
 pub(crate) fn locate(
     rig: &RigParams,
     d: &Dynamics,
     (ta, ya): (f64, State),
     (tb, yb): (f64, State),
     event: &dyn Fn(f64, &State) -> (f64, bool),
+    dense: Option<&Dense>,
 ) -> Result<(f64, State), RigError> {
     let tol = rig.event_tolerance;
     let (mut a, mut b, mut y_b) = (ta, tb, yb);
@@ -252,7 +340,13 @@ pub(crate) fn locate(
         }
         // Never closer than tol/4 to an end: each trial shrinks the bracket by at least that.
         t = t.clamp(a + 0.25 * tol.min(0.5 * width), b - 0.25 * tol.min(0.5 * width));
-        let y = sub_step(rig, d, ta, ya, t)?;
+        let y = match dense.and_then(|m| m.evaluate(t)) {
+            Some(mut y) => {
+                y[TIME] = t;
+                y
+            }
+            None => sub_step(rig, d, ta, ya, t)?,
+        };
         let (g, out) = event(t, &y);
         if out {
             b = t;

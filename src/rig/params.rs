@@ -73,6 +73,12 @@ pub enum Method {
     Dop853,
     /// Classical Runge–Kutta 4, fixed step `rk4_step`.
     Rk4,
+    /// Dormand–Prince 5(4), adaptive (`rtol`, `atol`), integrating in slip the deviation from
+    /// the position loop's steady response to the sine command (an exact change of variables,
+    /// `rig::steady`: fewer steps), with the states between steps (samples, communication
+    /// points, event location trials) read from the method's 4th-order continuous extension
+    /// instead of one re-integration step each: no right-hand-side evaluations for them.
+    Dopri5Dense,
 }
 
 /// Every rig constant (SI units). See the module documentation for the equations and defaults.

@@ -20,9 +20,9 @@
 //! At each event ω is set to exactly 0 (its located value is within the event tolerance of 0).
 
 use super::config::RigConfig;
-use super::dynamics::{physical, to_state, Dynamics, Phase, State, ANGLE, DISSIPATION, SPEED, TORQUE, WORK};
+use super::dynamics::{physical, to_state, Dynamics, Phase, State, ANGLE, DISSIPATION, SPEED, TIME, TORQUE, WORK};
 use super::excitation::{Excitation, Held, Inputs, SineCommand, SineDrive, StepLoad};
-use super::integrate::{locate, segment, sub_step, TINY};
+use super::integrate::{locate, segment, sub_step, Dense, TINY};
 use super::params::Formulation;
 use super::RigError;
 use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
@@ -175,6 +175,24 @@ pub struct Stats {
     /// Friction evaluations outside the envelope of the fidelity level ([`RigSim::set_fidelity`]),
     /// answered by the full solve.
     pub fallbacks: u64,
+    /// Right-hand-side evaluations, including the re-integration steps to sample and event times.
+    pub evaluations: u64,
+    /// Full friction solves (the core's load-sharing Newton solve), including those of samples.
+    pub friction_solves: u64,
+    /// Residual evaluations of the solves inside the equations of motion (their Newton
+    /// iterations with line-search trials; the samples' solves are counted in
+    /// `friction_solves` only).
+    pub solve_residuals: u64,
+}
+
+impl Stats {
+    /// Add what `d` did to the counters.
+    fn add(&mut self, d: &Dynamics) {
+        self.fallbacks += d.fallbacks.get();
+        self.evaluations += d.evaluations.get();
+        self.friction_solves += d.solves.get();
+        self.solve_residuals += d.residuals.get();
+    }
 }
 
 #[derive(Debug, Clone)]
@@ -185,6 +203,9 @@ struct Segment {
     nodes: Vec<(f64, State)>,
     end: f64,
     next: Node,
+    /// [`super::params::Method::Dopri5Dense`]: the continuous extension of the accepted steps
+    /// (covering `nodes[0].0` up to `end`).
+    dense: Option<Dense>,
 }
 
 /// The rig simulator.
@@ -288,11 +309,6 @@ impl RigSim {
         self.fidelity = Some(evaluator);
         self.segment = None;
         Ok(())
-    }
-
-    /// A level answering inside its envelope, for the dynamics (None at full).
-    fn level(&self) -> Option<&Evaluator> {
-        self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full)
     }
 
     /// The envelope the built-in sine drive of `config` visits: the load ±10 % (at least
@@ -530,11 +546,17 @@ impl RigSim {
         let seg = self.segment.as_ref().unwrap();
         let i = seg.nodes.partition_point(|(tn, _)| *tn <= t).max(1) - 1;
         let (ti, yi) = seg.nodes[i];
+        if let Some(y) = seg.dense.as_ref().filter(|_| t > ti).and_then(|m| m.evaluate(t)) {
+            // The step from node i, read from its continuous extension (no evaluation).
+            let mut y = y;
+            y[TIME] = t;
+            return Ok((y, seg.phase, seg.logit));
+        }
         let exc = self.held();
         let mut d = Dynamics::new(&self.joint, &self.config.rig, &exc, seg.phase, seg.logit);
         d.level = self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full);
         let y = sub_step(&self.config.rig, &d, ti, yi, t)?;
-        self.stats.fallbacks += d.fallbacks.get();
+        self.stats.add(&d);
         Ok((y, seg.phase, seg.logit))
     }
 
@@ -569,18 +591,19 @@ impl RigSim {
             let y1 = sub_step(&rig, &d, t0, y0, t1)?;
             let mut next = Node { time: t1, state: physical(&y1), ..node };
             next.phase = self.resolve(&next)?;
-            self.stats.fallbacks += d.fallbacks.get();
-            return Ok(Segment { phase, logit: node.logit, nodes: vec![(t0, y0)], end: t1, next });
+            self.stats.add(&d);
+            return Ok(Segment { phase, logit: node.logit, nodes: vec![(t0, y0)], end: t1, next, dense: None });
         }
         let run = segment(&rig, &d, t0, y0, t1, node.step, &outside)?;
         self.stats.segments += 1;
         self.stats.steps += run.nodes.len() as u64 - 1;
         let mut nodes = run.nodes;
+        let dense = run.dense;
         let logit = node.logit;
         let (end, next) = if run.stopped {
             let b = nodes.pop().unwrap();
             let a = *nodes.last().unwrap();
-            let (te, mut ye) = locate(&rig, &d, a, b, &event)?;
+            let (te, mut ye) = locate(&rig, &d, a, b, &event, dense.as_ref())?;
             ye[SPEED] = 0.0;
             let load = d.load(te).map_err(|p| RigError::Load { time: te, value: p })?;
             let ta = ye[TORQUE];
@@ -613,19 +636,20 @@ impl RigSim {
             next.phase = self.resolve(&next)?;
             (t, next)
         };
-        self.stats.fallbacks += d.fallbacks.get();
-        Ok(Segment { phase, logit, nodes, end, next })
+        self.stats.add(&d);
+        Ok(Segment { phase, logit, nodes, end, next, dense })
     }
 
     /// The outputs at (t, y) in `phase`.
-    fn observe(&self, t: f64, y: &State, phase: Phase, logit: f64) -> Result<Sample, RigError> {
+    fn observe(&mut self, t: f64, y: &State, phase: Phase, logit: f64) -> Result<Sample, RigError> {
         let exc = self.held();
         let rig = &self.config.rig;
         let mut d = Dynamics::new(&self.joint, rig, &exc, phase, logit);
-        d.level = self.level();
+        d.level = self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full);
         let load = d.load(t).unwrap_or(f64::NAN);
         let (command_angle, _) = exc.command(t);
         let fr = if load.is_finite() { Some(d.friction(load, y)) } else { None };
+        self.stats.add(&d);
         if let Some((load, speed, source)) = d.model_fault.borrow().clone() {
             return Err(RigError::Model { time: t, load, speed, source });
         }

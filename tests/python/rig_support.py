@@ -32,7 +32,7 @@ def toml_text(params):
     sections; the stroke parameters `frequency` and `amplitude` to [rig];
     `rig.formulation`/`rig.method` codes to their TOML names."""
     sections = {}
-    names = {"rig.formulation": ["hybrid", "regularised"], "rig.method": ["dopri5", "dop853", "rk4"]}
+    names = {"rig.formulation": ["hybrid", "regularised"], "rig.method": ["dopri5", "dop853", "rk4", "dopri5-dense"]}
     for name, value in params.items():
         if name in ("frequency", "amplitude"):
             name = "rig." + name

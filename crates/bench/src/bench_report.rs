@@ -137,23 +137,25 @@ fn eval_section(r: &Report, md: &mut String) -> (String, String) {
 
 fn rig_section(r: &Report, md: &mut String) -> String {
     writeln!(md, "## Per cycle simulation\n\n![rig work-precision](bench_rig.svg)\n").unwrap();
-    writeln!(md, "| case | wall ms (fastest) | wall ms (median) | torque error | eq. 11 average error | steps | table build ms | fallbacks |").unwrap();
-    writeln!(md, "|---|---:|---:|---:|---:|---:|---:|---:|").unwrap();
+    writeln!(md, "| case | wall ms (fastest) | wall ms (median) | torque error | eq. 11 average error | steps | evaluations | friction solves | table build ms | fallbacks |").unwrap();
+    writeln!(md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|").unwrap();
     for x in &r.rig {
         if let Some(err) = &x.error {
-            writeln!(md, "| {} | failed: {err} | | | | | | |", x.case.label).unwrap();
+            writeln!(md, "| {} | failed: {err} | | | | | | | | |", x.case.label).unwrap();
             continue;
         }
         let build = if x.case.table.is_some() { format!("{:.1}", 1e3 * x.build_seconds) } else { String::new() };
         writeln!(
             md,
-            "| {} | {:.1} | {:.1} | {} | {} | {} | {} | {} |",
+            "| {} | {:.1} | {:.1} | {} | {} | {} | {} | {} | {} | {} |",
             x.case.label,
             1e3 * x.seconds,
             1e3 * x.median_seconds,
             e(x.torque_error),
             e(x.average_error),
             x.steps,
+            x.evaluations,
+            x.friction_solves,
             build,
             x.fallbacks
         )
@@ -166,19 +168,24 @@ fn rig_section(r: &Report, md: &mut String) -> String {
          samples a stroke, so every run's sample times are reference sample times. Eq. 11 error: the relative \
          error of the cycle-average friction coefficient over strokes 2–10 (from each run's own samples, so a \
          coarse sampling adds its quadrature error). Wall time excludes building the table (once per parameter \
-         set, given beside it). Every sample costs one re-integration step from the last accepted node, which is \
-         why the output sampling matters: at 100 samples a stroke the torque at the samples keeps the \
+         set, given beside it). Evaluations: right-hand-side evaluations (accepted and rejected steps, event \
+         location, re-integration to samples); friction solves: the full solves among them plus one per sample. \
+         With Dopri5, Dop853 and RK4 every sample costs one re-integration step from the last accepted node, which is \
+         why the output sampling matters (Dopri5 dense, which integrates the deviation from the position loop's \
+         steady response to the sine command, reads samples from its continuous extension instead: no evaluation \
+         per sample beyond the friction solve of its outputs): at 100 samples a stroke the torque at the samples keeps the \
          integrator's accuracy, but an eq. 11 average taken from so few samples carries the trapezoidal rule's \
          own error (the eq. 11 column), so use more samples when that average is the result wanted. The \
          regularised formulation's error does not fall with the tolerance: it is a different model (creep at \
          |ω| < ω_reg instead of stick), and stiff (steps of the creep time constant).\n"
     )
     .unwrap();
-    let ok: Vec<&RigResult> = r.rig.iter().filter(|x| x.error.is_none() && x.torque_error < 1e-4).collect();
+    // The target is at full fidelity: the table level's cases are shown above but not counted.
+    let ok: Vec<&RigResult> = r.rig.iter().filter(|x| x.error.is_none() && x.torque_error < 1e-4 && x.case.table.is_none()).collect();
     match ok.iter().min_by(|a, b| a.seconds.total_cmp(&b.seconds)) {
-        None => "**missed** — no configuration reached a torque error below 1e-4".into(),
+        None => "**missed** — no configuration without the table level reached a torque error below 1e-4".into(),
         Some(b) => format!(
-            "{} — cheapest configuration with torque error < 1e-4: {} ({} error) in {:.1} ms = {:.2} × the 10 ms target{}",
+            "{} — cheapest configuration at full fidelity (no table) with torque error < 1e-4: {} ({} error) in {:.1} ms = {:.2} × the 10 ms target{}",
             met(b.seconds < 0.010),
             b.case.label,
             e(b.torque_error),

@@ -11,7 +11,7 @@
 
 use pinjoint_cli::error::Result;
 use pinjoint::fidelity::Fidelity;
-use pinjoint::rig::{cycle_average_friction_coefficient, Formulation, Method, RigConfig, RigError, RigSim, Sample};
+use pinjoint::rig::{cycle_average_friction_coefficient, Formulation, Method, RigConfig, RigError, RigSim, Sample, Stats};
 use std::time::Instant;
 
 /// One configuration of the rig run.
@@ -51,6 +51,10 @@ pub struct RigResult {
     pub average_error: f64,
     /// Integrator steps taken.
     pub steps: u64,
+    /// Right-hand-side evaluations (steps, rejected steps, re-integration to samples and events).
+    pub evaluations: u64,
+    /// Full friction solves (inside the equations of motion and one per sample).
+    pub friction_solves: u64,
     /// Steps where the solver fell back (as counted by the rig's statistics).
     pub fallbacks: u64,
     /// Why the run failed, if it did (the errors are then NaN).
@@ -77,8 +81,8 @@ pub fn config(case: &RigCase) -> RigConfig {
     cfg
 }
 
-/// One run: (samples, stats fallbacks, steps, table build seconds, run seconds).
-fn run_once(case: &RigCase) -> std::result::Result<(Vec<Sample>, u64, u64, f64, f64), RigError> {
+/// One run: (samples, stats, table build seconds, run seconds).
+fn run_once(case: &RigCase) -> std::result::Result<(Vec<Sample>, Stats, f64, f64), RigError> {
     let cfg = config(case);
     let t0 = Instant::now();
     let mut sim = RigSim::new(&cfg)?;
@@ -92,8 +96,7 @@ fn run_once(case: &RigCase) -> std::result::Result<(Vec<Sample>, u64, u64, f64, 
     let period = cfg.rig.period();
     let samples = sim.run(CYCLES * period, period / case.samples_per_cycle as f64)?;
     let total = t0.elapsed().as_secs_f64() - build;
-    let st = sim.stats();
-    Ok((samples, st.fallbacks, st.steps, build, total))
+    Ok((samples, sim.stats(), build, total))
 }
 
 /// The cases of the report (`quick`: a few, with loose settings).
@@ -115,10 +118,11 @@ pub fn cases(quick: bool) -> Vec<RigCase> {
         }
     };
     use Formulation::{Hybrid, Regularised};
-    use Method::{Dop853, Dopri5, Rk4};
+    use Method::{Dop853, Dopri5, Dopri5Dense, Rk4};
     if quick {
         return vec![
             c("Dopri5, 100 samples/cycle", Dopri5, Hybrid, 1e-6, 100, None),
+            c("Dopri5 dense, 100 samples/cycle", Dopri5Dense, Hybrid, 1e-6, 100, None),
             c("RK4, 100 samples/cycle", Rk4, Hybrid, 1e-3, 100, None),
             c("Dopri5 + table, 100 samples/cycle", Dopri5, Hybrid, 1e-6, 100, Some(1e-5)),
         ];
@@ -134,8 +138,12 @@ pub fn cases(quick: bool) -> Vec<RigCase> {
     for tol in [1e-5, 1e-7] {
         v.push(c("Dopri5 regularised, 2000 samples/cycle", Dopri5, Regularised, tol, 2000, None));
     }
+    for tol in [3e-5, 5e-6, 3e-6] {
+        v.push(c("Dopri5 dense, 100 samples/cycle", Dopri5Dense, Hybrid, tol, 100, None));
+    }
     for tol in [1e-5, 1e-6, 1e-7, 1e-8] {
         v.push(c("Dopri5, 100 samples/cycle", Dopri5, Hybrid, tol, 100, None));
+        v.push(c("Dopri5 dense, 100 samples/cycle", Dopri5Dense, Hybrid, tol, 100, None));
         v.push(c("Dop853, 100 samples/cycle", Dop853, Hybrid, tol, 100, None));
         v.push(c("Dopri5 + table, 100 samples/cycle", Dopri5, Hybrid, tol, 100, Some(1e-5)));
         v.push(c("Dop853 + table, 100 samples/cycle", Dop853, Hybrid, tol, 100, Some(1e-5)));
@@ -186,8 +194,8 @@ pub fn measure(cases: &[RigCase], reference: &[Sample], reps: usize, progress: &
             for _ in 0..reps.max(1) {
                 match run_once(case) {
                     Ok(r) => {
-                        times.push(r.4);
-                        let slow = r.4 > 1.0;
+                        times.push(r.3);
+                        let slow = r.3 > 1.0;
                         out = Some(r);
                         if slow {
                             break; // a slow case (e.g. the stiff regularised one) is not repeated
@@ -202,13 +210,15 @@ pub fn measure(cases: &[RigCase], reference: &[Sample], reps: usize, progress: &
                             torque_error: f64::NAN,
                             average_error: f64::NAN,
                             steps: 0,
+                            evaluations: 0,
+                            friction_solves: 0,
                             fallbacks: 0,
                             error: Some(e),
                         };
                     }
                 }
             }
-            let (samples, fallbacks, steps, build, _) = out.expect("at least one repetition");
+            let (samples, stats, build, _) = out.expect("at least one repetition");
             times.sort_by(f64::total_cmp);
             let (torque_error, average_error) = errors(&samples, reference, case.samples_per_cycle);
             RigResult {
@@ -218,8 +228,10 @@ pub fn measure(cases: &[RigCase], reference: &[Sample], reps: usize, progress: &
                 build_seconds: build,
                 torque_error,
                 average_error,
-                steps,
-                fallbacks,
+                steps: stats.steps,
+                evaluations: stats.evaluations,
+                friction_solves: stats.friction_solves,
+                fallbacks: stats.fallbacks,
                 error: None,
             }
         })

@@ -101,6 +101,7 @@ pub enum MethodArg {
     Dopri5,
     Dop853,
     Rk4,
+    Dopri5Dense,
 }
 
 /// Most strokes and samples one run may compute (the samples are streamed to cycle.csv; at
@@ -136,6 +137,7 @@ fn config(cmd: &CycleCmd) -> Result<RigConfig> {
             MethodArg::Dopri5 => Method::Dopri5,
             MethodArg::Dop853 => Method::Dop853,
             MethodArg::Rk4 => Method::Rk4,
+            MethodArg::Dopri5Dense => Method::Dopri5Dense,
         };
     }
     if cfg.rig.load <= 0.0 {

@@ -73,7 +73,8 @@ T<sub>f</sub> = &minus;s&middot;&mu;(P, |&omega;|)&middot;R&middot;P with the co
 k<sub>b</sub> = <code>rig.breakaway_factor</code>; {tb20:.1} N&middot;m at 20 kN, {tb60:.1} N&middot;m at 60 kN for the defaults) and reverses at
 once otherwise. While stuck, &omega; = 0, only the actuator lag evolves and the joint reacts T<sub>f</sub> = &minus;T<sub>a</sub>; it breaks
 away when |T<sub>a</sub>| exceeds the breakaway torque. Slip phases are integrated with <code>ode_solvers</code> (Dopri5 or Dop853 with
-<code>rig.rtol</code>/<code>rig.atol</code>, or RK4 with <code>rig.rk4_step</code>). Regularised formulation (<code>rig.formulation</code> = 1):
+<code>rig.rtol</code>/<code>rig.atol</code>, or RK4 with <code>rig.rk4_step</code>; <code>rig.method</code> = 3 integrates with Dopri5 the deviation from the
+loop's steady response to the sine command and reads the states between steps from its continuous extension). Regularised formulation (<code>rig.formulation</code> = 1):
 one smooth ODE with T<sub>f</sub> = &minus;&mu;(P,|&omega;|)RP&middot;tanh(&omega;/&omega;<sub>reg</sub>); <code>stuck</code> is then |&omega;| &le; &omega;<sub>reg</sub>.</p>
 
 <h2>Communication steps</h2>

@@ -17,7 +17,7 @@ pub struct Settings {
     pub use_command_input: bool,
     /// Integer code of `rig.formulation` (0 hybrid, 1 regularised), checked at initialization.
     pub formulation: f64,
-    /// Integer code of `rig.method` (0 dopri5, 1 dop853, 2 rk4), checked at initialization.
+    /// Integer code of `rig.method` (0 dopri5, 1 dop853, 2 rk4, 3 dopri5-dense), checked at initialization.
     pub method: f64,
     /// The `load` input (N): the radial load on the pin.
     pub load: f64,
@@ -72,7 +72,8 @@ impl Settings {
             0.0 => Method::Dopri5,
             1.0 => Method::Dop853,
             2.0 => Method::Rk4,
-            x => return Err(ModelError::invalid("parameter", "rig.method", x, "", "is invalid: it must be 0 (Dopri5), 1 (Dop853) or 2 (RK4)")),
+            3.0 => Method::Dopri5Dense,
+            x => return Err(ModelError::invalid("parameter", "rig.method", x, "", "is invalid: it must be 0 (Dopri5), 1 (Dop853), 2 (RK4) or 3 (Dopri5 dense)")),
         };
         cfg.rig.load = self.load.abs();
         cfg.model.lubricant.temperature = self.temperature;

@@ -110,6 +110,7 @@ pub static METHOD_TYPE: EnumType = EnumType { name: "RigMethod", description: "I
     ("dopri5", 0, "Dormand-Prince 5(4), adaptive (rig.rtol, rig.atol)"),
     ("dop853", 1, "Dormand-Prince 8(5,3), adaptive"),
     ("rk4", 2, "Classical Runge-Kutta, fixed step rig.rk4_step"),
+    ("dopri5-dense", 3, "Dormand-Prince 5(4) on the deviation from the loop's steady sine response, states between steps from its continuous extension"),
 ] };
 
 /// An input row.
@@ -232,7 +233,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(enumeration("rig.formulation", 230, &FORMULATION_TYPE, (|s| s.settings.formulation, |s, x| s.settings.formulation = x),
         "Friction at zero speed: 0 = hybrid (stick/slip with located events), 1 = regularised (tanh(omega/rig.regularisation_speed)); [rig] formulation = \"hybrid\" | \"regularised\""));
     rows.push(enumeration("rig.method", 231, &METHOD_TYPE, (|s| s.settings.method, |s, x| s.settings.method = x),
-        "Integrator: 0 = Dopri5 (adaptive, rig.rtol/rig.atol), 1 = Dop853 (adaptive), 2 = RK4 (fixed step rig.rk4_step); [rig] method = \"dopri5\" | \"dop853\" | \"rk4\""));
+        "Integrator: 0 = Dopri5 (adaptive, rig.rtol/rig.atol), 1 = Dop853 (adaptive), 2 = RK4 (fixed step rig.rk4_step), 3 = Dopri5 on the deviation from the loop's steady response to the sine command, states between steps from its continuous extension; [rig] method = \"dopri5\" | \"dop853\" | \"rk4\" | \"dopri5-dense\""));
     rows.extend(crate::parameters::rows(300, None, |s: &Values| &s.settings.cfg.model, |s| &mut s.settings.cfg.model));
     rows.extend(fidelity::rows(400, None, DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.settings.fidelity, |s| &mut s.settings.fidelity));
     rows.push(crate::inputs::temperature(3,
