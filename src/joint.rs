@@ -467,10 +467,28 @@ impl Joint {
     /// and with the solve's sensitivities for the next start. Errors as
     /// [`Joint::evaluate_from`] (the same checks on the same numbers).
     pub fn friction_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> Result<Friction, ModelError> {
+        self.friction_with(lt, omega, guess, true)
+    }
+
+    /// As [`Joint::friction_at`] started from [`Joint::cold_start`] (so a function of the
+    /// load of `lt`, `omega` and the parameters alone, whatever was evaluated before) and
+    /// without the root's sensitivities (`dlogit_dln_load` and `dlogit_dln_speed` are NaN
+    /// when moving): the cheapest full-fidelity torque, one residual evaluation in most of
+    /// the boundary and mixed regimes. Bit for bit the torque of [`Joint::evaluate`].
+    /// This is what the rig integrates: with the start table ~1e-6 from the root, a
+    /// neighbour's root moved by its sensitivities is no better a start, and computing
+    /// those sensitivities cost 18 % of a rig run's instructions (callgrind,
+    /// `examples/rig_once.rs`: 79.5 M against 65.4 M instructions).
+    pub fn friction_cold_at(&self, lt: &LoadTerms, omega: f64) -> Result<Friction, ModelError> {
+        self.friction_with(lt, omega, None, false)
+    }
+
+    /// [`Joint::friction_at`] with the sensitivities only when `sensitivities`.
+    fn friction_with(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>, sensitivities: bool) -> Result<Friction, ModelError> {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
         }
-        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess, true);
+        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess, sensitivities);
         let mu = mu_fluid + mu_asperity;
         let torque = mu * self.params.geometry.pin_radius * lt.load;
         // The checks of `check_finite`, in its order, on the same numbers (h_min and λ_min are

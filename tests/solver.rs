@@ -438,3 +438,30 @@ fn a_cold_evaluation_is_the_same_whatever_was_evaluated_before() {
     }
     assert_eq!(c, joint(), "equal joints whatever rows each has solved");
 }
+
+#[test]
+fn friction_cold_at_is_evaluate_bit_for_bit_whatever_came_before() {
+    // Joint::friction_cold_at (what the rig integrates) starts from the table and skips the
+    // sensitivities: the torque and μ of Joint::evaluate bit for bit, in any call order, and
+    // the sensitivities NaN while moving (0 at rest).
+    let j = joint();
+    for load in [5e3, 20e3, -60e3] {
+        let lt = j.load_terms(load).unwrap();
+        let mut omegas: Vec<f64> = speeds(40).into_iter().chain([0.0, -3.0]).collect();
+        for pass in 0..2 {
+            for &omega in &omegas {
+                let op = j.evaluate(load, omega).unwrap();
+                let f = j.friction_cold_at(&lt, omega).unwrap();
+                assert_eq!(f.torque.to_bits(), op.torque.to_bits(), "P={load} ω={omega} pass {pass}");
+                assert_eq!(f.friction_coefficient.to_bits(), op.friction_coefficient.to_bits());
+                assert_eq!(f.logit.to_bits(), op.logit.to_bits());
+                if omega != 0.0 {
+                    assert!(f.dlogit_dln_speed.is_nan() && f.dlogit_dln_load.is_nan(), "ω={omega}");
+                }
+            }
+            omegas.reverse();
+        }
+    }
+    let lt = j.load_terms(20e3).unwrap();
+    assert_eq!(j.friction_cold_at(&lt, f64::INFINITY).unwrap_err().to_string(), j.evaluate(20e3, f64::INFINITY).unwrap_err().to_string());
+}

@@ -68,38 +68,15 @@ pub(crate) struct Friction {
     pub op: Option<Evaluation>,
 }
 
-/// The last solve's position and sensitivities: a first-order start for the next.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Predictor {
-    load: f64,
-    speed: f64,
-    dy_dln_load: f64,
-    dy_dln_speed: f64,
-}
-
-impl Predictor {
-    /// The root `y` (found at this predictor's load and speed) moved to (`load`, `speed`):
-    /// y + ∂y/∂ln P·Δln P + ∂y/∂ln u·Δln u, with Δln x ≈ 2(x − x₀)/(x + x₀) (no logarithm;
-    /// third-order accurate). Only a start: the solve converges to its own rule from it. None
-    /// for far moves (|Δln u| or |Δln P| > 0.5, e.g. towards a reversal).
-    fn predict(&self, y: f64, load: f64, speed: f64) -> Option<f64> {
-        let d_ln = |x: f64, x0: f64| 2.0 * (x - x0) / (x + x0);
-        let (dp, du) = (d_ln(load, self.load), d_ln(speed, self.speed));
-        (du.abs() <= 0.5 && dp.abs() <= 0.5).then_some(y + self.dy_dln_load * dp + self.dy_dln_speed * du)
-    }
-}
-
 /// The right-hand side for one phase.
 pub(crate) struct Dynamics<'a> {
     pub joint: &'a Joint,
     pub rig: &'a RigParams,
     pub excitation: &'a dyn Excitation,
     pub phase: Phase,
-    /// Warm start of the core's load-sharing solve (its last logit).
+    /// Warm start of the core's load-sharing solve (its last logit), for
+    /// [`Self::operating_point`] (the table level's fallbacks).
     pub guess: Cell<f64>,
-    /// Where the last solve of the derivative's friction was, with its sensitivities, so the
-    /// next one starts from a first-order prediction (this Dynamics' own history only).
-    pub predictor: Cell<Option<Predictor>>,
     /// The core's load terms at the last load met (the drive's load is often constant).
     pub load_terms: Cell<Option<LoadTerms>>,
     /// First invalid load met (time, value); the derivative is NaN from then on.
@@ -127,7 +104,6 @@ impl<'a> Dynamics<'a> {
             excitation,
             phase,
             guess: Cell::new(guess),
-            predictor: Cell::new(None),
             load_terms: Cell::new(None),
             fault: Cell::new(None),
             model_fault: RefCell::new(None),
@@ -179,11 +155,11 @@ impl<'a> Dynamics<'a> {
     }
 
     /// The friction torque magnitude μ R P at (P, speed ≥ 0) for the equations of motion: the
-    /// fidelity level inside its envelope, else the full solve ([`Joint::friction_at`], the
-    /// same torque as [`Joint::evaluate_from`] bit for bit for the same start) with the load
-    /// terms kept while the load is unchanged, started from the last root moved to first
-    /// order in ln P and ln u (its sensitivities from the last solve). 0 at zero load; on a
-    /// model error, 0 with the error recorded in `model_fault`, as [`Self::operating_point`].
+    /// fidelity level inside its envelope, else the full solve from the start table
+    /// ([`Joint::friction_cold_at`], the torque of [`Joint::evaluate`] bit for bit, a function
+    /// of (P, speed) alone) with the load terms kept while the load is unchanged. 0 at zero
+    /// load; on a model error, 0 with the error recorded in `model_fault`, as
+    /// [`Self::operating_point`].
     pub fn torque(&self, load: f64, speed: f64) -> f64 {
         if load == 0.0 {
             return 0.0;
@@ -208,24 +184,10 @@ impl<'a> Dynamics<'a> {
                 Err(e) => return fail(e),
             },
         };
-        // Near the last solve: its root moved to first order. Otherwise (the first solve of
-        // this Dynamics, or a far move such as the approach to a reversal) the start table's
-        // guess, a function of (P, u) alone.
-        let g = self.guess.get();
-        let predicted = self.predictor.get().filter(|_| g.is_finite() && speed > 0.0).and_then(|p| p.predict(g, lt.load, speed));
-        let start = match predicted {
-            Some(y) => y,
-            None if speed > 0.0 => self.joint.cold_start(lt.load, speed),
-            None => g,
-        };
         self.solves.set(self.solves.get() + 1);
-        match self.joint.friction_at(&lt, speed, start.is_finite().then_some(start)) {
+        match self.joint.friction_cold_at(&lt, speed) {
             Ok(f) => {
                 self.residuals.set(self.residuals.get() + u64::from(f.evaluations));
-                if f.logit.is_finite() {
-                    self.guess.set(f.logit);
-                    self.predictor.set(Some(Predictor { load: lt.load, speed, dy_dln_load: f.dlogit_dln_load, dy_dln_speed: f.dlogit_dln_speed }));
-                }
                 f.torque
             }
             Err(e) => fail(e),
@@ -263,7 +225,8 @@ impl<'a> Dynamics<'a> {
     }
 
     /// The signed friction torque on the pin in this phase at (t, y) with load P, as
-    /// [`Self::friction`]'s `torque` (bit for bit for the same start), without the operating point.
+    /// [`Self::friction`]'s `torque` (to the solver tolerance: the operating point may start
+    /// from the last root), without the operating point.
     pub fn friction_torque(&self, load: f64, y: &State) -> f64 {
         let w = y[SPEED];
         match self.phase {
