@@ -199,9 +199,8 @@ impl<'a> Dynamics<'a> {
         self.rig.breakaway_factor * self.joint.boundary_torque(load)
     }
 
-    /// Torque demand of the position loop, saturated.
-    pub fn demand(&self, t: f64, angle: f64, speed: f64) -> f64 {
-        let (cmd, rate) = self.excitation.command(t);
+    /// Torque demand of the position loop, saturated, for the command (θ_cmd, θ̇_cmd) at the time.
+    fn demand(&self, (cmd, rate): (f64, f64), angle: f64, speed: f64) -> f64 {
         let r = self.rig;
         (r.position_gain * (cmd - angle) + r.velocity_gain * (rate - speed)).clamp(-r.torque_limit, r.torque_limit)
     }
@@ -241,6 +240,12 @@ impl<'a> Dynamics<'a> {
 
     /// dy/dt. The time is taken from the state (y[TIME]), not from the integrator.
     pub fn derivative(&self, _t: f64, y: &State) -> State {
+        self.derivative_commanded(y, self.excitation.command(y[TIME]))
+    }
+
+    /// [`Self::derivative`] with the command (θ_cmd, θ̇_cmd) at y[TIME] given (bit for bit
+    /// `excitation.command(y[TIME])`, e.g. from the steady response's own sin/cos).
+    pub fn derivative_commanded(&self, y: &State, command: (f64, f64)) -> State {
         self.evaluations.set(self.evaluations.get() + 1);
         let t = y[TIME];
         let load = match self.load(t) {
@@ -254,7 +259,7 @@ impl<'a> Dynamics<'a> {
         };
         let r = self.rig;
         let (w, ta) = (y[SPEED], y[TORQUE]);
-        let torque_rate = (self.demand(t, y[ANGLE], w) - ta) / r.servo_time_constant;
+        let torque_rate = (self.demand(command, y[ANGLE], w) - ta) / r.servo_time_constant;
         if self.phase == Phase::Stick {
             return State::from([0.0, 0.0, torque_rate, 0.0, 0.0, 1.0]);
         }

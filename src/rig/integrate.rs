@@ -103,8 +103,8 @@ impl System<f64, State> for Stepper<'_, '_> {
             Some(s) => {
                 // The time is the state's own (unshifted, unscaled) component.
                 let tt = y[TIME];
-                let (ys, rate) = s.at(tt);
-                (self.dynamics.derivative(t, &(y.component_mul(&s.scale) + ys)) - rate).component_div(&s.scale)
+                let (ys, rate, command) = s.at_with_command(tt);
+                (self.dynamics.derivative_commanded(&(y.component_mul(&s.scale) + ys), command) - rate).component_div(&s.scale)
             }
         };
     }

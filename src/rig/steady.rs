@@ -35,6 +35,8 @@ pub(crate) struct Steady {
     angle: f64,
     /// J (kg·m²).
     inertia: f64,
+    /// The command's amplitude A (rad), for [`Self::at_with_command`].
+    command_amplitude: f64,
     /// Per-component scale of u.
     pub scale: State,
 }
@@ -53,13 +55,23 @@ impl Steady {
         let amp = (a * (nr * dr + ni * di) / den, a * (ni * dr - nr * di) / den);
         let size = amp.0.hypot(amp.1);
         let scale = State::from([1.0 + size, 1.0 + w * size, 1.0 + signed_torque.abs() + j * w * w * size, 1.0, 1.0, 1.0]);
-        Self { omega: w, amp, torque: signed_torque, angle: -signed_torque / kp, inertia: j, scale }
+        Self { omega: w, amp, torque: signed_torque, angle: -signed_torque / kp, inertia: j, command_amplitude: a, scale }
     }
 
     /// (y_s(t), ẏ_s(t)); the W, D and t components are 0.
     pub fn at(&self, t: f64) -> (State, State) {
+        let (ys, rate, _) = self.at_with_command(t);
+        (ys, rate)
+    }
+
+    /// [`Self::at`] and the command (θ_cmd, θ̇_cmd) at `t` from the same sin/cos: bit for bit
+    /// [`SineCommand::at`] of the command this response was built for (Ω = 2π f formed the same
+    /// way), so the right-hand side needs one sin/cos an evaluation instead of two.
+    pub fn at_with_command(&self, t: f64) -> (State, State, (f64, f64)) {
         let w = self.omega;
         let (s, c) = (w * t).sin_cos();
+        let a = self.command_amplitude;
+        let command = (a * s, a * w * c);
         // Im((iΩ)^k·(ar + i ai)·e^{iΩt}) for k = 0..3.
         let (ar, ai) = self.amp;
         let im0 = ar * s + ai * c;
@@ -67,7 +79,7 @@ impl Steady {
         let im2 = -w * w * im0;
         let im3 = -w * w * im1;
         let j = self.inertia;
-        (State::from([im0 + self.angle, im1, j * im2 + self.torque, 0.0, 0.0, 0.0]), State::from([im1, im2, j * im3, 0.0, 0.0, 0.0]))
+        (State::from([im0 + self.angle, im1, j * im2 + self.torque, 0.0, 0.0, 0.0]), State::from([im1, im2, j * im3, 0.0, 0.0, 0.0]), command)
     }
 
     /// y from u at time t.
@@ -98,6 +110,8 @@ mod tests {
             let t = 0.037 * f64::from(k);
             let (y, dy) = st.at(t);
             let (c, cr) = cmd.at(t);
+            let (_, _, (c2, cr2)) = st.at_with_command(t);
+            assert_eq!((c2.to_bits(), cr2.to_bits()), (c.to_bits(), cr.to_bits()), "t = {t}");
             let r0 = dy[0] - y[1];
             let r1 = rig.inertia * dy[1] - (y[2] - tc);
             let r2 = rig.servo_time_constant * dy[2]
