@@ -5,7 +5,7 @@ use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
 use crate::mixed::{solve_starved, solve_starved_with, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
 use crate::params::{Lubricant, ParamError, Params};
-use crate::solve_start::StartTable;
+use crate::solve_start::{StartCut, StartTable};
 use crate::viscosity::{limiting_shear_stress, ln_roelands_from};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -439,12 +439,22 @@ impl Joint {
 
     /// The load-sharing solve and μ (eqs. 3, 8, 10) at the load of `lt` and speed u = |ω|R:
     /// (ln u, the solve, μ_fluid, μ_asperity). `omega` must be finite.
-    fn solve_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>, sensitivities: bool) -> (f64, LoadSharing, f64, f64) {
+    fn solve_at(&self, lt: &LoadTerms, omega: f64, start: Start, sensitivities: bool) -> (f64, LoadSharing, f64, f64) {
         let p = &self.params;
         let u = omega.abs() * p.geometry.pin_radius;
         let ln_u = u.ln();
         let film = (u > 0.0).then(|| self.film_unit.at_ratio(lt.ln_load, ln_u));
-        let guess = if u > 0.0 { Some(self.start_from(guess, lt.ln_load, ln_u)) } else { guess };
+        let guess = match start {
+            Start::From(guess) if u > 0.0 => Some(self.start_from(guess, lt.ln_load, ln_u)),
+            Start::From(guess) => guess,
+            // The cut is the table at its load to rounding; where it has no value (another
+            // load, a corner without derivatives) the table decides.
+            Start::Cut(cut) if u > 0.0 => Some(match self.start.cut_guess(cut, ln_u, |a, b, w| self.start_node(a, b, w)) {
+                g if g.is_finite() && cut.ln_load() == lt.ln_load => g,
+                _ => self.table_start(lt.ln_load, ln_u),
+            }),
+            Start::Cut(_) => None,
+        };
         let ls = solve_starved_with(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved, sensitivities);
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (MODEL_NOTES), whatever η.
@@ -467,7 +477,7 @@ impl Joint {
     /// and with the solve's sensitivities for the next start. Errors as
     /// [`Joint::evaluate_from`] (the same checks on the same numbers).
     pub fn friction_at(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> Result<Friction, ModelError> {
-        self.friction_with(lt, omega, guess, true)
+        self.friction_with(lt, omega, Start::From(guess), true)
     }
 
     /// As [`Joint::friction_at`] started from [`Joint::cold_start`] (so a function of the
@@ -480,15 +490,35 @@ impl Joint {
     /// those sensitivities cost 18 % of a rig run's instructions (callgrind,
     /// `examples/rig_once.rs`: 79.5 M against 65.4 M instructions).
     pub fn friction_cold_at(&self, lt: &LoadTerms, omega: f64) -> Result<Friction, ModelError> {
-        self.friction_with(lt, omega, None, false)
+        self.friction_with(lt, omega, Start::From(None), false)
+    }
+
+    /// The start table at the load of `lt`, for [`Joint::friction_cut_at`].
+    pub fn start_cut(&self, lt: &LoadTerms) -> StartCut {
+        self.start.cut(lt.ln_load)
+    }
+
+    /// Move `cut` to the load of `lt`, keeping its allocation (as a new [`Joint::start_cut`]).
+    pub fn recut(&self, cut: &mut StartCut, lt: &LoadTerms) {
+        self.start.recut(cut, lt.ln_load);
+    }
+
+    /// As [`Joint::friction_cold_at`], the solve started from `cut` (the start table cut at
+    /// this load, [`Joint::start_cut`]) instead of the two-dimensional table: the same start
+    /// to rounding, a fifth of its interpolation work, so the same root to the solver's
+    /// stopping rule (not bit for bit [`Joint::evaluate`]). Still a function of (P, ω) and
+    /// the parameters alone, whatever was evaluated before. A cut of another load or of
+    /// another joint's grid is not used (the table is); a cut belongs to the joint that made it.
+    pub fn friction_cut_at(&self, lt: &LoadTerms, cut: &mut StartCut, omega: f64) -> Result<Friction, ModelError> {
+        self.friction_with(lt, omega, Start::Cut(cut), false)
     }
 
     /// [`Joint::friction_at`] with the sensitivities only when `sensitivities`.
-    fn friction_with(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>, sensitivities: bool) -> Result<Friction, ModelError> {
+    fn friction_with(&self, lt: &LoadTerms, omega: f64, start: Start, sensitivities: bool) -> Result<Friction, ModelError> {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
         }
-        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess, sensitivities);
+        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, start, sensitivities);
         let mu = mu_fluid + mu_asperity;
         let torque = mu * self.params.geometry.pin_radius * lt.load;
         // The checks of `check_finite`, in its order, on the same numbers (h_min and λ_min are
@@ -526,7 +556,7 @@ impl Joint {
         let g = &self.params.geometry;
         let (load, hz) = (lt.load, lt.hertz);
         let u = omega.abs() * g.pin_radius;
-        let (ln_u, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, guess, false);
+        let (ln_u, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, Start::From(guess), false);
         let mu = mu_fluid + mu_asperity;
         let op = OperatingPoint {
             load,
@@ -557,6 +587,13 @@ impl Joint {
         check_finite(&op)?;
         Ok((op, ls))
     }
+}
+
+/// Where a solve starts: a caller's guess checked against the start table (or the table
+/// alone), or the table's cut at the load.
+enum Start<'c> {
+    From(Option<f64>),
+    Cut(&'c mut StartCut),
 }
 
 /// The parts of an evaluation that depend on the load alone ([`Joint::load_terms`]).

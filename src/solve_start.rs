@@ -85,6 +85,19 @@ fn axis(lo: f64, hi: f64) -> (f64, f64, usize) {
     (lo, (hi - lo) / (n - 1) as f64, n)
 }
 
+/// The cell of `x` on the axis (first `x0`, spacing `dx`, `n` nodes): its first node and the
+/// fraction across it, clamped to the axis (NaN: the first cell).
+#[inline]
+fn cell(x: f64, x0: f64, dx: f64, n: usize) -> (usize, f64) {
+    if n < 2 {
+        return (0, 0.0);
+    }
+    let s = ((x - x0) / dx).clamp(0.0, (n - 1) as f64);
+    let s = if s.is_nan() { 0.0 } else { s };
+    let i = (s as usize).min(n - 2);
+    (i, s - i as f64)
+}
+
 /// Cubic Hermite on [0, 1] through (0, a) and (1, b) with slopes `da`, `db` (per unit t).
 #[inline]
 fn hermite(t: f64, a: f64, da: f64, b: f64, db: f64) -> f64 {
@@ -157,15 +170,6 @@ impl StartTable {
         if self.np == 0 || self.nu == 0 {
             return f64::NAN;
         }
-        let cell = |x: f64, x0: f64, dx: f64, n: usize| -> (usize, f64) {
-            if n < 2 {
-                return (0, 0.0);
-            }
-            let s = ((x - x0) / dx).clamp(0.0, (n - 1) as f64);
-            let s = if s.is_nan() { 0.0 } else { s };
-            let i = (s as usize).min(n - 2);
-            (i, s - i as f64)
-        };
         let (i, fp) = cell(ln_p, self.ln_p0, self.dp, self.np);
         let (j, fu) = cell(ln_u, self.ln_u0, self.du, self.nu);
         let (i1, j1) = ((i + 1).min(self.np - 1), (j + 1).min(self.nu - 1));
@@ -195,6 +199,62 @@ impl StartTable {
         (v, self.dp * g)
     }
 
+    /// The table at one load ln P_T = `ln_p`, for many starts at that load ([`StartCut`],
+    /// read with [`StartTable::cut_guess`]).
+    pub fn cut(&self, ln_p: f64) -> StartCut {
+        let mut cut = StartCut { ln_p, row: 0, fp: 0.0, columns: Vec::new() };
+        self.recut(&mut cut, ln_p);
+        cut
+    }
+
+    /// Move `cut` to this table at ln P_T = `ln_p`, keeping its allocation: the same cut as
+    /// [`StartTable::cut`] there.
+    pub fn recut(&self, cut: &mut StartCut, ln_p: f64) {
+        let (row, fp) = cell(ln_p, self.ln_p0, self.dp, self.np);
+        (cut.ln_p, cut.row, cut.fp) = (ln_p, row, fp);
+        cut.columns.clear();
+        cut.columns.resize(self.nu, None);
+    }
+
+    /// The start of [`StartTable::guess`] at (the cut's load, ln u = `ln_u`), to rounding,
+    /// from the cut (its nodes there computed first if they were not yet, and the table's
+    /// two rows there solved with `root` if they were not yet). NaN when the table is empty,
+    /// when the cut is not of a table of this size (a cut of another table of the same size
+    /// is read: it is the caller's to keep a cut with its table), and where the bicubic is not finite (a
+    /// corner without derivatives: [`StartTable::guess`] then falls back to bilinear).
+    #[inline]
+    pub fn cut_guess(&self, cut: &mut StartCut, ln_u: f64, root: impl Fn(f64, f64, Option<f64>) -> Node) -> f64 {
+        if self.np == 0 || cut.columns.len() != self.nu || cut.row >= self.np {
+            return f64::NAN;
+        }
+        let (j, fu) = cell(ln_u, self.ln_u0, self.du, self.nu);
+        let j1 = (j + 1).min(self.nu - 1);
+        let (a, da) = match cut.columns[j] {
+            Some(c) => c,
+            None => self.cut_column(cut, j, &root),
+        };
+        let (b, db) = match cut.columns[j1] {
+            Some(c) => c,
+            None => self.cut_column(cut, j1, &root),
+        };
+        hermite(fu, a, da, b, db)
+    }
+
+    /// The cut's node `j`, computed and kept: the bicubic's value and scaled ln u slope at
+    /// (its load, node j).
+    #[cold]
+    #[inline(never)]
+    fn cut_column(&self, cut: &mut StartCut, j: usize, root: &impl Fn(f64, f64, Option<f64>) -> Node) -> (f64, f64) {
+        let (r0, r1) = (self.row(cut.row, root), self.row((cut.row + 1).min(self.np - 1), root));
+        let (n0, n1) = (&r0.nodes[j], &r1.nodes[j]);
+        let (dp, du) = (self.dp, self.du);
+        let y = hermite(cut.fp, n0.y, dp * n0.dy_dln_load, n1.y, dp * n1.dy_dln_load);
+        let s = hermite(cut.fp, du * n0.dy_dln_speed, dp * (du * r0.cross[j]), du * n1.dy_dln_speed, dp * (du * r1.cross[j]));
+        cut.columns[j] = Some((y, s));
+        (y, s)
+    }
+
+
     /// Nodes in the table (solved or not).
     pub fn len(&self) -> usize {
         self.np * self.nu
@@ -208,6 +268,35 @@ impl StartTable {
     /// Whether the table has no node.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
+    }
+}
+
+/// [`StartTable::guess`] at one load, for a host that starts many solves there (the rig at a
+/// constant load), read with [`StartTable::cut_guess`]: a cubic Hermite along ln u through
+/// the cut's nodes, each node's value and ln u slope being the bicubic's at this load,
+/// computed on first use and kept.
+///
+/// The bicubic is linear in its node data, so at a fixed ln P_T it *is* a cubic Hermite in
+/// ln u, whose node values are the Hermite in ln P_T of the two rows' values and ln P_T
+/// slopes, and whose node slopes are the Hermite in ln P_T of the rows' ln u slopes and
+/// mixed derivatives: the same start as [`StartTable::guess`] to rounding, at one Hermite
+/// an evaluation instead of five. Each node is a function of the load (and the table)
+/// alone, so a start is the same whichever starts came before, and whether the cut is new
+/// or kept: deterministic, as the table's.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StartCut {
+    ln_p: f64,
+    /// The table row below the load, and the fraction of the way to the next.
+    row: usize,
+    fp: f64,
+    /// (value, Δln u·∂y/∂ln u) at each ln u node, once computed.
+    columns: Vec<Option<(f64, f64)>>,
+}
+
+impl StartCut {
+    /// ln P_T of the cut.
+    pub fn ln_load(&self) -> f64 {
+        self.ln_p
     }
 }
 
@@ -271,6 +360,46 @@ mod tests {
             worst_linear = worst_linear.max((b0.sin() + f * (b1.sin() - b0.sin()) - b.sin()).abs());
         }
         assert!(worst < 0.1 * worst_linear, "{worst} vs {worst_linear}");
+    }
+
+    #[test]
+    fn a_cut_is_the_bicubic_at_its_load() {
+        // A function with every kind of term: the cut must give the table's start (to
+        // rounding) at any load and speed, inside and outside the grid, whatever the order.
+        let f = |a: f64, b: f64| (0.3 * a).sin() * (0.2 * b).cos() + 0.01 * a * b * b;
+        let fa = |a: f64, b: f64| 0.3 * (0.3 * a).cos() * (0.2 * b).cos() + 0.01 * b * b;
+        let fb = |a: f64, b: f64| -0.2 * (0.3 * a).sin() * (0.2 * b).sin() + 0.02 * a * b;
+        let root = |a: f64, b: f64, _: Option<f64>| node(f(a, b), fa(a, b), fb(a, b));
+        let t = StartTable::new(1e30);
+        let mut worst = 0.0f64;
+        for k in 0..40 {
+            let ln_p = -4.0 + 0.61 * f64::from(k);
+            let mut cut = t.cut(ln_p);
+            assert_eq!(cut.ln_load(), ln_p);
+            for m in (0..120).rev() {
+                let ln_u = -25.0 + 0.29 * f64::from(m);
+                let (c, g) = (t.cut_guess(&mut cut, ln_u, root), t.guess(ln_p, ln_u, root));
+                worst = worst.max((c - g).abs() / (1.0 + g.abs()));
+                // Asked again (the column is kept) and from a new cut: the same value.
+                assert_eq!(t.cut_guess(&mut cut, ln_u, root).to_bits(), c.to_bits());
+                assert_eq!(t.cut_guess(&mut t.cut(ln_p), ln_u, root).to_bits(), c.to_bits());
+            }
+        }
+        assert!(worst < 1e-14, "{worst}");
+        // A different cut of the same table gives a different start (the test can fail).
+        let mut other = t.cut(3.0);
+        assert!((t.cut_guess(&mut other, 0.5, root) - t.guess(3.5, 0.5, root)).abs() > 1e-3);
+        // Moved to another load: the cut made there, bit for bit.
+        t.recut(&mut other, 7.7);
+        let mut fresh = t.cut(7.7);
+        for m in 0..50 {
+            let ln_u = -20.0 + 0.5 * f64::from(m);
+            assert_eq!(t.cut_guess(&mut other, ln_u, root).to_bits(), t.cut_guess(&mut fresh, ln_u, root).to_bits());
+        }
+        // An empty table has no start; a cut of a table of another size is not read.
+        let empty = StartTable::empty();
+        assert!(empty.cut_guess(&mut empty.cut(1.0), 0.0, root).is_nan());
+        assert!(StartTable::new(1e5).cut_guess(&mut t.cut(30.0), 0.0, root).is_nan(), "a row beyond the table");
     }
 
     #[test]

@@ -26,6 +26,8 @@ use super::excitation::Excitation;
 use super::params::RigParams;
 use crate::fidelity::{Evaluation, Evaluator, Source};
 use crate::joint::{Joint, LoadTerms, ModelError};
+use crate::solve_start::StartCut;
+use super::steady::Loop;
 use serde::{Deserialize, Serialize};
 use std::cell::{Cell, RefCell};
 
@@ -79,6 +81,11 @@ pub(crate) struct Dynamics<'a> {
     pub guess: Cell<f64>,
     /// The core's load terms at the last load met (the drive's load is often constant).
     pub load_terms: Cell<Option<LoadTerms>>,
+    /// The start table cut at that load ([`Joint::friction_cut_at`]); the owner may hand a
+    /// kept one in and take it back (its values depend on the load alone).
+    pub cut: RefCell<Option<StartCut>>,
+    /// The loop linearised at a load (`Method::Dopri5Dense`), kept as `cut` is.
+    pub linear: Cell<Option<(f64, Loop)>>,
     /// First invalid load met (time, value); the derivative is NaN from then on.
     pub fault: Cell<Option<(f64, f64)>>,
     /// First friction evaluation the model could not answer (load, speed, why); the
@@ -105,6 +112,8 @@ impl<'a> Dynamics<'a> {
             phase,
             guess: Cell::new(guess),
             load_terms: Cell::new(None),
+            cut: RefCell::new(None),
+            linear: Cell::new(None),
             fault: Cell::new(None),
             model_fault: RefCell::new(None),
             level: None,
@@ -155,11 +164,11 @@ impl<'a> Dynamics<'a> {
     }
 
     /// The friction torque magnitude μ R P at (P, speed ≥ 0) for the equations of motion: the
-    /// fidelity level inside its envelope, else the full solve from the start table
-    /// ([`Joint::friction_cold_at`], the torque of [`Joint::evaluate`] bit for bit, a function
-    /// of (P, speed) alone) with the load terms kept while the load is unchanged. 0 at zero
-    /// load; on a model error, 0 with the error recorded in `model_fault`, as
-    /// [`Self::operating_point`].
+    /// fidelity level inside its envelope, else the full solve from the start table cut at
+    /// the load ([`Joint::friction_cut_at`]: the torque of [`Joint::evaluate`] to the solve's
+    /// stopping rule, a function of (P, speed) alone), with the load terms and the cut kept
+    /// while the load is unchanged. 0 at zero load; on a model error, 0 with the error
+    /// recorded in `model_fault`, as [`Self::operating_point`].
     pub fn torque(&self, load: f64, speed: f64) -> f64 {
         if load == 0.0 {
             return 0.0;
@@ -174,18 +183,24 @@ impl<'a> Dynamics<'a> {
             }
             0.0
         };
-        let lt = match self.load_terms.get() {
-            Some(lt) if lt.load == load.abs() => lt,
-            _ => match self.joint.load_terms(load) {
+        let mut cut = self.cut.borrow_mut();
+        let lt = match (self.load_terms.get(), cut.as_mut()) {
+            (Some(lt), Some(_)) if lt.load == load.abs() => lt,
+            (_, c) => match self.joint.load_terms(load) {
                 Ok(lt) => {
                     self.load_terms.set(Some(lt));
+                    match c {
+                        Some(c) => self.joint.recut(c, &lt),
+                        None => *cut = Some(self.joint.start_cut(&lt)),
+                    }
                     lt
                 }
                 Err(e) => return fail(e),
             },
         };
+        let Some(cut) = cut.as_mut() else { return 0.0 };
         self.solves.set(self.solves.get() + 1);
-        match self.joint.friction_cold_at(&lt, speed) {
+        match self.joint.friction_cut_at(&lt, cut, speed) {
             Ok(f) => {
                 self.residuals.set(self.residuals.get() + u64::from(f.evaluations));
                 f.torque

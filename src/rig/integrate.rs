@@ -30,7 +30,8 @@
 //! number of segments per call, so one call does bounded work.
 
 use super::dynamics::{Dynamics, Phase, State, TIME};
-use super::steady::Steady;
+use super::excitation::SineCommand;
+use super::steady::{Loop, Steady};
 use super::params::{Method, RigParams};
 use super::RigError;
 use ode_solvers::continuous_output_model::ContinuousOutputModel;
@@ -57,18 +58,40 @@ impl Dense {
 /// For [`Method::Dopri5Dense`] in a slip (or the regularised) phase driven by a sine command:
 /// the loop's steady response to integrate the deviation from, with the constant part of the
 /// friction, s·μ_c·R·P at the load at `t0` (see `rig/steady.rs`). None otherwise.
-fn steady(rig: &RigParams, d: &Dynamics, t0: f64) -> Option<Steady> {
+fn steady(rig: &RigParams, d: &Dynamics, t0: f64, y0: &State) -> Option<Steady> {
     if rig.method != Method::Dopri5Dense {
         return None;
     }
     let command = d.excitation.sine()?;
-    let torque = match d.phase {
-        Phase::Slip(s) => f64::from(s) * d.joint.boundary_torque(d.load(t0).ok()?),
-        Phase::Smooth => 0.0,
+    let load = d.load(t0).ok()?;
+    let (torque, lin) = match d.phase {
+        Phase::Slip(s) => (f64::from(s) * d.joint.boundary_torque(load), linearised(rig, d, load, command)),
+        Phase::Smooth => (0.0, Loop::new(rig, 0.0)),
         Phase::Stick => return None,
     };
-    let st = Steady::new(rig, command, torque);
+    // A deviation below the tolerance is not worth a free response.
+    let st = Steady::new(rig, command, torque, &lin).with_free_response(&lin, t0, y0, rig.rtol.min(rig.atol));
     st.scale.iter().all(|x| x.is_finite()).then_some(st)
+}
+
+/// The loop linearised about a slip at `load` ([`Loop`]): d from the friction's secant from
+/// rest to the command's peak speed, kept in `d.linear` for the load; d = 0 where the model
+/// has no answer there or where the loop with d would not decay (the friction rising enough
+/// with speed to destabilise it).
+fn linearised(rig: &RigParams, d: &Dynamics, load: f64, command: SineCommand) -> Loop {
+    if let Some((p, lin)) = d.linear.get()
+        && p == load
+    {
+        return lin;
+    }
+    let w_ref = std::f64::consts::TAU * command.frequency * command.amplitude.abs();
+    let slope = match d.joint.evaluate(load, w_ref) {
+        Ok(op) if load > 0.0 && w_ref > 0.0 => -(op.torque - d.joint.boundary_torque(load)) / w_ref,
+        _ => 0.0,
+    };
+    let lin = Some(Loop::new(rig, if slope.is_finite() { slope } else { 0.0 })).filter(Loop::decays).unwrap_or_else(|| Loop::new(rig, 0.0));
+    d.linear.set(Some((load, lin)));
+    lin
 }
 
 /// The accepted steps of one segment.
@@ -183,7 +206,7 @@ pub(crate) fn segment(
         Method::Dopri5 | Method::Dop853 | Method::Dopri5Dense => {
             let h = h0.min(span).max(0.0);
             let mut full = false;
-            let shift = steady(rig, d, t0);
+            let shift = steady(rig, d, t0, &y0);
             let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full, shift };
             let (xs, ys, model) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
                 Err(e) => e,

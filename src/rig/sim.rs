@@ -27,6 +27,9 @@ use super::params::Formulation;
 use super::RigError;
 use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
 use crate::joint::Joint;
+use crate::solve_start::StartCut;
+use super::steady::Loop;
+use std::cell::RefCell;
 use crate::fmt::Num;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
@@ -222,6 +225,11 @@ pub struct RigSim {
     burst: u64,
     /// The friction fidelity ([`RigSim::set_fidelity`]); None: the full solve.
     fidelity: Option<Arc<Evaluator>>,
+    /// The start table cut at the last load integrated, kept across segments (a cache: its
+    /// values are functions of the load alone, so results do not depend on it).
+    start_cut: Option<StartCut>,
+    /// The loop linearised at the last load (`Method::Dopri5Dense`), kept likewise.
+    linear: Option<(f64, Loop)>,
 }
 
 impl std::fmt::Debug for RigSim {
@@ -272,6 +280,8 @@ impl RigSim {
             stats: Stats::default(),
             burst: 0,
             fidelity: None,
+            start_cut: None,
+            linear: None,
         };
         sim.node.phase = sim.resolve(&sim.node)?;
         Ok(sim)
@@ -570,6 +580,8 @@ impl RigSim {
         let phase = node.phase;
         let mut d = Dynamics::new(&self.joint, &rig, &exc, phase, node.logit);
         d.level = self.fidelity.as_deref().filter(|e| e.chosen() != Level::Full);
+        d.cut = RefCell::new(self.start_cut.take());
+        d.linear.set(self.linear);
         let y0 = to_state(&node.state, t0);
         let breakaway = |t: f64| d.load(t).map_or(0.0, |p| d.breakaway_torque(p));
         let event = |t: f64, y: &State| -> (f64, bool) {
@@ -637,6 +649,8 @@ impl RigSim {
             (t, next)
         };
         self.stats.add(&d);
+        self.start_cut = d.cut.take();
+        self.linear = d.linear.get();
         Ok(Segment { phase, logit, nodes, end, next, dense })
     }
 

@@ -35,27 +35,165 @@ pub(crate) struct Steady {
     angle: f64,
     /// J (kg·m²).
     inertia: f64,
+    /// d (N·m·s/rad): the friction's linear part in the speed, J ω̇ = T_a − s·T_c + d·ω.
+    damping: f64,
     /// The command's amplitude A (rad), for [`Self::at_with_command`].
     command_amplitude: f64,
     /// Per-component scale of u.
     pub scale: State,
+    /// The loop's free response from the segment's start ([`Self::with_free_response`]).
+    free: Option<Free>,
+}
+
+/// The loop linearised about a slip: θ̇ = ω, J ω̇ = T_a − s·T_c + d·ω,
+/// τ_s Ṫ_a = K_p(θ_cmd − θ) + K_d(θ̇_cmd − ω) − T_a, with d the friction's slope in the speed
+/// (d = −∂T_f/∂|ω|·… so that a friction falling with speed gives d > 0), and the
+/// eigenvalues of its matrix A (on the (θ, ω, T_a) part), when they are distinct and decay.
+/// A function of the rig's parameters and d alone, so it can be kept for a load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Loop {
+    /// d (N·m·s/rad).
+    pub damping: f64,
+    /// A's eigenvalues: a real one, then a conjugate pair as (λ, λ̄) or two more real ones;
+    /// None when two are (nearly) equal or one does not decay (no free response is then
+    /// subtracted).
+    lambda: Option<[Complex; 3]>,
+    /// A itself, row-major.
+    a: [[f64; 3]; 3],
+}
+
+type Complex = nalgebra::Complex<f64>;
+
+impl Loop {
+    /// The loop of `rig` with the friction slope `damping` (N·m·s/rad).
+    pub fn new(rig: &RigParams, damping: f64) -> Self {
+        let (j, tau, kp, kd) = (rig.inertia, rig.servo_time_constant, rig.position_gain, rig.velocity_gain);
+        let a = [[0.0, 1.0, 0.0], [0.0, damping / j, 1.0 / j], [-kp / tau, -kd / tau, -1.0 / tau]];
+        let m = nalgebra::Matrix3::from_fn(|r, c| a[r][c]);
+        let lambda = m
+            .iter()
+            .all(|x| x.is_finite())
+            .then(|| m.try_schur(1e-14, 200))
+            .flatten()
+            .map(|sc| sc.complex_eigenvalues())
+            .map(|l| {
+                // Polished by Newton on det(sI − A) = s³ + c₂s² + c₁s + c₀ (the Schur iteration
+                // stops at 1e-14·‖A‖, and ‖A‖ ≈ K_p/τ_s is large): to round-off.
+                let (c2, c1, c0) = (1.0 / tau - damping / j, (kd - damping) / (tau * j), kp / (tau * j));
+                [l[0], l[1], l[2]].map(|mut x| {
+                    for _ in 0..3 {
+                        let (p, dp) = (((x + c2) * x + c1) * x + c0, (x * 3.0 + 2.0 * c2) * x + c1);
+                        if dp.norm() > 0.0 {
+                            x -= p / dp;
+                        }
+                    }
+                    x
+                })
+            })
+            .filter(|l| {
+                let size = l.iter().map(|x| x.norm()).fold(0.0, f64::max);
+                (0..3).all(|k| l[k].is_finite() && l[k].re < 0.0 && (0..k).all(|i| (l[k] - l[i]).norm() > 1e-6 * size))
+            });
+        Self { damping, lambda, a }
+    }
+
+    /// Whether its free response decays (distinct eigenvalues with negative real parts).
+    pub fn decays(&self) -> bool {
+        self.lambda.is_some()
+    }
+}
+
+/// The free response of the linearised loop ([`Loop`]) from a deviation δ₀ at t₀:
+/// e^{A(t−t₀)}δ₀ on the (θ, ω, T_a) part. With distinct eigenvalues λ_k,
+/// e^{Aτ}δ₀ = Σ_k e^{λ_k τ} P_k δ₀ (Sylvester's formula, P_k = Π_{j≠k}(A − λ_j I)/(λ_k − λ_j)).
+/// Real modes are kept as (λ, P δ₀, λ P δ₀); a conjugate pair once, as 2·Re(·).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Free {
+    t0: f64,
+    /// Real modes: (λ, P_k δ₀, λ P_k δ₀); `real` of them are used.
+    reals: [(f64, [f64; 3], [f64; 3]); 3],
+    real: usize,
+    /// A conjugate pair λ = α ± iβ: (α, β, 2P δ₀, 2λ P δ₀) as complex vectors.
+    pair: Option<(f64, f64, [Complex; 3], [Complex; 3])>,
+}
+
+impl Free {
+    /// The free response of `lin` from `delta` at `t0`; None when its free response does not
+    /// decay or δ₀ is not finite.
+    fn new(lin: &Loop, t0: f64, delta: [f64; 3]) -> Option<Self> {
+        let lambda = lin.lambda?;
+        if !delta.iter().all(|x| x.is_finite()) {
+            return None;
+        }
+        let a = lin.a;
+        // (A − λI)v.
+        let apply = |v: [Complex; 3], l: Complex| -> [Complex; 3] { std::array::from_fn(|r| v[0] * a[r][0] + v[1] * a[r][1] + v[2] * a[r][2] - v[r] * l) };
+        let mut free = Self { t0, reals: [(0.0, [0.0; 3], [0.0; 3]); 3], real: 0, pair: None };
+        for k in 0..3 {
+            let l = lambda[k];
+            if l.im < 0.0 {
+                continue; // its conjugate carries it
+            }
+            let mut v = delta.map(|x| Complex::new(x, 0.0));
+            let mut den = Complex::new(1.0, 0.0);
+            for i in (0..3).filter(|&i| i != k) {
+                v = apply(v, lambda[i]);
+                den *= l - lambda[i];
+            }
+            let v = v.map(|x| x / den);
+            if l.im > 0.0 {
+                free.pair = Some((l.re, l.im, v.map(|x| x * 2.0), v.map(|x| x * l * 2.0)));
+            } else {
+                free.reals[free.real] = (l.re, v.map(|x| x.re), v.map(|x| (x * l).re));
+                free.real += 1;
+            }
+        }
+        Some(free)
+    }
+
+    /// (e^{A(t−t₀)}δ₀, A·e^{A(t−t₀)}δ₀).
+    #[inline]
+    fn at(&self, t: f64) -> ([f64; 3], [f64; 3]) {
+        let tau = t - self.t0;
+        let (mut y, mut dy) = ([0.0; 3], [0.0; 3]);
+        for &(l, v, lv) in &self.reals[..self.real] {
+            let m = crate::fast_math::exp(l * tau);
+            for r in 0..3 {
+                y[r] += v[r] * m;
+                dy[r] += lv[r] * m;
+            }
+        }
+        if let Some((alpha, beta, v, lv)) = &self.pair {
+            // Re(v·e^{(α + iβ)τ}) = e^{ατ}(Re v·cos βτ − Im v·sin βτ).
+            let m = crate::fast_math::exp(alpha * tau);
+            let (sn, cs) = crate::fast_math::sin_cos(beta * tau);
+            let (c, s) = (m * cs, m * sn);
+            for r in 0..3 {
+                y[r] += v[r].re * c - v[r].im * s;
+                dy[r] += lv[r].re * c - lv[r].im * s;
+            }
+        }
+        (y, dy)
+    }
 }
 
 impl Steady {
     /// The steady response to `command` with the constant friction torque −`signed_torque`
     /// (s·T_c; 0 for none).
-    pub fn new(rig: &RigParams, command: SineCommand, signed_torque: f64) -> Self {
+    pub fn new(rig: &RigParams, command: SineCommand, signed_torque: f64, lin: &Loop) -> Self {
+        let damping = lin.damping;
         let w = std::f64::consts::TAU * command.frequency;
-        let (j, tau, kp, kd) = (rig.inertia, rig.servo_time_constant, rig.position_gain, rig.velocity_gain);
-        // G(iΩ) = (kp + i kd Ω)/((kp − J Ω²) + i (kd Ω − τ J Ω³)).
+        let (j, tau, kp, kd, dd) = (rig.inertia, rig.servo_time_constant, rig.position_gain, rig.velocity_gain, damping);
+        // G(iΩ) = (kp + i kd Ω)/((kp − J Ω² + d τ Ω²) + i (kd Ω − τ J Ω³ − d Ω)), the
+        // characteristic polynomial being (J s² − d s)(τ s + 1) + K_d s + K_p.
         let (nr, ni) = (kp, kd * w);
-        let (dr, di) = (kp - j * w * w, kd * w - tau * j * w * w * w);
+        let (dr, di) = (kp - j * w * w + dd * tau * w * w, kd * w - tau * j * w * w * w - dd * w);
         let den = dr * dr + di * di;
         let a = command.amplitude;
         let amp = (a * (nr * dr + ni * di) / den, a * (ni * dr - nr * di) / den);
         let size = amp.0.hypot(amp.1);
         let scale = State::from([1.0 + size, 1.0 + w * size, 1.0 + signed_torque.abs() + j * w * w * size, 1.0, 1.0, 1.0]);
-        Self { omega: w, amp, torque: signed_torque, angle: -signed_torque / kp, inertia: j, command_amplitude: a, scale }
+        Self { omega: w, amp, torque: signed_torque, angle: -signed_torque / kp, inertia: j, damping, command_amplitude: a, scale, free: None }
     }
 
     /// (y_s(t), ẏ_s(t)); the W, D and t components are 0.
@@ -69,7 +207,7 @@ impl Steady {
     /// way), so the right-hand side needs one sin/cos an evaluation instead of two.
     pub fn at_with_command(&self, t: f64) -> (State, State, (f64, f64)) {
         let w = self.omega;
-        let (s, c) = (w * t).sin_cos();
+        let (s, c) = crate::fast_math::sin_cos(w * t);
         let a = self.command_amplitude;
         let command = (a * s, a * w * c);
         // Im((iΩ)^k·(ar + i ai)·e^{iΩt}) for k = 0..3.
@@ -78,8 +216,35 @@ impl Steady {
         let im1 = w * (ar * c - ai * s);
         let im2 = -w * w * im0;
         let im3 = -w * w * im1;
-        let j = self.inertia;
-        (State::from([im0 + self.angle, im1, j * im2 + self.torque, 0.0, 0.0, 0.0]), State::from([im1, im2, j * im3, 0.0, 0.0, 0.0]), command)
+        let (j, d) = (self.inertia, self.damping);
+        // T_a = J θ̈ − d θ̇ + s·T_c.
+        let (mut ys, mut rate) = (
+            State::from([im0 + self.angle, im1, j * im2 - d * im1 + self.torque, 0.0, 0.0, 0.0]),
+            State::from([im1, im2, j * im3 - d * im2, 0.0, 0.0, 0.0]),
+        );
+        if let Some(f) = &self.free {
+            let (y, dy) = f.at(t);
+            for r in 0..3 {
+                ys[r] += y[r];
+                rate[r] += dy[r];
+            }
+        }
+        (ys, rate, command)
+    }
+
+    /// This response plus the loop's free response from the deviation of `y0` from it at
+    /// `t0` (see [`Free`]): the shift then equals `y0` at `t0`, and what is integrated is
+    /// what the friction's departure from `lin` and the saturation add. Unchanged when the
+    /// loop's free response does not decay ([`Loop::decays`]) or when the deviation is at most
+    /// `negligible` of every component's scale (nothing worth subtracting).
+    pub fn with_free_response(mut self, lin: &Loop, t0: f64, y0: &State, negligible: f64) -> Self {
+        self.free = None;
+        let ys = self.at(t0).0;
+        let delta = [y0[0] - ys[0], y0[1] - ys[1], y0[2] - ys[2]];
+        if (0..3).any(|r| (delta[r] / self.scale[r]).abs() > negligible) {
+            self.free = Free::new(lin, t0, delta);
+        }
+        self
     }
 
     /// y from u at time t.
@@ -97,29 +262,88 @@ impl Steady {
 mod tests {
     use super::*;
 
-    /// y_s solves the frictionless (constant friction) unsaturated loop: θ̇ = ω,
-    /// J ω̇ = T_a − s·T_c, τ Ṫ_a = K_p(θ_cmd − θ) + K_d(θ̇_cmd − ω) − T_a, to round-off; and
-    /// deviation_of/state_of are inverse.
+    /// The residuals of the linearised loop θ̇ = ω, J ω̇ = T_a − s·T_c + d·ω,
+    /// τ Ṫ_a = K_p(θ_cmd − θ) + K_d(θ̇_cmd − ω) − T_a at (y, ẏ), each relative to the size of
+    /// its terms.
+    fn loop_residuals(rig: &RigParams, cmd: SineCommand, tc: f64, d: f64, t: f64, y: &State, dy: &State) -> [f64; 3] {
+        loop_residuals_floor(rig, cmd, tc, d, t, y, dy, [0.0; 3])
+    }
+
+    /// [`loop_residuals`] relative to at least `floor` (per equation).
+    #[allow(clippy::too_many_arguments)]
+    fn loop_residuals_floor(rig: &RigParams, cmd: SineCommand, tc: f64, d: f64, t: f64, y: &State, dy: &State, floor: [f64; 3]) -> [f64; 3] {
+        let (c, cr) = cmd.at(t);
+        let (j, tau, kp, kd) = (rig.inertia, rig.servo_time_constant, rig.position_gain, rig.velocity_gain);
+        let rel = |r: f64, terms: &[f64], floor: f64| r.abs() / terms.iter().map(|x| x.abs()).sum::<f64>().max(floor).max(1e-300);
+        [
+            rel(dy[0] - y[1], &[dy[0], y[1]], floor[0]),
+            rel(j * dy[1] - (y[2] - tc + d * y[1]), &[j * dy[1], y[2], tc, d * y[1]], floor[1]),
+            rel(tau * dy[2] - (kp * (c - y[0]) + kd * (cr - y[1]) - y[2]), &[tau * dy[2], kp * c, kp * y[0], kd * cr, kd * y[1], y[2]], floor[2]),
+        ]
+    }
+
+    /// y_s solves the loop (constant friction, with and without the friction's linear part d,
+    /// unsaturated) to round-off; deviation_of/state_of are inverse; with a free response the
+    /// shift starts at the given state and still solves the loop, and its rate is its
+    /// derivative.
     #[test]
     fn steady_response_solves_the_linear_loop() {
         let rig = RigParams::default();
         let cmd = SineCommand { amplitude: 0.7, frequency: 1.3 };
         let tc = -67.2;
-        let st = Steady::new(&rig, cmd, tc);
-        for k in 0..50u32 {
-            let t = 0.037 * f64::from(k);
-            let (y, dy) = st.at(t);
-            let (c, cr) = cmd.at(t);
-            let (_, _, (c2, cr2)) = st.at_with_command(t);
-            assert_eq!((c2.to_bits(), cr2.to_bits()), (c.to_bits(), cr.to_bits()), "t = {t}");
-            let r0 = dy[0] - y[1];
-            let r1 = rig.inertia * dy[1] - (y[2] - tc);
-            let r2 = rig.servo_time_constant * dy[2]
-                - (rig.position_gain * (c - y[0]) + rig.velocity_gain * (cr - y[1]) - y[2]);
-            assert!(r0.abs() < 1e-12 && r1.abs() < 1e-11 && r2.abs() < 1e-10, "t = {t}: {r0:e} {r1:e} {r2:e}");
-            let u = State::from([0.1, -2.0, 3.0, 4.0, 5.0, t]);
-            assert!((st.deviation_of(t, &st.state_of(t, &u)) - u).norm() < 1e-13);
+        for d in [0.0, 3.1, -25.0] {
+            let lin = Loop::new(&rig, d);
+            assert!(lin.decays(), "{d}");
+            let st = Steady::new(&rig, cmd, tc, &lin);
+            for k in 0..50u32 {
+                let t = 0.037 * f64::from(k);
+                let (y, dy) = st.at(t);
+                let (c, cr) = cmd.at(t);
+                let (_, _, (c2, cr2)) = st.at_with_command(t);
+                assert_eq!((c2.to_bits(), cr2.to_bits()), (c.to_bits(), cr.to_bits()), "t = {t}");
+                let r = loop_residuals(&rig, cmd, tc, d, t, &y, &dy);
+                assert!(r.iter().all(|x| *x < 1e-13), "d = {d}, t = {t}: {r:?}");
+                let u = State::from([0.1, -2.0, 3.0, 4.0, 5.0, t]);
+                assert!((st.deviation_of(t, &st.state_of(t, &u)) - u).norm() < 1e-13);
+            }
+            // With the free response from a deviation at t0.
+            let y0 = State::from([0.01, -0.3, 25.0, 0.0, 0.0, 0.2]);
+            let sf = st.with_free_response(&lin, 0.2, &y0, 0.0);
+            assert!(sf.free.is_some());
+            let (y, _) = sf.at(0.2);
+            for r in 0..3 {
+                assert!((y[r] - y0[r]).abs() < 1e-12 * (1.0 + y0[r].abs()), "{r}: {} vs {}", y[r], y0[r]);
+            }
+            // As the free response decays, its rounding (from the start's size) is measured
+            // against the terms' size at the start.
+            let (y, dy) = sf.at(0.2);
+            let (c, cr) = cmd.at(0.2);
+            let (j, tau, kp, kd) = (rig.inertia, rig.servo_time_constant, rig.position_gain, rig.velocity_gain);
+            let floor = [
+                dy[0].abs() + y[1].abs(),
+                (j * dy[1]).abs() + y[2].abs() + tc.abs() + (d * y[1]).abs(),
+                (tau * dy[2]).abs() + (kp * c).abs() + (kp * y[0]).abs() + (kd * cr).abs() + (kd * y[1]).abs() + y[2].abs(),
+            ];
+            for k in 0..50u32 {
+                let t = 0.2 + 0.0013 * f64::from(k);
+                let (y, dy) = sf.at(t);
+                let r = loop_residuals_floor(&rig, cmd, tc, d, t, &y, &dy, floor);
+                // Sylvester's modes P_k·δ₀ are ~10× δ₀ and cancel: rounding at ~1e-11 (an
+                // error in the formulas would show at O(1)).
+                assert!(r.iter().all(|x| *x < 1e-10), "d = {d}, t = {t}: {r:?}");
+                let e = 1e-7;
+                let fd = (sf.at(t + e).0 - sf.at(t - e).0) / (2.0 * e);
+                for r in 0..3 {
+                    assert!((fd[r] - dy[r]).abs() < 1e-5 * (1.0 + dy[r].abs()), "t = {t}, {r}: {} vs {}", fd[r], dy[r]);
+                }
+            }
+            // A deviation below `negligible` of the scale is not subtracted.
+            let small = st.at(0.2).0 + State::from([1e-9, 0.0, 0.0, 0.0, 0.0, 0.0]);
+            assert!(st.with_free_response(&lin, 0.2, &small, 1e-6).free.is_none());
         }
+        // A loop destabilised by a friction falling fast enough with speed has no free response.
+        assert!(!Loop::new(&rig, 200.0).decays());
+        let st = Steady::new(&rig, cmd, tc, &Loop::new(&rig, 0.0));
         // The lag of θ behind the command at 1.3 Hz is small but not zero (|G| ≈ 1).
         assert!((st.amp.0.hypot(st.amp.1) / 0.7 - 1.0).abs() < 0.05 && st.amp.1 != 0.0);
     }
