@@ -51,19 +51,24 @@ fn samples_are_independent_of_the_grid() {
     }
 }
 
-/// Against a Dop853 1e-13 reference, the dense method's torque error (continuous extension,
-/// shifted variables) is within a factor 3 of Dopri5's (re-integrated samples) at every
-/// tolerance, and falls by over 3 decades from 1e-5 to 1e-9.
+/// Against a Dop853 1e-13 reference: the dense method's torque error falls by over 3 decades
+/// from tolerance 1e-5 to 1e-9, and at each tolerance it is within a factor 4 of Dopri5's
+/// (re-integrated samples) in under a third of Dopri5's evaluations. Its slip phases are
+/// Dopri5 in Lawson form (`rig/lawson.rs`): at loose tolerances its steps are 2–3× Dopri5's,
+/// and its error a few times Dopri5's at the same tolerance (measured 3.1×, 1.6× and 0.25× at
+/// 1e-5, 1e-7, 1e-9; with `ode_solvers`' Dopri5 on the same deviation, before, the steps were
+/// Dopri5's and the bound was 3×).
 #[test]
-fn dense_error_is_within_3x_of_dopri5_at_the_same_tolerance() {
+fn dense_error_falls_with_the_tolerance_in_fewer_evaluations() {
     let (reference, _) = run(Method::Dop853, 1e-13, 1e-3);
     let mut errs = Vec::new();
     for tol in [1e-5, 1e-7, 1e-9] {
-        let (dense, _) = run(Method::Dopri5Dense, tol, 1e-3);
-        let (plain, _) = run(Method::Dopri5, tol, 1e-3);
+        let (dense, sd) = run(Method::Dopri5Dense, tol, 1e-3);
+        let (plain, sp) = run(Method::Dopri5, tol, 1e-3);
         let (e, p) = (max_error(&dense, &reference), max_error(&plain, &reference));
-        println!("tol {tol:.0e}: dense {e:.3e} N.m, re-integrated {p:.3e} N.m");
-        assert!(e < 3.0 * p && p < 3.0 * e, "tol {tol}: dense {e}, re-integrated {p}");
+        println!("tol {tol:.0e}: dense {e:.3e} N.m ({} evaluations), re-integrated {p:.3e} N.m ({} evaluations)", sd.evaluations, sp.evaluations);
+        assert!(e < 4.0 * p, "tol {tol}: dense {e}, re-integrated {p}");
+        assert!(3 * sd.evaluations < sp.evaluations, "tol {tol}: {sd:?} {sp:?}");
         errs.push(e);
     }
     assert!(errs[2] < 1e-3 * errs[0], "{errs:?}");

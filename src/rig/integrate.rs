@@ -31,34 +31,44 @@
 
 use super::dynamics::{Dynamics, Phase, State, TIME};
 use super::excitation::SineCommand;
+use super::lawson::{self, LawsonDense, Propagator};
 use super::steady::{Loop, Steady};
 use super::params::{Method, RigParams};
 use super::RigError;
 use ode_solvers::continuous_output_model::ContinuousOutputModel;
 use ode_solvers::{Dop853, Dopri5, OutputType, Rk4, System};
 
-/// The continuous extension of a segment's accepted steps ([`Method::Dopri5Dense`]), in the
-/// integrated variables u, with the change of variables back to y (see `rig/steady.rs`).
+/// The continuous extension of a segment's accepted steps ([`Method::Dopri5Dense`]), with the
+/// change of variables back to y (see `rig/steady.rs`).
 #[derive(Debug, Clone)]
-pub(crate) struct Dense {
-    model: ContinuousOutputModel<f64, State>,
-    shift: Option<Steady>,
+#[allow(clippy::large_enum_variant)] // one per segment, a few hundred bytes either way
+pub(crate) enum Dense {
+    /// `ode_solvers`' Dopri5 model in the integrated variables u = (y − shift)/scale.
+    Model { model: ContinuousOutputModel<f64, State>, shift: Option<Steady> },
+    /// The Lawson form's (`rig/lawson.rs`), in the deviations z = y − y_s.
+    Lawson { dense: LawsonDense, shift: Steady },
 }
 
 impl Dense {
     /// The state y at `t` (within the steps integrated), its time component exactly `t`.
     pub fn evaluate(&self, t: f64) -> Option<State> {
-        let u = self.model.evaluate(t)?;
-        let mut y = self.shift.map_or(u, |s| s.state_of(t, &u));
+        let mut y = match self {
+            Dense::Model { model, shift } => {
+                let u = model.evaluate(t)?;
+                shift.map_or(u, |s| s.state_of(t, &u))
+            }
+            Dense::Lawson { dense, shift } => dense.evaluate(t)? + shift.at(t).0,
+        };
         y[TIME] = t;
         Some(y)
     }
 }
 
 /// For [`Method::Dopri5Dense`] in a slip (or the regularised) phase driven by a sine command:
-/// the loop's steady response to integrate the deviation from, with the constant part of the
-/// friction, s·μ_c·R·P at the load at `t0` (see `rig/steady.rs`). None otherwise.
-fn steady(rig: &RigParams, d: &Dynamics, t0: f64, y0: &State) -> Option<Steady> {
+/// the linearised loop's steady response to integrate the deviation from, with the constant
+/// part of the friction, s·μ_c·R·P at the load at `t0`, and its linear part in the speed
+/// (see `rig/steady.rs`), and that loop. None otherwise.
+fn steady(rig: &RigParams, d: &Dynamics, t0: f64) -> Option<(Steady, Loop)> {
     if rig.method != Method::Dopri5Dense {
         return None;
     }
@@ -69,9 +79,8 @@ fn steady(rig: &RigParams, d: &Dynamics, t0: f64, y0: &State) -> Option<Steady> 
         Phase::Smooth => (0.0, Loop::new(rig, 0.0)),
         Phase::Stick => return None,
     };
-    // A deviation below the tolerance is not worth a free response.
-    let st = Steady::new(rig, command, torque, &lin).with_free_response(&lin, t0, y0, rig.rtol.min(rig.atol));
-    st.scale.iter().all(|x| x.is_finite()).then_some(st)
+    let st = Steady::new(rig, command, torque, &lin);
+    st.scale.iter().all(|x| x.is_finite()).then_some((st, lin))
 }
 
 /// The loop linearised about a slip at `load` ([`Loop`]): d from the friction's secant from
@@ -206,12 +215,21 @@ pub(crate) fn segment(
         Method::Dopri5 | Method::Dop853 | Method::Dopri5Dense => {
             let h = h0.min(span).max(0.0);
             let mut full = false;
-            let shift = steady(rig, d, t0, &y0);
-            let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full, shift };
-            let (xs, ys, model) = adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| match check(d, t0, &y0) {
+            let linear = steady(rig, d, t0);
+            let lawson = linear.and_then(|(st, lin)| matches!(d.phase, Phase::Slip(_)).then(|| Propagator::new(&lin, rig.inertia).map(|p| (st, lin, p))).flatten());
+            let fail = |message: String| match check(d, t0, &y0) {
                 Err(e) => e,
-                Ok(()) => RigError::Integration { time: t0, message: e.to_string() },
-            })?;
+                Ok(()) => RigError::Integration { time: t0, message },
+            };
+            let (xs, ys, model) = match lawson {
+                Some((st, lin, p)) => lawson_run(rig, d, (st, lin, p), (t0, y0), t1, h, span, outside, (&mut hit, &mut full)).map_err(fail)?,
+                None => {
+                    // A deviation below the tolerance is not worth a free response.
+                    let shift = linear.map(|(st, lin)| st.with_free_response(&lin, t0, &y0, rig.rtol.min(rig.atol)));
+                    let stepper = Stepper { dynamics: d, outside, hit: &mut hit, accepted: 0, full: &mut full, shift };
+                    adaptive(rig, stepper, t0, y0, t1, h, span).map_err(|e| fail(e.to_string()))?
+                }
+            };
             dense = model;
             let mut nodes: Vec<(f64, State)> = xs.into_iter().zip(ys).collect();
             if !hit && !full {
@@ -234,6 +252,60 @@ pub(crate) fn segment(
         _ => (nodes[n - 1].0 - nodes[n - 2].0).max(nodes[n - 2].0 - nodes[n - 3].0),
     };
     Ok(Run { nodes, stopped: hit, h_next, dense })
+}
+
+/// A slip segment of [`Method::Dopri5Dense`] in Lawson form (`rig/lawson.rs`): the deviation
+/// z = y − y_s from the linearised loop's steady response `st`, the loop `lin` (propagator
+/// `p`) solved exactly; same tolerances, bounds and stop test as [`adaptive`].
+#[allow(clippy::too_many_arguments)]
+fn lawson_run(
+    rig: &RigParams,
+    d: &Dynamics,
+    (st, lin, p): (Steady, Loop, Propagator),
+    (t0, y0): (f64, State),
+    t1: f64,
+    h: f64,
+    h_max: f64,
+    outside: &dyn Fn(f64, &State) -> bool,
+    (hit, full): (&mut bool, &mut bool),
+) -> Result<Accepted, String> {
+    // F(t, z) = f(t, y_s + z) − ẏ_s − Lz; the time is z's own component.
+    let mut remainder = |_: f64, z: &State| {
+        let tt = z[TIME];
+        let (ys, rate, command) = st.at_with_command(tt);
+        let mut y = z + ys;
+        y[TIME] = tt;
+        let mut r = d.derivative_commanded(&y, command) - rate;
+        let lz = lin.apply_matrix(&[z[0], z[1], z[2]]);
+        for i in 0..3 {
+            r[i] -= lz[i];
+        }
+        r
+    };
+    let mut accepted = 0usize;
+    let mut stop = |t: f64, z: &State| {
+        let mut y = z + st.at(t).0;
+        y[TIME] = t;
+        if outside(t, &y) {
+            *hit = true;
+        }
+        accepted += 1;
+        if accepted >= MAX_SEGMENT_NODES {
+            *full = true;
+        }
+        *hit || *full
+    };
+    let mut z0 = y0 - st.at(t0).0;
+    z0[TIME] = t0;
+    let ctl = lawson::Control { rtol: rig.rtol, atol: rig.atol, scale: st.scale, h_max, max_attempts: MAX_SEGMENT_ATTEMPTS };
+    let (ts, zs, dense) = lawson::integrate(&p, &mut remainder, t0, z0, t1, h, &ctl, &mut stop)?;
+    let mut ys: Vec<State> = ts.iter().zip(&zs).map(|(&t, z)| {
+        let mut y = z + st.at(t).0;
+        y[TIME] = t;
+        y
+    }).collect();
+    ys[0] = y0;
+    Ok((ts, ys, Some(Dense::Lawson { dense, shift: st })))
 }
 
 /// Accepted (t, y) of one adaptive run, with the continuous extension for [`Method::Dopri5Dense`].
@@ -277,7 +349,7 @@ fn adaptive(
             let mut ys = Vec::with_capacity(xs.len());
             ys.push(y0);
             ys.extend(s.y_out().iter().map(|u| shift.map_or(*u, |st| st.state_of(u[TIME], u))));
-            Ok((xs, ys, Some(Dense { model, shift })))
+            Ok((xs, ys, Some(Dense::Model { model, shift })))
         }
         _ => {
             let mut s = Dop853::from_param(

@@ -75,9 +75,14 @@ pub enum Method {
     Rk4,
     /// Dormand–Prince 5(4), adaptive (`rtol`, `atol`), integrating in slip the deviation from
     /// the position loop's steady response to the sine command (an exact change of variables,
-    /// `rig::steady`: fewer steps), with the states between steps (samples, communication
-    /// points, event location trials) read from the method's 4th-order continuous extension
-    /// instead of one re-integration step each: no right-hand-side evaluations for them.
+    /// `rig::steady`), in Lawson form: the loop linearised about the slip (the friction's
+    /// secant slope in the speed included) is solved exactly by its matrix exponential, and
+    /// Dopri5 integrates what the friction's departure from it, the saturation and the
+    /// energy integrals add (`rig::lawson`: far fewer steps). The states between steps
+    /// (samples, communication points, event location trials) are read from its continuous
+    /// extension (exponential quadrature) instead of one re-integration step each: no
+    /// right-hand-side evaluations for them. Stick phases and the regularised formulation
+    /// use `ode_solvers`' Dopri5 with the same continuous output.
     Dopri5Dense,
 }
 

@@ -101,6 +101,17 @@ impl Loop {
     pub fn decays(&self) -> bool {
         self.lambda.is_some()
     }
+
+    /// A·x on the (θ, ω, T_a) part.
+    #[inline]
+    pub fn apply_matrix(&self, x: &[f64; 3]) -> [f64; 3] {
+        std::array::from_fn(|r| self.a[r][0] * x[0] + self.a[r][1] * x[1] + self.a[r][2] * x[2])
+    }
+
+    /// A's eigenvalues when they are distinct and decay.
+    pub fn eigenvalues(&self) -> Option<[Complex; 3]> {
+        self.lambda
+    }
 }
 
 /// The free response of the linearised loop ([`Loop`]) from a deviation δ₀ at t₀:
