@@ -110,3 +110,67 @@ fn times_beyond_the_range_and_absurd_sampling_are_refused() {
     assert!(matches!(s.run(1.0, 0.0), Err(RigError::Samples { .. })));
     assert!(matches!(s.run(1e6, 1e-12), Err(RigError::Samples { .. })));
 }
+
+/// `dopri5-dense` (Lawson form in slip, the loop linearised about it) at the extremes of the
+/// rig's parameters and tolerances, with a load input that changes every call: every run ends
+/// in bounded time with finite samples or a typed error (a configuration refused by
+/// validation included), never a panic or a hang.
+#[test]
+fn dopri5_dense_at_the_parameters_extremes_ends_with_an_answer_or_a_typed_error() {
+    let cases: &[&[(&str, f64)]] = &[
+        &[("inertia", 1e-3)],
+        &[("inertia", 9.99)],
+        &[("position_gain", 1e6), ("velocity_gain", 1e4), ("servo_time_constant", 1e-3)],
+        &[("position_gain", 1.0)],
+        &[("velocity_gain", 1e4)],
+        &[("velocity_gain", 20.0)],
+        &[("servo_time_constant", 1e-3)],
+        &[("servo_time_constant", 0.99), ("velocity_gain", 1e4)],
+        &[("breakaway_factor", 99.0)],
+        &[("torque_limit", 1e-3)],
+        &[("torque_limit", 1e7)],
+        &[("amplitude", 0.0)],
+        &[("amplitude", 3.0)],
+        &[("frequency", 1e-3)],
+        &[("frequency", 100.0)],
+        &[("load", 0.0)],
+        &[("load", 5e5)],
+        &[("rtol", 1e-2), ("atol", 1e-2)],
+        &[("rtol", 1e-13), ("atol", 1e-13)],
+        &[("segment_length", 1.1e-4)],
+        &[("segment_length", 10.0)],
+    ];
+    for &case in cases {
+        let mut cfg = RigConfig::default();
+        cfg.rig.method = Method::Dopri5Dense;
+        (cfg.rig.rtol, cfg.rig.atol) = (1e-5, 1e-5);
+        for &(key, value) in case {
+            let spec = pinjoint::rig::RIG_PARAMS.iter().find(|s| s.key == key).unwrap();
+            (spec.set)(&mut cfg.rig, value);
+        }
+        let label = format!("{case:?}");
+        let started = std::time::Instant::now();
+        let mut s = match RigSim::new(&cfg) {
+            Ok(s) => s,
+            Err(e) => {
+                println!("{label}: refused: {e}");
+                continue;
+            }
+        };
+        let mut outcome = Ok(());
+        for k in 1..=20 {
+            let load = cfg.rig.load * (1.0 + 0.1 * (f64::from(k) * 0.7).sin());
+            outcome = s.advance_to(0.015 * f64::from(k), &Inputs { load: Some(load), command_angle: None });
+            match &outcome {
+                Ok(()) => {
+                    let x = s.sample().unwrap();
+                    assert!(x.torque.is_finite() && x.angle.is_finite() && x.angular_velocity.is_finite(), "{label}: {x:?}");
+                }
+                Err(_) => break,
+            }
+        }
+        let took = started.elapsed().as_secs_f64();
+        println!("{label}: {outcome:?} in {took:.2} s, {:?}", s.stats());
+        assert!(took < 60.0, "{label}: {took} s");
+    }
+}

@@ -76,6 +76,11 @@ impl Propagator {
         (p.v_re.iter().chain(p.v_im.iter()).chain(p.vinv_re.iter()).chain(p.vinv_im.iter()).all(|x| x.is_finite())).then_some(p)
     }
 
+    /// The largest decay rate −Re λ of A's modes (1/s).
+    pub fn fastest_decay(&self) -> f64 {
+        self.lambda.iter().map(|l| -l.re).fold(0.0, f64::max)
+    }
+
     /// The factors of e^{τA}.
     #[inline]
     pub fn modal(&self, tau: f64) -> Modal {
@@ -306,6 +311,9 @@ pub(crate) struct Control {
 /// What a run gives: the accepted (t, z), the start included, and their continuous extension.
 pub(crate) type Run = (Vec<f64>, Vec<State>, LawsonDense);
 
+/// Largest |Re λ|·h of a step (see [`integrate`]).
+const MAX_DECAY_PER_STEP: f64 = 10.0;
+
 /// RMS of (xᵢ/skᵢ).
 fn norm(x: &State, sk: &State) -> f64 {
     (x.component_div(sk).norm_squared() / 6.0).sqrt()
@@ -339,7 +347,12 @@ pub(crate) fn integrate(
     let mut forcing = f(t, &z);
     let sk = |a: &State, b: &State| State::from_fn(|i, _| ctl.atol * ctl.scale[i] + ctl.rtol * a[i].abs().max(b[i].abs()));
     let mut h = if h0 > 0.0 { h0 } else { initial_step(p, f, t, &z, &forcing, t1 - t0, &sk) };
-    h = h.min(ctl.h_max).min(t1 - t0);
+    // The stages are formed in the frame of tₙ, where a mode decaying as e^{λτ} is scaled up by
+    // e^{−λcⱼh}: beyond |Re λ|·h = 10 (a factor 2e4, four digits of the stage values) the
+    // rounding of a fast mode would swamp the slow ones. The default rig's fastest decay,
+    // 167 1/s, allows 60 ms (more than a segment); a stiffer loop gets shorter steps.
+    let h_max = ctl.h_max.min(MAX_DECAY_PER_STEP / p.fastest_decay());
+    h = h.min(h_max).min(t1 - t0);
     let (mut ts, mut zs, mut steps) = (vec![t0], vec![z0], Vec::new());
     let (alpha, beta, safety, facc1, facc2): (f64, f64, f64, f64, f64) = (0.2 - 0.04 * 0.75, 0.04, 0.9, 1.0 / 0.2, 1.0 / 10.0);
     let (mut fac_old, mut rejected) = (1e-4f64, false);
@@ -397,7 +410,7 @@ pub(crate) fn integrate(
         let mut h_new = h / fac;
         if err <= 1.0 {
             fac_old = err.max(1e-4);
-            h_new = h_new.min(ctl.h_max);
+            h_new = h_new.min(h_max);
             if rejected {
                 h_new = h_new.min(h);
             }
@@ -508,7 +521,9 @@ mod tests {
         let z0 = State::from([0.02, 0.4, -30.0, 1.0, 0.0, 0.0]);
         let mut f = |_t: f64, _z: &State| State::from([0.0, 0.0, 0.0, 2.0, 0.0, 1.0]);
         let (ts, zs, dense) = integrate(&p, &mut f, 0.0, z0, 0.3, 0.0, &control(1e-6, 1.0), &mut |_, _| false).unwrap();
-        assert!(ts.len() <= 4, "{} steps", ts.len() - 1);
+        // Steps of the largest size allowed, 10/|Re λ| (60 ms here): nothing else limits them.
+        let cap = (0.3 * p.fastest_decay() / MAX_DECAY_PER_STEP).ceil() as usize;
+        assert!(ts.len() - 1 <= cap + 1, "{} steps for {cap}", ts.len() - 1);
         let exact = |t: f64| {
             let b = (matrix(&rig, 3.1) * t).exp() * Vector3::new(z0[0], z0[1], z0[2]);
             State::from([b[0], b[1], b[2], 1.0 + 2.0 * t, 0.0, t])
@@ -573,6 +588,26 @@ mod tests {
         eprintln!("nodes: {e1:e} / {e2:e} = {node_ratio}; continuous extension: {m1:e} / {m2:e} = {mid_ratio}");
         assert!(node_ratio > 20.0 && node_ratio < 50.0, "nodes: {e1:e} / {e2:e} = {node_ratio}");
         assert!(mid_ratio > 12.0, "continuous extension: {m1:e} / {m2:e} = {mid_ratio}");
+    }
+
+    /// A stiff loop (τ_s = 1e-6 s: a mode decaying at ~1e6 1/s) gets steps of at most
+    /// 10/|Re λ| and still solves a linear problem exactly.
+    #[test]
+    fn a_stiff_loop_keeps_its_precision() {
+        let rig = RigParams { servo_time_constant: 1e-6, ..RigParams::default() };
+        let lin = Loop::new(&rig, 0.0);
+        let p = Propagator::new(&lin, rig.inertia).expect("decays");
+        assert!(p.fastest_decay() > 1e5, "{}", p.fastest_decay());
+        let z0 = State::from([0.02, 0.4, -30.0, 0.0, 0.0, 0.0]);
+        let mut f = |_t: f64, _z: &State| State::from([0.0, 0.0, 0.0, 0.0, 0.0, 1.0]);
+        let (ts, zs, _) = integrate(&p, &mut f, 0.0, z0, 0.01, 0.0, &control(1e-6, 1.0), &mut |_, _| false).unwrap();
+        let steps: Vec<f64> = ts.windows(2).map(|w| w[1] - w[0]).collect();
+        assert!(steps.iter().all(|&h| h * p.fastest_decay() <= 10.0 * (1.0 + 1e-12)), "{steps:?}");
+        let exact = (matrix(&rig, 0.0) * 0.01).exp() * Vector3::new(z0[0], z0[1], z0[2]);
+        let z1 = zs.last().unwrap();
+        for r in 0..3 {
+            assert!((z1[r] - exact[r]).abs() <= 1e-9 * (1.0 + exact[r].abs()), "row {r}: {} vs {}", z1[r], exact[r]);
+        }
     }
 
     /// The controller keeps the error near the tolerance and `stop` ends the run at the step.
