@@ -84,23 +84,28 @@ impl Propagator {
     /// The factors of e^{τA}.
     #[inline]
     pub fn modal(&self, tau: f64) -> Modal {
-        let mut e = [Complex::new(1.0, 0.0); 3];
+        self.per_mode(|l| {
+            let m = crate::fast_math::exp(l.re * tau);
+            if l.im == 0.0 {
+                Complex::new(m, 0.0)
+            } else {
+                let (s, c) = crate::fast_math::sin_cos(l.im * tau);
+                Complex::new(m * c, m * s)
+            }
+        }, |x| x.conj())
+    }
+
+    /// `value(λₖ)` for each mode, a conjugate mode's as `conj` of its partner's.
+    #[inline]
+    fn per_mode<T: Copy + Default>(&self, value: impl Fn(Complex<f64>) -> T, conj: impl Fn(T) -> T) -> [T; 3] {
+        let mut out = [T::default(); 3];
         for k in 0..3 {
-            e[k] = match self.conjugate_of[k] {
-                Some(i) => e[i].conj(),
-                None => {
-                    let l = self.lambda[k];
-                    let m = crate::fast_math::exp(l.re * tau);
-                    if l.im == 0.0 {
-                        Complex::new(m, 0.0)
-                    } else {
-                        let (s, c) = crate::fast_math::sin_cos(l.im * tau);
-                        Complex::new(m * c, m * s)
-                    }
-                }
+            out[k] = match self.conjugate_of[k] {
+                Some(i) => conj(out[i]),
+                None => value(self.lambda[k]),
             };
         }
-        e
+        out
     }
 
     /// e^{τL} x, with `e` = [`Self::modal`](τ).
@@ -124,24 +129,21 @@ impl Propagator {
     /// (their Taylor series below |μ| = 1/2, where the recurrence would cancel); on W, D, t
     /// (L = 0) h Σⱼ gⱼθ^{j+1}/(j+1).
     pub fn quadrature(&self, theta: f64, h: f64, g: &[State; 4]) -> State {
-        let mut w = [[Complex::new(0.0, 0.0); 4]; 3];
-        for k in 0..3 {
-            w[k] = match self.conjugate_of[k] {
-                Some(i) => w[i].map(|x| x.conj()),
-                None => {
-                    let phi = phis(self.lambda[k] * (theta * h));
-                    let (mut fact, mut pow) = (1.0, theta);
-                    std::array::from_fn(|j| {
-                        if j > 0 {
-                            fact *= j as f64;
-                        }
-                        let v = phi[j + 1] * (fact * pow);
-                        pow *= theta;
-                        v
-                    })
-                }
-            };
-        }
+        let w = self.per_mode(
+            |l| {
+                let phi = phis(l * (theta * h));
+                let (mut fact, mut pow) = (1.0, theta);
+                std::array::from_fn::<_, 4, _>(|j| {
+                    if j > 0 {
+                        fact *= j as f64;
+                    }
+                    let v = phi[j + 1] * (fact * pow);
+                    pow *= theta;
+                    v
+                })
+            },
+            |w| w.map(|x| x.conj()),
+        );
         let mut s_re = Vector3::zeros();
         let mut s_im = Vector3::zeros();
         let mut rest = [0.0; 3];
@@ -167,23 +169,20 @@ impl Propagator {
     /// Per mode (e^{λτ} − 1)/λ, formed without cancellation as τ·e^{λτ/2}·sinhc(λτ/2)... in
     /// its real form: e^{a+ib} − 1 = expm1(a)·cos b − 2 sin²(b/2) + i·e^a·sin b.
     pub fn integral(&self, tau: f64, x: &State) -> State {
-        let mut w = [Complex::new(0.0, 0.0); 3];
-        for k in 0..3 {
-            w[k] = match self.conjugate_of[k] {
-                Some(i) => w[i].conj(),
-                None => {
-                    let l = self.lambda[k];
-                    let (a, b) = (l.re * tau, l.im * tau);
-                    let em1 = if a.abs() < 1e-300 && b.abs() < 1e-300 { Complex::new(0.0, 0.0) } else {
-                        let (sb, cb) = b.sin_cos();
-                        let sh = (0.5 * b).sin();
-                        Complex::new(a.exp_m1() * cb - 2.0 * sh * sh, a.exp() * sb)
-                    };
-                    // (e^{λτ} − 1)/λ; below |λτ| = 1e-8 its series τ(1 + λτ/2).
-                    if (a * a + b * b) < 1e-16 { Complex::new(tau, 0.0) * (Complex::new(1.0, 0.0) + l * (0.5 * tau)) } else { em1 / l }
+        let w = self.per_mode(
+            |l| {
+                let (a, b) = (l.re * tau, l.im * tau);
+                // (e^{λτ} − 1)/λ; below |λτ| = 1e-8 its series τ(1 + λτ/2).
+                if a * a + b * b < 1e-16 {
+                    Complex::new(tau, 0.0) * (Complex::new(1.0, 0.0) + l * (0.5 * tau))
+                } else {
+                    let (sb, cb) = b.sin_cos();
+                    let sh = (0.5 * b).sin();
+                    Complex::new(a.exp_m1() * cb - 2.0 * sh * sh, a.exp() * sb) / l
                 }
-            };
-        }
+            },
+            |x| x.conj(),
+        );
         let mut out = self.apply(&w, x);
         for i in 3..6 {
             out[i] = tau * x[i];
