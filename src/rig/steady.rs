@@ -46,8 +46,8 @@ pub(crate) struct Steady {
 }
 
 /// The loop linearised about a slip: θ̇ = ω, J ω̇ = T_a − s·T_c + d·ω,
-/// τ_s Ṫ_a = K_p(θ_cmd − θ) + K_d(θ̇_cmd − ω) − T_a, with d the friction's slope in the speed
-/// (d = −∂T_f/∂|ω|·… so that a friction falling with speed gives d > 0), and the
+/// τ_s Ṫ_a = K_p(θ_cmd − θ) + K_d(θ̇_cmd − ω) − T_a, with d the friction torque's slope in the
+/// speed, negated (d = −∂(μRP)/∂|ω|: a friction falling with speed gives d > 0), and the
 /// eigenvalues of its matrix A (on the (θ, ω, T_a) part), when they are distinct and decay.
 /// A function of the rig's parameters and d alone, so it can be kept for a load.
 #[derive(Debug, Clone, Copy, PartialEq)]
