@@ -485,10 +485,10 @@ impl Joint {
     /// without the root's sensitivities (`dlogit_dln_load` and `dlogit_dln_speed` are NaN
     /// when moving): the cheapest full-fidelity torque, one residual evaluation in most of
     /// the boundary and mixed regimes. Bit for bit the torque of [`Joint::evaluate`].
-    /// This is what the rig integrates: with the start table ~1e-6 from the root, a
-    /// neighbour's root moved by its sensitivities is no better a start, and computing
-    /// those sensitivities cost 18 % of a rig run's instructions (callgrind,
-    /// `examples/rig_once.rs`: 79.5 M against 65.4 M instructions).
+    /// With the start table ~1e-6 from the root, a neighbour's root moved by its
+    /// sensitivities is no better a start, and computing those sensitivities cost 18 % of a
+    /// rig run's instructions (callgrind, `examples/rig_once.rs`: 79.5 M against 65.4 M); the
+    /// rig now starts from the table's cut at its load ([`Joint::friction_cut_at`]).
     pub fn friction_cold_at(&self, lt: &LoadTerms, omega: f64) -> Result<Friction, ModelError> {
         self.friction_with(lt, omega, Start::From(None), false)
     }
@@ -507,8 +507,9 @@ impl Joint {
     /// this load, [`Joint::start_cut`]) instead of the two-dimensional table: the same start
     /// to rounding, a fifth of its interpolation work, so the same root to the solver's
     /// stopping rule (not bit for bit [`Joint::evaluate`]). Still a function of (P, ω) and
-    /// the parameters alone, whatever was evaluated before. A cut of another load or of
-    /// another joint's grid is not used (the table is); a cut belongs to the joint that made it.
+    /// the parameters alone, whatever was evaluated before. A cut of another load is not
+    /// used (the table is). A cut belongs to the joint that made it: one of another joint with
+    /// the same grid would be read, as a worse start the solve still converges from.
     pub fn friction_cut_at(&self, lt: &LoadTerms, cut: &mut StartCut, omega: f64) -> Result<Friction, ModelError> {
         self.friction_with(lt, omega, Start::Cut(cut), false)
     }

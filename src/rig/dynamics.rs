@@ -27,7 +27,7 @@ use super::params::RigParams;
 use crate::fidelity::{Evaluation, Evaluator, Source};
 use crate::joint::{Joint, LoadTerms, ModelError};
 use crate::solve_start::StartCut;
-use super::steady::Loop;
+use super::linear_loop::Loop;
 use serde::{Deserialize, Serialize};
 use std::cell::{Cell, RefCell};
 
@@ -189,16 +189,15 @@ impl<'a> Dynamics<'a> {
             (_, c) => match self.joint.load_terms(load) {
                 Ok(lt) => {
                     self.load_terms.set(Some(lt));
-                    match c {
-                        Some(c) => self.joint.recut(c, &lt),
-                        None => *cut = Some(self.joint.start_cut(&lt)),
+                    if let Some(c) = c {
+                        self.joint.recut(c, &lt);
                     }
                     lt
                 }
                 Err(e) => return fail(e),
             },
         };
-        let Some(cut) = cut.as_mut() else { return 0.0 };
+        let cut = cut.get_or_insert_with(|| self.joint.start_cut(&lt));
         self.solves.set(self.solves.get() + 1);
         match self.joint.friction_cut_at(&lt, cut, speed) {
             Ok(f) => {

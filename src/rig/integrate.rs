@@ -31,8 +31,9 @@
 
 use super::dynamics::{Dynamics, Phase, State, TIME};
 use super::excitation::SineCommand;
-use super::lawson::{self, LawsonDense, Propagator};
-use super::steady::{Loop, Steady};
+use super::lawson::{self, LawsonDense};
+use super::linear_loop::{Loop, Propagator};
+use super::steady::Steady;
 use super::params::{Method, RigParams};
 use super::RigError;
 use ode_solvers::continuous_output_model::ContinuousOutputModel;
@@ -216,7 +217,7 @@ pub(crate) fn segment(
             let h = h0.min(span).max(0.0);
             let mut full = false;
             let linear = steady(rig, d, t0);
-            let lawson = linear.and_then(|(st, lin)| matches!(d.phase, Phase::Slip(_)).then(|| Propagator::new(&lin, rig.inertia).map(|p| (st, lin, p))).flatten());
+            let lawson = linear.and_then(|(st, lin)| matches!(d.phase, Phase::Slip(_)).then(|| Propagator::new(&lin).map(|p| (st, lin, p))).flatten());
             let fail = |message: String| match check(d, t0, &y0) {
                 Err(e) => e,
                 Ok(()) => RigError::Integration { time: t0, message },

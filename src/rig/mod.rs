@@ -9,6 +9,7 @@
 //! - [`excitation`]: command angle and load as functions of time, and held (FMU) inputs.
 //! - [`dynamics`]: the ODE of each phase (slip, stick, regularised) and the friction torque.
 //! - [`integrate`]: segments with `ode_solvers` (Dopri5, Dop853, RK4), event location.
+//! - `linear_loop`: the loop linearised about a slip and its matrix exponential (modal form).
 //! - `lawson`: Dopri5 in Lawson (integrating-factor) form, the linearised loop solved exactly
 //!   (`dopri5-dense` in slip).
 //! - `steady`: the loop's steady response to the sine command (`dopri5-dense` integrates the
@@ -35,6 +36,7 @@ pub mod params;
 pub mod record;
 pub mod sim;
 pub(crate) mod lawson;
+pub(crate) mod linear_loop;
 pub(crate) mod steady;
 
 pub use analysis::{cycle_average_friction_coefficient, energy_residual, run_cycles};

@@ -28,7 +28,7 @@ use super::RigError;
 use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
 use crate::joint::Joint;
 use crate::solve_start::StartCut;
-use super::steady::Loop;
+use super::linear_loop::Loop;
 use std::cell::RefCell;
 use crate::fmt::Num;
 use serde::{Deserialize, Serialize};

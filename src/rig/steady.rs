@@ -20,6 +20,7 @@
 
 use super::dynamics::State;
 use super::excitation::SineCommand;
+use super::linear_loop::{Loop, Propagator};
 use super::params::RigParams;
 
 /// y_s(t) and its rate for one segment, with the integration scale.
@@ -45,146 +46,34 @@ pub(crate) struct Steady {
     free: Option<Free>,
 }
 
-/// The loop linearised about a slip: θ̇ = ω, J ω̇ = T_a − s·T_c + d·ω,
-/// τ_s Ṫ_a = K_p(θ_cmd − θ) + K_d(θ̇_cmd − ω) − T_a, with d the friction torque's slope in the
-/// speed, negated (d = −∂(μRP)/∂|ω|: a friction falling with speed gives d > 0), and the
-/// eigenvalues of its matrix A (on the (θ, ω, T_a) part), when they are distinct and decay.
-/// A function of the rig's parameters and d alone, so it can be kept for a load.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Loop {
-    /// d (N·m·s/rad).
-    pub damping: f64,
-    /// A's eigenvalues: a real one, then a conjugate pair as (λ, λ̄) or two more real ones;
-    /// None when two are (nearly) equal or one does not decay (no free response is then
-    /// subtracted).
-    lambda: Option<[Complex; 3]>,
-    /// A itself, row-major.
-    a: [[f64; 3]; 3],
-}
-
-type Complex = nalgebra::Complex<f64>;
-
-impl Loop {
-    /// The loop of `rig` with the friction slope `damping` (N·m·s/rad).
-    pub fn new(rig: &RigParams, damping: f64) -> Self {
-        let (j, tau, kp, kd) = (rig.inertia, rig.servo_time_constant, rig.position_gain, rig.velocity_gain);
-        let a = [[0.0, 1.0, 0.0], [0.0, damping / j, 1.0 / j], [-kp / tau, -kd / tau, -1.0 / tau]];
-        let m = nalgebra::Matrix3::from_fn(|r, c| a[r][c]);
-        let lambda = m
-            .iter()
-            .all(|x| x.is_finite())
-            .then(|| m.try_schur(1e-14, 200))
-            .flatten()
-            .map(|sc| sc.complex_eigenvalues())
-            .map(|l| {
-                // Polished by Newton on det(sI − A) = s³ + c₂s² + c₁s + c₀ (the Schur iteration
-                // stops at 1e-14·‖A‖, and ‖A‖ ≈ K_p/τ_s is large): to round-off.
-                let (c2, c1, c0) = (1.0 / tau - damping / j, (kd - damping) / (tau * j), kp / (tau * j));
-                [l[0], l[1], l[2]].map(|mut x| {
-                    for _ in 0..3 {
-                        let (p, dp) = (((x + c2) * x + c1) * x + c0, (x * 3.0 + 2.0 * c2) * x + c1);
-                        if dp.norm() > 0.0 {
-                            x -= p / dp;
-                        }
-                    }
-                    x
-                })
-            })
-            .filter(|l| {
-                let size = l.iter().map(|x| x.norm()).fold(0.0, f64::max);
-                (0..3).all(|k| l[k].is_finite() && l[k].re < 0.0 && (0..k).all(|i| (l[k] - l[i]).norm() > 1e-6 * size))
-            });
-        Self { damping, lambda, a }
-    }
-
-    /// Whether its free response decays (distinct eigenvalues with negative real parts).
-    pub fn decays(&self) -> bool {
-        self.lambda.is_some()
-    }
-
-    /// A·x on the (θ, ω, T_a) part.
-    #[inline]
-    pub fn apply_matrix(&self, x: &[f64; 3]) -> [f64; 3] {
-        std::array::from_fn(|r| self.a[r][0] * x[0] + self.a[r][1] * x[1] + self.a[r][2] * x[2])
-    }
-
-    /// A's eigenvalues when they are distinct and decay.
-    pub fn eigenvalues(&self) -> Option<[Complex; 3]> {
-        self.lambda
-    }
-}
-
 /// The free response of the linearised loop ([`Loop`]) from a deviation δ₀ at t₀:
-/// e^{A(t−t₀)}δ₀ on the (θ, ω, T_a) part. With distinct eigenvalues λ_k,
-/// e^{Aτ}δ₀ = Σ_k e^{λ_k τ} P_k δ₀ (Sylvester's formula, P_k = Π_{j≠k}(A − λ_j I)/(λ_k − λ_j)).
-/// Real modes are kept as (λ, P δ₀, λ P δ₀); a conjugate pair once, as 2·Re(·).
+/// e^{A(t−t₀)}δ₀ on the (θ, ω, T_a) part, by the loop's [`Propagator`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Free {
     t0: f64,
-    /// Real modes: (λ, P_k δ₀, λ P_k δ₀); `real` of them are used.
-    reals: [(f64, [f64; 3], [f64; 3]); 3],
-    real: usize,
-    /// A conjugate pair λ = α ± iβ: (α, β, 2P δ₀, 2λ P δ₀) as complex vectors.
-    pair: Option<(f64, f64, [Complex; 3], [Complex; 3])>,
+    /// δ₀ on the (θ, ω, T_a) part, 0 elsewhere.
+    delta: State,
+    lin: Loop,
+    propagator: Propagator,
 }
 
 impl Free {
     /// The free response of `lin` from `delta` at `t0`; None when its free response does not
     /// decay or δ₀ is not finite.
     fn new(lin: &Loop, t0: f64, delta: [f64; 3]) -> Option<Self> {
-        let lambda = lin.lambda?;
         if !delta.iter().all(|x| x.is_finite()) {
             return None;
         }
-        let a = lin.a;
-        // (A − λI)v.
-        let apply = |v: [Complex; 3], l: Complex| -> [Complex; 3] { std::array::from_fn(|r| v[0] * a[r][0] + v[1] * a[r][1] + v[2] * a[r][2] - v[r] * l) };
-        let mut free = Self { t0, reals: [(0.0, [0.0; 3], [0.0; 3]); 3], real: 0, pair: None };
-        for k in 0..3 {
-            let l = lambda[k];
-            if l.im < 0.0 {
-                continue; // its conjugate carries it
-            }
-            let mut v = delta.map(|x| Complex::new(x, 0.0));
-            let mut den = Complex::new(1.0, 0.0);
-            for i in (0..3).filter(|&i| i != k) {
-                v = apply(v, lambda[i]);
-                den *= l - lambda[i];
-            }
-            let v = v.map(|x| x / den);
-            if l.im > 0.0 {
-                free.pair = Some((l.re, l.im, v.map(|x| x * 2.0), v.map(|x| x * l * 2.0)));
-            } else {
-                free.reals[free.real] = (l.re, v.map(|x| x.re), v.map(|x| (x * l).re));
-                free.real += 1;
-            }
-        }
-        Some(free)
+        let delta = State::from([delta[0], delta[1], delta[2], 0.0, 0.0, 0.0]);
+        Some(Self { t0, delta, lin: *lin, propagator: Propagator::new(lin)? })
     }
 
     /// (e^{A(t−t₀)}δ₀, A·e^{A(t−t₀)}δ₀).
     #[inline]
     fn at(&self, t: f64) -> ([f64; 3], [f64; 3]) {
-        let tau = t - self.t0;
-        let (mut y, mut dy) = ([0.0; 3], [0.0; 3]);
-        for &(l, v, lv) in &self.reals[..self.real] {
-            let m = crate::fast_math::exp(l * tau);
-            for r in 0..3 {
-                y[r] += v[r] * m;
-                dy[r] += lv[r] * m;
-            }
-        }
-        if let Some((alpha, beta, v, lv)) = &self.pair {
-            // Re(v·e^{(α + iβ)τ}) = e^{ατ}(Re v·cos βτ − Im v·sin βτ).
-            let m = crate::fast_math::exp(alpha * tau);
-            let (sn, cs) = crate::fast_math::sin_cos(beta * tau);
-            let (c, s) = (m * cs, m * sn);
-            for r in 0..3 {
-                y[r] += v[r].re * c - v[r].im * s;
-                dy[r] += lv[r].re * c - lv[r].im * s;
-            }
-        }
-        (y, dy)
+        let y = self.propagator.propagate(t - self.t0, &self.delta);
+        let y = [y[0], y[1], y[2]];
+        (y, self.lin.apply_matrix(&y))
     }
 }
 
