@@ -38,6 +38,7 @@ pub mod rig;
 pub mod solve_start;
 pub mod starvation;
 pub mod viscosity;
+pub mod zero_velocity;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).
 pub use numfmt as fmt;

@@ -1,0 +1,116 @@
+//! The presliding joint as a stateful object: the law of [`super::presliding`] with its state,
+//! stepped the way the FMU steps it. The FMU (Co-Simulation and Model Exchange) and the
+//! Python package hold one of these, so every front end applies the same law to the same
+//! numbers.
+//!
+//! The state is the presliding torque τ committed at a reference angle θ_ref. Between
+//! commits the torque at an angle θ is the law's exact update over the increment θ − θ_ref
+//! ([`PreslidingJoint::torque_at`]); [`PreslidingJoint::commit`] makes it the new state.
+//! A host that does not track the angle drives the state with ω·h instead
+//! ([`PreslidingJoint::advance`]). Under Model Exchange the host's integrator owns τ and
+//! integrates [`Presliding::rate`].
+
+use super::jet::{Jet, Scalar};
+use super::presliding::Presliding;
+
+/// The sliding torque T and its partials with respect to the angular velocity and the load,
+/// as the law's bound: a [`Jet`] over (angle, angular velocity, load), ∂T/∂angle = 0.
+pub fn bound_jet(torque: f64, dtorque_domega: f64, dtorque_dload: f64) -> Jet {
+    Jet::with(torque, [0.0, dtorque_domega, dtorque_dload])
+}
+
+/// Central differences of the sliding torque `bound(load, omega)` (N·m) with respect to ω
+/// and P, for the directional derivatives: steps 1e-6 of |ω| (at least 1e-9 rad/s) and of |P|
+/// (at least 1e-3 N). T depends on |ω| and |P|, so at ω = 0 or P = 0 the symmetric difference
+/// gives 0. Returns (T, ∂T/∂ω, ∂T/∂P).
+pub fn bound_partials<E>(mut bound: impl FnMut(f64, f64) -> Result<f64, E>, load: f64, omega: f64) -> Result<(f64, f64, f64), E> {
+    let t = bound(load, omega)?;
+    let hw = (1e-6 * omega.abs()).max(1e-9);
+    let hp = (1e-6 * load.abs()).max(1e-3);
+    let dw = (bound(load, omega + hw)? - bound(load, omega - hw)?) / (2.0 * hw);
+    let dp = (bound(load + hp, omega)? - bound(load - hp, omega)?) / (2.0 * hp);
+    Ok((t, dw, dp))
+}
+
+/// The presliding state of one joint and its law.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PreslidingJoint {
+    law: Presliding,
+    /// τ, the presliding torque at the reference angle (N·m).
+    torque: f64,
+    /// θ_ref (rad).
+    angle: f64,
+}
+
+impl PreslidingJoint {
+    /// At rest at `angle` (rad), nothing held.
+    pub fn new(law: Presliding, angle: f64) -> Self {
+        PreslidingJoint { law, torque: 0.0, angle }
+    }
+
+    /// With a committed presliding torque `torque` (N·m) at the reference angle `angle` (rad).
+    pub fn at_state(law: Presliding, torque: f64, angle: f64) -> Self {
+        PreslidingJoint { law, torque, angle }
+    }
+
+    /// The law.
+    pub fn law(&self) -> &Presliding {
+        &self.law
+    }
+
+    /// The committed presliding torque τ (N·m).
+    pub fn presliding_torque(&self) -> f64 {
+        self.torque
+    }
+
+    /// The reference angle θ_ref (rad) at which τ was committed.
+    pub fn reference_angle(&self) -> f64 {
+        self.angle
+    }
+
+    /// Replace the state (e.g. from a stored FMU state, or a Model Exchange host's τ).
+    pub fn set_state(&mut self, torque: f64, angle: f64) {
+        self.torque = torque;
+        self.angle = angle;
+    }
+
+    /// The presliding torque τ at `angle` (rad) with the sliding torque `bound` (N·m): the
+    /// exact update over θ − θ_ref.
+    pub fn held_at(&self, angle: f64, bound: f64) -> f64 {
+        self.law.deflect(self.torque, angle - self.angle, bound)
+    }
+
+    /// The friction torque on the pin (N·m) at `angle` (rad) and `omega` (rad/s) with the
+    /// sliding torque `bound` = T(P, |ω|) (N·m), without changing the state.
+    pub fn torque_at(&self, angle: f64, omega: f64, bound: f64) -> f64 {
+        self.law.torque(self.held_at(angle, bound), omega, bound)
+    }
+
+    /// Commit the state at `angle`: τ ← τ at `angle`, θ_ref ← `angle`.
+    pub fn commit(&mut self, angle: f64, bound: f64) {
+        self.torque = self.held_at(angle, bound);
+        self.angle = angle;
+    }
+
+    /// Drive the state by ω·h (for a host that does not set the angle): τ ← the update over
+    /// `omega`·`step`; θ_ref unchanged.
+    pub fn advance(&mut self, omega: f64, step: f64, bound: f64) {
+        self.torque = self.law.deflect(self.torque, omega * step, bound);
+    }
+
+    /// The friction torque at (`angle`, `omega`) and its partial derivatives with respect to
+    /// (angle, angular velocity, load), `bound` carrying T and its partials ([`bound_jet`]).
+    pub fn torque_partials(&self, angle: f64, omega: f64, bound: Jet) -> Jet {
+        let tau = self.law.deflect(Jet::c(self.torque), Jet::var(angle - self.angle, 0), bound);
+        self.law.torque(tau, Jet::var(omega, 1), bound)
+    }
+}
+
+/// Model Exchange: the friction torque and dτ/dt at the state `tau` (N·m), with their partial
+/// derivatives with respect to (τ, angular velocity, load); `bound` is T with its partials
+/// in the last two slots (its first, ∂T/∂τ, is 0).
+pub fn state_partials(law: &Presliding, tau: f64, omega: f64, bound: Jet) -> (Jet, Jet) {
+    let x = Jet::var(tau, 0);
+    let w = Jet::var(omega, 1);
+    (law.torque(x, w, bound), law.rate(x, w, bound))
+}
