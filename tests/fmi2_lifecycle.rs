@@ -225,7 +225,7 @@ fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
     }
     let r = [vr("torque")];
     let order = [1];
-    assert_eq!(fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, r.as_ptr(), 1, x.as_ptr(), x.as_mut_ptr()), ERROR);
+    assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, r.as_ptr(), 1, x.as_ptr(), x.as_mut_ptr()) }, ERROR);
     assert!(h.last().contains("providesDirectionalDerivative"));
     assert_eq!(fmi2SetRealInputDerivatives(c, r.as_ptr(), 1, order.as_ptr(), x.as_ptr()), ERROR);
     assert!(h.last().contains("canInterpolateInputs"));

@@ -841,7 +841,7 @@ pub mod fmi {
                     let mut out = [0.0];
                     let order = [1];
                     let s = match inp.u8() % 4 {
-                        0 => fmi2GetDirectionalDerivative(c, vrs.as_ptr(), 1, vrs.as_ptr(), 1, [1.0].as_ptr(), out.as_mut_ptr()),
+                        0 => unsafe { fmi2GetDirectionalDerivative(c, vrs.as_ptr(), 1, vrs.as_ptr(), 1, [1.0].as_ptr(), out.as_mut_ptr()) },
                         1 => fmi2SetRealInputDerivatives(c, vrs.as_ptr(), 1, order.as_ptr(), [1.0].as_ptr()),
                         2 => fmi2GetRealOutputDerivatives(c, vrs.as_ptr(), 1, order.as_ptr(), out.as_mut_ptr()),
                         _ => fmi2CancelStep(c),

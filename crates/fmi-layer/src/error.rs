@@ -9,7 +9,7 @@
 //!   well-formed byte stream: what was being read and where.
 //! - [`XmlError`]: a model table from which no valid modelDescription.xml can be written.
 
-use crate::fmi2::instance::Interface;
+use crate::fmi2::interface::Interface;
 use crate::fmi2::model::ModelError;
 use crate::fmt::Num;
 use std::ffi::c_int;
@@ -47,6 +47,9 @@ pub enum NotSettable {
     /// A parameter in continuous-time mode (Model Exchange).
     #[error("is a parameter: in continuousTimeMode only continuous inputs may be set (enter event mode first)")]
     ParameterInContinuousTime,
+    /// A local variable (`causality="local"`): computed by the model, read-only for the host.
+    #[error("cannot be set: local variables are computed by the FMU (under Model Exchange continuous states are set with SetContinuousStates)")]
+    Local,
 }
 
 /// Which declared range an output left.
@@ -81,7 +84,7 @@ impl fmt::Display for StatusKindName {
 
 /// Why an FMI call failed; logged as `<function>: <message>` with status `fmi2Error`
 /// (`fmi3Error`). Argument errors leave the instance as it was; a [`CallError::Model`] from
-/// initialization or a step moves it to the `error` state (see [`crate::fmi2::instance`]).
+/// initialization or a step moves it to the `error` state (see the instance module, `fmi2::instance`).
 #[derive(Debug, thiserror::Error)]
 pub enum CallError {
     /// An instantiation without an instance name.
@@ -204,6 +207,69 @@ pub enum CallError {
         n: usize,
         /// The model's name.
         model: &'static str,
+    },
+    /// A non-zero count of event indicators of a model with continuous states (`what`, e.g.
+    /// `ni`); a model without states reports [`CallError::NoContinuousStates`] as it always has.
+    #[error("{what} = {n}, but {model} has no event indicators (0)")]
+    NoEventIndicators {
+        /// The argument's name.
+        what: &'static str,
+        /// Its value.
+        n: usize,
+        /// The model's name.
+        model: &'static str,
+    },
+    /// A count of continuous states other than the model's (`what`, e.g. `nx`).
+    #[error("{what} = {given}, but {model} has {expected} continuous state{}", if *.expected == 1 { "" } else { "s" })]
+    StateCount {
+        /// The argument's name.
+        what: &'static str,
+        /// Its value.
+        given: usize,
+        /// The model's number of continuous states.
+        expected: usize,
+        /// The model's name.
+        model: &'static str,
+    },
+    /// A directional derivative of a variable that is no unknown of the call (FMI 2.0 §2.1.9,
+    /// FMI 3.0 §2.2.12): `allowed` says what is.
+    #[error("{variable} cannot be an unknown of a directional derivative: unknowns are {allowed}")]
+    NotAnUnknown {
+        /// The variable.
+        variable: VariableName,
+        /// What may be an unknown here.
+        allowed: &'static str,
+    },
+    /// A directional derivative with respect to a variable that is no known of the call.
+    #[error("{variable} cannot be a known of a directional derivative: knowns are {allowed}")]
+    NotAKnown {
+        /// The variable.
+        variable: VariableName,
+        /// What may be a known here.
+        allowed: &'static str,
+    },
+    /// FMI 3.0: a seed or sensitivity array whose length is not that of its value references
+    /// (every variable is a scalar).
+    #[error("{what} = {given}, but {of} = {expected}: every variable of this FMU is a scalar")]
+    ArrayLength {
+        /// The length argument, e.g. `nSeed`.
+        what: &'static str,
+        /// Its value.
+        given: usize,
+        /// The count it must equal, e.g. `nKnowns`.
+        of: &'static str,
+        /// That count.
+        expected: usize,
+    },
+    /// A partial derivative the model computed that is not a finite number.
+    #[error("the model gives the partial derivative of {unknown} with respect to {known} = {}, which is not a finite number", Num(*.value))]
+    PartialNotFinite {
+        /// The unknown's name.
+        unknown: String,
+        /// The known's name.
+        known: String,
+        /// The value the model gave.
+        value: f64,
     },
     /// A log category the FMU does not declare.
     #[error("unknown log category '{name}' (known: {known})")]
@@ -400,7 +466,7 @@ pub enum StateFormatError {
 }
 
 /// A model's part of a serialized FMU state that is not well formed is the model's error
-/// (what the model's `deserialize` returns when a [`crate::fmi2::bytes::ByteReader`] read fails).
+/// (what the model's `deserialize` returns when a read of the layer's byte reader (`fmi2::bytes`) fails).
 impl From<StateFormatError> for ModelError {
     fn from(e: StateFormatError) -> Self {
         ModelError::RejectedState(e.to_string())
@@ -442,13 +508,48 @@ pub enum XmlError {
         /// The missing variable.
         name: &'static str,
     },
-    /// An output depending on a variable that is not an input.
-    #[error("{output} may only depend on inputs, not on {name}")]
+    /// An output or state derivative depending on a variable that is neither an input nor a
+    /// continuous state.
+    #[error("{output} may only depend on inputs and continuous states, not on {name}")]
     DependsOnNonInput {
         /// The output.
         output: String,
         /// The variable that is not an input.
         name: &'static str,
+    },
+    /// A derivative naming a state the table does not have.
+    #[error("{derivative} is declared the derivative of unknown variable {state}")]
+    UnknownState {
+        /// The derivative variable.
+        derivative: String,
+        /// The missing state.
+        state: &'static str,
+    },
+    /// A continuous state that cannot be one (FMI 2.0 §2.2.8, FMI 3.0 §2.4.8).
+    #[error("continuous state {state} {why}")]
+    InvalidState {
+        /// The state.
+        state: String,
+        /// What is wrong, e.g. `must be a Real variable`.
+        why: &'static str,
+    },
+    /// A state derivative that cannot be one.
+    #[error("state derivative {derivative} {why}")]
+    InvalidDerivative {
+        /// The derivative variable.
+        derivative: String,
+        /// What is wrong, e.g. `must have initial="calculated"`.
+        why: &'static str,
+    },
+    /// Two derivatives of one state.
+    #[error("{state} has two derivatives, {first} and {second}")]
+    DuplicateDerivative {
+        /// The state.
+        state: &'static str,
+        /// The first derivative in table order.
+        first: String,
+        /// The second.
+        second: String,
     },
     /// A variable using the value reference FMI 3.0 reserves for `time`.
     #[error("value reference {0} is reserved for the independent variable time in FMI 3.0")]

@@ -18,10 +18,14 @@
 //! `pinjoint-fmu` crate) passes its registry of models in from its own root with
 //! [`export_fmi2!`], the one entry point that must choose a model by GUID.
 
-pub mod error;
+// Modules in dependency order, lowest first; each file uses only files listed before it:
+// `fmt` (numfmt); in `fmi2`, the leaves `types`, `state`, `logging`, `model`, `interface`;
+// then `error` (which uses only those leaves); then the rest of `fmi2` (`bytes`, `snapshot`,
+// `variables`, `instance`, `api`), the shared XML writer `xml`, `fmi2::xml`, and `fmi3`.
 pub mod fmi2;
-pub mod fmi3;
+pub mod error;
 mod xml;
+pub mod fmi3;
 
 pub use error::{CallError, StateFormatError, XmlError};
 

@@ -7,7 +7,7 @@
 
 use crate::error::XmlError;
 use crate::fmi2::logging::Category;
-use crate::fmi2::variables::{Causality, Kind, ModelInfo, UnitDef, Variable};
+use crate::fmi2::variables::{Causality, Initial, Kind, ModelInfo, UnitDef, Variability, Variable};
 use std::fmt::Write;
 
 /// Escape text for an XML attribute value.
@@ -130,8 +130,8 @@ pub(crate) fn variable_attributes(v: &Variable) -> String {
 }
 
 /// The type attributes of a variable, each after a space: the enumeration type or, for a
-/// Real, the quantity's type, unit and display unit; then min and max (not for a Boolean) and
-/// start. An error for a unit on a variable that is not Real, a unit missing from the table,
+/// Real, the quantity's type, unit and display unit; then min and max (not for a Boolean),
+/// nominal (a Real only) and start. An error for a unit on a variable that is not Real, a unit missing from the table,
 /// or a display unit its unit does not define.
 pub(crate) fn type_attributes(info: &ModelInfo, v: &Variable) -> Result<String, XmlError> {
     let mut a = String::new();
@@ -157,7 +157,8 @@ pub(crate) fn type_attributes(info: &ModelInfo, v: &Variable) -> Result<String, 
         Kind::Boolean => (x != 0.0).to_string(),
     };
     let bounds = if v.kind == Kind::Boolean { [None, None] } else { [v.min, v.max] };
-    for (name, x) in [("min", bounds[0]), ("max", bounds[1]), ("start", v.start)] {
+    let nominal = if v.kind == Kind::Real { v.nominal } else { None };
+    for (name, x) in [("min", bounds[0]), ("max", bounds[1]), ("nominal", nominal), ("start", v.start)] {
         if let Some(x) = x {
             write!(a, r#" {name}="{}""#, value(x)).unwrap();
         }
@@ -165,21 +166,96 @@ pub(crate) fn type_attributes(info: &ModelInfo, v: &Variable) -> Result<String, 
     Ok(a)
 }
 
-/// Each output's index in the table with the indices of the inputs it depends on directly
-/// (ModelStructure); an error for a dependency on an unknown variable or on one that is not
-/// an input.
-pub(crate) fn output_dependencies(info: &ModelInfo) -> Result<Vec<(usize, Vec<usize>)>, XmlError> {
-    let mut out = Vec::new();
-    for (i, v) in info.variables.iter().enumerate().filter(|(_, v)| v.causality == Causality::Output) {
-        let mut deps = Vec::new();
-        for &name in &v.depends_on {
-            let j = info.index_by_name(name).ok_or_else(|| XmlError::UnknownDependency { output: v.name.clone(), name })?;
-            if info.variables[j].causality != Causality::Input {
-                return Err(XmlError::DependsOnNonInput { output: v.name.clone(), name });
-            }
-            deps.push(j);
+/// The continuous states as (state index, derivative index) pairs in table order of the
+/// derivatives ([`ModelInfo::continuous_states`]), checked against FMI 2.0 §2.2.7-§2.2.8 and
+/// FMI 3.0 §2.4.7-§2.4.8: the named state exists, is a continuous Real with causality local or
+/// output and is no derivative itself; the derivative is a continuous Real with causality local
+/// or output and `initial="calculated"`; no state has two derivatives.
+pub(crate) fn continuous_states(info: &ModelInfo) -> Result<Vec<(usize, usize)>, XmlError> {
+    let mut out: Vec<(usize, usize)> = Vec::new();
+    for (d, v) in info.variables.iter().enumerate() {
+        let Some(state) = v.derivative_of else { continue };
+        let derivative = || v.name.clone();
+        let x = info.index_by_name(state).ok_or_else(|| XmlError::UnknownState { derivative: derivative(), state })?;
+        let bad_derivative = |why| Err(XmlError::InvalidDerivative { derivative: derivative(), why });
+        if v.kind != Kind::Real {
+            return bad_derivative("must be a Real variable");
         }
-        out.push((i, deps));
+        if v.variability != Variability::Continuous {
+            return bad_derivative("must have variability \"continuous\"");
+        }
+        if v.initial != Initial::Calculated {
+            return bad_derivative("must have initial \"calculated\"");
+        }
+        if !matches!(v.causality, Causality::Local | Causality::Output) {
+            return bad_derivative("must have causality \"local\" or \"output\"");
+        }
+        let s = &info.variables[x];
+        let bad_state = |why| Err(XmlError::InvalidState { state: s.name.clone(), why });
+        if s.kind != Kind::Real {
+            return bad_state("must be a Real variable");
+        }
+        if s.variability != Variability::Continuous {
+            return bad_state("must have variability \"continuous\"");
+        }
+        if !matches!(s.causality, Causality::Local | Causality::Output) {
+            return bad_state("must have causality \"local\" or \"output\"");
+        }
+        if s.derivative_of.is_some() {
+            return bad_state("is itself a derivative (higher-order states are not supported)");
+        }
+        if let Some(&(_, first)) = out.iter().find(|&&(y, _)| y == x) {
+            return Err(XmlError::DuplicateDerivative { state, first: info.variables[first].name.clone(), second: v.name.clone() });
+        }
+        out.push((x, d));
     }
+    Ok(out)
+}
+
+/// The indices of the variables variable `i` depends on directly (its `depends_on`), each an
+/// input or a continuous state of `states`; an error for an unknown name or any other variable.
+fn dependencies(info: &ModelInfo, i: usize, states: &[(usize, usize)]) -> Result<Vec<usize>, XmlError> {
+    let v = &info.variables[i];
+    let mut deps = Vec::new();
+    for &name in &v.depends_on {
+        let j = info.index_by_name(name).ok_or_else(|| XmlError::UnknownDependency { output: v.name.clone(), name })?;
+        if info.variables[j].causality != Causality::Input && !states.iter().any(|&(x, _)| x == j) {
+            return Err(XmlError::DependsOnNonInput { output: v.name.clone(), name });
+        }
+        deps.push(j);
+    }
+    Ok(deps)
+}
+
+/// Each output's index in the table with the indices of the inputs and continuous states it
+/// depends on directly (ModelStructure `<Outputs>`/`<Output>`); an error for a dependency on
+/// an unknown variable or on one that is neither an input nor a state.
+pub(crate) fn output_dependencies(info: &ModelInfo) -> Result<Vec<(usize, Vec<usize>)>, XmlError> {
+    let states = continuous_states(info)?;
+    let outputs = info.variables.iter().enumerate().filter(|(_, v)| v.causality == Causality::Output);
+    outputs.map(|(i, _)| Ok((i, dependencies(info, i, &states)?))).collect()
+}
+
+/// Each state derivative's index (in state order) with the indices of the inputs and
+/// continuous states it depends on directly (ModelStructure `<Derivatives>` /
+/// `<ContinuousStateDerivative>`).
+pub(crate) fn derivative_dependencies(info: &ModelInfo) -> Result<Vec<(usize, Vec<usize>)>, XmlError> {
+    let states = continuous_states(info)?;
+    states.iter().map(|&(_, d)| Ok((d, dependencies(info, d, &states)?))).collect()
+}
+
+/// The initial unknowns (FMI 2.0 §2.2.8 `<InitialUnknowns>`, FMI 3.0 §2.4.8
+/// `<InitialUnknown>`), in ascending table order without duplicates: the outputs with
+/// `initial="calculated"` (this layer has no `approx`) and the continuous states and state
+/// derivatives with `initial="calculated"` (no model of this layer has a calculatedParameter).
+pub(crate) fn initial_unknowns(info: &ModelInfo) -> Result<Vec<usize>, XmlError> {
+    let states = continuous_states(info)?;
+    let calculated = |i: usize| info.variables[i].initial == Initial::Calculated;
+    let mut out: Vec<usize> = info.variables.iter().enumerate().filter(|&(i, v)| v.causality == Causality::Output && calculated(i)).map(|(i, _)| i).collect();
+    for &(x, d) in &states {
+        out.extend([x, d].into_iter().filter(|&i| calculated(i)));
+    }
+    out.sort_unstable();
+    out.dedup();
     Ok(out)
 }

@@ -2,7 +2,7 @@
 
 use fmi_layer::fmi2::variables::{Causality, Initial, Kind, Variability, Variable};
 
-/// A declaration with no start value, range or dependencies: parameters are `fixed`,
+/// A declaration with no start value, range, nominal, dependencies or derivative: parameters are `fixed`,
 /// Boolean and Integer outputs `discrete`, everything else `continuous`; outputs are
 /// `calculated`, inputs and parameters `exact`.
 pub fn declare(
@@ -33,5 +33,7 @@ pub fn declare(
         max: None,
         description: description.into(),
         depends_on: vec![],
+        derivative_of: None,
+        nominal: None,
     }
 }

@@ -70,7 +70,8 @@ pub fn registry() -> Vec<&'static ModelInfo> {
 }
 
 /// A model of this library (identifier = name, this crate's version, [`LEGAL`]):
-/// Co-Simulation only unless the caller sets `model_exchange`.
+/// Co-Simulation only unless the caller sets `model_exchange`, without directional
+/// derivatives unless the caller sets `directional_derivatives`.
 pub fn model_info(
     name: &'static str,
     description: &'static str,
@@ -90,6 +91,7 @@ pub fn model_info(
         create,
         documentation,
         model_exchange: false,
+        directional_derivatives: false,
         legal: LEGAL,
     }
 }

@@ -24,6 +24,8 @@ fn var(name: &str, vr: u32, causality: Causality, d: &str) -> Variable {
         description: d.into(),
         depends_on: if input { vec![] } else if vr == 11 { vec!["u1"] } else { vec!["u2"] },
         kind: Kind::Real,
+        derivative_of: None,
+        nominal: None,
     }
 }
 
@@ -49,6 +51,7 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
             .into()
     },
     model_exchange: false,
+    directional_derivatives: false,
     legal: crate::LEGAL,
 });
 

@@ -62,12 +62,13 @@ pub fn choices(t: &EnumType) -> String {
 }
 
 /// The word a message puts before a variable's name: `input`, `parameter`, or nothing for
-/// an output (only checked when a state is restored).
+/// an output (only checked when a state is restored) or a local variable (a continuous
+/// state, checked when the host sets it under Model Exchange).
 pub fn role(c: Causality) -> &'static str {
     match c {
         Causality::Input => "input",
         Causality::Parameter => "parameter",
-        Causality::Output => "",
+        Causality::Output | Causality::Local => "",
     }
 }
 

@@ -24,16 +24,7 @@ const TAG: u64 = 0x504a_464d_4932_4f4b;
 /// logs and returns as `fmi2Error`.
 pub type CallResult = Result<Status, CallError>;
 
-/// The interface the host instantiated.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Interface {
-    /// Co-Simulation (`fmi2CoSimulation`, `fmi3InstantiateCoSimulation`): the FMU advances
-    /// its own time with `fmi2DoStep`.
-    CoSimulation,
-    /// No continuous states, no event indicators: the outputs are a map of the current
-    /// inputs, evaluated whenever the host reads them after setting inputs or time.
-    ModelExchange,
-}
+pub use super::interface::Interface;
 
 /// One FMU instance, the object behind an `fmi2Component`/`fmi3Instance`.
 pub struct Instance {
@@ -57,6 +48,9 @@ pub struct Instance {
     outputs_current: bool,
     /// The interface the instance was created for.
     pub interface: Interface,
+    /// The continuous states as (state index, derivative index), from
+    /// [`ModelInfo::continuous_states`] (computed once: Model Exchange reads it every step).
+    states: Vec<(usize, usize)>,
     /// Instantiated through the FMI 3.0 functions (type rules and messages of FMI 3.0).
     pub fmi3: bool,
 }
@@ -77,6 +71,7 @@ impl Instance {
             model: (info.create)(),
             outputs_current: false,
             interface: Interface::CoSimulation,
+            states: info.continuous_states(),
             fmi3: false,
         }
     }
@@ -119,6 +114,7 @@ impl Instance {
         let v = &self.info.variables[i];
         let why = match (v.causality, v.variability) {
             (Causality::Output, _) => NotSettable::Output,
+            (Causality::Local, _) => NotSettable::Local,
             (Causality::Parameter, Variability::Fixed)
                 if !matches!(self.state, State::Instantiated | State::InitializationMode) =>
             {
@@ -209,14 +205,14 @@ impl Instance {
         }
     }
 
-    /// `fmi2GetReal`/`Integer`/`Boolean` (values as f64): outputs are brought up to
-    /// date with the inputs first.
+    /// `fmi2GetReal`/`Integer`/`Boolean` (values as f64): outputs (and local variables, such
+    /// as state derivatives) are brought up to date with the inputs first.
     pub fn get_values(&mut self, kind: Kind, vrs: &[u32], values: &mut [f64]) -> CallResult {
         let mut idx = Vec::with_capacity(vrs.len());
         for &vr in vrs {
             idx.push(self.lookup_kind(vr, kind)?);
         }
-        if idx.iter().any(|&i| self.info.variables[i].causality == Causality::Output) {
+        if idx.iter().any(|&i| matches!(self.info.variables[i].causality, Causality::Output | Causality::Local)) {
             self.update_outputs()?;
         }
         for (&i, out) in idx.iter().zip(values.iter_mut()) {
@@ -310,14 +306,153 @@ impl Instance {
         Ok(())
     }
 
-    /// Model Exchange arrays of continuous states or event indicators: this layer's
-    /// models have none, so the length must be 0.
+    /// Model Exchange arrays of event indicators: this layer's models have none, so the length
+    /// must be 0.
     pub fn require_none(&self, what: &'static str, n: usize) -> Result<(), CallError> {
         self.require_model_exchange()?;
         if n != 0 {
-            return Err(CallError::NoContinuousStates { what, n, model: self.info.model_name });
+            let model = self.info.model_name;
+            return Err(if self.states.is_empty() {
+                CallError::NoContinuousStates { what, n, model }
+            } else {
+                CallError::NoEventIndicators { what, n, model }
+            });
         }
         Ok(())
+    }
+
+    /// The number of continuous states (`fmi3GetNumberOfContinuousStates`).
+    pub fn number_of_continuous_states(&self) -> usize {
+        self.states.len()
+    }
+
+    /// Model Exchange arrays of continuous states (FMI 2.0 §3.2.1, FMI 3.0 §3.2): the length
+    /// `n` (the argument `what`) must be the number of states.
+    pub fn require_state_count(&self, what: &'static str, n: usize) -> Result<(), CallError> {
+        self.require_model_exchange()?;
+        let expected = self.states.len();
+        if n != expected {
+            let model = self.info.model_name;
+            return Err(if expected == 0 {
+                CallError::NoContinuousStates { what, n, model }
+            } else {
+                CallError::StateCount { what, given: n, expected, model }
+            });
+        }
+        Ok(())
+    }
+
+    /// `fmi2SetContinuousStates`/`fmi3SetContinuousStates` (`x` of the length
+    /// [`Instance::require_state_count`] checked): every value passes [`Model::check_real`]
+    /// before any is stored, so a refused call changes nothing; the outputs are stale afterwards.
+    pub fn set_continuous_states(&mut self, x: &[f64]) -> CallResult {
+        for (&(state, _), &value) in self.states.iter().zip(x) {
+            self.model.check_real(state, value)?;
+        }
+        for (&(state, _), &value) in self.states.iter().zip(x) {
+            self.model.set_real(state, value);
+        }
+        if !x.is_empty() {
+            self.outputs_current = false;
+        }
+        Ok(Status::Ok)
+    }
+
+    /// `fmi2GetContinuousStates`/`fmi3GetContinuousStates`: the state vector into `out`.
+    pub fn get_continuous_states(&self, out: &mut [f64]) -> CallResult {
+        for (&(state, _), o) in self.states.iter().zip(out.iter_mut()) {
+            *o = self.model.get_real(state);
+        }
+        Ok(Status::Ok)
+    }
+
+    /// `fmi2GetDerivatives`/`fmi3GetContinuousStateDerivatives`: the outputs (and derivatives)
+    /// are brought up to date first, then the derivative of each state is written to `out`.
+    pub fn get_derivatives(&mut self, out: &mut [f64]) -> CallResult {
+        if !self.states.is_empty() {
+            self.update_outputs()?;
+        }
+        for (&(_, der), o) in self.states.iter().zip(out.iter_mut()) {
+            *o = self.model.get_real(der);
+        }
+        Ok(Status::Ok)
+    }
+
+    /// `fmi2GetNominalsOfContinuousStates`/`fmi3GetNominalsOfContinuousStates`: each state's
+    /// declared `nominal`, or 1.0 (FMI 2.0 §3.2.2: 1.0 when the FMU has no better value).
+    pub fn nominals_of_continuous_states(&self, out: &mut [f64]) -> CallResult {
+        for (&(state, _), o) in self.states.iter().zip(out.iter_mut()) {
+            *o = self.info.variables[state].nominal.unwrap_or(1.0);
+        }
+        Ok(Status::Ok)
+    }
+
+    /// Whether variable `i` is a continuous state.
+    fn is_state(&self, i: usize) -> bool {
+        self.states.iter().any(|&(x, _)| x == i)
+    }
+
+    /// `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9) / `fmi3GetDirectionalDerivative` (FMI
+    /// 3.0 §2.2.12): `out = J · seed` with `J[i][j]` the partial derivative of `unknowns[i]`
+    /// with respect to `knowns[j]` at the current values ([`Model::jacobian`], after the
+    /// outputs are brought up to date). Unknowns must be continuous Real outputs or, under
+    /// Model Exchange, state derivatives; knowns continuous Real inputs or, under Model
+    /// Exchange, continuous states (in initialization mode too: the standards also allow
+    /// partials with respect to parameters there, which this layer refuses with this message).
+    /// Refused without asking the model when the model does not declare the capability. An
+    /// empty `unknowns` or `knowns` writes nothing. `seed` has the length of `knowns`, `out`
+    /// that of `unknowns` (the callers check).
+    pub fn directional_derivative(&mut self, unknowns: &[u32], knowns: &[u32], seed: &[f64], out: &mut [f64]) -> CallResult {
+        if !self.info.directional_derivatives {
+            return Err(CallError::Unsupported(if self.fmi3 {
+                "directional derivatives are not provided (providesDirectionalDerivatives = false)"
+            } else {
+                "directional derivatives are not provided (providesDirectionalDerivative = false)"
+            }));
+        }
+        let me = self.interface == Interface::ModelExchange;
+        let continuous_real = |v: &super::variables::Variable| v.kind == Kind::Real && v.variability == Variability::Continuous;
+        let mut ui = Vec::with_capacity(unknowns.len());
+        for &vr in unknowns {
+            let i = self.lookup(vr)?;
+            let v = &self.info.variables[i];
+            let ok = continuous_real(v) && (v.causality == Causality::Output || (me && v.derivative_of.is_some()));
+            if !ok {
+                let allowed = if me { "continuous Real outputs and state derivatives" } else { "continuous Real outputs" };
+                return Err(CallError::NotAnUnknown { variable: self.describe(i), allowed });
+            }
+            ui.push(i);
+        }
+        let mut ki = Vec::with_capacity(knowns.len());
+        for &vr in knowns {
+            let i = self.lookup(vr)?;
+            let v = &self.info.variables[i];
+            let ok = continuous_real(v) && (v.causality == Causality::Input || (me && self.is_state(i)));
+            if !ok {
+                let allowed = if me {
+                    "continuous Real inputs and continuous states (partials with respect to parameters are not provided)"
+                } else {
+                    "continuous Real inputs (partials with respect to parameters are not provided)"
+                };
+                return Err(CallError::NotAKnown { variable: self.describe(i), allowed });
+            }
+            ki.push(i);
+        }
+        if ui.is_empty() || ki.is_empty() {
+            return Ok(Status::Ok);
+        }
+        self.update_outputs()?;
+        let nk = ki.len();
+        let mut jac = vec![0.0; ui.len() * nk];
+        self.model.jacobian(&ui, &ki, &mut jac)?;
+        if let Some(k) = jac.iter().position(|x| !x.is_finite()) {
+            let (unknown, known) = (self.info.variables[ui[k / nk]].name.clone(), self.info.variables[ki[k % nk]].name.clone());
+            return Err(CallError::PartialNotFinite { unknown, known, value: jac[k] });
+        }
+        for (row, o) in jac.chunks_exact(nk).zip(out.iter_mut()) {
+            *o = row.iter().zip(seed).map(|(a, b)| a * b).sum();
+        }
+        Ok(Status::Ok)
     }
 
     /// `fmi2ExitInitializationMode`: the model validates its parameters and computes its first

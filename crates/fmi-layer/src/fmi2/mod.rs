@@ -9,15 +9,18 @@
 //! shared library can serve several FMUs, each packaged with its own
 //! modelDescription.xml and a copy of the library named for its model identifier.
 
-pub mod api;
-pub mod bytes;
-pub mod instance;
+// Files in dependency order, lowest first (see the crate root): the leaves the error types
+// use, then the files that use `crate::error`.
+pub mod types;
+pub mod state;
 pub mod logging;
 pub mod model;
+pub mod interface;
+pub mod bytes;
 pub mod snapshot;
-pub mod state;
-pub mod types;
 pub mod variables;
+pub mod instance;
+pub mod api;
 pub mod xml;
 
 /// Export `fmi2Instantiate` for the models `$registry()` returns (a

@@ -42,6 +42,8 @@ pub enum ModelError {
     /// A computed quantity that is not finite (an overflow): `what` names it with its value,
     /// unit and the inputs it came from.
     NotFinite(String),
+    /// A capability the model does not implement (the message says which).
+    Unsupported(&'static str),
 }
 
 impl ModelError {
@@ -70,6 +72,7 @@ impl fmt::Display for ModelError {
                 write!(f, " {rule}")
             }
             ModelError::RejectedState(m) | ModelError::NotFinite(m) => f.write_str(m),
+            ModelError::Unsupported(m) => f.write_str(m),
             ModelError::Failed { context, source } => write!(f, "{context}{source}"),
         }
     }
@@ -123,6 +126,23 @@ pub trait Model {
 
     /// Advance from `time` over `step` (> 0) with the inputs held; outputs are current.
     fn do_step(&mut self, time: f64, step: f64) -> ModelResult<()>;
+
+    /// The partial derivatives of variables `unknowns` with respect to variables `knowns` at
+    /// the current values: `out[i * knowns.len() + j] = ∂ variable unknowns[i] / ∂ variable
+    /// knowns[j]` (indices into the variable table, row-major, `out.len() == unknowns.len() *
+    /// knowns.len()`), each in the unit of the unknown per unit of the known.
+    ///
+    /// The layer calls it for `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9) and
+    /// `fmi3GetDirectionalDerivative` (FMI 3.0 §2.2.12), which return `J · seed`, only when
+    /// [`ModelInfo::directional_derivatives`](crate::fmi2::variables::ModelInfo::directional_derivatives)
+    /// is true, after it has checked the value references and brought the outputs up to date
+    /// ([`Model::compute_outputs`], as for a getter). Unknowns are outputs or (Model Exchange)
+    /// state derivatives; knowns are inputs or (Model Exchange) continuous states. The default
+    /// refuses: a model that declares the capability must implement it.
+    fn jacobian(&mut self, unknowns: &[usize], knowns: &[usize], out: &mut [f64]) -> ModelResult<()> {
+        let _ = (unknowns, knowns, out);
+        Err(ModelError::Unsupported("directional derivatives are not provided by this model"))
+    }
 
     /// Append the model's complete state (parameters, inputs, internal states) in a
     /// self-describing, versioned byte form of the model's own.

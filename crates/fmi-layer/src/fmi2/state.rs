@@ -158,8 +158,13 @@ pub const GET_VALUE: Mask = Mask::of(&[
 pub const SET_VALUE: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete, EventMode, ContinuousTimeMode]);
 /// The FMU state functions (`fmi2GetFMUstate` … `fmi2DeSerializeFMUstate`): as [`RESET`].
 pub const FMU_STATE: Mask = RESET;
-/// `fmi2GetDirectionalDerivative`: as [`GET_VALUE`].
+/// `fmi2GetDirectionalDerivative` (FMI 2.0 §3.2.3 and §4.2.4 tables): as [`GET_VALUE`]
+/// (initialization, event and continuous-time mode; stepComplete, stepFailed, stepCanceled;
+/// terminated, error).
 pub const GET_DIRECTIONAL_DERIVATIVE: Mask = GET_VALUE;
+/// `fmi3GetDirectionalDerivative` (FMI 3.0 state machine, §3.2 and §4.2): initialization
+/// mode, event mode, continuous-time mode, step mode (`stepComplete`) and terminated.
+pub const GET_DIRECTIONAL_DERIVATIVE_FMI3: Mask = Mask::of(&[InitializationMode, EventMode, ContinuousTimeMode, StepComplete, Terminated]);
 /// `fmi2SetRealInputDerivatives` (Co-Simulation).
 pub const SET_REAL_INPUT_DERIVATIVES: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete]);
 /// `fmi2GetRealOutputDerivatives` (Co-Simulation).

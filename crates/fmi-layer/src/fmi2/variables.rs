@@ -13,6 +13,11 @@ pub enum Causality {
     Input,
     /// Computed by the model; the host only reads it.
     Output,
+    /// Internal to the model (FMI 2.0 §2.2.7, FMI 3.0 §2.4.7 `causality="local"`): the host
+    /// may read it but not set it (`fmi2SetReal`/`fmi3SetFloat64` refuse it). Continuous states
+    /// and their derivatives are local variables unless the model exposes them as outputs;
+    /// under Model Exchange the host sets the states with `fmi2SetContinuousStates`.
+    Local,
 }
 
 /// A variable's `variability` attribute: when its value may change.
@@ -100,6 +105,7 @@ impl Causality {
             Causality::Parameter => "parameter",
             Causality::Input => "input",
             Causality::Output => "output",
+            Causality::Local => "local",
         }
     }
 }
@@ -153,8 +159,18 @@ pub struct Variable {
     pub max: Option<f64>,
     /// What the variable is, for the modelDescription and messages.
     pub description: String,
-    /// Outputs: the names of the inputs the output depends on directly (ModelStructure).
+    /// Outputs and state derivatives: the names of the inputs and continuous states the
+    /// variable depends on directly (ModelStructure `dependencies`, FMI 2.0 §2.2.8, FMI 3.0
+    /// §2.4.8); empty for every other variable.
     pub depends_on: Vec<&'static str>,
+    /// The NAME of the continuous state this variable is the time derivative of (FMI 2.0
+    /// `<Real derivative=...>`, FMI 3.0 `<Float64 derivative=...>`), or `None`. A variable named
+    /// here is a continuous state ([`ModelInfo::continuous_states`]); the derivative must be a
+    /// continuous Real with `initial="calculated"`.
+    pub derivative_of: Option<&'static str>,
+    /// The `nominal` attribute of a Real (its typical magnitude, in its unit); for a
+    /// continuous state it is what `fmi2GetNominalsOfContinuousStates` reports (1.0 if `None`).
+    pub nominal: Option<f64>,
 }
 
 impl Variable {
@@ -199,6 +215,8 @@ pub struct UnitDef {
 
 /// Co-Simulation capabilities written to the modelDescription. The generic layer
 /// implements exactly these: variable step size, get/set and serialized FMU state.
+/// `providesDirectionalDerivative` is written with the model's
+/// [`ModelInfo::directional_derivatives`] instead of the value here.
 pub const CAPABILITIES: &[(&str, &str)] = &[
     ("needsExecutionTool", "false"),
     ("canHandleVariableCommunicationStepSize", "true"),
@@ -212,8 +230,10 @@ pub const CAPABILITIES: &[(&str, &str)] = &[
     ("providesDirectionalDerivative", "false"),
 ];
 
-/// Model Exchange capabilities (FMI 2.0 `<ModelExchange>`): no continuous states, no
-/// event indicators, so the host's `fmi2CompletedIntegratorStep` is not needed.
+/// Model Exchange capabilities (FMI 2.0 `<ModelExchange>`): no event indicators and no
+/// work at the end of an integrator step, so the host's `fmi2CompletedIntegratorStep` is not
+/// needed. `providesDirectionalDerivative` is written with the model's
+/// [`ModelInfo::directional_derivatives`] instead of the value here.
 pub const ME_CAPABILITIES: &[(&str, &str)] = &[
     ("needsExecutionTool", "false"),
     ("completedIntegratorStepNotNeeded", "true"),
@@ -257,17 +277,23 @@ pub struct ModelInfo {
     pub create: fn() -> Box<dyn Model>,
     /// The FMU's `documentation/index.html`.
     pub documentation: fn() -> String,
-    /// The model is also offered as Model Exchange (a stateless map of its inputs: no
-    /// continuous states, no event indicators; [`Model::do_step`] is never called there).
+    /// The model is also offered as Model Exchange: the host's integrator owns the continuous
+    /// states ([`ModelInfo::continuous_states`], possibly none), there are no event indicators,
+    /// and [`Model::do_step`] is never called.
     pub model_exchange: bool,
+    /// The model implements [`Model::jacobian`]: both interfaces write
+    /// `providesDirectionalDerivative="true"` (FMI 2.0) / `providesDirectionalDerivatives="true"`
+    /// (FMI 3.0) and `fmi2GetDirectionalDerivative`/`fmi3GetDirectionalDerivative` call it.
+    /// When false those functions are refused without asking the model.
+    pub directional_derivatives: bool,
     /// Author, copyright and licence of the model.
     pub legal: Legal,
 }
 
 impl ModelInfo {
     /// The GUID: a hash of everything that defines the interface (name, identifier, version,
-    /// and each variable's name, value reference, causality, variability, unit and,
-    /// for a non-Real variable, its type), so
+    /// and each variable's name, value reference, causality, variability, unit,
+    /// for a non-Real variable its type, and for a derivative its state), so
     /// that any change of the interface changes the GUID and a stale
     /// modelDescription.xml is refused by `fmi2Instantiate`.
     pub fn guid(&self) -> String {
@@ -286,6 +312,11 @@ impl ModelInfo {
             }
             if let Kind::Enumeration(t) = v.kind {
                 text.push_str(&format!(":{}", t.name));
+            }
+            // Which variable is a state's derivative changes the state vector (not written
+            // when absent, so the GUID of a table without states is what it always was).
+            if let Some(state) = v.derivative_of {
+                text.push_str(&format!(":der({state})"));
             }
         }
         let a = fnv1a64(text.as_bytes(), 0xcbf2_9ce4_8422_2325);
@@ -313,6 +344,19 @@ impl ModelInfo {
     /// The unit definition named `name`, if the model declares it.
     pub fn unit(&self, name: &str) -> Option<&UnitDef> {
         self.units.iter().find(|u| u.name == name)
+    }
+
+    /// The continuous states as (state index, derivative index) pairs, in the table order of
+    /// the derivative variables (the order of the state vector of `fmi2GetContinuousStates`
+    /// and of `<Derivatives>`, FMI 2.0 §2.2.8 / FMI 3.0 §2.4.8). A state is a variable named by
+    /// some variable's [`Variable::derivative_of`]; a name the table does not have is skipped
+    /// here (the XML generators refuse such a table).
+    pub fn continuous_states(&self) -> Vec<(usize, usize)> {
+        self.variables
+            .iter()
+            .enumerate()
+            .filter_map(|(d, v)| v.derivative_of.and_then(|name| self.index_by_name(name)).map(|x| (x, d)))
+            .collect()
     }
 
     /// The distinct enumeration types of the variables, in order of first use.

@@ -2,12 +2,14 @@
 //! [`ModelInfo`] (variable table, units, default experiment) and this layer's
 //! capabilities and log categories, so the file and the FMU's behaviour agree.
 //!
-//! ModelStructure: `<Outputs>` lists each output with the inputs it depends on
-//! directly (the model's `depends_on`; an empty list means it depends on no input
-//! at the same instant, as for an integral). `<InitialUnknowns>` lists the outputs
-//! (all `initial="calculated"`) without a `dependencies` attribute, which the
-//! standard reads as "depends on every known" — exact here, since at
-//! initialization every output may depend on every parameter.
+//! ModelStructure (FMI 2.0 §2.2.8): `<Outputs>` lists each output with the inputs and
+//! continuous states it depends on directly (the model's `depends_on`; an empty list means it
+//! depends on none at the same instant, as for an integral). `<Derivatives>` (only when the
+//! model has continuous states) lists each state derivative, in state order, with its direct
+//! dependencies. `<InitialUnknowns>` lists the outputs, states and state derivatives with
+//! `initial="calculated"`, in ascending index order, without a `dependencies` attribute, which
+//! the standard reads as "depends on every known" — exact here, since at initialization every
+//! unknown may depend on every parameter.
 
 use super::variables::{ModelInfo, Variable, CAPABILITIES, ME_CAPABILITIES};
 use crate::error::XmlError;
@@ -17,9 +19,22 @@ use std::fmt::Write;
 pub use crate::xml::{escape, num};
 
 /// The type element of a variable: `<Real .../>`, `<Integer .../>`, `<Boolean .../>` or
-/// `<Enumeration .../>`.
+/// `<Enumeration .../>`; a state derivative's `<Real>` names its state by 1-based index
+/// (`derivative`, FMI 2.0 §2.2.7).
 fn type_element(info: &ModelInfo, v: &Variable) -> Result<String, XmlError> {
-    Ok(format!("<{}{}/>", v.kind.as_str(), common::type_attributes(info, v)?))
+    let mut derivative = String::new();
+    if let Some(state) = v.derivative_of {
+        let x = info.index_by_name(state).ok_or_else(|| XmlError::UnknownState { derivative: v.name.clone(), state })?;
+        derivative = format!(r#" derivative="{}""#, x + 1);
+    }
+    Ok(format!("<{}{}{derivative}/>", v.kind.as_str(), common::type_attributes(info, v)?))
+}
+
+/// The capabilities of an interface element, `providesDirectionalDerivative` set to the
+/// model's [`ModelInfo::directional_derivatives`].
+fn capabilities(info: &ModelInfo, list: &'static [(&'static str, &'static str)]) -> Vec<(&'static str, &'static str)> {
+    let provides = if info.directional_derivatives { "true" } else { "false" };
+    list.iter().map(|&(k, v)| (k, if k == "providesDirectionalDerivative" { provides } else { v })).collect()
 }
 
 /// The type definitions of FMI 2.0: one Real type per unit in use, named for its quantity
@@ -47,9 +62,9 @@ pub fn model_description(info: &ModelInfo) -> Result<String, XmlError> {
     let w = &mut x;
     common::root_element(w, "2.0", "guid", "fmi2", info, &[("numberOfEventIndicators", "0")]);
     if info.model_exchange {
-        common::interface(w, "ModelExchange", info, ME_CAPABILITIES);
+        common::interface(w, "ModelExchange", info, &capabilities(info, ME_CAPABILITIES));
     }
-    common::interface(w, "CoSimulation", info, CAPABILITIES);
+    common::interface(w, "CoSimulation", info, &capabilities(info, CAPABILITIES));
 
     // The schema requires at least one <Unit> inside <UnitDefinitions>.
     if !info.units.is_empty() {
@@ -84,17 +99,25 @@ pub fn model_description(info: &ModelInfo) -> Result<String, XmlError> {
     }
     writeln!(w, "  </ModelVariables>").unwrap();
 
-    // ModelStructure indices count the variables from 1.
+    // ModelStructure (FMI 2.0 §2.2.8; schema order Outputs, Derivatives, InitialUnknowns):
+    // indices count the variables from 1.
     let outputs = common::output_dependencies(info)?;
-    writeln!(w, "  <ModelStructure>").unwrap();
-    writeln!(w, "    <Outputs>").unwrap();
-    for (i, deps) in &outputs {
+    let derivatives = common::derivative_dependencies(info)?;
+    let unknown = |w: &mut String, (i, deps): &(usize, Vec<usize>)| {
         let deps: Vec<String> = deps.iter().map(|j| (j + 1).to_string()).collect();
         writeln!(w, r#"      <Unknown index="{}" dependencies="{}"/>"#, i + 1, deps.join(" ")).unwrap();
-    }
+    };
+    writeln!(w, "  <ModelStructure>").unwrap();
+    writeln!(w, "    <Outputs>").unwrap();
+    outputs.iter().for_each(|u| unknown(w, u));
     writeln!(w, "    </Outputs>").unwrap();
+    if !derivatives.is_empty() {
+        writeln!(w, "    <Derivatives>").unwrap();
+        derivatives.iter().for_each(|u| unknown(w, u));
+        writeln!(w, "    </Derivatives>").unwrap();
+    }
     writeln!(w, "    <InitialUnknowns>").unwrap();
-    for (i, _) in &outputs {
+    for i in common::initial_unknowns(info)? {
         writeln!(w, r#"      <Unknown index="{}"/>"#, i + 1).unwrap();
     }
     writeln!(w, "    </InitialUnknowns>").unwrap();

@@ -4,7 +4,7 @@
 //! error logging, panic containment (a panic returns `fmi3Fatal`).
 //!
 //! Unsupported parts of the standard (clocks, scheduled execution, configuration mode,
-//! directional and adjoint derivatives, output derivatives, Float32/8-/16-bit/unsigned/String/
+//! adjoint derivatives, output derivatives, Float32/8-/16-bit/unsigned/String/
 //! Binary variables) are refused with a message naming why.
 
 #![allow(non_snake_case)]
@@ -470,20 +470,41 @@ guarded! {
         variable_dependencies(inst, dependent, arrays, nDependencies)
     };
 
-    /// `fmi3GetDirectionalDerivative` (FMI 3.0): not provided
-    /// (`providesDirectionalDerivatives = false`); always `fmi3Error`.
+    /// `fmi3GetDirectionalDerivative` (FMI 3.0 §2.2.12): `sensitivity = J · seed`, where
+    /// `J[i][j]` is the partial derivative of variable `unknowns[i]` with respect to
+    /// `knowns[j]` at the current values (as [`crate::fmi2::api::common::fmi2GetDirectionalDerivative`]:
+    /// unknowns outputs and, under Model Exchange, state derivatives; knowns inputs and, under
+    /// Model Exchange, continuous states). Every variable is a scalar, so `nSeed` must equal
+    /// `nKnowns` and `nSensitivity` `nUnknowns`. `fmi3Error` for a model without
+    /// `providesDirectionalDerivatives`, a NULL array, a length mismatch, an unknown value
+    /// reference, a variable that is no unknown/known, or a model failure.
+    ///
+    /// # Safety
+    /// Each array points to as many elements as its length argument says.
     #[allow(clippy::too_many_arguments)]
-    fn fmi3GetDirectionalDerivative(
+    unsafe fn fmi3GetDirectionalDerivative(
         instance: Fmi3Instance,
-        _unknowns: *const u32,
-        _nUnknowns: usize,
-        _knowns: *const u32,
-        _nKnowns: usize,
-        _seed: *const f64,
-        _nSeed: usize,
-        _sensitivity: *mut f64,
-        _nSensitivity: usize,
-    ) -> Fmi3StatusC: RESET => refuse("directional derivatives are not provided (providesDirectionalDerivatives = false)");
+        unknowns: *const u32,
+        nUnknowns: usize,
+        knowns: *const u32,
+        nKnowns: usize,
+        seed: *const f64,
+        nSeed: usize,
+        sensitivity: *mut f64,
+        nSensitivity: usize,
+    ) -> Fmi3StatusC: GET_DIRECTIONAL_DERIVATIVE_FMI3 => |inst| unsafe {
+        if nSeed != nKnowns {
+            return Err(CallError::ArrayLength { what: "nSeed", given: nSeed, of: "nKnowns", expected: nKnowns });
+        }
+        if nSensitivity != nUnknowns {
+            return Err(CallError::ArrayLength { what: "nSensitivity", given: nSensitivity, of: "nUnknowns", expected: nUnknowns });
+        }
+        let u = slice(unknowns, nUnknowns, "unknowns[]")?;
+        let k = slice(knowns, nKnowns, "knowns[]")?;
+        let s = slice(seed, nSeed, "seed[]")?;
+        let out = slice_mut(sensitivity, nSensitivity, "sensitivity[]")?;
+        inst.directional_derivative(u, k, s, out)
+    };
 
     /// `fmi3GetAdjointDerivative` (FMI 3.0): not provided
     /// (`providesAdjointDerivatives = false`); always `fmi3Error`.
@@ -540,7 +561,7 @@ guarded! {
     /// Co-Simulation instance.
     fn fmi3SetTime(instance: Fmi3Instance, time: f64) -> Fmi3StatusC: SET_TIME => |inst| inst.set_time(time);
 
-    /// `fmi3GetNumberOfEventIndicators` (FMI 3.0): writes 0 to `*nEventIndicators`
+    /// `fmi3GetNumberOfEventIndicators` (FMI 3.0 §3.2): writes 0 to `*nEventIndicators`
     /// (this FMU has no event indicators); `fmi3Error` if it is NULL.
     ///
     /// # Safety
@@ -548,13 +569,14 @@ guarded! {
     unsafe fn fmi3GetNumberOfEventIndicators(instance: Fmi3Instance, nEventIndicators: *mut usize) -> Fmi3StatusC: RESET =>
         |_| unsafe { write_out(nEventIndicators, 0, "nEventIndicators") };
 
-    /// `fmi3GetNumberOfContinuousStates` (FMI 3.0): writes 0 to `*nContinuousStates`
-    /// (this FMU has no continuous states); `fmi3Error` if it is NULL.
+    /// `fmi3GetNumberOfContinuousStates` (FMI 3.0 §3.2): writes the number of continuous
+    /// states (`<ContinuousStateDerivative>` elements) to `*nContinuousStates`; `fmi3Error` if
+    /// it is NULL.
     ///
     /// # Safety
     /// `nContinuousStates` is writable.
     unsafe fn fmi3GetNumberOfContinuousStates(instance: Fmi3Instance, nContinuousStates: *mut usize) -> Fmi3StatusC: RESET =>
-        |_| unsafe { write_out(nContinuousStates, 0, "nContinuousStates") };
+        |inst| unsafe { write_out(nContinuousStates, inst.number_of_continuous_states(), "nContinuousStates") };
 
     /// `fmi3EnterStepMode` (FMI 3.0): only allowed after event mode, which this
     /// Co-Simulation never enters (`hasEventMode = false`); always `fmi3Error`.

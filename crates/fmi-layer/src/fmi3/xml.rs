@@ -1,8 +1,9 @@
 //! The FMI 3.0 modelDescription.xml generator, from the same [`ModelInfo`] as the FMI 2.0
 //! one: variables, units, display units, quantities, enumeration types, log categories,
-//! default experiment. ModelStructure: each output with the value references of the inputs
-//! it depends on directly, and every output as an initial unknown (no `dependencies`: it may
-//! depend on every parameter at initialization).
+//! default experiment. ModelStructure (FMI 3.0 §2.4.8): each output and each state derivative
+//! with the value references of the inputs and continuous states it depends on directly, and
+//! the initial unknowns (outputs, states and derivatives with `initial="calculated"`, without
+//! `dependencies`: they may depend on every parameter at initialization).
 
 use crate::error::XmlError;
 use crate::fmi2::variables::{Kind, ModelInfo, Variable};
@@ -44,10 +45,23 @@ const CS: &[(&str, &str)] = &[
     ("providesEvaluateDiscreteStates", "false"),
 ];
 
-/// One variable element, e.g. `<Float64 name=... unit=... start=.../>`.
+/// One variable element, e.g. `<Float64 name=... unit=... start=.../>`; a state derivative
+/// names its state by value reference (`derivative`, FMI 3.0 §2.4.7).
 fn variable(info: &ModelInfo, v: &Variable) -> Result<String, XmlError> {
     let types = common::type_attributes(info, v)?;
-    Ok(format!("<{}{}{types}/>", element(v.kind), common::variable_attributes(v)))
+    let mut derivative = String::new();
+    if let Some(state) = v.derivative_of {
+        let x = info.index_by_name(state).ok_or_else(|| XmlError::UnknownState { derivative: v.name.clone(), state })?;
+        derivative = format!(r#" derivative="{}""#, info.variables[x].value_reference);
+    }
+    Ok(format!("<{}{}{types}{derivative}/>", element(v.kind), common::variable_attributes(v)))
+}
+
+/// The capabilities of an interface element, `providesDirectionalDerivatives` set to the
+/// model's [`ModelInfo::directional_derivatives`].
+fn capabilities<'a>(info: &ModelInfo, lists: impl IntoIterator<Item = &'a (&'static str, &'static str)>) -> Vec<(&'static str, &'static str)> {
+    let provides = if info.directional_derivatives { "true" } else { "false" };
+    lists.into_iter().map(|&(k, v)| (k, if k == "providesDirectionalDerivatives" { provides } else { v })).collect()
 }
 
 /// The complete FMI 3.0 modelDescription.xml of `info` (Model Exchange if the model offers it,
@@ -57,9 +71,9 @@ pub fn model_description(info: &ModelInfo) -> Result<String, XmlError> {
     let w = &mut x;
     common::root_element(w, "3.0", "instantiationToken", "fmi3", info, &[]);
     if info.model_exchange {
-        common::interface(w, "ModelExchange", info, COMMON.iter().chain(ME));
+        common::interface(w, "ModelExchange", info, &capabilities(info, COMMON.iter().chain(ME)));
     }
-    common::interface(w, "CoSimulation", info, COMMON.iter().chain(CS));
+    common::interface(w, "CoSimulation", info, &capabilities(info, COMMON.iter().chain(CS)));
 
     // The independent variable time needs the unit s and a type of quantity Time.
     let has_seconds = info.units.iter().any(|u| u.name == "s" && info.variables.iter().any(|v| v.unit == Some("s")));
@@ -110,16 +124,20 @@ pub fn model_description(info: &ModelInfo) -> Result<String, XmlError> {
     }
     writeln!(w, "  </ModelVariables>").unwrap();
 
-    // ModelStructure names variables by value reference.
+    // ModelStructure (FMI 3.0 §2.4.8; schema order Output, ContinuousStateDerivative,
+    // InitialUnknown) names variables by value reference.
     let outputs = common::output_dependencies(info)?;
+    let derivatives = common::derivative_dependencies(info)?;
     let vr = |j: &usize| info.variables[*j].value_reference;
     writeln!(w, "  <ModelStructure>").unwrap();
-    for (i, deps) in &outputs {
-        let deps: Vec<String> = deps.iter().map(|j| vr(j).to_string()).collect();
-        writeln!(w, r#"    <Output valueReference="{}" dependencies="{}"/>"#, vr(i), deps.join(" ")).unwrap();
+    for (tag, list) in [("Output", &outputs), ("ContinuousStateDerivative", &derivatives)] {
+        for (i, deps) in list {
+            let deps: Vec<String> = deps.iter().map(|j| vr(j).to_string()).collect();
+            writeln!(w, r#"    <{tag} valueReference="{}" dependencies="{}"/>"#, vr(i), deps.join(" ")).unwrap();
+        }
     }
-    for (i, _) in &outputs {
-        writeln!(w, r#"    <InitialUnknown valueReference="{}"/>"#, vr(i)).unwrap();
+    for i in common::initial_unknowns(info)? {
+        writeln!(w, r#"    <InitialUnknown valueReference="{}"/>"#, vr(&i)).unwrap();
     }
     writeln!(w, "  </ModelStructure>").unwrap();
     writeln!(w, "</fmiModelDescription>").unwrap();

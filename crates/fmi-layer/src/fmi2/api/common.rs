@@ -8,7 +8,7 @@
 
 #![allow(non_snake_case)]
 
-use super::guard::{guarded, maybe_forced_panic, refuse, slice};
+use super::guard::{guarded, maybe_forced_panic, slice, slice_mut};
 use super::values::{get_as, reject_as, set_as, FMI2};
 use crate::error::CallError;
 use crate::fmi2::instance::{CallResult, Instance, Interface};
@@ -304,17 +304,32 @@ guarded! {
     unsafe fn fmi2SetString(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2String) -> Fmi2StatusC: SET_VALUE =>
         |inst| unsafe { reject_as(inst, "String", &FMI2, vr, nvr, value, nvr) };
 
-    /// `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9): not provided
-    /// (`providesDirectionalDerivative = false`); always `fmi2Error` (after the state check).
-    fn fmi2GetDirectionalDerivative(
+    /// `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9): `dvUnknown = J · dvKnown`, where
+    /// `J[i][j]` is the partial derivative of variable `vUnknown_ref[i]` with respect to
+    /// `vKnown_ref[j]` at the current values (the model's [`crate::fmi2::model::Model::jacobian`];
+    /// unknowns: outputs, and under Model Exchange state derivatives; knowns: inputs, and under
+    /// Model Exchange continuous states). `nUnknown` or `nKnown` = 0 is `fmi2OK` with nothing
+    /// written. `fmi2Error` for a model without `providesDirectionalDerivative`, a NULL array,
+    /// an unknown value reference, a variable that is no unknown/known, or a model failure.
+    ///
+    /// # Safety
+    /// `vUnknown_ref` and `dvUnknown` point to `nUnknown` elements, `vKnown_ref` and `dvKnown`
+    /// to `nKnown`.
+    unsafe fn fmi2GetDirectionalDerivative(
         c: Fmi2Component,
-        _vUnknown_ref: *const Fmi2ValueReference,
-        _nUnknown: usize,
-        _vKnown_ref: *const Fmi2ValueReference,
-        _nKnown: usize,
-        _dvKnown: *const Fmi2Real,
-        _dvUnknown: *mut Fmi2Real,
-    ) -> Fmi2StatusC: GET_DIRECTIONAL_DERIVATIVE => refuse("directional derivatives are not provided (providesDirectionalDerivative = false)");
+        vUnknown_ref: *const Fmi2ValueReference,
+        nUnknown: usize,
+        vKnown_ref: *const Fmi2ValueReference,
+        nKnown: usize,
+        dvKnown: *const Fmi2Real,
+        dvUnknown: *mut Fmi2Real,
+    ) -> Fmi2StatusC: GET_DIRECTIONAL_DERIVATIVE => |inst| unsafe {
+        let unknowns = slice(vUnknown_ref, nUnknown, "vUnknown_ref[]")?;
+        let knowns = slice(vKnown_ref, nKnown, "vKnown_ref[]")?;
+        let seed = slice(dvKnown, nKnown, "dvKnown[]")?;
+        let out = slice_mut(dvUnknown, nUnknown, "dvUnknown[]")?;
+        inst.directional_derivative(unknowns, knowns, seed, out)
+    };
 }
 
 pub use super::fmu_state::{
