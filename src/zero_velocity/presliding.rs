@@ -174,14 +174,7 @@ impl Presliding {
         if unloaded(bound.re()) {
             return S::c(0.0);
         }
-        let t = tau.re();
-        let held = if t > bound.re() {
-            bound
-        } else if t < -bound.re() {
-            -bound
-        } else {
-            tau
-        };
+        let held = clamp(tau, bound);
         let w = omega.re();
         if w == 0.0 {
             return -held;
@@ -192,4 +185,42 @@ impl Presliding {
         }
         -(held + S::c(self.damping_time) * self.stiffness(bound) * omega * g)
     }
+
+    /// The power the joint dissipates (W) at the presliding torque `tau`, `omega` and `bound`:
+    /// the friction's power −torque·ω less the rate τ·ż at which elastic energy is stored,
+    /// τ·ω·(1 − g⁺) + c·g⁺·ω² ≥ 0 (τ clamped to the bound). In steady sliding (g = 0) it is
+    /// |torque·ω| = T·|ω| bit for bit; in the elastic range (g = 1) only the damping c·ω².
+    pub fn dissipation<S: Scalar>(&self, tau: S, omega: S, bound: S) -> S {
+        let w = omega.re();
+        if unloaded(bound.re()) || w == 0.0 {
+            return S::c(0.0);
+        }
+        let held = clamp(tau, bound);
+        let g = self.fraction(tau, w, bound);
+        if unloaded(g.re()) {
+            return abs(held * omega);
+        }
+        let c = S::c(self.damping_time) * self.stiffness(bound);
+        let plastic = held * omega * (S::c(1.0) - g);
+        let plastic = if plastic.re() > 0.0 { plastic } else { S::c(0.0) };
+        plastic + c * g * omega * omega
+    }
+}
+
+/// τ limited to [−T, T].
+#[inline]
+fn clamp<S: Scalar>(tau: S, bound: S) -> S {
+    if tau.re() > bound.re() {
+        bound
+    } else if tau.re() < -bound.re() {
+        -bound
+    } else {
+        tau
+    }
+}
+
+/// |x|.
+#[inline]
+fn abs<S: Scalar>(x: S) -> S {
+    if x.re() < 0.0 { -x } else { x }
 }

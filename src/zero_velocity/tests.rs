@@ -286,3 +286,27 @@ fn the_band_law_is_the_ramp_and_the_sign() {
     let e = band::check_band(-1.0).unwrap_err().to_string();
     assert_eq!(e, "parameter zero_velocity.speed_band = -1 rad/s is out of range: it must be a finite number >= 0");
 }
+
+#[test]
+fn the_dissipation_is_nonnegative_and_the_sliding_power_in_steady_sliding() {
+    let mut d = Draw(7);
+    let l = law();
+    for _ in 0..2000 {
+        let t = d.range(0.0, 300.0);
+        let tau = d.range(-1.5, 1.5) * t;
+        let w = d.range(-5.0, 5.0);
+        let p = l.dissipation(tau, w, t);
+        assert!(p >= 0.0 && p.is_finite(), "{p}");
+        // Never more than the friction's own power plus what the elastic energy released.
+        let torque = l.torque(tau, w, t);
+        assert!(p <= (torque * w).abs() + t * w.abs() * (1.0 + 1e-12), "{p}");
+    }
+    for &w in &[0.3_f64, -0.3] {
+        let t = 67.2;
+        let held = w.signum() * t;
+        assert_eq!(l.dissipation(held, w, t).to_bits(), (l.torque(held, w, t) * w).abs().to_bits());
+        // Elastic range: only the damping.
+        let c = l.damping_time * t / l.angle;
+        assert!((l.dissipation(0.1 * t, w, t) - c * w * w).abs() < 1e-12 * c * w * w);
+    }
+}

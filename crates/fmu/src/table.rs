@@ -258,6 +258,7 @@ pub(crate) fn assert_round_trip<S: Default>(table: &Table<S>, model: &str, versi
         let x = match row.var.kind {
             Kind::Boolean | Kind::Integer | Kind::Enumeration(_) => 1.0,
             _ if row.var.name == "temperature" => 300.0,
+            _ if let Rule::OpenClosed(lo, hi) = row.rule => lo + 0.625 * (hi - lo),
             _ => row.var.start.unwrap_or(0.0) * 1.25 + i as f64,
         };
         table.check(i, x).unwrap();

@@ -40,6 +40,7 @@ pub static ALL: &[UnitDef] = &[
     UnitDef { name: "Pa.s", quantity: "DynamicViscosity", kg: 1, m: -1, s: -1, rad: 0, k: 0, display: &[DisplayUnit { name: "mPa.s", factor: 1e3, offset: 0.0 }] },
     UnitDef { name: "1/Pa", quantity: "PressureViscosityCoefficient", kg: -1, m: 1, s: 2, rad: 0, k: 0, display: &[DisplayUnit { name: "1/GPa", factor: 1e9, offset: 0.0 }] },
     UnitDef { name: "1/m2", quantity: "AsperityDensity", kg: 0, m: -2, s: 0, rad: 0, k: 0, display: &[] },
+    UnitDef { name: "N.m/s", quantity: "TorqueRate", kg: 1, m: 2, s: -3, rad: 0, k: 0, display: &[] },
     UnitDef { name: "W", quantity: "Power", kg: 1, m: 2, s: -3, rad: 0, k: 0, display: &[] },
     UnitDef { name: "J", quantity: "Energy", kg: 1, m: 2, s: -2, rad: 0, k: 0, display: &[DisplayUnit { name: "kJ", factor: 1e-3, offset: 0.0 }] },
     UnitDef { name: "K", quantity: "ThermodynamicTemperature", kg: 0, m: 0, s: 0, rad: 0, k: 1, display: &[DisplayUnit { name: "degC", factor: 1.0, offset: -273.15 }] },

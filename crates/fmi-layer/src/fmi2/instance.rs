@@ -78,7 +78,9 @@ impl Instance {
 
     /// An instance of `interface` (`fmi3`: created by the FMI 3.0 functions).
     pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, fmi3: bool) -> Self {
-        Instance { interface, fmi3, ..Instance::new(info, name, logger) }
+        let mut inst = Instance { interface, fmi3, ..Instance::new(info, name, logger) };
+        inst.model.set_interface(interface);
+        inst
     }
 
     /// False for memory that is not (or no longer) a live instance.
@@ -515,6 +517,7 @@ impl Instance {
     /// `instantiated` state.
     pub fn reset(&mut self) -> CallResult {
         self.model.set_start_values();
+        self.model.set_interface(self.interface);
         self.state = State::Instantiated;
         self.time = 0.0;
         self.start_time = 0.0;
@@ -554,6 +557,7 @@ impl Instance {
     pub fn decode_state(&self, bytes: &[u8]) -> Result<Snapshot, CallError> {
         let s = Snapshot::decode(bytes, &self.guid)?;
         let mut scratch = (self.info.create)();
+        scratch.set_interface(self.interface);
         scratch.deserialize(&s.model).map_err(CallError::SerializedStateRejected)?;
         Ok(s)
     }

@@ -97,6 +97,13 @@ pub trait Model {
     /// Restore every variable to its start value (called at instantiation and by `fmi2Reset`).
     fn set_start_values(&mut self);
 
+    /// The interface the host instantiated (called after creation and after every
+    /// [`Model::set_start_values`]): a model with continuous states integrates them itself
+    /// under Co-Simulation and leaves them to the host under Model Exchange. Default: ignored.
+    fn set_interface(&mut self, interface: super::interface::Interface) {
+        let _ = interface;
+    }
+
     /// The current value of variable `index` (Integer and Boolean variables as f64,
     /// a Boolean as 0.0 or 1.0). Outputs are read after
     /// [`Model::compute_outputs`] has run for the current inputs.

@@ -1,7 +1,7 @@
 //! `documentation/index.html` of the PinJoint FMU, generated from the same variable
 //! table as the modelDescription, with a table of values computed by the library.
 
-use super::zero_speed::DEFAULT_SPEED_BAND;
+use pinjoint::zero_velocity::band::DEFAULT_SPEED_BAND;
 use super::INFO;
 use crate::doc_table::{head, rows, Style};
 use fmi_layer::fmi2::variables::Causality;

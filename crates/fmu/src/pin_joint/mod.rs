@@ -1,12 +1,13 @@
 //! The PinJoint FMU: the friction torque of the joint as an FMI 2.0
 //! Co-Simulation slave. Inputs angle, angular velocity and load; outputs the
 //! torque and the model's other quantities; parameters the 26 keys of the
-//! parameter file plus the zero-velocity band ([`zero_speed`]).
+//! parameter file plus the zero-velocity treatment ([`zero_velocity`]).
 
 pub mod doc;
 pub mod model;
 pub mod variables;
-pub mod zero_speed;
+pub mod partials;
+pub mod zero_velocity;
 
 use fmi_layer::fmi2::variables::ModelInfo;
 use std::sync::LazyLock;
@@ -16,6 +17,7 @@ use std::sync::LazyLock;
 /// page and constructor; Co-Simulation and Model Exchange.
 pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     model_exchange: true,
+    directional_derivatives: true,
     ..crate::model_info(
         "PinJoint",
         "Frictional torque of a grease-lubricated aircraft landing-gear pin joint (mixed lubrication: \

@@ -1,46 +1,59 @@
-//! The PinJoint co-simulation model: library outputs at the held inputs, the
-//! zero-velocity treatment of the torque, and the dissipated energy. Every variable is
-//! read, checked, stored and serialized through its row of [`TABLE`].
+//! The PinJoint model: library outputs at the inputs, the zero-velocity treatment of the
+//! torque (the presliding state or the band, [`super::zero_velocity`]), and the dissipated
+//! energy. Every variable is read, checked, stored and serialized through its row of
+//! [`TABLE`].
 
 use super::variables::{Outputs, Values, STATE_VERSION, TABLE};
-use super::zero_speed::check_band;
+use super::zero_velocity::{band_friction, presliding_friction};
 use crate::fidelity::{describe, envelope_text};
 use crate::inputs::check_capacity;
 use crate::table::rejected;
 use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
+use fmi_layer::fmi2::interface::Interface;
 use fmi_layer::fmi2::logging::show;
 use fmi_layer::fmi2::model::{Model, ModelError, ModelResult};
 use fmi_layer::fmi2::variables::Causality;
 use pinjoint::fidelity::Evaluator;
+use pinjoint::zero_velocity::ZeroVelocityModel;
 use pinjoint::Joint;
 
-/// The outputs at (`load`, `omega`) with band ω_b = `band`, from `ev` at its fidelity. At
-/// zero load the joint is unloaded and every output is 0. Inside the band the torque is the
-/// band-edge torque ramped linearly ([`super::zero_speed`]). An error names the inputs when
-/// the library rejects them or returns a non-finite value. Also returns whether this call
-/// was the first to fall outside the envelope.
-///
-/// The full level is evaluated cold (no warm start): the solve starts from the joint's
-/// deterministic start ([`pinjoint::Joint::cold_start`]), so the outputs are a function of the
-/// current inputs alone, bit-identical to [`pinjoint::Joint::evaluate`], whatever the history
-/// (a host that rolls back with get/set FMU state, or re-steps, gets the same numbers).
-/// Every quantity is computed once ([`Evaluator::evaluate_complete`]); the outputs are
-/// checked once, by the FMI layer (finite and within their declared min/max).
-pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelResult<(Outputs, bool)> {
+/// The library's operating point at (`load`, `omega`) from `ev`, cold (no warm start): the
+/// outputs are a function of the current inputs alone, bit-identical to
+/// [`pinjoint::Joint::evaluate`] at fidelity full whatever the history (a host that rolls back
+/// with get/set FMU state, or re-steps, gets the same numbers). Also says whether this was the
+/// first evaluation outside the envelope.
+pub fn operating_point(ev: &mut Evaluator, load: f64, omega: f64) -> ModelResult<(pinjoint::OperatingPoint, bool)> {
+    ev.reset();
+    let (op, _, first) = ev.evaluate_complete(load, omega).map_err(|e| ModelError::failed("", e))?;
+    Ok((op, first))
+}
+
+/// The outputs at (`load`, `omega`): the library's operating point and the friction of the
+/// zero-velocity `model`. Presliding: the presliding torque `tau` deflected by `delta` (rad, the
+/// angle increment since the state was committed; 0 under Model Exchange). Band of width
+/// `band`: outside it the library's torque exactly, inside it the band-edge torque ramped
+/// linearly. At zero load the joint is unloaded and every output is 0. Also says whether this
+/// call was the first to fall outside the envelope. Every quantity is computed once
+/// ([`Evaluator::evaluate_complete`]); the outputs are checked once, by the FMI layer (finite and
+/// within their declared min/max).
+pub fn outputs(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta: f64) -> ModelResult<(Outputs, bool)> {
+    let (load, omega) = (v.load, v.omega);
     if load == 0.0 {
         return Ok((Outputs::default(), false));
     }
-    ev.reset();
-    let (op, _, mut first) = ev.evaluate_complete(load, omega).map_err(|e| ModelError::failed("", e))?;
-    let torque = if omega.abs() >= band {
-        op.signed_torque()
-    } else {
-        ev.reset();
-        let (edge, _, f) = ev.evaluate_complete(load, band).map_err(|e| ModelError::failed("", e))?;
-        first |= f;
-        -edge.torque * (omega / band)
+    let (op, mut first) = operating_point(ev, load, omega)?;
+    let friction = match model {
+        ZeroVelocityModel::Presliding => {
+            let law = &v.zv.law;
+            presliding_friction(law, law.deflect(v.tau, delta, op.torque), omega, op.torque)
+        }
+        ZeroVelocityModel::Band => band_friction(omega, v.zv.band, op.torque, || {
+            let (edge, f) = operating_point(ev, load, v.zv.band)?;
+            first |= f;
+            Ok(edge.torque)
+        })?,
     };
-    Ok((Outputs { point: Some(op), torque, power_loss: (torque * omega).abs() }, first))
+    Ok((Outputs { point: Some(op), friction }, first))
 }
 
 /// A PinJoint instance: the values of its variables and the evaluator built from them; it
@@ -54,6 +67,9 @@ pub struct PinJointModel {
     evaluator: Option<Evaluator>,
     /// For the host's log (fidelity chosen; first fallback).
     message: Option<String>,
+    /// The interface the host instantiated: under Model Exchange the host owns the presliding
+    /// state; under Co-Simulation the model steps it.
+    interface: Option<Interface>,
 }
 
 impl PinJointModel {
@@ -63,7 +79,7 @@ impl PinJointModel {
     }
 
     fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
-        check_band(self.v.band)?;
+        self.v.zv.validate()?;
         let t = self.v.temperature.to_bits();
         if self.evaluator.as_ref().is_some_and(|e| e.joint().params().lubricant.temperature.to_bits() != t) {
             // A new temperature is a new lubricant.
@@ -90,6 +106,22 @@ impl PinJointModel {
         p
     }
 
+    /// The zero-velocity model chosen (validated at exit of initialization).
+    fn zero_velocity(&self) -> ModelResult<ZeroVelocityModel> {
+        self.v.zv.validate()
+    }
+
+    /// Whether the model steps the presliding state itself (Co-Simulation) and the angle's
+    /// increments drive it (the host has set the angle since initialization).
+    fn angle_drives(&self) -> bool {
+        self.interface != Some(Interface::ModelExchange) && self.v.angle_driven == 1.0
+    }
+
+    /// The angle increment the outputs deflect the committed state by.
+    fn delta(&self) -> f64 {
+        if self.angle_drives() { self.v.angle - self.v.angle_ref } else { 0.0 }
+    }
+
     /// The evaluator in use (after initialization).
     pub fn current_evaluator(&self) -> Option<&Evaluator> {
         self.evaluator.as_ref()
@@ -99,6 +131,10 @@ impl PinJointModel {
 impl Model for PinJointModel {
     fn set_start_values(&mut self) {
         *self = PinJointModel::new();
+    }
+
+    fn set_interface(&mut self, interface: Interface) {
+        self.interface = Some(interface);
     }
 
     fn get_real(&self, i: usize) -> f64 {
@@ -113,8 +149,12 @@ impl Model for PinJointModel {
 
     fn set_real(&mut self, i: usize, x: f64) {
         // A parameter drops the evaluator (a new temperature input is seen at next use).
-        if TABLE.set(&mut self.v, i, x).causality == Causality::Parameter {
+        let var = TABLE.set(&mut self.v, i, x);
+        if var.causality == Causality::Parameter {
             self.evaluator = None;
+        } else if var.name == "angle" && self.evaluator.is_some() {
+            // Set after initialization: from now on the angle drives the presliding state.
+            self.v.angle_driven = 1.0;
         }
     }
 
@@ -123,12 +163,18 @@ impl Model for PinJointModel {
     }
 
     fn exit_initialization(&mut self, _start_time: f64) -> ModelResult<()> {
-        self.evaluator().map(|_| ())
+        self.evaluator()?;
+        // The presliding state is committed at the initial angle.
+        self.v.angle_ref = self.v.angle;
+        self.v.angle_driven = 0.0;
+        Ok(())
     }
 
     fn compute_outputs(&mut self) -> ModelResult<()> {
-        let (load, omega, band) = (self.v.load, self.v.omega, self.v.band);
-        let (out, first_fallback) = outputs(self.evaluator()?, load, omega, band)?;
+        let (load, omega) = (self.v.load, self.v.omega);
+        let (model, delta) = (self.zero_velocity()?, self.delta());
+        let v = self.v;
+        let (out, first_fallback) = outputs(self.evaluator()?, &v, model, delta)?;
         if first_fallback {
             let ev = self.evaluator.as_ref().expect("built above");
             self.message = Some(format!(
@@ -145,12 +191,37 @@ impl Model for PinJointModel {
     }
 
     fn do_step(&mut self, _time: f64, step: f64) -> ModelResult<()> {
-        let e = self.v.energy + self.v.out.power_loss * step;
+        let e = self.v.energy + self.v.out.friction.power_loss * step;
         if !e.is_finite() {
             return Err(ModelError::NotFinite(format!("dissipated_energy overflows ({e} J)")));
         }
+        if self.zero_velocity()? == ZeroVelocityModel::Presliding {
+            if self.angle_drives() {
+                // Commit the presliding torque the outputs already hold at this angle.
+                self.v.tau = self.v.out.friction.held;
+                self.v.angle_ref = self.v.angle;
+            } else {
+                // The exact update over omega*h with the inputs held; the reference angle
+                // follows the motion the state assumed.
+                let bound = self.v.out.point.map_or(0.0, |p| p.torque);
+                let travel = self.v.omega * step;
+                self.v.tau = self.v.zv.law.deflect(self.v.tau, travel, bound);
+                self.v.angle_ref += travel;
+                if !self.v.angle_ref.is_finite() {
+                    return Err(ModelError::NotFinite(format!("presliding_reference_angle overflows ({} rad)", show(self.v.angle_ref))));
+                }
+                self.compute_outputs()?;
+            }
+        }
         self.v.energy = e;
         Ok(())
+    }
+
+    fn jacobian(&mut self, unknowns: &[usize], knowns: &[usize], out: &mut [f64]) -> ModelResult<()> {
+        let (model, delta) = (self.zero_velocity()?, self.delta());
+        let v = self.v;
+        let me = self.interface == Some(Interface::ModelExchange);
+        super::partials::jacobian(self.evaluator()?, &v, model, delta, me, (unknowns, knowns), out)
     }
 
     fn serialize(&self, out: &mut Vec<u8>) {
@@ -168,13 +239,13 @@ impl Model for PinJointModel {
         // (parameters, band, fidelity settings, load capacity of the state's own joint),
         // before anything of this instance changes.
         let joint = Joint::new(&v.params).map_err(|e| ModelError::failed("state: ", e))?;
-        check_band(v.band)?;
+        v.zv.validate()?;
         v.fidelity.validate()?;
         check_capacity(v.load, joint.capacity())?;
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
-        let same = v.params == self.v.params && v.fidelity == self.v.fidelity && v.band == self.v.band;
+        let same = v.params == self.v.params && v.fidelity == self.v.fidelity && v.zv == self.v.zv;
         let evaluator = if same { self.evaluator.take() } else { None };
-        *self = PinJointModel { v, evaluator, message: None };
+        *self = PinJointModel { v, evaluator, message: None, interface: self.interface };
         Ok(())
     }
 }
@@ -205,7 +276,7 @@ mod tests {
         bytes[0] = 9;
         let e = m.deserialize(&bytes).unwrap_err();
         assert!(matches!(e, ModelError::RejectedState(_)));
-        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 4");
+        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 5");
         bytes[0] = STATE_VERSION;
         m.deserialize(&bytes).unwrap();
     }

@@ -11,8 +11,11 @@
 //! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 31 |
 //! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 32–36 |
 //! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 37 |
+//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 38–41 |
+//! | 30, 31 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 42 |
+//! | 32, 33 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 43, 44 |
 
-use super::zero_speed::DEFAULT_SPEED_BAND;
+use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
 use crate::fidelity::{self, FidelitySettings};
 use crate::table::{Access, Row, Rule, Table};
@@ -22,10 +25,10 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (4: 26 parameters and the temperature input).
-/// The state also carries its value count, so a layout with another number of values is
-/// refused whatever its version.
-pub const STATE_VERSION: u8 = 4;
+/// Version of the serialized state's layout (5: version 4's values, then the zero-velocity
+/// model and presliding parameters and the presliding state). The state also carries its
+/// value count, so a layout with another number of values is refused whatever its version.
+pub const STATE_VERSION: u8 = 5;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -42,10 +45,9 @@ pub struct Outputs {
     /// The library's operating point at the inputs; `None` at zero load (and before the
     /// first evaluation).
     pub point: Option<OperatingPoint>,
-    /// Friction torque on the pin (N·m), -sign(ω) μ R P_T (eq. 11), ramped inside the band.
-    pub torque: f64,
-    /// Frictional power loss |torque · ω| (W).
-    pub power_loss: f64,
+    /// The friction outputs: torque on the pin (N·m), the power dissipated (W), the presliding
+    /// torque they use and its rate ([`zero_velocity::Friction`]).
+    pub friction: Friction,
 }
 
 /// Every value of a PinJoint instance a variable reads or writes.
@@ -53,8 +55,16 @@ pub struct Outputs {
 pub struct Values {
     /// The 26 model parameters (`lubricant.temperature` is replaced by the input).
     pub params: Params,
-    /// `zero_velocity.speed_band` (rad/s).
-    pub band: f64,
+    /// `zero_velocity.*`: the model, the band and the presliding parameters.
+    pub zv: ZeroVelocitySettings,
+    /// `presliding_torque` (N·m): the presliding state τ (Co-Simulation: committed at
+    /// `presliding_reference_angle`; Model Exchange: the host's continuous state).
+    pub tau: f64,
+    /// `presliding_reference_angle` (rad): the angle at which τ was committed (Co-Simulation).
+    pub angle_ref: f64,
+    /// `presliding_angle_driven` (0 or 1): the host has set the angle since initialization, so
+    /// the angle's increments drive the state (else angular_velocity·h).
+    pub angle_driven: f64,
     /// The `angle` input (rad).
     pub angle: f64,
     /// The `angular_velocity` input (rad/s).
@@ -76,7 +86,10 @@ impl Default for Values {
     fn default() -> Self {
         Values {
             params: Params::default(),
-            band: DEFAULT_SPEED_BAND,
+            zv: ZeroVelocitySettings::default(),
+            tau: 0.0,
+            angle_ref: 0.0,
+            angle_driven: 0.0,
             angle: 0.0,
             omega: 0.0,
             load: DEFAULT_LOAD,
@@ -101,6 +114,10 @@ pub static UNITS: LazyLock<Vec<UnitDef>> = LazyLock::new(|| crate::units::used_b
 
 /// The outputs depend on these inputs (all but `mean_pressure` and `dissipated_energy`).
 const SPEED_LOAD: [&str; 3] = ["angular_velocity", "load", "temperature"];
+
+/// The friction outputs (torque, power) and the state's derivative also depend on the angle
+/// (Co-Simulation: its increment deflects the presliding state) and on the state.
+const FRICTION: [&str; 5] = ["angle", "angular_velocity", "load", "temperature", "presliding_torque"];
 
 /// An input row at state position `slot`; `units`: its unit and display unit.
 fn input(name: &str, vr: u32, units: (&'static str, &'static str), (start, rule): (f64, Rule), slot: usize, (get, set): Access<Values>, d: &str) -> Row<Values> {
@@ -142,14 +159,16 @@ fn rows() -> Vec<Row<Values>> {
     let share = (zero, Some(1.0));
     let mut rows = vec![
         input("angle", 1, ("rad", "deg"), (0.0, crate::inputs::FINITE), p + 1, (|s| s.angle, |s, x| s.angle = x),
-            "Angle of the pin relative to the bush. The friction law does not depend on position: no output uses it; it is kept in the FMU state for hosts that wire the full joint kinematics"),
+            "Angle of the pin relative to the bush. Co-Simulation with zero_velocity.model = presliding: once the host sets it, its increments between steps deflect the presliding state \
+             (set it at every step with angular_velocity; a host that never sets it drives the state by angular_velocity * step). Not used by the band or under Model Exchange"),
         input("angular_velocity", 2, ("rad/s", "deg/s"), (0.0, crate::inputs::FINITE), p + 2, (|s| s.omega, |s, x| s.omega = x),
             "Angular velocity omega of the pin relative to the bush (any finite value; sliding speed u = |omega| R)"),
         input("load", 3, ("N", "kN"), (DEFAULT_LOAD, crate::inputs::LOAD_RULE), p + 3, (|s| s.load, |s, x| s.load = x),
             "Radial load P_T on the joint: any finite value, its magnitude |P_T| is the load (a signed reaction component is accepted; the outputs at -P equal those at +P); at 0 the joint is unloaded and every output but dissipated_energy is 0"),
-        Row::output(output("torque", 10, Some("N.m"), None, (None, None), &SPEED_LOAD,
-            "Friction torque on the pin, opposite to the angular velocity: -sign(omega) mu R P_T (eq. 11); linear in omega inside the zero-velocity band"),
-            |s: &Values| s.out.torque),
+        Row::output(output("torque", 10, Some("N.m"), None, (None, None), &FRICTION,
+            "Friction torque on the pin, opposite to the motion: in sliding -sign(omega) mu R P_T (eq. 11); at and near rest the zero-velocity model's \
+             (presliding: the elastic presliding torque plus its damping, never beyond the sliding torque by more than the damping; band: linear in omega inside the band)"),
+            |s: &Values| s.out.friction.torque),
         recorded(11, "friction_coefficient", None, (zero, None), &SPEED_LOAD,
             "Friction coefficient mu = (Q_H + Q_C)/P_T (eq. 10) at the input speed and load"),
         recorded(12, "film_thickness", Some("um"), (zero, None), &SPEED_LOAD,
@@ -161,8 +180,9 @@ fn rows() -> Vec<Row<Values>> {
         recorded(16, "mean_pressure", Some("MPa"), (zero, None), &["load"], "Hertz mean contact pressure p_m = P_T/(2aB) (eq. 6)"),
         recorded(17, "sommerfeld_number", None, (zero, None), &SPEED_LOAD,
             "Sommerfeld number S = eta_0 |omega| /(2 pi P_L) (R/c)^2 with P_L = P_T/(2RB) (eq. 20)"),
-        Row::output(output("power_loss", 18, Some("W"), None, (zero, None), &SPEED_LOAD, "Frictional power loss |torque * angular_velocity|"),
-            |s: &Values| s.out.power_loss),
+        Row::output(output("power_loss", 18, Some("W"), None, (zero, None), &FRICTION,
+            "Power dissipated by friction: |torque * angular_velocity| in sliding (and for the band); under presliding the elastic power stored in the deflection is not counted (plastic slip and damping only)"),
+            |s: &Values| s.out.friction.power_loss),
         // A state of the model as well as an output: stored, and checked when a state is restored.
         Row::new(output("dissipated_energy", 19, Some("J"), Some("kJ"), (zero, None), &[],
             "Energy dissipated by friction since initialization: sum over the Co-Simulation steps taken of power_loss * step size (inputs held over each step). Co-Simulation only: under Model Exchange no steps are taken and it stays 0 (integrate power_loss in the host)"),
@@ -174,27 +194,60 @@ fn rows() -> Vec<Row<Values>> {
     ];
     rows.extend(crate::parameters::rows(100, Some(0), |s: &Values| &s.params, |s| &mut s.params));
     let mut band = declare("zero_velocity.speed_band", 200, Kind::Real, Causality::Parameter, Some("rad/s"), Some("deg/s"),
-        "Half-width omega_b of the speed band around zero in which the torque is ramped linearly, \
+        "zero_velocity.model = band: half-width omega_b of the speed band around zero in which the torque is ramped linearly, \
          T = -T(P, omega_b) omega/omega_b; outside it the torque is exactly the model's. 0 switches the ramp off");
-    band.start = Some(DEFAULT_SPEED_BAND);
+    band.start = Some(pinjoint::zero_velocity::band::DEFAULT_SPEED_BAND);
     band.min = zero;
-    // Checked at exit of initialization ([`super::zero_speed::check_band`]).
-    rows.push(Row::new(band, |s: &Values| s.band, |s, x| s.band = x, Rule::Any).at_slot(p));
+    // Checked at exit of initialization ([`super::zero_velocity::ZeroVelocitySettings::validate`]).
+    rows.push(Row::new(band, |s: &Values| s.zv.band, |s, x| s.zv.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
         "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
+    rows.extend(zero_velocity::rows(201, p + 12));
+    rows.extend(presliding_rows(p + 16));
     rows
+}
+
+/// The presliding state's rows: `presliding_torque` (the continuous state, slot `slot`), its
+/// derivative, and the Co-Simulation bookkeeping (reference angle, angle-driven flag).
+fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
+    let local = |name: &str, vr: u32, kind: Kind, unit: Option<&'static str>, text: &str| {
+        let mut v = declare(name, vr, kind, Causality::Local, unit, None, text);
+        v.start = Some(0.0);
+        v
+    };
+    let mut state = local("presliding_torque", 30, Kind::Real, Some("N.m"),
+        "Presliding state tau: the elastic presliding torque, signed as the deflection (the friction torque is -tau plus damping; |tau| <= the sliding torque while the joint moves). \
+         Co-Simulation: committed at presliding_reference_angle at each step; Model Exchange: the continuous state the host integrates");
+    state.nominal = Some(100.0);
+    let mut rate = declare("der(presliding_torque)", 31, Kind::Real, Causality::Local, Some("N.m/s"), None,
+        "Time derivative of presliding_torque: k omega g, with k = T/phi_s and g the elastic fraction (1 below the elastic limit, 0 at the sliding torque)");
+    rate.derivative_of = Some("presliding_torque");
+    rate.initial = fmi_layer::fmi2::variables::Initial::Calculated;
+    rate.depends_on = vec!["angular_velocity", "load", "temperature", "presliding_torque"];
+    let finite = crate::inputs::FINITE;
+    vec![
+        Row::new(state, |s: &Values| s.tau, |s, x| s.tau = x, finite).at_slot(slot),
+        Row::output(rate, |s: &Values| s.out.friction.rate),
+        Row::new(local("presliding_reference_angle", 32, Kind::Real, Some("rad"),
+            "Co-Simulation: the angle at which presliding_torque was committed (the angle input at the last step, or advanced by angular_velocity * step when the host does not set the angle)"),
+            |s: &Values| s.angle_ref, |s, x| s.angle_ref = x, finite).at_slot(slot + 1),
+        Row::new(local("presliding_angle_driven", 33, Kind::Boolean, None,
+            "Co-Simulation: true once the host has set the angle after initialization: the angle's increments then drive the presliding state"),
+            |s: &Values| s.angle_driven, |s, x| s.angle_driven = x, Rule::Any).at_slot(slot + 2),
+    ]
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// The state order of version 4 (the bytes hosts have stored): parameters, band,
-    /// angle, speed, load, energy, fidelity code, tolerance, envelope, temperature.
+    /// The state order of version 5: version 4's (parameters, band, angle, speed, load,
+    /// energy, fidelity code, tolerance, envelope, temperature), then the zero-velocity
+    /// parameters and the presliding state.
     #[test]
-    fn the_state_order_is_that_of_version_4() {
+    fn the_state_order_is_that_of_version_5() {
         let names: Vec<&str> = TABLE.stored().iter().map(|&i| TABLE.rows()[i].var.name.as_str()).collect();
         let p = PARAMS.len();
         assert_eq!(names[..p], PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect::<Vec<_>>()[..]);
@@ -202,7 +255,9 @@ mod tests {
             names[p..],
             [
                 "zero_velocity.speed_band", "angle", "angular_velocity", "load", "dissipated_energy", "fidelity", "tolerance",
-                "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max", "temperature"
+                "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max", "temperature",
+                "zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time",
+                "presliding_torque", "presliding_reference_angle", "presliding_angle_driven"
             ]
         );
     }
@@ -211,7 +266,9 @@ mod tests {
     /// input and parameter and the energy (a new row needs nothing else).
     #[test]
     fn every_row_round_trips_get_set_and_the_state() {
-        crate::table::assert_round_trip(&TABLE, "PinJoint", STATE_VERSION, |v| v.causality != Causality::Output || v.name == "dissipated_energy");
+        crate::table::assert_round_trip(&TABLE, "PinJoint", STATE_VERSION, |v| {
+            (v.causality != Causality::Output || v.name == "dissipated_energy") && v.derivative_of.is_none()
+        });
     }
 
     #[test]
