@@ -9,6 +9,9 @@ use crate::fmi2::api::model_exchange::*;
 use crate::fmi2::types::{Fmi2Component, Status};
 use std::ptr::{null, null_mut};
 
+/// One FMI call with its arguments bound.
+type Call<'a> = Box<dyn Fn() -> i32 + 'a>;
+
 const OK: i32 = 0;
 const ERROR: i32 = 3;
 
@@ -72,7 +75,7 @@ fn states_nominals_and_derivatives_round_trip() {
     }
     // An input changes the derivative too.
     assert_eq!(unsafe { fmi2SetReal(c, &VR_U, 1, &-1.0) }, OK);
-    assert_eq!(derivative(c), -PA * 1e6 + PB * -1.0);
+    assert_eq!(derivative(c), -PA * 1e6 - PB);
     // No events: valuesOfContinuousStatesChanged stays false in event mode.
     assert_eq!(fmi2EnterEventMode(c), OK);
     let mut info = Fmi2EventInfo { new_discrete_states_needed: 1, terminate_simulation: 1, nominals_of_continuous_states_changed: 1, values_of_continuous_states_changed: 1, next_event_time_defined: 1, next_event_time: 1.0 };
@@ -92,7 +95,7 @@ fn wrong_counts_null_arrays_and_rejected_states_change_nothing() {
     assert_eq!(states(c), X0);
     let mut out = [7.0; 2];
     let p = out.as_mut_ptr();
-    let calls: [(&str, Box<dyn Fn() -> i32>); 3] = [
+    let calls: [(&str, Call); 3] = [
         ("fmi2GetDerivatives", Box::new(|| unsafe { fmi2GetDerivatives(c, p, 2) })),
         ("fmi2GetContinuousStates", Box::new(|| unsafe { fmi2GetContinuousStates(c, p, 0) })),
         ("fmi2GetNominalsOfContinuousStates", Box::new(|| unsafe { fmi2GetNominalsOfContinuousStates(c, p, 2) })),
@@ -206,7 +209,7 @@ fn directional_derivative_errors_name_the_variable_or_argument() {
     }
     let mut out = [0.0];
     let (y, u, p) = ([VR_Y].as_ptr(), [VR_U].as_ptr(), out.as_mut_ptr());
-    let calls: [(&str, Box<dyn Fn() -> i32>); 4] = [
+    let calls: [(&str, Call); 4] = [
         ("vUnknown_ref[] is NULL", Box::new(|| unsafe { fmi2GetDirectionalDerivative(c, null(), 1, u, 1, [1.0].as_ptr(), p) })),
         ("vKnown_ref[] is NULL", Box::new(|| unsafe { fmi2GetDirectionalDerivative(c, y, 1, null(), 1, [1.0].as_ptr(), p) })),
         ("dvKnown[] is NULL", Box::new(|| unsafe { fmi2GetDirectionalDerivative(c, y, 1, u, 1, null(), p) })),

@@ -163,7 +163,7 @@ pub struct NoJacobian(Linear);
 
 impl Model for NoJacobian {
     fn set_start_values(&mut self) {
-        self.0.set_start_values()
+        self.0.set_start_values();
     }
     fn get_real(&self, index: usize) -> f64 {
         self.0.get_real(index)
@@ -172,7 +172,7 @@ impl Model for NoJacobian {
         self.0.check_real(index, value)
     }
     fn set_real(&mut self, index: usize, value: f64) {
-        self.0.set_real(index, value)
+        self.0.set_real(index, value);
     }
     fn exit_initialization(&mut self, start_time: f64) -> ModelResult<()> {
         self.0.exit_initialization(start_time)
@@ -184,7 +184,7 @@ impl Model for NoJacobian {
         self.0.do_step(time, step)
     }
     fn serialize(&self, out: &mut Vec<u8>) {
-        self.0.serialize(out)
+        self.0.serialize(out);
     }
     fn deserialize(&mut self, bytes: &[u8]) -> ModelResult<()> {
         self.0.deserialize(bytes)

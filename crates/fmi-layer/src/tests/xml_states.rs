@@ -7,6 +7,9 @@ use super::linear::*;
 use crate::error::XmlError;
 use crate::fmi2::variables::{Causality, Initial, Kind, ModelInfo, Variability};
 
+/// A change of a model table.
+type Edit = Box<dyn Fn(&mut ModelInfo)>;
+
 fn dump(name: &str, xml: &str) {
     if let Some(dir) = std::env::var_os("FMI_LAYER_DUMP_XML") {
         std::fs::write(std::path::Path::new(&dir).join(name), xml).unwrap();
@@ -70,7 +73,7 @@ fn generated(edit: impl Fn(&mut ModelInfo)) -> [Result<String, XmlError>; 2] {
 
 #[test]
 fn tables_no_valid_state_can_be_written_from_are_refused() {
-    let cases: Vec<(Box<dyn Fn(&mut ModelInfo)>, &str)> = vec![
+    let cases: Vec<(Edit, &str)> = vec![
         (Box::new(|i| i.variables[DX].derivative_of = Some("z")), "der(x) is declared the derivative of unknown variable z"),
         (Box::new(|i| i.variables[DX].derivative_of = Some("a")), "continuous state a must have variability \"continuous\""),
         (Box::new(|i| i.variables[DX].derivative_of = Some("u")), "continuous state u must have causality \"local\" or \"output\""),
