@@ -265,8 +265,9 @@ impl Instance {
         Ok(Status::Ok)
     }
 
-    /// Model Exchange: the host's solver time. The model is stateless in time (its outputs
-    /// depend on the inputs only), so this only records it; a time that is not finite, or a
+    /// Model Exchange: the host's solver time. The [`Model`] trait passes no time to the model
+    /// under Model Exchange (its outputs and state derivatives depend on its states, inputs and
+    /// parameters only), so this only records it; a time that is not finite, or a
     /// Co-Simulation instance, is refused.
     pub fn set_time(&mut self, t: f64) -> CallResult {
         self.require_model_exchange()?;
@@ -291,8 +292,8 @@ impl Instance {
         Ok(Status::Ok)
     }
 
-    /// Model Exchange: the outputs at the current inputs, checked against their ranges
-    /// (what a completed integrator step or event iteration needs of this stateless model).
+    /// Model Exchange: the outputs at the current states and inputs, checked against their
+    /// ranges (what a completed integrator step or event iteration needs of the model).
     pub fn refresh_outputs(&mut self) -> Result<(), CallError> {
         self.update_outputs()
     }

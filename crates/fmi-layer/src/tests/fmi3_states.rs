@@ -128,3 +128,19 @@ fn capability_and_co_simulation_rules() {
     assert_eq!(unsafe { fmi3GetContinuousStates(c, x.as_mut_ptr(), 1) }, ERROR);
     unsafe { fmi3FreeInstance(c) };
 }
+
+#[test]
+fn variable_dependencies_of_outputs_and_derivatives_name_state_and_input() {
+    let h = Host::new();
+    let c = me(&h);
+    for (vr, n) in [(VR_Y, 2), (VR_DX, 2), (VR_X, 0), (VR_U, 0)] {
+        let mut got = 99;
+        assert_eq!(unsafe { fmi3GetNumberOfVariableDependencies(c, vr, &mut got) }, OK);
+        assert_eq!(got, n, "value reference {vr}");
+    }
+    let (mut e, mut ind, mut ei, mut kinds) = ([9usize; 2], [0u32; 2], [9usize; 2], [0i32; 2]);
+    let s = unsafe { fmi3GetVariableDependencies(c, VR_DX, e.as_mut_ptr(), ind.as_mut_ptr(), ei.as_mut_ptr(), kinds.as_mut_ptr(), 2) };
+    assert_eq!(s, OK);
+    assert_eq!((ind, e, ei), ([VR_X, VR_U], [0, 0], [0, 0]));
+    unsafe { fmi3FreeInstance(c) };
+}
