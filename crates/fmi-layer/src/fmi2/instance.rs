@@ -174,7 +174,8 @@ impl Instance {
         Ok(())
     }
 
-    /// Every output is finite and within the min/max its modelDescription declares: a
+    /// Every output is finite and within the min/max its modelDescription declares, and every
+    /// state derivative is finite: a
     /// model that computes anything else (e.g. a negative film thickness, found by
     /// fuzzing, fuzz/README.md) fails the call with a message naming the output,
     /// instead of handing the host a value the interface rules out.
@@ -193,6 +194,14 @@ impl Instance {
             };
             if let Some(bound) = bound {
                 return Err(CallError::OutputOutOfRange { name: v.name.clone(), value: x, unit: v.unit_text(), bound });
+            }
+        }
+        // A state derivative the host's integrator would take must be a number too.
+        for &(_, d) in &self.states {
+            let x = self.model.get_real(d);
+            if !x.is_finite() {
+                let v = &self.info.variables[d];
+                return Err(CallError::DerivativeNotFinite { name: v.name.clone(), value: x, unit: v.unit_text() });
             }
         }
         Ok(())

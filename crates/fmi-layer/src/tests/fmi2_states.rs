@@ -121,6 +121,12 @@ fn wrong_counts_null_arrays_and_rejected_states_change_nothing() {
     assert_eq!(fmi2GetEventIndicators(c, out.as_mut_ptr(), 1), ERROR);
     assert!(h.last().contains("ni = 1, but Linear has no event indicators"), "{}", h.last());
     assert_eq!(fmi2GetEventIndicators(c, out.as_mut_ptr(), 0), OK);
+    // A derivative that is not a number is refused, not handed to the integrator.
+    assert_eq!(unsafe { fmi2SetReal(c, &VR_U, 1, &SINGULAR_U) }, OK);
+    assert_eq!(unsafe { fmi2GetDerivatives(c, out.as_mut_ptr(), 1) }, ERROR);
+    assert!(h.last().contains("the model gives state derivative der(x) = NaN (dimensionless), which is not a finite number"), "{}", h.last());
+    assert_eq!(unsafe { fmi2SetReal(c, &VR_U, 1, &U0) }, OK);
+    assert_eq!(derivative(c), -PA * X0 + PB * U0);
     // SetContinuousStates only in continuous-time mode (FMI 2.0 §3.2.3).
     assert_eq!(fmi2EnterEventMode(c), OK);
     assert_eq!(unsafe { fmi2SetContinuousStates(c, [1.0].as_ptr(), 1) }, ERROR);

@@ -6,7 +6,8 @@
 //! (local), output `y` and fixed parameters a = 2, b = 3, c = 5, d = 7. Its Jacobian is the
 //! constant matrix [[-a, b], [c, d]] (rows der(x), y; columns x, u), which the tests compare
 //! with what the layer's directional-derivative functions return. A state or input beyond
-//! ±1e6 is refused, so that a rejected `SetContinuousStates` can be tested.
+//! ±1e6 is refused, so that a rejected `SetContinuousStates` can be tested; at u = 999 the
+//! derivative is NaN, so that the layer's check of the derivatives can be tested.
 
 use crate::fmi2::model::{Model, ModelError, ModelResult};
 use crate::fmi2::variables::{Causality, Initial, Kind, Legal, ModelInfo, Variability, Variable};
@@ -33,6 +34,8 @@ pub const PD: f64 = 7.0;
 pub const X0: f64 = 2.0;
 pub const U0: f64 = 0.5;
 pub const X_NOMINAL: f64 = 10.0;
+/// The input at which the test model's derivative is NaN (a model failure to be caught).
+pub const SINGULAR_U: f64 = 999.0;
 
 fn var(name: &str, vr: u32, causality: Causality, initial: Initial, start: Option<f64>) -> Variable {
     Variable {
@@ -123,7 +126,8 @@ impl Model for Linear {
     }
     fn compute_outputs(&mut self) -> ModelResult<()> {
         let [x, u, _, _, a, b, c, d] = self.v;
-        self.v[DX] = -a * x + b * u;
+        // u = 999 stands for an input at which a model fails: the derivative is not a number.
+        self.v[DX] = if u == SINGULAR_U { f64::NAN } else { -a * x + b * u };
         self.v[Y] = c * x + d * u;
         Ok(())
     }
