@@ -184,9 +184,9 @@ fn model_exchange_is_a_stateless_map_of_the_inputs() {
         assert_eq!((enter, stop), (0, 0));
     }
     let mut x = [0.0; 1];
-    assert_eq!(fmi2GetDerivatives(me, x.as_mut_ptr(), 0), OK);
+    assert_eq!(unsafe { fmi2GetDerivatives(me, x.as_mut_ptr(), 0) }, OK);
     assert_eq!(fmi2GetEventIndicators(me, x.as_mut_ptr(), 0), OK);
-    assert_eq!(fmi2GetDerivatives(me, x.as_mut_ptr(), 1), ERROR);
+    assert_eq!(unsafe { fmi2GetDerivatives(me, x.as_mut_ptr(), 1) }, ERROR);
     assert!(h.last().contains("no continuous states"), "{}", h.last());
     // Parameters cannot be set in continuous-time mode; doStep is not a Model Exchange call.
     assert_eq!(fmi2DoStep(me, 0.0, 0.1, 1), ERROR);
@@ -207,11 +207,11 @@ fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
         ("fmi2EnterContinuousTimeMode", fmi2EnterContinuousTimeMode(c)),
         ("fmi2CompletedIntegratorStep", unsafe { fmi2CompletedIntegratorStep(c, 0, &mut b, &mut b) }),
         ("fmi2SetTime", fmi2SetTime(c, 1.0)),
-        ("fmi2SetContinuousStates", fmi2SetContinuousStates(c, x.as_ptr(), 0)),
-        ("fmi2GetDerivatives", fmi2GetDerivatives(c, x.as_mut_ptr(), 0)),
+        ("fmi2SetContinuousStates", unsafe { fmi2SetContinuousStates(c, x.as_ptr(), 0) }),
+        ("fmi2GetDerivatives", unsafe { fmi2GetDerivatives(c, x.as_mut_ptr(), 0) }),
         ("fmi2GetEventIndicators", fmi2GetEventIndicators(c, x.as_mut_ptr(), 0)),
-        ("fmi2GetContinuousStates", fmi2GetContinuousStates(c, x.as_mut_ptr(), 0)),
-        ("fmi2GetNominalsOfContinuousStates", fmi2GetNominalsOfContinuousStates(c, x.as_mut_ptr(), 0)),
+        ("fmi2GetContinuousStates", unsafe { fmi2GetContinuousStates(c, x.as_mut_ptr(), 0) }),
+        ("fmi2GetNominalsOfContinuousStates", unsafe { fmi2GetNominalsOfContinuousStates(c, x.as_mut_ptr(), 0) }),
     ];
     for (name, status) in calls {
         assert_eq!(status, ERROR, "{name}");

@@ -857,11 +857,11 @@ pub mod fmi {
                         2 => fmi2EnterContinuousTimeMode(c),
                         3 => unsafe { fmi2CompletedIntegratorStep(c, 0, &mut flags[0], &mut flags[1]) },
                         4 => fmi2SetTime(c, value(inp, 1.0, None, None)),
-                        5 => fmi2SetContinuousStates(c, x.as_ptr(), 2),
-                        6 => fmi2GetDerivatives(c, x.as_mut_ptr(), 2),
+                        5 => unsafe { fmi2SetContinuousStates(c, x.as_ptr(), 2) },
+                        6 => unsafe { fmi2GetDerivatives(c, x.as_mut_ptr(), 2) },
                         7 => fmi2GetEventIndicators(c, x.as_mut_ptr(), 2),
-                        8 => fmi2GetContinuousStates(c, x.as_mut_ptr(), 2),
-                        _ => fmi2GetNominalsOfContinuousStates(c, x.as_mut_ptr(), 2),
+                        8 => unsafe { fmi2GetContinuousStates(c, x.as_mut_ptr(), 2) },
+                        _ => unsafe { fmi2GetNominalsOfContinuousStates(c, x.as_mut_ptr(), 2) },
                     };
                     assert_eq!(st(self, s, "Model Exchange function"), ERROR);
                 }

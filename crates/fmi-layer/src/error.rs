@@ -354,6 +354,19 @@ pub enum CallError {
         /// Which bound it left.
         bound: OutputBound,
     },
+    /// A state derivative that is not a finite number.
+    #[error(
+        "the model gives state derivative {name} = {} {unit}, which is not a finite number: the states, inputs or parameters are outside the range in which the model is defined",
+        Num(*.value)
+    )]
+    DerivativeNotFinite {
+        /// The derivative's name.
+        name: String,
+        /// The value the model gave.
+        value: f64,
+        /// Its unit for messages.
+        unit: &'static str,
+    },
     /// A Model Exchange function on a Co-Simulation instance.
     #[error("this is a Model Exchange function and the instance was instantiated for Co-Simulation")]
     NotModelExchange,

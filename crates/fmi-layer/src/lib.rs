@@ -26,6 +26,8 @@ pub mod fmi2;
 pub mod error;
 mod xml;
 pub mod fmi3;
+#[cfg(test)]
+mod tests;
 
 pub use error::{CallError, StateFormatError, XmlError};
 

@@ -176,7 +176,8 @@ impl Instance {
         Ok(())
     }
 
-    /// Every output is finite and within the min/max its modelDescription declares: a
+    /// Every output is finite and within the min/max its modelDescription declares, and every
+    /// state derivative is finite: a
     /// model that computes anything else (e.g. a negative film thickness, found by
     /// fuzzing, fuzz/README.md) fails the call with a message naming the output,
     /// instead of handing the host a value the interface rules out.
@@ -195,6 +196,14 @@ impl Instance {
             };
             if let Some(bound) = bound {
                 return Err(CallError::OutputOutOfRange { name: v.name.clone(), value: x, unit: v.unit_text(), bound });
+            }
+        }
+        // A state derivative the host's integrator would take must be a number too.
+        for &(_, d) in &self.states {
+            let x = self.model.get_real(d);
+            if !x.is_finite() {
+                let v = &self.info.variables[d];
+                return Err(CallError::DerivativeNotFinite { name: v.name.clone(), value: x, unit: v.unit_text() });
             }
         }
         Ok(())
@@ -267,8 +276,9 @@ impl Instance {
         Ok(Status::Ok)
     }
 
-    /// Model Exchange: the host's solver time. The model is stateless in time (its outputs
-    /// depend on the inputs only), so this only records it; a time that is not finite, or a
+    /// Model Exchange: the host's solver time. The [`Model`] trait passes no time to the model
+    /// under Model Exchange (its outputs and state derivatives depend on its states, inputs and
+    /// parameters only), so this only records it; a time that is not finite, or a
     /// Co-Simulation instance, is refused.
     pub fn set_time(&mut self, t: f64) -> CallResult {
         self.require_model_exchange()?;
@@ -293,8 +303,8 @@ impl Instance {
         Ok(Status::Ok)
     }
 
-    /// Model Exchange: the outputs at the current inputs, checked against their ranges
-    /// (what a completed integrator step or event iteration needs of this stateless model).
+    /// Model Exchange: the outputs at the current states and inputs, checked against their
+    /// ranges (what a completed integrator step or event iteration needs of the model).
     pub fn refresh_outputs(&mut self) -> Result<(), CallError> {
         self.update_outputs()
     }

@@ -1,5 +1,5 @@
 //! The interface an instance was created for (FMI 2.0 `fmi2Type`, FMI 3.0 the instantiation
-//! function): a leaf module, so that the error types ([`crate::error`]) can name it without
+//! function): a leaf module, so that the error types (`crate::error`) can name it without
 //! depending on the instance.
 
 /// The interface the host instantiated.

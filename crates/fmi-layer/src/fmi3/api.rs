@@ -168,13 +168,14 @@ fn enumeration_code(v: i64) -> Result<f64, CallError> {
     i32::try_from(v).map(f64::from).map_err(|_| CallError::NotAnEnumerationItem(v))
 }
 
-/// The value references an output depends on directly (all scalar: element index 0, kind
-/// `fmi3Dependent`).
+/// The value references an output or a state derivative depends on directly (its
+/// ModelStructure `dependencies`, FMI 3.0 §2.4.8; all scalar: element index 0, kind
+/// `fmi3Dependent`); none for any other variable.
 fn dependencies(inst: &Instance, vr: u32) -> Result<Vec<u32>, CallError> {
     let info = inst.info;
     let i = info.index_of(vr).ok_or(CallError::UnknownDependent(vr))?;
     let v = &info.variables[i];
-    if v.causality != Causality::Output {
+    if v.causality != Causality::Output && v.derivative_of.is_none() {
         return Ok(vec![]);
     }
     v.depends_on
@@ -438,8 +439,9 @@ guarded! {
     fn fmi3ActivateModelPartition(instance: Fmi3Instance, _clockReference: u32, _activationTime: f64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
 
     /// `fmi3GetNumberOfVariableDependencies` (FMI 3.0): writes to `*nDependencies`
-    /// the number of inputs `valueReference` depends on directly (an output: its ModelStructure
-    /// dependencies; any other variable: 0). `fmi3Error` for an unknown value reference or a NULL
+    /// the number of variables `valueReference` depends on directly (an output or a state
+    /// derivative: its ModelStructure dependencies, inputs and continuous states; any other
+    /// variable: 0). `fmi3Error` for an unknown value reference or a NULL
     /// `nDependencies`.
     ///
     /// # Safety
@@ -451,7 +453,7 @@ guarded! {
     };
 
     /// `fmi3GetVariableDependencies` (FMI 3.0): writes the direct dependencies of
-    /// `dependent` (value references of the inputs, element index 0, kind `fmi3Dependent`).
+    /// `dependent` (value references of the inputs and states, element index 0, kind `fmi3Dependent`).
     /// `fmi3Error` when `nDependencies` differs from what
     /// [`fmi3GetNumberOfVariableDependencies`] reports, or an array is NULL.
     ///
@@ -557,7 +559,7 @@ guarded! {
         COMPLETED_INTEGRATOR_STEP => |inst| unsafe { nothing_to_do(inst, &[enterEventMode, terminateSimulation]) };
 
     /// `fmi3SetTime` (FMI 3.0): Model Exchange, records the host's solver time `time`
-    /// in s (the outputs depend on the inputs only); `fmi3Error` for a non-finite time or on a
+    /// in s (the model's outputs and derivatives do not depend on time explicitly); `fmi3Error` for a non-finite time or on a
     /// Co-Simulation instance.
     fn fmi3SetTime(instance: Fmi3Instance, time: f64) -> Fmi3StatusC: SET_TIME => |inst| inst.set_time(time);
 

@@ -97,7 +97,7 @@ guarded! {
     };
 
     /// `fmi2SetTime` (FMI 2.0 §3.2.1): Model Exchange, records the host's solver time `time`
-    /// in s (the outputs depend on the inputs only); `fmi2Error` for a non-finite time or on a
+    /// in s (the model's outputs and derivatives do not depend on time explicitly); `fmi2Error` for a non-finite time or on a
     /// Co-Simulation instance.
     fn fmi2SetTime(c: Fmi2Component, time: Fmi2Real) -> Fmi2StatusC: SET_TIME => |inst| inst.set_time(time);
 
