@@ -67,8 +67,11 @@ def test_hold_breakaway_and_sliding():
     slide = pinjoint.Joint().evaluate(20e3, 0.3)["torque"]
     j.commit(0.1, 0.3, 20e3)
     assert j.torque(0.1, 0.3, 20e3) == -float(slide)
-    d = j.partials(0.0, 0.0, 20e3)
-    assert d["angle"] == pytest.approx(-k, rel=1e-9)
+    # Sliding: no stiffness in the direction of motion; the unloading direction is elastic.
+    assert j.partials(0.1, 0.3, 20e3)["angle"] == 0.0
+    assert j.partials(0.1, -0.3, 20e3)["angle"] == pytest.approx(-k * float(slide) / ts, rel=1e-6)
+    # At rest, nothing held: the elastic stiffness -k (the torque opposes the deflection).
+    assert pinjoint.Presliding().partials(0.0, 0.0, 20e3)["angle"] == pytest.approx(-k, rel=1e-12)
 
 
 def test_bad_inputs_name_the_quantity():
