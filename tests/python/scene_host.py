@@ -1,0 +1,564 @@
+"""Host-inertia scenes for PinJoint: a rigid body of inertia J on the pin,
+
+    J dw/dt = T_d(t) + torque(angle, w, P),      d angle/dt = w,
+
+integrated by a host the way a system simulation would, with the FMU (FMI 2.0 or 3.0,
+Co-Simulation or Model Exchange, through fmpy) or a Python reference law as the joint.
+
+Hosts
+- explicit(): symplectic Euler, the joint's torque held over the step. Each step sets the
+  inputs (angle_n, w_n, P), reads the torque, calls doStep(t_n, h) (order="read-step"; or
+  doStep first, then reads the torque: order="step-read"), then
+  w_{n+1} = w_n + h (T_d(t_n) + torque) / J,  angle_{n+1} = angle_n + h w_{n+1}.
+- implicit(): linearly implicit Euler with the joint's directional derivatives
+  T_a = d torque/d angle, T_w = d torque/d angular_velocity at (angle_n, w_n):
+  (J - h T_w - h^2 T_a) dw = h (T_d(t_n) + T_n + h T_a w_n), w_{n+1} = w_n + dw,
+  angle_{n+1} = angle_n + h w_{n+1}; then doStep.
+- model_exchange(): SciPy's BDF (scipy.integrate.BDF, the integrator solve_ivp uses for
+  method="BDF", stepped by hand so that completedIntegratorStep is called after every
+  accepted step) over the states [angle, w, x...] where x are the FMU's continuous states
+  (presliding_torque under the presliding model, none under the band model); optionally
+  with the Jacobian from the directional derivatives.
+
+Each host returns a Run (t, angle, w, torque, drive arrays); the metrics below read it.
+
+Zero dead-band of the sign-change counts: |w| < W_ZERO = 1e-9 rad/s counts as zero and
+neither makes nor breaks a sign change. Motion at that speed for the longest scene (100 s)
+is below 1e-7 rad (6e-6 deg), four decades under every angle tolerance of the scenes, so
+no motion that matters is hidden; and it is far above the round-off left in w when a
+stuck body's increments cancel (|h (T_d + torque)/J| ~ 1e-16 relative of T_s h / J).
+"""
+
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+W_ZERO = 1e-9  # rad/s, see the module doc
+
+ROOT = Path(__file__).resolve().parents[2]
+_TARGET = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
+TARGET = _TARGET if _TARGET.is_absolute() else ROOT / _TARGET
+FMI2_PATH = Path(os.environ.get("PINJOINT_FMU", TARGET / "fmu" / "PinJoint.fmu"))
+FMI3_PATH = TARGET / "fmu" / "fmi3" / "PinJoint.fmu"
+
+# Names of the presliding interface (issue 22).
+MODEL = "zero_velocity.model"
+BAND, PRESLIDING = 0, 1
+PRESLIDING_PARAMETERS = ("zero_velocity.presliding_angle", "zero_velocity.elastic_limit",
+                         "zero_velocity.damping_time")
+STATE = "presliding_torque"
+MU_C_NAME = "friction.boundary_friction_coefficient"
+RADIUS_NAME = "geometry.pin_radius"
+
+
+class MissingInterface(AssertionError):
+    """The FMU lacks a variable or capability the scene needs (an AssertionError, so a test
+    fails with its message rather than erroring or skipping)."""
+
+
+# ----------------------------------------------------------------------------- FMU access
+
+class _Fmu:
+    """Common part of the fmpy wrappers: variables by name, version-independent get/set."""
+
+    def __init__(self, path, kind, start_values=None, instance="scene"):
+        from fmpy import extract, read_model_description
+        path = Path(path)
+        if not path.is_file():
+            raise MissingInterface(f"{path} is missing: run `cargo run --release -p fmu_build`")
+        self.path = path
+        self.md = read_model_description(str(path))
+        self.fmi3 = self.md.fmiVersion.startswith("3")
+        self.vars = {v.name: v for v in self.md.modelVariables}
+        iface = self.md.coSimulation if kind == "cs" else self.md.modelExchange
+        if iface is None:
+            raise MissingInterface(f"{path.name} (FMI {self.md.fmiVersion}) has no {kind.upper()} interface")
+        self.iface = iface
+        self.unzipped = extract(str(path))
+        self.start_values = dict(start_values or {})
+        for name in self.start_values:
+            self.require(name)
+        self.vr_angle, self.vr_omega, self.vr_load, self.vr_torque = (
+            self.require(n).valueReference for n in ("angle", "angular_velocity", "load", "torque"))
+        self.instance = instance
+
+    def require(self, name, why=""):
+        v = self.vars.get(name)
+        if v is None:
+            raise MissingInterface(
+                f"{self.path.name} (FMI {self.md.fmiVersion}) has no variable {name!r}"
+                + (f": {why}" if why else "")
+                + (" -- the presliding zero-velocity model of issue 22 is not in this FMU"
+                   if name in (MODEL, STATE, f"der({STATE})") + PRESLIDING_PARAMETERS else ""))
+        return v
+
+    def parameter(self, name):
+        """The start value of a parameter (float), or the override given."""
+        if name in self.start_values:
+            return float(self.start_values[name])
+        return float(self.require(name).start)
+
+    def static_torque(self, load):
+        """T_s = mu_c R |P| (N.m) with this FMU's parameters."""
+        return self.parameter(MU_C_NAME) * self.parameter(RADIUS_NAME) * abs(load)
+
+    def set_value(self, name, value):
+        v = self.require(name)
+        t = v.type
+        if t == "Boolean":
+            (self.fmu.setBoolean)([v.valueReference], [bool(value)])
+        elif t in ("Integer", "Enumeration", "Int32", "Int64"):
+            if self.fmi3:
+                if t == "Int32":
+                    self.fmu.setInt32([v.valueReference], [int(value)])
+                else:
+                    self.fmu.setInt64([v.valueReference], [int(value)])
+            else:
+                self.fmu.setInteger([v.valueReference], [int(value)])
+        else:
+            self.set_reals([v.valueReference], [float(value)])
+
+    def set_reals(self, vrs, values):
+        (self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal)(vrs, values)
+
+    def get_reals(self, vrs):
+        return (self.fmu.getFloat64 if self.fmi3 else self.fmu.getReal)(vrs)
+
+    def directional(self, unknowns, knowns, seed):
+        if not getattr(self.iface, "providesDirectionalDerivative", False):
+            raise MissingInterface(f"{self.path.name} (FMI {self.md.fmiVersion}) does not provide directional "
+                                   "derivatives (providesDirectionalDerivative), which this host needs")
+        return self.fmu.getDirectionalDerivative(unknowns, knowns, seed)
+
+    def close(self):
+        try:
+            self.fmu.terminate()
+        finally:
+            self.fmu.freeInstance()
+
+
+class CoSimJoint(_Fmu):
+    """PinJoint as a Co-Simulation FMU (FMI 2 or 3). `start_values`: parameters by name."""
+
+    def __init__(self, path, start_values=None, load=20e3, instance="scene"):
+        super().__init__(path, "cs", start_values, instance)
+        from fmpy.fmi2 import FMU2Slave
+        from fmpy.fmi3 import FMU3Slave
+        kw = dict(guid=self.md.guid, unzipDirectory=self.unzipped, modelIdentifier=self.iface.modelIdentifier,
+                  instanceName=instance)
+        if self.fmi3:
+            self.fmu = FMU3Slave(**kw)
+            self.fmu.instantiate()
+            self.fmu.enterInitializationMode(startTime=0.0)
+        else:
+            self.fmu = FMU2Slave(**kw)
+            self.fmu.instantiate()
+            self.fmu.setupExperiment(startTime=0.0)
+            self.fmu.enterInitializationMode()
+        for name, value in self.start_values.items():
+            self.set_value(name, value)
+        self.set_reals([self.vr_load], [float(load)])
+        self.fmu.exitInitializationMode()
+        self._io = [self.vr_angle, self.vr_omega, self.vr_load]
+
+    @property
+    def provides_partials(self):
+        return bool(getattr(self.iface, "providesDirectionalDerivative", False))
+
+    def set_inputs(self, theta, omega, load):
+        self.set_reals(self._io, [theta, omega, load])
+
+    def torque(self):
+        return self.get_reals([self.vr_torque])[0]
+
+    def do_step(self, t, h):
+        self.fmu.doStep(t, h)
+
+    def partials(self):
+        """(d torque/d angle, d torque/d angular_velocity) from the FMU's directional derivatives."""
+        return (self.directional([self.vr_torque], [self.vr_angle], [1.0])[0],
+                self.directional([self.vr_torque], [self.vr_omega], [1.0])[0])
+
+
+class MEJoint(_Fmu):
+    """PinJoint as a Model Exchange FMU (FMI 2 or 3); its continuous states (presliding_torque
+    under the presliding model, none in an FMU without it) are states of the host's ODE."""
+
+    def __init__(self, path, start_values=None, load=20e3, instance="scene"):
+        super().__init__(path, "me", start_values, instance)
+        from fmpy.fmi2 import FMU2Model
+        from fmpy.fmi3 import FMU3Model
+        kw = dict(guid=self.md.guid, unzipDirectory=self.unzipped, modelIdentifier=self.iface.modelIdentifier,
+                  instanceName=instance)
+        self.fmu = (FMU3Model if self.fmi3 else FMU2Model)(**kw)
+        self.fmu.instantiate()
+        if self.fmi3:
+            self.fmu.enterInitializationMode(startTime=0.0)
+        else:
+            self.fmu.setupExperiment(startTime=0.0)
+            self.fmu.enterInitializationMode()
+        for name, value in self.start_values.items():
+            self.set_value(name, value)
+        self.set_reals([self.vr_load], [float(load)])
+        self.fmu.exitInitializationMode()
+        while True:  # event iteration at the start
+            if self.fmi3:
+                needed = self.fmu.updateDiscreteStates()[0]
+            else:
+                needed = self.fmu.newDiscreteStates()[0]
+            if not needed:
+                break
+        self.fmu.enterContinuousTimeMode()
+        self.state_vrs, self.der_vrs = [], []
+        for d in self.md.derivatives:
+            dv = d.variable
+            self.der_vrs.append(dv.valueReference)
+            sv = dv.derivative
+            self.state_vrs.append(sv.valueReference)
+        self.n_states = len(self.state_vrs)
+        import ctypes
+        self._x = (ctypes.c_double * max(self.n_states, 1))()
+        self._dx = (ctypes.c_double * max(self.n_states, 1))()
+        if self.n_states:
+            self.fmu.getContinuousStates(self._x, self.n_states)
+        self.x0 = list(self._x[:self.n_states])
+        self._io = [self.vr_angle, self.vr_omega, self.vr_load]
+
+    @property
+    def provides_partials(self):
+        return bool(getattr(self.iface, "providesDirectionalDerivative", False))
+
+    def _set(self, t, theta, omega, load, x):
+        self.fmu.setTime(t)
+        self.set_reals(self._io, [theta, omega, load])
+        if self.n_states:
+            self._x[:self.n_states] = list(x)
+            self.fmu.setContinuousStates(self._x, self.n_states)
+
+    def evaluate(self, t, theta, omega, load, x):
+        self._set(t, theta, omega, load, x)
+        dx = []
+        if self.n_states:
+            if self.fmi3:
+                self.fmu.getContinuousStateDerivatives(self._dx, self.n_states)
+            else:
+                self.fmu.getDerivatives(self._dx, self.n_states)
+            dx = list(self._dx[:self.n_states])
+        return self.get_reals([self.vr_torque])[0], dx
+
+    def partials(self, t, theta, omega, load, x):
+        self._set(t, theta, omega, load, x)
+        tq = [self.vr_torque]
+        t_w = self.directional(tq, [self.vr_omega], [1.0])[0]
+        t_x = [self.directional(tq, [s], [1.0])[0] for s in self.state_vrs]
+        d_w = self.directional(self.der_vrs, [self.vr_omega], [1.0]) if self.n_states else []
+        d_x = [self.directional(self.der_vrs, [s], [1.0]) for s in self.state_vrs]
+        d_x = [[d_x[j][i] for j in range(self.n_states)] for i in range(self.n_states)]  # row i: d xdot_i/d x_j
+        return t_w, t_x, d_w, d_x
+
+    def completed_step(self):
+        self.fmu.completedIntegratorStep()
+
+
+def open_cosim(path, model=None, params=None, load=20e3, instance="scene"):
+    """A CoSimJoint with `zero_velocity.model` = model (None: the FMU's default) and params."""
+    sv = dict(params or {})
+    if model is not None:
+        sv[MODEL] = model
+    return CoSimJoint(path, sv, load=load, instance=instance)
+
+
+def open_me(path, model=None, params=None, load=20e3, instance="scene"):
+    """An MEJoint with `zero_velocity.model` = model (None: the FMU's default) and params."""
+    sv = dict(params or {})
+    if model is not None:
+        sv[MODEL] = model
+    joint = MEJoint(path, sv, load=load, instance=instance)
+    if model == PRESLIDING and joint.n_states == 0:
+        joint.close()
+        raise MissingInterface(f"{Path(path).name}: the presliding model has no continuous state "
+                               f"({STATE!r}) under Model Exchange")
+    return joint
+
+
+# ----------------------------------------------------------------------------- drives
+
+class Drive:
+    """A drive torque T_d(t) (N.m); `reversals(t_end, threshold)`: the number of times the
+    drive goes beyond +threshold after having been beyond -threshold or back (the reversals
+    of sliding it commands when threshold is the breakaway torque)."""
+
+    def __call__(self, t):
+        raise NotImplementedError
+
+    def reversals(self, t_end, threshold, dt=1e-3):
+        t = np.arange(0.0, t_end, dt)
+        d = np.vectorize(self.__call__)(t)
+        side = np.where(d > threshold, 1, np.where(d < -threshold, -1, 0))
+        side = side[side != 0]
+        return int(np.sum(side[1:] != side[:-1]))
+
+    def time_reaching(self, level, t_end, dt=1e-4):
+        """The first time the drive reaches `level` (inf if never before t_end)."""
+        t = np.arange(0.0, t_end, dt)
+        d = np.vectorize(self.__call__)(t)
+        hit = np.nonzero(d >= level)[0]
+        return float(t[hit[0]]) if len(hit) else math.inf
+
+
+@dataclass
+class Hold(Drive):
+    """A constant drive `level`, optionally reached by a cosine ramp over `rise` seconds."""
+    level: float
+    rise: float = 0.0
+
+    def __call__(self, t):
+        if self.rise > 0 and t < self.rise:
+            return self.level * 0.5 * (1 - math.cos(math.pi * t / self.rise))
+        return self.level
+
+
+@dataclass
+class Ramp(Drive):
+    """T_d = rate t (N.m/s) up to `top`, then held."""
+    rate: float
+    top: float = math.inf
+
+    def __call__(self, t):
+        return min(self.rate * t, self.top)
+
+
+@dataclass
+class Sine(Drive):
+    """T_d = bias + amplitude sin(2 pi f t)."""
+    amplitude: float
+    frequency: float
+    bias: float = 0.0
+
+    def __call__(self, t):
+        return self.bias + self.amplitude * math.sin(2 * math.pi * self.frequency * t)
+
+
+# ----------------------------------------------------------------------------- hosts
+
+@dataclass
+class Run:
+    """A recorded scene: times (s), angle (rad), angular velocity (rad/s), torque (N.m, the
+    joint's, as used by the host over the step that starts at t) and drive (N.m)."""
+    t: np.ndarray
+    angle: np.ndarray
+    omega: np.ndarray
+    torque: np.ndarray
+    drive: np.ndarray
+    info: dict = field(default_factory=dict)
+
+
+def _load_fn(load):
+    return load if callable(load) else (lambda t, p=float(load): p)
+
+
+def explicit(joint, J, drive, load, h, t_end, order="read-step", theta0=0.0, omega0=0.0):
+    """Symplectic Euler with the torque held over the step (see the module doc)."""
+    n = int(round(t_end / h))
+    P = _load_fn(load)
+    t_ = np.empty(n + 1)
+    a_, w_, tq_, d_ = np.empty(n + 1), np.empty(n + 1), np.empty(n + 1), np.empty(n + 1)
+    theta, omega = theta0, omega0
+    for i in range(n):
+        t = i * h
+        joint.set_inputs(theta, omega, P(t))
+        if order == "read-step":
+            tq = joint.torque()
+            joint.do_step(t, h)
+        elif order == "step-read":
+            joint.do_step(t, h)
+            tq = joint.torque()
+        else:
+            raise ValueError(f"order = {order!r}: 'read-step' or 'step-read'")
+        td = drive(t)
+        t_[i], a_[i], w_[i], tq_[i], d_[i] = t, theta, omega, tq, td
+        omega = omega + h * (td + tq) / J
+        theta = theta + h * omega
+    t = n * h
+    joint.set_inputs(theta, omega, P(t))
+    t_[n], a_[n], w_[n], tq_[n], d_[n] = t, theta, omega, joint.torque(), drive(t)
+    return Run(t_, a_, w_, tq_, d_, {"host": f"explicit {order}", "h": h, "J": J})
+
+
+def implicit(joint, J, drive, load, h, t_end, theta0=0.0, omega0=0.0):
+    """Linearly implicit Euler with the joint's partials (see the module doc)."""
+    n = int(round(t_end / h))
+    P = _load_fn(load)
+    t_ = np.empty(n + 1)
+    a_, w_, tq_, d_ = np.empty(n + 1), np.empty(n + 1), np.empty(n + 1), np.empty(n + 1)
+    theta, omega = theta0, omega0
+    for i in range(n):
+        t = i * h
+        joint.set_inputs(theta, omega, P(t))
+        tq = joint.torque()
+        ta, tw = joint.partials()
+        joint.do_step(t, h)
+        td = drive(t)
+        t_[i], a_[i], w_[i], tq_[i], d_[i] = t, theta, omega, tq, td
+        dw = h * (td + tq + h * ta * omega) / (J - h * tw - h * h * ta)
+        omega = omega + dw
+        theta = theta + h * omega
+    t = n * h
+    joint.set_inputs(theta, omega, P(t))
+    t_[n], a_[n], w_[n], tq_[n], d_[n] = t, theta, omega, joint.torque(), drive(t)
+    return Run(t_, a_, w_, tq_, d_, {"host": "implicit", "h": h, "J": J})
+
+
+def model_exchange(joint, J, drive, load, t_end, rtol=1e-6, atol=None, jacobian=True, max_step=np.inf,
+                   theta0=0.0, omega0=0.0, x0=None):
+    """SciPy BDF over [angle, w, x...] (see the module doc). atol: per state (default 1e-9 rad,
+    1e-9 rad/s, 1e-6 N.m)."""
+    from scipy.integrate import BDF
+    P = _load_fn(load)
+    nx = joint.n_states
+    x0 = list(x0 if x0 is not None else getattr(joint, "x0", [0.0] * nx))
+    y0 = np.array([theta0, omega0] + x0, float)
+    if atol is None:
+        atol = np.array([1e-9, 1e-9] + [1e-6] * nx)
+
+    def rhs(t, y):
+        tq, dx = joint.evaluate(t, y[0], y[1], P(t), y[2:])
+        return np.array([y[1], (drive(t) + tq) / J] + list(dx))
+
+    def jac(t, y):
+        t_w, t_x, d_w, d_x = joint.partials(t, y[0], y[1], P(t), y[2:])
+        m = np.zeros((2 + nx, 2 + nx))
+        m[0, 1] = 1.0
+        m[1, 1] = t_w / J
+        for j in range(nx):
+            m[1, 2 + j] = t_x[j] / J
+            m[2 + j, 1] = d_w[j]
+            for i in range(nx):
+                m[2 + i, 2 + j] = d_x[i][j]
+        return m
+
+    solver = BDF(rhs, 0.0, y0, t_end, rtol=rtol, atol=atol, max_step=max_step,
+                 jac=jac if jacobian else None)
+    ts, ys = [0.0], [y0.copy()]
+    while solver.status == "running":
+        msg = solver.step()
+        if solver.status == "failed":
+            raise RuntimeError(f"BDF failed at t = {solver.t:.6g} s: {msg}")
+        joint.completed_step()
+        ts.append(solver.t)
+        ys.append(solver.y.copy())
+    ys = np.array(ys)
+    t_ = np.array(ts)
+    tq = np.array([joint.evaluate(t, y[0], y[1], P(t), y[2:])[0] for t, y in zip(t_, ys)])
+    d = np.array([drive(t) for t in t_])
+    return Run(t_, ys[:, 0], ys[:, 1], tq, d,
+               {"host": "ME BDF", "rtol": rtol, "J": J, "nfev": solver.nfev, "njev": solver.njev,
+                "steps": len(t_) - 1, "states": ys[:, 2:]})
+
+
+# ----------------------------------------------------------------------------- metrics
+
+def signs(omega, zero=W_ZERO):
+    """sign(w) with |w| < zero counted as 0."""
+    w = np.asarray(omega)
+    return np.where(w > zero, 1, np.where(w < -zero, -1, 0))
+
+
+def sign_changes(omega, zero=W_ZERO):
+    """Sign changes of w, zeros (|w| < zero) skipped: a stop followed by motion the same way
+    is no change, a stop followed by motion the other way is one."""
+    s = signs(omega, zero)
+    s = s[s != 0]
+    return int(np.sum(s[1:] != s[:-1]))
+
+
+def chatter(omega, zero=W_ZERO):
+    """Numerical chatter: steps at which w changes sign and changes it back at the next
+    step (a period-2 flip-flop at the host's step, the signature of a stiff stateless law
+    sampled too coarsely; a resolved elastic ring is not counted)."""
+    s = signs(omega, zero)
+    return int(np.sum((s[1:-1] != 0) & (s[:-2] == -s[1:-1]) & (s[2:] == -s[1:-1])))
+
+
+def turning_points(angle, hysteresis):
+    """Reversals of motion: the angle turns back by more than `hysteresis` (rad) from its
+    last extremum. Elastic (presliding) rings smaller than the hysteresis do not count."""
+    a = np.asarray(angle)
+    count, direction = 0, 0
+    hi = lo = a[0]
+    for x in a:
+        if direction >= 0:
+            if x > hi:
+                hi = x
+            elif hi - x > hysteresis:
+                if direction > 0:
+                    count += 1
+                direction, lo = -1, x
+                continue
+        if direction <= 0:
+            if x < lo:
+                lo = x
+            elif x - lo > hysteresis:
+                if direction < 0:
+                    count += 1
+                direction, hi = 1, x
+    return count
+
+
+def trend(run, t_from, t_to=None):
+    """Least-squares line of the angle over [t_from, t_to]: (slope rad/s, residual peak-to-peak rad)."""
+    t_to = run.t[-1] if t_to is None else t_to
+    m = (run.t >= t_from) & (run.t <= t_to)
+    t, a = run.t[m], run.angle[m]
+    if len(t) < 2:
+        return 0.0, 0.0
+    p = np.polyfit(t - t[0], a, 1)
+    r = a - np.polyval(p, t - t[0])
+    return float(p[0]), float(r.max() - r.min())
+
+
+def drift_after_settling(run, t_settle):
+    """Angle drift (rad) over [t_settle, end]: the slope of the least-squares line times the
+    duration (an elastic ring averages out; a creep does not)."""
+    slope, _ = trend(run, t_settle)
+    return abs(slope) * (run.t[-1] - t_settle)
+
+
+def oscillation_left(run, tail=0.1):
+    """Peak-to-peak (rad) of the angle about its trend over the last `tail` of the run."""
+    t0 = run.t[-1] - tail * (run.t[-1] - run.t[0])
+    return trend(run, t0)[1]
+
+
+def displacement(run):
+    """max |angle - angle_0| (rad)."""
+    return float(np.max(np.abs(run.angle - run.angle[0])))
+
+
+def peak_torque(run, t_to=None):
+    """max |torque| (N.m) up to t_to."""
+    m = run.t <= (run.t[-1] if t_to is None else t_to)
+    return float(np.max(np.abs(run.torque[m])))
+
+
+def motion_before(run, t_level):
+    """max |angle - angle_0| (rad) up to t_level (e.g. the drive reaching 0.95 T_s)."""
+    m = run.t <= t_level
+    return float(np.max(np.abs(run.angle[m] - run.angle[0])))
+
+
+def walk_per_cycle(run, period, skip=1):
+    """Mean angle change per drive period (rad), from the angle sampled at the period
+    starts after `skip` periods."""
+    n = int(math.floor(run.t[-1] / period + 1e-9))
+    if n - skip < 1:
+        return 0.0
+    marks = [np.interp(k * period, run.t, run.angle) for k in range(skip, n + 1)]
+    return float((marks[-1] - marks[0]) / (n - skip))
+
+
+def deg(x):
+    return math.degrees(x)
