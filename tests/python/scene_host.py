@@ -333,13 +333,16 @@ class Ramp(Drive):
 
 @dataclass
 class Sine(Drive):
-    """T_d = bias + amplitude sin(2 pi f t)."""
+    """T_d = bias + amplitude sin(2 pi f t), the whole multiplied by a cosine rise from 0 to
+    1 over `rise` seconds if rise > 0."""
     amplitude: float
     frequency: float
     bias: float = 0.0
+    rise: float = 0.0
 
     def __call__(self, t):
-        return self.bias + self.amplitude * math.sin(2 * math.pi * self.frequency * t)
+        g = 0.5 * (1 - math.cos(math.pi * t / self.rise)) if self.rise > 0 and t < self.rise else 1.0
+        return g * (self.bias + self.amplitude * math.sin(2 * math.pi * self.frequency * t))
 
 
 # ----------------------------------------------------------------------------- hosts
@@ -475,12 +478,22 @@ def sign_changes(omega, zero=W_ZERO):
     return int(np.sum(s[1:] != s[:-1]))
 
 
-def chatter(omega, zero=W_ZERO):
-    """Numerical chatter: steps at which w changes sign and changes it back at the next
-    step (a period-2 flip-flop at the host's step, the signature of a stiff stateless law
-    sampled too coarsely; a resolved elastic ring is not counted)."""
+def chatter(omega, zero=W_ZERO, spacing=2):
+    """Numerical chatter: the number of sign changes of w that come at most `spacing`
+    samples after the previous one (a half-period of at most two host steps: +-+- or
+    ++--; h times the angular frequency >= pi/2, which no motion the host resolves has --
+    symplectic Euler is unstable beyond 2 -- so it is the signature of a stiff law sampled
+    too coarsely, as the band law at 20 kg m^2, 60 kN, 10 ms). A resolved elastic ring and
+    a single +-+ blip where a smooth motion touches zero are not counted."""
     s = signs(omega, zero)
-    return int(np.sum((s[1:-1] != 0) & (s[:-2] == -s[1:-1]) & (s[2:] == -s[1:-1])))
+    idx = np.nonzero(s)[0]
+    v = s[idx]
+    flips = idx[1:][v[1:] != v[:-1]]  # sample index at which each sign change lands
+    if len(flips) < 2:
+        return 0
+    close = np.diff(flips) <= spacing
+    # a lone blip (+-+) is two close flips; count a flip only if it also follows a close pair
+    return int(np.sum(close[1:] & close[:-1]))
 
 
 def turning_points(angle, hysteresis):
@@ -551,14 +564,158 @@ def motion_before(run, t_level):
 
 
 def walk_per_cycle(run, period, skip=1):
-    """Mean angle change per drive period (rad), from the angle sampled at the period
-    starts after `skip` periods."""
+    """Mean angle change per drive period (rad): the slope of the least-squares line through
+    the angle sampled at the period starts after `skip` periods (a decaying elastic ring
+    sampled there averages out better than in an end-to-end difference; a walk does not)."""
     n = int(math.floor(run.t[-1] / period + 1e-9))
     if n - skip < 1:
         return 0.0
-    marks = [np.interp(k * period, run.t, run.angle) for k in range(skip, n + 1)]
-    return float((marks[-1] - marks[0]) / (n - skip))
+    k = np.arange(skip, n + 1)
+    marks = np.interp(k * period, run.t, run.angle)
+    return float(np.polyfit(k, marks, 1)[0]) if len(k) > 2 else float(marks[-1] - marks[0])
 
 
 def deg(x):
     return math.degrees(x)
+
+
+# ----------------------------------------------------------------------------- scenes
+
+DEG = math.pi / 180
+HOLD_FRACTION = 0.5          # hold drive / T_s
+DRIFT_TOL = 1e-3 * DEG       # rad, angle drift after settling (and oscillation left)
+DISPLACEMENT_TOL = 0.5 * DEG  # rad, displacement while held
+REVERSAL_HYSTERESIS = 0.5 * DEG  # rad: motion smaller than the holding tolerance is no reversal
+PEAK_TOL = 0.02              # relative, breakaway peak torque against T_s
+WALK_TOL = 1e-3 * DEG        # rad, total walk under a dither below breakaway
+
+
+@dataclass
+class Host:
+    """How a scene is integrated: kind 'explicit' (h, order), 'implicit' (h) or 'me'
+    (rtol, jacobian)."""
+    kind: str
+    h: float = 1e-3
+    order: str = "read-step"
+    rtol: float = 1e-6
+    jacobian: bool = True
+
+    def run(self, joint, J, drive, load, t_end):
+        if self.kind == "explicit":
+            return explicit(joint, J, drive, load, self.h, t_end, order=self.order)
+        if self.kind == "implicit":
+            return implicit(joint, J, drive, load, self.h, t_end)
+        if self.kind == "me":
+            return model_exchange(joint, J, drive, load, t_end, rtol=self.rtol, jacobian=self.jacobian)
+        raise ValueError(f"host kind = {self.kind!r}: 'explicit', 'implicit' or 'me'")
+
+    def __str__(self):
+        if self.kind == "me":
+            return f"ME BDF rtol {self.rtol:g}"
+        return f"{self.kind} h = {self.h * 1e3:g} ms"
+
+
+def hold_scene(joint, host, J, load, T_s, fraction=HOLD_FRACTION, t_end=100.0, t_settle=None, rise=0.0):
+    """Drive fraction T_s from rest (a step, or a cosine rise over `rise` s) for t_end s.
+    Metrics: displacement, drift after settling (t_settle, default t_end/2), oscillation
+    left (last 10 %), sign changes and chatter of w after settling; `failures` lists the
+    criteria missed."""
+    t_settle = t_end / 2 if t_settle is None else t_settle
+    run = host.run(joint, J, Hold(fraction * T_s, rise), load, t_end)
+    late = run.t >= t_settle
+    m = {"displacement_deg": deg(displacement(run)),
+         "drift_deg": deg(drift_after_settling(run, t_settle)),
+         "oscillation_deg": deg(oscillation_left(run)),
+         "sign_changes_late": sign_changes(run.omega[late]),
+         "chatter": chatter(run.omega)}
+    f = []
+    if not np.all(np.isfinite(run.angle)):
+        f.append("non-finite angle")
+    if m["displacement_deg"] >= deg(DISPLACEMENT_TOL):
+        f.append(f"displacement {m['displacement_deg']:.3g} deg >= 0.5 deg")
+    if m["drift_deg"] >= deg(DRIFT_TOL):
+        f.append(f"drift after settling {m['drift_deg']:.3g} deg >= 1e-3 deg")
+    if m["oscillation_deg"] >= deg(DRIFT_TOL):
+        f.append(f"oscillation left {m['oscillation_deg']:.3g} deg >= 1e-3 deg")
+    if m["chatter"]:
+        f.append(f"chatter: {m['chatter']} period-2 sign flips of w")
+    m["failures"] = f
+    return run, m
+
+
+def ramp_scene(joint, host, J, load, T_s, rise_time=5.0, top=1.5):
+    """Drive ramped at T_s / rise_time (N.m/s) up to top T_s. Metrics: motion before the
+    drive reaches 0.95 T_s, peak |torque| up to the drive reaching 1.1 T_s against T_s,
+    breakaway time (w first above 1e-3 rad/s for good), and sliding at the end."""
+    drive = Ramp(T_s / rise_time, top * T_s)
+    t_end = rise_time * top * 1.2
+    run = host.run(joint, J, drive, load, t_end)
+    t95 = 0.95 * rise_time
+    t110 = 1.1 * rise_time
+    moving = np.nonzero(run.omega < 1e-3)[0]
+    t_break = float(run.t[moving[-1] + 1]) if len(moving) and moving[-1] + 1 < len(run.t) else math.inf
+    m = {"motion_before_deg": deg(motion_before(run, t95)),
+         "peak_torque": peak_torque(run, t110),
+         "peak_error": peak_torque(run, t110) / T_s - 1,
+         "breakaway_time": t_break,
+         "final_omega": float(run.omega[-1]),
+         "travel_deg": deg(run.angle[-1] - run.angle[0]),
+         "chatter": chatter(run.omega)}
+    f = []
+    if m["motion_before_deg"] >= 0.5:
+        f.append(f"motion below 0.95 T_s {m['motion_before_deg']:.3g} deg >= 0.5 deg")
+    if abs(m["peak_error"]) > PEAK_TOL:
+        f.append(f"peak torque {m['peak_torque']:.4g} N.m is {100 * m['peak_error']:+.2f} % off T_s = {T_s:.4g}")
+    if not (m["final_omega"] > 1e-3 and m["travel_deg"] > 2 * m["motion_before_deg"]):
+        f.append(f"not sliding above breakaway: final w {m['final_omega']:.3g} rad/s, travel {m['travel_deg']:.3g} deg")
+    if m["chatter"]:
+        f.append(f"chatter: {m['chatter']} period-2 sign flips of w")
+    m["failures"] = f
+    return run, m
+
+
+def reversal_scene(joint, host, J, load, T_s, amplitude=1.5, frequency=0.5, bias=0.0, periods=3):
+    """Drive bias + amplitude sin(2 pi f t) (in T_s) for `periods` periods. Metrics: the
+    drive's reversals beyond +-T_s, reversals of motion (turning points of the angle beyond
+    the 0.5 deg hysteresis), sign changes of w (dead band W_ZERO), chatter."""
+    drive = Sine(amplitude * T_s, frequency, bias * T_s)
+    t_end = periods / frequency
+    run = host.run(joint, J, drive, load, t_end)
+    expected = drive.reversals(t_end, T_s)
+    m = {"drive_reversals": expected,
+         "reversals": turning_points(run.angle, REVERSAL_HYSTERESIS),
+         "sign_changes": sign_changes(run.omega),
+         "chatter": chatter(run.omega),
+         "peak_omega": float(np.max(np.abs(run.omega)))}
+    f = []
+    if not np.all(np.isfinite(run.angle)):
+        f.append("non-finite angle")
+    if m["reversals"] != expected:
+        f.append(f"{m['reversals']} reversals of motion for {expected} of the drive")
+    if m["chatter"]:
+        f.append(f"chatter: {m['chatter']} period-2 sign flips of w")
+    m["failures"] = f
+    return run, m
+
+
+def dither_scene(joint, host, J, load, T_s, bias=0.3, amplitude=0.4, frequency=1.0, periods=20, rise=0.0):
+    """Drive (bias + amplitude sin(2 pi f t)) T_s, below breakaway. Metrics: walk per
+    cycle (after the first), total walk from the end of the first period to the end,
+    displacement."""
+    drive = Sine(amplitude * T_s, frequency, bias * T_s, rise)
+    t_end = periods / frequency
+    run = host.run(joint, J, drive, load, t_end)
+    per = walk_per_cycle(run, 1 / frequency, skip=max(1, math.ceil(rise * frequency)))
+    m = {"walk_per_cycle_deg": deg(per),
+         "walk_deg": deg(per * (periods - 1)),
+         "displacement_deg": deg(displacement(run)),
+         "chatter": chatter(run.omega)}
+    f = []
+    if abs(m["walk_deg"]) >= deg(WALK_TOL):
+        f.append(f"walk {m['walk_deg']:.3g} deg over {periods - 1} periods >= 1e-3 deg")
+    if m["displacement_deg"] >= 0.5:
+        f.append(f"displacement {m['displacement_deg']:.3g} deg >= 0.5 deg")
+    if m["chatter"]:
+        f.append(f"chatter: {m['chatter']} period-2 sign flips of w")
+    m["failures"] = f
+    return run, m
