@@ -529,10 +529,14 @@ def turning_points(angle, hysteresis):
 def trend(run, t_from, t_to=None):
     """Least-squares line of the angle over [t_from, t_to]: (slope rad/s, residual peak-to-peak rad)."""
     t_to = run.t[-1] if t_to is None else t_to
-    m = (run.t >= t_from) & (run.t <= t_to)
-    t, a = run.t[m], run.angle[m]
-    if len(t) < 2:
+    if not t_to > t_from:
         return 0.0, 0.0
+    m = (run.t >= t_from) & (run.t <= t_to)
+    if m.sum() < 2001:  # a sparse (ME) record: the angle interpolated on a uniform grid
+        t = np.linspace(t_from, t_to, 2001)
+        a = np.interp(t, run.t, run.angle)
+    else:
+        t, a = run.t[m], run.angle[m]
     p = np.polyfit(t - t[0], a, 1)
     r = a - np.polyval(p, t - t[0])
     return float(p[0]), float(r.max() - r.min())
