@@ -504,26 +504,32 @@ def chatter(omega, zero=W_ZERO, spacing=2, window=10):
 def turning_points(angle, hysteresis):
     """Reversals of motion: the angle turns back by more than `hysteresis` (rad) from its
     last extremum. Elastic (presliding) rings smaller than the hysteresis do not count."""
+    return len(reversal_indices(angle, hysteresis))
+
+
+def reversal_indices(angle, hysteresis):
+    """Indices of the extrema at which the motion reverses (see turning_points)."""
     a = np.asarray(angle)
-    count, direction = 0, 0
+    out, direction = [], 0
     hi = lo = a[0]
-    for x in a:
+    ihi = ilo = 0
+    for i, x in enumerate(a):
         if direction >= 0:
             if x > hi:
-                hi = x
+                hi, ihi = x, i
             elif hi - x > hysteresis:
                 if direction > 0:
-                    count += 1
-                direction, lo = -1, x
+                    out.append(ihi)
+                direction, lo, ilo = -1, x, i
                 continue
         if direction <= 0:
             if x < lo:
-                lo = x
+                lo, ilo = x, i
             elif x - lo > hysteresis:
                 if direction < 0:
-                    count += 1
-                direction, hi = 1, x
-    return count
+                    out.append(ilo)
+                direction, hi, ihi = 1, x, i
+    return out
 
 
 def trend(run, t_from, t_to=None):
@@ -666,7 +672,11 @@ def ramp_scene(joint, host, J, load, T_s, rise_time=5.0, top=1.5):
     fast = np.nonzero(run.omega >= 0.01)[0]
     t110 = max(1.1 * rise_time, float(run.t[fast[0]]) if len(fast) else run.t[-1])
     moving = np.nonzero(run.omega < 1e-3)[0]
-    t_break = float(run.t[moving[-1] + 1]) if len(moving) and moving[-1] + 1 < len(run.t) else math.inf
+    t_break = math.inf  # w crossing 1e-3 rad/s for good, interpolated between samples
+    if len(moving) and moving[-1] + 1 < len(run.t):
+        i = moving[-1]
+        w0, w1 = run.omega[i], run.omega[i + 1]
+        t_break = float(run.t[i] + (run.t[i + 1] - run.t[i]) * (1e-3 - w0) / (w1 - w0))
     m = {"motion_before_deg": deg(motion_before(run, t95)),
          "peak_torque": peak_torque(run, t110),
          "peak_error": peak_torque(run, t110) / T_s - 1,
