@@ -121,11 +121,14 @@ class ReferenceCoSim:
         self.angle_set = False
 
     def partials(self):
-        """(d torque/d angle, d torque/d angular_velocity) at the current inputs."""
+        """(d torque/d angle, d torque/d angular_velocity) at the current inputs; the angle
+        tangent is one-sided, taken in the direction of the angular_velocity input (the
+        motion about to happen; a host predicting a reversal sets w to the predicted value
+        and asks again), else of the last angle increment, else the elastic one."""
         T = self.law.bound(self.load)
         d = self.theta - self.theta_c
-        s = math.copysign(1.0, d) if d != 0 else (math.copysign(1.0, self.omega) if self.omega != 0
-                                                  else (-1.0 if self.tau > 0 else 1.0))
+        s = math.copysign(1.0, self.omega) if self.omega != 0 else (
+            math.copysign(1.0, d) if d != 0 else (-1.0 if self.tau > 0 else 1.0))
         sl = self.law.slope(self.tau, s, T)
         sw = 1.0 if self.omega >= 0 else -1.0
         return -sl, -self.law.t_d * self.law.slope(self.tau, sw, T)

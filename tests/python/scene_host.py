@@ -391,8 +391,17 @@ def explicit(joint, J, drive, load, h, t_end, order="read-step", theta0=0.0, ome
     return Run(t_, a_, w_, tq_, d_, {"host": f"explicit {order}", "h": h, "J": J})
 
 
-def implicit(joint, J, drive, load, h, t_end, theta0=0.0, omega0=0.0):
-    """Linearly implicit Euler with the joint's partials (see the module doc)."""
+def implicit(joint, J, drive, load, h, t_end, theta0=0.0, omega0=0.0, relinearize=True):
+    """Linearly implicit Euler with the joint's partials (see the module doc).
+
+    relinearize: the presliding tangent d torque/d angle is one-sided (k backwards from the
+    sliding branch, ~0 forwards), taken by the joint in the direction of the angular_velocity
+    input. When the step predicts a reversal (sign of w_{n+1} opposite to w_n's), the
+    partials are asked again with angular_velocity = w_{n+1} (the angle unchanged, so
+    nothing is committed), the step is solved again with them (the torque T_n stays the one
+    at w_n), and the inputs are set back to (angle_n, w_n) before doStep. Without it, a body
+    stopping within a 100 ms step is linearized on the soft sliding branch, overshoots
+    through the whole elastic range (2 phi_s) and limit-cycles (seen at 50 kg m^2, 60 kN)."""
     n = int(round(t_end / h))
     P = _load_fn(load)
     t_ = np.empty(n + 1)
@@ -403,10 +412,15 @@ def implicit(joint, J, drive, load, h, t_end, theta0=0.0, omega0=0.0):
         joint.set_inputs(theta, omega, P(t))
         tq = joint.torque()
         ta, tw = joint.partials()
-        joint.do_step(t, h)
         td = drive(t)
-        t_[i], a_[i], w_[i], tq_[i], d_[i] = t, theta, omega, tq, td
         dw = h * (td + tq + h * ta * omega) / (J - h * tw - h * h * ta)
+        if relinearize and omega * (omega + dw) < 0:
+            joint.set_inputs(theta, omega + dw, P(t))
+            ta, tw = joint.partials()
+            dw = h * (td + tq + h * ta * omega) / (J - h * tw - h * h * ta)
+            joint.set_inputs(theta, omega, P(t))
+        joint.do_step(t, h)
+        t_[i], a_[i], w_[i], tq_[i], d_[i] = t, theta, omega, tq, td
         omega = omega + dw
         theta = theta + h * omega
     t = n * h
