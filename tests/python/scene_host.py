@@ -29,6 +29,7 @@ no motion that matters is hidden; and it is far above the round-off left in w wh
 stuck body's increments cancel (|h (T_d + torque)/J| ~ 1e-16 relative of T_s h / J).
 """
 
+import atexit
 import math
 import os
 from dataclasses import dataclass, field
@@ -61,6 +62,18 @@ class MissingInterface(AssertionError):
 
 # ----------------------------------------------------------------------------- FMU access
 
+_EXTRACTED = {}
+
+
+def _remove_extracted():
+    import shutil
+    for d in _EXTRACTED.values():
+        shutil.rmtree(d, ignore_errors=True)
+
+
+atexit.register(_remove_extracted)
+
+
 class _Fmu:
     """Common part of the fmpy wrappers: variables by name, version-independent get/set."""
 
@@ -77,7 +90,10 @@ class _Fmu:
         if iface is None:
             raise MissingInterface(f"{path.name} (FMI {self.md.fmiVersion}) has no {kind.upper()} interface")
         self.iface = iface
-        self.unzipped = extract(str(path))
+        key = (str(path.resolve()), path.stat().st_mtime_ns)
+        if key not in _EXTRACTED:  # once per archive and process
+            _EXTRACTED[key] = extract(str(path))
+        self.unzipped = _EXTRACTED[key]
         self.start_values = dict(start_values or {})
         for name in self.start_values:
             self.require(name)
