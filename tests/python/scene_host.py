@@ -749,7 +749,8 @@ def reversal_scene(joint, host, J, load, T_s, amplitude=1.5, frequency=0.5, bias
     # the drive is still well inside +-T_s (a 1.3 T_s sine), the deflected presliding spring
     # throws it back and it rings about the new equilibrium (damping ratio
     # (t_d/2) sqrt(T_s/(phi_s J)) < 1 over the whole envelope): a physical ring, 28 sign changes
-    # of w for 3 reversals at 20 kg m^2, 20 kN with the reference law, all below 0.1 deg. It is
+    # of w for 3 reversals at 20 kg m^2, 20 kN with the reference law, within the elastic range
+    # (a throw-back of at most 2 phi_s). It is
     # reported (sign_changes); reversals of motion and chatter are the criteria.
     if m["chatter"]:
         f.append(f"chatter: {m['chatter']} sign changes of w within two steps of the previous")

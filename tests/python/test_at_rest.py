@@ -8,7 +8,10 @@ FMI 3.0:
 Scenes and criteria (scene_host.hold_scene etc.): hold (drive 0.5 T_s, 100 s: drift after
 settling < 1e-3 deg, displacement < 0.5 deg, no oscillation left, no chatter), breakaway
 under a ramp (< 0.5 deg below 0.95 T_s, peak |torque| within 2 % of T_s, sliding above),
-reversals under a sine above breakaway (reversals of motion = the drive's, no chatter),
+reversals under a sine above breakaway (reversals of motion = the drive's, no chatter;
+the sign changes of w are not asserted equal to the drive's reversals in Co-Simulation: a body
+that stops while the drive is still inside +-T_s rings on the presliding spring, see
+scene_host.reversal_scene; under ME with a 2 T_s sine they are, and are asserted),
 dither below breakaway (no walk).
 
 The presliding cases need the FMU's zero_velocity.model (presliding = 1) and fail with a
