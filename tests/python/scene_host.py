@@ -100,6 +100,17 @@ class _Fmu:
         self.vr_angle, self.vr_omega, self.vr_load, self.vr_torque = (
             self.require(n).valueReference for n in ("angle", "angular_velocity", "load", "torque"))
         self.instance = instance
+        self.provides_directional = self._provides_directional(kind)
+
+    def _provides_directional(self, kind):
+        """The interface's providesDirectionalDerivative (FMI 2) / providesDirectionalDerivatives
+        (FMI 3) read from modelDescription.xml: fmpy 0.3.32 parses only the FMI 2 spelling,
+        so its attribute is always False for an FMI 3 FMU."""
+        import xml.etree.ElementTree as ET
+        root = ET.parse(os.path.join(self.unzipped, "modelDescription.xml")).getroot()
+        element = root.find("CoSimulation" if kind == "cs" else "ModelExchange")
+        name = "providesDirectionalDerivatives" if self.fmi3 else "providesDirectionalDerivative"
+        return element is not None and element.get(name, "false") in ("true", "1")
 
     def require(self, name, why=""):
         v = self.vars.get(name)
@@ -144,9 +155,9 @@ class _Fmu:
         return (self.fmu.getFloat64 if self.fmi3 else self.fmu.getReal)(vrs)
 
     def directional(self, unknowns, knowns, seed):
-        if not getattr(self.iface, "providesDirectionalDerivative", False):
+        if not self.provides_directional:
             raise MissingInterface(f"{self.path.name} (FMI {self.md.fmiVersion}) does not provide directional "
-                                   "derivatives (providesDirectionalDerivative), which this host needs")
+                                   "derivatives (providesDirectionalDerivative(s) is not true), which this host needs")
         return self.fmu.getDirectionalDerivative(unknowns, knowns, seed)
 
     def close(self):
@@ -182,7 +193,7 @@ class CoSimJoint(_Fmu):
 
     @property
     def provides_partials(self):
-        return bool(getattr(self.iface, "providesDirectionalDerivative", False))
+        return self.provides_directional
 
     def set_inputs(self, theta, omega, load):
         self.set_reals(self._io, [theta, omega, load])
@@ -245,7 +256,7 @@ class MEJoint(_Fmu):
 
     @property
     def provides_partials(self):
-        return bool(getattr(self.iface, "providesDirectionalDerivative", False))
+        return self.provides_directional
 
     def _set(self, t, theta, omega, load, x):
         self.fmu.setTime(t)
