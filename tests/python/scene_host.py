@@ -458,15 +458,16 @@ def implicit(joint, J, drive, load, h, t_end, theta0=0.0, omega0=0.0, relineariz
 
 def model_exchange(joint, J, drive, load, t_end, rtol=1e-6, atol=None, jacobian=True, max_step=np.inf,
                    theta0=0.0, omega0=0.0, x0=None):
-    """SciPy BDF over [angle, w, x...] (see the module doc). atol: per state (default 1e-9 rad,
-    1e-9 rad/s, 1e-6 N.m)."""
+    """SciPy BDF over [angle, w, x...] (see the module doc). atol: per state (default 1e-10 rad,
+    1e-10 rad/s -- a decade under the sign-change dead band W_ZERO, so that the solver's noise
+    about a held w = 0 does not count as sign changes -- and 1e-6 N.m)."""
     from scipy.integrate import BDF
     P = _load_fn(load)
     nx = joint.n_states
     x0 = list(x0 if x0 is not None else getattr(joint, "x0", [0.0] * nx))
     y0 = np.array([theta0, omega0] + x0, float)
     if atol is None:
-        atol = np.array([1e-9, 1e-9] + [1e-6] * nx)
+        atol = np.array([1e-10, 1e-10] + [1e-6] * nx)
 
     def rhs(t, y):
         tq, dx = joint.evaluate(t, y[0], y[1], P(t), y[2:])
@@ -786,6 +787,52 @@ def dither_scene(joint, host, J, load, T_s, bias=0.3, amplitude=0.4, frequency=1
         f.append(f"walk {m['walk_deg']:.3g} deg over {periods - 1} periods >= 1e-3 deg")
     if m["displacement_deg"] >= 0.5:
         f.append(f"displacement {m['displacement_deg']:.3g} deg >= 0.5 deg")
+    if m["chatter"]:
+        f.append(f"chatter: {m['chatter']} sign changes of w within two steps of the previous")
+    m["failures"] = f
+    return run, m
+
+
+@dataclass
+class LoadProfile:
+    """A load (N) through cosine transitions between `levels` (N), each transition lasting
+    `ramp` s and each level held `dwell` s: levels[0] at t = 0, then levels[1], ..."""
+    levels: tuple
+    ramp: float = 5.0
+    dwell: float = 5.0
+
+    def __call__(self, t):
+        seg = self.ramp + self.dwell
+        i = int(t // seg)
+        if i + 1 >= len(self.levels):
+            return float(self.levels[-1])
+        a, b = self.levels[i], self.levels[i + 1]
+        x = min((t - i * seg) / self.ramp, 1.0)
+        return a + (b - a) * 0.5 * (1 - math.cos(math.pi * x))
+
+    def end(self):
+        return (len(self.levels) - 1) * (self.ramp + self.dwell)
+
+
+def load_change_scene(joint, host, J, profile, drive_level, t_settle=2.0):
+    """A constant drive `drive_level` (N.m) held while the load follows `profile`
+    (LoadProfile), every level's breakaway torque above the drive / 0.95: the joint must
+    neither release nor jerk. Metrics: displacement, |w| peak after t_settle, and the drift
+    over the run after t_settle (trend)."""
+    t_end = profile.end()
+    run = host.run(joint, J, Hold(drive_level), profile, t_end)
+    late = run.t >= t_settle
+    m = {"displacement_deg": deg(displacement(run)),
+         "late_peak_omega": float(np.max(np.abs(run.omega[late]))),
+         "drift_deg": deg(drift_after_settling(run, t_settle)),
+         "chatter": chatter(run.omega)}
+    f = []
+    if m["displacement_deg"] >= deg(DISPLACEMENT_TOL):
+        f.append(f"displacement {m['displacement_deg']:.3g} deg >= 0.5 deg")
+    if m["drift_deg"] >= deg(DISPLACEMENT_TOL) / 10:
+        f.append(f"drift {m['drift_deg']:.3g} deg >= 0.05 deg while the load changes")
+    if m["late_peak_omega"] >= 1e-2:
+        f.append(f"jerk: |w| reaches {m['late_peak_omega']:.3g} rad/s after {t_settle} s")
     if m["chatter"]:
         f.append(f"chatter: {m['chatter']} sign changes of w within two steps of the previous")
     m["failures"] = f

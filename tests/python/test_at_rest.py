@@ -12,7 +12,8 @@ reversals under a sine above breakaway (reversals of motion = the drive's, no ch
 the sign changes of w are not asserted equal to the drive's reversals in Co-Simulation: a body
 that stops while the drive is still inside +-T_s rings on the presliding spring, see
 scene_host.reversal_scene; under ME with a 2 T_s sine they are, and are asserted),
-dither below breakaway (no walk).
+dither below breakaway (no walk), a load changing while stuck (20 -> 60 -> 12 kN under
+0.5 T_s(20 kN): no release, no jerk; a drop to 5 kN: release).
 
 The presliding cases need the FMU's zero_velocity.model (presliding = 1) and fail with a
 message naming the missing variable on an FMU without it. The band cases show that the
@@ -195,6 +196,33 @@ def test_dither_below_breakaway_does_not_walk(path, host, J, kn, bias, amplitude
     assert_ok(m, f"dither ({bias:g} +- {amplitude:g}) T_s at {f:.3g} Hz, {host}, J = {J} kg m^2, {kn} kN")
 
 
+LOAD_CHANGES = [(20, (20, 60, 12, 40)), (50, (60, 20, 12, 60)), (5000, (20, 60, 12))]
+LC_PARAMS = [pytest.param(host.values[0], J, levels, id=f"{host.id}-J{J}-" + "-".join(map(str, levels)) + "kN")
+             for host in HOSTS for J, levels in LOAD_CHANGES if envelope_ok(host.values[0], J)]
+
+
+@pytest.mark.parametrize("path", FMUS)
+@pytest.mark.parametrize("host,J,levels", LC_PARAMS)
+def test_load_change_while_stuck_neither_releases_nor_jerks(path, host, J, levels):
+    """Drive 0.5 T_s(20 kN) held while the load moves between levels (kN) whose breakaway
+    torque stays above the drive / 0.95 (12 kN: 40.3 N.m against 33.6 N.m)."""
+    profile = sh.LoadProfile(tuple(kn * KN for kn in levels))
+    joint = presliding(path, levels[0] * KN)
+    drive = 0.5 * joint.static_torque(20 * KN)
+    _, m = run_scene(joint, sh.load_change_scene, host, J, profile, drive)
+    assert_ok(m, f"load {levels} kN under {drive:.4g} N.m, {host}, J = {J} kg m^2")
+
+
+@pytest.mark.parametrize("path", FMUS)
+@pytest.mark.parametrize("host", HOSTS)
+def test_load_drop_below_the_drive_releases(path, host):
+    """The same hold with the load dropping to 5 kN (T_s 16.8 N.m < 33.6 N.m): it slides."""
+    joint = presliding(path, 20 * KN)
+    drive = 0.5 * joint.static_torque(20 * KN)
+    run, m = run_scene(joint, sh.load_change_scene, host, 50, sh.LoadProfile((20 * KN, 5 * KN)), drive)
+    assert m["displacement_deg"] > 90 and run.omega[-1] > 1.0, m
+
+
 @pytest.mark.parametrize("path", FMUS)
 def test_reading_the_torque_before_or_after_do_step_agrees(path):
     """With the angle input driving the state, the torque read after setting the inputs
@@ -346,6 +374,9 @@ def test_reference_law_passes_the_scenes(host, J, kn):
 
 def test_reference_band_law_fails_the_scenes_the_same_way():
     T_s = pr.static_torque(20 * KN)
+    _, m = sh.load_change_scene(pr.BandReference(), sh.Host("explicit", 1e-3), 50,
+                                sh.LoadProfile((20 * KN, 60 * KN, 12 * KN, 40 * KN)), 0.5 * T_s)
+    assert m["drift_deg"] > 1.0, m
     _, m = sh.hold_scene(pr.BandReference(), sh.Host("explicit", 1e-3), 50, 20 * KN, T_s, t_end=100.0)
     assert m["drift_deg"] > 1.0, m
     _, m = sh.hold_scene(pr.BandReference(), sh.Host("explicit", 1e-2), 20, 60 * KN, 3 * T_s, t_end=20.0)
