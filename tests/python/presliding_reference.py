@@ -35,7 +35,8 @@ class PreslidingLaw:
     """The law's parameters and its exact increment: phi_s (rad, presliding angle at
     breakaway), beta (1, elastic limit as a fraction of T), t_d (s, damping time)."""
 
-    def __init__(self, presliding_angle=1.5e-3, elastic_limit=0.95, damping_time=0.01, mu_c=MU_C, radius=RADIUS):
+    def __init__(self, presliding_angle=1.5e-3, elastic_limit=0.95, damping_time=0.01, mu_c=MU_C, radius=RADIUS,
+                 damping_coefficient=None):
         for name, value in (("presliding_angle", presliding_angle), ("elastic_limit", elastic_limit),
                             ("damping_time", damping_time)):
             if not (value >= 0 and math.isfinite(value)):
@@ -46,6 +47,9 @@ class PreslidingLaw:
             raise ValueError(f"zero_velocity.elastic_limit = {elastic_limit!r} must be <= 1")
         self.phi_s, self.beta, self.t_d = presliding_angle, elastic_limit, damping_time
         self.mu_c, self.radius = mu_c, radius
+        # an alternative studied for the lead: a load-independent damping coefficient c0
+        # (N.m.s/rad) instead of c = k t_d (the damping torque is then c0 z', z' = (dtau/dD)/k w)
+        self.c0 = damping_coefficient
 
     def bound(self, load):
         """The sliding bound T (N.m) at load P (N)."""
@@ -87,7 +91,13 @@ class PreslidingLaw:
     def torque(self, tau, omega, T):
         """Output torque (N.m) at state tau, speed omega, bound T."""
         s = 1.0 if omega >= 0 else -1.0
-        return -(min(max(tau, -T), T) + self.t_d * self.slope(tau, s, T) * omega)
+        return -(min(max(tau, -T), T) + self.damping_time(T) * self.slope(tau, s, T) * omega)
+
+    def damping_time(self, T):
+        """c / k (s): t_d, or c0 / k with the load-independent coefficient."""
+        if self.c0 is None or T <= 0:
+            return self.t_d
+        return self.c0 * self.phi_s / T
 
 
 class ReferenceCoSim:
@@ -131,7 +141,7 @@ class ReferenceCoSim:
             math.copysign(1.0, d) if d != 0 else (-1.0 if self.tau > 0 else 1.0))
         sl = self.law.slope(self.tau, s, T)
         sw = 1.0 if self.omega >= 0 else -1.0
-        return -sl, -self.law.t_d * self.law.slope(self.tau, sw, T)
+        return -sl, -self.law.damping_time(T) * self.law.slope(self.tau, sw, T)
 
     def close(self):
         pass
@@ -152,7 +162,7 @@ class ReferenceModelExchange:
         tau = x[0]
         s = 1.0 if omega >= 0 else -1.0
         dtau = self.law.slope(tau, s, T) * omega
-        return -(min(max(tau, -T), T) + self.law.t_d * dtau), [dtau]
+        return -(min(max(tau, -T), T) + self.law.damping_time(T) * dtau), [dtau]
 
     def partials(self, t, theta, omega, load, x):
         """d torque/d omega, d torque/d x (list), d xdot/d omega (list), d xdot/d x (matrix)."""
@@ -166,7 +176,8 @@ class ReferenceModelExchange:
         k = T / self.law.phi_s if T > 0 else 0.0
         dd_tau = -k * abs(omega) / span if plastic else 0.0
         inside = 1.0 if abs(tau) < T else 0.0
-        return (-self.law.t_d * sl, [-(inside + self.law.t_d * dd_tau)], [sl], [[dd_tau]])
+        td = self.law.damping_time(T)
+        return (-td * sl, [-(inside + td * dd_tau)], [sl], [[dd_tau]])
 
     def completed_step(self):
         pass

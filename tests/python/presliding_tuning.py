@@ -3,7 +3,9 @@ host-inertia scenes over the envelope of issue 22 (explicit host J >= 20 kg m^2 
 h <= 10 ms, linearly implicit J >= 5 kg m^2 at 100 ms, loads 5 to 60 kN), run with the
 Python reference law (presliding_reference.py) in place of the FMU:
 
-    .venv/bin/python tests/python/presliding_tuning.py [phi_s beta t_d ...]
+    .venv/bin/python tests/python/presliding_tuning.py [--c0=N.m.s/rad] [phi_s beta t_d ...]
+
+(--c0: a load-independent damping coefficient instead of c = k t_d, an alternative studied.)
 
 Prints one line per parameter set: failures per scene and the worst metrics."""
 
@@ -42,7 +44,8 @@ def scenes(J, load, T_s, phi_s, h):
            ("hold-rise", sh.hold_scene, dict(t_end=100.0, rise=10.0)),
            ("ramp", sh.ramp_scene, {}),
            ("reversal", sh.reversal_scene, dict(amplitude=2.0, frequency=reversal_frequency(J), periods=2)),
-           ("reversal-biased", sh.reversal_scene, dict(amplitude=2.0, bias=0.4, frequency=reversal_frequency(J), periods=2))]
+           ("reversal-biased", sh.reversal_scene, dict(amplitude=2.0, bias=0.4, frequency=reversal_frequency(J), periods=2)),
+           ("reversal-slow-1.3", sh.reversal_scene, dict(amplitude=1.3, frequency=reversal_frequency(J) / 5, periods=2))]
     rise = 5 / fn
     for tag, f in (("slow", min(1.0, fn / 3)), ("ripple", 3 * fn)):
         if f * h <= 0.1:
@@ -51,14 +54,19 @@ def scenes(J, load, T_s, phi_s, h):
     return out
 
 
-def evaluate(phi_s, beta, t_d, verbose=False):
-    law = pr.PreslidingLaw(phi_s, beta, t_d)
+def evaluate(phi_s, beta, t_d, c0=None):
+    law = pr.PreslidingLaw(phi_s, beta, t_d, damping_coefficient=c0)
     fails, worst, failed = {}, {}, []
     for host, inertias in hosts():
         for J, load in itertools.product(inertias, LOADS):
             T_s = pr.static_torque(load)
-            for name, fn, kw in scenes(J, load, T_s, phi_s, host.h):
-                _, m = fn(pr.ReferenceCoSim(law), host, J, load, T_s, **kw)
+            cases = [(name, lambda joint, fn=fn, kw=kw: fn(joint, host, J, load, T_s, **kw))
+                     for name, fn, kw in scenes(J, load, T_s, phi_s, host.h)]
+            if load == LOADS[1]:
+                cases.append(("load-change", lambda joint: sh.load_change_scene(
+                    joint, host, J, sh.LoadProfile((20e3, 60e3, 12e3, 40e3)), 0.5 * T_s)))
+            for name, case in cases:
+                _, m = case(pr.ReferenceCoSim(law))
                 for key in ("drift_deg", "oscillation_deg", "displacement_deg", "motion_before_deg", "peak_error",
                             "walk_deg"):
                     if key in m:
@@ -70,12 +78,16 @@ def evaluate(phi_s, beta, t_d, verbose=False):
 
 
 def main(argv):
+    c0 = None
+    if argv and argv[0].startswith("--c0="):  # load-independent damping coefficient (N.m.s/rad)
+        c0, argv = float(argv[0][5:]), argv[1:]
     sets = [tuple(float(x) for x in argv[i:i + 3]) for i in range(0, len(argv), 3)] or [(1.5e-3, 0.95, 0.01)]
     for phi_s, beta, t_d in sets:
         t0 = time.time()
-        fails, worst, failed = evaluate(phi_s, beta, t_d)
+        fails, worst, failed = evaluate(phi_s, beta, t_d, c0)
         w = ", ".join(f"{n}.{k} {v:.3g}" for (n, k), v in sorted(worst.items()))
-        print(f"phi_s {phi_s:g} rad, beta {beta:g}, t_d {t_d:g} s: failures {fails or 'none'} "
+        print(f"phi_s {phi_s:g} rad, beta {beta:g}, " + (f"c0 {c0:g} N.m.s/rad" if c0 else f"t_d {t_d:g} s")
+              + f": failures {fails or 'none'} "
               f"({time.time() - t0:.0f} s)\n  worst: {w}")
         for line in failed:
             print("  FAIL", line)
