@@ -112,7 +112,8 @@ impl PreslidingJoint {
 /// over (angle, angular velocity, load). Its ω and P partials are exact (through the bound);
 /// its angle partial is the law's tangent dτ/dΔ = k·g at the held torque in the direction of
 /// motion: that of `omega`, else of `delta`, else (at rest, nothing moving) the unloading
-/// direction. This is the derivative a linearly implicit host needs for its next increment,
+/// direction (from a state beyond a bound that fell, the bound: the output is clamped there). This
+/// is the derivative a linearly implicit host needs for its next increment,
 /// which moves the way ω does: the law is one-sided (a sliding joint is stiff against a
 /// reversal, not along its motion), and for an increment in the direction of ω it is the exact
 /// partial derivative of the held torque.
@@ -127,6 +128,12 @@ pub fn tangent_held(law: &Presliding, tau: f64, delta: f64, omega: f64, bound: J
     } else {
         1.0
     };
+    if held.v.abs() > bound.v && dir * held.v < 0.0 {
+        // Beyond the bound (it fell with a change of ω or P since the state was committed):
+        // the output is the bound itself, and against it the joint unloads elastically.
+        let s = held.v.signum();
+        held = Jet::with(s * bound.v, [0.0, s * bound.d[1], s * bound.d[2]]);
+    }
     held.d[0] = (law.stiffness(Jet::c(bound.v)) * law.fraction(Jet::c(held.v), dir, Jet::c(bound.v))).v.max(0.0);
     held
 }

@@ -338,4 +338,10 @@ fn the_angle_partial_is_the_stiffness_against_the_motion_being_made() {
     assert!((j.torque_partials(0.0, 0.0, bound).d[0] + k).abs() < 1e-9 * k);
     let fresh = PreslidingJoint::new(l, 0.0);
     assert!((fresh.torque_partials(0.0, 0.0, bound).d[0] + k).abs() < 1e-9 * k);
+    // Committed beyond a bound that has since fallen (faster sliding, lower T): the output is
+    // the bound; a reversal unloads elastically from it.
+    let above = PreslidingJoint::at_state(l, 1.02 * t, 0.0);
+    let j = above.torque_partials(1e-4, -0.4, bound);
+    assert_eq!(j.v, above.torque_at(1e-4, -0.4, t));
+    assert!((j.d[0] + k).abs() < 1e-9 * k, "{}", j.d[0]);
 }
