@@ -1,7 +1,8 @@
-//! The claims table in the project README is the one `pinjoint figures` computes: a full run
-//! (the README quotes the full run's numbers), then the table between the markers is compared
-//! line by line with the README's copy. Regenerate with
-//! `cargo run --release -- figures --output out/figures` and copy the table when this fails.
+//! The claims table in `docs/paper-comparison.md` is the one `pinjoint figures` computes: a
+//! full run (the page quotes the full run's numbers), then the table between the markers is
+//! compared line by line with the page's copy. Regenerate with
+//! `cargo run --release -- figures --output out/figures` and copy the table from
+//! `out/figures/README.md` when this fails.
 
 use std::process::Command;
 
@@ -15,13 +16,14 @@ fn table(text: &str, whence: &str) -> String {
 }
 
 #[test]
-fn readme_claims_table_is_the_one_the_code_computes() {
+fn paper_comparison_claims_table_is_the_one_the_code_computes() {
     let tmp = tempfile::tempdir().unwrap();
     let dir = tmp.path().join("figs");
     let out = Command::new(env!("CARGO_BIN_EXE_pinjoint")).args(["figures", "--output", dir.to_str().unwrap()]).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let generated = table(&std::fs::read_to_string(dir.join("README.md")).unwrap(), "figures README.md");
-    let readme = table(&std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap(), "project README.md");
+    let page = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/paper-comparison.md");
+    let readme = table(&std::fs::read_to_string(page).unwrap_or_else(|e| panic!("{page}: {e}")), "docs/paper-comparison.md");
     for (i, (g, r)) in generated.lines().zip(readme.lines()).enumerate() {
         assert_eq!(g, r, "line {i} of the claims table differs: regenerate it with `pinjoint figures`");
     }
