@@ -232,6 +232,46 @@ def check_quoted_numbers(root, files):
     return problems
 
 
+FMU_VARIABLE = re.compile(r'<ScalarVariable\s+name="([^"]+)"[^>]*causality="(?:input|output)"')
+
+
+def section(text, heading):
+    """The text of the `## heading` section of a page (up to the next `## `)."""
+    start = text.find("\n## " + heading)
+    if start < 0:
+        return None
+    end = text.find("\n## ", start + 4)
+    return text[start:] if end < 0 else text[start:end]
+
+
+def check_fmu_page(root):
+    """docs/fmu.md names every input and output of both FMUs (from their committed
+    modelDescription.xml, which a test keeps equal to the generated one) and their state
+    format versions (from the variable tables)."""
+    page = root / "docs/fmu.md"
+    if not page.exists():
+        return [f"{page.relative_to(root)} is missing"]
+    text = page.read_text(encoding="utf-8")
+    problems = []
+    for model, heading, xml, table in [
+        ("PinJoint", "PinJoint: variables", "modelDescription/PinJoint.xml", "crates/fmu/src/pin_joint/variables.rs"),
+        ("PinJointRig", "The rig as an FMU", "modelDescription/PinJointRig.xml", "crates/fmu/src/pin_joint_rig/variables.rs"),
+    ]:
+        part = section(text, heading)
+        if part is None:
+            problems.append(f"docs/fmu.md: no section '## {heading}'")
+            continue
+        for name in FMU_VARIABLE.findall((root / xml).read_text(encoding="utf-8")):
+            if f"`{name}`" not in part:
+                problems.append(f"docs/fmu.md, '## {heading}': {model}'s variable `{name}` ({xml}) is not described")
+        version = re.search(r"pub const STATE_VERSION: u8 = (\d+);", (root / table).read_text(encoding="utf-8"))
+        if version is None:
+            problems.append(f"{table}: no STATE_VERSION")
+        elif f"{model} {version.group(1)}" not in (section(text, "State format") or ""):
+            problems.append(f"docs/fmu.md, '## State format': {model}'s state version is {version.group(1)} ({table})")
+    return problems
+
+
 def check_api_docs(root):
     """Every documented target of the workspace has its front page in target/doc."""
     meta = json.loads(subprocess.check_output(["cargo", "metadata", "--no-deps", "--format-version", "1"], cwd=root))
@@ -280,7 +320,7 @@ def main(argv):
         problems = check_api_docs(ROOT)
     else:
         files = pages(ROOT)
-        problems = check_links(ROOT, files) + check_quoted_numbers(ROOT, files)
+        problems = check_links(ROOT, files) + check_quoted_numbers(ROOT, files) + check_fmu_page(ROOT)
         blocks, marker_problems = runnable_blocks(ROOT, files)
         problems += marker_problems
         if "--run" in argv:

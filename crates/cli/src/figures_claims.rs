@@ -9,7 +9,7 @@
 use super::common::{readable, RAD_S_PER_RPM};
 use super::cycle_run::stroke_average;
 use super::error::Result;
-use super::figures_index::{nm, pct, sig};
+use super::numbers::{nm, pct, sig};
 use super::figures_rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
 use pinjoint::{Joint, OperatingPoint, Params};

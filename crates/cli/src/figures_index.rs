@@ -4,6 +4,7 @@
 
 use super::common::{lin_space, log_space, readable, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
 use super::figures_claims::{self, speed_at, Claim};
+use super::numbers::{nm, pct, sig};
 use super::error::Result;
 use super::figures_plots::PAPER_LOW_SPEED_MU;
 use super::figures_plots::CoreCurves;
@@ -38,25 +39,8 @@ pub struct RunInfo {
     pub atol: f64,
 }
 
-pub(super) fn pct(x: f64) -> String {
-    format!("{} %", readable((x * 1000.0).round() / 10.0))
-}
-
-/// `x` rounded to `n` significant digits, for reading.
-pub(super) fn sig(x: f64, n: i32) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return readable(x);
-    }
-    let scale = 10f64.powi(n - 1 - x.abs().log10().floor() as i32);
-    readable((x * scale).round() / scale)
-}
-
 fn r4(x: f64) -> String {
     sig(x, 4)
-}
-
-pub(super) fn nm(x: f64) -> String {
-    format!("{} N·m", readable((x * 10.0).round() / 10.0))
 }
 
 fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
