@@ -367,7 +367,7 @@ found only in a secondary summary of Lugt (2013, eq. 9.73; γ about 3 for circul
 γs = 2.8 is from memory and may be low for this line contact, and only the relation's limits and its γs sensitivity are tested. A thin layer keeps the joint boundary-dominated to higher speeds, as \
 the paper's experiments suggest, but a constant layer makes the lightest load the most boundary, the opposite of the \
 measured load trend; the per-layer numbers (μ = 0.11 crossings, half-load speed, μ at 800 rpm, the 1 Hz dip) are in \
-starvation_summary.csv and the README's extension section."
+starvation_summary.csv and the project's docs/extensions.md."
             .into(),
     }
 }
