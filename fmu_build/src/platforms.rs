@@ -158,7 +158,8 @@ mod tests {
     /// An unknown name is refused, naming it and every known platform.
     #[test]
     fn unknown_platform_lists_the_known_ones() {
-        let e = select("x86_64-linux,mars").err().expect("mars is no platform").to_string();
+        let Err(e) = select("x86_64-linux,mars") else { panic!("mars is no platform") };
+        let e = e.to_string();
         assert_eq!(
             e,
             "--platforms: unknown platform 'mars' (known: all, host, x86_64-linux, aarch64-linux, x86_64-windows, \

@@ -225,6 +225,8 @@ def check_quoted_numbers(root, files):
                 continue
             if source is None:
                 continue
+            if n < len(lines) and re.match(r"^\|[-:| ]+\|\s*$", lines[n]):
+                continue  # a table's header row
             for m in NUMBER.finditer(strip_inline_code(line)):
                 if float(m.group(0).replace("−", "-")) not in have:
                     problems.append(
@@ -275,12 +277,17 @@ def check_fmu_page(root):
 def check_api_docs(root):
     """Every documented target of the workspace has its front page in target/doc."""
     meta = json.loads(subprocess.check_output(["cargo", "metadata", "--no-deps", "--format-version", "1"], cwd=root))
-    problems = []
+    problems, owners = [], {}
     for pkg in meta["packages"]:
         for t in pkg["targets"]:
             if not t.get("doc", True) or not {"lib", "rlib", "cdylib", "bin"} & set(t["kind"]):
                 continue
-            page = root / "target/doc" / t["name"].replace("-", "_") / "index.html"
+            name = t["name"].replace("-", "_")
+            if name in owners:  # cargo only warns, and one page overwrites the other
+                problems.append(f"{pkg['name']}: target {t['name']} documents into target/doc/{name}/, as {owners[name]} "
+                                "does: set `doc = false` on one of them")
+            owners[name] = f"{pkg['name']}'s {t['name']}"
+            page = root / "target/doc" / name / "index.html"
             if not page.exists():
                 problems.append(f"{pkg['name']}: no API front page {page.relative_to(root)}")
     return problems
