@@ -211,7 +211,7 @@ def check_quoted_numbers(root, files):
         lines = page.read_text(encoding="utf-8").split("\n")
         source, have = None, set()
         for n, line in enumerate(lines, 1):
-            m = QUOTE_BEGIN.search(line)
+            m = QUOTE_BEGIN.search(strip_inline_code(line))
             if m:
                 source = (page.parent / m.group(1)).resolve()
                 if not source.exists():
@@ -220,7 +220,7 @@ def check_quoted_numbers(root, files):
                 else:
                     have = numbers(source.read_text(encoding="utf-8"))
                 continue
-            if QUOTE_END in line:
+            if QUOTE_END in strip_inline_code(line):
                 source = None
                 continue
             if source is None:
