@@ -13,8 +13,9 @@ Checks:
 - every fenced block preceded by the line `<!-- runnable -->` runs on the built project and
   exits 0 (`--run`): `sh`/`bash` blocks with bash in a scratch directory, with
   `target/release` and the package's virtualenv first on the PATH and `target` linked into
-  the directory; `python` blocks with the package's virtualenv (`.venv-python`) when they
-  import `pinjoint`, with the FMU harness's (`.venv`) when they import `fmpy`;
+  the directory; `python` blocks with the package's virtualenv (`.venv-python` or
+  $PINJOINT_PY_VENV, as python/run_tests.sh) when they import `pinjoint`, with the FMU
+  harness's (`.venv` or $PINJOINT_VENV, as tests/python/run.sh) when they import `fmpy`;
 - every number in a block between `<!-- numbers from FILE: ... -->` and
   `<!-- end of numbers from FILE -->` is a number that FILE (a generated file, e.g.
   BENCHMARKS.md) contains.
@@ -164,18 +165,25 @@ def runnable_blocks(root, files):
     return out, problems
 
 
+def package_python(root):
+    """The package's virtualenv (python/run_tests.sh: .venv-python, or $PINJOINT_PY_VENV)."""
+    venv = os.environ.get("PINJOINT_PY_VENV", str(root / ".venv-python"))
+    return os.environ.get("PINJOINT_DOCS_PACKAGE_PYTHON", str(Path(venv) / "bin/python"))
+
+
 def python_for(code, root):
     if re.search(r"^\s*(import|from)\s+pinjoint\b|import .*\bpinjoint\b", code, re.M):
-        return os.environ.get("PINJOINT_DOCS_PACKAGE_PYTHON", str(root / ".venv-python/bin/python"))
+        return package_python(root)
     if re.search(r"^\s*(import|from)\s+fmpy\b", code, re.M):
-        return os.environ.get("PINJOINT_DOCS_FMPY_PYTHON", str(root / ".venv/bin/python"))
+        venv = os.environ.get("PINJOINT_VENV", str(root / ".venv"))  # tests/python/run.sh's
+        return os.environ.get("PINJOINT_DOCS_FMPY_PYTHON", str(Path(venv) / "bin/python"))
     return sys.executable
 
 
 def run_blocks(root, blocks):
     problems = []
     env = dict(os.environ)
-    package_bin = Path(os.environ.get("PINJOINT_DOCS_PACKAGE_PYTHON", root / ".venv-python/bin/python")).parent
+    package_bin = Path(package_python(root)).parent
     env["PATH"] = os.pathsep.join([str(root / "target/release"), str(package_bin), env.get("PATH", "")])
     for page, line, lang, code in blocks:
         where = f"{page.relative_to(root)}:{line} ({lang})"
