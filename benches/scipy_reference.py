@@ -1,6 +1,6 @@
 """The pin-joint model written independently with NumPy/SciPy: the baseline of `pinjoint bench`.
 
-It follows the paper's equations and MODEL_NOTES (errata included) directly, not the Rust
+It follows the paper's equations and docs/model.md (errata included) directly, not the Rust
 code's logarithmic forms:
   Hertz (eq. 6), E' with the plus sign (erratum 1), R' = R R_b / (R_b - R);
   Greenwood-Williamson F_3/2(t) by quadrature (scipy.integrate.quad) of its definition;
@@ -18,7 +18,7 @@ reads a `pinjoint sweep` output (load, speed and the library's results), evaluat
 first N rows here, and prints one JSON object: seconds per point, and the largest relative
 difference from the library in mu, torque, h_c and the shares.
   python benches/scipy_reference.py --self-test
-checks F_3/2 and eq. 12 against the MODEL_NOTES check values and the parabolic-cylinder
+checks F_3/2 and eq. 12 against the check values of docs/model.md and the parabolic-cylinder
 closed form.
 """
 
@@ -51,7 +51,7 @@ def ln_f32(t):
 
 
 def f32_closed_form(t):
-    """Gamma(5/2)/sqrt(2 pi) exp(-t^2/4) D_{-5/2}(t) (MODEL_NOTES)."""
+    """Gamma(5/2)/sqrt(2 pi) exp(-t^2/4) D_{-5/2}(t) (docs/model.md)."""
     return special.gamma(2.5) / math.sqrt(2 * math.pi) * math.exp(-t * t / 4) * special.pbdv(-2.5, t)[0]
 
 

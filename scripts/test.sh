@@ -29,6 +29,8 @@ cargo test --workspace --release --no-fail-fast
 step "clippy, rustdoc"
 cargo clippy --workspace --all-targets --release -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
+python3 tests/docs/check_docs.py --api-docs      # every crate's API front page is there
+python3 tests/module_graph.py                    # no import cycle inside a crate; roots list modules in dependency order
 
 # --- the Python package (python/): pinned venv, `pip install ./python`, pytest (incl. a Dask LocalCluster)
 step "python package"
@@ -46,7 +48,12 @@ bash tests/platforms/run.sh
 step "fmpy harness"
 PINJOINT_KEEP_FMUS=1 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
 
-# --- the SciPy reference of `pinjoint bench` against the MODEL_NOTES check values, and
+# --- the docs: every relative link and anchor of README.md and docs/*.md resolves, every
+# example marked <!-- runnable --> runs on what the steps above built, quoted numbers match
+step "docs"
+python3 tests/docs/check_docs.py --run
+
+# --- the SciPy reference of `pinjoint bench` against the check values of docs/model.md, and
 # against the library on 50 sweep rows (agreement to 1e-9; measured 2e-14)
 .venv/bin/python benches/scipy_reference.py --self-test
 printf 'load,speed\n' > target/scipy_check.csv
@@ -61,7 +68,7 @@ sys.exit(0 if worst < 1e-9 else 1)
 PY
 
 # --- Reference-FMUs' fmusim and the FMU Compliance Checker on the FMUs above: neither is on a
-# package registry, so this runs only when FMUSIM / FMUCHECK name their binaries (README,
+# package registry, so this runs only when FMUSIM / FMUCHECK name their binaries (docs/fmu.md,
 # "The FMU Compliance Checker and Reference-FMUs' fmusim"); otherwise it says it skipped
 step "external checkers"
 PINJOINT_KEEP_FMUS=1 bash tests/checkers/run_external.sh

@@ -13,7 +13,7 @@ pub fn reduced_radius(g: &Geometry) -> f64 {
 
 /// Effective modulus E' from `1/E' = ½[(1−ν²)/E + (1−ν_b²)/E_b]`, Pa.
 ///
-/// Erratum 1 (MODEL_NOTES): the paper prints a minus sign between the two terms; only
+/// Erratum 1 (docs/model.md): the paper prints a minus sign between the two terms; only
 /// the plus sign reproduces its own mean pressures (13 MPa at 20 kN).
 pub fn effective_modulus(m: &Materials) -> f64 {
     2.0 / ((1.0 - m.pin_poisson_ratio.powi(2)) / m.pin_elastic_modulus
@@ -75,7 +75,7 @@ mod tests {
         let h = hertz(20e3, r, e, b);
         assert!((h.half_width - 12.74e-3).abs() < 0.01e-3);
         assert!((h.mean_pressure / 1e6 - 13.0).abs() < 0.3);
-        // 7–23 MPa over 5–60 kN (MODEL_NOTES: 6.61 and 22.89 MPa).
+        // 7–23 MPa over 5–60 kN (docs/model.md: 6.61 and 22.89 MPa).
         assert!((hertz(5e3, r, e, b).mean_pressure / 1e6 - 6.61).abs() < 0.01);
         assert!((hertz(60e3, r, e, b).mean_pressure / 1e6 - 22.89).abs() < 0.01);
     }

@@ -5,7 +5,7 @@
 //! dozens of decades, and γ1 goes to infinity.
 //!
 //! Dimensionless groups (eq. 12): `W = P_T/(E'R'B)`, `U_Σ = η0 u/(E'R')`, `G = α E'`,
-//! `M = W U_Σ^{-1/2}`, `L = G U_Σ^{1/4}`, `H_C = (h_c/R') U_Σ^{-1/2}`. Per MODEL_NOTES,
+//! `M = W U_Σ^{-1/2}`, `L = G U_Σ^{1/4}`, `H_C = (h_c/R') U_Σ^{-1/2}`. Per docs/model.md (errata 2 and 3),
 //! `u` is Moes' sum velocity, which for a fixed bush equals the sliding speed |ω|R.
 
 /// Numerically stable ln(eᵃ + eᵇ), exact for infinite arguments.
@@ -208,7 +208,7 @@ pub fn eq13_closed_form(m: f64, l: f64, gamma1: f64, hei_exp: f64, s_exp: f64) -
 mod tests {
     use super::*;
 
-    /// MODEL_NOTES check values of eq. 12: (M, L, H, s).
+    /// The check values of eq. 12 in docs/model.md: (M, L, H, s).
     const CHECK: [(f64, f64, f64, f64); 4] = [
         (1.0, 1.0, 4.05598902635954, 1.678780734472748),
         (10.0, 10.0, 5.464316870977172, 1.4000260648115448),

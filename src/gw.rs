@@ -15,7 +15,7 @@
 //! - t < T_LO: `F(t) ~ |t|^{3/2} Σ_k C(3/2, 2k)·(2k−1)!!·t^{−2k}` (moments of the
 //!   normal distribution; the neglected tail is below e^{−t²/2} ≈ 1e−22).
 //!
-//! The polynomial fits of the literature are poor past t ≈ 2.5 (MODEL_NOTES) and are
+//! The polynomial fits of the literature are poor past t ≈ 2.5 (docs/model.md) and are
 //! not used. Accuracy of the fast path against the reference: see the tests (≤ 2e-14
 //! relative in F over [−12, 40]).
 
@@ -237,7 +237,7 @@ pub fn inverse_ln_f32(target: f64) -> f64 {
 mod tests {
     use super::*;
 
-    /// MODEL_NOTES check values, computed independently from the parabolic-cylinder closed form.
+    /// The check values of docs/model.md, computed independently from the parabolic-cylinder closed form.
     const CHECK: [(f64, f64); 7] = [
         (-3.0, 5.418377276511698),
         (0.0, 0.4300199936622599),

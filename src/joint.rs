@@ -105,7 +105,7 @@ pub struct OperatingPoint {
     pub torque: f64,
     /// h_c, central film thickness, m.
     pub film_thickness: f64,
-    /// λ = h_c/√(σ² + σ_b²), eq. 21 with the central film (MODEL_NOTES).
+    /// λ = h_c/√(σ² + σ_b²), eq. 21 with the central film (docs/model.md, conventions).
     pub lambda_ratio: f64,
     /// 1/γ1.
     pub fluid_load_fraction: f64,
@@ -457,7 +457,7 @@ impl Joint {
         };
         let ls = solve_starved_with(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved, sensitivities);
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
-        // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (MODEL_NOTES), whatever η.
+        // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (docs/model.md, limits), whatever η.
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
         let mu_fluid = if u > 0.0 {
             let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ls.ln_film_thickness;

@@ -1,7 +1,9 @@
 //! # pinjoint
 //!
 //! Frictional torque of a grease-lubricated aircraft landing-gear pin joint, after
-//! the mixed-lubrication model of the paper (`shared/paper/pin-joint-paper.md`):
+//! the mixed-lubrication model of the paper *Model and Experiments to Determine Lubricant Film
+//! Formation and Frictional Torque in Aircraft Landing Gear Pin Joints* (the equations, errata
+//! and check values are in the repository's `docs/model.md`):
 //! Greenwood–Williamson asperity contact, Moes central film thickness scaled by
 //! the load-sharing factors γ1/γ2, Roelands viscosity and Bair–Winer limiting shear.
 //!
@@ -21,23 +23,27 @@
 //! assert!(op.friction_coefficient <= 0.12 && op.friction_coefficient > 0.11);
 //! ```
 
-pub mod asperity;
-pub mod contact;
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+// Numerical helpers and the parameters (the starved-inlet relation's parameters are a section):
 pub mod fast_math;
-pub mod fidelity;
-pub mod film;
-pub mod gw;
-pub mod joint;
-pub mod min_film;
-pub mod mixed;
 pub mod newton;
-pub mod paper;
+pub mod starvation;
 pub mod params;
+// The paper's equations:
+pub mod gw;
+pub mod contact;
+pub mod viscosity;
+pub mod film;
+pub mod min_film;
+pub mod asperity;
+pub mod mixed;
+pub mod solve_start;
+pub mod joint;
+// What the front ends use:
+pub mod paper;
+pub mod fidelity;
 pub mod record;
 pub mod rig;
-pub mod solve_start;
-pub mod starvation;
-pub mod viscosity;
 pub mod zero_velocity;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).

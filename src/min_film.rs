@@ -1,5 +1,5 @@
 //! Minimum film thickness h_min (eq. 21 names it): an extension; the paper gives no h_min
-//! relation and its model's unknown is the central film h_c (MODEL_NOTES).
+//! relation and its model's unknown is the central film h_c (docs/model.md, conventions).
 //!
 //! Relation: Pan & Hamrock (1989), "Simple formulas for performance parameters used in
 //! elastohydrodynamically lubricated line contacts", ASME J. Tribol. 111, 246–251, fitted to

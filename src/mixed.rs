@@ -94,7 +94,7 @@ pub fn y_tol(y: f64) -> f64 {
 }
 
 /// Solve eqs. 9, 13, 19. `film = None` means zero speed: then 1/γ1 = 0 exactly, 1/γ2 = 1,
-/// and h_c comes from eq. 19 alone (the limit of the moving case, MODEL_NOTES).
+/// and h_c comes from eq. 19 alone (the limit of the moving case, docs/model.md).
 /// `guess` is the logit of a nearby solution, if any.
 pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>) -> LoadSharing {
     solve_starved(film, asp, s, guess, None)

@@ -59,7 +59,7 @@ fn colder_means_more_viscous_and_lower_mu_at_mixed_speeds_hotter_the_opposite() 
 
 #[test]
 fn cold_soak_and_hot_apron_viscosities() {
-    // −55 °C and +70 °C with the defaults: the numbers the README and FMU pages quote.
+    // −55 °C and +70 °C with the defaults: the numbers docs/extensions.md and the FMU pages quote.
     let (c, h) = (at(218.15).lubricant().viscosity, at(343.15).lubricant().viscosity);
     assert!((c / 12.25 - 1.0).abs() < 0.01, "{c}");
     assert!((h / 2.59e-3 - 1.0).abs() < 0.01, "{h}");

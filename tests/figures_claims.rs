@@ -1,7 +1,8 @@
-//! The claims table in the project README is the one `pinjoint figures` computes: a full run
-//! (the README quotes the full run's numbers), then the table between the markers is compared
-//! line by line with the README's copy. Regenerate with
-//! `cargo run --release -- figures --output out/figures` and copy the table when this fails.
+//! The claims table in `docs/paper-comparison.md` is the one `pinjoint figures` computes: a
+//! full run (the page quotes the full run's numbers), then the table between the markers is
+//! compared line by line with the page's copy. Regenerate with
+//! `cargo run --release -- figures --output out/figures` and copy the table from
+//! `out/figures/README.md` when this fails.
 
 use std::process::Command;
 
@@ -14,14 +15,65 @@ fn table(text: &str, whence: &str) -> String {
     text[b..e].to_string()
 }
 
+/// `quoted` (a number as the page prints it, or "never …") is `value` rounded to the decimals shown.
+fn quotes(quoted: &str, value: Option<f64>, scale: f64) -> bool {
+    let q = quoted.trim();
+    if q.starts_with("never") {
+        return value.is_none();
+    }
+    let num: String = q.chars().take_while(|c| c.is_ascii_digit() || *c == '.').collect();
+    let decimals = num.split_once('.').map_or(0, |(_, d)| d.len());
+    let (Ok(x), Some(v)) = (num.parse::<f64>(), value) else { return false };
+    (v * scale - x).abs() <= 0.5 * 10f64.powi(-i32::try_from(decimals).unwrap()) * (1.0 + 1e-9)
+}
+
+/// The starved-inlet table of docs/extensions.md quotes this run's `starvation_summary.csv`.
+fn check_starvation_table(dir: &std::path::Path) {
+    let csv = std::fs::read_to_string(dir.join("starvation_summary.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let value = |layer: &str, load: f64, name: &str| -> Option<f64> {
+        let r = rows.iter().find(|r| r[0] == layer && r[col("load")].parse::<f64>().unwrap() == load).unwrap_or_else(|| panic!("no row {layer} {load}"));
+        r[col(name)].parse().ok()
+    };
+    let page = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/extensions.md");
+    let text = std::fs::read_to_string(page).unwrap();
+    let b = text.find("<!-- starvation table:").expect("docs/extensions.md: no starvation table start marker");
+    let e = text[b..].find("<!-- end of starvation table -->").expect("docs/extensions.md: no starvation table end marker") + b;
+    let mut checked = 0;
+    for line in text[b..e].lines().filter(|l| l.starts_with("| ") && !l.starts_with("| h_oil")) {
+        let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
+        let layer = match cells[0] {
+            "flooded" => "flooded",
+            "10 µm" => "1e-5",
+            "4 µm" => "4e-6",
+            "3.4 µm" => "3.4e-6",
+            other => panic!("docs/extensions.md: unknown layer {other}"),
+        };
+        let crossings: Vec<&str> = cells[1].trim_end_matches("rpm").split('/').collect();
+        assert_eq!(crossings.len(), 3, "{line}");
+        for (q, load) in crossings.iter().zip([5e3, 20e3, 60e3]) {
+            assert!(quotes(q, value(layer, load, "mu_0.11_crossing_rpm"), 1.0), "{layer}, {load} N: μ = 0.11 crossing quoted {q}, computed {:?}", value(layer, load, "mu_0.11_crossing_rpm"));
+        }
+        for (q, name, scale) in [(cells[2], "half_asperity_share_rpm", 1.0), (cells[3], "mu_800rpm", 1.0), (cells[4], "dip_1Hz", 100.0)] {
+            assert!(quotes(q, value(layer, 20e3, name), scale), "{layer}, 20 kN: {name} quoted {q}, computed {:?}", value(layer, 20e3, name));
+        }
+        checked += 1;
+    }
+    assert_eq!(checked, 4, "the starvation table has 4 rows");
+}
+
 #[test]
-fn readme_claims_table_is_the_one_the_code_computes() {
+fn paper_comparison_claims_table_is_the_one_the_code_computes() {
     let tmp = tempfile::tempdir().unwrap();
     let dir = tmp.path().join("figs");
     let out = Command::new(env!("CARGO_BIN_EXE_pinjoint")).args(["figures", "--output", dir.to_str().unwrap()]).output().unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let generated = table(&std::fs::read_to_string(dir.join("README.md")).unwrap(), "figures README.md");
-    let readme = table(&std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap(), "project README.md");
+    let page = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/paper-comparison.md");
+    let readme = table(&std::fs::read_to_string(page).unwrap_or_else(|e| panic!("{page}: {e}")), "docs/paper-comparison.md");
     for (i, (g, r)) in generated.lines().zip(readme.lines()).enumerate() {
         assert_eq!(g, r, "line {i} of the claims table differs: regenerate it with `pinjoint figures`");
     }
@@ -31,6 +83,13 @@ fn readme_claims_table_is_the_one_the_code_computes() {
     let rows = generated.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| #")).count();
     assert!(rows >= 25, "{rows} claims");
     assert_eq!(html.matches("<tr><td>").count(), rows);
+    check_starvation_table(&dir);
+    // The README's figure is the one this run draws, byte for byte.
+    let committed = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/figures/stribeck.svg");
+    assert!(
+        std::fs::read(committed).unwrap_or_else(|e| panic!("{committed}: {e}")) == std::fs::read(dir.join("stribeck.svg")).unwrap(),
+        "docs/figures/stribeck.svg differs from the one `pinjoint figures` draws: copy it from out/figures/stribeck.svg"
+    );
     // Captions no longer move a paper statement onto the rig's range.
     for page in [&html, &std::fs::read_to_string(dir.join("README.md")).unwrap()] {
         for spin in ["over the rig's range", "over the rig's speeds", "in the rig box"] {

@@ -1,7 +1,6 @@
 //! Issue 13's acceptance tests against published numbers: the extensions (h_min, temperature,
 //! starved inlet) compared with the values their sources print, each quoted with where it was
-//! found. What could not be found is said so here and in the README ("Extensions beyond the
-//! paper"), and only the identities and limits are tested for it.
+//! found. What could not be found is said so here and in docs/extensions.md, and only the identities and limits are tested for it.
 //!
 //! Sources used (all read through public transcriptions; none of the original papers was at hand):
 //! - Pan & Hamrock (1989) line-contact fits, as printed in Hamrock, Schmid & Jacobson,
@@ -307,7 +306,7 @@ fn default_s0_lies_among_the_s0_of_table_2_3_mineral_oils() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Starved inlet: no published values were found (see the README and src/starvation.rs); the
+// Starved inlet: no published values were found (see docs/extensions.md and src/starvation.rs); the
 // limits of the relation, and how much the unverified exponent γs matters.
 // ---------------------------------------------------------------------------------------------
 
@@ -359,8 +358,8 @@ fn mu_crossing_rpm(joint: &Joint, load: f64, level: f64) -> Option<f64> {
 
 #[test]
 fn starvation_exponent_sensitivity_over_the_quoted_range() {
-    // No published value of γs for a line contact was found (see `src/starvation.rs` and the
-    // README). A secondary source, an AI-assisted Korean summary (public GitHub notes, dated
+    // No published value of γs for a line contact was found (see `src/starvation.rs` and
+    // docs/extensions.md). A secondary source, an AI-assisted Korean summary (public GitHub notes, dated
     // 2026-03-10) of Lugt, *Grease Lubrication in Rolling Bearings* (Wiley, 2013), ch. 9,
     // gives eq. (9.73) in the same form, h_c/h_cff = r/(1 + r^γ)^(1/γ), and says γ is about 3
     // for circular contacts and up to about 15 for wide elliptical ones (towards a line
@@ -374,7 +373,7 @@ fn starvation_exponent_sensitivity_over_the_quoted_range() {
     };
     let rad = std::f64::consts::PI / 30.0;
     let flooded = mu_crossing_rpm(&with(None, 2.8), 20e3, 0.11).unwrap();
-    // The flooded model: μ = 0.11 at 17.0 rpm at 20 kN (MODEL_NOTES, README claims table).
+    // The flooded model: μ = 0.11 at 17.0 rpm at 20 kN (docs/model.md, the claims table of docs/paper-comparison.md).
     assert!((flooded / 17.0 - 1.0).abs() < 0.01, "{flooded}");
     // Measured (rpm where μ = 0.11 at 20 kN; μ at 800 rpm):
     //   h_oil = 10 µm:  17.4 / 17.3 / 17.0 rpm for γs = 2.8 / 3 / 15;  μ(800) 0.0003 for all

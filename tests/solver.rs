@@ -1,5 +1,5 @@
 //! The load-sharing solve and the operating point in every regime: convergence,
-//! limits (MODEL_NOTES "Limits the solver must meet"), monotonicity and continuity.
+//! limits (docs/model.md, "Limits the solver meets"), monotonicity and continuity.
 
 use pinjoint::asperity::{softplus, AsperityGroups};
 use pinjoint::gw::ln_f32;
@@ -104,7 +104,7 @@ fn zero_speed_is_the_boundary_limit_exactly() {
 
 #[test]
 fn boundary_torque_check_values() {
-    // MODEL_NOTES: μ_c R P_T = 67.2 N·m at 20 kN and 201.6 N·m at 60 kN at low speed.
+    // docs/model.md: μ_c R P_T = 67.2 N·m at 20 kN and 201.6 N·m at 60 kN at low speed.
     let j = joint();
     let t20 = j.evaluate(20e3, 1e-6).unwrap().torque;
     let t60 = j.evaluate(60e3, 1e-6).unwrap().torque;

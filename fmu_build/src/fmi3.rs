@@ -19,7 +19,7 @@ pub fn package(info: &ModelInfo, binaries: &[(&str, PathBuf, &str)], out_dir: &P
     std::fs::create_dir_all(&dir).map_err(BuildError::io("creating", &dir))?;
     let path = dir.join(format!("{}.fmu", info.model_identifier));
     let libraries = binaries.iter().map(|(platform, library, ext)| (*platform, library.as_path(), *ext));
-    crate::write_fmu(&path, info, xml, libraries, extras)?;
+    crate::archive::write_fmu(&path, info, xml, libraries, extras)?;
     Ok(path)
 }
 

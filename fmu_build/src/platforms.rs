@@ -92,7 +92,10 @@ pub fn select(spec: &str) -> Result<Vec<Platform>, BuildError> {
         list => list
             .split(',')
             .map(|name| {
-                ALL.iter().copied().find(|p| p.dir == name.trim()).ok_or_else(|| BuildError::UnknownPlatform(name.to_owned()))
+                ALL.iter().copied().find(|p| p.dir == name.trim()).ok_or_else(|| BuildError::UnknownPlatform {
+                    name: name.to_owned(),
+                    known: ALL.iter().map(|p| p.dir).collect::<Vec<_>>().join(", "),
+                })
             })
             .collect(),
     }
@@ -146,4 +149,21 @@ pub fn build_library(root: &Path, target: &Path, p: &Platform) -> Result<PathBuf
     std::fs::create_dir_all(dir).map_err(BuildError::io("creating", dir))?;
     std::fs::copy(&built, &kept).map_err(|source| BuildError::Copy { from: built.clone(), to: kept.clone(), source })?;
     Ok(kept)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::select;
+
+    /// An unknown name is refused, naming it and every known platform.
+    #[test]
+    fn unknown_platform_lists_the_known_ones() {
+        let Err(e) = select("x86_64-linux,mars") else { panic!("mars is no platform") };
+        let e = e.to_string();
+        assert_eq!(
+            e,
+            "--platforms: unknown platform 'mars' (known: all, host, x86_64-linux, aarch64-linux, x86_64-windows, \
+             x86_64-darwin, aarch64-darwin, universal-darwin)"
+        );
+    }
 }

@@ -1,6 +1,6 @@
 """An independent per-point implementation of the pin-joint model in NumPy/SciPy.
 
-Written from the paper's equations and shared/MODEL_NOTES.md (errata applied), not from the
+Written from the paper's equations and docs/model.md (errata applied), not from the
 Rust code's logarithmic forms: direct Hertz/Roelands/Bair-Winer formulas, Moes' eq. 12 with
 E' -> E'*x1, P -> P*x1 for the fluid's share x1 = 1/gamma1 (eq. 13), eq. 19 for the asperity
 share x2 = 1 - x1, the Greenwood-Williamson integral F_3/2 by quadrature

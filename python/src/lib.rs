@@ -14,13 +14,14 @@
 
 use pyo3::prelude::*;
 
-pub mod calibrate;
-pub mod cycle;
-pub mod joint;
+// In dependency order: each module uses only those above it (tests/module_graph.py).
 pub mod messages;
-pub mod params;
-pub mod presliding;
 pub mod values;
+pub mod params;
+pub mod joint;
+pub mod presliding;
+pub mod cycle;
+pub mod calibrate;
 
 /// The native half of the `pinjoint` package; use `pinjoint` itself.
 #[pymodule]

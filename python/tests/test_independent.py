@@ -14,7 +14,7 @@ import pinjoint
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "bench"))
 from reference_model import ReferenceJoint, ln_f32  # noqa: E402
 
-# MODEL_NOTES check values of F_3/2.
+# The check values of F_3/2 in docs/model.md.
 F32 = [(-3, 5.418377276511698), (0, 0.4300199936622599), (0.5, 0.19520360374379062), (1, 0.07566817739097503),
        (2, 0.006648177623587), (3, 2.639675542694661e-4), (4, 4.4391559585389115e-6)]
 

@@ -28,15 +28,16 @@
 //! assert_eq!(ev.evaluate(20e3, 0.0).unwrap().friction_coefficient, 0.12); // rest: μ_c exactly
 //! ```
 
-pub mod boundary;
-pub mod check;
-pub mod envelope;
+// In dependency order: each module uses only those above it (tests/module_graph.py).
 pub mod error;
+pub mod envelope;
 pub mod evaluation;
+pub mod check;
 pub mod full;
 mod hermite;
 pub mod rest;
 pub mod table;
+pub mod boundary;
 
 pub use boundary::BoundaryLevel;
 pub use check::ErrorReport;

@@ -31,24 +31,8 @@ use super::linear_loop::Loop;
 use serde::{Deserialize, Serialize};
 use std::cell::{Cell, RefCell};
 
-/// The integrated state (see the module documentation).
-pub type State = ode_solvers::SVector<f64, 6>;
-pub(crate) const ANGLE: usize = 0;
-pub(crate) const SPEED: usize = 1;
-pub(crate) const TORQUE: usize = 2;
-pub(crate) const WORK: usize = 3;
-pub(crate) const DISSIPATION: usize = 4;
-pub(crate) const TIME: usize = 5;
-
-/// The integrated state from the five physical values and the time.
-pub(crate) fn to_state(v: &[f64; 5], t: f64) -> State {
-    State::from([v[0], v[1], v[2], v[3], v[4], t])
-}
-
-/// The five physical values of a state.
-pub(crate) fn physical(y: &State) -> [f64; 5] {
-    [y[0], y[1], y[2], y[3], y[4]]
-}
+pub use super::state::State;
+pub(crate) use super::state::{physical, to_state, ANGLE, DISSIPATION, SPEED, TIME, TORQUE, WORK};
 
 /// Which equations hold.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

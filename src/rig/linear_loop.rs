@@ -6,7 +6,7 @@
 //! Schur form (polished by Newton on the characteristic polynomial) and eigenvectors
 //! (1, λ, Jλ² − dλ) read from A's rows.
 
-use super::dynamics::State;
+use super::state::State;
 use super::params::RigParams;
 use nalgebra::{Complex, Matrix3, Vector3};
 

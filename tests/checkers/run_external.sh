@@ -6,7 +6,7 @@
 #   FMUSIM=/path/to/fmusim FMUCHECK=/path/to/fmuCheck.linux64 bash tests/checkers/run_external.sh
 #
 # Either may be left out (that checker is skipped); with neither, the script says so and
-# exits 0. README "FMI 3.0, Model Exchange, and where the FMUs are tested" says how they were
+# exits 0. docs/fmu.md ("Where the FMUs are tested") says how they were
 # built and what they reported. Runs:
 #   fmusim:   PinJoint FMI 2.0 and 3.0 as CS, ME (CVode) and ME (Euler), and PinJointRig
 #             FMI 2.0 and 3.0 as CS (following the command_angle input), each with an input
@@ -28,7 +28,7 @@ FMUSIM="${FMUSIM:-}"
 FMUCHECK="${FMUCHECK:-}"
 if [[ -z "$FMUSIM" && -z "$FMUCHECK" ]]; then
     echo "checkers: SKIPPED (fmusim and the FMU Compliance Checker are not on a package registry;"
-    echo "          set FMUSIM and/or FMUCHECK to their binaries to run them, see the README)"
+    echo "          set FMUSIM and/or FMUCHECK to their binaries to run them, see docs/fmu.md)"
     exit 0
 fi
 for b in "$FMUSIM" "$FMUCHECK"; do

@@ -2,13 +2,14 @@
 //! run). It is not part of the user's `pinjoint` binary: it shells out to Python (fmpy) for
 //! the FMU section. Run it with `cargo run --release -p pinjoint-bench -- --output .`.
 
-mod bench;
+// In dependency order: each module uses only those above it (tests/module_graph.py).
 mod bench_error;
-mod bench_eval;
-mod bench_report;
 mod bench_rig;
 mod bench_throughput;
 mod eval_path;
+mod bench_eval;
+mod bench_report;
+mod bench;
 
 use clap::Parser;
 use std::process::ExitCode;

@@ -6,9 +6,9 @@
 //!    peak rises above μ_c·R·P and the rig accelerates hardest; or
 //! 2. **settling**: it comes less than `settle_time` after the motion, past a reversal, rose
 //!    above the speed threshold in its new direction (or after the start of the record): the
-//!    joint breaks away, the static peak decays and the servo rings there (MODEL_NOTES: "at
-//!    1 Hz, oscillation in the recorded torque"). Counting from the threshold crossing rather
-//!    than from the zero of ω makes the window independent of how long the joint stuck.
+//!    joint breaks away, the static peak decays and the servo rings there (docs/model.md: at 1 Hz the
+//!    recorded torque oscillates). Counting from the threshold crossing rather than from the
+//!    zero of ω makes the window independent of how long the joint stuck.
 //!
 //! The samples between two reversals that pass both tests form one *stroke*; strokes are the
 //! units of the cluster-robust standard errors and of the bootstrap.

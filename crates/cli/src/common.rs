@@ -7,6 +7,7 @@ use pinjoint::rig::RigConfig;
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::PI;
 use std::path::PathBuf;
+pub use super::numbers::{readable, trimmed};
 
 /// rad/s per rpm.
 pub const RAD_S_PER_RPM: f64 = 2.0 * PI / 60.0;
@@ -160,31 +161,6 @@ pub fn result_fields(op: &OperatingPoint) -> [String; 12] {
         pinjoint::record::Value::Number(f) => exact(f(op)),
         pinjoint::record::Value::Regime => op.regime.as_str().to_string(),
     })
-}
-
-/// A number for people: 6 significant digits, fixed or scientific as fits.
-pub fn readable(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    trimmed(v, 6, 5)
-}
-
-/// `v` with trailing zeros trimmed: in fixed notation with `digits` significant digits (at
-/// most `digits + 2` decimals) for 1e-3 ≤ |v| < 10^(digits + 1), else in scientific notation
-/// with `sci_decimals` decimals in the mantissa. [`readable`] and the plots' tick labels.
-pub fn trimmed(v: f64, digits: i32, sci_decimals: usize) -> String {
-    let a = v.abs();
-    if (1e-3..10f64.powi(digits + 1)).contains(&a) {
-        let decimals = (digits - 1 - a.log10().floor() as i32).clamp(0, digits + 2) as usize;
-        let s = format!("{v:.decimals$}");
-        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
-    } else {
-        let s = format!("{v:.sci_decimals$e}");
-        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
-        let m = if m.contains('.') { m.trim_end_matches('0').trim_end_matches('.') } else { m };
-        format!("{m}e{e}")
-    }
 }
 
 /// The model and rig parameters of a file (model sections + `[rig]`), or the defaults.

@@ -9,7 +9,7 @@
 use super::common::{readable, RAD_S_PER_RPM};
 use super::cycle_run::stroke_average;
 use super::error::Result;
-use super::figures_index::{nm, pct, sig};
+use super::numbers::{nm, pct, sig};
 use super::figures_rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
 use pinjoint::{Joint, OperatingPoint, Params};
@@ -148,7 +148,7 @@ pub fn claims(joint: &Joint, results: &[RigResult], amplitude: f64) -> Result<Ve
         "20 kN gives a mean contact pressure of 13 MPa",
         format!("p_m = P/(2aB) = {} MPa at 20 kN", sig(p20, 3)),
         if (p20 - 13.0).abs() < 0.5 { Reproduced } else { NotReproduced },
-        "with E' from the plus sign (erratum 1 of MODEL_NOTES); the printed minus sign gives other pressures",
+        "with E' from the plus sign (erratum 1 in docs/model.md); the printed minus sign gives other pressures",
     ));
     let (p5, p60) = (at(5e3, 1.0)?.mean_pressure / 1e6, at(60e3, 1.0)?.mean_pressure / 1e6);
     out.push(claim(
@@ -219,7 +219,7 @@ pub fn claims(joint: &Joint, results: &[RigResult], amplitude: f64) -> Result<Ve
             sig(a800.friction_coefficient, 2)
         ),
         if half.is_none() { Reproduced } else { NotReproduced },
-        "no defensible reading of the printed equations found gives it (MODEL_NOTES: mean velocity, Roelands η in the film, \
+        "no defensible reading of the printed equations found gives it (docs/model.md: mean velocity, Roelands η in the film, \
 printed exponents, minus sign in E', ω in rev/s tried); it would need η·u 30–120× smaller",
     ));
     // §3.2, Fig. 4.
@@ -663,7 +663,7 @@ mod tests {
 
     #[test]
     fn crossing_speeds_match_model_notes_and_land_on_their_level() {
-        // MODEL_NOTES: μ = 0.11 is crossed at 6.6 / 17 / 27 rpm at 5 / 20 / 60 kN; the film
+        // docs/model.md: μ = 0.11 is crossed at 6.6 / 17 / 27 rpm at 5 / 20 / 60 kN; the film
         // carries half the load at about 107 rpm at 20 kN.
         let j = joint();
         for (p, expected) in [(5e3, 6.6), (20e3, 17.0), (60e3, 27.0)] {
@@ -704,7 +704,7 @@ mod tests {
         assert!(low.model.contains(&sig(table[0][0], 4)) && low.model.contains(&sig(table[0][4], 4)));
         assert_eq!(row("higher loads show").verdict, Verdict::Reproduced);
         assert!(table.iter().all(|r| r.windows(2).all(|w| w[1] > w[0])));
-        // 201.6 N·m at 60 kN (MODEL_NOTES).
+        // 201.6 N·m at 60 kN (docs/model.md).
         assert!(row("200 N·m").model.contains("201.6 N·m"));
         // The counts line adds up.
         let md = markdown(&c);

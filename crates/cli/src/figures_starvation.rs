@@ -265,7 +265,7 @@ mod tests {
                 r.dip_1hz
             );
         }
-        // The flooded rows are MODEL_NOTES' numbers: μ = 0.11 at 6.6 / 17 / 27 rpm.
+        // The flooded rows are docs/model.md's numbers: μ = 0.11 at 6.6 / 17 / 27 rpm.
         let flooded: Vec<_> = sum.iter().filter(|r| r.layer.is_none()).collect();
         for (r, want) in flooded.iter().zip([6.6, 17.0, 27.0]) {
             let got = r.mu_crossing_rpm.unwrap();

@@ -1,33 +1,39 @@
 //! The `pinjoint` command line: one file per subcommand, shared pieces in `common`,
-//! `error` and `output`, SVG charts in `plot`. A new subcommand adds a file and a
-//! variant of [`Command`]. The binary (`src/main.rs`) only calls [`main`].
+//! `error` and `output`, numbers for people in `numbers`, SVG charts in `plot`. A new
+//! subcommand adds a file and a variant of [`Command`]. The binary (`src/main.rs`) only
+//! calls [`main`]; this library page is the command line's API documentation (the binary
+//! has none of its own: see `docs/cli.md`).
 
-pub mod calibrate;
-pub mod calibrate_report;
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+// Shared pieces:
+pub mod exact;
+pub mod numbers;
+pub mod plot;
+pub mod error;
 pub mod common;
+pub mod output;
+pub mod fidelity_args;
 pub mod curves;
-pub mod cycle;
-pub mod cycle_plots;
+// The commands, each after its parts:
+pub mod params_cmd;
+pub mod point;
+pub mod sweep_input;
+pub mod sweep;
+pub mod stribeck;
+pub mod map;
 pub mod cycle_run;
 pub mod cycle_stream;
-pub mod error;
-pub mod exact;
-pub mod fidelity_args;
-pub mod figures;
-pub mod figures_at_rest;
-pub mod figures_claims;
-pub mod figures_index;
-pub mod figures_plots;
+pub mod cycle_plots;
+pub mod cycle;
+pub mod calibrate_report;
+pub mod calibrate;
 pub mod figures_rig;
+pub mod figures_claims;
+pub mod figures_plots;
+pub mod figures_index;
 pub mod figures_starvation;
-pub mod map;
-pub mod output;
-pub mod params_cmd;
-pub mod plot;
-pub mod point;
-pub mod stribeck;
-pub mod sweep;
-pub mod sweep_input;
+pub mod figures_at_rest;
+pub mod figures;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

@@ -223,7 +223,7 @@ pub fn tick_label(v: f64) -> String {
     if v == 0.0 {
         return "0".into();
     }
-    crate::common::trimmed(v, 4, 2)
+    crate::numbers::trimmed(v, 4, 2)
 }
 
 fn usable(scale: Scale, v: f64) -> bool {

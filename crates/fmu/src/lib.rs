@@ -50,9 +50,9 @@ PinJointRig is Co-Simulation only (its actuator has continuous states and stick/
 <li>Binaries: the platforms present are the folders under <code>binaries/</code>. The host build
 (<code>cargo run --release -p fmu_build</code>) carries <code>linux64</code> (FMI 2.0) / <code>x86_64-linux</code> (FMI 3.0): x86-64
 Linux; it needs <code>libc.so.6</code>, <code>libm.so.6</code> and <code>libgcc_s.so.1</code> with the glibc of the build
-machine (built on Debian 12: glibc 2.35 or newer; the multi-platform build lowers this, see the project README).
+machine (built on Debian 12: glibc 2.35 or newer; the multi-platform build lowers this, see the project's docs/fmu.md).
 Windows and macOS binaries are only present in FMUs built with <code>--platforms all</code>; what was run-tested on which
-platform is listed in the project README.</li>
+platform is listed in the project's docs/fmu.md.</li>
 <li>No resources, files, network, licence server or environment variables are used; <code>fmuResourceLocation</code> /
 <code>resourcePath</code> may be NULL or empty (no message). Nothing is written to disk.</li>
 <li>Any number of instances per process (<code>canBeInstantiatedOnlyOncePerProcess = false</code>); instances are
