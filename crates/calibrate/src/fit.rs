@@ -19,6 +19,7 @@ use super::coords::{resolve, Extra, Transform};
 use super::error::CalibrationError;
 use super::estimates::{check_options, estimate, keys_of, warnings, INERTIA, MIN_POINTS_PER_PARAMETER};
 use super::lm::{Adapter, Residuals};
+use super::derivative::matched_taps;
 use super::model::{shapes, Shape};
 use super::options::{Model, Options};
 use super::prepare::{prepare, Prepared, STICK_SLIP_IRREGULARITY};
@@ -140,6 +141,11 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
             }
         }
     }
+    // The fitted points: with J fitted, the matched filter's centres (whose window lies in one
+    // stroke's used samples), the targets filtered; else every used sample.
+    let filter = Filter::new(&prepared, &points, fit_j);
+    let support = points;
+    let points: Vec<Point> = filter.centres.iter().map(|&(c, r)| Point { y: filter.apply(r, c, |i| support[i].y), ..support[c] }).collect();
     let np = 1 + usize::from(fit_j) + usize::from(options.fit_offset) + extras.len();
     let total: usize = prepared.iter().map(|p| p.time.len()).sum();
     let needed = (MIN_POINTS_PER_PARAMETER * np).max(20);
@@ -164,13 +170,14 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
             ),
         });
     }
-    let ident = |i: usize| (prepared[points[i].rec].name.clone(), points[i].row);
-    let load_speed: Vec<(f64, f64)> = points.iter().map(|p| (p.load, p.omega)).collect();
+    let ident = |i: usize| (prepared[support[i].rec].name.clone(), support[i].row);
+    let load_speed: Vec<(f64, f64)> = support.iter().map(|p| (p.load, p.omega)).collect();
     let y = DVector::from_iterator(points.len(), points.iter().map(|p| p.y));
     let alpha: Vec<f64> = if fit_j { points.iter().map(|p| p.alpha).collect() } else { Vec::new() };
     let problem = Problem {
         load_speed: &load_speed,
         alpha: fit_j.then_some(&alpha[..]),
+        filter: &filter,
         y: &y,
         base: options.params,
         extras: &extras,
@@ -262,7 +269,8 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         ));
     }
     let series = series(&prepared, &params, &beta, j_used, options.fit_offset, np)?;
-    let points_used = points.len();
+    // Every used sample enters the fit (as a fitted point or in a window of one).
+    let points_used = support.len();
     let deviation = settle_deviation(&points, &r, options.exclusion.settle_time);
     Ok((Calibration {
         model: Model::Core,
@@ -275,7 +283,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         correlation_keys: keys,
         correlation: u.correlation.clone(),
         condition: u.condition,
-        rms_residual: (rss / points_used as f64).sqrt(),
+        rms_residual: (rss / r.len() as f64).sqrt(),
         points_used,
         points_excluded: total - points_used,
         strokes: clusters.len(),
@@ -310,9 +318,75 @@ fn series(prepared: &[Prepared], params: &Params, beta: &DVector<f64>, inertia: 
         .collect()
 }
 
+/// The matched filter ([`crate::derivative::matched_taps`]) from the used samples (the support)
+/// to the fitted points. With J fitted, a used sample is a fitted point (a centre) when the
+/// filter's whole window, ±(k−1) samples of its record's differentiator half-width k, lies in
+/// the same stroke's used samples on a uniform time step; its target and the model's other
+/// terms are the taps' mean over the window, its α the differentiator's. Records whose α is not
+/// the angle's second derivative (a velocity column) or whose sampling is uneven get the taps
+/// [1] (no filter). With J given, every used sample is a centre with the taps [1] (the fit as
+/// before J was fitted).
+struct Filter {
+    /// (index in the support, record) of each fitted point.
+    centres: Vec<(usize, usize)>,
+    /// The taps of each record.
+    taps: Vec<Vec<f64>>,
+}
+
+/// Relative deviation of a time step from the record's typical step still taken as uniform.
+const UNIFORM_STEP: f64 = 1e-3;
+
+impl Filter {
+    fn new(prepared: &[Prepared], support: &[Point], fit_j: bool) -> Self {
+        let mut uniform: Vec<Vec<bool>> = Vec::new();
+        let taps: Vec<Vec<f64>> = prepared
+            .iter()
+            .map(|p| {
+                let n = p.time.len();
+                let dt = (p.time[n - 1] - p.time[0]) / (n - 1) as f64;
+                let steps: Vec<bool> = p.time.windows(2).map(|w| ((w[1] - w[0]) / dt - 1.0).abs() <= UNIFORM_STEP).collect();
+                let mostly = 2 * steps.iter().filter(|u| **u).count() >= steps.len();
+                uniform.push(steps);
+                if fit_j && p.alpha_from_angle && mostly { matched_taps(p.half_width) } else { vec![1.0] }
+            })
+            .collect();
+        // Prefix counts of uneven steps per record, to test a window in O(1).
+        let uneven: Vec<Vec<usize>> = uniform
+            .iter()
+            .map(|u| std::iter::once(0).chain(u.iter().scan(0, |c, ok| { *c += usize::from(!ok); Some(*c) })).collect())
+            .collect();
+        let mut centres = Vec::with_capacity(support.len());
+        for (c, p) in support.iter().enumerate() {
+            let h = taps[p.rec].len() / 2;
+            if h == 0 {
+                centres.push((c, p.rec));
+                continue;
+            }
+            let (Some(lo), Some(hi)) = (c.checked_sub(h).map(|i| &support[i]), support.get(c + h)) else { continue };
+            let inside = |q: &Point, row: usize| q.rec == p.rec && q.cluster == p.cluster && q.row == row;
+            // Rows increase within the support, so matching ends mean the window is contiguous.
+            let ok = p.row >= h && inside(lo, p.row - h) && inside(hi, p.row + h);
+            if ok && uneven[p.rec][p.row + h] == uneven[p.rec][p.row - h] {
+                centres.push((c, p.rec));
+            }
+        }
+        Filter { centres, taps }
+    }
+
+    /// The taps' mean of `f` over the window of support index `c` (record `r`).
+    fn apply(&self, r: usize, c: usize, f: impl Fn(usize) -> f64) -> f64 {
+        let v = &self.taps[r];
+        let h = v.len() / 2;
+        v.iter().enumerate().map(|(m, w)| w * f(c + m - h)).sum()
+    }
+}
+
 /// The model over the used samples, in the fit coordinates β = [extras…, μ_c, J?, T_0?].
 struct Problem<'a> {
+    /// Load and speed at the support (every used sample).
     load_speed: &'a [(f64, f64)],
+    /// From the support to the fitted points.
+    filter: &'a Filter,
     /// α at the used samples when J is fitted.
     alpha: Option<&'a [f64]>,
     y: &'a DVector<f64>,
@@ -332,11 +406,17 @@ impl Problem<'_> {
         p
     }
 
+    /// The shapes at the fitted points (the matched filter's means of the support's shapes).
     fn shapes(&self, beta: &DVector<f64>) -> Result<Vec<Shape>, CalibrationError> {
         let mut p = self.params_at(beta);
         // μ_c does not enter the shape; keep the shape's evaluation valid if a step makes it < 0.
         p.friction.boundary_friction_coefficient = 0.0;
-        shapes(&p, self.load_speed, self.ident)
+        let raw = shapes(&p, self.load_speed, self.ident)?;
+        let f = self.filter;
+        Ok(f.centres
+            .iter()
+            .map(|&(c, r)| Shape { fluid: f.apply(r, c, |i| raw[i].fluid), boundary: f.apply(r, c, |i| raw[i].boundary) })
+            .collect())
     }
 
     fn model(&self, beta: &DVector<f64>) -> Result<DVector<f64>, CalibrationError> {
