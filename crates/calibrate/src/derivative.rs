@@ -55,16 +55,19 @@ pub fn local_poly_derivatives(t: &[f64], y: &[f64], k: usize, degree: usize) -> 
         .collect()
 }
 
-/// The matched filter of the second derivative: the taps v_m (m = −(k−1)..=k−1, sum 1) with
-/// which the cubic Savitzky–Golay second derivative over ±`k` samples of a uniform grid is
-/// a weighted mean of the true second derivative: if w_j are the filter's weights on the angle
-/// (Σ w_j = Σ w_j·j = 0, Σ w_j·j²/2 = 1/Δt²), then w = v ∗ [1, −2, 1]/Δt², so
-/// α_SG(i) = Σ_m v_m·Δ²θ(i+m)/Δt² ≈ Σ_m v_m·α(i+m) (Δ²θ/Δt² is α averaged over ±Δt with a
-/// triangle). Filtering the recorded torque and the model's other terms with the same taps
-/// keeps T = J·α + friction + T_0 exact for J whatever the filter does to α: fast servo
-/// ringing that the differentiator smooths away is smoothed the same way in the torque, so
-/// it does not bias J (the quasi-static fit uses it when J is fitted, [`crate::fit`]).
-/// For k = 1 the taps are [1].
+/// The matched filter of the second derivative: taps (m = −k..=k, sum 1) with which the cubic
+/// Savitzky–Golay second derivative over ±`k` samples of a uniform grid is a weighted mean of
+/// the true second derivative. If w_j are the filter's weights on the angle (Σ w_j = Σ w_j·j = 0,
+/// Σ w_j·j²/2 = 1/Δt²), then w = v ∗ [1, −2, 1]/Δt² with v_m zero beyond |m| = k − 1, so
+/// α_SG(i) = Σ_m v_m·Δ²θ(i+m)/Δt²; and the second difference Δ²θ/Δt² is α averaged over ±Δt
+/// with a triangle, which the taps [1/12, 5/6, 1/12] reproduce to fourth order
+/// (α + α''·Δt²/12 + O(Δt⁴)). The taps are v ∗ [1/12, 5/6, 1/12].
+///
+/// Filtering the recorded torque and the model's other terms with these taps keeps
+/// T = J·α + friction + T_0 exact for J whatever the differentiator does to α: fast servo
+/// ringing that it smooths away is smoothed the same way in the torque, so it does not bias J
+/// (the quasi-static fit uses this when J is fitted, [`crate::fit`]). For k = 1 the taps are
+/// [1/12, 5/6, 1/12].
 pub fn matched_taps(k: usize) -> Vec<f64> {
     let k = k.max(1);
     // The second-derivative weights of the cubic (the even part: the quadratic) over j = −k..=k.
@@ -81,7 +84,9 @@ pub fn matched_taps(k: usize) -> Vec<f64> {
         let at = |m: i64| (m + k as i64 + 1) as usize;
         v[at(j + 1)] = w[(j + k as i64) as usize] + 2.0 * v[at(j)] - v[at(j - 1)];
     }
-    v[2..2 * k + 1].to_vec()
+    // v at m = −k..=k is v[1..2k+2] (its ends zero); convolved with the triangle's taps.
+    let (a, b) = (1.0 / 12.0, 5.0 / 6.0);
+    (1..2 * k + 2).map(|i| a * v[i - 1] + b * v[i] + a * v[i + 1]).collect()
 }
 
 /// The number of strokes (motions between reversals) in an angle record: crossings of the
@@ -155,22 +160,24 @@ mod tests {
         let (w1, w2) = (std::f64::consts::TAU, std::f64::consts::TAU * 40.0);
         let y: Vec<f64> = t.iter().map(|&x| (w1 * x).sin() + 0.01 * (w2 * x).sin()).collect();
         let a: Vec<f64> = t.iter().map(|&x| -w1 * w1 * (w1 * x).sin() - 0.01 * w2 * w2 * (w2 * x).sin()).collect();
-        assert_eq!(matched_taps(1), vec![1.0]);
+        for (x, y) in matched_taps(1).iter().zip([1.0 / 12.0, 5.0 / 6.0, 1.0 / 12.0]) {
+            assert!((x - y).abs() < 1e-15, "{x} {y}");
+        }
         for k in [2usize, 4, 12] {
             let v = matched_taps(k);
-            assert_eq!(v.len(), 2 * k - 1);
+            assert_eq!(v.len(), 2 * k + 1);
             assert!((v.iter().sum::<f64>() - 1.0).abs() < 1e-12);
             let d = local_poly_derivatives(&t, &y, k, 3);
-            let h = k - 1;
+            let h = k;
             let mut worst = 0.0f64;
             for i in k + 1..t.len() - k - 1 {
                 let mean: f64 = (0..v.len()).map(|m| v[m] * a[i + m - h]).sum();
                 worst = worst.max((d[i].1 - mean).abs());
             }
-            // The ringing's α is 0.01·w2² = 632 rad/s²; the triangle's relative error (w2·dt)²/12
-            // of it is 5.3e-3 (3.3 rad/s²).
+            // The ringing's α is 0.01·w2² = 632 rad/s²; the triangle alone would miss (w2·dt)²/12
+            // = 5.3e-3 of it, its taps leave the fourth order, (w2·dt)⁴/360 = 1.1e-5.
             let ring = 0.01 * w2 * w2;
-            assert!(worst < 6e-3 * ring, "k {k}: {worst}");
+            assert!(worst < 2e-5 * ring, "k {k}: {worst}");
             if k == 12 {
                 // ... while the differentiator alone misses most of the ringing.
                 let raw = (k + 1..t.len() - k - 1).map(|i| (d[i].1 - a[i]).abs()).fold(0.0, f64::max);

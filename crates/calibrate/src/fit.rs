@@ -171,7 +171,19 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         });
     }
     let ident = |i: usize| (prepared[support[i].rec].name.clone(), support[i].row);
-    let load_speed: Vec<(f64, f64)> = support.iter().map(|p| (p.load, p.omega)).collect();
+    // Behind the matched filter the model's friction is evaluated at the angle's central
+    // difference, which keeps the motion's fast part (servo ringing) that the smoothed velocity
+    // loses: the filter then averages the friction of the true motion, as it does the torque.
+    let load_speed: Vec<(f64, f64)> = support
+        .iter()
+        .map(|p| {
+            let x = &prepared[p.rec];
+            match (&x.angle, filter.taps[p.rec].len() > 1 && p.row > 0 && p.row + 1 < x.time.len()) {
+                (Some(a), true) => (p.load, (a[p.row + 1] - a[p.row - 1]) / (x.time[p.row + 1] - x.time[p.row - 1])),
+                _ => (p.load, p.omega),
+            }
+        })
+        .collect();
     let y = DVector::from_iterator(points.len(), points.iter().map(|p| p.y));
     let alpha: Vec<f64> = if fit_j { points.iter().map(|p| p.alpha).collect() } else { Vec::new() };
     let problem = Problem {
@@ -320,11 +332,11 @@ fn series(prepared: &[Prepared], params: &Params, beta: &DVector<f64>, inertia: 
 
 /// The matched filter ([`crate::derivative::matched_taps`]) from the used samples (the support)
 /// to the fitted points. With J fitted, a used sample is a fitted point (a centre) when the
-/// filter's whole window, ±(k−1) samples of its record's differentiator half-width k, lies in
+/// filter's whole window, ±k samples of its record's differentiator half-width k, lies in
 /// the same stroke's used samples on a uniform time step; its target and the model's other
 /// terms are the taps' mean over the window, its α the differentiator's. Records whose α is not
 /// the angle's second derivative (a velocity column) or whose sampling is uneven get the taps
-/// [1] (no filter). With J given, every used sample is a centre with the taps [1] (the fit as
+/// [1] (no filter; the fitted J is then as good as that record's α). With J given, every used sample is a centre with the taps [1] (the fit as
 /// before J was fitted).
 struct Filter {
     /// (index in the support, record) of each fitted point.
