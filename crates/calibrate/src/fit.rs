@@ -171,19 +171,9 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         });
     }
     let ident = |i: usize| (prepared[support[i].rec].name.clone(), support[i].row);
-    // Behind the matched filter the model's friction is evaluated at the angle's central
-    // difference, which keeps the motion's fast part (servo ringing) that the smoothed velocity
-    // loses: the filter then averages the friction of the true motion, as it does the torque.
-    let load_speed: Vec<(f64, f64)> = support
-        .iter()
-        .map(|p| {
-            let x = &prepared[p.rec];
-            match (&x.angle, filter.taps[p.rec].len() > 1 && p.row > 0 && p.row + 1 < x.time.len()) {
-                (Some(a), true) => (p.load, (a[p.row + 1] - a[p.row - 1]) / (x.time[p.row + 1] - x.time[p.row - 1])),
-                _ => (p.load, p.omega),
-            }
-        })
-        .collect();
+    // The friction is evaluated at the smoothed velocity (a raw difference of a quantised angle
+    // can be noisier than slow strokes are fast).
+    let load_speed: Vec<(f64, f64)> = support.iter().map(|p| (p.load, p.omega)).collect();
     let y = DVector::from_iterator(points.len(), points.iter().map(|p| p.y));
     let alpha: Vec<f64> = if fit_j { points.iter().map(|p| p.alpha).collect() } else { Vec::new() };
     let problem = Problem {
