@@ -94,11 +94,22 @@ pub fn calibrate_core(records: &[Record], options: &Options) -> Result<Calibrati
 
 /// The mean of sign(ω)·residual over used samples with `since` in [settle, 1.5·settle) against
 /// the rest: Some(difference) when it exceeds 3 standard errors of the window's mean.
-fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64) -> Option<f64> {
+///
+/// `inflation` of each point's record: 1/Σv² of its matched-filter taps v (1 without the
+/// filter): filtered white noise has Σv² of the variance per point but the same variance of a
+/// long mean, so the points' variance over their count is too small by that factor.
+fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64, inflation: &[f64]) -> Option<f64> {
     let (mut a, mut b) = (Vec::new(), Vec::new());
+    let (mut fa, mut fb) = (0.0, 0.0);
     for (i, p) in points.iter().enumerate() {
         let v = r[i] * p.omega.signum();
-        if p.since < 1.5 * settle { a.push(v) } else { b.push(v) }
+        if p.since < 1.5 * settle {
+            a.push(v);
+            fa += inflation[p.rec];
+        } else {
+            b.push(v);
+            fb += inflation[p.rec];
+        }
     }
     if a.len() < 10 || b.len() < 10 {
         return None;
@@ -106,7 +117,8 @@ fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64) -> Option<f
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
     let (ma, mb) = (mean(&a), mean(&b));
     let var = |v: &[f64], m: f64| v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (v.len() - 1) as f64;
-    let se = (var(&a, ma) / a.len() as f64 + var(&b, mb) / b.len() as f64).sqrt();
+    let (fa, fb) = (fa / a.len() as f64, fb / b.len() as f64);
+    let se = (var(&a, ma) * fa / a.len() as f64 + var(&b, mb) * fb / b.len() as f64).sqrt();
     ((ma - mb).abs() > 3.0 * se).then_some(ma - mb)
 }
 
@@ -273,7 +285,8 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     let series = series(&prepared, &params, &beta, j_used, options.fit_offset, np)?;
     // Every used sample enters the fit (as a fitted point or in a window of one).
     let points_used = support.len();
-    let deviation = settle_deviation(&points, &r, options.exclusion.settle_time);
+    let inflation: Vec<f64> = filter.taps.iter().map(|v| 1.0 / v.iter().map(|x| x * x).sum::<f64>()).collect();
+    let deviation = settle_deviation(&points, &r, options.exclusion.settle_time, &inflation);
     Ok((Calibration {
         model: Model::Core,
         rig: None,

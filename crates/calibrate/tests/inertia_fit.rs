@@ -104,11 +104,11 @@ fn judge(c: &Calibration, j: f64, what: &str) -> Outcome {
 }
 
 /// Every fit within the tolerances; at least `percent` % of the intervals of each quantity cover
-/// the truth. The nominal rate is 95 %. Measured over 48 direct fits, the μ_c intervals cover in
-/// 87.5 % with J given and 83 % with J fitted (rms error/standard error 1.13 and 1.24: the
-/// cluster-robust errors of two records' 32 strokes are 10-25 % small, a shortfall that predates
-/// the inertia fit); the rig records, whose simulation is the same for every seed (so a small
-/// systematic repeats), cover in 79-83 % (24 fits). The thresholds assert those levels.
+/// the truth. The nominal rate is 95 %; measured here (24 fits each): direct records μ_c 23/24,
+/// J 20/24; rig records μ_c 21/24, J 20/24 (the rig's simulation is the same for every seed, so
+/// a small systematic repeats). Over 100 direct fits at 1 Hz the intervals cover 93/100 (μ_c and
+/// J); the rms of error/standard error is 1.10: the cluster-robust errors of two records' 32
+/// strokes run about 10 % small. The thresholds assert 80 %.
 fn assess(outcomes: &[Outcome], percent: usize) {
     let n = outcomes.len();
     let count = |f: fn(&Outcome) -> bool| outcomes.iter().filter(|o| f(o)).count();
@@ -157,7 +157,7 @@ fn rig_records_with_j_005_and_2_over_loads_frequencies_and_seeds() {
             out.push(judge(&fitted(&recs), j, &format!("rig J {j} {loads:?} N {f} Hz seed {seed}")));
         }
     }
-    assess(&out, 75);
+    assess(&out, 80);
 }
 
 #[test]
