@@ -3,6 +3,7 @@
 //! the FMU section. Run it with `cargo run --release -p pinjoint-bench -- --output .`.
 
 mod bench;
+mod bench_calibrate;
 mod bench_error;
 mod bench_eval;
 mod bench_report;
