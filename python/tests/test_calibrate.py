@@ -76,6 +76,29 @@ def test_equals_cli_json(fitted, records, cli, tmp_path):
     assert pinjoint.Params.from_toml(tmp_path / "out" / "calibrated.toml") == fitted.params
 
 
+def test_inertia_fitted_unless_given(fitted, records):
+    # No inertia and no rig.inertia in params: J is fitted with mu_c and T0, with its interval
+    # (the records' rig has J = 0.05 kg*m^2), and reported as fitted.
+    assert fitted["inertia_fitted"] is True
+    j = fitted["inertia_estimate"]
+    assert j["ci95"][0] <= 0.05 <= j["ci95"][1], j
+    assert fitted["inertia"] == j["value"]
+    assert "rig.inertia" in fitted["correlation_keys"]
+    given = pinjoint.calibrate(records, inertia=0.05, resamples=0)
+    assert given["inertia_fitted"] is False and "inertia_estimate" not in given and given["inertia"] == 0.05
+    assert "rig.inertia" not in given["correlation_keys"]
+
+
+def test_long_records_are_block_averaged_to_the_sample_budget(records):
+    n = sum(len(r["time"]) for r in records)
+    avg = pinjoint.calibrate(records, max_samples=n // 2, resamples=0)
+    assert avg["block_length"] == 2 and avg["samples_read"] == n
+    assert sum(len(s["time"]) for s in avg["series"]) <= n // 2 + len(records)
+    assert abs(avg["parameters"][pinjoint.MU_C]["value"] - MU) < 1e-3
+    with pytest.raises(ValueError, match="max_samples"):
+        pinjoint.calibrate(records, max_samples=10)
+
+
 def test_result_pickles_and_forms(fitted, records):
     again = pickle.loads(pickle.dumps(fitted))
     assert again.params == fitted.params and again["parameters"] == fitted["parameters"]

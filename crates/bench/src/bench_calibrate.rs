@@ -149,8 +149,16 @@ pub fn measure(quick: bool, work: &Path, progress: &dyn Fn(&str)) -> Result<Cali
         progress(&format!("calibration: pinjoint calibrate on {n} rows"));
         let out = work.join(format!("cal_{n}"));
         runs.push(calibrate_child(&exe, path, &out, *n)?);
-        // The big record is not needed any more: free the disk.
-        let _ = std::fs::remove_file(path);
+        // The record is not needed any more: free the disk (PINJOINT_BENCH_KEEP=DIR keeps it
+        // there, for a run under another tool such as `/usr/bin/time -v`).
+        match std::env::var_os("PINJOINT_BENCH_KEEP") {
+            Some(keep) => {
+                let _ = std::fs::rename(path, Path::new(&keep).join(path.file_name().unwrap_or_default()));
+            }
+            None => {
+                let _ = std::fs::remove_file(path);
+            }
+        }
     }
     Ok(CalibrationBench { runs, generate_seconds })
 }
