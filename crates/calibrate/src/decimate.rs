@@ -188,7 +188,7 @@ mod tests {
         let mut rng = crate::uncertainty::SplitMix::new(5);
         let n = 200_000;
         let x: Vec<f64> = (0..n).map(|_| rng.uniform() - 0.5).collect();
-        let t: Vec<f64> = (0..n).map(|i| i as f64).collect();
+        let t: Vec<f64> = (0..n).map(f64::from).collect();
         let c = Columns { name: "r", time: &t, angle: Some(&x), angular_velocity: None, torque: &x, load: &x };
         let r = block_mean(&c, 10);
         let var = r.torque.iter().map(|v| v * v).sum::<f64>() / r.len() as f64;

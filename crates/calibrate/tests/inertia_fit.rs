@@ -16,47 +16,46 @@ use std::f64::consts::TAU;
 
 const TRUTH: f64 = 0.105;
 
-/// A direct record: θ = A·sin(2πft) (A = 40°), torque = J·α − friction(P, ω) + offset + noise.
-fn direct(load: f64, f: f64, j: f64, cycles: usize, spc: usize, noise: f64, offset: f64, seed: u64) -> Record {
-    direct_q(load, f, j, cycles, spc, noise, offset, seed, ENCODER)
-}
+/// Cycles of every record, samples a cycle, torque noise (N·m, rms) and offset (N·m).
+const CYCLES: usize = 8;
+const SPC: usize = 1000;
+const NOISE: f64 = 0.5;
+const OFFSET: f64 = 0.3;
 
-/// [`direct`] with the angle quantised to `q` rad (0: not quantised).
-#[allow(clippy::too_many_arguments)]
-fn direct_q(load: f64, f: f64, j: f64, cycles: usize, spc: usize, noise: f64, offset: f64, seed: u64, q: f64) -> Record {
+/// A direct record: θ = A·sin(2πft) (A = 40°) on a 17-bit encoder at a random phase,
+/// torque = J·α − friction(P, ω) + offset + noise.
+fn direct(load: f64, f: f64, j: f64, seed: u64) -> Record {
     let mut p = Params::default();
     p.friction.boundary_friction_coefficient = TRUTH;
     let joint = Joint::new(&p).unwrap();
-    let (a, w) = (40f64.to_radians(), TAU * f);
+    let (a, w, q) = (40f64.to_radians(), TAU * f, ENCODER);
     let mut rng = SplitMix::new(seed);
     // A random phase of the encoder's counts against the motion.
     let shift = q * rng.uniform();
-    let n = cycles * spc;
-    let time: Vec<f64> = (0..n).map(|i| i as f64 / (f * spc as f64)).collect();
-    let quantise = |x: f64| if q > 0.0 { ((x + shift) / q).round() * q } else { x };
-    let angle = time.iter().map(|&t| quantise(a * (w * t).sin())).collect();
+    let n = CYCLES * SPC;
+    let time: Vec<f64> = (0..n).map(|i| i as f64 / (f * SPC as f64)).collect();
+    let angle = time.iter().map(|&t| ((a * (w * t).sin() + shift) / q).round() * q).collect();
     let torque = time
         .iter()
         .map(|&t| {
             let omega = a * w * (w * t).cos();
             let alpha = -a * w * w * (w * t).sin();
-            j * alpha - joint.evaluate(load, omega).unwrap().signed_torque() + offset + noise * normal(&mut rng)
+            j * alpha - joint.evaluate(load, omega).unwrap().signed_torque() + OFFSET + NOISE * normal(&mut rng)
         })
         .collect();
     Record { name: format!("direct {load} N {f} Hz J {j}"), angle: Some(angle), angular_velocity: None, torque, load: vec![load; n], time }
 }
 
 /// A rig record (`pinjoint cycle`'s simulation) with inertia `j`.
-fn rig(load: f64, f: f64, j: f64, cycles: usize, spc: usize, noise: f64, offset: f64, seed: u64) -> Record {
+fn rig(load: f64, f: f64, j: f64, seed: u64) -> Record {
     let mut cfg = RigConfig::default();
     cfg.model.friction.boundary_friction_coefficient = TRUTH;
     cfg.rig.load = load;
     cfg.rig.frequency = f;
     cfg.rig.inertia = j;
     cfg.rig.breakaway_factor = 1.3;
-    if let Ok(t) = std::env::var("RTOL") { cfg.rig.rtol = t.parse().unwrap(); cfg.rig.atol = 0.1 * cfg.rig.rtol; }
-    let s = run_cycles(&cfg, cycles as f64, spc).expect("rig runs");
-    let mut r = record(&format!("rig {load} N {f} Hz J {j}"), &s, noise, 0.0, offset, seed);
+    let s = run_cycles(&cfg, CYCLES as f64, SPC).expect("rig runs");
+    let mut r = record(&format!("rig {load} N {f} Hz J {j}"), &s, NOISE, 0.0, OFFSET, seed);
     // The encoder's counts at a random phase against the motion (each seed its own pattern).
     let shift = ENCODER * SplitMix::new(seed ^ 0xA5A5).uniform();
     r.angle = Some(s.iter().map(|x| ((x.angle + shift) / ENCODER).round() * ENCODER).collect());
@@ -139,7 +138,7 @@ fn direct_records_with_j_0_005_and_2_over_loads_frequencies_and_seeds() {
     for (k, &(j, loads, f)) in cases.iter().enumerate() {
         for seed in 0..4u64 {
             let recs: Vec<Record> =
-                loads.iter().enumerate().map(|(i, &p)| direct(p, f, j, 8, 1000, 0.5, 0.3, 1000 * k as u64 + 10 * seed + i as u64)).collect();
+                loads.iter().enumerate().map(|(i, &p)| direct(p, f, j, 1000 * k as u64 + 10 * seed + i as u64)).collect();
             out.push(judge(&fitted(&recs), j, &format!("direct J {j} {loads:?} N {f} Hz seed {seed}")));
         }
     }
@@ -153,7 +152,7 @@ fn rig_records_with_j_005_and_2_over_loads_frequencies_and_seeds() {
     for (k, &(j, loads, f)) in cases.iter().enumerate() {
         for seed in 0..6u64 {
             let recs: Vec<Record> =
-                loads.iter().enumerate().map(|(i, &p)| rig(p, f, j, 8, 1000, 0.5, 0.3, 1000 * k as u64 + 10 * seed + i as u64)).collect();
+                loads.iter().enumerate().map(|(i, &p)| rig(p, f, j, 1000 * k as u64 + 10 * seed + i as u64)).collect();
             out.push(judge(&fitted(&recs), j, &format!("rig J {j} {loads:?} N {f} Hz seed {seed}")));
         }
     }
@@ -179,7 +178,7 @@ fn rig_ringing_does_not_bias_j_at_any_sampling() {
 
 #[test]
 fn a_given_inertia_is_used_as_given_and_reported() {
-    let recs = [direct(20e3, 1.0, 0.05, 8, 1000, 0.5, 0.3, 7)];
+    let recs = [direct(20e3, 1.0, 0.05, 7)];
     let c = calibrate(&recs, &Options { inertia: Some(0.05), ..Options::default() }).unwrap();
     assert!(c.inertia_estimate.is_none());
     assert_eq!(c.inertia, 0.05);
@@ -187,7 +186,7 @@ fn a_given_inertia_is_used_as_given_and_reported() {
     assert!(!c.correlation_keys.iter().any(|k| k == INERTIA), "{:?}", c.correlation_keys);
     // The wrong J given biases μ_c (the 0.35 % for J = 0.05 on J = 0 records) where the
     // fitted one does not.
-    let zero = [direct(20e3, 1.0, 0.0, 8, 1000, 0.5, 0.3, 8)];
+    let zero = [direct(20e3, 1.0, 0.0, 8)];
     let wrong = calibrate(&zero, &Options { inertia: Some(0.05), ..Options::default() }).unwrap().estimates[0].value;
     let free = fitted(&zero);
     println!("J = 0 records: mu_c {wrong} with J = 0.05 given, {} with J fitted ({})", free.estimates[0].value, free.inertia);
