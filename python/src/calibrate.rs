@@ -195,5 +195,5 @@ pub fn calibrate<'py>(
         ..def
     };
     let cal = py.detach(|| fit(&records, &options)).map_err(|e| PyValueError::new_err(calibration_error(&e)))?;
-    Ok((to_dict(py, &cal)?, PyParams { inner: cal.params.clone() }))
+    Ok((to_dict(py, &cal)?, PyParams { inner: cal.params }))
 }
