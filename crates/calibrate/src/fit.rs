@@ -165,10 +165,12 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         return Err(CalibrationError::Unidentifiable {
             what: format!(
                 "only {} of {total} samples remain after the exclusion rule (|omega| >= {} x peak speed, {} s after each reversal); \
-                 at least {needed} are needed for {np} fitted quantities: record more strokes or a finer sampling",
+                 at least {needed} are needed for {np} fitted quantities{}: record more strokes or a finer sampling{}",
                 points.len(),
                 options.exclusion.speed_fraction,
-                options.exclusion.settle_time
+                options.exclusion.settle_time,
+                if fit_j { " (with the inertia fitted, a sample also needs the differentiator's window, its half-width each side, inside its stroke)" } else { "" },
+                if fit_j { ", or give the inertia" } else { "" }
             ),
         });
     }
