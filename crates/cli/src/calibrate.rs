@@ -46,7 +46,9 @@ estimated from its angle (refined by simulation, then fitted jointly: the residu
 K_p × the angle error), and every sample after the start-up (the first reversal plus --settle-time) is fitted, \
 reversals included; a recorded angular_velocity is ignored. μ_c, T0 and the --fit keys (model keys and rig.* keys of the [rig] table, e.g. rig.breakaway_factor, \
 rig.servo_time_constant; not the excitation or integrator settings) by Levenberg-Marquardt, intervals from \
-the Jacobian as above. The rig constants not fitted come from --params [rig]. Each evaluation simulates \
+the Jacobian as above. The rig constants not fitted come from --params [rig]; J is --inertia or [rig] inertia, \
+else the quasi-static fit's J (clamped into the rig's range; --fit rig.inertia fits it through the simulation). \
+Each evaluation simulates \
 every record: at most --max-simulations of them (refused beyond), 2e5 samples and 3600 s of records. \
 Use it when the quasi-static fit is biased by stick-slip (slow strokes with a static peak) or to fit the \
 rig's own keys.\n\n\
