@@ -27,6 +27,8 @@ fn bench_quick_writes_the_report_and_plots() {
         "Dopri5 + table",
         "RK4, 100 samples/cycle, h = 1e-3 s",
         "Not measured in this run: skipped (--no-fmu)",
+        "## Calibration of long records",
+        "`pinjoint calibrate` on 100000 rows",
         "--quick",
     ] {
         assert!(md.contains(needle), "BENCHMARKS.md lacks {needle:?}:\n{md}");

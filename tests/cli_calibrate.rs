@@ -131,3 +131,53 @@ fn model_rig_fits_the_breakaway_factor_through_the_rig_simulation() {
     assert!(e.contains("rig.rtol") && e.contains("integrator"), "{e}");
     assert!(ok(&["calibrate", "--help"]).stdout.contains("--model rig"));
 }
+
+#[test]
+fn inertia_fitted_or_given_and_long_records_averaged() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (a, b) = (cycle(tmp.path(), "a", "20000"), cycle(tmp.path(), "b", "40000"));
+    let out = tmp.path().join("cal");
+    let json = |extra: &[&str]| -> serde_json::Value {
+        let mut args = vec!["calibrate", "--input", s(&a), "--load", "20000", "--input", s(&b), "--load", "40000", "--output", s(&out), "--json"];
+        args.extend_from_slice(extra);
+        serde_json::from_str(ok(&args).stdout.trim()).expect("one JSON object")
+    };
+    // Neither --inertia nor [rig] inertia: J is fitted (the rig's J is 0.05 kg·m²), with its interval.
+    let v = json(&[]);
+    let j = &v["inertia_estimate"];
+    let (jv, lo, hi) = (j["value"].as_f64().unwrap(), j["ci95"][0].as_f64().unwrap(), j["ci95"][1].as_f64().unwrap());
+    assert!(v["inertia_fitted"].as_bool().unwrap() && (jv - 0.05).abs() < 2.5e-3 && lo <= 0.05 && 0.05 <= hi, "{v}");
+    assert_eq!(v["inertia"].as_f64().unwrap(), jv);
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(report.contains("Inertia: rig.inertia = ") && report.contains("fitted"), "{report}");
+    // --inertia gives it; so does [rig] inertia in --params (and --inertia wins over the file).
+    let v = json(&["--inertia", "0.05"]);
+    assert!(!v["inertia_fitted"].as_bool().unwrap() && v["inertia_estimate"].is_null() && v["inertia"].as_f64() == Some(0.05), "{v}");
+    let params = tmp.path().join("j.toml");
+    std::fs::write(&params, "[rig]\ninertia = 0.06\n").unwrap();
+    let v = json(&["--params", s(&params)]);
+    assert!(!v["inertia_fitted"].as_bool().unwrap() && v["inertia"].as_f64() == Some(0.06), "{v}");
+    let v = json(&["--params", s(&params), "--inertia", "0.05"]);
+    assert_eq!(v["inertia"].as_f64(), Some(0.05));
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(report.contains("rig.inertia = 0.05 kg.m2 given (not fitted)"), "{report}");
+    // A parameter file without [rig] inertia leaves J fitted.
+    std::fs::write(&params, "[friction]\nboundary_friction_coefficient = 0.1\n").unwrap();
+    assert!(json(&["--params", s(&params)])["inertia_fitted"].as_bool().unwrap());
+    // The sample budget: 16002 rows over 4000 are averaged in blocks of 5; fit.csv thinned to
+    // at most 1000 rows, or not written.
+    let v = json(&["--max-samples", "4000", "--fit-csv-rows", "1000"]);
+    assert_eq!((v["samples_read"].as_u64(), v["block_length"].as_u64()), (Some(16002), Some(5)), "{v}");
+    let mu = v["parameters"]["friction.boundary_friction_coefficient"]["value"].as_f64().unwrap();
+    assert!((mu - 0.105).abs() < 1e-3, "{mu}");
+    let csv = std::fs::read_to_string(out.join("fit.csv")).unwrap();
+    let rows = csv.lines().count() - 1;
+    assert!((700..=1000).contains(&rows), "{rows}");
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(report.contains("averaged in blocks of 5") && report.contains("every 4-th of the"), "{report}");
+    std::fs::remove_file(out.join("fit.csv")).unwrap();
+    json(&["--fit-csv-rows", "0"]);
+    assert!(!out.join("fit.csv").exists());
+    let e = fail(&["calibrate", "--input", s(&a), "--load", "20000", "--output", s(&out), "--max-samples", "10"]);
+    assert!(e.contains("--max-samples = 10"), "{e}");
+}

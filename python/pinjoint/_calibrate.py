@@ -12,7 +12,19 @@ from ._coerce import ParamsLike, as_float_array
 from ._native import MU_C, Params, _calibrate
 
 #: The keys of ``pinjoint calibrate --json``, in its order.
-JSON_KEYS = ("parameters", "rms_residual", "points_used", "points_excluded", "torque_offset", "warnings")
+JSON_KEYS = (
+    "parameters",
+    "rms_residual",
+    "points_used",
+    "points_excluded",
+    "torque_offset",
+    "inertia",
+    "inertia_fitted",
+    "inertia_estimate",
+    "samples_read",
+    "block_length",
+    "warnings",
+)
 
 _COLUMNS = {"time": "s", "angle": "rad", "angular_velocity": "rad/s", "torque": "N.m", "load": "N"}
 
@@ -26,14 +38,19 @@ class Calibration(dict):
       rms_residual     N*m, over the samples used
       points_used, points_excluded
       torque_offset    {"value", "standard_error", "ci95"} of T0 (N*m), when fitted
+      inertia          the rotating inertia J used (kg*m^2): fitted, or given
+      inertia_fitted   True when J was fitted (no ``inertia`` and no ``rig.inertia`` in params)
+      inertia_estimate {"value", "standard_error", "ci95"} of J (kg*m^2), when fitted
+      samples_read     samples in the records; block_length: the block averaging of long
+                       records to the sample budget (1: none)
       warnings         identifiability and interval warnings (list of str)
     and besides:
       excluded         per record: record, speed_threshold (rad/s), reversals (s), windows
                        [{start, end (s), reason, samples}], low_speed, settling, used
       estimate_details per key (and torque_offset): unit, initial, standard_error_iid,
                        standard_error_cluster, bootstrap_ci95
-      strokes, dof, condition, correlation_keys, correlation, inertia (kg*m^2),
-      half_widths (samples), evaluations
+      strokes, dof, condition, correlation_keys, correlation (rig.inertia among them when
+      J is fitted), half_widths (samples), evaluations
       series           per record: time, angle, angular_velocity, load, torque (measured),
                        inertia_torque, fitted_torque (N*m) and used, as arrays
 
@@ -119,6 +136,7 @@ def calibrate(
     half_width: Optional[int] = None,
     resamples: Optional[int] = None,
     seed: Optional[int] = None,
+    max_samples: Optional[int] = None,
 ) -> Calibration:
     """Fit the model's parameters to measured torque cycles, as ``pinjoint calibrate`` does.
 
@@ -131,8 +149,8 @@ def calibrate(
                 number); optional ``name`` for messages. Other columns are ignored, so
                 ``dict(pinjoint.simulate_cycle(...), load=20e3)`` is a record.
     params      start values and fixed parameters: None (the paper's), a Params, a mapping
-                or a TOML file; a file's or mapping's ``rig.inertia`` is the default inertia
-                (as with ``--params``)
+                or a TOML file; a file's or mapping's ``rig.inertia`` is the given inertia
+                when ``inertia`` is None (as with ``--params``)
     fit         the parameter keys fitted (``section.key``); mu_c,
                 ``friction.boundary_friction_coefficient``, is always fitted (linear least
                 squares on the model's shape); any other key is fitted by Levenberg-Marquardt
@@ -140,14 +158,18 @@ def calibrate(
     model       "core": the quasi-static model T = J*alpha + sign(w)*mu*R*P + T0 (the only
                 one the calibration library offers; fitting through the rig simulation is
                 not available)
-    inertia     J, kg*m^2, whose J*alpha is subtracted (``--inertia``; default: params'
-                rig.inertia, else 0.05)
+    inertia     J, kg*m^2, given: J*alpha is subtracted (``--inertia``). Default: params'
+                rig.inertia if it has one, else J is fitted with mu_c and T0 (linear least
+                squares; result["inertia_estimate"] holds it with its interval)
     fit_offset  fit a torque-sensor offset T0 (default True; ``--no-offset`` is False)
     speed_fraction, settle_time   the exclusion rule (``--speed-fraction``, default 0.3, and
                 ``--settle-time``, s, default 0.1): samples slower than the fraction of the
                 record's peak speed, and the first settle_time after each reversal, are left out
     half_width  Savitzky-Golay half-width in samples (default 1/40 of a stroke, >= 3)
     resamples   bootstrap resamples over strokes (default 1000; 0: none); seed its seed
+    max_samples the most samples, all records together, that enter the fit (``--max-samples``,
+                default 1e6, at least 1000); longer records are averaged in blocks of
+                m = ceil(samples / max_samples) consecutive samples straight from the arrays
 
     Returns a :class:`Calibration` (a dict with the CLI's ``--json`` keys, the excluded
     windows, warnings and fitted series; ``.params`` the calibrated Params). A bad record
@@ -191,5 +213,6 @@ def calibrate(
         _count("half_width", half_width),
         _count("resamples", resamples),
         _count("seed", seed),
+        _count("max_samples", max_samples),
     )
     return Calibration(content, calibrated)

@@ -72,6 +72,7 @@ def _calibrate(
     half_width: Optional[int],
     resamples: Optional[int],
     seed: Optional[int],
+    max_samples: Optional[int] = None,
 ) -> Tuple[Dict[str, Any], Params]: ...
 def param_table() -> List[Dict[str, Any]]:
     """name, symbol, unit, range, default, description, source of every model parameter."""

@@ -1,11 +1,11 @@
 //! `_calibrate`: fit the model to measured torque cycles through `pinjoint-calibrate`, the same
 //! library and the same options as `pinjoint calibrate` (its `--json` content, bit for bit).
 
-use crate::cycle::config;
+use crate::cycle::{config, table_of};
 use crate::messages::short;
 use crate::params::PyParams;
 use numpy::{IntoPyArray, PyReadonlyArray1};
-use pinjoint_calibrate::{calibrate as fit, Calibration, CalibrationError, Estimate, ExclusionRule, Options, Record};
+use pinjoint_calibrate::{calibrate_columns as fit, Calibration, CalibrationError, Columns, Estimate, ExclusionRule, Options};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -60,7 +60,7 @@ fn to_dict<'py>(py: Python<'py>, c: &Calibration) -> PyResult<Bound<'py, PyDict>
     for e in &c.estimates {
         params.set_item(&e.key, estimate(py, e)?)?;
     }
-    for e in c.estimates.iter().chain(c.offset.iter()) {
+    for e in c.estimates.iter().chain(c.inertia_estimate.iter()).chain(c.offset.iter()) {
         let x = PyDict::new(py);
         x.set_item("unit", e.unit)?;
         x.set_item("initial", e.initial)?;
@@ -76,6 +76,13 @@ fn to_dict<'py>(py: Python<'py>, c: &Calibration) -> PyResult<Bound<'py, PyDict>
     if let Some(o) = &c.offset {
         d.set_item("torque_offset", estimate(py, o)?)?;
     }
+    d.set_item("inertia", c.inertia)?;
+    d.set_item("inertia_fitted", c.inertia_estimate.is_some())?;
+    if let Some(j) = &c.inertia_estimate {
+        d.set_item("inertia_estimate", estimate(py, j)?)?;
+    }
+    d.set_item("samples_read", c.samples_read)?;
+    d.set_item("block_length", c.block_length)?;
     d.set_item("warnings", c.warnings.clone())?;
     d.set_item("estimate_details", details)?;
     let excluded = PyList::empty(py);
@@ -105,7 +112,6 @@ fn to_dict<'py>(py: Python<'py>, c: &Calibration) -> PyResult<Bound<'py, PyDict>
     d.set_item("condition", c.condition)?;
     d.set_item("correlation_keys", c.correlation_keys.clone())?;
     d.set_item("correlation", c.correlation.clone())?;
-    d.set_item("inertia", c.inertia)?;
     d.set_item("half_widths", c.half_widths.clone())?;
     d.set_item("evaluations", c.evaluations)?;
     let series = PyList::empty(py);
@@ -127,10 +133,12 @@ fn to_dict<'py>(py: Python<'py>, c: &Calibration) -> PyResult<Bound<'py, PyDict>
 }
 
 /// Fit `records` (see [`RecordArgs`]) as `pinjoint calibrate` does. `params`: None, a Params,
-/// a mapping or a TOML path (its `[rig] inertia` is the default `inertia`, as with `--params`).
-/// `None` options take the library's defaults. Returns (result dict, calibrated Params).
+/// a mapping or a TOML path (a `[rig] inertia` in a file or mapping is the given J when
+/// `inertia` is None, as with `--params`; without either, J is fitted). `None` options take the
+/// library's defaults; records longer than `max_samples` together are block-averaged straight
+/// from the arrays. Returns (result dict, calibrated Params).
 #[pyfunction]
-#[pyo3(name = "_calibrate", signature = (records, params, fit_keys, inertia, fit_offset, speed_fraction, settle_time, half_width, resamples, seed))]
+#[pyo3(name = "_calibrate", signature = (records, params, fit_keys, inertia, fit_offset, speed_fraction, settle_time, half_width, resamples, seed, max_samples=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn calibrate<'py>(
     py: Python<'py>,
@@ -144,26 +152,38 @@ pub fn calibrate<'py>(
     half_width: Option<usize>,
     resamples: Option<usize>,
     seed: Option<u64>,
+    max_samples: Option<usize>,
 ) -> PyResult<(Bound<'py, PyDict>, PyParams)> {
     let cfg = config(params, &PyDict::new(py))?;
-    let vec = |a: &PyReadonlyArray1<'py, f64>| a.as_array().to_vec();
-    let records: Vec<Record> = records
+    let file_inertia = table_of(params)?
+        .get("rig")
+        .and_then(|r| r.as_table())
+        .is_some_and(|r| r.contains_key("inertia"))
+        .then_some(cfg.rig.inertia);
+    // The arrays are contiguous float64 (the Python half makes them so): borrowed, not copied.
+    fn slice<'a>(name: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [f64]> {
+        a.as_slice().map_err(|_| PyValueError::new_err(format!("record {name}: a column is not a contiguous float64 array")))
+    }
+    let records: Vec<Columns<'_>> = records
         .iter()
-        .map(|(name, t, a, w, q, p)| Record {
-            name: name.clone(),
-            time: vec(t),
-            angle: a.as_ref().map(vec),
-            angular_velocity: w.as_ref().map(vec),
-            torque: vec(q),
-            load: vec(p),
+        .map(|(name, t, a, w, q, p)| {
+            Ok(Columns {
+                name,
+                time: slice(name, t)?,
+                angle: a.as_ref().map(|a| slice(name, a)).transpose()?,
+                angular_velocity: w.as_ref().map(|w| slice(name, w)).transpose()?,
+                torque: slice(name, q)?,
+                load: slice(name, p)?,
+            })
         })
-        .collect();
+        .collect::<PyResult<_>>()?;
     let def = Options::default();
     let rule = ExclusionRule::default();
     let options = Options {
         params: cfg.model,
         fit: fit_keys,
-        inertia: inertia.unwrap_or(cfg.rig.inertia),
+        inertia: inertia.or(file_inertia),
+        max_samples: max_samples.unwrap_or(def.max_samples),
         fit_offset,
         exclusion: ExclusionRule {
             speed_fraction: speed_fraction.unwrap_or(rule.speed_fraction),
@@ -175,5 +195,5 @@ pub fn calibrate<'py>(
         ..def
     };
     let cal = py.detach(|| fit(&records, &options)).map_err(|e| PyValueError::new_err(calibration_error(&e)))?;
-    Ok((to_dict(py, &cal)?, PyParams { inner: cal.params.clone() }))
+    Ok((to_dict(py, &cal)?, PyParams { inner: cal.params }))
 }

@@ -24,7 +24,18 @@ fn rig_err(e: RigError) -> PyErr {
 /// The rig configuration: `params` (None, a Params, a mapping possibly with a "rig" section,
 /// or a TOML file path), then the `rig` keyword overrides; parsed and validated by the library.
 pub fn config(params: Option<&Bound<'_, PyAny>>, rig: &Bound<'_, PyDict>) -> PyResult<RigConfig> {
-    let mut table: toml::Table = match params {
+    let mut table = table_of(params)?;
+    let overrides = PyDict::new(rig.py());
+    overrides.set_item("rig", rig)?;
+    merge_mapping(&mut table, overrides.as_any())?;
+    crate::values::check_keys(&table, true)?;
+    RigConfig::from_toml_str(&to_text(&table)?).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// The parameter table `params` gives (None, a Params, a TOML path or a mapping), before any
+/// `[rig]` overrides.
+pub fn table_of(params: Option<&Bound<'_, PyAny>>) -> PyResult<toml::Table> {
+    let table: toml::Table = match params {
         None => toml::Table::new(),
         Some(p) if p.is_none() => toml::Table::new(),
         Some(p) => {
@@ -40,11 +51,7 @@ pub fn config(params: Option<&Bound<'_, PyAny>>, rig: &Bound<'_, PyDict>) -> PyR
             }
         }
     };
-    let overrides = PyDict::new(rig.py());
-    overrides.set_item("rig", rig)?;
-    merge_mapping(&mut table, overrides.as_any())?;
-    crate::values::check_keys(&table, true)?;
-    RigConfig::from_toml_str(&to_text(&table)?).map_err(|e| PyValueError::new_err(e.to_string()))
+    Ok(table)
 }
 
 /// Simulate `cycles` strokes with `samples_per_cycle` samples each; `rig` holds the `[rig]`

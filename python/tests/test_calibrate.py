@@ -19,12 +19,16 @@ LOADS = (20e3, 40e3)
 @pytest.fixture(scope="module")
 def records():
     """Two rig records (0.3 Hz, +-40 deg, 3 strokes; breakaway peaks at every reversal, the
-    rig's inertia and servo) at two loads, made with mu_c = 0.105."""
+    rig's inertia and servo) at two loads, made with mu_c = 0.105, with 0.05 N*m of torque
+    noise (without any, the fitted mu_c and J carry only the rig integrator's error, 3e-9 and
+    3e-6 relative, and their intervals, 1e-9 wide, need not cover that)."""
     params = pinjoint.Params({pinjoint.MU_C: MU})
+    rng = np.random.default_rng(1)
     out = []
     for load in LOADS:
         c = pinjoint.simulate_cycle(0.3, np.radians(40.0), load, cycles=3, samples_per_cycle=1000, params=params)
-        out.append({"name": f"P{load:g}", "time": c["time"], "angle": c["angle"], "torque": c["torque"], "load": load})
+        torque = c["torque"] + 0.05 * rng.standard_normal(len(c["torque"]))
+        out.append({"name": f"P{load:g}", "time": c["time"], "angle": c["angle"], "torque": torque, "load": load})
     return out
 
 
@@ -74,6 +78,29 @@ def test_equals_cli_json(fitted, records, cli, tmp_path):
     for key in cli_json:
         assert fitted[key] == cli_json[key], key
     assert pinjoint.Params.from_toml(tmp_path / "out" / "calibrated.toml") == fitted.params
+
+
+def test_inertia_fitted_unless_given(fitted, records):
+    # No inertia and no rig.inertia in params: J is fitted with mu_c and T0, with its interval
+    # (the records' rig has J = 0.05 kg*m^2), and reported as fitted.
+    assert fitted["inertia_fitted"] is True
+    j = fitted["inertia_estimate"]
+    assert j["ci95"][0] <= 0.05 <= j["ci95"][1], j
+    assert fitted["inertia"] == j["value"]
+    assert "rig.inertia" in fitted["correlation_keys"]
+    given = pinjoint.calibrate(records, inertia=0.05, resamples=0)
+    assert given["inertia_fitted"] is False and "inertia_estimate" not in given and given["inertia"] == 0.05
+    assert "rig.inertia" not in given["correlation_keys"]
+
+
+def test_long_records_are_block_averaged_to_the_sample_budget(records):
+    n = sum(len(r["time"]) for r in records)
+    avg = pinjoint.calibrate(records, max_samples=n // 2, resamples=0)
+    assert avg["block_length"] == 2 and avg["samples_read"] == n
+    assert sum(len(s["time"]) for s in avg["series"]) <= n // 2 + len(records)
+    assert abs(avg["parameters"][pinjoint.MU_C]["value"] - MU) < 1e-3
+    with pytest.raises(ValueError, match="max_samples"):
+        pinjoint.calibrate(records, max_samples=10)
 
 
 def test_result_pickles_and_forms(fitted, records):

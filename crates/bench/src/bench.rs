@@ -2,7 +2,8 @@
 //! this machine: `DIR/BENCHMARKS.md` with SVG plots beside it.
 
 use super::bench_eval::{self, EvalResult};
-use super::bench_report::{write_report, FmuSection, Report};
+use super::bench_calibrate;
+use super::bench_report::{write_calibration_only, write_report, FmuSection, Report};
 use super::bench_rig::{self, RigResult};
 use super::bench_throughput;
 use pinjoint_cli::error::{CliError, Result};
@@ -24,6 +25,8 @@ fewer output samples and the table fidelity;\n  \
 throughput: a whole `pinjoint sweep` process over 1e6 rows (wall time, peak memory, and at 1e5 rows), the \
 library's cold evaluation per point, and the SciPy implementation of the model (benches/scipy_reference.py, \
 run by the same Python) per point, as ratios;\n  \
+calibration of long records: a whole `pinjoint calibrate` process on a record of 1e6 and of 1e7 rows \
+(wall time, peak memory, fit.csv size, the fitted μ_c and J against the truth; --only-calibration runs it alone);\n  \
 per FMU step through fmpy: set inputs + doStep + get outputs per fidelity as a ratio to the PassThrough \
 FMU in the same loop (needs target/fmu/*.fmu from `cargo run --release -p fmu_build` and a Python with \
 fmpy, by default .venv/bin/python; without them the report says so).\n\
@@ -46,6 +49,10 @@ pub struct BenchCmd {
     /// Skip the FMU section
     #[arg(long)]
     pub no_fmu: bool,
+    /// Run only the long-record calibration case and write its section alone to
+    /// DIR/BENCHMARKS_calibration.md (BENCHMARKS.md is written by the whole run only)
+    #[arg(long)]
+    pub only_calibration: bool,
 }
 
 fn progress(what: &str) {
@@ -94,16 +101,23 @@ fn fmu_section(cmd: &BenchCmd) -> FmuSection {
 pub fn run(cmd: &BenchCmd) -> Result<()> {
     let started = Instant::now();
     let dir = output_dir(&cmd.output)?;
+    let work = tempfile::tempdir().map_err(|source| CliError::Write { path: std::env::temp_dir(), source })?;
+    if cmd.only_calibration {
+        let calibration = bench_calibrate::measure(cmd.quick, work.path(), &progress);
+        let path = write_calibration_only(&dir, &calibration, cmd.quick, started.elapsed().as_secs_f64())?;
+        return report_written(&[path]);
+    }
     let eval: Vec<EvalResult> = bench_eval::measure(cmd.quick, &progress);
     progress("per cycle simulation: reference run");
     let reference = bench_rig::reference(cmd.quick)?;
     let reps = if cmd.quick { 1 } else { 5 };
     let rig: Vec<RigResult> = bench_rig::measure(&bench_rig::cases(cmd.quick), &reference, reps, &|l| progress(&format!("rig: {l}")));
-    // The sweep children run before any Python child: their peak memory is read per child.
-    let work = tempfile::tempdir().map_err(|source| CliError::Write { path: std::env::temp_dir(), source })?;
+    // The sweep and calibrate children run before any Python child: their peak memory is read
+    // per child.
     let throughput = bench_throughput::measure(cmd.quick, &cmd.python, work.path(), &progress);
+    let calibration = bench_calibrate::measure(cmd.quick, work.path(), &progress);
     let fmu = fmu_section(cmd);
-    let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, seconds: started.elapsed().as_secs_f64() };
+    let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, calibration, seconds: started.elapsed().as_secs_f64() };
     let paths = write_report(&dir, &report)?;
     if paths.is_empty() {
         return Err(CliError::Invalid("bench: nothing written".into()));

@@ -37,6 +37,14 @@ pub enum ThroughputError {
         /// The raw `wait4` status word.
         status: i32,
     },
+    /// `pinjoint calibrate` ran but did not exit with status 0 or printed no JSON (status -2).
+    #[error("pinjoint calibrate over {rows} rows failed (status {status})")]
+    Calibrate {
+        /// Rows of the record.
+        rows: usize,
+        /// The raw `wait4` status word (-2: unreadable JSON).
+        status: i32,
+    },
     /// The library rejected its default parameters.
     #[error(transparent)]
     Params(#[from] pinjoint::ParamError),

@@ -142,14 +142,19 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-/// Measure. `quick`: 1e4 rows, few SciPy points. `work` is a scratch directory.
-pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, ThroughputError> {
-    // The `pinjoint` binary of the same build, beside this one (target/release/).
+/// The `pinjoint` binary of the same build, beside this one (target/release/).
+pub fn pinjoint_exe() -> Result<PathBuf, ThroughputError> {
     let own = std::env::current_exe().map_err(ThroughputError::OwnExecutable)?;
     let exe = own.with_file_name(format!("pinjoint{}", std::env::consts::EXE_SUFFIX));
     if !exe.is_file() {
         return Err(ThroughputError::NoPinjoint(exe));
     }
+    Ok(exe)
+}
+
+/// Measure. `quick`: 1e4 rows, few SciPy points. `work` is a scratch directory.
+pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, ThroughputError> {
+    let exe = pinjoint_exe()?;
     let rows = if quick { 10_000 } else { 1_000_000 };
     let reps = if quick { 1 } else { 3 };
     let pts = points(rows);

@@ -4,6 +4,7 @@
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 mod bench_error;
+mod bench_calibrate;
 mod bench_rig;
 mod bench_throughput;
 mod eval_path;

@@ -1,23 +1,36 @@
-//! The fit: linear least squares for μ_c (and the torque offset) on the model's own shape, or
-//! Levenberg–Marquardt when other parameters are fitted too; then the uncertainty.
+//! The quasi-static fit: linear least squares for μ_c, the inertia J (unless given) and the
+//! torque offset on the model's own shape, or Levenberg–Marquardt when other parameters are
+//! fitted too; then the uncertainty.
+//!
+//! The recorded torque is T = sign(ω)·R·P·μ_fluid + μ_c·sign(ω)·R·P/γ2 + J·α + T_0: linear in
+//! μ_c, J and T_0 (the shape does not depend on any of them), so the three are one linear
+//! least-squares problem at the other parameters, and their joint covariance (hence the
+//! correlation of J with μ_c) comes out of the same normal matrix. α is the second derivative
+//! of the angle by the symmetric Savitzky–Golay cubic ([`crate::derivative`]): a symmetric
+//! window has no lag, and its attenuation of a sine's α, (ωh)²/14 for a window of half-length h,
+//! is 4e-4 at the default 1/40 of a stroke, far below the 5 % J is asked to.
+//! Identifiability: α is largest at the stroke ends and changes sign within each stroke, while
+//! the friction's shape keeps its sign through the stroke, so the columns are nearly orthogonal
+//! whenever the used samples cover both halves of a stroke; the fit reports J with its interval
+//! and the condition number, and J is poorly determined only when J·α is small against the
+//! noise (slow strokes): then give it (`inertia`).
 
-use super::coords::{resolve, Extra, Transform, MU_C};
+use super::coords::{resolve, Extra, Transform};
 use super::error::CalibrationError;
+use super::estimates::{check_options, estimate, keys_of, warnings, INERTIA, MIN_POINTS_PER_PARAMETER};
+use super::lm::{Adapter, Residuals};
+use super::derivative::matched_taps;
 use super::model::{shapes, Shape};
+use super::options::{Model, Options};
 use super::prepare::{prepare, Prepared, STICK_SLIP_IRREGULARITY};
 use super::record::Record;
 use super::result::{Calibration, Estimate, Series};
-use super::uncertainty::{analyse, Uncertainty, MIN_BOOTSTRAP_CLUSTERS, MIN_CLUSTERS};
-use super::{Model, Options};
-use super::lm::{Adapter, Residuals};
+use super::uncertainty::analyse;
 use levenberg_marquardt::LevenbergMarquardt;
 use nalgebra::{DMatrix, DVector};
 use pinjoint::Params;
 use std::cell::RefCell;
 use std::collections::HashMap;
-
-/// Used samples needed per fitted quantity.
-pub const MIN_POINTS_PER_PARAMETER: usize = 10;
 
 /// One used sample.
 #[derive(Debug, Clone, Copy)]
@@ -26,7 +39,9 @@ struct Point {
     row: usize,
     load: f64,
     omega: f64,
-    /// T − J·α (N·m).
+    /// α (rad/s²).
+    alpha: f64,
+    /// T, less J·α when J is given (N·m).
     y: f64,
     cluster: usize,
     /// Time since the sample's settling window began (s).
@@ -36,7 +51,8 @@ struct Point {
 /// Extensions of the settling window at most (each by half the stated settling time).
 pub const MAX_SETTLE_EXTENSIONS: usize = 6;
 
-/// Fit `records` as `options` asks. See the crate documentation for the model.
+/// Fit `records` with the quasi-static model ([`Model::Core`]) as `options` asks (its `model` is
+/// not read). See the crate documentation for the model.
 ///
 /// The settling window is then checked against the data: if the residual just after it (the
 /// next half settling time, averaged over every stroke with the sign of the motion) differs
@@ -44,10 +60,7 @@ pub const MAX_SETTLE_EXTENSIONS: usize = 6;
 /// servo ringing lasts longer than the window, and the window is extended by half the settling
 /// time and the fit repeated (at most [`MAX_SETTLE_EXTENSIONS`] times, and only while at least
 /// half the samples stay in use). The report says so.
-pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, CalibrationError> {
-    if options.model == Model::Rig {
-        return super::rig_fit::calibrate_rig(records, options);
-    }
+pub fn calibrate_core(records: &[Record], options: &Options) -> Result<Calibration, CalibrationError> {
     let mut o = options.clone();
     let step = 0.5 * options.exclusion.settle_time;
     let (mut best, mut deviates) = calibrate_once(records, &o)?;
@@ -81,11 +94,22 @@ pub fn calibrate(records: &[Record], options: &Options) -> Result<Calibration, C
 
 /// The mean of sign(ω)·residual over used samples with `since` in [settle, 1.5·settle) against
 /// the rest: Some(difference) when it exceeds 3 standard errors of the window's mean.
-fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64) -> Option<f64> {
+///
+/// `inflation` of each point's record: 1/Σv² of its matched-filter taps v (1 without the
+/// filter): filtered white noise has Σv² of the variance per point but the same variance of a
+/// long mean, so the points' variance over their count is too small by that factor.
+fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64, inflation: &[f64]) -> Option<f64> {
     let (mut a, mut b) = (Vec::new(), Vec::new());
+    let (mut fa, mut fb) = (0.0, 0.0);
     for (i, p) in points.iter().enumerate() {
         let v = r[i] * p.omega.signum();
-        if p.since < 1.5 * settle { a.push(v) } else { b.push(v) }
+        if p.since < 1.5 * settle {
+            a.push(v);
+            fa += inflation[p.rec];
+        } else {
+            b.push(v);
+            fb += inflation[p.rec];
+        }
     }
     if a.len() < 10 || b.len() < 10 {
         return None;
@@ -93,7 +117,8 @@ fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64) -> Option<f
     let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
     let (ma, mb) = (mean(&a), mean(&b));
     let var = |v: &[f64], m: f64| v.iter().map(|x| (x - m).powi(2)).sum::<f64>() / (v.len() - 1) as f64;
-    let se = (var(&a, ma) / a.len() as f64 + var(&b, mb) / b.len() as f64).sqrt();
+    let (fa, fb) = (fa / a.len() as f64, fb / b.len() as f64);
+    let se = (var(&a, ma) * fa / a.len() as f64 + var(&b, mb) * fb / b.len() as f64).sqrt();
     ((ma - mb).abs() > 3.0 * se).then_some(ma - mb)
 }
 
@@ -105,7 +130,9 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
     check_options(options)?;
     let extras = resolve(&options.fit, &options.params, &options.rig, false)?;
     let prepared = records.iter().map(|r| prepare(r, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
-    let j_inertia = options.inertia;
+    // J given: J·α subtracted; J fitted: α is a column of the linear problem.
+    let j_given = options.inertia.unwrap_or(0.0);
+    let fit_j = options.inertia.is_none();
     let mut clusters: HashMap<(usize, usize), usize> = HashMap::new();
     let mut points = Vec::new();
     for (ri, p) in prepared.iter().enumerate() {
@@ -118,24 +145,32 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
                     row,
                     load: p.load[row],
                     omega: p.omega[row],
-                    y: p.torque[row] - j_inertia * p.alpha[row],
+                    alpha: p.alpha[row],
+                    y: p.torque[row] - j_given * p.alpha[row],
                     cluster,
                     since: p.since[row],
                 });
             }
         }
     }
-    let np = 1 + usize::from(options.fit_offset) + extras.len();
+    // The fitted points: with J fitted, the matched filter's centres (whose window lies in one
+    // stroke's used samples), the targets filtered; else every used sample.
+    let filter = Filter::new(&prepared, &points, fit_j);
+    let support = points;
+    let points: Vec<Point> = filter.centres.iter().map(|&(c, r)| Point { y: filter.apply(r, c, |i| support[i].y), ..support[c] }).collect();
+    let np = 1 + usize::from(fit_j) + usize::from(options.fit_offset) + extras.len();
     let total: usize = prepared.iter().map(|p| p.time.len()).sum();
     let needed = (MIN_POINTS_PER_PARAMETER * np).max(20);
     if points.len() < needed {
         return Err(CalibrationError::Unidentifiable {
             what: format!(
                 "only {} of {total} samples remain after the exclusion rule (|omega| >= {} x peak speed, {} s after each reversal); \
-                 at least {needed} are needed for {np} fitted quantities: record more strokes or a finer sampling",
+                 at least {needed} are needed for {np} fitted quantities{}: record more strokes or a finer sampling{}",
                 points.len(),
                 options.exclusion.speed_fraction,
-                options.exclusion.settle_time
+                options.exclusion.settle_time,
+                if fit_j { " (with the inertia fitted, a sample also needs the differentiator's window, its half-width each side, inside its stroke)" } else { "" },
+                if fit_j { ", or give the inertia" } else { "" }
             ),
         });
     }
@@ -149,10 +184,22 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
             ),
         });
     }
-    let ident = |i: usize| (prepared[points[i].rec].name.clone(), points[i].row);
-    let load_speed: Vec<(f64, f64)> = points.iter().map(|p| (p.load, p.omega)).collect();
+    let ident = |i: usize| (prepared[support[i].rec].name.clone(), support[i].row);
+    // The friction is evaluated at the smoothed velocity (a raw difference of a quantised angle
+    // can be noisier than slow strokes are fast).
+    let load_speed: Vec<(f64, f64)> = support.iter().map(|p| (p.load, p.omega)).collect();
     let y = DVector::from_iterator(points.len(), points.iter().map(|p| p.y));
-    let problem = Problem { load_speed: &load_speed, y: &y, base: options.params, extras: &extras, offset: options.fit_offset, ident: &ident };
+    let alpha: Vec<f64> = if fit_j { points.iter().map(|p| p.alpha).collect() } else { Vec::new() };
+    let problem = Problem {
+        load_speed: &load_speed,
+        alpha: fit_j.then_some(&alpha[..]),
+        filter: &filter,
+        y: &y,
+        base: options.params,
+        extras: &extras,
+        offset: options.fit_offset,
+        ident: &ident,
+    };
 
     // Start: the extras at their start values, μ_c and T_0 by linear least squares.
     let mut beta = DVector::zeros(np);
@@ -191,18 +238,21 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
 
     // Estimates in the parameters' own units.
     let params = problem.params_at(&beta);
-    let keys = keys_of(&extras, options.fit_offset);
+    let keys = keys_of(&extras, fit_j, options.fit_offset);
     let transforms: Vec<(Transform, &'static str, f64)> = extras
         .iter()
         .map(|e| (e.transform, e.key.unit(), e.start))
         .chain(std::iter::once((Transform::Identity, "1", options.params.friction.boundary_friction_coefficient)))
+        .chain(fit_j.then_some((Transform::Identity, "kg.m2", 0.0)))
         .chain(options.fit_offset.then_some((Transform::Identity, "N.m", 0.0)))
         .collect();
     let mut estimates: Vec<Estimate> =
         (0..np).map(|k| estimate(&keys[k], transforms[k], beta[k], &u, k)).collect();
     let offset = options.fit_offset.then(|| estimates.pop().expect("offset is last"));
+    let inertia_estimate = fit_j.then(|| estimates.pop().expect("J follows mu_c"));
     let mu = estimates.pop().expect("mu_c follows the extras");
     estimates.insert(0, mu);
+    let j_used = inertia_estimate.as_ref().map_or(j_given, |e| e.value);
 
     let mut warnings = warnings(&extras, &jac, &model, &u, &estimates, &keys, clusters.len(), options);
     let mean_abs = y.iter().map(|v| v.abs()).sum::<f64>() / y.len() as f64;
@@ -224,9 +274,21 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         }
     }
     let rss = r.norm_squared();
-    let series = series(&prepared, &params, &beta, options, np)?;
-    let points_used = points.len();
-    let deviation = settle_deviation(&points, &r, options.exclusion.settle_time);
+    if let Some(e) = &inertia_estimate
+        && e.value < 0.0
+        && e.ci95.1 < 0.0
+    {
+        warnings.push(format!(
+            "the fitted inertia {INERTIA} = {} kg.m2 is negative (95 % interval up to {} kg.m2): the recorded torque is not \
+             T = J*alpha + friction + offset (is the torque's sign the direction of motion?)",
+            e.value, e.ci95.1
+        ));
+    }
+    let series = series(&prepared, &params, &beta, j_used, options.fit_offset, np)?;
+    // Every used sample enters the fit (as a fitted point or in a window of one).
+    let points_used = support.len();
+    let inflation: Vec<f64> = filter.taps.iter().map(|v| 1.0 / v.iter().map(|x| x * x).sum::<f64>()).collect();
+    let deviation = settle_deviation(&points, &r, options.exclusion.settle_time, &inflation);
     Ok((Calibration {
         model: Model::Core,
         rig: None,
@@ -238,7 +300,7 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         correlation_keys: keys,
         correlation: u.correlation.clone(),
         condition: u.condition,
-        rms_residual: (rss / points_used as f64).sqrt(),
+        rms_residual: (rss / r.len() as f64).sqrt(),
         points_used,
         points_excluded: total - points_used,
         strokes: clusters.len(),
@@ -247,131 +309,103 @@ fn calibrate_once(records: &[Record], options: &Options) -> Result<(Calibration,
         half_widths: prepared.iter().map(|p| p.half_width).collect(),
         exclusions: prepared.into_iter().map(|p| p.exclusion).collect(),
         warnings,
-        inertia: j_inertia,
+        inertia: j_used,
+        inertia_estimate,
+        samples_read: total,
+        block_length: 1,
         evaluations,
         settle_time: options.exclusion.settle_time,
         series,
     }, deviation))
 }
 
-pub(crate) fn check_options(o: &Options) -> Result<(), CalibrationError> {
-    let bad = |what: String| Err(CalibrationError::Option(what));
-    if !(o.inertia.is_finite() && o.inertia >= 0.0) {
-        return bad(format!("inertia = {} kg.m2 is invalid: it must be a finite number >= 0", o.inertia));
-    }
-    let f = o.exclusion.speed_fraction;
-    if !(0.0..1.0).contains(&f) {
-        return bad(format!("exclusion speed fraction = {f} is invalid: it must be in [0, 1)"));
-    }
-    let s = o.exclusion.settle_time;
-    if !(s.is_finite() && s >= 0.0) {
-        return bad(format!("exclusion settle time = {s} s is invalid: it must be a finite number >= 0 s"));
-    }
-    if o.half_width == Some(0) {
-        return bad("differentiator half-width = 0 samples is invalid: it must be >= 1".into());
-    }
-    Ok(())
-}
-
-pub(crate) fn keys_of(extras: &[Extra], offset: bool) -> Vec<String> {
-    extras.iter().map(|e| e.key.name()).chain(std::iter::once(MU_C.to_string())).chain(offset.then(|| "torque_offset".to_string())).collect()
-}
-
-pub(crate) fn estimate(key: &str, (t, unit, initial): (Transform, &'static str, f64), b: f64, u: &Uncertainty, k: usize) -> Estimate {
-    let slope = t.slope(b);
-    let (lo, hi) = u.ci95[k];
-    Estimate {
-        key: key.to_string(),
-        unit,
-        value: t.inverse(b),
-        initial,
-        standard_error: slope * u.standard_error[k],
-        standard_error_iid: slope * u.standard_error_iid[k],
-        standard_error_cluster: u.standard_error_cluster.as_ref().map(|s| slope * s[k]),
-        ci95: (t.inverse(b + lo), t.inverse(b + hi)),
-        bootstrap_ci95: u.bootstrap_ci95.as_ref().map(|c| (t.inverse(b + c[k].0), t.inverse(b + c[k].1))),
-    }
-}
-
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn warnings(
-    extras: &[Extra],
-    jac: &DMatrix<f64>,
-    model: &DVector<f64>,
-    u: &Uncertainty,
-    estimates: &[Estimate],
-    keys: &[String],
-    clusters: usize,
-    o: &Options,
-) -> Vec<String> {
-    let mut w = Vec::new();
-    let scale = model.norm().max(f64::MIN_POSITIVE);
-    for (k, e) in extras.iter().enumerate() {
-        // ∂T/∂β for a log coordinate is the torque change per unit relative change.
-        let rel = jac.column(k).norm() / scale;
-        if rel < 1e-3 {
-            w.push(format!(
-                "{} is not identifiable from these records: a 1 % change of it moves the fitted torque by {:.2e} % (rms); \
-                 its interval means nothing (e.g. viscosity from records that never leave the boundary regime)",
-                e.key.name(),
-                rel
-            ));
-        }
-    }
-    for e in estimates {
-        if e.value != 0.0 && (e.standard_error / e.value.abs()) > 0.5 {
-            w.push(format!("{} is poorly determined: its standard error is {:.0} % of its value", e.key, 100.0 * e.standard_error / e.value.abs()));
-        }
-    }
-    if u.condition > 1e6 {
-        let p = keys.len();
-        let (mut best, mut pair) = (0.0, (0, 0));
-        for a in 0..p {
-            for b in a + 1..p {
-                if u.correlation[a][b].abs() > best {
-                    best = u.correlation[a][b].abs();
-                    pair = (a, b);
-                }
-            }
-        }
-        w.push(format!(
-            "the fitted quantities are nearly collinear (condition number {:.3e}); the strongest correlation is {} with {} ({:.4})",
-            u.condition, keys[pair.0], keys[pair.1], u.correlation[pair.0][pair.1]
-        ));
-    }
-    if clusters < MIN_CLUSTERS {
-        w.push(format!(
-            "only {clusters} strokes: the intervals assume independent residuals and are likely too narrow (cluster-robust errors need {MIN_CLUSTERS})"
-        ));
-    } else if clusters < MIN_BOOTSTRAP_CLUSTERS && o.resamples > 0 {
-        w.push(format!("only {clusters} strokes: no bootstrap (it needs {MIN_BOOTSTRAP_CLUSTERS}); intervals from the cluster-robust errors"));
-    }
-    let mu = estimates[0].value;
-    if mu < 0.0 {
-        w.push(format!("fitted {MU_C} = {mu} is negative: the records are not described by this model"));
-    }
-    w
-}
-
 /// Every sample of every record, measured and fitted.
-fn series(prepared: &[Prepared], params: &Params, beta: &DVector<f64>, o: &Options, np: usize) -> Result<Vec<Series>, CalibrationError> {
-    let off = if o.fit_offset { beta[np - 1] } else { 0.0 };
+fn series(prepared: &[Prepared], params: &Params, beta: &DVector<f64>, inertia: f64, offset: bool, np: usize) -> Result<Vec<Series>, CalibrationError> {
+    let off = if offset { beta[np - 1] } else { 0.0 };
     let mu = params.friction.boundary_friction_coefficient;
     prepared
         .iter()
         .map(|p| {
             let pts: Vec<(f64, f64)> = p.load.iter().copied().zip(p.omega.iter().copied()).collect();
             let s = shapes(params, &pts, &|i| (p.name.clone(), i))?;
-            let inertia_torque: Vec<f64> = p.alpha.iter().map(|a| o.inertia * a).collect();
+            let inertia_torque: Vec<f64> = p.alpha.iter().map(|a| inertia * a).collect();
             let fitted = s.iter().zip(&inertia_torque).map(|(s, ja)| ja + s.fluid + mu * s.boundary + off).collect();
             Ok(p.series(inertia_torque, fitted, p.stroke.iter().map(Option::is_some).collect()))
         })
         .collect()
 }
 
-/// The model over the used samples, in the fit coordinates β = [extras…, μ_c, T_0?].
+/// The matched filter ([`crate::derivative::matched_taps`]) from the used samples (the support)
+/// to the fitted points. With J fitted, a used sample is a fitted point (a centre) when the
+/// filter's whole window, ±k samples of its record's differentiator half-width k, lies in
+/// the same stroke's used samples on a uniform time step; its target and the model's other
+/// terms are the taps' mean over the window, its α the differentiator's. Records whose α is not
+/// the angle's second derivative (a velocity column) or whose sampling is uneven get the taps
+/// [1] (no filter; the fitted J is then as good as that record's α). With J given, every used sample is a centre with the taps [1] (the fit as
+/// before J was fitted).
+struct Filter {
+    /// (index in the support, record) of each fitted point.
+    centres: Vec<(usize, usize)>,
+    /// The taps of each record.
+    taps: Vec<Vec<f64>>,
+}
+
+/// Relative deviation of a time step from the record's typical step still taken as uniform.
+const UNIFORM_STEP: f64 = 1e-3;
+
+impl Filter {
+    fn new(prepared: &[Prepared], support: &[Point], fit_j: bool) -> Self {
+        let mut uniform: Vec<Vec<bool>> = Vec::new();
+        let taps: Vec<Vec<f64>> = prepared
+            .iter()
+            .map(|p| {
+                let n = p.time.len();
+                let dt = (p.time[n - 1] - p.time[0]) / (n - 1) as f64;
+                let steps: Vec<bool> = p.time.windows(2).map(|w| ((w[1] - w[0]) / dt - 1.0).abs() <= UNIFORM_STEP).collect();
+                let mostly = 2 * steps.iter().filter(|u| **u).count() >= steps.len();
+                uniform.push(steps);
+                if fit_j && p.alpha_from_angle && mostly { matched_taps(p.half_width) } else { vec![1.0] }
+            })
+            .collect();
+        // Prefix counts of uneven steps per record, to test a window in O(1).
+        let uneven: Vec<Vec<usize>> = uniform
+            .iter()
+            .map(|u| std::iter::once(0).chain(u.iter().scan(0, |c, ok| { *c += usize::from(!ok); Some(*c) })).collect())
+            .collect();
+        let mut centres = Vec::with_capacity(support.len());
+        for (c, p) in support.iter().enumerate() {
+            let h = taps[p.rec].len() / 2;
+            if h == 0 {
+                centres.push((c, p.rec));
+                continue;
+            }
+            let (Some(lo), Some(hi)) = (c.checked_sub(h).map(|i| &support[i]), support.get(c + h)) else { continue };
+            let inside = |q: &Point, row: usize| q.rec == p.rec && q.cluster == p.cluster && q.row == row;
+            // Rows increase within the support, so matching ends mean the window is contiguous.
+            let ok = p.row >= h && inside(lo, p.row - h) && inside(hi, p.row + h);
+            if ok && uneven[p.rec][p.row + h] == uneven[p.rec][p.row - h] {
+                centres.push((c, p.rec));
+            }
+        }
+        Filter { centres, taps }
+    }
+
+    /// The taps' mean of `f` over the window of support index `c` (record `r`).
+    fn apply(&self, r: usize, c: usize, f: impl Fn(usize) -> f64) -> f64 {
+        let v = &self.taps[r];
+        let h = v.len() / 2;
+        v.iter().enumerate().map(|(m, w)| w * f(c + m - h)).sum()
+    }
+}
+
+/// The model over the used samples, in the fit coordinates β = [extras…, μ_c, J?, T_0?].
 struct Problem<'a> {
+    /// Load and speed at the support (every used sample).
     load_speed: &'a [(f64, f64)],
+    /// From the support to the fitted points.
+    filter: &'a Filter,
+    /// α at the used samples when J is fitted.
+    alpha: Option<&'a [f64]>,
     y: &'a DVector<f64>,
     base: Params,
     extras: &'a [Extra],
@@ -389,34 +423,68 @@ impl Problem<'_> {
         p
     }
 
+    /// The shapes at the fitted points (the matched filter's means of the support's shapes).
     fn shapes(&self, beta: &DVector<f64>) -> Result<Vec<Shape>, CalibrationError> {
         let mut p = self.params_at(beta);
         // μ_c does not enter the shape; keep the shape's evaluation valid if a step makes it < 0.
         p.friction.boundary_friction_coefficient = 0.0;
-        shapes(&p, self.load_speed, self.ident)
+        let raw = shapes(&p, self.load_speed, self.ident)?;
+        let f = self.filter;
+        Ok(f.centres
+            .iter()
+            .map(|&(c, r)| Shape { fluid: f.apply(r, c, |i| raw[i].fluid), boundary: f.apply(r, c, |i| raw[i].boundary) })
+            .collect())
     }
 
     fn model(&self, beta: &DVector<f64>) -> Result<DVector<f64>, CalibrationError> {
         let s = self.shapes(beta)?;
-        let (mu, off) = self.linear_of(beta);
-        Ok(DVector::from_iterator(s.len(), s.iter().map(|s| s.fluid + mu * s.boundary + off)))
+        Ok(self.model_of(&s, beta))
     }
 
-    fn linear_of(&self, beta: &DVector<f64>) -> (f64, f64) {
+    /// fluid + μ_c·boundary + J·α + T_0 at every used sample.
+    fn model_of(&self, s: &[Shape], beta: &DVector<f64>) -> DVector<f64> {
+        let (mu, j, off) = self.linear_of(beta);
+        let alpha = |i: usize| self.alpha.map_or(0.0, |a| a[i]);
+        DVector::from_iterator(s.len(), s.iter().enumerate().map(|(i, s)| s.fluid + mu * s.boundary + j * alpha(i) + off))
+    }
+
+    /// (μ_c, J, T_0) of β (J and T_0 are 0 when not fitted).
+    fn linear_of(&self, beta: &DVector<f64>) -> (f64, f64, f64) {
         let m = self.extras.len();
-        (beta[m], if self.offset { beta[m + 1] } else { 0.0 })
+        let j = usize::from(self.alpha.is_some());
+        (beta[m], if j == 1 { beta[m + 1] } else { 0.0 }, if self.offset { beta[m + 1 + j] } else { 0.0 })
     }
 
-    /// μ_c and T_0 by linear least squares at the extras of `beta` (QR of the shape columns).
+    /// The linear columns at sample i: boundary shape, α (J fitted), 1 (offset fitted).
+    fn linear_column(&self, s: &[Shape], i: usize, c: usize) -> f64 {
+        match (c, self.alpha) {
+            (0, _) => s[i].boundary,
+            (1, Some(a)) => a[i],
+            _ => 1.0,
+        }
+    }
+
+    /// μ_c, J (when fitted) and T_0 (when fitted) by linear least squares at the extras of
+    /// `beta` (QR of the shape columns).
     fn linear_solve(&self, beta: &DVector<f64>) -> Result<DVector<f64>, CalibrationError> {
         let s = self.shapes(beta)?;
-        let cols = 1 + usize::from(self.offset);
-        let a = DMatrix::from_fn(s.len(), cols, |i, c| if c == 0 { s[i].boundary } else { 1.0 });
+        let cols = 1 + usize::from(self.alpha.is_some()) + usize::from(self.offset);
+        let a = DMatrix::from_fn(s.len(), cols, |i, c| self.linear_column(&s, i, c));
         let rhs = DVector::from_iterator(s.len(), s.iter().zip(self.y.iter()).map(|(s, y)| y - s.fluid));
+        let norms: Vec<f64> = (0..cols).map(|k| a.column(k).norm()).collect();
         let qr = a.qr();
         let r = qr.r();
-        if (0..cols).any(|k| r[(k, k)].abs() <= 1e-12 * r[(0, 0)].abs().max(f64::MIN_POSITIVE)) {
-            return Err(CalibrationError::Unidentifiable { what: "the boundary shape and the offset are collinear in these records".into() });
+        // Each column's R diagonal against that column's own norm: the part of it the columns
+        // before it do not explain.
+        let collinear = (0..cols).any(|k| r[(k, k)].abs() <= 1e-12 * norms[k].max(f64::MIN_POSITIVE));
+        if collinear {
+            let what = if self.alpha.is_some() {
+                "the boundary shape, the angular acceleration (for the inertia J) and the offset are collinear in these records: \
+                 give the inertia (--inertia) or record both directions of motion"
+            } else {
+                "the boundary shape and the offset are collinear in these records"
+            };
+            return Err(CalibrationError::Unidentifiable { what: what.into() });
         }
         let qty = qr.q().transpose() * rhs;
         r.solve_upper_triangular(&qty)
@@ -424,12 +492,11 @@ impl Problem<'_> {
     }
 
     /// Jacobian of the model with respect to β (central differences for the extras, exact for
-    /// μ_c and T_0), and the model.
+    /// μ_c, J and T_0), and the model.
     fn jacobian(&self, beta: &DVector<f64>) -> Result<(DMatrix<f64>, DVector<f64>), CalibrationError> {
         let s = self.shapes(beta)?;
         let n = s.len();
-        let (mu, off) = self.linear_of(beta);
-        let model = DVector::from_iterator(n, s.iter().map(|s| s.fluid + mu * s.boundary + off));
+        let model = self.model_of(&s, beta);
         let m = self.extras.len();
         let mut j = DMatrix::zeros(n, beta.len());
         for k in 0..m {
@@ -440,10 +507,9 @@ impl Problem<'_> {
             let d = (self.model(&bp)? - self.model(&bm)?) / (2.0 * h);
             j.set_column(k, &d);
         }
-        for i in 0..n {
-            j[(i, m)] = s[i].boundary;
-            if self.offset {
-                j[(i, m + 1)] = 1.0;
+        for c in 0..beta.len() - m {
+            for i in 0..n {
+                j[(i, m + c)] = self.linear_column(&s, i, c);
             }
         }
         Ok((j, model))

@@ -23,6 +23,9 @@ pub struct Prepared {
     pub omega: Vec<f64>,
     /// Angular acceleration (rad/s²).
     pub alpha: Vec<f64>,
+    /// Whether `alpha` is the angle's cubic second derivative (no velocity column), so that
+    /// [`crate::derivative::matched_taps`] apply.
+    pub alpha_from_angle: bool,
     /// Recorded torque (N·m).
     pub torque: Vec<f64>,
     /// Radial load on the pin (N).
@@ -118,6 +121,7 @@ pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>)
         angle: record.angle.clone(),
         omega,
         alpha,
+        alpha_from_angle: record.angular_velocity.is_none() && record.angle.is_some(),
         torque: record.torque.clone(),
         load: record.load.clone(),
         stroke: c.stroke,

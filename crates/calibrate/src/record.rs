@@ -41,14 +41,61 @@ impl Record {
 
     /// Check lengths, finiteness, time order, load and the plausibility of the angle range.
     pub fn validate(&self) -> Result<(), CalibrationError> {
-        let rec = || self.name.clone();
+        self.columns().validate()
+    }
+
+    /// The record's columns, borrowed.
+    pub fn columns(&self) -> Columns<'_> {
+        Columns {
+            name: &self.name,
+            time: &self.time,
+            angle: self.angle.as_deref(),
+            angular_velocity: self.angular_velocity.as_deref(),
+            torque: &self.torque,
+            load: &self.load,
+        }
+    }
+}
+
+/// A record's columns borrowed from elsewhere (e.g. NumPy arrays), so that a long record can be
+/// checked and block-averaged ([`crate::decimate`]) without a copy of every sample.
+#[derive(Debug, Clone, Copy)]
+pub struct Columns<'a> {
+    /// A name for messages and the report.
+    pub name: &'a str,
+    /// Sample times (s), strictly increasing.
+    pub time: &'a [f64],
+    /// Pin angle (rad), if recorded.
+    pub angle: Option<&'a [f64]>,
+    /// Pin angular velocity (rad/s), if recorded.
+    pub angular_velocity: Option<&'a [f64]>,
+    /// Recorded actuator torque (N·m), positive in the direction of motion.
+    pub torque: &'a [f64],
+    /// Radial load (N) at each sample.
+    pub load: &'a [f64],
+}
+
+impl Columns<'_> {
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.time.len()
+    }
+    /// True when there are no samples.
+    pub fn is_empty(&self) -> bool {
+        self.time.is_empty()
+    }
+
+    /// Check lengths, finiteness, time order, load and the plausibility of the angle range
+    /// (the checks of [`Record::validate`], sample indices those of these columns).
+    pub fn validate(&self) -> Result<(), CalibrationError> {
+        let rec = || self.name.to_string();
         let n = self.time.len();
         let mut columns: Vec<(&'static str, &'static str, &[f64])> =
-            vec![("time", "s", &self.time), ("torque", "N.m", &self.torque), ("load", "N", &self.load)];
-        if let Some(a) = &self.angle {
+            vec![("time", "s", self.time), ("torque", "N.m", self.torque), ("load", "N", self.load)];
+        if let Some(a) = self.angle {
             columns.push(("angle", "rad", a));
         }
-        if let Some(w) = &self.angular_velocity {
+        if let Some(w) = self.angular_velocity {
             columns.push(("angular_velocity", "rad/s", w));
         }
         if self.angle.is_none() && self.angular_velocity.is_none() {
@@ -71,7 +118,7 @@ impl Record {
         if let Some(row) = self.load.iter().position(|&p| p <= 0.0) {
             return Err(CalibrationError::Load { record: rec(), row, value: self.load[row] });
         }
-        if let Some(a) = &self.angle {
+        if let Some(a) = self.angle {
             let range = range_of(a);
             if range > MAX_ANGLE_RANGE {
                 return Err(CalibrationError::AngleRange {
@@ -83,7 +130,7 @@ impl Record {
                 });
             }
         }
-        if let Some(w) = &self.angular_velocity {
+        if let Some(w) = self.angular_velocity {
             let peak = w.iter().fold(0.0f64, |m, x| m.max(x.abs()));
             if peak > MAX_SPEED {
                 return Err(CalibrationError::SpeedRange { record: rec(), peak, limit: MAX_SPEED, as_rad: peak.to_radians() });

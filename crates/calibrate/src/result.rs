@@ -2,7 +2,7 @@
 
 use super::command::Command;
 use super::exclusion::RecordExclusion;
-use super::Model;
+use super::options::Model;
 use pinjoint::rig::RigParams;
 use pinjoint::Params;
 
@@ -90,8 +90,18 @@ pub struct Calibration {
     pub exclusions: Vec<RecordExclusion>,
     /// Identifiability and interval warnings.
     pub warnings: Vec<String>,
-    /// Inertia subtracted (kg·m²).
+    /// The inertia J used (kg·m²): the fitted one when [`Calibration::inertia_estimate`] is
+    /// Some, else the given one (`Options::inertia`).
     pub inertia: f64,
+    /// J fitted with its interval (key `rig.inertia`, unit kg.m2), when it was not given; for
+    /// the rig model, the quasi-static fit's J that the simulation used (unless `rig.inertia`
+    /// is among the `--fit` keys, then it is in `estimates`).
+    pub inertia_estimate: Option<Estimate>,
+    /// Samples read, over all records, before any block averaging.
+    pub samples_read: usize,
+    /// Block length m of the averaging of long records (1: none; see [`crate::decimate`]):
+    /// `points_used` and `points_excluded` count the averaged samples.
+    pub block_length: usize,
     /// Settling time used (s): the stated one, or longer when the data asked for it.
     pub settle_time: f64,
     /// Levenberg–Marquardt evaluations (0 for the linear fit).

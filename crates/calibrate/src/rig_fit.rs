@@ -32,13 +32,14 @@ use super::command::{fit_sine, fit_sine_near, Command, COMMAND_TOLERANCE};
 use super::coords::{resolve, Extra, Transform};
 use super::error::CalibrationError;
 use super::exclusion::{Reason, Window};
-use super::fit::{check_options, estimate, keys_of, warnings};
+use super::estimates::{check_options, estimate, keys_of, warnings, INERTIA, MIN_POINTS_PER_PARAMETER};
+use super::fit::calibrate_core;
+use super::lm::{Adapter, Residuals};
+use super::options::{Model, Options};
 use super::prepare::prepare;
 use super::record::Record;
 use super::result::{Calibration, Estimate};
 use super::uncertainty::analyse;
-use super::{Model, Options};
-use super::lm::{Adapter, Residuals};
 use levenberg_marquardt::LevenbergMarquardt;
 use nalgebra::{DMatrix, DVector};
 use pinjoint::rig::{FnExcitation, Inputs, RigConfig, RigSim, Sample};
@@ -47,8 +48,7 @@ use std::cell::RefCell;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
-/// Default [`Options::max_simulations`].
-pub const DEFAULT_MAX_SIMULATIONS: usize = 200;
+pub use super::options::DEFAULT_MAX_SIMULATIONS;
 /// Most samples over all records the rig fit takes.
 pub const MAX_RIG_SAMPLES: usize = 200_000;
 /// Most record time over all records the rig fit takes (s).
@@ -59,8 +59,6 @@ pub const MAX_COMMAND_ITERATIONS: usize = 4;
 pub const MAX_ROUNDS: usize = 4;
 /// Finite-difference step in the fit coordinates (μ_c: absolute; ln/logit: relative).
 const STEP: f64 = 1e-4;
-/// Used samples needed per fitted quantity (as the quasi-static fit).
-const MIN_POINTS_PER_PARAMETER: usize = super::fit::MIN_POINTS_PER_PARAMETER;
 
 /// One record as the rig fit sees it.
 #[derive(Clone)]
@@ -306,16 +304,32 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     }
     options.params.validate()?;
     check_options(options)?;
-    let mut base = RigConfig { model: options.params, rig: options.rig };
-    base.rig.inertia = options.inertia;
-    base.validate()?;
-    let extras = resolve(&options.fit, &options.params, &base.rig, true)?;
     // The rig fit uses the angle only: a recorded angular velocity is dropped (when there is an
     // angle), so that a stick-slipping record, whose sampled velocity disagrees with the angle's
     // smoothed derivative, is not refused as inconsistent.
     let stripped: Vec<Record> =
         records.iter().map(|r| if r.angle.is_some() { Record { angular_velocity: None, ..r.clone() } } else { r.clone() }).collect();
     let records = &stripped[..];
+    // Start: μ_c (and J when it is not given) from the quasi-static fit; the given μ_c and the
+    // rig's J if that fails.
+    let core = Options { model: Model::Core, fit: Vec::new(), resamples: 0, ..options.clone() };
+    let core_fit = calibrate_core(records, &core).ok();
+    let mu0 = core_fit.as_ref().map_or(options.params.friction.boundary_friction_coefficient, |c| c.estimates[0].value);
+    let (lo_j, hi_j) = match pinjoint::rig::RIG_PARAMS.iter().find(|s| s.key == "inertia").map(|s| s.range) {
+        Some(pinjoint::params::Range::HalfOpen(lo, hi)) => (lo, hi),
+        _ => (0.0, f64::INFINITY),
+    };
+    let mut base = RigConfig { model: options.params, rig: options.rig };
+    let j_from_core = options.inertia.is_none().then(|| core_fit.as_ref().and_then(|c| c.inertia_estimate.clone())).flatten();
+    base.rig.inertia = match (options.inertia, &j_from_core) {
+        (Some(j), _) => j,
+        // The simulation needs J in the rig's range: the fitted J is clamped into it.
+        (None, Some(e)) => e.value.clamp(lo_j, hi_j * (1.0 - 1e-9)),
+        (None, None) => options.rig.inertia,
+    };
+    base.validate()?;
+    let extras = resolve(&options.fit, &options.params, &base.rig, true)?;
+    let inertia_estimate = j_from_core.filter(|_| !extras.iter().any(|e| e.key.name() == INERTIA));
     let prepared = records.iter().map(|r| prepare(r, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
     let samples: usize = records.iter().map(Record::len).sum();
     let duration: f64 = records.iter().map(|r| r.time[r.len() - 1] - r.time[0]).sum();
@@ -389,9 +403,7 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         });
     }
 
-    // Start: μ_c from the quasi-static fit (the given one if that fails), the keys at theirs.
-    let core = Options { model: Model::Core, fit: Vec::new(), resamples: 0, ..options.clone() };
-    let mu0 = super::fit::calibrate(records, &core).map_or(options.params.friction.boundary_friction_coefficient, |c| c.estimates[0].value);
+    // The keys at their start values.
     let mut beta = DVector::zeros(np);
     for (k, e) in extras.iter().enumerate() {
         beta[k] = e.transform.forward(e.start).expect("checked by resolve");
@@ -477,7 +489,7 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     let r = problem.y.rows(0, torque_rows) - &model;
     let jac_t = jac.view((0, 0), (torque_rows, np)).into_owned();
     let cfg = problem.config_at(&beta);
-    let keys = keys_of(&extras, options.fit_offset);
+    let keys = keys_of(&extras, false, options.fit_offset);
     let transforms: Vec<(Transform, &'static str, f64)> = extras
         .iter()
         .enumerate()
@@ -546,6 +558,9 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         exclusions,
         warnings: warn,
         inertia: cfg.rig.inertia,
+        inertia_estimate,
+        samples_read: samples,
+        block_length: 1,
         settle_time: options.exclusion.settle_time,
         evaluations,
         simulations: problem.sims.load(Ordering::SeqCst).div_ceil(records_n),

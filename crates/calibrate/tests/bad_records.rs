@@ -22,7 +22,7 @@ fn sine(f: f64, n: usize, cycles: usize) -> Record {
 }
 
 fn err(records: &[Record]) -> CalibrationError {
-    calibrate(records, &Options { inertia: 0.0, ..Options::default() }).unwrap_err()
+    calibrate(records, &Options { inertia: Some(0.0), ..Options::default() }).unwrap_err()
 }
 
 /// The error for the 0.3 Hz record after `edit`; its message must hold every one of `words`.
@@ -37,7 +37,7 @@ fn refused(edit: impl FnOnce(&mut Record), words: &[&str]) -> CalibrationError {
 
 #[test]
 fn the_clean_record_fits() {
-    let c = calibrate(&[sine(0.3, 400, 6)], &Options { inertia: 0.0, ..Options::default() }).unwrap();
+    let c = calibrate(&[sine(0.3, 400, 6)], &Options { inertia: Some(0.0), ..Options::default() }).unwrap();
     assert!((c.estimates[0].value - 0.12).abs() < 1e-5, "{}", c.estimates[0].value);
 }
 
@@ -132,7 +132,7 @@ fn nan_rows_and_bad_values() {
 fn bad_options_are_named() {
     let r = sine(0.3, 400, 6);
     let bad = |o: Options| calibrate(std::slice::from_ref(&r), &o).unwrap_err().to_string();
-    assert!(bad(Options { inertia: -1.0, ..Options::default() }).contains("inertia = -1 kg.m2"));
+    assert!(bad(Options { inertia: Some(-1.0), ..Options::default() }).contains("inertia = -1 kg.m2"));
     assert!(bad(Options { fit: vec!["lubricant.viscosityy".into()], ..Options::default() }).contains("unknown parameter `lubricant.viscosityy`"));
     let mut o = Options::default();
     o.exclusion.speed_fraction = 1.5;

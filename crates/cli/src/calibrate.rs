@@ -10,6 +10,7 @@ use pinjoint_calibrate as cal;
 use super::calibrate_report::{fit_csv, report_html, report_json, report_md, svgs, toml_file};
 use super::error::{CliError, Result};
 use super::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
+use cal::decimate::BlockMean;
 use cal::{Calibration, ExclusionRule, Model, Options, Record};
 use clap::Args;
 use pinjoint::rig::RigConfig;
@@ -25,10 +26,15 @@ Each --input is a CSV with a header naming (as `pinjoint cycle` writes them): ti
 and/or angular_velocity [rad/s], torque [N·m] (the recorded actuator torque, positive in the direction \
 of motion) and load [N] (or --load for the whole file). Other columns are ignored; '#' starts a comment line.\n\n\
 The recorded torque is modelled as T = J·α + sign(ω)·μ(P,|ω|)·R·P + T0 with μ = μ_fluid + μ_c/γ2: \
-J·α is subtracted (J = rig.inertia of --params, default 0.05 kg·m², or --inertia), T0 is a fitted \
-sensor offset. μ_c is fitted by linear least squares on the model's shape (γ2 and μ_fluid do not \
-depend on μ_c); --fit adds parameter keys, fitted by Levenberg-Marquardt in log/logit coordinates. \
+the rotating inertia J is fitted with μ_c and the offset T0 (all three by linear least squares on the \
+model's shape: γ2 and μ_fluid do not depend on them), unless it is given by --inertia or by [rig] inertia \
+in --params, then J·α is subtracted. With J fitted, the torque and the model are filtered with the taps \
+that make the differentiator's α a weighted mean of the true one, so servo ringing does not bias J. \
+--fit adds parameter keys, fitted by Levenberg-Marquardt in log/logit coordinates. \
 Velocity, when not recorded, comes from the angle by a Savitzky-Golay cubic over 1/40 of a stroke.\n\n\
+Long records: beyond --max-samples samples (all inputs together, default 1e6) every input is averaged in \
+blocks of m = ceil(rows / max-samples) consecutive rows as it is read (the report says m); fit.csv holds \
+at most --fit-csv-rows rows (every k-th fitted sample; 0 for none).\n\n\
 Exclusion rule (reported): samples with |ω| below --speed-fraction × the record's peak speed (95th \
 percentile), and the first --settle-time seconds of each stroke above that speed (breakaway peak, servo \
 ringing) and of the record.\n\n\
@@ -40,12 +46,15 @@ estimated from its angle (refined by simulation, then fitted jointly: the residu
 K_p × the angle error), and every sample after the start-up (the first reversal plus --settle-time) is fitted, \
 reversals included; a recorded angular_velocity is ignored. μ_c, T0 and the --fit keys (model keys and rig.* keys of the [rig] table, e.g. rig.breakaway_factor, \
 rig.servo_time_constant; not the excitation or integrator settings) by Levenberg-Marquardt, intervals from \
-the Jacobian as above. The rig constants not fitted come from --params [rig]. Each evaluation simulates \
+the Jacobian as above. The rig constants not fitted come from --params [rig]; J is --inertia or [rig] inertia, \
+else the quasi-static fit's J (clamped into the rig's range; --fit rig.inertia fits it through the simulation). \
+Each evaluation simulates \
 every record: at most --max-simulations of them (refused beyond), 2e5 samples and 3600 s of records. \
 Use it when the quasi-static fit is biased by stick-slip (slow strokes with a static peak) or to fit the \
 rig's own keys.\n\n\
 Writes DIR/calibrated.toml (a complete parameter file for --params and as FMU start values), \
-DIR/report.md, DIR/report.html, DIR/fit.csv, DIR/torque_time.svg, DIR/torque_angle.svg, DIR/residuals.svg.\n\n\
+DIR/report.md, DIR/report.html, DIR/fit.csv (unless --fit-csv-rows 0), DIR/torque_time.svg, DIR/torque_angle.svg, \
+DIR/residuals.svg.\n\n\
 Examples:\n  \
 pinjoint calibrate --input a.csv --load 20000 --input b.csv --load 40000 --output out/cal\n  \
 pinjoint calibrate --input rig.csv --load 20000 --fit lubricant.viscosity --output out/cal --json\n  \
@@ -63,15 +72,23 @@ pub struct CalibrateCmd {
     /// one per --input in the same order (`pinjoint cycle` writes no load column)
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub load: Vec<f64>,
-    /// Parameter file (TOML): start values and fixed parameters; its [rig] inertia is subtracted
+    /// Parameter file (TOML): start values and fixed parameters; a [rig] inertia in it is the given J
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
     /// Parameter keys fitted besides friction.boundary_friction_coefficient (section.key, comma-separated)
     #[arg(long, value_name = "KEY,...", value_delimiter = ',')]
     pub fit: Vec<String>,
-    /// Rotating inertia J in kg·m² whose J·α is subtracted [default: the file's rig.inertia, else 0.05]
+    /// Rotating inertia J in kg·m², given: J·α is subtracted [default: the --params file's [rig]
+    /// inertia if it has one, else J is fitted with its interval]
     #[arg(long, value_name = "KG_M2", allow_negative_numbers = true)]
     pub inertia: Option<f64>,
+    /// The most samples, all inputs together, that enter the fit; longer inputs are averaged in
+    /// blocks of m consecutive rows as they are read (m = ceil(rows / max-samples))
+    #[arg(long, value_name = "N", default_value_t = cal::MAX_FIT_SAMPLES)]
+    pub max_samples: usize,
+    /// The most rows of fit.csv (every k-th fitted sample, k = ceil(samples / rows)); 0 writes no fit.csv
+    #[arg(long, value_name = "ROWS", default_value_t = DEFAULT_FIT_CSV_ROWS)]
+    pub fit_csv_rows: usize,
     /// Do not fit a torque offset
     #[arg(long)]
     pub no_offset: bool,
@@ -111,14 +128,24 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
         )));
     }
     let load_of = |i: usize| if cmd.load.len() == 1 { Some(cmd.load[0]) } else { cmd.load.get(i).copied() };
-    let config = match &cmd.params {
-        None => RigConfig::default(),
+    let (config, file_inertia) = match &cmd.params {
+        None => (RigConfig::default(), None),
         Some(path) => {
             let text = std::fs::read_to_string(path).map_err(|source| CliError::Read { path: path.clone(), source })?;
-            RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })?
+            let config = RigConfig::from_toml_str(&text).map_err(|source| CliError::ParamFile { path: path.clone(), source })?;
+            (config, given_inertia(&text).then_some(config.rig.inertia))
         }
     };
-    let records = cmd.input.iter().enumerate().map(|(i, p)| read_record(p, load_of(i))).collect::<Result<Vec<_>>>()?;
+    if cmd.max_samples < MIN_MAX_SAMPLES {
+        return Err(CliError::Invalid(format!("--max-samples = {} is invalid: it must be at least {MIN_MAX_SAMPLES}", cmd.max_samples)));
+    }
+    // Rows of every input (a cheap pass over the bytes), then the block length of the averaging.
+    let rows = cmd.input.iter().map(|p| count_rows(p)).collect::<Result<Vec<usize>>>()?;
+    let block = cal::decimate::block_length(rows.iter().sum(), cmd.max_samples);
+    let records = cmd.input.iter().enumerate().map(|(i, p)| read_record_blocks(p, load_of(i), block)).collect::<Result<Vec<_>>>()?;
+    if block > 1 {
+        cal::decimate::check_blocks(&records, block).map_err(|e| CliError::Invalid(format!("calibrate: {e}")))?;
+    }
     let model = if cmd.model == "rig" { Model::Rig } else { Model::Core };
     let options = Options {
         model,
@@ -126,19 +153,23 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
         max_simulations: cmd.max_simulations,
         params: config.model,
         fit: cmd.fit.iter().map(|k| k.trim().to_string()).filter(|k| !k.is_empty()).collect(),
-        inertia: cmd.inertia.unwrap_or(config.rig.inertia),
+        inertia: cmd.inertia.or(file_inertia),
+        max_samples: cmd.max_samples,
         fit_offset: !cmd.no_offset,
         exclusion: ExclusionRule { speed_fraction: cmd.speed_fraction, settle_time: cmd.settle_time },
         ..Options::default()
     };
-    let cal = cal::calibrate(&records, &options).map_err(|e| CliError::Invalid(format!("calibrate: {e}")))?;
+    let mut cal = cal::calibrate(&records, &options).map_err(|e| CliError::Invalid(format!("calibrate: {e}")))?;
+    cal.samples_read = rows.iter().sum();
+    cal.block_length = block;
+    let csv_stride = fit_csv_stride(&cal, cmd.fit_csv_rows);
     let dir = output_dir(&cmd.output)?;
     let inputs: Vec<String> = cmd.input.iter().map(|p| p.display().to_string()).collect();
     let (time_svg, angle_svg, resid_svg) = svgs(&cal)?;
     let files: [(&str, String); 6] = [
         ("calibrated.toml", toml_file(&cal, &inputs)),
-        ("report.md", report_md(&cal, &inputs)),
-        ("report.html", report_html(&cal, &inputs, [&time_svg, &angle_svg, &resid_svg])),
+        ("report.md", report_md(&cal, &inputs, csv_stride)),
+        ("report.html", report_html(&cal, &inputs, csv_stride, [&time_svg, &angle_svg, &resid_svg])),
         ("torque_time.svg", time_svg.clone()),
         ("torque_angle.svg", angle_svg.clone()),
         ("residuals.svg", resid_svg.clone()),
@@ -146,9 +177,11 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
     // Every output is refused if it is one of the inputs (same file), before anything is written.
     let read: Vec<&Path> = cmd.input.iter().map(PathBuf::as_path).chain(cmd.params.as_deref()).collect();
     let mut written = Vec::new();
-    let csv_path = dir.join("fit.csv");
-    write_atomic(&csv_path, &read, |w| fit_csv(w, &cal))?;
-    written.push(csv_path);
+    if let Some(k) = csv_stride {
+        let csv_path = dir.join("fit.csv");
+        write_atomic(&csv_path, &read, |w| fit_csv(w, &cal, k))?;
+        written.push(csv_path);
+    }
     for (name, text) in &files {
         let path = dir.join(name);
         write_text(&path, &read, text)?;
@@ -165,27 +198,81 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
 
 /// An output must not replace one of the inputs.
 fn summary(w: &mut dyn Write, c: &Calibration) -> std::io::Result<()> {
-    for e in c.estimates.iter().chain(c.offset.iter()) {
+    for e in c.estimates.iter().chain(c.inertia_estimate.iter()).chain(c.offset.iter()) {
         writeln!(
             w,
             "{} = {:.6} (standard error {:.2e}, 95 % interval {:.6} to {:.6}) {}",
             e.key, e.value, e.standard_error, e.ci95.0, e.ci95.1, if e.unit == "1" { "" } else { e.unit }
         )?;
     }
+    if c.inertia_estimate.is_none() {
+        writeln!(w, "{} = {} kg.m2 (given, not fitted)", cal::INERTIA, c.inertia)?;
+    }
     writeln!(w, "rms residual {:.4} N.m over {} samples used, {} excluded, {} strokes", c.rms_residual, c.points_used, c.points_excluded, c.strokes)?;
+    if c.block_length > 1 {
+        writeln!(w, "{} samples read, averaged in blocks of {} (the sample budget --max-samples)", c.samples_read, c.block_length)?;
+    }
     for x in &c.warnings {
         writeln!(w, "warning: {x}")?;
     }
     Ok(())
 }
 
+/// Default `--fit-csv-rows`.
+pub const DEFAULT_FIT_CSV_ROWS: usize = 100_000;
+/// The smallest `--max-samples` accepted (as the library's check).
+pub const MIN_MAX_SAMPLES: usize = 1000;
+
+/// Whether a parameter file's text sets `[rig] inertia` (then J is given, not fitted).
+fn given_inertia(text: &str) -> bool {
+    text.parse::<toml::Table>().ok().and_then(|t| t.get("rig").and_then(|r| r.as_table()).map(|r| r.contains_key("inertia"))).unwrap_or(false)
+}
+
+/// fit.csv's stride k: every k-th fitted sample, at most `rows` rows; None for no file.
+fn fit_csv_stride(c: &Calibration, rows: usize) -> Option<usize> {
+    let n: usize = c.series.iter().map(|s| s.time.len()).sum();
+    (rows > 0).then(|| n.div_ceil(rows).max(1))
+}
+
+/// Data rows of a CSV file, counted without parsing: non-blank lines not starting with `#`,
+/// less the header. An upper bound of the rows the reader takes (a quoted field spanning
+/// lines counts twice), so the block length it gives keeps the sample budget.
+pub fn count_rows(path: &Path) -> Result<usize> {
+    use std::io::BufRead;
+    let file = std::fs::File::open(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
+    let mut reader = std::io::BufReader::with_capacity(1 << 20, file);
+    let (mut lines, mut line) = (0usize, Vec::new());
+    loop {
+        line.clear();
+        let n = reader.read_until(b'\n', &mut line).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
+        if n == 0 {
+            break;
+        }
+        let t = line.trim_ascii();
+        if !t.is_empty() && t[0] != b'#' {
+            lines += 1;
+        }
+    }
+    Ok(lines.saturating_sub(1))
+}
+
 /// Read one record: the header must name `time`, `torque`, `angle` and/or `angular_velocity`,
 /// and `load` unless `load` is given; every value must be a finite number.
 pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
+    read_record_blocks(path, load, 1)
+}
+
+/// [`read_record`], streaming the file and averaging blocks of `block` consecutive rows
+/// ([`pinjoint_calibrate::decimate`]) as it reads: memory holds the averaged record only.
+pub fn read_record_blocks(path: &Path, load: Option<f64>, block: usize) -> Result<Record> {
     let file = path.display().to_string();
     let bad = |line: u64, message: String| CliError::Input { file: file.clone(), line, message };
-    let text = std::fs::read(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
-    let mut rdr = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).comment(Some(b'#')).from_reader(text.as_slice());
+    let handle = std::fs::File::open(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
+    let mut rdr = csv::ReaderBuilder::new()
+        .trim(csv::Trim::All)
+        .flexible(true)
+        .comment(Some(b'#'))
+        .from_reader(std::io::BufReader::with_capacity(1 << 20, handle));
     let header: Vec<String> = rdr.headers().map_err(|e| bad(1, format!("unreadable CSV: {e}")))?.iter().map(str::to_string).collect();
     let header_line = rdr.headers().ok().and_then(|h| h.position().map(csv::Position::line)).unwrap_or(1);
     let find = |name: &str| -> Result<Option<usize>> {
@@ -209,29 +296,37 @@ pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
         Some(_) => find("load")?,
         None => Some(need("load", "N", " and no --load was given")?),
     };
-    let mut r = Record { name: file.clone(), angle: ia.map(|_| Vec::new()), angular_velocity: iw.map(|_| Vec::new()), ..Record::default() };
-    for rec in rdr.records() {
-        let rec = rec.map_err(|e| bad(e.position().map_or(0, csv::Position::line), format!("unreadable CSV: {e}")))?;
+    let mut out = BlockMean::new(&file, block, ia.is_some(), iw.is_some());
+    let (mut rows, mut previous) = (0usize, f64::NEG_INFINITY);
+    let mut rec = csv::StringRecord::new();
+    loop {
+        match rdr.read_record(&mut rec) {
+            Ok(true) => {}
+            Ok(false) => break,
+            Err(e) => return Err(bad(e.position().map_or(0, csv::Position::line), format!("unreadable CSV: {e}"))),
+        }
         let line = rec.position().map_or(0, csv::Position::line);
         let num = |i: usize, name: &str, unit: &str| -> Result<f64> {
             let text = rec.get(i).ok_or_else(|| bad(line, format!("column {name} ({unit}) is missing: the row has {} field(s)", rec.len())))?;
             if text.is_empty() {
                 return Err(bad(line, format!("column {name} ({unit}) is empty")));
             }
-            let v: f64 = text.parse().map_err(|_| bad(line, format!("column {name} = `{text}` is not a number ({unit})")))?;
+            let v: f64 = text.parse().map_err(|_| bad(line, format!("column {name} = `{}` is not a number ({unit})", excerpt(text))))?;
             if !v.is_finite() {
-                return Err(bad(line, format!("column {name} = {text} {unit} is not a finite number")));
+                return Err(bad(line, format!("column {name} = {} {unit} is not a finite number", excerpt(text))));
             }
             Ok(v)
         };
-        r.time.push(num(it, "time", "s")?);
-        r.torque.push(num(iq, "torque", "N.m")?);
-        if let (Some(i), Some(v)) = (ia, r.angle.as_mut()) {
-            v.push(num(i, "angle", "rad")?);
-        }
-        if let (Some(i), Some(v)) = (iw, r.angular_velocity.as_mut()) {
-            v.push(num(i, "angular_velocity", "rad/s")?);
-        }
+        let time = num(it, "time", "s")?;
+        let torque = num(iq, "torque", "N.m")?;
+        let angle = match ia {
+            Some(i) => num(i, "angle", "rad")?,
+            None => 0.0,
+        };
+        let velocity = match iw {
+            Some(i) => num(i, "angular_velocity", "rad/s")?,
+            None => 0.0,
+        };
         let p = match (il, load) {
             (Some(i), given) => {
                 // The column is the record; a --load beside it must agree with it (1 %).
@@ -249,15 +344,24 @@ pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
         if p <= 0.0 {
             return Err(bad(line, format!("column load = {p} N is invalid: the load must be > 0 N")));
         }
-        r.load.push(p);
-        if let Some(w) = r.time.windows(2).last()
-            && w[1] <= w[0]
-        {
-            return Err(bad(line, format!("time = {} s does not increase (the row before has {} s)", w[1], w[0])));
+        if time <= previous {
+            return Err(bad(line, format!("time = {time} s does not increase (the row before has {previous} s)")));
         }
+        previous = time;
+        rows += 1;
+        out.push(time, angle, velocity, torque, p);
     }
-    if r.time.is_empty() {
+    if rows == 0 {
         return Err(bad(header_line, "no data rows".into()));
     }
-    Ok(r)
+    Ok(out.finish())
+}
+
+/// At most 40 characters of a field, for a message.
+fn excerpt(text: &str) -> String {
+    let mut e: String = text.chars().take(40).collect();
+    if e.len() < text.len() {
+        e.push('…');
+    }
+    e
 }

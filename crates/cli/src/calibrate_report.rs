@@ -2,7 +2,7 @@
 //! HTML, from one list of blocks), the fit as CSV, the plots, and the JSON summary.
 
 use pinjoint::rig::RigConfig;
-use pinjoint_calibrate::{Calibration, Estimate, Model, Reason, MU_C};
+use pinjoint_calibrate::{Calibration, Estimate, Model, Reason, INERTIA, MU_C};
 use super::common::exact;
 use super::error::Result;
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series, Style};
@@ -24,6 +24,7 @@ pub fn toml_file(c: &Calibration, inputs: &[String]) -> String {
     for e in &c.estimates {
         head.push_str(&format!("# {} = {} (standard error {:.3e}, 95 % interval [{}, {}])\n", e.key, exact(e.value), e.standard_error, exact(e.ci95.0), exact(e.ci95.1)));
     }
+    head.push_str(&format!("# {}\n", inertia_line(c)));
     head.push_str(&format!("# rms residual {:.4} N.m over {} samples ({} excluded).\n", c.rms_residual, c.points_used, c.points_excluded));
     match c.rig {
         Some(rig) => head + &RigConfig { model: c.params, rig }.to_toml_string(),
@@ -46,15 +47,39 @@ pub fn report_json(c: &Calibration) -> String {
     if let Some(o) = &c.offset {
         out.insert("torque_offset".into(), est(o));
     }
+    out.insert("inertia".into(), json!(c.inertia));
+    out.insert("inertia_fitted".into(), json!(c.inertia_estimate.is_some()));
+    if let Some(j) = &c.inertia_estimate {
+        out.insert("inertia_estimate".into(), est(j));
+    }
+    out.insert("samples_read".into(), json!(c.samples_read));
+    out.insert("block_length".into(), json!(c.block_length));
     out.insert("warnings".into(), json!(c.warnings));
     Value::Object(out).to_string()
 }
 
-/// `fit.csv`: every sample of every record, measured and fitted (SI units).
-pub fn fit_csv(w: &mut dyn Write, c: &Calibration) -> io::Result<()> {
+/// The report's line on J: its value and whether it was fitted (with its interval) or given.
+pub fn inertia_line(c: &Calibration) -> String {
+    match &c.inertia_estimate {
+        Some(e) => format!(
+            "{} = {} kg.m2 fitted (standard error {:.3e}, 95 % interval [{}, {}]){}",
+            e.key,
+            exact(e.value),
+            e.standard_error,
+            exact(e.ci95.0),
+            exact(e.ci95.1),
+            if c.model == Model::Rig { ", by the quasi-static fit; the rig simulation used it" } else { "" }
+        ),
+        None => format!("{INERTIA} = {} kg.m2 given (not fitted)", exact(c.inertia)),
+    }
+}
+
+/// `fit.csv`: every `stride`-th sample of every record (the fit's samples: block means when the
+/// records were averaged), measured and fitted (SI units).
+pub fn fit_csv(w: &mut dyn Write, c: &Calibration, stride: usize) -> io::Result<()> {
     writeln!(w, "record,time,angle,angular_velocity,load,torque,inertia_torque,fitted_torque,residual,used")?;
     for s in &c.series {
-        for i in 0..s.time.len() {
+        for i in (0..s.time.len()).step_by(stride.max(1)) {
             let angle = s.angle.as_ref().map_or(String::new(), |a| exact(a[i]));
             writeln!(
                 w,
@@ -158,25 +183,39 @@ fn model_text(c: &Calibration) -> String {
     }
     format!(
         "Model of the recorded torque: T = J·α + sign(ω)·μ(P,|ω|)·R·P + T0 with μ = μ_fluid + μ_c/γ2 (eqs. 3, 8, 10, 11); \
-         J = {} kg·m² (J·α subtracted), T0 a fitted sensor offset{offset}. {}",
+         J = {} kg·m² ({}), T0 a fitted sensor offset{offset}. {}",
         g(c.inertia),
+        if c.inertia_estimate.is_some() {
+            "fitted with μ_c and T0; the torque and the model filtered with the differentiator's matched taps"
+        } else {
+            "given: J·α subtracted"
+        },
         if c.evaluations == 0 {
-            "μ_c by linear least squares on the model's shape (γ2 and μ_fluid do not depend on μ_c).".to_string()
+            "μ_c (and J, T0) by linear least squares on the model's shape (γ2 and μ_fluid do not depend on them).".to_string()
         } else {
             format!("Levenberg-Marquardt over the --fit keys in log/logit coordinates, {} evaluations; μ_c and T0 linear at its optimum.", c.evaluations)
         }
     )
 }
 
-fn blocks(c: &Calibration, inputs: &[String]) -> Vec<Block> {
+fn blocks(c: &Calibration, inputs: &[String], csv_stride: Option<usize>) -> Vec<Block> {
     use Block::*;
     let mut b = vec![Heading("Calibration of the pin-joint friction model".into())];
     b.push(Para(format!("Inputs: {}.", inputs.join(", "))));
     b.push(Para(model_text(c)));
+    b.push(Para(format!("Inertia: {}.", inertia_line(c))));
+    if c.block_length > 1 {
+        b.push(Para(format!(
+            "Long records: {} samples were read; over the sample budget, every record was averaged in blocks of {} consecutive \
+             samples (m = ceil(samples / budget)) as it was read, and the fit, the counts and fit.csv are of the block means.",
+            c.samples_read, c.block_length
+        )));
+    }
     b.push(Heading("Fitted values".into()));
     let rows = c
         .estimates
         .iter()
+        .chain(c.inertia_estimate.iter())
         .chain(c.offset.iter())
         .map(|e| {
             vec![
@@ -271,18 +310,28 @@ fn blocks(c: &Calibration, inputs: &[String]) -> Vec<Block> {
     b.push(Plot("torque_time.svg", 0));
     b.push(Plot("torque_angle.svg", 1));
     b.push(Plot("residuals.svg", 2));
+    let samples: usize = c.series.iter().map(|s| s.time.len()).sum();
+    let csv = match csv_stride {
+        None => "No fit.csv was written (--fit-csv-rows 0).".to_string(),
+        Some(1) => format!("fit.csv holds every sample ({samples} rows): measured, J·α, fitted, residual and whether it was used."),
+        Some(k) => format!(
+            "fit.csv holds every {k}-th of the {samples} samples ({} rows, --fit-csv-rows): measured, J·α, fitted, residual and \
+             whether it was used.",
+            samples.div_ceil(k)
+        ),
+    };
     b.push(Para(format!(
         "calibrated.toml holds the complete parameter set with {MU_C} = {} (and any --fit keys); pass it as --params or load \
-         its values as the FMUs' start values. fit.csv holds every sample: measured, J·α, fitted, residual and whether it was used.",
+         its values as the FMUs' start values. {csv}",
         exact(c.params.friction.boundary_friction_coefficient)
     )));
     b
 }
 
 /// `report.md`.
-pub fn report_md(c: &Calibration, inputs: &[String]) -> String {
+pub fn report_md(c: &Calibration, inputs: &[String], csv_stride: Option<usize>) -> String {
     let mut s = String::new();
-    for b in blocks(c, inputs) {
+    for b in blocks(c, inputs, csv_stride) {
         match b {
             Block::Heading(h) => s.push_str(&format!("## {h}\n\n")),
             Block::Para(p) => s.push_str(&format!("{p}\n\n")),
@@ -305,13 +354,13 @@ fn esc(s: &str) -> String {
 }
 
 /// `report.html`, with the plots inline.
-pub fn report_html(c: &Calibration, inputs: &[String], svg: [&str; 3]) -> String {
+pub fn report_html(c: &Calibration, inputs: &[String], csv_stride: Option<usize>, svg: [&str; 3]) -> String {
     let mut s = String::from(
         "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>pinjoint calibrate</title>\n<style>body{font-family:sans-serif;max-width:1100px;margin:auto}\
          table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}</style></head><body>\n",
     );
     let mut first = true;
-    for b in blocks(c, inputs) {
+    for b in blocks(c, inputs, csv_stride) {
         match b {
             Block::Heading(h) => {
                 let tag = if first { "h1" } else { "h2" };

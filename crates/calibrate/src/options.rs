@@ -1,0 +1,81 @@
+//! How to calibrate: the model fitted and every option, with their defaults.
+
+use super::exclusion::ExclusionRule;
+use pinjoint::rig::RigParams;
+use pinjoint::Params;
+
+/// Default [`Options::max_simulations`] of the rig fit.
+pub const DEFAULT_MAX_SIMULATIONS: usize = 200;
+
+/// Default [`Options::max_samples`]: the most samples (all records together) that enter the
+/// fit; longer records are block-averaged down to it ([`crate::decimate`]).
+pub const MAX_FIT_SAMPLES: usize = 1_000_000;
+
+/// Which model of the record is fitted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Model {
+    /// The quasi-static model T = J·α + sign(ω)·μRP + T_0, away from reversals (the default).
+    #[default]
+    Core,
+    /// The rig simulation (`pinjoint::rig`, what `pinjoint cycle` runs) driven by a sine
+    /// command estimated from each record's angle: stick, breakaway peaks and servo ringing
+    /// included; fits `rig.*` keys besides μ_c ([`crate::rig_fit`]).
+    Rig,
+}
+
+/// How to calibrate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// Start values and every parameter not fitted.
+    pub params: Params,
+    /// Parameter keys fitted besides μ_c (`section.key`, as in the parameter file).
+    pub fit: Vec<String>,
+    /// Rotating inertia J (kg·m²). `None` (the default): J is fitted together with μ_c and the
+    /// offset (the torque is linear in it: T = … + J·α), with its interval. `Some(j)`: J is
+    /// given, and j·α is subtracted from the recorded torque (0 subtracts nothing).
+    pub inertia: Option<f64>,
+    /// Fit a constant torque offset T_0 (default true).
+    pub fit_offset: bool,
+    /// The exclusion rule.
+    pub exclusion: ExclusionRule,
+    /// Savitzky–Golay half-width in samples (default: 1/40 of a stroke, at least 3).
+    pub half_width: Option<usize>,
+    /// Bootstrap resamples (default 1000; 0 turns the bootstrap off).
+    pub resamples: usize,
+    /// Bootstrap seed.
+    pub seed: u64,
+    /// The model fitted (default [`Model::Core`]).
+    pub model: Model,
+    /// The rig's parameters for [`Model::Rig`]: start values of `rig.*` keys and every rig
+    /// constant not fitted. Its `inertia` is replaced by [`Options::inertia`] when that is given
+    /// (J has one meaning: J·α in the core model, simulated by the rig model) and by the core
+    /// model's fitted J when it is not; its amplitude, frequency and load are not used (each
+    /// record gives its own).
+    pub rig: RigParams,
+    /// [`Model::Rig`]: the most simulations of the whole record set the fit may run
+    /// (default [`DEFAULT_MAX_SIMULATIONS`]); beyond it the fit is refused, saying so.
+    pub max_simulations: usize,
+    /// The most samples, all records together, that enter the fit (default
+    /// [`MAX_FIT_SAMPLES`]); beyond it every record is block-averaged by the same factor
+    /// ([`crate::decimate`]), and the result says so.
+    pub max_samples: usize,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            params: Params::default(),
+            fit: Vec::new(),
+            inertia: None,
+            fit_offset: true,
+            exclusion: ExclusionRule::default(),
+            half_width: None,
+            resamples: 1000,
+            seed: 0x5EED,
+            model: Model::Core,
+            rig: RigParams::default(),
+            max_simulations: DEFAULT_MAX_SIMULATIONS,
+            max_samples: MAX_FIT_SAMPLES,
+        }
+    }
+}
