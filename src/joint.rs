@@ -137,6 +137,9 @@ pub struct OperatingPoint {
     pub min_film_thickness: f64,
     /// λ_min = h_min/√(σ² + σ_b²), eq. 21 as printed (with h_min).
     pub min_lambda_ratio: f64,
+    /// Whether the load, sliding speed and the joint's lubricant temperature are inside the
+    /// conditions the model was checked against ([`crate::validity::of_point`]).
+    pub validity: crate::validity::Validity,
 }
 
 /// A friction torque of magnitude `torque` given its sign: opposite to `omega` (eq. 11), zero
@@ -364,6 +367,13 @@ impl Joint {
     /// are a [`ModelError::BeyondCapacity`]. 5.05e8 N for the paper's joint.
     pub fn capacity(&self) -> f64 {
         self.capacity
+    }
+
+    /// Whether (`load` N, `omega` rad/s) at this joint's lubricant temperature is inside the
+    /// conditions the model was checked against ([`crate::validity::of_point`] with the
+    /// sliding speed |ω|R): the `validity` of [`Joint::evaluate`]'s answer there.
+    pub fn validity(&self, load: f64, omega: f64) -> crate::validity::Validity {
+        crate::validity::of_point(load, omega.abs() * self.params.geometry.pin_radius, self.params.lubricant.temperature)
     }
 
     /// √(σ² + σ_b²), the composite roughness of λ (eq. 21), m.
@@ -627,6 +637,7 @@ impl Joint {
             regime: Regime::from_shares(ls.fluid_fraction, ls.asperity_fraction),
             min_film_thickness: 0.0,
             min_lambda_ratio: 0.0,
+            validity: crate::validity::of_point(load, u, self.params.lubricant.temperature),
         };
         // h_min (as Joint::min_film, with ln P_T and ln u already at hand).
         let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + lt.ln_load, self.ln_u_mean_unit + ln_u, self.ln_g, op.fluid_load_fraction.ln());

@@ -37,9 +37,11 @@ pub mod record;
 pub mod rig;
 pub mod solve_start;
 pub mod starvation;
+pub mod validity;
 pub mod viscosity;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).
 pub use numfmt as fmt;
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};
 pub use params::{ParamError, Params};
+pub use validity::Validity;
