@@ -137,8 +137,8 @@ pub fn lin_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 }
 
 /// The model's outputs in CSV files, after the input columns (SI units). The h_min columns
-/// (an extension) come last so that the earlier columns keep their positions.
-pub const RESULT_COLUMNS: [&str; 12] = pinjoint::record::NAMES;
+/// (an extension) and `validity` come last so that the earlier columns keep their positions.
+pub const RESULT_COLUMNS: [&str; 13] = pinjoint::record::NAMES;
 
 /// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
 /// `BrokenPipe`, which ends the program quietly).
@@ -155,10 +155,11 @@ pub fn exact(v: f64) -> String {
 }
 
 /// The values of [`RESULT_COLUMNS`] for one point, at full precision.
-pub fn result_fields(op: &OperatingPoint) -> [String; 12] {
+pub fn result_fields(op: &OperatingPoint) -> [String; 13] {
     pinjoint::record::COLUMNS.map(|c| match c.value {
         pinjoint::record::Value::Number(f) => exact(f(op)),
         pinjoint::record::Value::Regime => op.regime.as_str().to_string(),
+        pinjoint::record::Value::Validity => op.validity.as_str().to_string(),
     })
 }
 
