@@ -52,8 +52,10 @@ pub struct PinJointModel {
     /// use (at exit of initialization); dropped when a parameter changes, rebuilt when the
     /// temperature input has changed.
     evaluator: Option<Evaluator>,
-    /// For the host's log (fidelity chosen; first fallback).
+    /// For the host's log (fidelity chosen; first fallback; a validity excursion).
     message: Option<String>,
+    /// Whether the inputs were outside the validity envelope at the last evaluation.
+    validity: pinjoint::validity::Tracker,
 }
 
 impl PinJointModel {
@@ -64,10 +66,10 @@ impl PinJointModel {
 
     fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
         check_band(self.v.band)?;
-        let t = self.v.temperature.to_bits();
-        if self.evaluator.as_ref().is_some_and(|e| e.joint().params().lubricant.temperature.to_bits() != t) {
-            // A new temperature is a new lubricant.
-            self.evaluator = None;
+        if let Some(ev) = self.evaluator.as_mut().filter(|e| e.temperature().to_bits() != self.v.temperature.to_bits()) {
+            // A new temperature: the same evaluator moved there (bit for bit one built there;
+            // at full a few logarithms, a table or boundary level is built again).
+            ev.set_temperature(self.v.temperature).map_err(|e| ModelError::failed("", e))?;
         }
         if self.evaluator.is_none() {
             // Every parameter is checked as set, `lubricant.temperature` too (the input replaces it).
@@ -141,6 +143,10 @@ impl Model for PinJointModel {
             ));
         }
         self.v.out = out;
+        let v = super::variables::validity(&self.v);
+        let s = &self.v;
+        let excursion = || pinjoint::validity::excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature);
+        crate::validity::note(&mut self.validity, v, excursion, "", &mut self.message);
         Ok(())
     }
 
@@ -174,7 +180,7 @@ impl Model for PinJointModel {
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
         let same = v.params == self.v.params && v.fidelity == self.v.fidelity && v.band == self.v.band;
         let evaluator = if same { self.evaluator.take() } else { None };
-        *self = PinJointModel { v, evaluator, message: None };
+        *self = PinJointModel { v, evaluator, message: None, validity: self.validity };
         Ok(())
     }
 }
