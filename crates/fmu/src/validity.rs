@@ -18,9 +18,12 @@ pub static VALIDITY_TYPE: EnumType = EnumType {
     ],
 };
 
-/// The `validity` output (Enumeration) at value reference `vr`, read by `get` (the code as f64).
-pub fn output<S: 'static>(vr: u32, description: &str, get: impl Fn(&S) -> f64 + Send + Sync + 'static) -> Row<S> {
-    Row::output(declare("validity", vr, Kind::Enumeration(&VALIDITY_TYPE), Causality::Output, None, None, description), get)
+/// The `validity` output (Enumeration) at value reference `vr`, depending directly on the
+/// inputs `depends`, read by `get` (the code as f64).
+pub fn output<S: 'static>(vr: u32, depends: &[&'static str], description: &str, get: impl Fn(&S) -> f64 + Send + Sync + 'static) -> Row<S> {
+    let mut v = declare("validity", vr, Kind::Enumeration(&VALIDITY_TYPE), Causality::Output, None, None, description);
+    v.depends_on = depends.to_vec();
+    Row::output(v, get)
 }
 
 /// The log message for an excursion that starts now (`tracker` says whether it does),

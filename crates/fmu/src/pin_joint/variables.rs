@@ -185,12 +185,12 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(crate::inputs::temperature(4,
         "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
-    rows.push(crate::validity::output(30, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
+    rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows
 }
 
 /// The `validity` output's description.
-const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against     (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong     (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion";
+const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion";
 
 /// The validity of the held inputs ([`pinjoint::validity::of_point`]).
 pub fn validity(s: &Values) -> pinjoint::Validity {

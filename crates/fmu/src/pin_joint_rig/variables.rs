@@ -240,12 +240,12 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(crate::inputs::temperature(3,
         "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in (138.15, 673.15] K. Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
         |s: &Values| s.settings.temperature, |s, x| s.settings.temperature = x));
-    rows.push(crate::validity::output(24, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
+    rows.push(crate::validity::output(24, &["load", "temperature"], VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows
 }
 
 /// The `validity` output's description.
-const VALIDITY_TEXT: &str = "Whether the sample's load, sliding speed |omega| R and temperature, and (with the internal sine stroke) its frequency and amplitude,     are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin,     15-25 C, 0.03-1 Hz, 40 deg): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress,     mu and torque too LOW). Logged once per excursion";
+const VALIDITY_TEXT: &str = "Whether the sample's load, sliding speed |omega| R and temperature, and (with the internal sine stroke) its frequency and amplitude, are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C, 0.03-1 Hz, 40 deg): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion";
 
 /// The load (N) and angular velocity (rad/s) of the last sample (the `load` input and 0
 /// before the first).
