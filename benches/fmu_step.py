@@ -9,6 +9,12 @@ u1, u2 -> y1, y2). The inputs follow a 1 Hz, +-40 deg sine stroke at 20 kN +- 10
 joint sweeps the speeds of the rig. The configurations are interleaved over the repeats
 (round-robin) so that drifts of a busy machine touch all alike; the fastest repeat of each is
 kept (the least disturbed), the median too. Prints one JSON object on standard output.
+
+Two more PinJoint configurations at full fidelity set the `temperature` input too, at every
+step: "full-fixed-T" to the same 318.15 K each time (the fixed-temperature step), and
+"full-warming" to a temperature rising by 1e-3 K per step from 308.15 K (restarting at each
+repeat: 308.15-328.15 K over 20000 steps), so every step sees a new temperature. Their
+ratio is the cost of a temperature change.
 """
 
 import json
@@ -59,6 +65,11 @@ def main(argv):
         build = time.perf_counter() - t0
         configs[name] = (s, [vr_p["angular_velocity"], vr_p["load"]], [vr_p["torque"], vr_p["friction_coefficient"]])
         configs[name] += (build,)
+    s = instance(pin, md_p, dir_p, ints={vr_p["fidelity"]: 0}, reals=env)
+    vin_t = [vr_p["angular_velocity"], vr_p["load"], vr_p["temperature"]]
+    configs["full-fixed-T"] = (s, vin_t, [vr_p["torque"], vr_p["friction_coefficient"]], None, 318.15, 0.0)
+    s = instance(pin, md_p, dir_p, ints={vr_p["fidelity"]: 0}, reals=env)
+    configs["full-warming"] = (s, vin_t, [vr_p["torque"], vr_p["friction_coefficient"]], None, 308.15, 1e-3)
     times = {k: [] for k in configs}
     clocks = {k: 0.0 for k in configs}
     # One warm-up pass, then round-robin repeats.
@@ -66,7 +77,8 @@ def main(argv):
         for name, c in configs.items():
             s, vin, vout = c[0], c[1], c[2]
             # Keep each instance's own clock continuous.
-            s_per_step, _ = drive_from(s, vin, vout, steps, h, clocks, name)
+            temperature = (c[4], c[5]) if len(c) > 4 else None
+            s_per_step, _ = drive_from(s, vin, vout, steps, h, clocks, name, temperature)
             if rep > 0:
                 times[name].append(s_per_step)
     out = {"steps": steps, "repeats": repeats, "step_size": h, "tolerance": tolerance,
@@ -81,10 +93,14 @@ def main(argv):
     print(json.dumps(out))
 
 
-def drive_from(s, vin, vout, n, h, clocks, name):
+def drive_from(s, vin, vout, n, h, clocks, name, temperature=None):
+    """`temperature`: None, or (start K, rise per step K) for a third input."""
     amp = math.radians(40.0) * 2.0 * math.pi
     t = clocks[name]
     ins = [(amp * math.cos(2.0 * math.pi * (t + k * h)), 20e3 * (1.0 + 0.1 * math.sin(0.3 * (t + k * h)))) for k in range(n)]
+    if temperature is not None:
+        t0_k, rise = temperature
+        ins = [(w, p, t0_k + rise * k) for k, (w, p) in enumerate(ins)]
     set_real, do_step, get_real = s.setReal, s.doStep, s.getReal
     t0 = time.perf_counter()
     for k in range(n):
