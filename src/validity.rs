@@ -263,7 +263,7 @@ mod tests {
         assert_eq!(crate::paper::FREQUENCIES[2], FREQUENCY.hi);
         assert!(STROKE_AMPLITUDE.contains(crate::paper::STROKE_AMPLITUDE));
         assert!(TEMPERATURE.contains(crate::params::DEFAULT_TEMPERATURE));
-        assert!(COLD_SOAK < TEMPERATURE.lo);
+        const { assert!(COLD_SOAK < TEMPERATURE.lo) };
     }
 
     #[test]
