@@ -128,6 +128,11 @@ fn stribeck_and_map_carry_the_validity_column() {
             _ => vec!["checked", "extrapolation"], // 800 rpm is beyond the rig's speeds
         };
         assert_eq!(seen.iter().map(String::as_str).collect::<Vec<_>>(), expect, "T {t}, P {load}");
+        // The figure marks the checked speeds and says when load or temperature is outside.
+        let svg = std::fs::read_to_string(dir.join("stribeck.svg")).unwrap();
+        assert!(svg.contains("validity: checked") || svg.contains("outside 5-60 kN"), "T {t}, P {load}");
+        assert_eq!(svg.contains("outside 5-60 kN: extrapolation"), load == "70000");
+        assert_eq!(svg.contains("too LOW"), t == "253.15");
     }
     let dir = d.path().join("map");
     ok(&["map", "--loads", "3", "--speeds", "4", "--output", dir.to_str().unwrap()]);
@@ -137,6 +142,11 @@ fn stribeck_and_map_carry_the_validity_column() {
         let (p, w): (f64, f64) = (r[0].parse().unwrap(), r[1].parse().unwrap());
         assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, 293.15).as_str());
     }
+    let svgs: Vec<String> = std::fs::read_dir(&dir).unwrap().filter_map(|e| {
+        let p = e.unwrap().path();
+        (p.extension().is_some_and(|x| x == "svg")).then(|| std::fs::read_to_string(p).unwrap())
+    }).collect();
+    assert!(svgs.iter().any(|s| s.contains("validity checked; outside extrapolation")), "the map marks the checked region");
 }
 
 /// `point`'s table and JSON say the validity, on both sides of the cold-soak boundary.
