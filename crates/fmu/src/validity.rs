@@ -73,7 +73,8 @@ FMU state.</p>
 <p>Temperature: a change of the <code>temperature</code> input costs a few logarithms at fidelity full (the start table of the solve
 is the same at every temperature, read at the speed shifted by ln(&eta;<sub>0</sub>(T)/&eta;<sub>0</sub>(T<sub>ref</sub>))), and
 the outputs are bit for bit those of an instance started at that temperature; at table, boundary and auto the level is built and its
-bound measured again at the new temperature (the cost of an initialization).</p>
+bound measured again at the new temperature (the cost of an initialization: about 4 ms for a table at tolerance 1e-4 over
+5&ndash;60 kN, 0.01&ndash;10 rad/s, 0.5 ms for boundary). For a temperature that changes at every step use fidelity full.</p>
 "#
     )
 }
