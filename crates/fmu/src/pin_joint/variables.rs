@@ -190,7 +190,7 @@ fn rows() -> Vec<Row<Values>> {
 }
 
 /// The `validity` output's description.
-const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion";
+const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
 
 /// The validity of the held inputs ([`pinjoint::validity::of_point`]).
 pub fn validity(s: &Values) -> pinjoint::Validity {
