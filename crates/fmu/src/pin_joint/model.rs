@@ -49,8 +49,8 @@ pub fn outputs(ev: &mut Evaluator, load: f64, omega: f64, band: f64) -> ModelRes
 pub struct PinJointModel {
     v: Values,
     /// Built from the parameters, the temperature input and the fidelity settings on first
-    /// use (at exit of initialization); dropped when a parameter changes, rebuilt when the
-    /// temperature input has changed.
+    /// use (at exit of initialization); dropped when a parameter changes, moved to a new
+    /// temperature input by [`Evaluator::set_temperature`].
     evaluator: Option<Evaluator>,
     /// For the host's log (fidelity chosen; first fallback; a validity excursion).
     message: Option<String>,

@@ -174,8 +174,8 @@ impl Model for RigModel {
 
     fn set_real(&mut self, i: usize, x: f64) {
         let var = TABLE.set(&mut self.v, i, x);
-        // The temperature input is applied at the next refresh (rebuilding the friction model
-        // and keeping the simulator's state); parameters drop the simulator.
+        // The temperature input is applied at the next refresh (RigSim::set_temperature: the
+        // simulator's friction model moves there, its state is kept); parameters drop the simulator.
         if var.causality == Causality::Parameter {
             self.sim = None;
         }
