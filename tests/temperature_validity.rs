@@ -138,10 +138,13 @@ proptest! {
         };
         prop_assert_eq!(validity::of_point(load, u, t), expect);
         prop_assert_eq!(validity::of_point(-load, -u, t), expect);
-        let j = Joint::new(&at(t)).unwrap();
-        prop_assert_eq!(j.validity(load, w), expect);
-        if let Ok(op) = j.evaluate(load, w) {
-            prop_assert_eq!(op.validity, expect);
+        // Near Roelands' pole (138.15 K) there is no joint (eta_0 overflows); elsewhere its
+        // answers carry the same flag.
+        if let Ok(j) = Joint::new(&at(t)) {
+            prop_assert_eq!(j.validity(load, w), expect);
+            if let Ok(op) = j.evaluate(load, w) {
+                prop_assert_eq!(op.validity, expect);
+            }
         }
     }
 }
