@@ -11,6 +11,12 @@ band ("full-band"), the stateless law. The inputs follow a 1 Hz, +-40 deg sine s
 joint sweeps the speeds of the rig. The configurations are interleaved over the repeats
 (round-robin) so that drifts of a busy machine touch all alike; the fastest repeat of each is
 kept (the least disturbed), the median too. Prints one JSON object on standard output.
+
+Two more PinJoint configurations at full fidelity set the `temperature` input too, at every
+step: "full-fixed-T" to the same 318.15 K each time (the fixed-temperature step), and
+"full-warming" to a temperature rising by 1e-3 K per step from 308.15 K (restarting at each
+repeat: 308.15-328.15 K over 20000 steps), so every step sees a new temperature. Their
+ratio is the cost of a temperature change.
 """
 
 import json
@@ -63,6 +69,11 @@ def main(argv):
         build = time.perf_counter() - t0
         configs[name] = (s, [vr_p["angle"], vr_p["angular_velocity"], vr_p["load"]], [vr_p["torque"], vr_p["friction_coefficient"]])
         configs[name] += (build,)
+    s = instance(pin, md_p, dir_p, ints={vr_p["fidelity"]: 0}, reals=env)
+    vin_t = [vr_p["angle"], vr_p["angular_velocity"], vr_p["load"], vr_p["temperature"]]
+    configs["full-fixed-T"] = (s, vin_t, [vr_p["torque"], vr_p["friction_coefficient"]], None, 318.15, 0.0)
+    s = instance(pin, md_p, dir_p, ints={vr_p["fidelity"]: 0}, reals=env)
+    configs["full-warming"] = (s, vin_t, [vr_p["torque"], vr_p["friction_coefficient"]], None, 308.15, 1e-3)
     times = {k: [] for k in configs}
     clocks = {k: 0.0 for k in configs}
     # One warm-up pass, then round-robin repeats.
@@ -70,7 +81,8 @@ def main(argv):
         for name, c in configs.items():
             s, vin, vout = c[0], c[1], c[2]
             # Keep each instance's own clock continuous.
-            s_per_step, _ = drive_from(s, vin, vout, steps, h, clocks, name)
+            temperature = (c[4], c[5]) if len(c) > 4 else None
+            s_per_step, _ = drive_from(s, vin, vout, steps, h, clocks, name, temperature)
             if rep > 0:
                 times[name].append(s_per_step)
     out = {"steps": steps, "repeats": repeats, "step_size": h, "tolerance": tolerance,
@@ -85,12 +97,16 @@ def main(argv):
     print(json.dumps(out))
 
 
-def drive_from(s, vin, vout, n, h, clocks, name):
+def drive_from(s, vin, vout, n, h, clocks, name, temperature=None):
+    """`temperature`: None, or (start K, rise per step K) for a last input."""
     a = math.radians(40.0)
     amp = a * 2.0 * math.pi
     t = clocks[name]
     ins = [(a * math.sin(2.0 * math.pi * (t + k * h)), amp * math.cos(2.0 * math.pi * (t + k * h)), 20e3 * (1.0 + 0.1 * math.sin(0.3 * (t + k * h))))
            for k in range(n)]
+    if temperature is not None:
+        t0_k, rise = temperature
+        ins = [x + (t0_k + rise * k,) for k, x in enumerate(ins)]
     if len(vin) == 2:
         ins = [x[1:] for x in ins]
     set_real, do_step, get_real = s.setReal, s.doStep, s.getReal

@@ -9,6 +9,7 @@ use crate::solve_start::{StartCut, StartTable};
 use crate::viscosity::{limiting_shear_stress, ln_roelands_from};
 use serde::Serialize;
 use std::f64::consts::PI;
+use std::sync::Arc;
 use thiserror::Error;
 
 /// How close (in the logit) a caller's start must be to the start table's for the solve to
@@ -136,6 +137,9 @@ pub struct OperatingPoint {
     pub min_film_thickness: f64,
     /// λ_min = h_min/√(σ² + σ_b²), eq. 21 as printed (with h_min).
     pub min_lambda_ratio: f64,
+    /// Whether the load, sliding speed and the joint's lubricant temperature are inside the
+    /// conditions the model was checked against ([`crate::validity::of_point`]).
+    pub validity: crate::validity::Validity,
 }
 
 /// A friction torque of magnitude `torque` given its sign: opposite to `omega` (eq. 11), zero
@@ -197,8 +201,17 @@ pub struct Joint {
     clearance_ratio_sq: f64,
     /// The load (N) at which the rest film of eq. 19 reaches zero (see [`Joint::capacity`]).
     capacity: f64,
-    /// Converged logits over (ln P_T, ln u): the deterministic start of a cold solve.
-    start: StartTable,
+    /// Converged logits over (ln P_T, ln u) of the lubricant at its reference temperature:
+    /// the deterministic start of a cold solve, shared by the joints [`Joint::at_temperature`]
+    /// makes (it does not depend on the temperature).
+    start: Arc<StartTable>,
+    /// Eq. 12's groups at u = 1 m/s, P_T = 1 N for the lubricant at its reference
+    /// temperature: the film the start table's nodes are solved with.
+    start_film: FilmGroups,
+    /// ln(η0(T)/η0(T_ref)): where the start table is read along ln u (0 at T = T_ref). The
+    /// film groups depend on η0 and u only through η0·u, so this shift makes the table's
+    /// start exact in η0; only α's change with temperature is not in it.
+    start_shift: f64,
     /// The lubricant at its temperature ([`crate::viscosity::at_temperature`]; `params.lubricant`
     /// itself, bit for bit, at the reference temperature).
     lub: Lubricant,
@@ -225,6 +238,59 @@ impl Joint {
             });
         }
         crate::gw::warm_up();
+        let g = &params.geometry;
+        let (r_red, e_eff) = (reduced_radius(g), effective_modulus(&params.materials));
+        let st = &params.starvation;
+        let reference = &params.lubricant;
+        let asp_unit = AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length);
+        let mut joint = Self {
+            params: *params,
+            r_red,
+            e_eff,
+            roughness,
+            asp_unit,
+            // The temperature terms are set by `set_temperature_terms` below.
+            film_unit: FilmGroups { ln_m: f64::NAN, ln_l: f64::NAN, ln_scale: f64::NAN },
+            hertz_unit: hertz(1.0, r_red, e_eff, g.bush_length),
+            ln_eta_ratio: f64::NAN,
+            ln_eta0: f64::NAN,
+            projected_area: 2.0 * g.pin_radius * g.bush_length,
+            clearance_ratio_sq: (g.pin_radius / params.radial_clearance()).powi(2),
+            capacity: asperity_capacity(&params.surface, &asp_unit),
+            lub: *reference,
+            ln_w_unit: (1.0 / (e_eff * r_red * g.bush_length)).ln(),
+            ln_u_mean_unit: f64::NAN,
+            ln_g: f64::NAN,
+            starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
+            start: Arc::new(StartTable::empty()),
+            start_film: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, reference.viscosity, reference.pressure_viscosity_coefficient),
+            start_shift: f64::NAN,
+        };
+        joint.set_temperature_terms()?;
+        joint.start = Arc::new(StartTable::new(joint.capacity));
+        Ok(joint)
+    }
+
+    /// This joint at lubricant temperature `temperature` (K): bit for bit the joint
+    /// [`Joint::new`] builds from these parameters with `lubricant.temperature` =
+    /// `temperature` (the same values, the same start of every solve, so the same answers),
+    /// at the cost of Roelands' temperature relation and a few logarithms. Everything that
+    /// does not depend on the temperature (the Hertz and asperity groups, the capacity, the
+    /// start table with the rows solved so far) is kept and shared. Errors as
+    /// [`Joint::new`]'s for that temperature (out of range, NaN or infinite, or η0(T) not a
+    /// finite positive viscosity).
+    pub fn at_temperature(&self, temperature: f64) -> Result<Self, ParamError> {
+        let mut joint = self.clone();
+        joint.params.lubricant.temperature = temperature;
+        joint.params.validate()?;
+        joint.set_temperature_terms()?;
+        Ok(joint)
+    }
+
+    /// The terms that follow from the lubricant at `params.lubricant.temperature`: η0(T) and
+    /// α(T) by Roelands' temperature relation and the groups built from them.
+    fn set_temperature_terms(&mut self) -> Result<(), ParamError> {
+        let params = &self.params;
         let lub = crate::viscosity::at_temperature(&params.lubricant);
         if !(lub.viscosity.is_finite() && lub.viscosity > 0.0 && lub.pressure_viscosity_coefficient.is_finite()) {
             return Err(ParamError::OutOfRange {
@@ -237,38 +303,22 @@ impl Joint {
                 ),
             });
         }
-        let (g, lub) = (&params.geometry, &lub);
-        let (r_red, e_eff) = (reduced_radius(g), effective_modulus(&params.materials));
-        let st = &params.starvation;
-        let mut joint = Self {
-            params: *params,
-            r_red,
-            e_eff,
-            roughness,
-            asp_unit: AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length),
-            film_unit: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, lub.viscosity, lub.pressure_viscosity_coefficient),
-            hertz_unit: hertz(1.0, r_red, e_eff, g.bush_length),
-            ln_eta_ratio: (lub.roelands_viscosity_limit / lub.viscosity).ln(),
-            ln_eta0: lub.viscosity.ln(),
-            projected_area: 2.0 * g.pin_radius * g.bush_length,
-            clearance_ratio_sq: (g.pin_radius / params.radial_clearance()).powi(2),
-            capacity: asperity_capacity(&params.surface, &AsperityGroups::new(&params.surface, 1.0, r_red, e_eff, g.bush_length)),
-            lub: *lub,
-            ln_w_unit: (1.0 / (e_eff * r_red * g.bush_length)).ln(),
-            ln_u_mean_unit: (0.5 * lub.viscosity / (e_eff * r_red)).ln(),
-            ln_g: (lub.pressure_viscosity_coefficient * e_eff).ln(),
-            starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
-            start: StartTable::empty(),
-        };
-        joint.start = StartTable::new(joint.capacity);
-        Ok(joint)
+        let (g, r_red, e_eff) = (&params.geometry, self.r_red, self.e_eff);
+        self.film_unit = FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, lub.viscosity, lub.pressure_viscosity_coefficient);
+        self.ln_eta_ratio = (lub.roelands_viscosity_limit / lub.viscosity).ln();
+        self.ln_eta0 = lub.viscosity.ln();
+        self.ln_u_mean_unit = (0.5 * lub.viscosity / (e_eff * r_red)).ln();
+        self.ln_g = (lub.pressure_viscosity_coefficient * e_eff).ln();
+        self.start_shift = if lub.viscosity == params.lubricant.viscosity { 0.0 } else { self.ln_eta0 - params.lubricant.viscosity.ln() };
+        self.lub = lub;
+        Ok(())
     }
 
     /// A node of the start table: the root at (ln P_T, ln u) from `warm`, by the same (starved
     /// or flooded) solve, with its sensitivities.
     fn start_node(&self, ln_p: f64, ln_u: f64, warm: Option<f64>) -> crate::solve_start::Node {
         let asp = self.asp_unit.at_load_ratio(ln_p);
-        let film = self.film_unit.at_ratio(ln_p, ln_u);
+        let film = self.start_film.at_ratio(ln_p, ln_u);
         let ls = solve_starved(Some(&film), &asp, &self.params.surface, warm, self.starved);
         crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
     }
@@ -276,7 +326,7 @@ impl Joint {
     /// The start table's value at (ln P_T, ln u) (its rows there solved first if not yet).
     #[inline]
     fn table_start(&self, ln_p: f64, ln_u: f64) -> f64 {
-        self.start.guess(ln_p, ln_u, |a, b, w| self.start_node(a, b, w))
+        self.start.guess(ln_p, ln_u + self.start_shift, |a, b, w| self.start_node(a, b, w))
     }
 
     /// Where a solve at (`load`, `omega`) starts without a warm start: a function of the
@@ -317,6 +367,13 @@ impl Joint {
     /// are a [`ModelError::BeyondCapacity`]. 5.05e8 N for the paper's joint.
     pub fn capacity(&self) -> f64 {
         self.capacity
+    }
+
+    /// Whether (`load` N, `omega` rad/s) at this joint's lubricant temperature is inside the
+    /// conditions the model was checked against ([`crate::validity::of_point`] with the
+    /// sliding speed |ω|R): the `validity` of [`Joint::evaluate`]'s answer there.
+    pub fn validity(&self, load: f64, omega: f64) -> crate::validity::Validity {
+        crate::validity::of_point(load, omega.abs() * self.params.geometry.pin_radius, self.params.lubricant.temperature)
     }
 
     /// √(σ² + σ_b²), the composite roughness of λ (eq. 21), m.
@@ -449,7 +506,7 @@ impl Joint {
             Start::From(guess) => guess,
             // The cut is the table at its load to rounding; where it has no value (another
             // load, a corner without derivatives) the table decides.
-            Start::Cut(cut) if u > 0.0 => Some(match self.start.cut_guess(cut, ln_u, |a, b, w| self.start_node(a, b, w)) {
+            Start::Cut(cut) if u > 0.0 => Some(match self.start.cut_guess(cut, ln_u + self.start_shift, |a, b, w| self.start_node(a, b, w)) {
                 g if g.is_finite() && cut.ln_load() == lt.ln_load => g,
                 _ => self.table_start(lt.ln_load, ln_u),
             }),
@@ -580,6 +637,7 @@ impl Joint {
             regime: Regime::from_shares(ls.fluid_fraction, ls.asperity_fraction),
             min_film_thickness: 0.0,
             min_lambda_ratio: 0.0,
+            validity: crate::validity::of_point(load, u, self.params.lubricant.temperature),
         };
         // h_min (as Joint::min_film, with ln P_T and ln u already at hand).
         let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + lt.ln_load, self.ln_u_mean_unit + ln_u, self.ln_g, op.fluid_load_fraction.ln());

@@ -44,9 +44,11 @@ pub mod paper;
 pub mod fidelity;
 pub mod record;
 pub mod rig;
+pub mod validity;
 pub mod zero_velocity;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).
 pub use numfmt as fmt;
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};
 pub use params::{ParamError, Params};
+pub use validity::Validity;

@@ -22,6 +22,8 @@ pub enum Value {
     Number(fn(&OperatingPoint) -> f64),
     /// The regime's name ([`Regime::as_str`]).
     Regime,
+    /// The validity's name ([`crate::validity::Validity::as_str`]).
+    Validity,
 }
 
 /// One result column.
@@ -38,7 +40,7 @@ pub struct Column {
 }
 
 /// Every result column, in the sweep's order.
-pub const COLUMNS: [Column; 12] = [
+pub const COLUMNS: [Column; 13] = [
     Column { name: "friction_coefficient", unit: "1", description: "friction coefficient μ (eq. 10)", value: Value::Number(|o| o.friction_coefficient) },
     Column { name: "torque", unit: "N.m", description: "torque magnitude μ·R·P_T (eq. 11)", value: Value::Number(|o| o.torque) },
     Column { name: "film_thickness", unit: "m", description: "central film thickness h_c (eqs. 13, 19)", value: Value::Number(|o| o.film_thickness) },
@@ -51,6 +53,12 @@ pub const COLUMNS: [Column; 12] = [
     Column { name: "regime", unit: "-", description: "boundary, mixed or full-film (1 % load-share thresholds)", value: Value::Regime },
     Column { name: "min_film_thickness", unit: "m", description: "minimum film h_min (Pan–Hamrock ratio; extension)", value: Value::Number(|o| o.min_film_thickness) },
     Column { name: "min_lambda_ratio", unit: "1", description: "λ from h_min (eq. 21 as printed; extension)", value: Value::Number(|o| o.min_lambda_ratio) },
+    Column {
+        name: "validity",
+        unit: "-",
+        description: "checked, extrapolation or known-wrong: inside the paper's rig conditions or not (crate::validity)",
+        value: Value::Validity,
+    },
 ];
 
 /// The inputs of an operating point: the load magnitude and the angular velocity as given.
@@ -70,11 +78,12 @@ pub const DETAILS: [Column; 5] = [
 ];
 
 /// Every quantity of an operating point but the solver's `logit`, in the order of `pinjoint
-/// point --json`: [`INPUTS`], [`COLUMNS`] up to `regime`, [`DETAILS`], then the h_min columns.
-pub const POINT: [Column; 19] = {
-    let mut all = [COLUMNS[0]; 19];
+/// point --json`: [`INPUTS`], [`COLUMNS`] up to `regime`, [`DETAILS`], then the h_min
+/// columns and `validity`.
+pub const POINT: [Column; 20] = {
+    let mut all = [COLUMNS[0]; 20];
     let mut k = 0;
-    while k < 19 {
+    while k < 20 {
         all[k] = match k {
             0..2 => INPUTS[k],
             2..12 => COLUMNS[k - 2],
@@ -129,6 +138,7 @@ impl Serialize for Record<'_> {
             match c.value {
                 Value::Number(f) => map.serialize_entry(c.name, &f(self.point))?,
                 Value::Regime => map.serialize_entry(c.name, self.point.regime.as_str())?,
+                Value::Validity => map.serialize_entry(c.name, self.point.validity.as_str())?,
             }
         }
         for c in &LUBRICANT {
@@ -139,8 +149,8 @@ impl Serialize for Record<'_> {
 }
 
 /// The names of [`COLUMNS`], in order.
-pub const NAMES: [&str; 12] = {
-    let mut names = [""; 12];
+pub const NAMES: [&str; 13] = {
+    let mut names = [""; 13];
     let mut i = 0;
     while i < COLUMNS.len() {
         names[i] = COLUMNS[i].name;
@@ -183,6 +193,7 @@ mod tests {
                 match c.value {
                     Value::Number(f) => assert_eq!(t[field].as_float().unwrap().to_bits(), f(&op).to_bits(), "{}", c.name),
                     Value::Regime => assert_eq!(t[field].as_str().unwrap(), op.regime.as_str()),
+                    Value::Validity => assert_eq!(t[field].as_str().unwrap(), op.validity.as_str()),
                 }
             }
             // Every field but the solver's warm start is in the record, once.

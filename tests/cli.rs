@@ -18,7 +18,7 @@ fn dir_names(d: &Path) -> BTreeSet<String> {
     std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect()
 }
 
-const RESULT_COLUMNS: [&str; 12] = [
+const RESULT_COLUMNS: [&str; 13] = [
     "friction_coefficient",
     "torque",
     "film_thickness",
@@ -31,6 +31,7 @@ const RESULT_COLUMNS: [&str; 12] = [
     "regime",
     "min_film_thickness",
     "min_lambda_ratio",
+    "validity",
 ];
 
 /// The numeric result columns of a point with the library's values: (position among the
@@ -42,7 +43,7 @@ fn lib_values(op: &OperatingPoint) -> Vec<(usize, &'static str, f64)> {
         .enumerate()
         .filter_map(|(i, c)| match c.value {
             pinjoint::record::Value::Number(f) => Some((i, c.name, f(op))),
-            pinjoint::record::Value::Regime => None,
+            pinjoint::record::Value::Regime | pinjoint::record::Value::Validity => None,
         })
         .collect()
 }
@@ -154,6 +155,7 @@ fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
         "asperity_friction_coefficient",
         "min_film_thickness",
         "min_lambda_ratio",
+        "validity",
         "temperature",
         "inlet_viscosity",
         "pressure_viscosity_coefficient",
@@ -166,6 +168,7 @@ fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
     assert_eq!(num(&m, "load"), 20000.0);
     assert_eq!(num(&m, "speed"), 0.2);
     assert_eq!(m["regime"], op.regime.as_str());
+    assert_eq!(m["validity"], "checked");
     for (_, k, v) in lib_values(&op) {
         assert!(close(num(&m, k), v), "{k}: {} vs {v}", num(&m, k));
     }
@@ -269,6 +272,7 @@ fn check_sweep_output(text: &str, points: &[(f64, f64)], joint: &Joint) {
         // The h_min columns, appended after regime.
         assert_eq!(row[13].parse::<f64>().unwrap().to_bits(), op.min_film_thickness.to_bits());
         assert_eq!(row[14].parse::<f64>().unwrap().to_bits(), op.min_lambda_ratio.to_bits());
+        assert_eq!(row[15], op.validity.as_str());
     }
     assert_eq!(regimes.len(), 3, "the points span every regime: {regimes:?}");
 }

@@ -91,7 +91,7 @@ fn pin_joint_table_is_complete_and_consistent() {
     for n in [
         "torque", "friction_coefficient", "film_thickness", "lambda_ratio", "fluid_load_fraction",
         "asperity_load_fraction", "mean_pressure", "sommerfeld_number", "power_loss", "dissipated_energy",
-        "min_film_thickness", "min_lambda_ratio",
+        "min_film_thickness", "min_lambda_ratio", "validity",
     ] {
         assert_eq!(info.variables[info.index_by_name(n).unwrap()].causality, Causality::Output, "{n}");
     }

@@ -7,7 +7,7 @@ use pinjoint::rig::{Inputs, RigConfig, RigSim, Sample};
 use rig_host::*;
 
 /// The FMU's outputs (table order) from a library sample.
-fn expected(s: &Sample, joint: &pinjoint::Joint) -> Vec<f64> {
+fn expected(s: &Sample, joint: &pinjoint::Joint, cfg: &RigConfig) -> Vec<f64> {
     let contact = s.load > 0.0;
     // h_min and λ_min from the library's joint at the sample's state (0 without contact).
     let h_min = if contact { joint.min_film(s.load, s.angular_velocity, s.film_thickness, s.fluid_load_fraction) } else { 0.0 };
@@ -26,6 +26,12 @@ fn expected(s: &Sample, joint: &pinjoint::Joint) -> Vec<f64> {
         s.kinetic_energy,
         h_min,
         h_min / joint.composite_roughness(),
+        // validity: the sample's operating point and the sine stroke (pinjoint::validity).
+        f64::from(
+            pinjoint::validity::of_point(s.load, s.angular_velocity.abs() * cfg.model.geometry.pin_radius, cfg.model.lubricant.temperature)
+                .max(pinjoint::validity::of_stroke(cfg.rig.frequency, cfg.rig.amplitude))
+                .code(),
+        ),
     ]
 }
 
@@ -55,7 +61,7 @@ fn library_run(cfg: &RigConfig, times: &[f64], load: &dyn Fn(f64) -> f64) -> Vec
     let mut held = load(times[0]);
     for &t in times {
         sim.advance_to(t, &Inputs { load: Some(held), command_angle: None }).unwrap();
-        rows.push(expected(&sim.sample().unwrap(), &joint));
+        rows.push(expected(&sim.sample().unwrap(), &joint, cfg));
         held = load(t);
     }
     rows

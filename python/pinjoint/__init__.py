@@ -28,10 +28,10 @@ simulate_cycle   whole strokes of the paper's torsion test rig (columns of cycle
 calibrate        fit mu_c (and other parameters) to measured torque cycles, as
                  ``pinjoint calibrate``; returns a Calibration (dict + ``.params``)
 param_table, rig_param_table   names, units, ranges, defaults and meanings
-RESULT_COLUMNS, CYCLE_COLUMNS, REGIMES, MU_C
+RESULT_COLUMNS, CYCLE_COLUMNS, REGIMES, VALIDITIES, MU_C
 """
 
-from ._native import CYCLE_COLUMNS, MU_C, REGIMES, RESULT_COLUMNS, Params, param_table, rig_param_table
+from ._native import CYCLE_COLUMNS, MU_C, REGIMES, RESULT_COLUMNS, VALIDITIES, Params, param_table, rig_param_table
 from ._joint import DEFAULT_ENVELOPE, Joint, default_params
 from ._cycle import simulate_cycle
 from ._presliding import DEFAULT_PRESLIDING, Presliding
@@ -48,6 +48,7 @@ __all__ = [
     "Presliding",
     "calibrate",
     "REGIMES",
+    "VALIDITIES",
     "RESULT_COLUMNS",
     "default_params",
     "param_table",

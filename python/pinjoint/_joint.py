@@ -7,13 +7,14 @@ from typing import Any, Dict, Optional, Tuple
 import numpy as np
 
 from ._coerce import ParamsLike, as_float_array, as_params
-from ._native import REGIMES, Params, _Joint
+from ._native import REGIMES, VALIDITIES, Params, _Joint
 
 #: Default envelope of the table/boundary/auto levels: loads 5-60 kN, speed magnitudes
 #: 0.01-10 rad/s (the PinJoint FMU's default: the paper's rig region and beyond).
 DEFAULT_ENVELOPE: Tuple[float, float, float, float] = (5e3, 60e3, 0.01, 10.0)
 
 _REGIME_NAMES = np.array(REGIMES)
+_VALIDITY_NAMES = np.array(VALIDITIES)
 
 
 def default_params() -> Params:
@@ -53,10 +54,17 @@ class Joint:
     arrays of the broadcast shape with the columns of `pinjoint sweep`:
     load (N), speed (rad/s), friction_coefficient (-), torque (N*m), film_thickness (m,
     central h_c), lambda_ratio (-), fluid_load_fraction (1/gamma1), asperity_load_fraction
-    (1/gamma2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-), and
-    regime (strings). At fidelity "full" each number equals the Rust library's (and the CLI
+    (1/gamma2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-),
+    regime (strings), min_film_thickness (m), min_lambda_ratio (-) and validity (strings:
+    "checked" inside the paper's rig conditions, 5-60 kN, |speed|*R up to the 1 Hz +-40 deg
+    stroke's peak, 15-25 C; "extrapolation" outside them; "known-wrong" below 0 C, where
+    the model's mu and torque are too low: no grease yield stress). At fidelity "full" each number equals the Rust library's (and the CLI
     sweep's) bit for bit. The GIL is released and large arrays use every core (rayon; set
     RAYON_NUM_THREADS to limit it).
+
+    at_temperature(T) is this joint at lubricant temperature T (K): the same numbers as
+    Joint(params with lubricant.temperature = T, ...) bit for bit, at the cost of a few
+    logarithms at "full" (a table or boundary level is built and measured again there).
 
     A Joint pickles (its parameters and fidelity settings; the rebuilt joint gives
     bit-identical results), so it travels to multiprocessing and Dask workers.
@@ -143,7 +151,8 @@ class Joint:
         point in C order; nothing is returned then.
 
         Returns a dict of arrays of the broadcast shape: load, speed, then RESULT_COLUMNS
-        (float64, SI units; regime as strings "boundary", "mixed", "full-film").
+        (float64, SI units; regime as strings "boundary", "mixed", "full-film"; validity as
+        strings "checked", "extrapolation", "known-wrong").
         """
         lo = as_float_array("load", "N", load)
         sp = as_float_array("speed", "rad/s", speed)
@@ -163,8 +172,28 @@ class Joint:
         }
         for name, arr in cols.items():
             out[name] = arr.reshape(shape)
-        out["regime"] = _REGIME_NAMES[codes].reshape(shape)
+        out["regime"] = _REGIME_NAMES[codes & 3].reshape(shape)
+        out["validity"] = _VALIDITY_NAMES[codes >> 2].reshape(shape)
         return out
+
+    def at_temperature(self, temperature: float) -> "Joint":
+        """This joint at lubricant temperature `temperature` (K), same fidelity settings.
+
+        Bit for bit the Joint built from the parameters with lubricant.temperature =
+        `temperature`; at fidelity "full" it costs a few logarithms (the solve's start table
+        and everything independent of temperature are shared), a table or boundary level is
+        built and measured again at the new temperature. A temperature outside
+        (138.15, 673.15] K, NaN or infinite raises ValueError naming it.
+        """
+        t = float(temperature)
+        p = self._params.with_values({"lubricant.temperature": t})
+        j = object.__new__(Joint)
+        j._native = self._native.at_temperature(t)
+        j._params = p
+        j._fidelity = self._fidelity
+        j._tolerance = self._tolerance
+        j._envelope = self._envelope
+        return j
 
     def __reduce__(self):
         return (_rebuild, (self._params, self._fidelity, self._tolerance, self._envelope))

@@ -11,6 +11,7 @@ import numpy.typing as npt
 RESULT_COLUMNS: List[str]
 CYCLE_COLUMNS: List[str]
 REGIMES: List[str]
+VALIDITIES: List[str]
 MU_C: str
 
 class Params:
@@ -44,6 +45,7 @@ class _Joint:
     def evaluate_flat(
         self, load: npt.NDArray[np.float64], speed: npt.NDArray[np.float64], shape: Sequence[int]
     ) -> Tuple[Dict[str, npt.NDArray[np.float64]], npt.NDArray[np.uint8]]: ...
+    def at_temperature(self, temperature: float) -> "_Joint": ...
     @property
     def chosen(self) -> str: ...
     @property

@@ -15,12 +15,19 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// Numeric result columns of the one result record ([`pinjoint::record::COLUMNS`]).
 const NUMERIC: usize = 11;
 
-/// The numeric result columns (every column of the record but `regime`), in record order.
+/// The numeric result columns (every column of the record but `regime` and `validity`), in
+/// record order.
 pub fn numeric_columns() -> impl Iterator<Item = (&'static str, fn(&OperatingPoint) -> f64)> {
     COLUMNS.iter().filter_map(|c| match c.value {
         Value::Number(f) => Some((c.name, f)),
-        Value::Regime => None,
+        Value::Regime | Value::Validity => None,
     })
+}
+
+/// The code of a point's regime and validity in one byte: regime + 4·validity
+/// ([`regime_code`], [`pinjoint::Validity::code`]).
+fn point_code(op: &OperatingPoint) -> u8 {
+    regime_code(op.regime) + 4 * op.validity.code()
 }
 
 /// Points handed to one rayon task; below two chunks the work stays on the calling thread.
@@ -69,7 +76,7 @@ impl NativeJoint {
             match self.point(l, w) {
                 Ok(op) => {
                     out[i] = row(&op);
-                    codes[i] = regime_code(op.regime);
+                    codes[i] = point_code(&op);
                 }
                 Err(e) => return Some((i, e)),
             }
@@ -123,8 +130,30 @@ impl NativeJoint {
         Ok(Self { joint, level, chosen, error_bound, fallbacks: AtomicU64::new(0) })
     }
 
+    /// This model at lubricant temperature `temperature` (K): bit for bit the `_Joint` built
+    /// from the parameters with that temperature, at the cost of a few logarithms at full
+    /// (the start table and the temperature-independent groups are shared); a table or
+    /// boundary level is built and measured again there. An invalid temperature raises
+    /// ValueError naming it.
+    fn at_temperature(&self, temperature: f64) -> PyResult<Self> {
+        let joint = self.joint.at_temperature(temperature).map_err(crate::params::param_err)?;
+        let level = match &self.level {
+            Some(ev) => {
+                let mut ev = ev.clone();
+                ev.set_temperature(temperature).map_err(|e| PyValueError::new_err(e.to_string()))?;
+                Some(ev)
+            }
+            None => None,
+        };
+        let (chosen, error_bound) = level.as_ref().map_or((self.chosen, self.error_bound), |ev| (ev.chosen(), ev.error_bound()));
+        // `auto` may pick full at the new temperature: then no level is kept.
+        let level = level.filter(|ev| ev.chosen() != Level::Full);
+        Ok(Self { joint, level, chosen, error_bound, fallbacks: AtomicU64::new(0) })
+    }
+
     /// Evaluate flat float64 arrays of equal length; `shape` is the broadcast shape (for the
-    /// index in error messages). Returns ({column: float64 array}, regime codes uint8 array).
+    /// index in error messages). Returns ({column: float64 array}, codes uint8 array:
+    /// regime + 4·validity).
     fn evaluate_flat<'py>(
         &self,
         py: Python<'py>,

@@ -37,5 +37,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("RESULT_COLUMNS", pinjoint::record::NAMES.to_vec())?;
     m.add("CYCLE_COLUMNS", cycle::CYCLE_COLUMNS.to_vec())?;
     m.add("REGIMES", pinjoint::record::REGIMES.iter().map(|r| r.as_str()).collect::<Vec<_>>())?;
+    m.add("VALIDITIES", pinjoint::Validity::ALL.iter().map(|v| v.as_str()).collect::<Vec<_>>())?;
     Ok(())
 }

@@ -131,5 +131,6 @@ pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
         regime: e.regime,
         min_film_thickness: h_min,
         min_lambda_ratio: h_min / joint.composite_roughness(),
+        validity: joint.validity(e.load, e.angular_velocity),
     }
 }

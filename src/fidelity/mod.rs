@@ -187,7 +187,13 @@ impl Evaluator {
     pub fn new(params: &Params, fidelity: Fidelity, tolerance: f64, envelope: Envelope) -> Result<Self, FidelityError> {
         validate_tolerance(tolerance)?;
         envelope.validate()?;
-        let joint = Joint::new(params)?;
+        Self::with_joint(Joint::new(params)?, fidelity, tolerance, envelope)
+    }
+
+    /// As [`Evaluator::new`] for the parameters `joint` was built with, reusing it.
+    pub fn with_joint(joint: Joint, fidelity: Fidelity, tolerance: f64, envelope: Envelope) -> Result<Self, FidelityError> {
+        validate_tolerance(tolerance)?;
+        envelope.validate()?;
         if matches!(fidelity, Fidelity::Table | Fidelity::Auto) && tolerance < FULL_ERROR_BOUND {
             return Err(FidelityError::ToleranceBelowModelAccuracy { value: tolerance, floor: FULL_ERROR_BOUND });
         }
@@ -386,6 +392,39 @@ impl Evaluator {
     /// Restore a warm start saved by [`Evaluator::warm_start`].
     pub fn set_warm_start(&mut self, logit: Option<f64>) {
         self.solver.set_warm_start(logit);
+    }
+
+    /// Move the evaluator to lubricant temperature `temperature` (K): afterwards it answers
+    /// bit for bit as an evaluator built by [`Evaluator::new`] with `lubricant.temperature`
+    /// = `temperature` (same level, tolerance and envelope). At the full level this costs
+    /// [`Joint::at_temperature`] (Roelands' temperature relation and a few logarithms: the
+    /// start table and every temperature-independent group are kept); the table and
+    /// boundary levels (and what `auto` chose) are built and measured again at the new
+    /// temperature ([`Evaluator::new`]'s cost: their error bound is that of the temperature
+    /// they answer at), and `auto` may choose another level there. The same temperature
+    /// (bit for bit) changes nothing. An invalid temperature (≤ 0 K or outside the
+    /// parameter's range, NaN, infinite) is an error naming it, and the evaluator is left
+    /// as it was. The warm start and the fallback count are kept.
+    pub fn set_temperature(&mut self, temperature: f64) -> Result<(), FidelityError> {
+        if temperature.to_bits() == self.joint().params().lubricant.temperature.to_bits() {
+            return Ok(());
+        }
+        let joint = self.joint().at_temperature(temperature)?;
+        let warm = self.solver.warm_start();
+        if self.requested == Fidelity::Full {
+            self.solver = WarmSolver::new(joint);
+        } else {
+            let fallbacks = self.fallbacks;
+            *self = Self::with_joint(joint, self.requested, self.tolerance, self.envelope)?;
+            self.fallbacks = fallbacks;
+        }
+        self.solver.set_warm_start(warm);
+        Ok(())
+    }
+
+    /// The lubricant temperature (K) the evaluator answers at.
+    pub fn temperature(&self) -> f64 {
+        self.joint().params().lubricant.temperature
     }
 
     /// Forget the warm start (e.g. after a jump in the inputs); the answers do not change.

@@ -352,6 +352,37 @@ impl RigSim {
         self.inputs
     }
 
+    /// Move the joint to lubricant temperature `temperature` (K), keeping the state: from
+    /// now on the simulator integrates exactly as one built with that temperature in
+    /// `config.model` (and the same fidelity) and resumed from this state with
+    /// [`RigSim::set_state`]. The joint moves by [`Joint::at_temperature`] (a few logarithms:
+    /// the start table and the temperature-independent groups are kept); a table or boundary
+    /// level is built again there ([`Evaluator::set_temperature`]). The integration restarts
+    /// at the current time, as after any input change. An invalid temperature is an error
+    /// naming it, and nothing changes.
+    pub fn set_temperature(&mut self, temperature: f64) -> Result<(), RigError> {
+        if temperature.to_bits() == self.config.model.lubricant.temperature.to_bits() {
+            return Ok(());
+        }
+        let joint = self.joint.at_temperature(temperature)?;
+        let fidelity = match self.fidelity.as_deref() {
+            Some(ev) => {
+                let mut ev = ev.clone();
+                ev.set_temperature(temperature)?;
+                Some(Arc::new(ev))
+            }
+            None => None,
+        };
+        self.joint = joint;
+        self.fidelity = fidelity;
+        self.config.model.lubricant.temperature = temperature;
+        self.segment = None;
+        self.start_cut = None;
+        self.linear = None;
+        self.burst = 0;
+        Ok(())
+    }
+
     /// The resumable state.
     pub fn state(&self) -> RigState {
         RigState { node: self.node, time: self.time, inputs: self.inputs }

@@ -29,7 +29,7 @@ def test_interface(rig_model_description):
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
     assert [n for n in v if v[n].causality == "input"] == ["load", "command_angle", "temperature"]
-    assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS + ["min_film_thickness", "min_lambda_ratio"]
+    assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "validity"]
     assert v["stuck"].type == "Boolean" and v["stuck"].variability == "discrete"
     assert v["use_command_input"].type == "Boolean" and v["use_command_input"].start in ("false", False)
     # Enumerations since issue 11 (same codes as the former Integer parameters).

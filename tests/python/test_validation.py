@@ -24,7 +24,7 @@ def test_interface(model_description):
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
     assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load", "temperature"]
-    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio"]
+    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "validity"]
     params = [n for n in v if v[n].causality == "parameter"]
     # The 26 parameter-file keys, the band, fidelity, tolerance and the 4 envelope bounds.
     assert len(params) == 33 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
@@ -40,6 +40,8 @@ def test_interface(model_description):
     assert outputs["min_lambda_ratio"] == ["angular_velocity", "load", "temperature"]
     assert outputs["mean_pressure"] == ["load"]
     assert outputs["dissipated_energy"] == []
+    assert outputs["validity"] == ["angular_velocity", "load", "temperature"]
+    assert v["validity"].type == "Enumeration" and v["validity"].variability == "discrete"
 
 
 def test_documentation_lists_every_variable(fmu_path, model_description):

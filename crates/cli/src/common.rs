@@ -16,14 +16,28 @@ pub const RAD_S_PER_RPM: f64 = 2.0 * PI / 60.0;
 pub const RIG_AMPLITUDE_DEG: f64 = 40.0;
 /// Highest stroke frequency of the paper's rig experiments, in Hz.
 pub const RIG_MAX_FREQUENCY_HZ: f64 = 1.0;
-/// Radial load range of the paper's rig experiments (lowest, highest), in N.
-pub const RIG_LOAD_RANGE_N: (f64, f64) = (5e3, 60e3);
+/// Radial load range of the paper's rig experiments (lowest, highest), in N: the checked load
+/// range of the validity envelope ([`pinjoint::validity::LOAD`]).
+pub const RIG_LOAD_RANGE_N: (f64, f64) = (pinjoint::validity::LOAD.lo, pinjoint::validity::LOAD.hi);
 /// The paper's simulated range (section 3.2): 1 to 800 rpm.
 pub const PAPER_RPM_RANGE: (f64, f64) = pinjoint::paper::SPEED_RANGE_RPM;
 
-/// Peak angular velocity of the fastest rig stroke, 2π f A (≈ 4.39 rad/s ≈ 41.9 rpm).
+/// Peak angular velocity of the fastest rig stroke, 2π f A (≈ 4.39 rad/s ≈ 41.9 rpm): the
+/// checked speed range of the validity envelope on the paper's pin
+/// ([`pinjoint::validity::MAX_RIG_ANGULAR_SPEED`]).
 pub fn rig_peak_speed() -> f64 {
-    2.0 * PI * RIG_MAX_FREQUENCY_HZ * RIG_AMPLITUDE_DEG.to_radians()
+    pinjoint::validity::MAX_RIG_ANGULAR_SPEED
+}
+
+/// A note for a figure's title when the lubricant temperature `t` (K) is outside the
+/// validity envelope's checked 15–25 °C (every point then is an extrapolation, or below 0 °C
+/// known to give too low a μ); empty inside.
+pub fn temperature_note(t: f64) -> String {
+    match pinjoint::validity::of_point(pinjoint::validity::LOAD.lo, 0.0, t) {
+        pinjoint::Validity::Checked => String::new(),
+        pinjoint::Validity::Extrapolation => format!("; T = {} K outside the checked 15-25 C: extrapolation everywhere", readable(t)),
+        pinjoint::Validity::KnownWrong => format!("; T = {} K below 0 C: μ known to be too LOW everywhere (no grease yield stress)", readable(t)),
+    }
 }
 
 /// The `--params FILE` (and `--temperature`) options shared by every command that evaluates the
@@ -138,8 +152,8 @@ pub fn lin_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 }
 
 /// The model's outputs in CSV files, after the input columns (SI units). The h_min columns
-/// (an extension) come last so that the earlier columns keep their positions.
-pub const RESULT_COLUMNS: [&str; 12] = pinjoint::record::NAMES;
+/// (an extension) and `validity` come last so that the earlier columns keep their positions.
+pub const RESULT_COLUMNS: [&str; 13] = pinjoint::record::NAMES;
 
 /// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
 /// `BrokenPipe`, which ends the program quietly).
@@ -156,10 +170,11 @@ pub fn exact(v: f64) -> String {
 }
 
 /// The values of [`RESULT_COLUMNS`] for one point, at full precision.
-pub fn result_fields(op: &OperatingPoint) -> [String; 12] {
+pub fn result_fields(op: &OperatingPoint) -> [String; 13] {
     pinjoint::record::COLUMNS.map(|c| match c.value {
         pinjoint::record::Value::Number(f) => exact(f(op)),
         pinjoint::record::Value::Regime => op.regime.as_str().to_string(),
+        pinjoint::record::Value::Validity => op.validity.as_str().to_string(),
     })
 }
 

@@ -87,7 +87,7 @@ fn rig_region(g: &Grid) -> Option<Region> {
     (x0 < x1 && y0 < y1).then(|| Region {
         x: (x0, x1),
         y: (y0, y1),
-        label: "rig experiments: 5-60 kN, up to 41.9 rpm (1 Hz, ±40°)".into(),
+        label: "rig experiments: 5-60 kN, up to 41.9 rpm (1 Hz, ±40°): validity checked; outside extrapolation".into(),
     })
 }
 

@@ -70,7 +70,7 @@ impl SpeedArg {
 /// The rows of the table, in order: a label for people and the [`pinjoint::record::POINT`]
 /// quantity it shows (value and unit come from the record). `speed` is followed by its value
 /// in rpm.
-pub const TABLE: [(&str, &str); 19] = [
+pub const TABLE: [(&str, &str); 20] = [
     ("load P_T", "load"),
     ("angular velocity ω", "speed"),
     ("sliding speed u = |ω|R", "sliding_speed"),
@@ -90,6 +90,7 @@ pub const TABLE: [(&str, &str); 19] = [
     ("viscosity at p_m (Roelands, eq. 5)", "contact_viscosity"),
     ("Sommerfeld number S (eq. 20)", "sommerfeld_number"),
     ("regime", "regime"),
+    ("validity (checked, extrapolation, known-wrong)", "validity"),
 ];
 
 /// The labels of the lubricant rows after [`TABLE`], in [`pinjoint::record::LUBRICANT`] order.
@@ -115,6 +116,7 @@ pub fn table(o: &OperatingPoint) -> Vec<(&'static str, String, &'static str)> {
         let value = match c.value {
             Value::Number(f) => readable(f(o)),
             Value::Regime => o.regime.as_str().to_string(),
+            Value::Validity => o.validity.as_str().to_string(),
         };
         rows.push((*label, value, display_unit(c.unit)));
         if *name == "speed" {

@@ -1,7 +1,7 @@
 //! `pinjoint stribeck`: the paper's Figure 3 — μ, 1/γ1, 1/γ2 and λ against the Sommerfeld
 //! number at one load — as CSV and SVG.
 
-use super::common::{log_space, positive, readable, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM};
+use super::common::{log_space, positive, readable, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
 use super::curves::{curve, points_csv};
 use super::error::{CliError, Result};
 use super::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
@@ -73,8 +73,16 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
     let x = || Axis::log("Sommerfeld number S (eq. 20) [-]");
     let paper = (PAPER_RPM_RANGE.0 * RAD_S_PER_RPM * s_per_rad_s, PAPER_RPM_RANGE.1 * RAD_S_PER_RPM * s_per_rad_s);
     let rig = (s_min, rig_peak_speed() * s_per_rad_s);
+    // The shaded speeds are the validity envelope's checked ones; outside them (and at a load
+    // or temperature outside it) the curve is an extrapolation.
+    let inside_load = (RIG_LOAD_RANGE_N.0..=RIG_LOAD_RANGE_N.1).contains(&load);
+    let band_label = if inside_load {
+        "rig experiments, up to 41.9 rpm (validity: checked; beyond it extrapolation)"
+    } else {
+        "rig experiments' speeds, up to 41.9 rpm (this load is outside 5-60 kN: extrapolation)"
+    };
     let marks = |c: Chart| {
-        c.band(rig.0, rig.1, "rig experiments, up to 41.9 rpm").marker(&[paper.0, paper.1], "paper's simulated range, 1 and 800 rpm")
+        c.band(rig.0, rig.1, band_label).marker(&[paper.0, paper.1], "paper's simulated range, 1 and 800 rpm")
     };
     let mu = marks(Chart::new("(a) friction coefficient", x(), Axis::linear("μ [-]")))
         .series(Series::line("μ (eq. 10)", col(|o| o.friction_coefficient)))
@@ -88,10 +96,11 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
         .legend(Corner::UpperLeft);
     let p_m = ops.first().map_or(0.0, |o| o.mean_pressure);
     let title = format!(
-        "Stribeck curve at P_T = {} kN (p_m = {} MPa); S = {} per rad/s",
+        "Stribeck curve at P_T = {} kN (p_m = {} MPa); S = {} per rad/s{}",
         readable(load / 1e3),
         readable((p_m / 1e6 * 100.0).round() / 100.0),
-        readable(s_per_rad_s)
+        readable(s_per_rad_s),
+        super::common::temperature_note(joint.params().lubricant.temperature)
     );
     Ok(stacked_plot(&title, &[mu, shares, lambda], (900, 1200))?)
 }

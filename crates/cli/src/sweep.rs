@@ -30,7 +30,7 @@ fields are ignored; blank lines and lines starting with # are skipped.\n\n\
 OUTPUT: the input columns as given, followed by friction_coefficient (-), torque (N·m, eq. 11's \
 magnitude μRP_T), film_thickness (m, central h_c), lambda_ratio (-), fluid_load_fraction (1/γ1), \
 asperity_load_fraction (1/γ2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-) \
-regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c) and min_lambda_ratio (-, eq. 21 with h_min). Numbers are printed in full (shortest text that \
+regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c), min_lambda_ratio (-, eq. 21 with h_min) and validity (checked | extrapolation | known-wrong: whether load, sliding speed and temperature are inside the paper's rig conditions, outside them, or below 0 C where μ is known to be too low; see docs/validity.md). Numbers are printed in full (shortest text that \
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
 A malformed row (missing field, non-numeric, non-finite, load = 0; a negative load is taken as its magnitude) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
@@ -45,7 +45,7 @@ pinjoint sweep --input pts.csv --fidelity auto --tolerance 1e-4\n\n\
 FIDELITY: --fidelity table|boundary|auto builds that level once over the envelope, by default \
 the input's own load range and |speed| range (or --envelope-load/--envelope-speed), and \
 standard error says which level answered (what auto picked) and the error bound it measured. \
-Rows outside a given envelope are answered by the full solve (said once on standard error)."
+Rows outside a given envelope are answered by the full solve (said once on standard error). With a `temperature` column the level is built again at each distinct temperature (its bound measured there; at full a temperature costs a few logarithms)."
 )]
 /// Arguments of `pinjoint sweep` (its `--help` text is the `#[command]` attribute's).
 pub struct SweepCmd {
@@ -75,10 +75,12 @@ fn is_stdio(p: &Path) -> bool {
 /// How rows are answered.
 enum Mode<'a> {
     /// The library's cold solve (the default, `--fidelity full`); rows with a `temperature`
-    /// use a joint at that temperature, built once per distinct value.
-    Full(&'a Joint, Temperatures),
-    /// A fidelity level: clones of one evaluator, one per task at a time.
-    Level { proto: &'a Evaluator, pool: Mutex<Vec<Evaluator>>, said: AtomicBool },
+    /// use the joint at that temperature ([`Joint::at_temperature`]: the same numbers as a
+    /// joint built there, at the cost of a few logarithms).
+    Full(&'a Joint),
+    /// A fidelity level: clones of one evaluator, one per task at a time; rows with a
+    /// `temperature` use the level built at that temperature ([`Temperatures`]).
+    Level { proto: &'a Evaluator, pool: Mutex<Vec<Evaluator>>, said: AtomicBool, by_t: Temperatures },
     /// Only validate and collect the load and |speed| ranges (the envelope's default).
     Scan,
 }
@@ -91,29 +93,30 @@ struct Columns {
     temperature: Option<usize>,
 }
 
-/// Joints at the temperatures of a `temperature` column, built once per distinct value (the
-/// start table makes `Joint::new` cost about a millisecond). At most [`MAX_TEMPERATURES`] are
+/// Fidelity levels at the temperatures of a `temperature` column, built once per distinct
+/// value ([`Evaluator::set_temperature`]: a table or boundary level is tabulated and measured
+/// again at each temperature, so its bound holds there). At most [`MAX_TEMPERATURES`] are
 /// kept: past that the cache starts again, so memory stays bounded.
 #[derive(Default)]
-struct Temperatures(Mutex<std::collections::HashMap<u64, std::sync::Arc<Joint>>>);
+struct Temperatures(Mutex<std::collections::HashMap<u64, std::sync::Arc<Evaluator>>>);
 
-/// Joints kept by [`Temperatures`] at once.
+/// Levels kept by [`Temperatures`] at once.
 const MAX_TEMPERATURES: usize = 256;
 
 impl Temperatures {
-    fn joint(&self, base: &Joint, t: f64) -> std::result::Result<std::sync::Arc<Joint>, pinjoint::ParamError> {
+    fn level(&self, proto: &Evaluator, t: f64) -> std::result::Result<std::sync::Arc<Evaluator>, pinjoint::fidelity::FidelityError> {
         let mut map = self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        if let Some(j) = map.get(&t.to_bits()) {
-            return Ok(j.clone());
+        if let Some(e) = map.get(&t.to_bits()) {
+            return Ok(e.clone());
         }
-        let mut p = *base.params();
-        p.lubricant.temperature = t;
-        let j = std::sync::Arc::new(Joint::new(&p)?);
+        let mut ev = proto.clone();
+        ev.set_temperature(t)?;
+        let ev = std::sync::Arc::new(ev);
         if map.len() >= MAX_TEMPERATURES {
             map.clear();
         }
-        map.insert(t.to_bits(), j.clone());
-        Ok(j)
+        map.insert(t.to_bits(), ev.clone());
+        Ok(ev)
     }
 }
 
@@ -168,6 +171,7 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
         Mode::Level { proto, pool, .. } => Some(pool.lock().ok().and_then(|mut p| p.pop()).unwrap_or_else(|| (*proto).clone())),
         _ => None,
     };
+    let mut at_t: std::collections::HashMap<u64, Evaluator> = std::collections::HashMap::new();
     for r in recs {
         let line = r.line;
         let bad = |message: String| CliError::Input { file: file.to_string(), line, message };
@@ -205,10 +209,19 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
         widen(&mut out.speeds, speed.abs());
         let op: OperatingPoint = match (mode, ev.as_mut()) {
             (Mode::Scan, _) => continue,
-            (Mode::Full(joint, _), _) if temperature.is_none() => joint.evaluate(load, speed).map_err(|e| bad(e.to_string()))?,
-            (Mode::Full(joint, by_t), _) => {
+            (Mode::Full(joint), _) => match temperature {
+                None => joint.evaluate(load, speed),
+                Some(t) => joint.at_temperature(t).map_err(|e| bad(e.to_string()))?.evaluate(load, speed),
+            }
+            .map_err(|e| bad(e.to_string()))?,
+            (Mode::Level { said, proto, by_t, .. }, Some(ev)) if temperature.is_some_and(|t| t.to_bits() != ev.temperature().to_bits()) => {
                 let t = temperature.unwrap_or_default();
-                by_t.joint(joint, t).map_err(|e| bad(e.to_string()))?.evaluate(load, speed).map_err(|e| bad(e.to_string()))?
+                let level = by_t.level(proto, t).map_err(|e| bad(e.to_string()))?;
+                // This chunk's own copy of the level at t (it counts its fallbacks).
+                let ev = at_t.entry(t.to_bits()).or_insert_with(|| (*level).clone());
+                let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
+                note_fallback(&e, ev, said);
+                ev.operating_point(&e)
             }
             (Mode::Level { said, .. }, Some(ev)) => {
                 let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
@@ -232,6 +245,7 @@ fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mod
             match c.value {
                 pinjoint::record::Value::Number(f) => push_exact(text, f(&op)),
                 pinjoint::record::Value::Regime => text.extend_from_slice(op.regime.as_str().as_bytes()),
+                pinjoint::record::Value::Validity => text.extend_from_slice(op.validity.as_str().as_bytes()),
             }
         }
         text.push(b'\n');
@@ -391,7 +405,7 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     let bar = progress(len);
     let level;
     let mode = if full {
-        Mode::Full(&joint, Temperatures::default())
+        Mode::Full(&joint)
     } else {
         let (loads, speeds) = if needs_ranges {
             let mut reader = RecordReader::new(&mut input, &file);
@@ -404,15 +418,10 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
             ((1.0, 2.0), (1e-3, 1.0))
         };
         level = cmd.fidelity.build(&cmd.params.load()?, loads, speeds)?;
-        Mode::Level { proto: &level, pool: Mutex::new(Vec::new()), said: AtomicBool::new(false) }
+        Mode::Level { proto: &level, pool: Mutex::new(Vec::new()), said: AtomicBool::new(false), by_t: Temperatures::default() }
     };
     let mut reader = RecordReader::new(&mut input, &file);
     let cols = read_header(&mut reader, &file)?;
-    if cols.temperature.is_some() && !full {
-        return Err(CliError::Invalid(
-            "a `temperature` column needs --fidelity full (a table or boundary level is built for one temperature; use --temperature)".into(),
-        ));
-    }
     // An input or model error inside the writer is kept here and returned as itself.
     let failure: Mutex<Option<CliError>> = Mutex::new(None);
     let fill = |w: &mut dyn Write| -> io::Result<()> {

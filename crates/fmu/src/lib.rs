@@ -23,6 +23,7 @@ pub mod pin_joint_rig;
 pub mod platforms_doc;
 pub mod table;
 pub mod units;
+pub mod validity;
 
 use fmi_layer::fmi2::model::Model;
 use fmi_layer::fmi2::variables::{Legal, ModelInfo, UnitDef, Variable};

@@ -45,6 +45,7 @@ pub fn index_html() -> String {
     let v = &INFO.variables;
     let (guid, version, requirements) = (INFO.guid(), INFO.version, crate::requirements_html());
     let (platforms, extensions) = (crate::platforms_doc::PLATFORMS_HTML, crate::extensions_doc::EXTENSIONS_HTML);
+    let validity = crate::validity::html(false);
     let [inputs, outputs, params] = [Causality::Input, Causality::Output, Causality::Parameter].map(|c| rows(v, c, Style::Plain));
     let header = head(Style::Plain);
     let j = Joint::new(&Params::default()).expect("defaults are valid");
@@ -131,8 +132,9 @@ stored in the elastic deflection is not counted.</p>
 
 <h2>Validity</h2>
 <ul>
-<li>The paper's operating range: loads 5&ndash;60 kN (mean pressure 7&ndash;23 MPa), speeds 1&ndash;800 rpm, Sommerfeld numbers 0&ndash;0.15,
-oscillation &plusmn;40&deg; at 0.03&ndash;1 Hz. The model is defined beyond it, but not validated.</li>
+<li>The paper's operating range: loads 5&ndash;60 kN (mean pressure 7&ndash;23 MPa), speeds 1&ndash;800 rpm in its simulations, Sommerfeld numbers 0&ndash;0.15,
+oscillation &plusmn;40&deg; at 0.03&ndash;1 Hz in its tests. The model is defined beyond it, but not validated: the <code>validity</code>
+output says where (section "Validity envelope").</li>
 <li>Hertz theory is applied to a conformal contact (a is not small against R); eq. 11 neglects the tangential pressure
 components (under 10 %); the contact is assumed fully flooded (unless the starved-inlet extension is switched on) and isothermal
 at the <code>temperature</code> input.</li>
@@ -147,6 +149,7 @@ fmi2Error naming the output, instead of returning NaN or an impossible value. te
 defined behaviour of every bad input.</li>
 </ul>
 
+{validity}
 {extensions}
 <h2>Model values (default parameters)</h2>
 <table><tr><th>load (kN)</th><th>&omega; (rad/s)</th><th>&mu;</th><th>T (N&middot;m)</th><th>h<sub>c</sub> (&micro;m)</th><th>&lambda;</th><th>1/&gamma;<sub>1</sub></th><th>p<sub>m</sub> (MPa)</th></tr>

@@ -62,14 +62,16 @@ pub fn outputs(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta: 
 pub struct PinJointModel {
     v: Values,
     /// Built from the parameters, the temperature input and the fidelity settings on first
-    /// use (at exit of initialization); dropped when a parameter changes, rebuilt when the
-    /// temperature input has changed.
+    /// use (at exit of initialization); dropped when a parameter changes, moved to a new
+    /// temperature input by [`Evaluator::set_temperature`].
     evaluator: Option<Evaluator>,
-    /// For the host's log (fidelity chosen; first fallback).
+    /// For the host's log (fidelity chosen; first fallback; a validity excursion).
     message: Option<String>,
     /// The interface the host instantiated: under Model Exchange the host owns the presliding
     /// state; under Co-Simulation the model steps it.
     interface: Option<Interface>,
+    /// Whether the inputs were outside the validity envelope at the last evaluation.
+    validity: pinjoint::validity::Tracker,
 }
 
 impl PinJointModel {
@@ -80,10 +82,10 @@ impl PinJointModel {
 
     fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
         self.v.zv.validate()?;
-        let t = self.v.temperature.to_bits();
-        if self.evaluator.as_ref().is_some_and(|e| e.joint().params().lubricant.temperature.to_bits() != t) {
-            // A new temperature is a new lubricant.
-            self.evaluator = None;
+        if let Some(ev) = self.evaluator.as_mut().filter(|e| e.temperature().to_bits() != self.v.temperature.to_bits()) {
+            // A new temperature: the same evaluator moved there (bit for bit one built there;
+            // at full a few logarithms, a table or boundary level is built again).
+            ev.set_temperature(self.v.temperature).map_err(|e| ModelError::failed("", e))?;
         }
         if self.evaluator.is_none() {
             // Every parameter is checked as set, `lubricant.temperature` too (the input replaces it).
@@ -187,6 +189,10 @@ impl Model for PinJointModel {
             ));
         }
         self.v.out = out;
+        let v = super::variables::validity(&self.v);
+        let s = &self.v;
+        let excursion = || pinjoint::validity::excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature);
+        crate::validity::note(&mut self.validity, v, excursion, "", &mut self.message);
         Ok(())
     }
 
@@ -247,7 +253,7 @@ impl Model for PinJointModel {
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
         let same = v.params == self.v.params && v.fidelity == self.v.fidelity && v.zv == self.v.zv;
         let evaluator = if same { self.evaluator.take() } else { None };
-        *self = PinJointModel { v, evaluator, message: None, interface: self.interface };
+        *self = PinJointModel { v, evaluator, message: None, interface: self.interface, validity: self.validity };
         Ok(())
     }
 }

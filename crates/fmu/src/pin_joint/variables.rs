@@ -14,6 +14,7 @@
 //! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 38–41 |
 //! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 42 |
 //! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 43, 44 |
+//! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature | not stored |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
@@ -202,8 +203,9 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(Row::new(band, |s: &Values| s.zv.band, |s, x| s.zv.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
+    rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows.extend(zero_velocity::rows(201, p + 12));
     rows.extend(presliding_rows(p + 16));
     rows
@@ -237,6 +239,14 @@ fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
             "Co-Simulation: true once the host has set the angle after initialization: the angle's increments then drive the presliding state"),
             |s: &Values| s.angle_driven, |s, x| s.angle_driven = x, Rule::Any).at_slot(slot + 2),
     ]
+}
+
+/// The `validity` output's description.
+const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
+
+/// The validity of the held inputs ([`pinjoint::validity::of_point`]).
+pub fn validity(s: &Values) -> pinjoint::Validity {
+    pinjoint::validity::of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature)
 }
 
 #[cfg(test)]

@@ -41,6 +41,7 @@ pub fn index_html() -> String {
     let v = &INFO.variables;
     let (guid, version, requirements) = (INFO.guid(), INFO.version, crate::requirements_html());
     let (platforms, extensions) = (crate::platforms_doc::PLATFORMS_HTML, crate::extensions_doc::EXTENSIONS_HTML);
+    let validity = crate::validity::html(true);
     let [inputs, outputs, params] = [Causality::Input, Causality::Output, Causality::Parameter].map(|c| rows(v, c, Style::Typed));
     let header = head(Style::Typed);
     format!(
@@ -133,6 +134,7 @@ unit; a code out of range already by fmi2SetInteger.</li>
 <li>The settings are part of the FMU state; a restored state rebuilds the same table (deterministically) and continues bit for bit.</li>
 </ul>
 
+{validity}
 {extensions}
 <h2>Inputs</h2><table>{header}{inputs}</table>
 <h2>Outputs</h2><table>{header}{outputs}</table>
@@ -176,7 +178,7 @@ mod tests {
         for v in &super::INFO.variables {
             assert!(html.contains(&format!("<code>{}</code>", v.name)), "{}", v.name);
         }
-        assert_eq!(super::INFO.variables.iter().filter(|v| v.causality == Causality::Output).count(), 14);
+        assert_eq!(super::INFO.variables.iter().filter(|v| v.causality == Causality::Output).count(), 15);
         assert!(html.contains("Pan &amp; Hamrock") && html.contains("Roelands' temperature relation") && html.contains("Chevalier"));
         assert!(html.contains("Routh") && html.contains("67.2 N&middot;m at 20 kN"), "breakaway torque from the library");
     }

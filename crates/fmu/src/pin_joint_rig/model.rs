@@ -48,6 +48,8 @@ pub struct RigModel {
     /// Whether the first evaluation outside the envelope has been logged (once per instance
     /// and fidelity setting; kept across a restore with the same settings).
     fallback_logged: bool,
+    /// Whether the last sample was outside the validity envelope (one log per excursion).
+    validity: pinjoint::validity::Tracker,
 }
 
 impl RigModel {
@@ -131,15 +133,13 @@ impl RigModel {
     }
 
     /// Apply the held inputs at the current time and sample. A changed `temperature` input
-    /// rebuilds the simulator's friction model and resumes from the current state.
+    /// moves the simulator's friction model there ([`RigSim::set_temperature`]: as a rig
+    /// built at that temperature resumed from the current state).
     fn refresh(&mut self, rig_time: Option<f64>) -> ModelResult<()> {
         let inputs = self.v.settings.inputs();
-        let stale = self.sim.as_ref().is_some_and(|s| s.joint().params().lubricant.temperature.to_bits() != self.v.settings.temperature.to_bits());
-        if stale {
-            let state = self.sim.as_ref().map(RigSim::state).expect("checked above");
-            let mut sim = self.build(None)?;
-            sim.set_state(&state).map_err(|e| ModelError::failed("", e))?;
-            self.sim = Some(sim);
+        let t = self.v.settings.temperature;
+        if let Some(sim) = self.sim.as_mut().filter(|s| s.joint().params().lubricant.temperature.to_bits() != t.to_bits()) {
+            sim.set_temperature(t).map_err(|e| ModelError::failed("", e))?;
         }
         let sim = self.sim()?;
         let t = rig_time.unwrap_or(sim.time()).max(sim.time());
@@ -149,6 +149,10 @@ impl RigModel {
         let joint = self.sim.as_ref().expect("built above").joint();
         // Checked once, by the FMI layer (finite and within their declared min/max).
         self.v.out = Outputs::of(s, joint);
+        let context = format!(" at t = {} s (rig clock)", show(s.time));
+        let v = super::variables::validity(&self.v);
+        let values = &self.v;
+        crate::validity::note(&mut self.validity, v, || super::variables::excursion(values), &context, &mut self.message);
         Ok(())
     }
 }
@@ -170,8 +174,8 @@ impl Model for RigModel {
 
     fn set_real(&mut self, i: usize, x: f64) {
         let var = TABLE.set(&mut self.v, i, x);
-        // The temperature input is applied at the next refresh (rebuilding the friction model
-        // and keeping the simulator's state); parameters drop the simulator.
+        // The temperature input is applied at the next refresh (RigSim::set_temperature: the
+        // simulator's friction model moves there, its state is kept); parameters drop the simulator.
         if var.causality == Causality::Parameter {
             self.sim = None;
         }
@@ -212,6 +216,7 @@ impl Model for RigModel {
         let reuse = self.sim.as_ref().and_then(RigSim::shared_fidelity);
         let mut m = RigModel::restored(settings, start_time, state, reuse)?;
         m.fallback_logged = self.fallback_logged && m.v.settings.fidelity == self.v.settings.fidelity;
+        m.validity = self.validity;
         *self = m;
         Ok(())
     }

@@ -1,0 +1,105 @@
+"""The `validity` field of the results and `Joint.at_temperature`: the envelope at each of its
+boundaries and on both sides, over random points; a moved joint bit for bit a fresh one at
+that temperature (full and a table level); bad temperatures refused by name."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import pinjoint
+
+# The envelope as docs/validity.md states it (not read from the package).
+LOAD = (5e3, 60e3)
+U_MAX = 2.0 * math.pi * 1.0 * math.radians(40.0) * 0.028
+TEMP = (288.15, 298.15)
+COLD = 273.15
+
+
+def expected(load, speed, t):
+    u = np.abs(speed) * 0.028
+    load = np.abs(load)
+    ok = (load >= LOAD[0]) & (load <= LOAD[1]) & (u <= U_MAX) & (t >= TEMP[0]) & (t <= TEMP[1])
+    out = np.where(ok, "checked", "extrapolation").astype(object)
+    out[np.broadcast_to(t < COLD, out.shape)] = "known-wrong"
+    return out
+
+
+def joint_at(t, **kw):
+    return pinjoint.Joint(pinjoint.Params({"lubricant.temperature": t}), **kw)
+
+
+def test_every_boundary_and_both_sides():
+    w_max = U_MAX / 0.028
+    cases = [
+        (5e3, 1.0, 293.15, "checked"),
+        (np.nextafter(5e3, 0), 1.0, 293.15, "extrapolation"),
+        (60e3, -1.0, 293.15, "checked"),
+        (np.nextafter(60e3, 1e9), -1.0, 293.15, "extrapolation"),
+        (20e3, 0.0, 293.15, "checked"),
+        (20e3, w_max * (1 - 1e-12), 293.15, "checked"),
+        (20e3, w_max * (1 + 1e-12), 293.15, "extrapolation"),
+        (20e3, 0.5, 288.15, "checked"),
+        (20e3, 0.5, np.nextafter(288.15, 0), "extrapolation"),
+        (20e3, 0.5, 298.15, "checked"),
+        (20e3, 0.5, np.nextafter(298.15, 1e9), "extrapolation"),
+        (20e3, 0.5, 273.15, "extrapolation"),
+        (20e3, 0.5, np.nextafter(273.15, 0), "known-wrong"),
+    ]
+    base = pinjoint.Joint()
+    for load, w, t, want in cases:
+        for j in (joint_at(t), base.at_temperature(t)):
+            assert str(j.evaluate(load, w)["validity"]) == want, (load, w, t)
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_random_points_and_temperatures(seed):
+    rng = np.random.default_rng(seed)
+    base = pinjoint.Joint()
+    for t in np.concatenate([rng.uniform(200.0, 400.0, 4), [293.15, 272.0]]):
+        load = np.exp(rng.uniform(np.log(1e3), np.log(2e5), 300))
+        speed = np.exp(rng.uniform(np.log(1e-4), np.log(50.0), 300)) * rng.choice([-1.0, 1.0], 300)
+        moved = base.at_temperature(float(t))
+        fresh = joint_at(float(t))
+        a, b = moved.evaluate(load, speed), fresh.evaluate(load, speed)
+        assert list(a) == list(b)
+        for k in a:
+            if a[k].dtype.kind == "f":
+                assert np.array_equal(a[k].view(np.uint64), b[k].view(np.uint64)), (t, k)
+            else:
+                assert np.array_equal(a[k], b[k]), (t, k)
+        assert np.array_equal(a["validity"], expected(load, speed, t))
+        assert moved.params == fresh.params
+        base = moved  # the next temperature is reached from this one
+
+
+def test_table_level_moves_with_the_temperature():
+    env = (5e3, 60e3, 0.01, 10.0)
+    j = pinjoint.Joint(fidelity="table", tolerance=1e-3, envelope=env)
+    rng = np.random.default_rng(7)
+    load = rng.uniform(5e3, 60e3, 200)
+    speed = np.exp(rng.uniform(np.log(0.01), np.log(10.0), 200))
+    for t in (250.0, 320.0):
+        moved = j.at_temperature(t)
+        fresh = joint_at(t, fidelity="table", tolerance=1e-3, envelope=env)
+        assert moved.level == fresh.level and moved.error_bound == fresh.error_bound
+        a, b = moved.evaluate(load, speed), fresh.evaluate(load, speed)
+        assert np.array_equal(a["friction_coefficient"], b["friction_coefficient"])
+        full = joint_at(t).evaluate(load, speed)["friction_coefficient"]
+        assert np.max(np.abs(a["friction_coefficient"] / full - 1.0)) <= 1e-3
+
+
+@pytest.mark.parametrize("bad", [0.0, -1.0, float("nan"), float("inf"), -float("inf"), 138.15, 673.16])
+def test_bad_temperatures_are_refused_by_name(bad):
+    with pytest.raises(ValueError, match="lubricant.temperature"):
+        pinjoint.Joint().at_temperature(bad)
+
+
+def test_cold_soak_is_known_wrong_and_low():
+    warm = pinjoint.Joint().evaluate(20e3, 0.21)
+    cold = pinjoint.Joint().at_temperature(233.15).evaluate(20e3, 0.21)
+    assert str(warm["validity"]) == "checked" and str(cold["validity"]) == "known-wrong"
+    assert float(cold["friction_coefficient"]) < 0.5 * float(warm["friction_coefficient"])
+    assert pinjoint.VALIDITIES == ["checked", "extrapolation", "known-wrong"]
