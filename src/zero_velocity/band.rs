@@ -32,10 +32,10 @@ pub fn torque(omega: f64, band: f64, sliding: f64, edge: f64) -> f64 {
 }
 
 /// Check ω_b (a finite number ≥ 0).
-pub fn check_band(band: f64) -> Result<(), super::ZeroVelocityError> {
+pub fn check_band(band: f64) -> Result<(), super::error::ZeroVelocityError> {
     if band.is_finite() && band >= 0.0 {
         Ok(())
     } else {
-        Err(super::ZeroVelocityError::Invalid { name: "zero_velocity.speed_band", value: band, unit: "rad/s", rule: "it must be a finite number >= 0" })
+        Err(super::error::ZeroVelocityError::Invalid { name: "zero_velocity.speed_band", value: band, unit: "rad/s", rule: "it must be a finite number >= 0" })
     }
 }

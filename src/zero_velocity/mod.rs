@@ -14,15 +14,16 @@
 //!
 //! [`jet`] gives the law's exact partial derivatives (the FMU's directional derivatives).
 
-pub mod band;
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+pub mod error;
 pub mod jet;
-pub mod joint;
+pub mod band;
 pub mod presliding;
+pub mod joint;
 
+pub use error::ZeroVelocityError;
 pub use joint::PreslidingJoint;
 pub use presliding::Presliding;
-
-use thiserror::Error;
 
 /// Which zero-velocity treatment a front end applies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -68,26 +69,6 @@ impl ZeroVelocityModel {
             _ => Err(ZeroVelocityError::UnknownModel(name.chars().take(40).collect())),
         }
     }
-}
-
-/// A rejected zero-velocity parameter.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ZeroVelocityError {
-    /// A parameter out of its range: its name, value, unit and rule.
-    #[error("parameter {name} = {}{}{unit} is out of range: {rule}", crate::fmt::Num(*value), if unit.is_empty() { "" } else { " " })]
-    Invalid {
-        /// The parameter's name, e.g. `zero_velocity.presliding_angle`.
-        name: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// Its unit (empty for a ratio).
-        unit: &'static str,
-        /// What it must be.
-        rule: &'static str,
-    },
-    /// A model name that is neither `band` nor `presliding` (its first 40 characters).
-    #[error("zero_velocity.model = \"{0}\" is not a zero-velocity model: it must be band or presliding")]
-    UnknownModel(String),
 }
 
 #[cfg(test)]

@@ -38,7 +38,7 @@
 //! term |c·ω| = t_d·T·|ω|/φ_s.
 
 use super::jet::Scalar;
-use super::ZeroVelocityError;
+use super::error::ZeroVelocityError;
 
 /// Default presliding angle φ_s (rad): the elastic deflection at which the presliding torque
 /// would reach the sliding torque. 1.5e-3 rad is 42 µm of tangential displacement at the

@@ -4,9 +4,9 @@
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 mod bench_error;
-mod bench_calibrate;
 mod bench_rig;
 mod bench_throughput;
+mod bench_calibrate;
 mod eval_path;
 mod bench_eval;
 mod bench_report;
