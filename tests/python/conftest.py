@@ -28,6 +28,10 @@ OUTPUTS = [
     "sommerfeld_number", "power_loss", "dissipated_energy",
 ]
 DEFAULT_BAND = 0.01  # rad/s, zero_velocity.speed_band
+# zero_velocity.model = band (0): the stateless law, bit for bit the one before the presliding
+# model (the default, 1). Tests that compare the torque with the library's stateless value or
+# the band's ramp set it.
+BAND = {"zero_velocity.model": 0}
 
 
 def _fmu_fixtures(prefix, locate, tmp_name):
