@@ -3,9 +3,11 @@
 Run by `pinjoint-bench` (or by hand):
     .venv/bin/python benches/fmu_step.py PinJoint.fmu PassThrough.fmu [--steps N] [--repeats R]
 
-Every configuration is driven by the same loop: set two Real inputs, fmi2DoStep, get two
-Real outputs (PinJoint: angular_velocity, load -> torque, friction_coefficient; PassThrough:
-u1, u2 -> y1, y2). The inputs follow a 1 Hz, +-40 deg sine stroke at 20 kN +- 10 %, so the
+Every configuration is driven by the same loop: set the Real inputs, fmi2DoStep, get two
+Real outputs (PinJoint: angle, angular_velocity, load -> torque, friction_coefficient;
+PassThrough: u1, u2 -> y1, y2). PinJoint runs with its default zero-velocity model
+(presliding, the state driven by the angle) at every fidelity, and at full fidelity with the
+band ("full-band"), the stateless law. The inputs follow a 1 Hz, +-40 deg sine stroke at 20 kN +- 10 %, so the
 joint sweeps the speeds of the rig. The configurations are interleaved over the repeats
 (round-robin) so that drifts of a busy machine touch all alike; the fastest repeat of each is
 kept (the least disturbed), the median too. Prints one JSON object on standard output.
@@ -53,11 +55,13 @@ def main(argv):
     configs = {"passthrough": (instance(passthrough, md_t, dir_t), [vr_t["u1"], vr_t["u2"]], [vr_t["y1"], vr_t["y2"]])}
     env = {vr_p["tolerance"]: tolerance, vr_p["envelope.load_min"]: 15e3, vr_p["envelope.load_max"]: 25e3,
            vr_p["envelope.speed_min"]: 1e-3, vr_p["envelope.speed_max"]: 6.0}
-    for code, name in enumerate(FIDELITIES):
+    runs = [(name, {vr_p["fidelity"]: code}) for code, name in enumerate(FIDELITIES)]
+    runs.append(("full-band", {vr_p["fidelity"]: 0, vr_p["zero_velocity.model"]: 0}))
+    for name, ints in runs:
         t0 = time.perf_counter()
-        s = instance(pin, md_p, dir_p, ints={vr_p["fidelity"]: code}, reals=env)
+        s = instance(pin, md_p, dir_p, ints=ints, reals=env)
         build = time.perf_counter() - t0
-        configs[name] = (s, [vr_p["angular_velocity"], vr_p["load"]], [vr_p["torque"], vr_p["friction_coefficient"]])
+        configs[name] = (s, [vr_p["angle"], vr_p["angular_velocity"], vr_p["load"]], [vr_p["torque"], vr_p["friction_coefficient"]])
         configs[name] += (build,)
     times = {k: [] for k in configs}
     clocks = {k: 0.0 for k in configs}
@@ -82,9 +86,13 @@ def main(argv):
 
 
 def drive_from(s, vin, vout, n, h, clocks, name):
-    amp = math.radians(40.0) * 2.0 * math.pi
+    a = math.radians(40.0)
+    amp = a * 2.0 * math.pi
     t = clocks[name]
-    ins = [(amp * math.cos(2.0 * math.pi * (t + k * h)), 20e3 * (1.0 + 0.1 * math.sin(0.3 * (t + k * h)))) for k in range(n)]
+    ins = [(a * math.sin(2.0 * math.pi * (t + k * h)), amp * math.cos(2.0 * math.pi * (t + k * h)), 20e3 * (1.0 + 0.1 * math.sin(0.3 * (t + k * h))))
+           for k in range(n)]
+    if len(vin) == 2:
+        ins = [x[1:] for x in ins]
     set_real, do_step, get_real = s.setReal, s.doStep, s.getReal
     t0 = time.perf_counter()
     for k in range(n):

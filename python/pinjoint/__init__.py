@@ -21,6 +21,7 @@ Everything is in SI units: N, m, Pa, Pa*s, rad, rad/s, N*m.
 Public names
 ------------
 Joint            the model at a fidelity level; ``evaluate(load, speed)``
+Presliding       the joint at rest (the PinJoint FMU's presliding law), a stateful object
 Params           the parameter set (the parameter file's keys, validation and messages)
 default_params   the paper's parameters
 simulate_cycle   whole strokes of the paper's torsion test rig (columns of cycle.csv)
@@ -33,6 +34,7 @@ RESULT_COLUMNS, CYCLE_COLUMNS, REGIMES, MU_C
 from ._native import CYCLE_COLUMNS, MU_C, REGIMES, RESULT_COLUMNS, Params, param_table, rig_param_table
 from ._joint import DEFAULT_ENVELOPE, Joint, default_params
 from ._cycle import simulate_cycle
+from ._presliding import DEFAULT_PRESLIDING, Presliding
 from ._calibrate import Calibration, calibrate
 
 __all__ = [
@@ -40,8 +42,10 @@ __all__ = [
     "Calibration",
     "MU_C",
     "DEFAULT_ENVELOPE",
+    "DEFAULT_PRESLIDING",
     "Joint",
     "Params",
+    "Presliding",
     "calibrate",
     "REGIMES",
     "RESULT_COLUMNS",

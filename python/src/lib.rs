@@ -7,6 +7,7 @@
 //!
 //! - [`params`]: the `Params` class (the parameter file's keys, validation and messages).
 //! - [`joint`]: `_Joint`, the vectorised, parallel, GIL-free evaluation.
+//! - [`presliding`]: `_Presliding`, the stateful presliding joint (the FMU's zero-velocity law).
 //! - [`cycle`]: `_simulate_cycle`, whole rig strokes (the columns of `cycle.csv`).
 //! - [`calibrate`]: `_calibrate`, the fit of `pinjoint calibrate` (`pinjoint-calibrate`).
 //! - [`messages`]: error texts with values in their shortest round-trip form.
@@ -18,6 +19,7 @@ pub mod cycle;
 pub mod joint;
 pub mod messages;
 pub mod params;
+pub mod presliding;
 pub mod values;
 
 /// The native half of the `pinjoint` package; use `pinjoint` itself.
@@ -25,6 +27,7 @@ pub mod values;
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<params::PyParams>()?;
     m.add_class::<joint::NativeJoint>()?;
+    m.add_class::<presliding::NativePresliding>()?;
     m.add_function(wrap_pyfunction!(cycle::simulate_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(calibrate::calibrate, m)?)?;
     m.add("MU_C", pinjoint_calibrate::MU_C)?;

@@ -100,10 +100,42 @@ impl PreslidingJoint {
 
     /// The friction torque at (`angle`, `omega`) and its partial derivatives with respect to
     /// (angle, angular velocity, load), `bound` carrying T and its partials ([`bound_jet`]).
+    /// The angle partial is the tangent stiffness in the direction of motion
+    /// ([`tangent_held`]).
     pub fn torque_partials(&self, angle: f64, omega: f64, bound: Jet) -> Jet {
-        let tau = self.law.deflect(Jet::c(self.torque), Jet::var(angle - self.angle, 0), bound);
+        let tau = tangent_held(&self.law, self.torque, angle - self.angle, omega, bound);
         self.law.torque(tau, Jet::var(omega, 1), bound)
     }
+}
+
+/// The presliding torque held after the increment `delta` from the committed `tau`, as a jet
+/// over (angle, angular velocity, load). Its ω and P partials are exact (through the bound);
+/// its angle partial is the law's tangent dτ/dΔ = k·g at the held torque in the direction of
+/// motion: that of `omega`, else of `delta`, else (at rest, nothing moving) the unloading
+/// direction (from a state beyond a bound that fell, the bound: the output is clamped there). This
+/// is the derivative a linearly implicit host needs for its next increment,
+/// which moves the way ω does: the law is one-sided (a sliding joint is stiff against a
+/// reversal, not along its motion), and for an increment in the direction of ω it is the exact
+/// partial derivative of the held torque.
+pub fn tangent_held(law: &Presliding, tau: f64, delta: f64, omega: f64, bound: Jet) -> Jet {
+    let mut held = law.deflect(Jet::c(tau), Jet::c(delta), bound);
+    let dir = if omega != 0.0 {
+        omega
+    } else if delta != 0.0 {
+        delta
+    } else if held.v > 0.0 {
+        -1.0
+    } else {
+        1.0
+    };
+    if held.v.abs() > bound.v && dir * held.v < 0.0 {
+        // Beyond the bound (it fell with a change of ω or P since the state was committed):
+        // the output is the bound itself, and against it the joint unloads elastically.
+        let s = held.v.signum();
+        held = Jet::with(s * bound.v, [0.0, s * bound.d[1], s * bound.d[2]]);
+    }
+    held.d[0] = (law.stiffness(Jet::c(bound.v)) * law.fraction(Jet::c(held.v), dir, Jet::c(bound.v))).v.max(0.0);
+    held
 }
 
 /// Model Exchange: the friction torque and dτ/dt at the state `tau` (N·m), with their partial

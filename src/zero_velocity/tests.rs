@@ -215,6 +215,19 @@ fn the_partials_match_central_differences_in_stick_transition_and_slip() {
         let tau = j.held_at(angle, t);
         let phase = if tau.abs() <= l.elastic_limit * t { 0 } else if tau.abs() < t * (1.0 - 1e-12) { 1 } else { 2 };
         checked[phase] += 1;
+        // The angle partial is the tangent for the next increment, in the direction of motion
+        // (that of omega), from the held torque: a one-sided difference that way after
+        // committing there (where omega and the increment agree, the exact partial).
+        let s = w.signum();
+        let mut next = j;
+        next.commit(angle, t);
+        let g = |a: f64| next.torque_at(a, w, t);
+        let one_sided = (g(angle + s * 1e-10) - g(angle)) / (s * 1e-10);
+        if (angle - 0.1) * w > 0.0 {
+            assert!((one_sided - fd[0]).abs() <= 1e-4 * fd[0].abs() + 1e-14 * (1.0 + jet.v.abs()) / 1e-10, "{one_sided} vs {}", fd[0]);
+        }
+        let fd = [one_sided, fd[1], fd[2]];
+        let h = [1e-10, h[1], h[2]];
         for i in 0..3 {
             // Relative agreement, plus the differences' own rounding noise.
             let noise = 1e-14 * (1.0 + jet.v.abs()) / h[i];
@@ -309,4 +322,26 @@ fn the_dissipation_is_nonnegative_and_the_sliding_power_in_steady_sliding() {
         let c = l.damping_time * t / l.angle;
         assert!((l.dissipation(0.1 * t, w, t) - c * w * w).abs() < 1e-12 * c * w * w);
     }
+}
+
+#[test]
+fn the_angle_partial_is_the_stiffness_against_the_motion_being_made() {
+    let l = law();
+    let t = 67.2;
+    let k = t / l.angle;
+    let bound = bound_jet(t, 0.0, 0.0);
+    // Sliding forward at the bound: no stiffness along the motion, elastic against a reversal.
+    let j = PreslidingJoint::at_state(l, t, 0.0);
+    assert_eq!(j.torque_partials(0.0, 0.5, bound).d[0], 0.0);
+    assert!((j.torque_partials(0.0, -0.5, bound).d[0] + k).abs() < 1e-9 * k);
+    // At rest with nothing moving: the unloading (elastic) stiffness.
+    assert!((j.torque_partials(0.0, 0.0, bound).d[0] + k).abs() < 1e-9 * k);
+    let fresh = PreslidingJoint::new(l, 0.0);
+    assert!((fresh.torque_partials(0.0, 0.0, bound).d[0] + k).abs() < 1e-9 * k);
+    // Committed beyond a bound that has since fallen (faster sliding, lower T): the output is
+    // the bound; a reversal unloads elastically from it.
+    let above = PreslidingJoint::at_state(l, 1.02 * t, 0.0);
+    let j = above.torque_partials(1e-4, -0.4, bound);
+    assert_eq!(j.v, above.torque_at(1e-4, -0.4, t));
+    assert!((j.d[0] + k).abs() < 1e-9 * k, "{}", j.d[0]);
 }

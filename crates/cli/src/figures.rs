@@ -32,6 +32,7 @@ fig09_mu_sliding_speed.svg        Figure 9: ... against sliding speed\n  \
 fig10_mu_load.svg                 Figure 10: ... against load\n  \
 rig_averages.csv, core_curves.csv the data of Figures 8-10\n  \
 fig11_torque_0.03Hz.svg/.csv, fig12_torque_0.3Hz.svg/.csv, fig13_torque_1Hz.svg/.csv   Figures 11-13\n  \
+at_rest_hold.svg/.csv, at_rest_loop.svg/.csv   friction at rest: band against presliding\n  \
 index.html, README.md             every figure with a caption comparing it with the paper\n\
 The rig side is 15 simulations (loads 5, 10, 20, 40, 60 kN × 0.03, 0.3, 1 Hz, ±40°), two strokes \
 each from rest, the first left out, run on every core. The x value of a run in Figures 8 and 9 is \
@@ -190,6 +191,8 @@ pub fn run(cmd: &FiguresCmd) -> Result<()> {
     paths.extend(rig_figures(&dir, &results, &core, pin_radius, cfg.rig.amplitude)?);
     // The starved-inlet extension (off by default): how it moves Fig. 3 and the 1 Hz cycle.
     paths.extend(super::figures_starvation::write(&dir, &cfg.model)?);
+    // Friction at rest: the band and the presliding state under a holding drive and a small loop.
+    paths.extend(super::figures_at_rest::write(&dir, &cfg.model)?);
     let info = RunInfo { quick: cmd.quick, samples_per_cycle: rig_settings.samples_per_cycle, rtol: rig_settings.rtol, atol: rig_settings.atol };
     let list = entries(&joint, &results, &core)?;
     let table = claims(&joint, &results, cfg.rig.amplitude)?;

@@ -366,7 +366,23 @@ pub fn entries(joint: &Joint, results: &[RigResult], core: &CoreCurves) -> Resul
     out.extend(fig8_10(results, core)?);
     out.extend(fig11_13(joint, results)?);
     out.push(starvation());
+    out.push(at_rest());
     Ok(out)
+}
+
+/// Friction at rest: the zero-velocity models (`figures_at_rest`).
+fn at_rest() -> Entry {
+    Entry {
+        title: "Friction at rest: band against presliding".into(),
+        images: vec!["at_rest_hold.svg".into(), "at_rest_loop.svg".into()],
+        data: vec!["at_rest_hold.csv".into(), "at_rest_loop.csv".into()],
+        caption: "Not in the paper: what the FMU does when a system simulation holds the joint. A body (J = 50 kg·m²) on the pin \
+at 20 kN under a drive of half the breakaway torque, integrated by an explicit host at 1 ms: with the stateless band the joint \
+creeps at ω = T_drive·ω_b/T, with the presliding state (the FMU's default) it holds at its elastic deflection. Below: torque \
+against angle over a 0.5 Hz sine of the angle, amplitudes 0.5 and 2 presliding angles: presliding is elastic below breakaway and \
+an elasto-plastic loop beyond it; the band, a function of ω alone, gives a loop through zero torque at rest."
+            .into(),
+    }
 }
 
 /// The starved-inlet extension (off by default; `figures_starvation`).

@@ -14,6 +14,7 @@ pub mod error;
 pub mod exact;
 pub mod fidelity_args;
 pub mod figures;
+pub mod figures_at_rest;
 pub mod figures_claims;
 pub mod figures_index;
 pub mod figures_plots;

@@ -2,6 +2,7 @@
 //! table as the modelDescription, with a table of values computed by the library.
 
 use pinjoint::zero_velocity::band::DEFAULT_SPEED_BAND;
+use pinjoint::zero_velocity::Presliding;
 use super::INFO;
 use crate::doc_table::{head, rows, Style};
 use fmi_layer::fmi2::variables::Causality;
@@ -31,6 +32,14 @@ fn check_values() -> String {
     s
 }
 
+/// The smallest inertia (kg·m²) for which an explicit host with step `h` (s) holds the joint
+/// without sign-alternating decay at breakaway torque `ts` (N·m): (k/J)·h·t_d < 1 and
+/// (k/J)·h·(h + t_d) < 2 with k = T_s/φ_s.
+pub fn explicit_min_inertia(law: &Presliding, ts: f64, h: f64) -> f64 {
+    let k = ts / law.angle;
+    (k * h * law.damping_time).max(k * h * (h + law.damping_time) / 2.0)
+}
+
 /// The HTML page.
 pub fn index_html() -> String {
     let v = &INFO.variables;
@@ -39,6 +48,7 @@ pub fn index_html() -> String {
     let [inputs, outputs, params] = [Causality::Input, Causality::Output, Causality::Parameter].map(|c| rows(v, c, Style::Plain));
     let header = head(Style::Plain);
     let j = Joint::new(&Params::default()).expect("defaults are valid");
+    let law = Presliding::default();
     format!(
         r#"<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>PinJoint FMU</title>
@@ -67,19 +77,57 @@ At low speed &mu; &rarr; &mu;<sub>c</sub> = 0.12: {tb20:.1} N&middot;m at 20 kN 
 <li>Sommerfeld number (eq. 20) with P<sub>L</sub> = P<sub>T</sub>/(2RB) and c = R<sub>b</sub> &minus; R; &lambda; (eq. 21) from the central film h<sub>c</sub>.</li>
 <li><code>power_loss</code> = |torque&middot;&omega;|; <code>dissipated_energy</code> = &Sigma; power_loss&middot;h over the steps taken
 (the inputs are held over each step, as FMI Co-Simulation defines them, so this is the exact integral of the power the FMU reports).</li>
-<li><code>angle</code> is accepted and kept in the FMU state but no output depends on it: the friction law does not depend on position.</li>
+<li><code>angle</code>: under Co-Simulation with the presliding model its increments deflect the presliding state (below);
+the friction law itself does not depend on position.</li>
 </ul>
 
-<h2>Zero velocity</h2>
-<p>The torque has no direction at &omega; = 0. Inside the band |&omega;| &lt; &omega;<sub>b</sub> (parameter
+<h2>Zero velocity: the joint at rest</h2>
+<p>The sliding torque T = &mu;(P, |&omega;|)RP<sub>T</sub> has no direction at &omega; = 0. Parameter
+<code>zero_velocity.model</code> chooses how the FMU treats the rest point.</p>
+<h3>presliding (default)</h3>
+<p>A single-state elasto-plastic friction law (Dupont, Hayward, Armstrong, Altpeter, &ldquo;Single state elastoplastic
+friction models&rdquo;, IEEE Trans. Automatic Control 47(5), 2002). The state &tau; (<code>presliding_torque</code>, N&middot;m) is the
+elastic presliding torque. Along a deflection increment d&Delta; with u = sign(d&Delta;)&middot;&tau;:
+du/d&Delta; = k for u &le; &beta;T (purely elastic: no drift under any drive below &beta;T, and every unloading is elastic),
+du/d&Delta; = k(T &minus; u)/(T &minus; &beta;T) above (the elasto-plastic transition to sliding), with k = T/&phi;<sub>s</sub>.
+In steady sliding &tau; = &plusmn;T and the torque is the model's &minus;sign(&omega;)&mu;RP<sub>T</sub> bit for bit.
+The torque is <code>torque</code> = &minus;(clamp(&tau;, &minus;T, T) + c&middot;&zcirc;), c = t<sub>d</sub>k, &zcirc; = &omega;&middot;g the elastic
+deflection rate: it never exceeds the sliding torque by more than the damping t<sub>d</sub>T|&omega;|/&phi;<sub>s</sub>.
+The breakaway torque follows the load at every step: a load change while the joint is held changes the bound, not the
+held torque (no jerk); a drop below the held torque lets the joint slide, as it should.</p>
+<ul>
+<li>Parameters: <code>zero_velocity.presliding_angle</code> &phi;<sub>s</sub> (default {phi} rad = {phi_um:.0} &micro;m at the pin surface:
+the elastic deflection at which the presliding torque would reach the sliding torque), <code>zero_velocity.elastic_limit</code>
+&beta; (default {beta}), <code>zero_velocity.damping_time</code> t<sub>d</sub> (default {td} s).</li>
+<li>Co-Simulation: the state is driven by the <code>angle</code> input's increments once the host has set the angle after
+initialization: the torque read after setting (angle, angular_velocity) is the one at that angle, the same before and after
+fmi2DoStep (which commits it), and &part;torque/&part;angle = &minus;k in stick. A host that never sets the angle drives the
+state by angular_velocity&middot;h over each step (the exact solution with the input held). The update is the law's exact
+solution over the increment: unconditionally stable and bounded for any step and any angle increment. Feed angle and
+angular velocity at each step start.</li>
+<li>Model Exchange: <code>presliding_torque</code> is the one continuous state (nominal 100 N&middot;m) with derivative
+<code>der(presliding_torque)</code> = k&omega;g, Lipschitz in the state, so an implicit solver owns it. No event indicators:
+the right-hand side is continuous (its kinks at &beta;T and &omega; = 0 are not jumps).</li>
+<li>Envelope of an explicit host (symplectic Euler, torque held over the step h, body inertia J): in stick the loop is
+a spring k = T<sub>s</sub>/&phi;<sub>s</sub> and damper c = t<sub>d</sub>k; it decays without sign-alternation when
+(k/J)&middot;h&middot;t<sub>d</sub> &lt; 1 and (k/J)&middot;h&middot;(h + t<sub>d</sub>) &lt; 2, and is stable when
+(k/J)&middot;h&middot;(h + 2t<sub>d</sub>) &lt; 4. With the defaults at 60 kN (T<sub>s</sub> = {tb60:.1} N&middot;m,
+k = {k60:.3e} N&middot;m/rad) and h = 10 ms this holds for J &ge; {jmin60:.1} kg&middot;m&sup2;; at 20 kN for J &ge; {jmin20:.1} kg&middot;m&sup2;.
+A linearly implicit host using the directional derivatives is stable at any step. The presliding ring
+(frequency &radic;(k/J), damping ratio (t<sub>d</sub>/2)&radic;(k/J)) decays with time constant 2J/(t<sub>d</sub>k): for heavy bodies
+(J in the thousands of kg&middot;m&sup2;) under a sudden drive it rings for tens of seconds; raise t<sub>d</sub> within the bound above.</li>
+</ul>
+<h3>band</h3>
+<p>The stateless law of earlier versions, bit for bit: inside the band |&omega;| &lt; &omega;<sub>b</sub> (parameter
 <code>zero_velocity.speed_band</code>, default {band} rad/s) the torque is the band-edge torque scaled linearly,
 T(&omega;) = &minus;T(P<sub>T</sub>, &omega;<sub>b</sub>)&middot;&omega;/&omega;<sub>b</sub>; outside the band it is exactly the model's
-&minus;sign(&omega;)&mu;RP<sub>T</sub>. The other outputs are the model's values at the actual &omega; (at rest &mu; = &mu;<sub>c</sub>).
-Inside the band the friction is a viscous damper k = T(P<sub>T</sub>, &omega;<sub>b</sub>)/&omega;<sub>b</sub>; a host integrating
-J&middot;d&omega;/dt = T<sub>drive</sub> + torque with an explicit step h is free of chatter when h&middot;k/J &lt; 1, i.e.
-&omega;<sub>b</sub> &gt; h&middot;&mu;<sub>c</sub>RP<sub>T</sub>/J. The default satisfies this at h = 1 ms and 60 kN for J &ge; 20.2 kg&middot;m&sup2;;
-raise it for lighter inertias or longer steps, or set it to 0 to switch the ramp off. A drive torque below the breakaway
-torque then makes the joint creep slowly instead of sticking.</p>
+&minus;sign(&omega;)&mu;RP<sub>T</sub>. Inside the band the friction is a viscous damper k = T(P<sub>T</sub>, &omega;<sub>b</sub>)/&omega;<sub>b</sub>;
+an explicit host step h is free of chatter when &omega;<sub>b</sub> &gt; h&middot;&mu;<sub>c</sub>RP<sub>T</sub>/J. A drive torque below the breakaway
+torque makes the joint creep at &omega; = T<sub>drive</sub>&omega;<sub>b</sub>/T instead of holding: choose the band only for hosts that
+need a stateless map of &omega; (e.g. a torque lookup) and never hold the joint.</p>
+<p>The other outputs are the model's values at the actual &omega; (at rest &mu; = &mu;<sub>c</sub>) whatever the zero-velocity model.
+<code>power_loss</code> is the power dissipated: |torque&middot;&omega;| in sliding and for the band; under presliding the power
+stored in the elastic deflection is not counted.</p>
 
 <h2>Validity</h2>
 <ul>
@@ -88,7 +136,8 @@ oscillation &plusmn;40&deg; at 0.03&ndash;1 Hz. The model is defined beyond it, 
 <li>Hertz theory is applied to a conformal contact (a is not small against R); eq. 11 neglects the tangential pressure
 components (under 10 %); the contact is assumed fully flooded (unless the starved-inlet extension is switched on) and isothermal
 at the <code>temperature</code> input.</li>
-<li>Not modelled: the static friction peak at reversals, the grease's lower friction at low load seen in the experiments.</li>
+<li>Not modelled: a static friction peak above the sliding torque at reversals (the presliding law breaks away at the sliding
+torque), the grease's lower friction at low load seen in the experiments.</li>
 <li>Inputs: <code>angle</code> and <code>angular_velocity</code> must be finite; <code>load</code> finite and &ge; 0 N (0 = unloaded: every output
 but the energy is 0). Other values are rejected by fmi2SetReal with a message naming the variable, value and unit.
 Parameters are checked at fmi2ExitInitializationMode against the ranges below; an invalid one is named in the error message.
@@ -109,28 +158,30 @@ defined behaviour of every bad input.</li>
 All have variability <em>fixed</em>: set them before fmi2ExitInitializationMode.</p><table>{header}{params}</table>
 
 <h2>Model Exchange</h2>
-<p>The friction law is a stateless map of the inputs, so as Model Exchange the FMU has <b>no continuous states</b> (nx = 0) and
-<b>no event indicators</b> (nz = 0). The host's own solver owns &omega; (e.g. <code>J d&omega;/dt = T_drive + torque</code>) and
-sees the torque as a function of the current &omega; and P at every evaluation (every <code>fmi2GetReal</code>/<code>fmi3GetFloat64</code>
-after setting inputs or time), instead of a value held over a communication step; the Co-Simulation stability limit
-&omega;<sub>b</sub> &gt; h&middot;&mu;<sub>c</sub>RP/J no longer ties the band to a step size.</p>
+<p>With <code>zero_velocity.model = presliding</code> (default) the FMU has <b>one continuous state</b>, <code>presliding_torque</code>,
+and no event indicators; with <code>band</code> the state is not used (its derivative is 0) and the torque is a stateless map
+of the inputs. The host's own solver owns &omega; (e.g. <code>J d&omega;/dt = T_drive + torque</code>) and the presliding state;
+an implicit solver (BDF) takes the presliding stiffness k = T/&phi;<sub>s</sub> in its stride. Directional derivatives of the
+torque and of the state derivative with respect to the state and the inputs are provided for its Jacobian.</p>
 <ul>
-<li>Zero-speed band: inside |&omega;| &lt; &omega;<sub>b</sub> the torque is the continuous, odd, Lipschitz ramp
-&minus;T(P, &omega;<sub>b</sub>)&middot;&omega;/&omega;<sub>b</sub> (slope k = T(P, &omega;<sub>b</sub>)/&omega;<sub>b</sub>, e.g.
-{tb20:.1} N&middot;m / {band} rad/s at 20 kN); outside it the library's torque, smooth in &omega;. The torque is continuous
-everywhere (a kink, not a jump, at &plusmn;&omega;<sub>b</sub>), so a variable-step solver needs no event: that is why there are no
-event indicators. The ramp makes the host's equation stiff near rest (time constant J/k): an implicit solver (CVode BDF) takes it
-in its stride; an explicit fixed step h is stable for h &lt; 2J/k and does not oscillate for h &lt; J/k.</li>
-<li>With <code>zero_velocity.speed_band = 0</code> the torque jumps by 2&mu;<sub>c</sub>RP at &omega; = 0 and the FMU still
-declares no event indicator (&omega; is the host's variable: a host that wants the reversal located must detect the sign change of
-its own state); variable-step solvers then shrink their step at every reversal. Keep &omega;<sub>b</sub> &gt; 0 for Model Exchange.</li>
+<li>Band: inside |&omega;| &lt; &omega;<sub>b</sub> the torque is the continuous, odd, Lipschitz ramp (slope
+T(P, &omega;<sub>b</sub>)/&omega;<sub>b</sub>, e.g. {tb20:.1} N&middot;m / {band} rad/s at 20 kN); with <code>zero_velocity.speed_band = 0</code>
+the torque jumps by 2&mu;<sub>c</sub>RP at &omega; = 0 and variable-step solvers shrink their step at every reversal.</li>
 <li><code>dissipated_energy</code> is a Co-Simulation quantity (the sum of power_loss times the step over the steps taken).
-Model Exchange takes no steps, so it is not computed there and <b>stays 0</b>; integrate <code>power_loss</code> in the host
-(one extra state) for the energy.</li>
+Model Exchange takes no steps, so it is not computed there and <b>stays 0</b>; integrate <code>power_loss</code> in the host.</li>
 <li>Event mode has nothing to iterate (no discrete states, no time events); <code>fmi2CompletedIntegratorStep</code> is not needed
-(<code>completedIntegratorStepNotNeeded</code>; FMI 3.0 <code>needsCompletedIntegratorStep = false</code>) but, if called,
-checks the outputs at the current inputs. Parameters can only be set before exit of initialization (variability fixed).</li>
+but, if called, checks the outputs at the current inputs. Parameters can only be set before exit of initialization.</li>
 </ul>
+
+<h2>Directional derivatives</h2>
+<p><code>fmi2GetDirectionalDerivative</code> / <code>fmi3GetDirectionalDerivative</code> give the partial derivatives of every output
+(and of <code>der(presliding_torque)</code>) with respect to the inputs (and, under Model Exchange, the state), at the current values.
+The friction outputs are differentiated exactly through the zero-velocity law; the sliding torque's own partials in &omega; and P
+and every other output's come from central differences of the friction model at the instance's fidelity (relative steps 1e-6);
+temperature partials from central differences (&plusmn;0.01 K) of the full model. At a kink (the elastic limit, the sliding bound,
+&omega; = 0, the band's edge, the envelope of a table level) the derivative is that of the branch the current values are on.
+Under Co-Simulation &part;torque/&part;angle is &minus;k in stick and 0 in sliding, so a linearly implicit master can take the
+presliding spring implicitly at large steps.</p>
 
 {requirements}
 
@@ -151,5 +202,12 @@ debug logging off.</li>
         tb60 = j.boundary_torque(60e3),
         band = DEFAULT_SPEED_BAND,
         checks = check_values(),
+        phi = law.angle,
+        phi_um = law.angle * j.params().geometry.pin_radius * 1e6,
+        beta = law.elastic_limit,
+        td = law.damping_time,
+        k60 = j.boundary_torque(60e3) / law.angle,
+        jmin60 = explicit_min_inertia(&law, j.boundary_torque(60e3), 0.01),
+        jmin20 = explicit_min_inertia(&law, j.boundary_torque(20e3), 0.01),
     )
 }

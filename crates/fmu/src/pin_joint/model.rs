@@ -205,12 +205,14 @@ impl Model for PinJointModel {
                 // follows the motion the state assumed.
                 let bound = self.v.out.point.map_or(0.0, |p| p.torque);
                 let travel = self.v.omega * step;
-                self.v.tau = self.v.zv.law.deflect(self.v.tau, travel, bound);
+                let law = self.v.zv.law;
+                self.v.tau = law.deflect(self.v.tau, travel, bound);
                 self.v.angle_ref += travel;
                 if !self.v.angle_ref.is_finite() {
                     return Err(ModelError::NotFinite(format!("presliding_reference_angle overflows ({} rad)", show(self.v.angle_ref))));
                 }
-                self.compute_outputs()?;
+                // The inputs are held: the operating point (and T) stand; only the friction moves.
+                self.v.out.friction = if self.v.load == 0.0 { Default::default() } else { presliding_friction(&law, self.v.tau, self.v.omega, bound) };
             }
         }
         self.v.energy = e;

@@ -13,14 +13,16 @@
 //!   perturbed temperature, for every output.
 //!
 //! At a kink of the law (the elastic limit, the sliding bound, ω = 0, the band's edge) the
-//! derivative is the one-sided derivative of the branch the current values are on.
+//! derivative is the one-sided derivative of the branch the current values are on; the
+//! angle partial is the presliding tangent stiffness in the direction of motion (that of ω;
+//! [`pinjoint::zero_velocity::joint::tangent_held`]): the one a linearly implicit host needs.
 
 use super::model::{operating_point, outputs};
 use super::variables::{Values, TABLE};
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::Evaluator;
 use pinjoint::zero_velocity::jet::{Jet, Scalar};
-use pinjoint::zero_velocity::joint::bound_partials;
+use pinjoint::zero_velocity::joint::{bound_partials, tangent_held};
 use pinjoint::zero_velocity::{band, ZeroVelocityModel};
 
 /// The knowns a partial can be taken with respect to.
@@ -67,7 +69,7 @@ fn friction_jets(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta
             let (t, dw, dp) = bound_partials(&mut bound, load, omega)?;
             let t = Jet::with(t, [0.0, dw, dp]);
             let law = &v.zv.law;
-            let tau = if me { Jet::var(v.tau, 0) } else { law.deflect(Jet::c(v.tau), Jet::var(delta, 0), t) };
+            let tau = if me { Jet::var(v.tau, 0) } else { tangent_held(law, v.tau, delta, omega, t) };
             Ok(FrictionJets { torque: law.torque(tau, w, t), power: law.dissipation(tau, w, t), rate: law.rate(tau, w, t) })
         }
         ZeroVelocityModel::Band => {

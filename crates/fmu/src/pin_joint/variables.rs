@@ -12,8 +12,8 @@
 //! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 32–36 |
 //! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 37 |
 //! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 38–41 |
-//! | 30, 31 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 42 |
-//! | 32, 33 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 43, 44 |
+//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 42 |
+//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 43, 44 |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
@@ -217,11 +217,11 @@ fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
         v.start = Some(0.0);
         v
     };
-    let mut state = local("presliding_torque", 30, Kind::Real, Some("N.m"),
+    let mut state = local("presliding_torque", 40, Kind::Real, Some("N.m"),
         "Presliding state tau: the elastic presliding torque, signed as the deflection (the friction torque is -tau plus damping; |tau| <= the sliding torque while the joint moves). \
          Co-Simulation: committed at presliding_reference_angle at each step; Model Exchange: the continuous state the host integrates");
     state.nominal = Some(100.0);
-    let mut rate = declare("der(presliding_torque)", 31, Kind::Real, Causality::Local, Some("N.m/s"), None,
+    let mut rate = declare("der(presliding_torque)", 41, Kind::Real, Causality::Local, Some("N.m/s"), None,
         "Time derivative of presliding_torque: k omega g, with k = T/phi_s and g the elastic fraction (1 below the elastic limit, 0 at the sliding torque)");
     rate.derivative_of = Some("presliding_torque");
     rate.initial = fmi_layer::fmi2::variables::Initial::Calculated;
@@ -230,10 +230,10 @@ fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
     vec![
         Row::new(state, |s: &Values| s.tau, |s, x| s.tau = x, finite).at_slot(slot),
         Row::output(rate, |s: &Values| s.out.friction.rate),
-        Row::new(local("presliding_reference_angle", 32, Kind::Real, Some("rad"),
+        Row::new(local("presliding_reference_angle", 42, Kind::Real, Some("rad"),
             "Co-Simulation: the angle at which presliding_torque was committed (the angle input at the last step, or advanced by angular_velocity * step when the host does not set the angle)"),
             |s: &Values| s.angle_ref, |s, x| s.angle_ref = x, finite).at_slot(slot + 1),
-        Row::new(local("presliding_angle_driven", 33, Kind::Boolean, None,
+        Row::new(local("presliding_angle_driven", 43, Kind::Boolean, None,
             "Co-Simulation: true once the host has set the angle after initialization: the angle's increments then drive the presliding state"),
             |s: &Values| s.angle_driven, |s, x| s.angle_driven = x, Rule::Any).at_slot(slot + 2),
     ]
