@@ -414,23 +414,32 @@ fn invalid_parameter_at_exit_initialization_names_it_and_enters_error_state() {
 }
 
 /// At rest from a fresh start (presliding state 0, angle and angular velocity 0) the joint is
-/// in the elastic range on both sides, where torque = -(tau + k delta + t_d k omega) is smooth:
-/// the partials are the stiffness and the damping, -k and -t_d k, k = T/phi_s. The law
-/// returns early at omega = 0 and delta = 0 (`Presliding::torque` and `Presliding::deflect`
-/// in src/zero_velocity/presliding.rs), dropping the jets' derivatives: the FMU answers 0 for
-/// both. Ignored until that is fixed (reported to the lead).
+/// in the elastic range on both sides, where torque = -(tau + k delta + t_d k omega) is smooth.
+/// With respect to the angle: the stiffness -k, k = T/phi_s.
 #[test]
-#[ignore = "the law's early returns at omega = 0 and delta = 0 drop the derivatives (reported)"]
-fn directional_derivatives_at_rest_are_the_elastic_slopes() {
+fn directional_derivative_with_respect_to_the_angle_at_rest_is_the_stiffness() {
+    at_rest_partial("angle", |_, k| -k);
+}
+
+/// With respect to the angular velocity: the damping -t_d k. `Presliding::torque` in
+/// src/zero_velocity/presliding.rs returns early at omega = 0 (`if w == 0.0 { return -held; }`),
+/// dropping the jet's derivative in omega: the FMU answers 0 (and `Presliding::rate` likewise
+/// answers 0 for d der(presliding_torque) / d omega, which is k there). Ignored until fixed
+/// (reported to the lead).
+#[test]
+#[ignore = "Presliding::torque/rate return early at omega = 0, dropping d/d omega (reported)"]
+fn directional_derivative_with_respect_to_the_angular_velocity_at_rest_is_the_damping() {
+    at_rest_partial("angular_velocity", |law, k| -law.damping_time * k);
+}
+
+fn at_rest_partial(known: &str, expect: impl Fn(&pinjoint::zero_velocity::presliding::Presliding, f64) -> f64) {
     let (_h, c) = ready_pin_joint();
     let law = pinjoint::zero_velocity::presliding::Presliding::default();
     let bound = pinjoint::Joint::new(&pinjoint::Params::default()).unwrap().evaluate(20e3, 0.0).unwrap().torque;
-    let k = bound / law.angle;
+    let expect = expect(&law, bound / law.angle);
     let r = [vr("torque")];
-    for (known, expect) in [("angle", -k), ("angular_velocity", -law.damping_time * k)] {
-        let mut d = [f64::NAN];
-        assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, [vr(known)].as_ptr(), 1, [1.0].as_ptr(), d.as_mut_ptr()) }, OK);
-        assert!((d[0] - expect).abs() <= 1e-6 * expect.abs(), "d torque / d {known} = {} vs {expect}", d[0]);
-    }
+    let mut d = [f64::NAN];
+    assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, [vr(known)].as_ptr(), 1, [1.0].as_ptr(), d.as_mut_ptr()) }, OK);
+    assert!((d[0] - expect).abs() <= 1e-6 * expect.abs(), "d torque / d {known} = {} vs {expect}", d[0]);
     unsafe { fmi2FreeInstance(c) };
 }
