@@ -155,10 +155,15 @@ fn reset_then_a_fresh_run_equals_the_first() {
     unsafe { fmi2FreeInstance(c) };
 }
 
-/// Model Exchange (issue 11): no states, no event indicators; the outputs follow the inputs at
-/// every get, equal to the Co-Simulation instance's at the same inputs; the ME state machine.
+/// Model Exchange (issues 11, 22): one continuous state, `presliding_torque` (nominal 100 N.m),
+/// no event indicators; the outputs follow the inputs and the state at every get: at the start
+/// state (0) equal to the Co-Simulation instance's at the same inputs (which has not stepped, so
+/// its state is the start value too), at any state the core law's torque and its rate
+/// ([`Presliding::torque`], [`Presliding::rate`]) with the library's sliding torque as the
+/// bound, bit for bit; the state arrays are checked; the ME state machine.
 #[test]
-fn model_exchange_is_a_stateless_map_of_the_inputs() {
+fn model_exchange_outputs_follow_the_inputs_and_the_continuous_state() {
+    use pinjoint::zero_velocity::presliding::Presliding;
     let h = Host::new();
     let me = h.instantiate_with("me", FMI2_MODEL_EXCHANGE, &guid(), None, false);
     assert!(!me.is_null());
@@ -168,10 +173,18 @@ fn model_exchange_is_a_stateless_map_of_the_inputs() {
     assert_eq!(unsafe { fmi2NewDiscreteStates(me, info.as_mut_ptr().cast()) }, OK);
     assert_eq!(info[0], 0, "no discrete-state update");
     assert_eq!(fmi2EnterContinuousTimeMode(me), OK);
+    let mut x = [f64::NAN; 1];
+    assert_eq!(unsafe { fmi2GetContinuousStates(me, x.as_mut_ptr(), 1) }, OK);
+    assert_eq!(x[0], 0.0, "the start value of presliding_torque");
+    assert_eq!(unsafe { fmi2GetNominalsOfContinuousStates(me, x.as_mut_ptr(), 1) }, OK);
+    assert_eq!(x[0], 100.0);
     let cs = h.ready(&[]);
+    let law = Presliding::default();
+    let joint = pinjoint::Joint::new(&pinjoint::Params::default()).unwrap();
     let (w, p, t) = (vr("angular_velocity"), vr("load"), vr("torque"));
-    for (k, (omega, load)) in [(0.5, 20e3), (-3.0, 40e3), (0.004, 20e3), (0.0, 5e3)].into_iter().enumerate() {
+    for (k, (omega, load)) in [(0.5, 20e3), (-3.0, 40e3), (0.004, 20e3), (0.0, 5e3), (-1e-4, 60e3)].into_iter().enumerate() {
         assert_eq!(fmi2SetTime(me, 0.1 * k as f64), OK);
+        assert_eq!(unsafe { fmi2SetContinuousStates(me, [0.0].as_ptr(), 1) }, OK);
         for c in [me, cs] {
             assert_eq!(unsafe { fmi2SetReal(c, [w, p].as_ptr(), 2, [omega, load].as_ptr()) }, OK);
         }
@@ -179,19 +192,73 @@ fn model_exchange_is_a_stateless_map_of_the_inputs() {
         assert_eq!(unsafe { fmi2GetReal(me, &t, 1, &mut a) }, OK);
         assert_eq!(unsafe { fmi2GetReal(cs, &t, 1, &mut b) }, OK);
         assert_eq!(a.to_bits(), b.to_bits(), "omega = {omega}");
+        // Across the presliding range: unloading, the elastic range, the elasto-plastic
+        // transition, beyond the bound (clamped).
+        let bound = joint.evaluate(load, omega).unwrap().torque;
+        for tau in [0.0, 0.3 * bound, -0.5 * bound, 0.97 * bound, -0.99 * bound, 1.2 * bound] {
+            assert_eq!(unsafe { fmi2SetContinuousStates(me, [tau].as_ptr(), 1) }, OK);
+            let mut back = [f64::NAN];
+            assert_eq!(unsafe { fmi2GetContinuousStates(me, back.as_mut_ptr(), 1) }, OK);
+            assert_eq!(back[0].to_bits(), tau.to_bits());
+            let mut der = [f64::NAN];
+            assert_eq!(unsafe { fmi2GetDerivatives(me, der.as_mut_ptr(), 1) }, OK);
+            assert_eq!(der[0].to_bits(), law.rate(tau, omega, bound).to_bits(), "rate at omega = {omega}, tau = {tau}");
+            assert_eq!(get(me, "der(presliding_torque)").to_bits(), der[0].to_bits());
+            assert_eq!(get(me, "torque").to_bits(), law.torque(tau, omega, bound).to_bits(), "torque at omega = {omega}, tau = {tau}");
+            assert_eq!(get(me, "power_loss").to_bits(), law.dissipation(tau, omega, bound).to_bits());
+            if omega != 0.0 && tau == 0.0 {
+                assert!(der[0] * omega > 0.0, "the deflection follows the motion");
+            }
+        }
         let (mut enter, mut stop) = (1, 1);
         assert_eq!(unsafe { fmi2CompletedIntegratorStep(me, 1, &mut enter, &mut stop) }, OK);
         assert_eq!((enter, stop), (0, 0));
     }
-    let mut x = [0.0; 1];
-    assert_eq!(unsafe { fmi2GetDerivatives(me, x.as_mut_ptr(), 0) }, OK);
+    // The state arrays have the length nx = 1; a state the model refuses changes nothing.
+    assert_eq!(unsafe { fmi2GetDerivatives(me, x.as_mut_ptr(), 0) }, ERROR);
+    assert!(h.last().contains("nx = 0, but PinJoint has 1 continuous state"), "{}", h.last());
+    let mut two = [0.0; 2];
+    assert_eq!(unsafe { fmi2GetContinuousStates(me, two.as_mut_ptr(), 2) }, ERROR);
+    assert_eq!(unsafe { fmi2SetContinuousStates(me, [1.0, 2.0].as_ptr(), 2) }, ERROR);
+    assert_eq!(unsafe { fmi2SetContinuousStates(me, [f64::NAN].as_ptr(), 1) }, ERROR);
+    assert!(h.last().contains("presliding_torque"), "{}", h.last());
+    assert_eq!(unsafe { fmi2GetContinuousStates(me, x.as_mut_ptr(), 1) }, OK);
+    assert_eq!(x[0], 1.2 * joint.evaluate(60e3, -1e-4).unwrap().torque, "unchanged by the refused calls");
     assert_eq!(fmi2GetEventIndicators(me, x.as_mut_ptr(), 0), OK);
-    assert_eq!(unsafe { fmi2GetDerivatives(me, x.as_mut_ptr(), 1) }, ERROR);
-    assert!(h.last().contains("no continuous states"), "{}", h.last());
+    assert_eq!(fmi2GetEventIndicators(me, x.as_mut_ptr(), 1), ERROR);
     // Parameters cannot be set in continuous-time mode; doStep is not a Model Exchange call.
     assert_eq!(fmi2DoStep(me, 0.0, 0.1, 1), ERROR);
     assert_eq!(fmi2EnterEventMode(me), OK);
     assert_eq!(fmi2Terminate(me), OK);
+    unsafe { fmi2FreeInstance(me) };
+    unsafe { fmi2FreeInstance(cs) };
+}
+
+/// Model Exchange with the band: the state exists (nx = 1) but the band does not use it: its
+/// derivative is 0 and the torque is the Co-Simulation band instance's, whatever the state.
+#[test]
+fn model_exchange_with_the_band_is_a_stateless_map_of_the_inputs() {
+    let h = Host::new();
+    let me = h.instantiate_with("me", FMI2_MODEL_EXCHANGE, &guid(), None, false);
+    assert_eq!(set(me, BAND.0, BAND.1), OK);
+    assert_eq!(fmi2EnterInitializationMode(me), OK);
+    assert_eq!(fmi2ExitInitializationMode(me), OK);
+    assert_eq!(fmi2EnterContinuousTimeMode(me), OK);
+    let cs = h.ready(&[BAND]);
+    for (omega, load) in [(0.5, 20e3), (-3.0, 40e3), (0.004, 20e3), (0.0, 5e3)] {
+        for c in [me, cs] {
+            assert_eq!(set(c, "angular_velocity", omega), OK);
+            assert_eq!(set(c, "load", load), OK);
+        }
+        for tau in [0.0, 50.0, -300.0] {
+            assert_eq!(unsafe { fmi2SetContinuousStates(me, [tau].as_ptr(), 1) }, OK);
+            let mut der = [f64::NAN];
+            assert_eq!(unsafe { fmi2GetDerivatives(me, der.as_mut_ptr(), 1) }, OK);
+            assert_eq!(der[0], 0.0);
+            assert_eq!(get(me, "torque").to_bits(), get(cs, "torque").to_bits(), "omega = {omega}, tau = {tau}");
+            assert_eq!(get(me, "power_loss").to_bits(), get(cs, "power_loss").to_bits());
+        }
+    }
     unsafe { fmi2FreeInstance(me) };
     unsafe { fmi2FreeInstance(cs) };
 }
@@ -225,8 +292,16 @@ fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
     }
     let r = [vr("torque")];
     let order = [1];
+    // Directional derivatives are provided (issue 22), of outputs with respect to inputs only.
     assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, r.as_ptr(), 1, x.as_ptr(), x.as_mut_ptr()) }, ERROR);
-    assert!(h.last().contains("providesDirectionalDerivative"));
+    assert!(h.last().contains("continuous Real inputs (partials with respect to parameters are not provided)"), "{}", h.last());
+    let known = [vr("geometry.pin_radius")];
+    assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, known.as_ptr(), 1, [1.0].as_ptr(), x.as_mut_ptr()) }, ERROR);
+    assert!(h.last().contains("geometry.pin_radius"), "{}", h.last());
+    assert_eq!(set(c, "angular_velocity", 0.3), OK);
+    let known = [vr("angular_velocity")];
+    assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, known.as_ptr(), 1, [1.0].as_ptr(), x.as_mut_ptr()) }, OK);
+    assert!(x[0].is_finite() && x[0] < 0.0, "the damping of the presliding deflection: {}", x[0]);
     assert_eq!(fmi2SetRealInputDerivatives(c, r.as_ptr(), 1, order.as_ptr(), x.as_ptr()), ERROR);
     assert!(h.last().contains("canInterpolateInputs"));
     assert_eq!(fmi2GetRealOutputDerivatives(c, r.as_ptr(), 1, order.as_ptr(), x.as_mut_ptr()), ERROR);
@@ -336,4 +411,35 @@ fn invalid_parameter_at_exit_initialization_names_it_and_enters_error_state() {
         assert!(h.last().contains(expect), "{name}: {}", h.last());
         unsafe { fmi2FreeInstance(c) };
     }
+}
+
+/// At rest from a fresh start (presliding state 0, angle and angular velocity 0) the joint is
+/// in the elastic range on both sides, where torque = -(tau + k delta + t_d k omega) is smooth.
+/// With respect to the angle: the stiffness -k, k = T/phi_s.
+#[test]
+fn directional_derivative_with_respect_to_the_angle_at_rest_is_the_stiffness() {
+    at_rest_partial("angle", |_, k| -k);
+}
+
+/// With respect to the angular velocity: the damping -t_d k. `Presliding::torque` in
+/// src/zero_velocity/presliding.rs returns early at omega = 0 (`if w == 0.0 { return -held; }`),
+/// dropping the jet's derivative in omega: the FMU answers 0 (and `Presliding::rate` likewise
+/// answers 0 for d der(presliding_torque) / d omega, which is k there). Ignored until fixed
+/// (reported to the lead).
+#[test]
+#[ignore = "Presliding::torque/rate return early at omega = 0, dropping d/d omega (reported)"]
+fn directional_derivative_with_respect_to_the_angular_velocity_at_rest_is_the_damping() {
+    at_rest_partial("angular_velocity", |law, k| -law.damping_time * k);
+}
+
+fn at_rest_partial(known: &str, expect: impl Fn(&pinjoint::zero_velocity::presliding::Presliding, f64) -> f64) {
+    let (_h, c) = ready_pin_joint();
+    let law = pinjoint::zero_velocity::presliding::Presliding::default();
+    let bound = pinjoint::Joint::new(&pinjoint::Params::default()).unwrap().evaluate(20e3, 0.0).unwrap().torque;
+    let expect = expect(&law, bound / law.angle);
+    let r = [vr("torque")];
+    let mut d = [f64::NAN];
+    assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, [vr(known)].as_ptr(), 1, [1.0].as_ptr(), d.as_mut_ptr()) }, OK);
+    assert!((d[0] - expect).abs() <= 1e-6 * expect.abs(), "d torque / d {known} = {} vs {expect}", d[0]);
+    unsafe { fmi2FreeInstance(c) };
 }

@@ -59,7 +59,9 @@ fn serialize_round_trip_across_instances_is_bit_exact() {
     drive(a, 0, 250);
     let mut s = get_state(a);
     let bytes = serialize(a, s);
-    assert!(bytes.len() < 400, "small: {} bytes", bytes.len());
+    // 45 values of 8 bytes (version 5: 38 of version 4, the zero-velocity model, its three
+    // parameters and the presliding state) and the container's header.
+    assert!(bytes.len() < 460, "small: {} bytes", bytes.len());
     assert_eq!(&bytes[..8], b"FMI2STAT");
     let expect = drive(a, 250, 400);
 
@@ -114,6 +116,13 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
     fix_crc(&mut b);
     assert_eq!(deserialize(c, &b), Err(ERROR));
     assert!(h.last().contains("PinJoint state version 7"), "{}", h.last());
+    // A state of the previous layout (version 4, before the presliding state) is refused by
+    // name: it lacks the presliding state, so it cannot be continued.
+    let mut b = bytes.clone();
+    b[model_at] = 4;
+    fix_crc(&mut b);
+    assert_eq!(deserialize(c, &b), Err(ERROR));
+    assert!(h.last().contains("PinJoint state version 4; this FMU reads version 5"), "{}", h.last());
     // A valid checksum over an impossible value: each is checked as its setter or the
     // parameter check at initialization checks it (issue 9: these were accepted before).
     let word = |k: usize| model_at + 1 + 2 + 8 * k;
@@ -126,6 +135,12 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
         (word(n), -1.0, "speed_band"),
         (word(n + 4), f64::NAN, "dissipated_energy"),
         (word(n + 6), -1.0, "tolerance"),
+        (word(n + 12), 2.0, "zero_velocity.model = 2"),
+        (word(n + 13), -1.0, "zero_velocity.presliding_angle = -1 rad"),
+        (word(n + 14), 1.0, "zero_velocity.elastic_limit = 1"),
+        (word(n + 15), f64::NAN, "zero_velocity.damping_time = NaN s"),
+        (word(n + 16), f64::NAN, "presliding_torque = NaN"),
+        (word(n + 17), f64::INFINITY, "presliding_reference_angle = inf"),
     ] {
         let mut b = bytes.clone();
         b[at..at + 8].copy_from_slice(&v.to_bits().to_le_bytes());
@@ -197,4 +212,56 @@ fn freed_and_misplaced_state_handles_are_errors_not_crashes() {
     // The instance still steps.
     drive(c, 0, 10);
     unsafe { fmi2FreeInstance(c) };
+}
+
+/// A host holding the joint below breakaway: the angle oscillates by 2e-4 rad about a small
+/// offset, inside the presliding range (phi_s = 1.5e-3 rad), so the torque is the elastic
+/// presliding torque and depends on the history. The state taken mid-hold carries it:
+/// restored (get/set) or serialized into another instance, the same inputs give the same
+/// torques bit for bit; an instance without the state gives other torques.
+fn hold(c: Fmi2Component, from: usize, to: usize) -> Vec<u64> {
+    let mut out = Vec::new();
+    for k in from..to {
+        let t = k as f64 * 0.01;
+        assert_eq!(set(c, "angle", 4e-4 + 2e-4 * (3.0 * t).sin()), OK);
+        assert_eq!(set(c, "angular_velocity", 6e-4 * (3.0 * t).cos()), OK);
+        assert_eq!(set(c, "load", 20e3 + 5e3 * (0.5 * t).sin()), OK);
+        out.push(get(c, "torque").to_bits());
+        assert_eq!(fmi2DoStep(c, t, 0.01, 0), OK);
+        out.extend(all_outputs(c).iter().map(|x| x.to_bits()));
+        out.push(get(c, "presliding_torque").to_bits());
+    }
+    out
+}
+
+#[test]
+fn the_state_carries_the_presliding_state_mid_hold() {
+    let h = Host::new();
+    let a = h.ready(&[]);
+    hold(a, 0, 150);
+    let tau = get(a, "presliding_torque");
+    let bound = get(a, "friction_coefficient") * 0.028 * get(a, "load");
+    assert!(tau.abs() > 0.05 * bound && tau.abs() < bound, "held below breakaway: tau = {tau} N.m, T = {bound} N.m");
+    assert_eq!(get(a, "presliding_angle_driven"), 1.0);
+    let mut s = get_state(a);
+    let bytes = serialize(a, s);
+    let expect = hold(a, 150, 300);
+    // get/set on the same instance.
+    assert_eq!(unsafe { fmi2SetFMUstate(a, s) }, OK);
+    assert_eq!(get(a, "presliding_torque").to_bits(), tau.to_bits());
+    assert_eq!(hold(a, 150, 300), expect);
+    // Serialized into a fresh instance.
+    let b = h.ready(&[]);
+    let mut s2 = deserialize(b, &bytes).unwrap();
+    assert_eq!(unsafe { fmi2SetFMUstate(b, s2) }, OK);
+    assert_eq!(hold(b, 150, 300), expect);
+    // Without the state the history differs, and so do the torques.
+    let d = h.ready_at(1.5, &[]);
+    assert_ne!(hold(d, 150, 300), expect);
+    for (c, st) in [(a, &mut s), (b, &mut s2)] {
+        assert_eq!(unsafe { fmi2FreeFMUstate(c, st) }, OK);
+    }
+    for c in [a, b, d] {
+        unsafe { fmi2FreeInstance(c) };
+    }
 }

@@ -120,11 +120,20 @@ fn extreme_but_valid_inputs_give_finite_outputs_or_an_error_never_nan() {
     assert!(h.last().starts_with("fmi2DoStep: step from") && h.last().contains("dissipated_energy overflows"), "{}", h.last());
     unsafe { fmi2FreeInstance(c) };
     // A subnormal load: the band-edge film thickness overflows f64; the step fails naming it.
-    let c = h.ready(&[]);
+    let c = h.ready(&[BAND]);
     assert_eq!(set(c, "load", 5e-324), OK);
     assert_eq!(set(c, "angular_velocity", 0.0), OK);
     assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), ERROR);
     assert!(h.last().contains("film_thickness"), "{}", h.last());
+    unsafe { fmi2FreeInstance(c) };
+    // Presliding (the default) evaluates no band edge: at rest the same load gives finite
+    // outputs (the torque is the held presliding torque, 0 from a fresh start).
+    let c = h.ready(&[]);
+    assert_eq!(set(c, "load", 5e-324), OK);
+    assert_eq!(set(c, "angular_velocity", 0.0), OK);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.1, 0), OK, "{}", h.last());
+    assert!(all_outputs(c).iter().all(|x| x.is_finite()), "{:?}", all_outputs(c));
+    assert_eq!(get(c, "torque"), 0.0);
     unsafe { fmi2FreeInstance(c) };
 }
 
@@ -164,7 +173,8 @@ fn outputs_equal_the_library_exactly_and_energy_integrates_power() {
     let mut p = Params::default();
     p.surface.asperity_radius = 5e-6;
     p.lubricant.viscosity = 0.02;
-    let c = h.ready(&[("surface.asperity_radius", 5e-6), ("lubricant.viscosity", 0.02)]);
+    // The band: the stateless law, bit for bit the library's torque outside it, its ramp inside.
+    let c = h.ready(&[("surface.asperity_radius", 5e-6), ("lubricant.viscosity", 0.02), BAND]);
     let j = Joint::new(&p).unwrap();
     // The FMU's full level is the library's complete solve, cold at every call: bit for bit.
     let mut energy = 0.0;
@@ -207,14 +217,81 @@ fn outputs_equal_the_library_exactly_and_energy_integrates_power() {
     unsafe { fmi2FreeInstance(c) };
 }
 
+/// Presliding (the default): the state starts at 0; once the joint has travelled 2 degrees
+/// in one direction at one load (the presliding range is phi_s = 1.5e-3 rad; a load change
+/// moves the sliding bound, which the state then approaches over the presliding range) the
+/// torque is the library's -sign(omega) mu R P bit for bit at every load, and power_loss is |torque * omega|; before
+/// that the torque stays within the sliding torque plus the documented damping term. The
+/// energy sums power_loss * h over the steps, presliding ones included. The host drives the
+/// state by the angle (set at every step start with the angular velocity).
+#[test]
+fn presliding_outputs_in_steady_sliding_equal_the_library_exactly_and_energy_integrates_power() {
+    let h = Host::new();
+    let mut p = Params::default();
+    p.surface.asperity_radius = 5e-6;
+    p.lubricant.viscosity = 0.02;
+    let c = h.ready(&[("surface.asperity_radius", 5e-6), ("lubricant.viscosity", 0.02)]);
+    let j = Joint::new(&p).unwrap();
+    let law = pinjoint::zero_velocity::presliding::Presliding::default();
+    let (mut angle, mut t, mut energy) = (0.0, 0.0, 0.0);
+    let (mut travel, mut last_sign, mut exact) = (0.0, 0.0, 0);
+    for k in 0..600 {
+        // Three sliding phases with reversals, the load changing within each (up and down).
+        let w: f64 = match k { 0..200 => 1.5, 200..400 => -0.4, _ => 3.0 };
+        let load = [5e3, 60e3, 20e3, 33e3][k / 50 % 4];
+        let h_step = 0.002 + 0.001 * (k % 3) as f64;
+        if w.signum() != last_sign || k % 50 == 0 {
+            (travel, last_sign) = (0.0, w.signum());
+        }
+        assert_eq!(set(c, "angular_velocity", w), OK);
+        assert_eq!(set(c, "load", load), OK);
+        assert_eq!(set(c, "angle", angle), OK);
+        let op = j.evaluate(load, w).unwrap();
+        let (torque, power) = (get(c, "torque"), get(c, "power_loss"));
+        if travel >= 2f64.to_radians() {
+            assert_eq!(torque.to_bits(), (-w.signum() * op.torque).to_bits(), "torque at step {k}: {torque} vs {} load {load} w {w} tau {}", -w.signum() * op.torque, get(c, "presliding_torque"));
+            assert_eq!(power.to_bits(), (torque * w).abs().to_bits(), "power_loss at step {k}");
+            exact += 1;
+        } else {
+            let damping = law.damping_time * op.torque * w.abs() / law.angle;
+            assert!(torque.abs() <= op.torque + damping, "step {k}: {torque} vs {} + {damping}", op.torque);
+            assert!(power >= 0.0);
+        }
+        assert_eq!(fmi2DoStep(c, t, h_step, 0), OK);
+        t += h_step;
+        energy += power * h_step;
+        assert_eq!(get(c, "dissipated_energy").to_bits(), energy.to_bits(), "energy at step {k}");
+        for (n, a, b) in [("friction_coefficient", get(c, "friction_coefficient"), op.friction_coefficient), ("film_thickness", get(c, "film_thickness"), op.film_thickness)] {
+            assert_eq!(a.to_bits(), b.to_bits(), "{n} at step {k}");
+        }
+        angle += w * h_step;
+        travel += (w * h_step).abs();
+    }
+    assert!(exact >= 400, "{exact} steps in steady sliding");
+    unsafe { fmi2FreeInstance(c) };
+}
+
 #[test]
 fn outputs_can_be_read_in_initialization_mode_with_the_start_values() {
     let h = Host::new();
+    let op = Joint::new(&Params::default()).unwrap().evaluate(20e3, -0.5).unwrap();
+    // The band: the library's torque.
+    let c = h.instantiate();
+    assert_eq!(set(c, BAND.0, BAND.1), OK);
+    assert_eq!(set(c, "angular_velocity", -0.5), OK);
+    assert_eq!(fmi2EnterInitializationMode(c), OK);
+    assert_eq!(get(c, "torque"), op.torque);
+    assert!(get(c, "torque") > 0.0, "opposes negative speed");
+    assert_eq!(get(c, "dissipated_energy"), 0.0);
+    unsafe { fmi2FreeInstance(c) };
+    // Presliding (the default): the law at the start value of the state (0), the library's
+    // sliding torque as its bound: the damping of the elastic deflection rate, opposing the motion.
     let c = h.instantiate();
     assert_eq!(set(c, "angular_velocity", -0.5), OK);
     assert_eq!(fmi2EnterInitializationMode(c), OK);
-    let op = Joint::new(&Params::default()).unwrap().evaluate(20e3, -0.5).unwrap();
-    assert_eq!(get(c, "torque"), op.torque);
+    assert_eq!(get(c, "presliding_torque"), 0.0);
+    let law = pinjoint::zero_velocity::presliding::Presliding::default();
+    assert_eq!(get(c, "torque").to_bits(), law.torque(0.0, -0.5, op.torque).to_bits());
     assert!(get(c, "torque") > 0.0, "opposes negative speed");
     assert_eq!(get(c, "dissipated_energy"), 0.0);
     unsafe { fmi2FreeInstance(c) };

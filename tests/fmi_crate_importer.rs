@@ -19,6 +19,8 @@ fn fmi_crate_loads_and_steps_the_fmu_with_the_library_outputs() {
     let mut inst = packaged::cs_instance(&import, "pin");
     let vr = |name: &str| packaged::vr(&INFO, name);
     inst.set_real(&[vr("friction.boundary_friction_coefficient")], &[0.1]).unwrap();
+    // The band: the stateless law, the library's torque outside it and its ramp inside.
+    inst.set_integer(&[vr("zero_velocity.model")], &[0]).unwrap();
     inst.enter_initialization_mode().unwrap();
     inst.exit_initialization_mode().unwrap();
 
@@ -57,5 +59,66 @@ fn fmi_crate_loads_and_steps_the_fmu_with_the_library_outputs() {
     assert!(inst.do_step(t + 1.0, h, true).is_err(), "discontinuous communication point");
     assert!(inst.set_real(&[vr("torque")], &[1.0]).is_err(), "set on an output");
     inst.do_step(t, h, true).unwrap();
+    inst.terminate().unwrap();
+}
+
+/// The default zero-velocity model, presliding, through the same importer: the host sets only
+/// the angular velocity, so the state is driven by angular_velocity * h over each step. At
+/// every step the state and the torque are the core law's exact update and torque
+/// ([`Presliding::deflect`], [`Presliding::torque`]) with the library's sliding torque as the
+/// bound; in sliding at speed (2 degrees since the last reversal or load change, and steps
+/// longer than 40 (1 - beta) phi_s, over which the state settles on a bound that moves with
+/// omega) every output is the library's, the torque -sign(omega) mu R P. The energy sums
+/// power_loss * h.
+#[test]
+fn fmi_crate_steps_the_presliding_default_to_the_library_in_sliding() {
+    use pinjoint::zero_velocity::presliding::Presliding;
+    let import = packaged::import("PINJOINT_FMU", &INFO, "test-presliding");
+    let mut inst = packaged::cs_instance(&import, "pin");
+    let vr = |name: &str| packaged::vr(&INFO, name);
+    inst.set_real(&[vr("friction.boundary_friction_coefficient")], &[0.1]).unwrap();
+    inst.enter_initialization_mode().unwrap();
+    inst.exit_initialization_mode().unwrap();
+    let mut p = Params::default();
+    p.friction.boundary_friction_coefficient = 0.1;
+    let joint = Joint::new(&p).unwrap();
+    let law = Presliding::default();
+    let outs: Vec<u32> = ["torque", "friction_coefficient", "film_thickness", "fluid_load_fraction", "power_loss", "dissipated_energy", "presliding_torque"]
+        .iter()
+        .map(|n| vr(n))
+        .collect();
+    let (h, mut t, mut energy) = (0.01, 0.0, 0.0);
+    let (mut travel, mut sign, mut sliding, mut tau) = (0.0, 0.0, 0, 0.0);
+    for k in 0..600 {
+        let w: f64 = 40.0 * (f64::from(k) * 0.02).sin().powi(3);
+        let load = if k < 300 { 5e3 } else { 60e3 };
+        if w.signum() != sign || k == 300 {
+            (travel, sign) = (0.0, w.signum());
+        }
+        inst.set_real(&[vr("angular_velocity"), vr("load")], &[w, load]).unwrap();
+        let mut power = [0.0];
+        inst.get_real(&[vr("power_loss")], &mut power).unwrap();
+        inst.do_step(t, h, true).unwrap();
+        t += h;
+        travel += (w * h).abs();
+        energy += power[0] * h;
+        let mut v = vec![0.0; outs.len()];
+        inst.get_real(&outs, &mut v).unwrap();
+        assert!((v[5] - energy).abs() <= 1e-12 * energy, "energy at step {k}: {} vs {energy}", v[5]);
+        let op = joint.evaluate(load, w).unwrap();
+        tau = law.deflect(tau, w * h, op.torque);
+        assert!((v[6] - tau).abs() <= 1e-12 * op.torque, "state at step {k}: {} vs {tau}", v[6]);
+        let torque = law.torque(tau, w, op.torque);
+        assert!((v[0] - torque).abs() <= 1e-12 * op.torque, "torque at step {k}: {} vs {torque}", v[0]);
+        if travel >= 2f64.to_radians() && (w * h).abs() >= 40.0 * 0.05 * 1.5e-3 {
+            sliding += 1;
+            let torque = op.signed_torque();
+            let expect = [torque, op.friction_coefficient, op.film_thickness, op.fluid_load_fraction, (torque * w).abs()];
+            for (i, (a, b)) in v.iter().zip(expect).enumerate() {
+                assert!((a - b).abs() <= 1e-12 * b.abs(), "output {i} at step {k}: {a} vs {b}");
+            }
+        }
+    }
+    assert!(sliding > 400, "{sliding} steps in sliding at speed");
     inst.terminate().unwrap();
 }

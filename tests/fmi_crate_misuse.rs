@@ -181,7 +181,8 @@ fn cases() -> Vec<(At, &'static str, Call, &'static str)> {
         (Step, "communication point in the past", |i| ok(i.do_step(0.0, 0.1, true)), "does not continue"),
         // Functions this FMU does not provide.
         (Step, "unknown log category", |i| ok(i.set_debug_logging(true, &["logEverything"])), "unknown log category 'logEverything'"),
-        (Step, "directional derivative", |i| ok(i.get_directional_derivative(&[10], &[2], &[1.0], &mut [0.0])), "providesDirectionalDerivative = false"),
+        (Step, "directional derivative with respect to a parameter", |i| ok(i.get_directional_derivative(&[10], &[100], &[1.0], &mut [0.0])), "partials with respect to parameters are not provided"),
+        (Step, "directional derivative of an input", |i| ok(i.get_directional_derivative(&[2], &[3], &[1.0], &mut [0.0])), "continuous Real outputs"),
         (Step, "cancelStep", |i| ok(i.cancel_step()), "fmi2CancelStep: illegal call sequence"),
         (Step, "doStep status of a synchronous FMU", |i| ok(i.do_step_status()), "fmi2DoStepStatus is not available"),
         (Step, "pending status of a synchronous FMU", |i| ok(i.pending_status()), "fmi2PendingStatus is not available"),
@@ -198,6 +199,13 @@ fn cases() -> Vec<(At, &'static str, Call, &'static str)> {
             b[at..at + 8].copy_from_slice(&f64::NAN.to_le_bytes());
             fix_crc(b);
         }), "input angular_velocity = NaN rad/s"),
+        (Step, "deserialize a state of the layout before the presliding state", |i| damaged(i, |b| { let at = model_part(); b[at] = 4; fix_crc(b) }),
+            "PinJoint state version 4; this FMU reads version 5"),
+        (Step, "deserialize a state holding a NaN presliding torque", |i| damaged(i, |b| {
+            let at = model_part() + 3 + 8 * (PARAMS.len() + 16);
+            b[at..at + 8].copy_from_slice(&f64::NAN.to_le_bytes());
+            fix_crc(b);
+        }), "presliding_torque = NaN"),
     ]
 }
 
@@ -307,9 +315,23 @@ fn every_parameter_out_of_range_or_not_finite_is_refused_at_initialization_by_na
     assert!(refused >= 4 * 22, "{refused} of {} refused", names.len());
 }
 
+/// An instance past its first step (as [`instance`] `At::Step`) with `zero_velocity.model` = `model`.
+fn stepped_with_model(model: i32) -> InstanceCS {
+    capture();
+    let mut i = import().instantiate_cs(&unique("extreme"), false, false).expect("instantiate");
+    i.setup_experiment(None, 0.0, None).unwrap();
+    i.set_integer(&[vr("zero_velocity.model")], &[model]).unwrap();
+    i.enter_initialization_mode().unwrap();
+    i.exit_initialization_mode().unwrap();
+    i.set_real(&[vr("angular_velocity")], &[0.3]).unwrap();
+    i.do_step(0.0, 0.1, true).unwrap();
+    i
+}
+
+/// The band (set explicitly): outside it the torque is the library's, bit for bit.
 #[test]
 fn extreme_valid_inputs_give_the_library_values_never_nan() {
-    let (mut i, _) = instance(At::Step);
+    let mut i = stepped_with_model(0);
     let joint = Joint::new(&Params::default()).unwrap();
     let mut t = 0.1;
     let mut v = vec![0.0; 10];
@@ -333,6 +355,36 @@ fn extreme_valid_inputs_give_the_library_values_never_nan() {
         if w.abs() >= 0.01 {
             assert_eq!(v[0], op.signed_torque(), "load {load} w {w}");
         }
+    }
+}
+
+/// Presliding (the default) on the same extreme inputs: finite, the library's friction
+/// coefficient and film, and a torque opposing nothing beyond the documented bound: at most the
+/// sliding torque plus the damping term t_d T |omega| / phi_s in magnitude.
+#[test]
+fn extreme_valid_inputs_under_presliding_are_finite_and_bounded() {
+    let mut i = stepped_with_model(1);
+    let joint = Joint::new(&Params::default()).unwrap();
+    let law = pinjoint::zero_velocity::presliding::Presliding::default();
+    let mut t = 0.1;
+    let mut v = vec![0.0; 10];
+    i.set_real(&[2, 3], &[1.0, 0.0]).unwrap();
+    i.do_step(t, 0.1, true).unwrap();
+    t += 0.1;
+    i.get_real(&outputs(), &mut v).unwrap();
+    assert!(v[..9].iter().all(|&x| x == 0.0), "{v:?}");
+    for (load, w) in [(5e8, 1.0), (20e3, 1e6), (5e8, 1e6), (5e8, -1e6), (1e-30, 1e6), (60e3, 1e-300), (1e-300, 0.0)] {
+        i.set_real(&[2, 3], &[w, load]).unwrap();
+        i.do_step(t, 0.1, true).unwrap();
+        t += 0.1;
+        i.get_real(&outputs(), &mut v).unwrap();
+        assert!(v.iter().all(|x| x.is_finite()), "load {load} w {w}: {v:?}");
+        let op = joint.evaluate(load, w).unwrap();
+        assert_eq!(v[1], op.friction_coefficient, "load {load} w {w}");
+        assert_eq!(v[2], op.film_thickness, "load {load} w {w}");
+        let bound = op.torque + law.damping_time * op.torque * w.abs() / law.angle;
+        assert!(v[0].abs() <= bound * (1.0 + 1e-12), "load {load} w {w}: torque {} beyond {bound}", v[0]);
+        assert!(v[8] >= 0.0, "power_loss {}", v[8]);
     }
 }
 

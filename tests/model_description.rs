@@ -111,11 +111,32 @@ fn output_dependencies_are_the_physical_ones() {
     };
     // The lubricant temperature input changes η0 and α: every friction output depends on it.
     let speed_load = format!("{} {} {}", idx("angular_velocity"), idx("load"), idx("temperature"));
-    assert_eq!(deps("torque"), speed_load);
-    assert_eq!(deps("power_loss"), speed_load);
+    // The friction outputs also depend on the presliding state and, under Co-Simulation, on
+    // the angle (its increment since the last step deflects the state).
+    let friction = format!("{} {} {} {} {}", idx("angle"), idx("angular_velocity"), idx("load"), idx("temperature"), idx("presliding_torque"));
+    assert_eq!(deps("torque"), friction);
+    assert_eq!(deps("power_loss"), friction);
     assert_eq!(deps("min_film_thickness"), speed_load);
+    assert_eq!(deps("friction_coefficient"), speed_load);
     assert!(xml.contains(r#"<DisplayUnit name="degC" factor="1.0" offset="-273.15"/>"#), "temperature displayed in degC");
     assert_eq!(deps("mean_pressure"), idx("load").to_string());
     assert_eq!(deps("dissipated_energy"), "");
-    assert!(!xml.contains(&format!(" {}\"", idx("angle"))), "no output depends on angle");
+    // Only the friction outputs depend on the angle.
+    let angle = idx("angle").to_string();
+    let on_angle: Vec<&str> = xml
+        .lines()
+        .filter(|l| l.contains("<Unknown index=") && l.split("dependencies=\"").nth(1).is_some_and(|d| d.split('"').next().unwrap().split(' ').any(|x| x == angle)))
+        .map(str::trim)
+        .collect();
+    let expect = [format!("{}\"{friction}\"/>", line("torque")), format!("{}\"{friction}\"/>", line("power_loss"))];
+    assert_eq!(on_angle, expect);
+    // One continuous state: der(presliding_torque), of the state, omega, P and T (not the
+    // angle: under Model Exchange the host's state replaces it), the state's derivative.
+    let state = format!("{} {} {} {}", idx("angular_velocity"), idx("load"), idx("temperature"), idx("presliding_torque"));
+    let der = format!(r#"<Derivatives>
+      <Unknown index="{}" dependencies="{state}"/>
+    </Derivatives>"#, idx("der(presliding_torque)"));
+    assert!(xml.contains(&der), "{der}");
+    assert!(xml.contains(&format!(r#"derivative="{}""#, idx("presliding_torque"))));
+    assert!(xml.matches("providesDirectionalDerivative=\"true\"").count() == 2, "ME and CS");
 }

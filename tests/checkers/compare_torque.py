@@ -9,6 +9,20 @@ row's own recorded `angular_velocity` ω, `load` P (and `temperature` when recor
   |ω| <  ω_b:  -T(P, ω_b) ω / ω_b          (difference <= --rtol * T(P, ω_b))
   P = 0:       0
 with T the library's torque magnitude μ R P (eq. 11) and ω_b the FMU's default speed band.
+These are the band's rows (the hosts set zero_velocity.model = band).
+
+PinJoint with the default zero-velocity model (`--kind joint-presliding`, the presliding state,
+driven by ω): on every loaded row |torque| <= T(P, |ω|) (1 + t_d |ω| / φ_s) (the sliding
+torque plus the documented damping bound; defaults t_d = 0.01 s, φ_s = 1.5e-3 rad) and the
+torque never drives the motion in sliding; in steady sliding, i.e. after 2° of travel since
+the last reversal (the travel ∫|ω|dt integrated from the rows by the trapezoidal rule) on rows
+whose travel since the previous row is at least 40 (1 - β) φ_s = 3e-3 rad (over which the state
+settles on a sliding torque that moves with ω), torque = -sign(ω) T(P, |ω|) within --rtol.
+With --state (Model Exchange: the host's integrator owns the state, whose error the damping
+term amplifies by t_d |ω| / ((1 - β) φ_s), about 100 at 0.8 rad/s) the rows must record
+`presliding_torque` τ, and every loaded row's torque must instead be the law's at the recorded
+state, -(clamp(τ, ±T) + t_d (T/φ_s) ω max(g, 0)), g = 1 for s τ <= β T, else
+(T - s τ)/(T - β T), s = sign(ω), within --rtol of T.
 
 PinJointRig (`--kind rig`): on every row where the rig slips (`stuck` = 0, ω != 0, P != 0),
 `friction_torque` must be -sign(ω) T(P, |ω|) and `friction_coefficient` the library's μ at
@@ -86,6 +100,64 @@ def compare_joint(rows, pinjoint, band, rtol):
     return ok, summary, bad[:5] + [("zero load", r) for r in zero[:5]]
 
 
+PRESLIDING_ANGLE, DAMPING_TIME, ELASTIC_LIMIT = 1.5e-3, 0.01, 0.95
+
+
+def presliding_torque(tau, w, t):
+    """The presliding law's torque at the state tau, speed w and sliding torque t (> 0)."""
+    held = max(-t, min(t, tau))
+    if w == 0.0:
+        return -held
+    u = tau if w > 0 else -tau
+    g = 1.0 if u <= ELASTIC_LIMIT * t else (t - u) / (t - ELASTIC_LIMIT * t)
+    if g <= 0.0:
+        return -held
+    return -(held + DAMPING_TIME * (t / PRESLIDING_ANGLE) * w * g)
+
+
+def compare_joint_presliding(rows, pinjoint, rtol, state):
+    with_t = "temperature" in rows[0]
+    loaded = [r for r in rows if r["load"] != 0.0]
+    lib = library([point_of(r, abs(r["angular_velocity"]), with_t) for r in loaded], pinjoint, with_t) if loaded else []
+    travel, last, sign = 0.0, None, 0.0
+    steady_n, worst, bad = 0, 0.0, []
+    for r, (_, t) in zip(loaded, lib):
+        w, got = r["angular_velocity"], r["torque"]
+        step = 0.0 if last is None else 0.5 * (abs(w) + abs(last["angular_velocity"])) * (r["time"] - last["time"])
+        s = math.copysign(1.0, w) if w != 0.0 else sign
+        if s != sign:
+            travel, sign = 0.0, s
+        travel += step
+        last = r
+        bound = t * (1.0 + DAMPING_TIME * abs(w) / PRESLIDING_ANGLE)
+        if not abs(got) <= bound * (1.0 + 1e-12):
+            bad.append((r.get("time"), w, r["load"], got, f"beyond the bound {bound!r}"))
+        if state:
+            want = presliding_torque(r["presliding_torque"], w, t)
+            d = abs(got - want) / t
+            worst = max(worst, d)
+            if not d <= rtol:
+                bad.append((r.get("time"), w, r["load"], got, want))
+        if travel >= math.radians(2.0):
+            if got * w > 0.0:
+                bad.append((r.get("time"), w, r["load"], got, "drives the motion in sliding"))
+            if state:
+                steady_n += 1
+            elif step >= 40 * (1 - ELASTIC_LIMIT) * PRESLIDING_ANGLE:
+                want = -math.copysign(t, w)
+                d = abs(got - want) / abs(want)
+                steady_n += 1
+                worst = max(worst, d)
+                if not d <= rtol:
+                    bad.append((r.get("time"), w, r["load"], got, want))
+    zero = [r for r in rows if r["load"] == 0.0 and r["torque"] != 0.0]
+    ok = not bad and not zero and steady_n > 0
+    against = "the law at the recorded state, every row" if state else "the library in steady sliding"
+    summary = (f"{len(loaded)} loaded rows within the presliding bound; {steady_n} in steady sliding; "
+               f"against {against}: largest relative difference {worst:.3g}")
+    return ok, summary, bad[:5] + [("zero load", r) for r in zero[:5]]
+
+
 def compare_rig(rows, pinjoint, rtol):
     with_t = "temperature" in rows[0]
     slipping = [r for r in rows if r["stuck"] == 0.0 and r["angular_velocity"] != 0.0 and r["load"] != 0.0]
@@ -109,11 +181,12 @@ def compare_rig(rows, pinjoint, rtol):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("csv", help="result CSV of the external host")
-    ap.add_argument("--kind", choices=["joint", "rig"], required=True)
+    ap.add_argument("--kind", choices=["joint", "joint-presliding", "rig"], required=True)
     ap.add_argument("--label", default="")
     ap.add_argument("--pinjoint", required=True, help="path to the `pinjoint` binary")
     ap.add_argument("--band", type=float, default=0.01, help="PinJoint's zero_velocity.speed_band (rad/s)")
     ap.add_argument("--rtol", type=float, default=1e-12)
+    ap.add_argument("--state", action="store_true", help="joint-presliding: check against the law at the recorded presliding_torque (Model Exchange)")
     a = ap.parse_args()
     rows = read_rows(a.csv)
     if not rows:
@@ -121,6 +194,8 @@ def main():
         return 1
     if a.kind == "joint":
         ok, summary, bad = compare_joint(rows, a.pinjoint, a.band, a.rtol)
+    elif a.kind == "joint-presliding":
+        ok, summary, bad = compare_joint_presliding(rows, a.pinjoint, a.rtol, a.state)
     else:
         ok, summary, bad = compare_rig(rows, a.pinjoint, a.rtol)
     print(f"{a.label}: {'agrees' if ok else 'FAIL'} with the library (rtol {a.rtol:g}): {summary}")

@@ -295,3 +295,8 @@ pub const OUTPUTS: [&str; 10] = [
 pub fn all_outputs(c: Fmi2Component) -> Vec<f64> {
     OUTPUTS.iter().map(|n| get(c, n)).collect()
 }
+
+/// `zero_velocity.model = band` (0), the stateless law: set it where a test checks the torque
+/// against the library's stateless value or the band's ramp (the band is bit for bit the law
+/// before the presliding model, which is the default).
+pub const BAND: (&str, f64) = ("zero_velocity.model", 0.0);

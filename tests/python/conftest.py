@@ -28,6 +28,10 @@ OUTPUTS = [
     "sommerfeld_number", "power_loss", "dissipated_energy",
 ]
 DEFAULT_BAND = 0.01  # rad/s, zero_velocity.speed_band
+# zero_velocity.model = band (0): the stateless law, bit for bit the one before the presliding
+# model (the default, 1). Tests that compare the torque with the library's stateless value or
+# the band's ramp set it.
+BAND = {"zero_velocity.model": 0}
 
 
 def _fmu_fixtures(prefix, locate, tmp_name):
@@ -111,6 +115,25 @@ def expected_torque(load, omega, band=DEFAULT_BAND, params=None):
         t = np.where(inside, -edge["torque"] * (omega[loaded] / band) if band > 0 else 0.0, at["signed_torque"])
         torque[loaded] = t
     return torque
+
+
+# The presliding law's default parameters (zero_velocity.presliding_angle, .elastic_limit,
+# .damping_time).
+PRESLIDING_ANGLE, ELASTIC_LIMIT, DAMPING_TIME = 1.5e-3, 0.95, 0.01
+
+
+def presliding_torque(tau, omega, bound):
+    """The presliding law's friction torque, written out from its documentation (Dupont et al.
+    2002 single-state elasto-plastic law): -(clamp(tau, -T, T) + t_d (T/phi_s) w max(g, 0)),
+    with g = 1 while s tau <= beta T (s = sign w), else (T - s tau)/(T - beta T); 0 unloaded."""
+    tau, omega, bound = (np.asarray(x, float) for x in np.broadcast_arrays(tau, omega, bound))
+    held = np.clip(tau, -bound, bound)
+    u = np.where(omega < 0, -tau, tau)
+    limit = ELASTIC_LIMIT * bound
+    with np.errstate(divide="ignore", invalid="ignore"):
+        g = np.where(u <= limit, 1.0, (bound - u) / (bound - limit))
+    damping = np.where((omega != 0) & (g > 0), DAMPING_TIME * (bound / PRESLIDING_ANGLE) * omega * g, 0.0)
+    return np.where(bound > 0, -(held + damping), 0.0)
 
 
 def assert_close(actual, expected, rel=1e-12, what=""):

@@ -26,7 +26,7 @@ fi
 if [[ -z "${PINJOINT_KEEP_FMUS:-}" || ! -f target/fmu/PinJoint.fmu || ! -f target/fmu/PinJointRig.fmu ]]; then
     cargo run --release -q -p fmu_build
 fi
-cargo build --release -q -p pinjoint --example reference_points --example rig_reference
+cargo build --release -q -p pinjoint --example reference_points --example rig_reference --example presliding_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"
 if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy, scipy" 2>/dev/null; then

@@ -11,11 +11,14 @@ import numpy as np
 import pytest
 from fmpy.fmi1 import FMICallException
 
-from conftest import OUTPUTS, reference
+from conftest import BAND, DAMPING_TIME, OUTPUTS, PRESLIDING_ANGLE, reference
 from test_lowlevel import Slave, expect_error
 
 INPUTS = {"angle": (1, "rad"), "angular_velocity": (2, "rad/s"), "load": (3, "N")}
 OUT = list(range(10, 20))
+# Real parameters whose setter checks their declared range (the rest are checked at
+# fmi2ExitInitializationMode): zero_velocity.presliding_angle, in (0, 1] rad.
+SET_CHECKED = {"zero_velocity.presliding_angle"}
 
 
 @pytest.mark.parametrize("name", list(INPUTS))
@@ -57,7 +60,8 @@ def test_zero_load_is_an_unloaded_joint(unzipped, model_description):
 
 @pytest.mark.parametrize("load,omega", [(5e8, 1.0), (20e3, 1e6), (5e8, 1e6), (5e8, -1e6), (5e3, -1e6), (5e8, 0.01), (5e8, 0.0)])
 def test_extreme_loads_and_speeds_give_the_library_values(unzipped, model_description, load, omega):
-    s = Slave(unzipped, model_description, "step")
+    """The band (set explicitly): outside it the torque is the library's, bit for bit."""
+    s = Slave(unzipped, model_description, "step", start_values=BAND)
     s.fmu.setReal([2, 3], [omega, load])
     s.fmu.doStep(0.1, 0.1)
     out = dict(zip(OUTPUTS, s.fmu.getReal(OUT)))
@@ -68,6 +72,26 @@ def test_extreme_loads_and_speeds_give_the_library_values(unzipped, model_descri
         assert out[name] == float(ref[name]), (name, out[name], float(ref[name]))
     if abs(omega) >= 0.01:
         assert out["torque"] == float(ref["signed_torque"])
+    s.free()
+
+
+@pytest.mark.parametrize("load,omega", [(5e8, 1.0), (20e3, 1e6), (5e8, 1e6), (5e8, -1e6), (5e3, -1e6), (5e8, 0.01), (5e8, 0.0)])
+def test_extreme_loads_and_speeds_under_presliding_are_finite_and_bounded(unzipped, model_description, load, omega):
+    """The default (presliding) on the same inputs after one step: finite, the library's
+    values for every output the zero-velocity model does not touch, the torque within the
+    sliding torque plus the documented damping term t_d T |w| / phi_s."""
+    s = Slave(unzipped, model_description, "step")
+    s.fmu.setReal([2, 3], [omega, load])
+    s.fmu.doStep(0.1, 0.1)
+    out = dict(zip(OUTPUTS, s.fmu.getReal(OUT)))
+    assert all(np.isfinite(list(out.values()))), out
+    ref = reference([load], [omega])
+    for name in ("friction_coefficient", "film_thickness", "lambda_ratio", "fluid_load_fraction",
+                 "asperity_load_fraction", "mean_pressure", "sommerfeld_number"):
+        assert out[name] == float(ref[name]), (name, out[name], float(ref[name]))
+    t = float(ref["torque"])
+    assert abs(out["torque"]) <= t * (1 + DAMPING_TIME * abs(omega) / PRESLIDING_ANGLE) * (1 + 1e-12), (out["torque"], t)
+    assert out["power_loss"] >= 0.0
     s.free()
 
 
@@ -93,6 +117,14 @@ def test_every_parameter_out_of_range_fails_initialization_naming_it(unzipped, m
     for name, vr, value in cases:
         s = Slave(unzipped, model_description, "instantiated")
         s.fmu.setupExperiment(startTime=0.0)
+        if name in SET_CHECKED:
+            # Declared with a range its setter checks: refused at fmi2SetReal, naming it, and
+            # the instance initializes with the start value.
+            expect_error(s, lambda: s.fmu.setReal([vr], [value]), f"{name} = {shown(value)}")
+            s.fmu.enterInitializationMode()
+            s.fmu.exitInitializationMode()
+            s.free()
+            continue
         s.fmu.setReal([vr], [value])
         s.fmu.enterInitializationMode()
         expect_error(s, s.fmu.exitInitializationMode, f"{name} = {shown(value)}")

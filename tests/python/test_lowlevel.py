@@ -22,11 +22,11 @@ def _first_step(s):
     s.fmu.doStep(0.0, 0.1)
 
 
-def Slave(unzipped, md, state="step", logging_on=False):
+def Slave(unzipped, md, state="step", logging_on=False, start_values=None):
     """The shared host (host.py) for PinJoint: "error" is a negative pin radius, "step" one
-    step at 0.3 rad/s."""
-    bad = {"geometry.pin_radius": -1.0} if state == "error" else None
-    return host.Slave(unzipped, md, state, start_values=bad, logging_on=logging_on, first_step=_first_step)
+    step at 0.3 rad/s; `start_values` (by name) are set before initialization too."""
+    bad = {"geometry.pin_radius": -1.0} if state == "error" else {}
+    return host.Slave(unzipped, md, state, start_values={**(start_values or {}), **bad}, logging_on=logging_on, first_step=_first_step)
 
 
 # (state, description, call, expected message fragments)
@@ -86,7 +86,9 @@ ARGUMENT_CASES = [
     ("discontinuous communication point", lambda s: s.fmu.doStep(0.5, 0.1), ["currentCommunicationPoint = 0.5 s does not continue", "ended at 0.1 s"]),
     ("communication point in the past", lambda s: s.fmu.doStep(0.0, 0.1), ["does not continue"]),
     ("unknown log category", lambda s: s.fmu.setDebugLogging(True, ["logEverything"]), ["unknown log category 'logEverything'"]),
-    ("directional derivative", lambda s: s.fmu.getDirectionalDerivative([10], [2], [1.0]), ["providesDirectionalDerivative = false"]),
+    ("directional derivative with respect to a parameter", lambda s: s.fmu.getDirectionalDerivative([10], [100], [1.0]),
+     ["partials with respect to parameters are not provided"]),
+    ("directional derivative of an input", lambda s: s.fmu.getDirectionalDerivative([2], [3], [1.0]), ["continuous Real outputs"]),
     ("real status of an unknown kind", lambda s: s.fmu.fmi2GetRealStatus(s.c, 7, byref(c_double())), ["status kind 7"]),
     ("doStep status (synchronous FMU)", lambda s: s.fmu.fmi2GetStatus(s.c, 0, byref(c_int())), ["fmi2DoStepStatus"]),
     ("setFMUstate with NULL", lambda s: s.fmu.fmi2SetFMUstate(s.c, None), ["FMUstate is NULL"]),

@@ -1,9 +1,11 @@
-"""fmpy.simulate_fmu against the library: every output at every output point."""
+"""fmpy.simulate_fmu against the library: every output at every output point (the band,
+zero_velocity.model = 0, whose torque is the library's stateless value), and the default
+presliding model against the library in steady sliding."""
 
 import numpy as np
 from fmpy import simulate_fmu
 
-from conftest import OUTPUTS, DEFAULT_BAND, assert_close, expected_torque, failed_simulation, reference
+from conftest import BAND, OUTPUTS, DEFAULT_BAND, assert_close, expected_torque, failed_simulation, reference
 
 DT = 0.005
 # The FMU's default fidelity (full) is the library's complete solve, evaluated cold at every
@@ -48,7 +50,7 @@ def check_against_library(r, params=None, band=DEFAULT_BAND):
 
 
 def test_outputs_equal_the_library_at_every_output_point(fmu_path):
-    r = simulate(fmu_path)
+    r = simulate(fmu_path, start_values=BAND)
     assert len(r) == 801
     omega = r["angular_velocity"]
     ref = check_against_library(r)
@@ -68,9 +70,9 @@ def test_start_values_change_parameters(fmu_path):
     params = {"friction.boundary_friction_coefficient": 0.08, "geometry.bush_length": 0.05,
               "lubricant.viscosity": 0.03}
     band = 0.05
-    r = simulate(fmu_path, start_values={**params, "zero_velocity.speed_band": band})
+    r = simulate(fmu_path, start_values={**params, **BAND, "zero_velocity.speed_band": band})
     check_against_library(r, params, band)
-    default = simulate(fmu_path)
+    default = simulate(fmu_path, start_values=BAND)
     assert not np.allclose(r["torque"], default["torque"])
     # The boundary torque follows mu_c: at low speed mu -> 0.08.
     slow = (np.abs(r["angular_velocity"]) > band) & (np.abs(r["angular_velocity"]) < 0.2)
@@ -81,3 +83,34 @@ def test_invalid_parameter_fails_initialization_with_its_name(fmu_path):
     error, messages = failed_simulation(fmu_path, {"geometry.bush_radius": 0.027})
     assert "fmi2ExitInitializationMode" in error
     assert any("geometry.bush_radius = 0.027 m must exceed geometry.pin_radius = 0.028 m" in m for m in messages), messages
+
+
+def test_presliding_default_equals_the_library_in_steady_sliding(fmu_path):
+    """The default model (presliding), the state driven by the angle input: the outputs the
+    zero-velocity model does not touch equal the library's at every point; the torque never
+    exceeds the sliding torque plus the documented damping term t_d T |w| / phi_s; in steady
+    sliding (2 degrees of travel since the last reversal or load change, and a step's travel of
+    at least 40 (1 - beta) phi_s = 3e-3 rad, over which the state settles on a sliding torque
+    that moves with w) the torque is the library's signed torque and power_loss |torque w|."""
+    r = simulate(fmu_path)
+    load, omega, angle = r["load"], r["angular_velocity"], r["angle"]
+    ref = reference(load, omega)
+    for name in ("friction_coefficient", "film_thickness", "lambda_ratio", "fluid_load_fraction",
+                 "asperity_load_fraction", "mean_pressure", "sommerfeld_number"):
+        assert_close(r[name], ref[name], rel=FULL_ACCURACY, what=name)
+    t_d, phi_s = 0.01, 1.5e-3
+    assert np.all(np.abs(r["torque"]) <= ref["torque"] * (1 + t_d * np.abs(omega) / phi_s) * (1 + 1e-12))
+    step = np.abs(np.diff(angle, prepend=angle[0]))
+    travel, steady, sign, last_load = 0.0, np.zeros(len(r), bool), 0.0, None
+    for k in range(len(r)):
+        s = np.sign(omega[k])
+        if s != sign or load[k] != last_load:
+            travel, sign, last_load = 0.0, s, load[k]
+        travel += step[k]
+        steady[k] = travel >= np.radians(2.0) and step[k] >= 3e-3
+    assert steady.sum() > 400, steady.sum()
+    assert_close(r["torque"][steady], ref["signed_torque"][steady], rel=FULL_ACCURACY, what="torque in steady sliding")
+    assert_close(r["power_loss"][steady], np.abs(r["torque"] * omega)[steady], rel=FULL_ACCURACY, what="power_loss")
+    # The presliding torque is not the band's: at the start, from rest, it differs.
+    band = expected_torque(load, omega, DEFAULT_BAND)
+    assert not np.allclose(r["torque"][~steady], band[~steady], rtol=1e-6)

@@ -26,8 +26,15 @@ def test_interface(model_description):
     assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load", "temperature"]
     assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "validity"]
     params = [n for n in v if v[n].causality == "parameter"]
-    # The 26 parameter-file keys, the band, fidelity, tolerance and the 4 envelope bounds.
-    assert len(params) == 33 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    # The 26 parameter-file keys, the band, fidelity, tolerance, the 4 envelope bounds, the
+    # zero-velocity model and the 3 presliding parameters.
+    assert len(params) == 37 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    assert {"zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time"} <= set(params)
+    assert v["zero_velocity.model"].type == "Enumeration" and int(v["zero_velocity.model"].start) == 1, "presliding by default"
+    # One continuous state (Model Exchange) and directional derivatives in both interfaces.
+    assert [d.variable.name for d in md.derivatives] == ["der(presliding_torque)"]
+    assert md.derivatives[0].variable.derivative.name == "presliding_torque"
+    assert cs.providesDirectionalDerivative and md.modelExchange.providesDirectionalDerivative
     assert {"fidelity", "tolerance", "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"} <= set(params)
     assert float(v["geometry.pin_radius"].start) == 0.028
     assert float(v["friction.boundary_friction_coefficient"].start) == 0.12
@@ -36,7 +43,11 @@ def test_interface(model_description):
     display = {d.name for u in md.unitDefinitions for d in u.displayUnits}
     assert {"deg", "rpm", "kN", "MPa", "um"} <= display
     outputs = {u.variable.name: sorted(d.name for d in u.dependencies) for u in md.outputs}
-    assert outputs["torque"] == ["angular_velocity", "load", "temperature"]
+    # The friction outputs depend on the presliding state and (Co-Simulation) the angle.
+    assert outputs["torque"] == ["angle", "angular_velocity", "load", "presliding_torque", "temperature"]
+    assert outputs["power_loss"] == outputs["torque"]
+    derivatives = {u.variable.name: sorted(d.name for d in u.dependencies) for u in md.derivatives}
+    assert derivatives["der(presliding_torque)"] == ["angular_velocity", "load", "presliding_torque", "temperature"]
     assert outputs["min_lambda_ratio"] == ["angular_velocity", "load", "temperature"]
     assert outputs["mean_pressure"] == ["load"]
     assert outputs["dissipated_energy"] == []

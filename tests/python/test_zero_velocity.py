@@ -6,7 +6,9 @@ with torque from the FMU at the current w (the FMU's torque already opposes w),
 T_drive(t) = A sin(2 pi f t) with A above the breakaway torque, so the joint
 reverses twice per period. Chatter measure: sign changes of w per drive reversal.
 A chatter-free run changes sign once per reversal; without the band (speed_band =
-0, a pure sign function) the same host chatters, which shows the test can fail."""
+0, a pure sign function) the same host chatters, which shows the test can fail.
+This is the band's behaviour: the host sets zero_velocity.model = band (the presliding
+default has its own tests)."""
 
 import numpy as np
 from fmpy import extract
@@ -25,6 +27,8 @@ def run(unzipped, md, band):
     fmu.instantiate()
     fmu.setupExperiment(startTime=0.0)
     fmu.setReal([200], [band])
+    model = next(v.valueReference for v in md.modelVariables if v.name == "zero_velocity.model")
+    fmu.setInteger([model], [0])  # band
     fmu.enterInitializationMode()
     fmu.setReal([3], [LOAD])
     fmu.exitInitializationMode()
