@@ -36,8 +36,10 @@ proptest! {
     fn a_changing_temperature_gives_a_fresh_instances_outputs(
         steps in prop::collection::vec((temperature(), log_uniform(1e3, 2e5), prop_oneof![Just(0.0), -6.0f64..6.0, log_uniform(1e-4, 100.0)], 1usize..4), 1..6),
     ) {
+        // The friction model's temperature path, not the presliding state's history: the band
+        // (stateless) in both instances.
         let h = Host::new();
-        let c = h.ready(&[]);
+        let c = h.ready(&[BAND]);
         let mut t = 0.0;
         for (temp, load, w, drift_steps) in steps {
             // A drift of 1e-3 K per step ending at `temp`, then the comparison.
@@ -50,13 +52,13 @@ proptest! {
                 t += 1e-3;
                 if st != OK {
                     // Near Roelands' pole a fresh instance refuses the same temperature.
-                    let f = h.initialize(&[("temperature", tk), ("load", load), ("angular_velocity", w)]).1;
+                    let f = h.initialize(&[BAND, ("temperature", tk), ("load", load), ("angular_velocity", w)]).1;
                     prop_assert_ne!(f, OK);
                     return Ok(());
                 }
             }
             let fresh = Host::new();
-            let (f, status) = fresh.initialize(&[("temperature", temp), ("load", load), ("angular_velocity", w)]);
+            let (f, status) = fresh.initialize(&[BAND, ("temperature", temp), ("load", load), ("angular_velocity", w)]);
             prop_assert_eq!(status, OK, "{}", fresh.last());
             fresh.step(f, 0.0, 1e-3);
             prop_assert_eq!(outputs_bits(c), outputs_bits(f), "T = {} K, P = {} N, omega = {} rad/s", temp, load, w);

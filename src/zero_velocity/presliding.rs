@@ -129,6 +129,9 @@ impl Presliding {
         if d == 0.0 {
             return tau;
         }
+        // Return mapping: a state beyond the bound (the bound fell with the load or the speed
+        // since it was committed) is projected onto it first: the contact cannot hold more.
+        let tau = clamp(tau, bound);
         let s = S::c(if d > 0.0 { 1.0 } else { -1.0 });
         let u0 = s * tau;
         let a = s * delta;
@@ -154,18 +157,45 @@ impl Presliding {
         }
         let u = if dir < 0.0 { -tau } else { tau };
         let limit = S::c(self.elastic_limit) * bound;
-        if u.re() <= limit.re() { S::c(1.0) } else { (bound - u) / (bound - limit) }
+        if u.re() <= limit.re() {
+            S::c(1.0)
+        } else {
+            (bound - u) / (bound - limit)
+        }
+    }
+
+    /// The direction the fraction g is taken in: that of ω; at ω = 0 the unloading direction
+    /// (where g = 1 in the elastic range), so the ω-derivatives at rest are the elastic ones
+    /// (∂torque/∂ω = −t_d·k, ∂(dτ/dt)/∂ω = k), and the values (0 rate, no damping) are unchanged.
+    #[inline]
+    fn direction<S: Scalar>(&self, tau: S, omega: S) -> f64 {
+        let w = omega.re();
+        if w != 0.0 {
+            w
+        } else if tau.re() > 0.0 {
+            -1.0
+        } else {
+            1.0
+        }
     }
 
     /// dτ/dt = k·ω·g at angular velocity `omega` (rad/s): the Model Exchange derivative of the
     /// state (N·m/s).
     #[inline]
     pub fn rate<S: Scalar>(&self, tau: S, omega: S, bound: S) -> S {
-        let w = omega.re();
-        if w == 0.0 || unloaded(bound.re()) {
+        if unloaded(bound.re()) {
             return S::c(0.0);
         }
-        self.stiffness(bound) * omega * self.fraction(tau, w, bound)
+        let dir = self.direction(tau, omega);
+        let u = if dir < 0.0 { -tau } else { tau };
+        if u.re() < -bound.re() {
+            // Beyond the bound behind the motion (after the bound fell): besides unloading
+            // elastically, the excess relaxes over the transition's length (1 − β)·φ_s, as an
+            // excess ahead of the motion does. Written without dividing by T, which may be tiny.
+            let excess = -bound - u;
+            return omega * (self.stiffness(bound) + excess / S::c((1.0 - self.elastic_limit) * self.angle));
+        }
+        self.stiffness(bound) * omega * self.fraction(tau, dir, bound)
     }
 
     /// The friction torque on the pin (N·m): −(clamp(τ, −T, T) + t_d·k·ω·max(g, 0)).
@@ -175,14 +205,12 @@ impl Presliding {
             return S::c(0.0);
         }
         let held = clamp(tau, bound);
-        let w = omega.re();
-        if w == 0.0 {
-            return -held;
-        }
-        let g = self.fraction(tau, w, bound);
+        let g = self.fraction(tau, self.direction(tau, omega), bound);
         if unloaded(g.re()) {
             return -held;
         }
+        // The elastic deflection rate is at most ω (g > 1 only relaxes an excess state).
+        let g = if g.re() > 1.0 { S::c(1.0) } else { g };
         -(held + S::c(self.damping_time) * self.stiffness(bound) * omega * g)
     }
 
@@ -201,6 +229,7 @@ impl Presliding {
             return abs(held * omega);
         }
         let c = S::c(self.damping_time) * self.stiffness(bound);
+        let g = if g.re() > 1.0 { S::c(1.0) } else { g };
         let plastic = held * omega * (S::c(1.0) - g);
         let plastic = if plastic.re() > 0.0 { plastic } else { S::c(0.0) };
         plastic + c * g * omega * omega

@@ -59,8 +59,9 @@ fn the_update_is_the_exact_solution_of_the_ode() {
         let tau = d.range(-1.2, 1.2) * t;
         let delta = d.range(-4.0, 4.0) * l.angle;
         let exact = l.deflect(tau, delta, t);
-        // RK4 loses order across the kink at the elastic limit: many small steps.
-        let reference = rk4(&l, tau, delta, t, 20_000);
+        // RK4 loses order across the kink at the elastic limit: many small steps. A state
+        // beyond the bound is first projected onto it (the update's return mapping).
+        let reference = rk4(&l, tau.clamp(-t, t), delta, t, 20_000);
         assert!((exact - reference).abs() <= 1e-7 * t, "beta {beta} tau {tau} delta {delta} T {t}: {exact} vs {reference}");
     }
 }
@@ -90,13 +91,20 @@ fn the_update_is_bounded_for_any_increment() {
             assert!(next.is_finite() && next.abs() <= t, "tau {tau} delta {delta}: {next}");
         }
     }
-    // Beyond the bound (the load dropped): the state moves towards T, never past it.
+    // Beyond the bound (the load dropped): projected onto it, then the increment: never
+    // beyond it, and a reversal unloads from the bound, not from the excess.
     for &delta in &[1e-6, 1e-3, 1.0, 1e300] {
-        let next = l.deflect(1.5 * t, delta, t);
-        assert!(next >= t && next <= 1.5 * t, "{next}");
+        assert_eq!(l.deflect(1.5 * t, delta, t), t);
         let back = l.deflect(1.5 * t, -delta, t);
-        assert!(back < 1.5 * t && back >= -t, "{back}");
+        assert!(back < t && back >= -t, "{back}");
+        assert!((back - l.deflect(t, -delta, t)).abs() <= 1e-12 * t);
     }
+    // So friction never pushes along a reversal for longer than the elastic unloading from
+    // the bound (2 phi_s): after a load drop from 60 kN to 6 kN, unloading from the projected
+    // state crosses zero within phi_s.
+    let (high, low) = (201.6, 20.16);
+    let crossed = l.deflect(-high, l.angle * 1.000_001, low);
+    assert!(crossed >= 0.0, "{crossed}");
     // A huge slide ends exactly at the bound, in both directions.
     assert_eq!(l.deflect(0.0, 1.0, t), t);
     assert_eq!(l.deflect(0.0, -1.0, t), -t);
@@ -344,4 +352,30 @@ fn the_angle_partial_is_the_stiffness_against_the_motion_being_made() {
     let j = above.torque_partials(1e-4, -0.4, bound);
     assert_eq!(j.v, above.torque_at(1e-4, -0.4, t));
     assert!((j.d[0] + k).abs() < 1e-9 * k, "{}", j.d[0]);
+}
+
+#[test]
+fn at_rest_the_velocity_partials_are_the_elastic_ones() {
+    let l = law();
+    let t = 67.2;
+    let k = t / l.angle;
+    let bound = Jet::with(t, [0.0, 0.0, 0.0]);
+    for &tau in &[0.0, 10.0, -30.0] {
+        let (torque, rate) = state_partials(&l, tau, 0.0, bound);
+        assert_eq!(torque.v, -tau);
+        assert_eq!(rate.v, 0.0);
+        assert!((torque.d[1] + l.damping_time * k).abs() < 1e-9 * k, "{}", torque.d[1]);
+        assert!((rate.d[1] - k).abs() < 1e-9 * k, "{}", rate.d[1]);
+    }
+}
+
+#[test]
+fn model_exchange_relaxes_an_excess_state_in_either_direction() {
+    let l = law();
+    let t = 20.16;
+    // Beyond the bound behind the motion: the state rises faster than elastic unloading.
+    assert!(l.rate(-200.0, 0.05, t) > 0.05 * t / l.angle * 10.0);
+    // The torque stays within the bound plus the damping.
+    let torque = l.torque(-200.0, 0.05, t);
+    assert!(torque.abs() <= t + l.damping_time * t / l.angle * 0.05 * (1.0 + 1e-12), "{torque}");
 }
