@@ -446,7 +446,25 @@ impl Joint {
         }
         let lt = self.load_terms(load)?;
         let (op, _) = self.evaluate_at(&lt, omega, guess)?;
+        self.check_film(op.film_thickness, op.fluid_load_fraction, load, omega)?;
         Ok(op)
+    }
+
+    /// The model's equations at (`load`, `omega`) as [`Joint::evaluate`] solves them, without
+    /// the geometric bound on the film ([`ModelError::FilmBeyondClearance`]): the answer the
+    /// equations give where the film of eq. 12 is thicker than the clearance allows. For
+    /// tests of the solver over the whole range of its equations; a model answer is
+    /// [`Joint::evaluate`]'s.
+    pub fn evaluate_unbounded(&self, load: f64, omega: f64) -> Result<OperatingPoint, ModelError> {
+        let load = load.abs();
+        if !(load.is_finite() && load > 0.0) {
+            return Err(ModelError::Load(load));
+        }
+        if !omega.is_finite() {
+            return Err(ModelError::Speed(omega));
+        }
+        let lt = self.load_terms(load)?;
+        Ok(self.evaluate_at(&lt, omega, None)?.0)
     }
 
     /// Where a moving solve starts: the start table's value at (ln P_T, ln u), or the caller's
@@ -568,7 +586,7 @@ impl Joint {
                 return Err(ModelError::NotFinite { quantity, value, load: lt.load, omega });
             }
         }
-        self.check_film(ls.film_thickness, lt.load, omega)?;
+        self.check_film(ls.film_thickness, ls.fluid_fraction, lt.load, omega)?;
         Ok(Friction {
             friction_coefficient: mu,
             torque,
@@ -613,7 +631,6 @@ impl Joint {
         let h_min = op.film_thickness * ln_r.exp();
         let op = OperatingPoint { min_film_thickness: h_min, min_lambda_ratio: h_min / self.roughness, ..op };
         check_finite(&op)?;
-        self.check_film(op.film_thickness, load, omega)?;
         Ok((op, ls))
     }
 
@@ -633,10 +650,13 @@ impl Joint {
         self.params.friction.boundary_friction_coefficient + limiting_shear_stress(&self.lub, p_m) / p_m
     }
 
-    /// [`ModelError::FilmBeyondClearance`] when `film` (m) exceeds [`Joint::max_film_thickness`].
-    pub fn check_film(&self, film: f64, load: f64, omega: f64) -> Result<(), ModelError> {
+    /// [`ModelError::FilmBeyondClearance`] when `film` (m) exceeds [`Joint::max_film_thickness`]
+    /// where the fluid sets it: its share `fluid_fraction` (1/γ1) at least [`REGIME_SHARE`].
+    /// In the boundary regime and at rest the separation is the asperities' (eq. 19, a few
+    /// summit heights), bounded by the surfaces, not by eq. 12.
+    pub fn check_film(&self, film: f64, fluid_fraction: f64, load: f64, omega: f64) -> Result<(), ModelError> {
         let limit = self.max_film_thickness();
-        if film > limit {
+        if film > limit && fluid_fraction >= REGIME_SHARE {
             return Err(ModelError::FilmBeyondClearance { film, limit, load, omega });
         }
         Ok(())

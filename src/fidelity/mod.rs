@@ -264,7 +264,7 @@ impl Evaluator {
         };
         match hit {
             Some(e) => {
-                self.solver.joint().check_film(e.film_thickness, load, omega)?;
+                self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega)?;
                 Ok(e)
             }
             None => {
@@ -292,7 +292,7 @@ impl Evaluator {
             Backend::Full => None,
         }?;
         // A film beyond the clearance is the full solve's error to give.
-        self.solver.joint().check_film(e.film_thickness, load, omega).ok().map(|()| e)
+        self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega).ok().map(|()| e)
     }
 
     /// As [`Evaluator::evaluate`], completed into every output of the model
@@ -314,7 +314,7 @@ impl Evaluator {
         };
         match hit {
             Some(e) => {
-                self.solver.joint().check_film(e.film_thickness, load, omega)?;
+                self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega)?;
                 Ok((self.operating_point(&e), e.source, false))
             }
             None => {
