@@ -321,7 +321,8 @@ fn extreme_valid_inputs_give_the_library_values_never_nan() {
     assert!(v[..9].iter().all(|&x| x == 0.0), "{v:?}");
     // Beyond the asperity model's capacity (5.05e8 N for these parameters) a load is refused.
     assert!(i.set_real(&[3], &[1e9]).is_err());
-    for (load, w) in [(5e8, 1.0), (20e3, 1e6), (5e8, 1e6), (5e8, -1e6), (1e-30, 1e6), (60e3, 1e-300), (1e-300, 0.0)] {
+    // (20e3, 1e6), (5e8, ±1e6) and (1e-30, 1e6) pass the film bound: tests/fmi2_values.rs.
+    for (load, w) in [(5e8, 1.0), (60e3, 1e-300), (1e-300, 0.0)] {
         i.set_real(&[2, 3], &[w, load]).unwrap();
         i.do_step(t, 0.1, true).unwrap();
         t += 0.1;
