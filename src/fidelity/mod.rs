@@ -91,7 +91,7 @@ impl FromStr for Fidelity {
     /// `full | table | boundary | auto`, ASCII case-insensitive, surrounding blanks ignored.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         let t = s.trim();
-        Fidelity::ALL.into_iter().find(|f| f.as_str().eq_ignore_ascii_case(t)).ok_or_else(|| FidelityError::UnknownFidelity(s.to_string()))
+        Fidelity::ALL.into_iter().find(|f| f.as_str().eq_ignore_ascii_case(t)).ok_or_else(|| FidelityError::UnknownFidelity(crate::fmt::excerpt(s)))
     }
 }
 
