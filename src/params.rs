@@ -367,8 +367,8 @@ pub enum ParamError {
     Parse(String),
 }
 
-/// A TOML error as a message of bounded length: where it is (line and column) and what is
-/// wrong, with at most [`crate::fmt::EXCERPT_CHARS`] characters of it quoted (toml's own text
+/// A TOML error as a message of bounded length: where it is (line and column), what is
+/// wrong and the line, with at most [`crate::fmt::EXCERPT_CHARS`] characters of it quoted (toml's own text
 /// echoes the offending line, which may be megabytes long).
 pub fn parse_message(text: &str, e: &toml::de::Error) -> String {
     let what = crate::fmt::excerpt(e.message().trim());
@@ -378,7 +378,10 @@ pub fn parse_message(text: &str, e: &toml::de::Error) -> String {
             let before = text.get(..start).unwrap_or("");
             let line = before.matches('\n').count() + 1;
             let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-            format!("line {line}, column {column}: {what}")
+            // The line itself (it names the key of a wrongly typed value), cut to an excerpt.
+            let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+            let text_line = text[line_start..].split('\n').next().unwrap_or("").trim_end_matches('\r');
+            format!("line {line}, column {column}: {what} (in `{}`)", crate::fmt::excerpt(text_line.trim()))
         }
         None => what,
     }
