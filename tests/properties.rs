@@ -20,7 +20,7 @@ fn params() -> impl Strategy<Value = Params> {
         // The lubricant at its reference temperature (the Table 3 values as drawn; the temperature
         // extension has its own tests in tests/extensions.rs: scaled 10^±0.5, T and T_ref could
         // leave the admissible range or overflow η0).
-        p.lubricant.temperature = p.lubricant.reference_temperature.clamp(200.0, 400.0);
+        p.lubricant.temperature = p.lubricant.reference_temperature.clamp(pinjoint::params::MIN_TEMPERATURE, 400.0);
         p.lubricant.reference_temperature = p.lubricant.temperature;
         p
     })
