@@ -205,14 +205,15 @@ impl Range {
             Range::Closed(lo, hi) => v >= lo && v <= hi,
         }
     }
-    /// Human-readable form, e.g. "> 0" or "in [0, 0.5)".
+    /// Human-readable form, e.g. "> 0" or "in [0, 0.5)" (bounds in the short form, `1e12`).
     pub fn describe(&self) -> String {
+        use crate::fmt::Num;
         match *self {
             Range::Positive => "> 0".into(),
             Range::NonNegative => ">= 0".into(),
-            Range::HalfOpen(lo, hi) => format!("in [{lo}, {hi})"),
-            Range::OpenClosed(lo, hi) => format!("in ({lo}, {hi}]"),
-            Range::Closed(lo, hi) => format!("in [{lo}, {hi}]"),
+            Range::HalfOpen(lo, hi) => format!("in [{}, {})", Num(lo), Num(hi)),
+            Range::OpenClosed(lo, hi) => format!("in ({}, {}]", Num(lo), Num(hi)),
+            Range::Closed(lo, hi) => format!("in [{}, {}]", Num(lo), Num(hi)),
         }
     }
     /// (min, max) for an FMU variable's attributes, where the bound is inclusive-or-open.

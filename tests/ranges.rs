@@ -265,3 +265,25 @@ fn both_ends_of_the_temperature_range_are_accepted() {
         free(c);
     }
 }
+
+/// docs/conventions.md, "The load is a magnitude": the FMU's `load` description states it,
+/// and the outputs at −P are those at +P; at 0 the joint is unloaded.
+#[test]
+fn the_load_is_a_magnitude_as_the_fmu_description_says() {
+    for info in [&pinjoint_fmu::pin_joint::INFO, &pinjoint_fmu::pin_joint_rig::INFO] {
+        let v = &info.variables[info.index_by_name("load").unwrap()];
+        let d = &v.description;
+        assert!(d.contains("its magnitude |P") && d.contains("is the load") && d.contains("-P"), "{}: {d}", info.model_name);
+    }
+    let h = Host::new();
+    let run = |load: f64| {
+        let c = h.ready(&[]);
+        assert_eq!(set(c, "load", load), OK);
+        assert_eq!(set(c, "angular_velocity", 0.3), OK);
+        let out = h.step(c, 0.0, 0.1);
+        free(c);
+        out
+    };
+    assert_eq!(run(-30e3), run(30e3));
+    assert!(run(0.0).iter().all(|&x| x == 0.0));
+}

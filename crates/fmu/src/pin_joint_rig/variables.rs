@@ -36,13 +36,14 @@ pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
 
 /// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
 /// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
-/// 2-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s;
-/// from 2 kN so that the table's margin below the envelope keeps the film inside the
-/// diametral clearance: from 1 kN the table reached 398 N x 16 rad/s, an 80 um film in a
-/// 50 um clearance, `pinjoint::ModelError::FilmBeyondClearance`).
+/// 5-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s;
+/// from 5 kN, PinJoint's lower end, so that the table's margin beyond the envelope keeps the
+/// film inside the diametral clearance: from 1 kN the table reached 398 N x 16 rad/s, an
+/// 80 um film in a 50 um clearance, and from 2 kN 752 N x 26 rad/s, 68 um;
+/// `pinjoint::ModelError::FilmBeyondClearance`).
 /// Speeds below speed_min (around every reversal) and points outside it are answered by
 /// the full solve (logged once).
-pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([2e3, 100e3, 1e-3, 10.0]);
+pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([5e3, 100e3, 1e-3, 10.0]);
 
 /// The outputs of the last sample: the rig's [`Sample`] and the minimum film from the
 /// joint. All 0 before the first sample.
