@@ -299,23 +299,25 @@ pub static PARAMS: [ParamSpec; 26] = [
     spec!(lubricant.limiting_shear_stress_slope, "beta_0", "1", Range::NonNegative, "Table 3", "Slope of the limiting shear stress against pressure (eq. 4)"),
     spec!(friction.boundary_friction_coefficient, "mu_c", "1", Range::NonNegative, "Section 3.1", "Friction coefficient of the asperity contacts (boundary friction)"),
     // Appended after the paper's parameters (existing order, FMU value references and state layouts kept).
-    spec!(lubricant.temperature, "T", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Lubricant temperature; eta_0 and alpha follow Roelands' temperature relation from their values at the reference temperature (exactly the Table 3 values at T = T_ref). From -40 C: Roelands' relation has its pole at -135 C (eta_0 infinite), the Table 3 oil would be a glass (1e12 Pa.s) at -102 C, and below about -42 C its film at 20 kN and the rig's 4.4 rad/s passes the diametral clearance; for any parameters eta_0(T) above 1e12 Pa.s is rejected"),
+    spec!(lubricant.temperature, "T", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Lubricant temperature; eta_0 and alpha follow Roelands' temperature relation from their values at the reference temperature (exactly the Table 3 values at T = T_ref). From -35 C: Roelands' relation has its pole at -135 C (eta_0 infinite), the Table 3 oil would be a glass (1e12 Pa.s) at -102 C, and at -40 C its film at 20 kN passes the diametral clearance from 5.5 rad/s (the default rig's start-up overshoot), at -35 C from 8 rad/s; for any parameters eta_0(T) above 1e12 Pa.s is rejected"),
     spec!(lubricant.reference_temperature, "T_ref", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Temperature at which eta_0 and alpha hold (Table 3: room temperature)"),
     spec!(lubricant.roelands_temperature_index, "S_0", "1", Range::NonNegative, "Extension: Roelands (1966); default fitted to an ISO VG 100 mineral oil", "Roelands temperature-viscosity index S_0: ln(eta_0/eta_inf) scales as (1 + (T - 273.15 K)/135 K)^-S_0"),
     spec!(starvation.inlet_layer_inverse, "1/h_oil", "1/m", Range::NonNegative, "Extension: Chevalier et al. (1998); default 0 = fully flooded (the paper's model)", "Reciprocal of the lubricant layer thickness available at the inlet (starved-inlet film correction); 0 = fully flooded"),
     spec!(starvation.exponent, "gamma_s", "1", Range::OpenClosed(0.0, 100.0), "Extension: Chevalier et al. (1998)", "Exponent of the starvation relation h = (h_ff^-g + h_oil^-g)^(-1/g)"),
 ];
 
-/// Lowest admissible temperature (K), −40 °C. Roelands' temperature term (1 + θ/135 °C)
+/// Lowest admissible temperature (K), −35 °C. Roelands' temperature term (1 + θ/135 °C)
 /// has its pole at θ = −135 °C, where η0 → ∞ (at 145 K the film of the Table 3 oil was
 /// 1e108 m); the relation describes a liquid, and the Table 3 oil (S0 = 1.262) would reach
 /// [`GLASS_VISCOSITY`] at −102 °C (171.1 K). Long before that the film leaves the joint: at
 /// the paper's 20 kN and the rig's peak speed of 4.4 rad/s (1 Hz, ±40°) the Table 3 oil's
 /// film passes the diametral clearance 2(R_b − R) = 50 µm below about −42 °C (175 µm at
 /// −50 °C, 42 µm at −40 °C; `ModelError::FilmBeyondClearance`), and at −70 °C even the
-/// zero-speed band's edge (0.01 rad/s) does. For other lubricant parameters
+/// zero-speed band's edge (0.01 rad/s) does. The default rig's start-up overshoots to
+/// 5.5 rad/s, where −40 °C gives 52 µm: at −35 °C the film stays inside up to 8 rad/s
+/// (42 µm), twice the stroke's peak. For other lubricant parameters
 /// [`Params::validate`] also rejects a temperature where η0(T) exceeds [`GLASS_VISCOSITY`].
-pub const MIN_TEMPERATURE: f64 = 233.15;
+pub const MIN_TEMPERATURE: f64 = 238.15;
 
 /// The largest lubricant viscosity the model takes (Pa·s): 1e12 Pa·s, the conventional
 /// viscosity of a liquid at its glass transition. Above it the lubricant is a glass, Roelands'

@@ -60,7 +60,7 @@ fn colder_means_more_viscous_and_lower_mu_at_mixed_speeds_hotter_the_opposite() 
 #[test]
 fn cold_soak_and_hot_apron_viscosities() {
     // −55 °C and +70 °C with the defaults: the numbers the README and FMU pages quote. (−55 °C
-    // is below the model's declared temperature range, −40 °C, where the film would pass the
+    // is below the model's declared temperature range, −35 °C, where the film would pass the
     // clearance at rig speeds: the viscosity relation itself is evaluated there.)
     let cold = |t: f64| pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: t, ..Params::default().lubricant }).viscosity;
     let (c, h) = (cold(218.15), at(343.15).lubricant().viscosity);

@@ -71,7 +71,7 @@ fn speed() -> impl Strategy<Value = f64> {
 }
 
 fn temperature() -> impl Strategy<Value = f64> {
-    prop_oneof![4 => MIN_TEMPERATURE..=MAX_TEMPERATURE, 1 => prop::sample::select(vec![MIN_TEMPERATURE, MAX_TEMPERATURE, 233.2, 293.15])]
+    prop_oneof![4 => MIN_TEMPERATURE..=MAX_TEMPERATURE, 1 => prop::sample::select(vec![MIN_TEMPERATURE, MAX_TEMPERATURE, 238.2, 293.15])]
 }
 
 const LEVELS: [Fidelity; 4] = [Fidelity::Full, Fidelity::Table, Fidelity::Boundary, Fidelity::Auto];
@@ -221,32 +221,33 @@ fn the_reported_cold_point_is_refused_or_bounded() {
     let mut p = Params::default();
     p.lubricant.temperature = 145.0;
     let e = Joint::new(&p).unwrap_err().to_string();
-    assert!(e.contains("lubricant.temperature = 145 K") && e.contains("[233.15, 673.15]"), "{e}");
+    assert!(e.contains("lubricant.temperature = 145 K") && e.contains("[238.15, 673.15]"), "{e}");
     p.lubricant.temperature = MIN_TEMPERATURE;
     let j = Joint::new(&p).unwrap();
     assert!(j.lubricant().viscosity <= GLASS_VISCOSITY);
-    // At the lowest declared temperature the paper's 20 kN at the rig's peak speed (4.4 rad/s)
-    // keeps its film inside the diametral clearance; 10 K colder it would not.
-    let op = j.evaluate(20e3, 4.4).unwrap();
+    // At the lowest declared temperature the paper's 20 kN keeps its film inside the diametral
+    // clearance up to 8 rad/s (the stroke peaks at 4.4 rad/s, the default rig's start-up
+    // overshoots to 5.5 rad/s); 5 K colder 5.5 rad/s already passes it.
+    let op = j.evaluate(20e3, 8.0).unwrap();
     assert!(op.film_thickness <= j.max_film_thickness() && op.film_thickness > 0.8 * j.max_film_thickness(), "{}", op.film_thickness);
-    // (10 K colder is outside the range: the same oil given as its values there, at T = T_ref.)
-    let colder = pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: MIN_TEMPERATURE - 10.0, ..p.lubricant });
+    // (5 K colder is outside the range: the same oil given as its values there, at T = T_ref.)
+    let colder = pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: MIN_TEMPERATURE - 5.0, ..p.lubricant });
     let mut q = Params::default();
     q.lubricant.viscosity = colder.viscosity;
     q.lubricant.pressure_viscosity_coefficient = colder.pressure_viscosity_coefficient;
-    let e = Joint::new(&q).unwrap().evaluate(20e3, 4.4).unwrap_err();
+    let e = Joint::new(&q).unwrap().evaluate(20e3, 5.5).unwrap_err();
     assert!(matches!(e, ModelError::FilmBeyondClearance { .. }), "{e}");
     // A far more temperature-sensitive oil (S0 = 10) turns to glass inside the declared range.
     p.lubricant.temperature = MIN_TEMPERATURE;
     p.lubricant.roelands_temperature_index = 10.0;
     let e = Joint::new(&p).unwrap_err().to_string();
-    assert!(e.contains("lubricant.temperature = 233.15 K") && e.contains("eta_0(T) <= 1e12 Pa.s"), "{e}");
+    assert!(e.contains("lubricant.temperature = 238.15 K") && e.contains("eta_0(T) <= 1e12 Pa.s"), "{e}");
     // Through the FMU: 145 K refused as the input is set, the instance unchanged.
     let h = Host::new();
     let c = h.ready(&[]);
     let before = all_outputs(c);
     assert_ne!(set(c, "temperature", 145.0), OK);
-    assert!(h.last().contains("temperature = 145 K") && h.last().contains("[233.15, 673.15] K"), "{}", h.last());
+    assert!(h.last().contains("temperature = 145 K") && h.last().contains("[238.15, 673.15] K"), "{}", h.last());
     assert_eq!(get(c, "temperature"), 293.15);
     assert_eq!(all_outputs(c), before);
     free(c);

@@ -13,7 +13,7 @@ import pytest
 import pinjoint
 
 MESSAGE_CHARS = 1000  # pinjoint_numfmt::MESSAGE_CHARS
-T_MIN, T_MAX = 233.15, 673.15  # the declared temperature range (K)
+T_MIN, T_MAX = 238.15, 673.15  # the declared temperature range (K)
 
 
 def invariants(p: pinjoint.Params, out: dict, load: float, slack: float) -> None:
@@ -58,7 +58,7 @@ def corner_sets():
 
 def test_param_table_states_the_declared_ranges():
     rows = {r["name"]: r for r in pinjoint.param_table()}
-    assert rows["lubricant.temperature"]["range"] == "in [233.15, 673.15]"
+    assert rows["lubricant.temperature"]["range"] == "in [238.15, 673.15]"
     assert rows["lubricant.viscosity"]["range"] == "in (0, 1e12]"
     assert all(ends(r["range"]) for r in rows.values())
 

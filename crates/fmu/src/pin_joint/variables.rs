@@ -220,7 +220,7 @@ mod tests {
         let msg = |n: &str, x: f64| TABLE.check(at(n), x).unwrap_err().to_string();
         assert_eq!(msg("angle", f64::NAN), "input angle = NaN rad is not a finite number");
         assert_eq!(msg("load", f64::INFINITY), "input load = inf N is invalid: it must be a finite number (a negative value is taken as its magnitude)");
-        assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in [233.15, 673.15] K");
+        assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in [238.15, 673.15] K");
         assert_eq!(msg("fidelity", 0.5), "parameter fidelity = 0.5 is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)");
         assert!(TABLE.check(at("load"), -1e308).is_ok());
     }
