@@ -14,6 +14,7 @@ mod common;
 use common::*;
 use fmi_layer::fmi2::api::common::*;
 use fmi_layer::fmi2::api::cosim::*;
+use fmi_layer::fmi2::types::FMI2_CO_SIMULATION;
 use pinjoint::fidelity::{Envelope, Evaluator, Fidelity, FidelityError};
 use pinjoint::fmt::MESSAGE_CHARS;
 use pinjoint::params::{Range, GLASS_VISCOSITY, MAX_TEMPERATURE, MIN_TEMPERATURE, PARAMS};
@@ -287,4 +288,23 @@ fn the_load_is_a_magnitude_as_the_fmu_description_says() {
     };
     assert_eq!(run(-30e3), run(30e3));
     assert!(run(0.0).iter().all(|&x| x == 0.0));
+}
+
+/// Issue 23 item 3 through the FMU: a megabyte GUID, resource location or instance name is
+/// quoted in at most a short excerpt; every logged message stays under MESSAGE_CHARS.
+#[test]
+fn huge_fmu_strings_give_short_log_messages() {
+    let big = "g".repeat(1_000_000);
+    let h = Host::new();
+    let c = h.instantiate_with("pj", FMI2_CO_SIMULATION, &big, Some("file:///tmp"), true);
+    assert!(c.is_null());
+    let c = h.instantiate_with(&big, FMI2_CO_SIMULATION, &guid(), Some(&big), true);
+    assert!(!c.is_null());
+    assert_ne!(set(c, "load", f64::NAN), OK);
+    free(c);
+    let messages = h.messages();
+    assert!(messages.len() >= 3, "{}", messages.len());
+    for m in messages {
+        assert!(m.text.chars().count() <= MESSAGE_CHARS + 10, "{} characters: {}", m.text.len(), &m.text[..200]);
+    }
 }
