@@ -9,7 +9,8 @@ use pyo3::types::{PyBool, PyFloat, PyInt, PyMapping, PyString};
 /// One leaf value: a real number (int or float, not bool) or, for `rig.formulation` and
 /// `rig.method`, a string.
 fn leaf(name: &str, v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
-    let name = &excerpt(name);
+    let name = excerpt(name);
+    let name = name.as_str();
     if v.is_instance_of::<PyBool>() {
         return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a bool", excerpt(&v.repr()?.to_string()))));
     }

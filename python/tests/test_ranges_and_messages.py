@@ -59,7 +59,7 @@ def corner_sets():
 def test_param_table_states_the_declared_ranges():
     rows = {r["name"]: r for r in pinjoint.param_table()}
     assert rows["lubricant.temperature"]["range"] == "in [238.15, 673.15]"
-    assert rows["lubricant.viscosity"]["range"] == "in (0, 1e12]"
+    assert rows["lubricant.viscosity"]["range"] == "in (0, 1000000000000]"
     assert all(ends(r["range"]) for r in rows.values())
 
 
@@ -92,7 +92,7 @@ def test_the_temperature_range_is_closed_and_answers(t):
 
 
 def test_the_reported_cold_point_is_refused_naming_the_temperature():
-    with pytest.raises(ValueError, match=r"lubricant\.temperature = 145(\.0)? K.*\[233\.15, 673\.15\]"):
+    with pytest.raises(ValueError, match=r"lubricant\.temperature = 145(\.0)? K.*\[238\.15, 673\.15\]"):
         pinjoint.Params({"lubricant.temperature": 145.0})
 
 
