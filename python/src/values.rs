@@ -43,12 +43,10 @@ fn leaf(name: &str, v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
 /// A value as a message may show it: its repr, or for an int too large for a float its
 /// number of digits (its repr may be millions of characters), at most an [`excerpt`].
 fn short_repr(v: &Bound<'_, PyAny>) -> String {
-    if let Ok(bits) = v.call_method0("bit_length").and_then(|b| b.extract::<u64>()) {
-        if bits > 64 {
-            // log10(2) = 0.30103: the int has about this many decimal digits.
-            let sign = if v.lt(0).unwrap_or(false) { "-" } else { "" };
-            return format!("{sign}(an int of about {} digits)", (bits as f64 * std::f64::consts::LOG10_2).ceil() as u64);
-        }
+    if let Ok(bits @ 65..) = v.call_method0("bit_length").and_then(|b| b.extract::<u64>()) {
+        // log10(2) = 0.30103: the int has about this many decimal digits.
+        let sign = if v.lt(0).unwrap_or(false) { "-" } else { "" };
+        return format!("{sign}(an int of about {} digits)", (bits as f64 * std::f64::consts::LOG10_2).ceil() as u64);
     }
     v.repr().map(|r| excerpt(&r.to_string())).unwrap_or_else(|_| "(a value without repr)".into())
 }
@@ -118,14 +116,12 @@ pub fn check_keys(table: &toml::Table, rig: bool) -> PyResult<()> {
                 sections.join(", ")
             )));
         }
-        if let toml::Value::Table(t) = inner {
-            if let Some(k) = t.keys().find(|k| !known.contains(k)) {
-                return Err(PyValueError::new_err(format!(
-                    "unknown parameter `{}`: [{section}] has {}",
-                    excerpt(&format!("{section}.{k}")),
-                    known.join(", ")
-                )));
-            }
+        if let Some(k) = inner.as_table().and_then(|t| t.keys().find(|k| !known.contains(k))) {
+            return Err(PyValueError::new_err(format!(
+                "unknown parameter `{}`: [{section}] has {}",
+                excerpt(&format!("{section}.{k}")),
+                known.join(", ")
+            )));
         }
     }
     Ok(())
