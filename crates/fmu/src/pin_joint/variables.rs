@@ -182,7 +182,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(Row::new(band, |s: &Values| s.band, |s, x| s.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [238.15, 673.15] K (-35 to 400 C; below, the film at 20 kN passes the diametral clearance at rig speeds: see lubricant.temperature). A change rebuilds the friction evaluator (cheap at fidelity full; a table is re-tabulated)",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
     rows
 }

@@ -241,7 +241,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.extend(crate::parameters::rows(300, None, |s: &Values| &s.settings.cfg.model, |s| &mut s.settings.cfg.model));
     rows.extend(fidelity::rows(400, None, DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.settings.fidelity, |s| &mut s.settings.fidelity));
     rows.push(crate::inputs::temperature(3,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in (138.15, 673.15] K. Held over each step; a change rebuilds the friction model and continues the integration from the current state (a table level is re-tabulated)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [238.15, 673.15] K (-35 to 400 C; below, the film at 20 kN passes the diametral clearance at rig speeds: see lubricant.temperature). Held over each step; a change rebuilds the friction model and continues the integration from the current state (a table level is re-tabulated)",
         |s: &Values| s.settings.temperature, |s, x| s.settings.temperature = x));
     rows
 }
