@@ -14,9 +14,9 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 OUT="${1:-$ROOT}"
-cargo build --release -q --bin pinjoint
-cargo build --release -q -p pinjoint --example icount
-cargo run --release -q -p fmu_build >/dev/null
+cargo build --locked --release -q --bin pinjoint
+cargo build --locked --release -q -p pinjoint --example icount
+cargo run --locked --release -q -p fmu_build >/dev/null
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 

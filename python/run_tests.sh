@@ -17,6 +17,6 @@ if ! cmp -s python/requirements.txt "$STAMP" 2>/dev/null; then
 fi
 # maturin is pinned in the venv, so the build needs no isolated environment.
 PATH="$VENV/bin:$PATH" "$VENV/bin/pip" install -q --no-build-isolation ./python
-cargo build --release -q --bin pinjoint
+cargo build --locked --release -q --bin pinjoint
 export PINJOINT_CLI="$ROOT/target/release/pinjoint"
 "$VENV/bin/python" -m pytest -q python/tests "$@"

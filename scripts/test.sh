@@ -23,12 +23,12 @@ fi
 # --- Rust: unit, integration, property and doc tests (every test binary runs, then the
 # first failure stops the script)
 step "cargo test"
-cargo test --workspace --release --no-fail-fast
+cargo test --locked --workspace --release --no-fail-fast
 
 # --- lints and API docs of every crate: no warnings (clippy's lints: [workspace.lints])
 step "clippy, rustdoc"
-cargo clippy --workspace --all-targets --release -- -D warnings
-RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
+cargo clippy --locked --workspace --all-targets --release -- -D warnings
+RUSTDOCFLAGS="-D warnings" cargo doc --locked --workspace --no-deps --quiet
 python3 tests/docs/check_docs.py --api-docs      # every crate's API front page is there
 python3 tests/module_graph.py                    # no import cycle inside a crate; roots list modules in dependency order
 

@@ -57,16 +57,17 @@ impl Regime {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ModelError {
     /// The load (N) is not a finite number > 0.
-    #[error("load = {0} N is invalid: the load must be a finite number > 0 N")]
+    #[error("load = {} N is invalid: the load must be a finite number > 0 N", crate::fmt::Num(*.0))]
     Load(f64),
     /// The angular velocity (rad/s) is NaN or infinite.
-    #[error("angular velocity = {0} rad/s is invalid: it must be a finite number")]
+    #[error("angular velocity = {} rad/s is invalid: it must be a finite number", crate::fmt::Num(*.0))]
     Speed(f64),
     /// The load exceeds what the asperity model (eq. 19) can carry at rest: the film
     /// thickness h_c would be ≤ 0.
     #[error(
-        "load = {load} N is beyond the asperity model's capacity of {capacity:.6e} N for these parameters: \
-         at rest eq. 19 would put the mean planes of the surfaces through each other (h_c <= 0)"
+        "load = {l} N is beyond the asperity model's capacity of {capacity:.6e} N for these parameters: \
+         at rest eq. 19 would put the mean planes of the surfaces through each other (h_c <= 0)",
+        l = crate::fmt::Num(*.load)
     )]
     BeyondCapacity {
         /// The load asked for (N).
@@ -74,10 +75,35 @@ pub enum ModelError {
         /// The largest load the asperity model carries for these parameters (N).
         capacity: f64,
     },
+    /// The central film would be thicker than the diametral clearance 2(R_b − R), the widest
+    /// gap the bush leaves around the pin: the line-contact film of eq. 12 has left the
+    /// geometry it was derived for (a lubricant too viscous for this speed and load: a low
+    /// temperature, a high speed or a light load).
+    #[error(
+        "the model gives film_thickness = {h} m at load = {l} N, angular velocity = {w} rad/s, more than the \
+         diametral clearance 2(R_b - R) = {c} m the bush leaves around the pin: the line-contact film (eq. 12) \
+         does not hold here (lubricant too viscous for this speed and load: temperature too low, speed too high or load too light)",
+        h = crate::fmt::Num(*.film),
+        c = crate::fmt::Num(*.limit),
+        l = crate::fmt::Num(*.load),
+        w = crate::fmt::Num(*.omega)
+    )]
+    FilmBeyondClearance {
+        /// The central film thickness h_c the model gives (m).
+        film: f64,
+        /// The diametral clearance 2(R_b − R) (m).
+        limit: f64,
+        /// Load at the point (N).
+        load: f64,
+        /// Angular velocity at the point (rad/s).
+        omega: f64,
+    },
     /// A model quantity overflowed or became NaN at this operating point.
     #[error(
-        "the model gives {quantity} = {value} at load = {load} N, angular velocity = {omega} rad/s: \
-         outside its numerical range for these parameters"
+        "the model gives {quantity} = {value} at load = {l} N, angular velocity = {w} rad/s: \
+         outside its numerical range for these parameters",
+        l = crate::fmt::Num(*.load),
+        w = crate::fmt::Num(*.omega)
     )]
     NotFinite {
         /// Name of the quantity that is not finite.
@@ -477,7 +503,25 @@ impl Joint {
         }
         let lt = self.load_terms(load)?;
         let (op, _) = self.evaluate_at(&lt, omega, guess)?;
+        self.check_film(op.film_thickness, op.fluid_load_fraction, load, omega)?;
         Ok(op)
+    }
+
+    /// The model's equations at (`load`, `omega`) as [`Joint::evaluate`] solves them, without
+    /// the geometric bound on the film ([`ModelError::FilmBeyondClearance`]): the answer the
+    /// equations give where the film of eq. 12 is thicker than the clearance allows. For
+    /// tests of the solver over the whole range of its equations; a model answer is
+    /// [`Joint::evaluate`]'s.
+    pub fn evaluate_unbounded(&self, load: f64, omega: f64) -> Result<OperatingPoint, ModelError> {
+        let load = load.abs();
+        if !(load.is_finite() && load > 0.0) {
+            return Err(ModelError::Load(load));
+        }
+        if !omega.is_finite() {
+            return Err(ModelError::Speed(omega));
+        }
+        let lt = self.load_terms(load)?;
+        Ok(self.evaluate_at(&lt, omega, None)?.0)
     }
 
     /// Where a moving solve starts: the start table's value at (ln P_T, ln u), or the caller's
@@ -599,6 +643,7 @@ impl Joint {
                 return Err(ModelError::NotFinite { quantity, value, load: lt.load, omega });
             }
         }
+        self.check_film(ls.film_thickness, ls.fluid_fraction, lt.load, omega)?;
         Ok(Friction {
             friction_coefficient: mu,
             torque,
@@ -645,6 +690,34 @@ impl Joint {
         let op = OperatingPoint { min_film_thickness: h_min, min_lambda_ratio: h_min / self.roughness, ..op };
         check_finite(&op)?;
         Ok((op, ls))
+    }
+
+    /// The diametral clearance 2(R_b − R) (m): the widest gap the bush leaves around the pin,
+    /// and so the largest central film the model answers with ([`ModelError::FilmBeyondClearance`]).
+    pub fn max_film_thickness(&self) -> f64 {
+        2.0 * self.params.radial_clearance()
+    }
+
+    /// The largest friction coefficient the model can give at `load` (N): the asperities
+    /// carry at most the whole load at μ_c (eq. 8), and the fluid shear stress is at most
+    /// Bair–Winer's limiting stress τ_L(p_m) = τ_L0 + β0 p_m (eq. 3: Q_H/P_T =
+    /// τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m ≤ τ_L/p_m), so μ = (Q_H + Q_C)/P_T ≤ μ_c + τ_L0/p_m + β0,
+    /// p_m the Hertz mean pressure under the load (eq. 6). Light loads allow a large μ (p_m → 0).
+    pub fn max_friction_coefficient(&self, load: f64) -> f64 {
+        let p_m = self.hertz_unit.mean_pressure * load.abs().sqrt();
+        self.params.friction.boundary_friction_coefficient + limiting_shear_stress(&self.lub, p_m) / p_m
+    }
+
+    /// [`ModelError::FilmBeyondClearance`] when `film` (m) exceeds [`Joint::max_film_thickness`]
+    /// where the fluid sets it: its share `fluid_fraction` (1/γ1) at least [`REGIME_SHARE`].
+    /// In the boundary regime and at rest the separation is the asperities' (eq. 19, a few
+    /// summit heights), bounded by the surfaces, not by eq. 12.
+    pub fn check_film(&self, film: f64, fluid_fraction: f64, load: f64, omega: f64) -> Result<(), ModelError> {
+        let limit = self.max_film_thickness();
+        if film > limit && fluid_fraction >= REGIME_SHARE {
+            return Err(ModelError::FilmBeyondClearance { film, limit, load, omega });
+        }
+        Ok(())
     }
 }
 

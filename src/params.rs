@@ -190,6 +190,8 @@ pub enum Range {
     HalfOpen(f64, f64),
     /// lo < value ≤ hi
     OpenClosed(f64, f64),
+    /// lo ≤ value ≤ hi
+    Closed(f64, f64),
 }
 
 impl Range {
@@ -200,22 +202,25 @@ impl Range {
             Range::NonNegative => v >= 0.0,
             Range::HalfOpen(lo, hi) => v >= lo && v < hi,
             Range::OpenClosed(lo, hi) => v > lo && v <= hi,
+            Range::Closed(lo, hi) => v >= lo && v <= hi,
         }
     }
-    /// Human-readable form, e.g. "> 0" or "in [0, 0.5)".
+    /// Human-readable form, e.g. "> 0" or "in [0, 0.5)" (bounds in the short form, `1e12`).
     pub fn describe(&self) -> String {
+        use crate::fmt::Num;
         match *self {
             Range::Positive => "> 0".into(),
             Range::NonNegative => ">= 0".into(),
-            Range::HalfOpen(lo, hi) => format!("in [{lo}, {hi})"),
-            Range::OpenClosed(lo, hi) => format!("in ({lo}, {hi}]"),
+            Range::HalfOpen(lo, hi) => format!("in [{}, {})", Num(lo), Num(hi)),
+            Range::OpenClosed(lo, hi) => format!("in ({}, {}]", Num(lo), Num(hi)),
+            Range::Closed(lo, hi) => format!("in [{}, {}]", Num(lo), Num(hi)),
         }
     }
     /// (min, max) for an FMU variable's attributes, where the bound is inclusive-or-open.
     pub fn bounds(&self) -> (Option<f64>, Option<f64>) {
         match *self {
             Range::Positive | Range::NonNegative => (Some(0.0), None),
-            Range::HalfOpen(lo, hi) | Range::OpenClosed(lo, hi) => (Some(lo), Some(hi)),
+            Range::HalfOpen(lo, hi) | Range::OpenClosed(lo, hi) | Range::Closed(lo, hi) => (Some(lo), Some(hi)),
         }
     }
 }
@@ -285,7 +290,7 @@ pub static PARAMS: [ParamSpec; 26] = [
     spec!(surface.pin_rms_roughness, "sigma", "m", Range::NonNegative, "Table 2", "RMS roughness of the pin (used in the lambda ratio, eq. 21)"),
     spec!(surface.bush_rms_roughness, "sigma_b", "m", Range::NonNegative, "Table 2", "RMS roughness of the bush (used in the lambda ratio, eq. 21)"),
     spec!(surface.summit_mean_plane_offset, "d_d", "m", Range::NonNegative, "Table 2", "Distance between the mean plane of the summits and that of the surface heights"),
-    spec!(lubricant.viscosity, "eta_0", "Pa.s", Range::Positive, "Table 3", "Lubricant viscosity at inlet temperature"),
+    spec!(lubricant.viscosity, "eta_0", "Pa.s", Range::OpenClosed(0.0, GLASS_VISCOSITY), "Table 3", "Lubricant viscosity at inlet temperature (at most 1e12 Pa.s, the viscosity of a glass: Roelands' relations describe a liquid)"),
     spec!(lubricant.roelands_viscosity_limit, "eta_inf", "Pa.s", Range::Positive, "Table 3", "Roelands constant eta_inf (eq. 5)"),
     spec!(lubricant.roelands_pressure_constant, "c_p", "Pa", Range::Positive, "Table 3", "Roelands pressure constant c_p (eq. 5)"),
     spec!(lubricant.roelands_index, "Z", "1", Range::NonNegative, "Table 3", "Roelands pressure-viscosity index (eq. 5)"),
@@ -294,16 +299,31 @@ pub static PARAMS: [ParamSpec; 26] = [
     spec!(lubricant.limiting_shear_stress_slope, "beta_0", "1", Range::NonNegative, "Table 3", "Slope of the limiting shear stress against pressure (eq. 4)"),
     spec!(friction.boundary_friction_coefficient, "mu_c", "1", Range::NonNegative, "Section 3.1", "Friction coefficient of the asperity contacts (boundary friction)"),
     // Appended after the paper's parameters (existing order, FMU value references and state layouts kept).
-    spec!(lubricant.temperature, "T", "K", Range::OpenClosed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Lubricant temperature; eta_0 and alpha follow Roelands' temperature relation from their values at the reference temperature (exactly the Table 3 values at T = T_ref)"),
-    spec!(lubricant.reference_temperature, "T_ref", "K", Range::OpenClosed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Temperature at which eta_0 and alpha hold (Table 3: room temperature)"),
+    spec!(lubricant.temperature, "T", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Lubricant temperature; eta_0 and alpha follow Roelands' temperature relation from their values at the reference temperature (exactly the Table 3 values at T = T_ref). From -35 C: Roelands' relation has its pole at -135 C (eta_0 infinite), the Table 3 oil would be a glass (1e12 Pa.s) at -102 C, and at -40 C its film at 20 kN passes the diametral clearance from 5.5 rad/s (the default rig's start-up overshoot), at -35 C from 8 rad/s; for any parameters eta_0(T) above 1e12 Pa.s is rejected"),
+    spec!(lubricant.reference_temperature, "T_ref", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Temperature at which eta_0 and alpha hold (Table 3: room temperature)"),
     spec!(lubricant.roelands_temperature_index, "S_0", "1", Range::NonNegative, "Extension: Roelands (1966); default fitted to an ISO VG 100 mineral oil", "Roelands temperature-viscosity index S_0: ln(eta_0/eta_inf) scales as (1 + (T - 273.15 K)/135 K)^-S_0"),
     spec!(starvation.inlet_layer_inverse, "1/h_oil", "1/m", Range::NonNegative, "Extension: Chevalier et al. (1998); default 0 = fully flooded (the paper's model)", "Reciprocal of the lubricant layer thickness available at the inlet (starved-inlet film correction); 0 = fully flooded"),
     spec!(starvation.exponent, "gamma_s", "1", Range::OpenClosed(0.0, 100.0), "Extension: Chevalier et al. (1998)", "Exponent of the starvation relation h = (h_ff^-g + h_oil^-g)^(-1/g)"),
 ];
 
-/// Lowest admissible temperature (K): Roelands' temperature term (1 + θ/135 °C) must stay
-/// positive, θ > −135 °C.
-pub const MIN_TEMPERATURE: f64 = 138.15;
+/// Lowest admissible temperature (K), −35 °C. Roelands' temperature term (1 + θ/135 °C)
+/// has its pole at θ = −135 °C, where η0 → ∞ (at 145 K the film of the Table 3 oil was
+/// 1e108 m); the relation describes a liquid, and the Table 3 oil (S0 = 1.262) would reach
+/// [`GLASS_VISCOSITY`] at −102 °C (171.1 K). Long before that the film leaves the joint: at
+/// the paper's 20 kN and the rig's peak speed of 4.4 rad/s (1 Hz, ±40°) the Table 3 oil's
+/// film passes the diametral clearance 2(R_b − R) = 50 µm below about −42 °C (175 µm at
+/// −50 °C, 42 µm at −40 °C; `ModelError::FilmBeyondClearance`), and at −70 °C even the
+/// zero-speed band's edge (0.01 rad/s) does. The default rig's start-up overshoots to
+/// 5.5 rad/s, where −40 °C gives 52 µm: at −35 °C the film stays inside up to 8 rad/s
+/// (42 µm), twice the stroke's peak. For other lubricant parameters
+/// [`Params::validate`] also rejects a temperature where η0(T) exceeds [`GLASS_VISCOSITY`].
+pub const MIN_TEMPERATURE: f64 = 238.15;
+
+/// The largest lubricant viscosity the model takes (Pa·s): 1e12 Pa·s, the conventional
+/// viscosity of a liquid at its glass transition. Above it the lubricant is a glass, Roelands'
+/// relations (eq. 5 and the temperature relation) do not describe it, and the film of eq. 12
+/// grows without physical bound.
+pub const GLASS_VISCOSITY: f64 = 1e12;
 /// Highest admissible temperature (K), 400 °C: far above any grease's dropping point.
 pub const MAX_TEMPERATURE: f64 = 673.15;
 
@@ -316,7 +336,7 @@ pub fn spec_by_name(name: &str) -> Option<&'static ParamSpec> {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum ParamError {
     /// A parameter value is NaN or infinite.
-    #[error("parameter {name} = {value} {unit} is not a finite number")]
+    #[error("parameter {name} = {v} {unit} is not a finite number", v = crate::fmt::Num(*.value))]
     NotFinite {
         /// The parameter's `section.key`.
         name: String,
@@ -326,7 +346,7 @@ pub enum ParamError {
         unit: &'static str,
     },
     /// A parameter value lies outside its allowed [`Range`].
-    #[error("parameter {name} = {value} {unit} is out of range: it must be {range}")]
+    #[error("parameter {name} = {v} {unit} is out of range: it must be {range}", v = crate::fmt::Num(*.value))]
     OutOfRange {
         /// The parameter's `section.key`.
         name: String,
@@ -339,7 +359,9 @@ pub enum ParamError {
     },
     /// The bush radius does not exceed the pin radius, so the radial clearance is not positive.
     #[error(
-        "parameter geometry.bush_radius = {bush_radius} m must exceed geometry.pin_radius = {pin_radius} m (the radial clearance R_b - R must be positive)"
+        "parameter geometry.bush_radius = {b} m must exceed geometry.pin_radius = {p} m (the radial clearance R_b - R must be positive)",
+        b = crate::fmt::Num(*.bush_radius),
+        p = crate::fmt::Num(*.pin_radius)
     )]
     NoClearance {
         /// Pin radius R (m).
@@ -350,6 +372,26 @@ pub enum ParamError {
     /// The parameter file could not be parsed (TOML syntax, unknown key, wrong type).
     #[error("parameter file: {0}")]
     Parse(String),
+}
+
+/// A TOML error as a message of bounded length: where it is (line and column), what is
+/// wrong and the line, with at most [`crate::fmt::EXCERPT_CHARS`] characters of it quoted (toml's own text
+/// echoes the offending line, which may be megabytes long).
+pub fn parse_message(text: &str, e: &toml::de::Error) -> String {
+    let what = crate::fmt::excerpt(e.message().trim());
+    match e.span() {
+        Some(span) => {
+            let start = span.start.min(text.len());
+            let before = text.get(..start).unwrap_or("");
+            let line = before.matches('\n').count() + 1;
+            let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+            // The line itself (it names the key of a wrongly typed value), cut to an excerpt.
+            let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+            let text_line = text[line_start..].split('\n').next().unwrap_or("").trim_end_matches('\r');
+            format!("line {line}, column {column}: {what} (in `{}`)", crate::fmt::excerpt(text_line.trim()))
+        }
+        None => what,
+    }
 }
 
 fn unit_text(unit: &'static str) -> &'static str {
@@ -377,6 +419,23 @@ impl Params {
         if g.bush_radius - g.pin_radius <= 0.0 {
             return Err(ParamError::NoClearance { pin_radius: g.pin_radius, bush_radius: g.bush_radius });
         }
+        // η0 at the lubricant temperature (Roelands' temperature relation) must stay a liquid's.
+        let eta = crate::viscosity::at_temperature(&self.lubricant).viscosity;
+        if !(eta.is_finite() && eta > 0.0 && eta <= GLASS_VISCOSITY) {
+            let l = &self.lubricant;
+            return Err(ParamError::OutOfRange {
+                name: "lubricant.temperature".into(),
+                value: l.temperature,
+                unit: "K",
+                range: format!(
+                    "such that eta_0(T) <= {GLASS_VISCOSITY:e} Pa.s, a liquid's (here eta_0(T) = {} Pa.s by Roelands' temperature relation from eta_0 = {} Pa.s at {} K with S_0 = {})",
+                    crate::fmt::Num(eta),
+                    crate::fmt::Num(l.viscosity),
+                    crate::fmt::Num(l.reference_temperature),
+                    crate::fmt::Num(l.roelands_temperature_index)
+                ),
+            });
+        }
         Ok(())
     }
 
@@ -387,7 +446,7 @@ impl Params {
 
     /// Parse a (partial) TOML parameter file; missing keys keep their defaults.
     pub fn from_toml_str(text: &str) -> Result<Self, ParamError> {
-        let p: Params = toml::from_str(text).map_err(|e| ParamError::Parse(e.to_string()))?;
+        let p: Params = toml::from_str(text).map_err(|e| ParamError::Parse(parse_message(text, &e)))?;
         p.validate()?;
         Ok(p)
     }
@@ -496,10 +555,24 @@ mod tests {
         let e = Params::from_toml_str("[materials]\nbush_poisson_ratio = 0.5\n").unwrap_err();
         assert!(e.to_string().contains("materials.bush_poisson_ratio = 0.5"), "{e}");
         let e = Params::from_toml_str("[surface]\npin_rms_roughness = -1e-6\n").unwrap_err();
-        assert!(e.to_string().contains("surface.pin_rms_roughness = -0.000001 m"), "{e}");
+        assert!(e.to_string().contains("surface.pin_rms_roughness = -1e-6 m"), "{e}");
         let e = Params::from_toml_str("[geometry]\nbush_radius = 0.028\n").unwrap_err();
         assert!(matches!(e, ParamError::NoClearance { .. }), "{e}");
         assert!(e.to_string().contains("geometry.bush_radius"));
+    }
+
+    #[test]
+    fn a_huge_bad_file_gives_a_short_message() {
+        // A 10 MB junk line, a 10 MB unknown key, a 10 MB string value: the message quotes at
+        // most an excerpt of each.
+        let junk = "x".repeat(10_000_000);
+        for text in [junk.clone(), format!("[geometry]\n{junk} = 1.0\n"), format!("[geometry]\npin_radius = \"{junk}\"\n")] {
+            let m = Params::from_toml_str(&text).unwrap_err().to_string();
+            assert!(m.len() < crate::fmt::MESSAGE_CHARS, "{} characters: {}", m.len(), &m[..300.min(m.len())]);
+            assert!(m.starts_with("parameter file: line "), "{m}");
+        }
+        let m = Params::from_toml_str(&format!("[geometry]\n{junk} = 1.0\n")).unwrap_err().to_string();
+        assert!(m.contains("line 2, column 1") && m.contains("more characters"), "{m}");
     }
 
     #[test]

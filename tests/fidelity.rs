@@ -27,7 +27,9 @@ fn envelopes() -> Vec<(&'static str, Envelope)> {
         ("deep-boundary", Envelope::new(5e3, 60e3, 1e-5, 1e-3).unwrap()),
         ("brief", brief()),
         ("mixed", Envelope::new(10e3, 60e3, 1.0, 30.0).unwrap()),
-        ("spanning", Envelope::new(1e3, 200e3, 1e-3, 1e3).unwrap()),
+        // Up to 3 rad/s: the table reaches past its envelope, and at 1 kN and 10 rad/s the film
+        // would pass the diametral clearance (ModelError::FilmBeyondClearance).
+        ("spanning", Envelope::new(2e3, 200e3, 1e-3, 3.0).unwrap()),
     ]
 }
 
@@ -161,14 +163,16 @@ fn auto_never_picks_a_level_that_violates_the_tolerance() {
         }
     }
     // The picks the physics implies: deep boundary at 1 % is boundary; the brief's envelope
-    // at 1e-4 needs the table; the spanning envelope at 1e-6 cannot be tabulated in 65536 cells.
+    // at 1e-4 needs the table; the spanning envelope (up to 3 rad/s, where the film stays
+    // inside the clearance) at 1e-6 is tabulated (before the film bound, the envelope ran to
+    // 1e3 rad/s and could not be tabulated in 65536 cells).
     let pick = |name: &str, tol: f64| {
         let env = envelopes().into_iter().find(|e| e.0 == name).unwrap().1;
         Evaluator::new(&p, Fidelity::Auto, tol, env).unwrap().chosen()
     };
     assert_eq!(pick("deep-boundary", 1e-2), Level::Boundary);
     assert_eq!(pick("brief", 1e-4), Level::Table);
-    assert_eq!(pick("spanning", 1e-6), Level::Full);
+    assert_eq!(pick("spanning", 1e-6), Level::Table);
 }
 
 #[test]
@@ -190,7 +194,7 @@ fn boundary_level_reports_its_measured_error() {
     let deep = Evaluator::new(&p, Fidelity::Boundary, 1e-3, envelopes()[0].1).unwrap();
     assert!(deep.within_tolerance(), "{}", deep.error_bound());
     let span = Evaluator::new(&p, Fidelity::Boundary, 1e-3, envelopes()[3].1).unwrap();
-    assert!(!span.within_tolerance() && span.error_bound() > 10.0, "{}", span.error_bound());
+    assert!(!span.within_tolerance() && span.error_bound() > 1.0, "{}", span.error_bound());
 }
 
 #[test]
@@ -256,7 +260,7 @@ fn full_level_is_the_complete_solve_warm_started() {
     for k in 0..2000 {
         let t = f64::from(k) / 2000.0;
         let load = 20e3 + 15e3 * (6.0 * t).sin();
-        let omega = 200.0 * (40.0 * t).sin().powi(3);
+        let omega = 100.0 * (40.0 * t).sin().powi(3);
         let e = ev.evaluate(load, omega).unwrap();
         let cold = j.evaluate(load, omega).unwrap();
         assert_eq!(e.source, Source::Full);

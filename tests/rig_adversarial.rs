@@ -24,7 +24,12 @@ fn tiny_loads_keep_the_dissipation_non_negative() {
         let mut s = sim();
         let inputs = Inputs { load: Some(p), command_angle: None };
         for k in 1..=30 {
-            s.advance_to(0.01 * f64::from(k), &inputs).unwrap();
+            // Once the pin moves, a film under so light a load passes the diametral clearance:
+            // a typed error naming it ends the run (issue 23), the dissipation so far checked.
+            if let Err(e) = s.advance_to(0.01 * f64::from(k), &inputs) {
+                assert!(matches!(e, RigError::Model { .. }) && e.to_string().contains("diametral clearance"), "{p:e}: {e}");
+                break;
+            }
             let x = s.sample().unwrap();
             assert!(x.friction_dissipation >= 0.0, "{p:e} N at {} s: {}", x.time, x.friction_dissipation);
         }

@@ -106,11 +106,11 @@ fn fmu_levels_are_the_library_levels_bit_for_bit() {
         free(c);
         t
     };
-    let env = Envelope::new(1e3, 100e3, 1e-3, 10.0).unwrap();
+    let env = Envelope::new(5e3, 100e3, 1e-3, 10.0).unwrap();
     let table = lib(Some((Fidelity::Table, 1e-4, env)));
     let plain = lib(None);
     assert_ne!(table, plain);
-    assert_eq!(fmu(&[("fidelity", 1.0)]), table, "default tolerance 1e-4 and envelope 1-100 kN, 1e-3-10 rad/s");
+    assert_eq!(fmu(&[("fidelity", 1.0)]), table, "default tolerance 1e-4 and envelope 5-100 kN, 1e-3-10 rad/s");
     let odd = [("fidelity", 0.0), ("tolerance", 0.3), ("envelope.load_min", 7.0), ("envelope.speed_max", 1e3)];
     assert_eq!(fmu(&odd), plain, "full ignores tolerance and envelope");
     assert_eq!(fmu(&[]), plain);
@@ -121,7 +121,7 @@ fn auto_logs_its_pick_and_the_first_fallback_once() {
     let h = new_host();
     let c = logged(&h, &[("fidelity", 3.0), ("tolerance", 1e-4)]);
     let mut rig = RigSim::new(&RigConfig::default()).unwrap();
-    let ev = rig.set_fidelity(Fidelity::Auto, 1e-4, Envelope::new(1e3, 100e3, 1e-3, 10.0).unwrap()).unwrap();
+    let ev = rig.set_fidelity(Fidelity::Auto, 1e-4, Envelope::new(5e3, 100e3, 1e-3, 10.0).unwrap()).unwrap();
     assert_eq!(ev.chosen(), Level::Table);
     let text: Vec<String> = h.messages().into_iter().map(|m| m.text).collect();
     let pick = format!("fidelity auto -> table: measured error bound {:e} (tolerance 1e-4)", ev.error_bound());
@@ -147,7 +147,7 @@ fn fidelity_parameters_have_defaults_and_bad_values_are_refused_by_name() {
     assert_eq!(get(c, "fidelity"), 0.0);
     assert_eq!(get(c, "tolerance"), 1e-4);
     let env: Vec<f64> = ["envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max"].iter().map(|n| get(c, n)).collect();
-    assert_eq!(env, [1e3, 100e3, 1e-3, 10.0]);
+    assert_eq!(env, [5e3, 100e3, 1e-3, 10.0]);
     // Out-of-range code: refused at once by fmi2SetInteger; fidelity is Integer, not Real.
     assert_eq!(set(c, "fidelity", 4.0), ERROR);
     assert!(h.last().contains("fidelity = 4") && h.last().contains("3 (auto)"), "{}", h.last());

@@ -15,7 +15,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 CYCLES="${1:-50}"
 FMU="${PINJOINT_FMU:-$ROOT/target/fmu/PinJoint.fmu}"
-[[ -f "$FMU" ]] || cargo run --release -q -p fmu_build >/dev/null
+[[ -f "$FMU" ]] || cargo run --locked --release -q -p fmu_build >/dev/null
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

@@ -118,7 +118,8 @@ pub fn build_library(root: &Path, target: &Path, p: &Platform) -> Result<PathBuf
         // Called directly (not as `cargo zigbuild`): the first argument is the subcommand.
         (Linker::Zig, _) => ("cargo-zigbuild".into(), vec!["zigbuild", "--target", &zig_target]),
     };
-    args.extend(["--release", "--lib", "-p", FMU_PACKAGE]);
+    // --locked: the FMU is built from the dependency versions in Cargo.lock, never re-resolved.
+    args.extend(["--locked", "--release", "--lib", "-p", FMU_PACKAGE]);
     eprintln!("fmu_build: {program} {}", args.join(" "));
     let mut command = Command::new(&program);
     command.args(&args).current_dir(root).env("CARGO_TARGET_DIR", target);

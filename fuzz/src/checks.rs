@@ -144,7 +144,7 @@ pub mod core {
         let mut params = Params::default();
         for s in PARAMS.iter() {
             let (lo, hi) = s.range.bounds();
-            let bounded = matches!(s.range, pinjoint::params::Range::HalfOpen(..) | pinjoint::params::Range::OpenClosed(..));
+            let bounded = matches!(s.range, pinjoint::params::Range::HalfOpen(..) | pinjoint::params::Range::OpenClosed(..) | pinjoint::params::Range::Closed(..));
             let v = value(&mut inp, s.default_value(), lo, if bounded { hi } else { None });
             (s.set)(&mut params, v);
         }
@@ -169,7 +169,7 @@ pub mod core {
         PARAMS.iter().all(|s| {
             let (v, d) = ((s.get)(p), s.default_value());
             match s.range {
-                Range::HalfOpen(..) | Range::OpenClosed(..) => s.range.contains(v),
+                Range::HalfOpen(..) | Range::OpenClosed(..) | Range::Closed(..) => s.range.contains(v),
                 Range::NonNegative if v == 0.0 => true,
                 _ => v >= d / 16.0 && v <= d * 16.0,
             }

@@ -8,7 +8,7 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
-from ._coerce import ParamsLike, as_float_array
+from ._coerce import ParamsLike, as_float_array, short
 from ._native import MU_C, Params, _calibrate
 
 #: The keys of ``pinjoint calibrate --json``, in its order.
@@ -117,7 +117,7 @@ def _count(name: str, value: Any, allow_none: bool = True) -> Optional[int]:
     if value is None and allow_none:
         return None
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
+        raise TypeError(f"{name} must be an integer, got {short(value)}")
     if value < 0:
         raise ValueError(f"{name} = {value} is invalid: it must be >= 0")
     return int(value)
@@ -178,7 +178,7 @@ def calibrate(
     """
     if model != "core":
         raise ValueError(
-            f"model = {model!r} is not available: the calibration library fits the quasi-static model only (model='core')"
+            f"model = {short(model)} is not available: the calibration library fits the quasi-static model only (model='core')"
         )
     if isinstance(records, Mapping) or not isinstance(records, (list, tuple)):
         records = [records]
@@ -188,7 +188,7 @@ def calibrate(
     keys = [k.strip() for k in (fit.split(",") if isinstance(fit, str) else list(fit))]
     keys = [k for k in keys if k]
     if MU_C not in keys:
-        raise ValueError(f"fit = {list(keys)!r} does not include {MU_C}: mu_c is always fitted; add it")
+        raise ValueError(f"fit = {short(list(keys))} does not include {MU_C}: mu_c is always fitted; add it")
     if isinstance(params, os.PathLike):
         params = os.fspath(params)
 
@@ -196,7 +196,7 @@ def calibrate(
         if v is None:
             return None
         if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
-            raise TypeError(f"{name} ({unit}) must be a number, got {v!r}")
+            raise TypeError(f"{name} ({unit}) must be a number, got {short(v)}")
         return float(v)
 
     j = real("inertia", "kg*m^2", inertia)

@@ -7,6 +7,7 @@ from typing import Any, Dict, Mapping, Union
 
 import numpy as np
 
+from ._coerce import magnitude, short
 from ._native import Params, _simulate_cycle
 
 
@@ -30,7 +31,8 @@ def simulate_cycle(
 
     frequency          f, Hz (> 0)
     amplitude          A, rad (>= 0; the CLI's --amplitude is in degrees: use np.radians(40))
-    load               P, N (> 0)
+    load               P, N: a magnitude (a negative value is taken as |P|: -P gives the
+                       answer at +P); |P| must be > 0
     cycles             whole strokes to simulate (1..100000)
     samples_per_cycle  samples written per stroke (>= 8; cycles*samples <= 2e7)
     params             model parameters: None, a Params, a mapping, or a TOML file path; a
@@ -51,13 +53,13 @@ def simulate_cycle(
     fluid_load_fraction (-), stuck (bool). Invalid values raise ValueError naming the
     parameter, value and unit. The GIL is released while it runs.
     """
-    overrides: Dict[str, Any] = {"frequency": frequency, "amplitude": amplitude, "load": load}
+    overrides: Dict[str, Any] = {"frequency": frequency, "amplitude": amplitude, "load": magnitude(load)}
     overrides.update(rig)
     if isinstance(params, os.PathLike):
         params = os.fspath(params)
     for name, value in (("cycles", cycles), ("samples_per_cycle", samples_per_cycle)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-            raise TypeError(f"{name} must be an integer, got {value!r}")
+            raise TypeError(f"{name} must be an integer, got {short(value)}")
         if value < 0:
             raise ValueError(f"{name} = {value} is invalid: it must be >= 1")
     return _simulate_cycle(params, overrides, int(cycles), int(samples_per_cycle), str(fidelity), float(tolerance))

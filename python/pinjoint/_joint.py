@@ -6,7 +6,7 @@ from typing import Any, Dict, Optional, Tuple
 
 import numpy as np
 
-from ._coerce import ParamsLike, as_float_array, as_params
+from ._coerce import ParamsLike, as_float_array, as_params, short
 from ._native import REGIMES, VALIDITIES, Params, _Joint
 
 #: Default envelope of the table/boundary/auto levels: loads 5-60 kN, speed magnitudes
@@ -90,7 +90,7 @@ class Joint:
             raise TypeError(f"fidelity must be a string (full, table, boundary or auto), not {type(fidelity).__name__}")
         env = DEFAULT_ENVELOPE if envelope is None else tuple(float(x) for x in envelope)
         if len(env) != 4:
-            raise ValueError(f"envelope must be (load_min N, load_max N, speed_min rad/s, speed_max rad/s), got {envelope!r}")
+            raise ValueError(f"envelope must be (load_min N, load_max N, speed_min rad/s, speed_max rad/s), got {short(envelope)}")
         self._native = _Joint(p, fidelity, float(tolerance), env)
         self._params = p
         self._fidelity = fidelity.strip().lower()
@@ -140,13 +140,16 @@ class Joint:
     def evaluate(self, load: Any, speed: Any) -> Dict[str, np.ndarray]:
         """The model at every (load, speed) pair, NumPy-broadcast.
 
-        load   N, > 0 (and below `capacity`); scalar, list or array of real numbers.
+        load   N, a magnitude: a negative value is taken as |load| (-P gives the answer at
+               +P); |load| must be > 0 and below `capacity`. Scalar, list or array of
+               real numbers.
         speed  rad/s, finite (the angular velocity; the model uses its magnitude).
 
         Integer and floating dtypes (float16/32/64, any int) are accepted and converted to
         float64; bool, complex, string and object arrays are a TypeError. Shapes that do not
         broadcast are a ValueError. A point the model cannot take (NaN or infinite input,
-        load <= 0, load beyond the asperity model's capacity) raises ValueError naming the
+        load = 0, |load| beyond the asperity model's capacity, a fluid film thicker than the
+        diametral clearance 2(R_b - R)) raises ValueError naming the
         index (in the broadcast shape), the quantity, its value and unit, for the first such
         point in C order; nothing is returned then.
 

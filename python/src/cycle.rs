@@ -29,7 +29,7 @@ pub fn config(params: Option<&Bound<'_, PyAny>>, rig: &Bound<'_, PyDict>) -> PyR
     overrides.set_item("rig", rig)?;
     merge_mapping(&mut table, overrides.as_any())?;
     crate::values::check_keys(&table, true)?;
-    RigConfig::from_toml_str(&to_text(&table)?).map_err(|e| PyValueError::new_err(e.to_string()))
+    RigConfig::from_toml_str(&to_text(&table)?).map_err(|e| PyValueError::new_err(pinjoint::fmt::bounded_message(&e.to_string())))
 }
 
 /// The parameter table `params` gives (None, a Params, a TOML path or a mapping), before any
@@ -43,7 +43,9 @@ pub fn table_of(params: Option<&Bound<'_, PyAny>>) -> PyResult<toml::Table> {
                 toml::from_str(&pp.get().inner.to_toml_string()).expect("the library's own file parses")
             } else if p.is_instance_of::<PyString>() || p.hasattr("__fspath__")? {
                 let (path, text) = read_file(p)?;
-                text.parse::<toml::Table>().map_err(|e| PyValueError::new_err(format!("{path}: parameter file: {e}")))?
+                text.parse::<toml::Table>().map_err(|e| {
+                    PyValueError::new_err(format!("{}: parameter file: {}", pinjoint::fmt::excerpt(&path), pinjoint::params::parse_message(&text, &e)))
+                })?
             } else {
                 let mut t = toml::Table::new();
                 merge_mapping(&mut t, p)?;

@@ -11,14 +11,14 @@ use pyo3::types::{PyDict, PyTuple};
 
 /// A rejected parameter set as a Python `ValueError` with the library's message.
 pub fn param_err(e: ParamError) -> PyErr {
-    PyValueError::new_err(e.to_string())
+    PyValueError::new_err(pinjoint::fmt::bounded_message(&e.to_string()))
 }
 
 /// Read a parameter file (TOML) as text; an unreadable file is an `OSError` naming it.
 pub fn read_file(path: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
     let os = path.py().import("os")?;
     let p: String = os.call_method1("fspath", (path,))?.extract()?;
-    let text = std::fs::read_to_string(&p).map_err(|e| PyOSError::new_err(format!("cannot read parameter file {p}: {e}")))?;
+    let text = std::fs::read_to_string(&p).map_err(|e| PyOSError::new_err(format!("cannot read parameter file {}: {e}", pinjoint::fmt::excerpt(&p))))?;
     Ok((p, text))
 }
 
@@ -75,7 +75,7 @@ impl PyParams {
     #[staticmethod]
     fn from_toml(path: &Bound<'_, PyAny>) -> PyResult<Self> {
         let (p, text) = read_file(path)?;
-        let inner = Params::from_toml_str(&text).map_err(|e| PyValueError::new_err(format!("{p}: {e}")))?;
+        let inner = Params::from_toml_str(&text).map_err(|e| PyValueError::new_err(pinjoint::fmt::bounded_message(&format!("{}: {e}", pinjoint::fmt::excerpt(&p)))))?;
         Ok(Self { inner })
     }
 

@@ -1,6 +1,7 @@
 //! Python values into the parameter file's TOML table, so that a dict goes through exactly
 //! the library's parsing and validation (same keys, same messages) as a file would.
 
+use pinjoint::fmt::excerpt;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt, PyMapping, PyString};
@@ -8,24 +9,46 @@ use pyo3::types::{PyBool, PyFloat, PyInt, PyMapping, PyString};
 /// One leaf value: a real number (int or float, not bool) or, for `rig.formulation` and
 /// `rig.method`, a string.
 fn leaf(name: &str, v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
+    let name = excerpt(name);
+    let name = name.as_str();
     if v.is_instance_of::<PyBool>() {
-        return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a bool", v.repr()?)));
+        return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a bool", excerpt(&v.repr()?.to_string()))));
     }
     if v.is_instance_of::<PyString>() {
         if matches!(name, "rig.formulation" | "rig.method") {
             return Ok(toml::Value::String(v.extract::<String>()?));
         }
-        return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a string", v.repr()?)));
+        return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a string", excerpt(&v.repr()?.to_string()))));
     }
     if v.is_instance_of::<PyFloat>() || v.is_instance_of::<PyInt>() || v.hasattr("__float__")? {
-        let x: f64 = v.extract().or_else(|_| v.call_method0("__float__")?.extract())?;
-        return Ok(toml::Value::Float(x));
+        // float() of an int beyond f64 raises OverflowError: a ValueError naming the parameter
+        // instead (the documented type), with a short form of the value.
+        let x: Result<f64, PyErr> = v.extract().or_else(|_| v.call_method0("__float__")?.extract());
+        return match x {
+            Ok(x) => Ok(toml::Value::Float(x)),
+            Err(e) => Err(PyValueError::new_err(format!(
+                "parameter {name} = {} is not representable as a finite float ({}): it must be a real number in the parameter's range",
+                short_repr(v),
+                excerpt(&e.to_string())
+            ))),
+        };
     }
     Err(PyTypeError::new_err(format!(
         "parameter {name} = {} must be a number (got {})",
-        v.repr()?,
+        excerpt(&v.repr()?.to_string()),
         v.get_type().name()?
     )))
+}
+
+/// A value as a message may show it: its repr, or for an int too large for a float its
+/// number of digits (its repr may be millions of characters), at most an [`excerpt`].
+fn short_repr(v: &Bound<'_, PyAny>) -> String {
+    if let Ok(bits @ 65..) = v.call_method0("bit_length").and_then(|b| b.extract::<u64>()) {
+        // log10(2) = 0.30103: the int has about this many decimal digits.
+        let sign = if v.lt(0).unwrap_or(false) { "-" } else { "" };
+        return format!("{sign}(an int of about {} digits)", (bits as f64 * std::f64::consts::LOG10_2).ceil() as u64);
+    }
+    v.repr().map(|r| excerpt(&r.to_string())).unwrap_or_else(|_| "(a value without repr)".into())
 }
 
 /// Merge a Python mapping into `table`: keys are either sections holding mappings
@@ -37,20 +60,21 @@ pub fn merge_mapping(table: &mut toml::Table, mapping: &Bound<'_, PyAny>) -> PyR
         .map_err(|_| PyTypeError::new_err(format!("parameters must be a mapping, got {}", mapping.get_type().name().map(|n| n.to_string()).unwrap_or_default())))?;
     for item in mapping.items()?.iter() {
         let (k, v): (Bound<'_, PyAny>, Bound<'_, PyAny>) = item.extract()?;
-        let key: String = k.extract().map_err(|_| PyTypeError::new_err(format!("parameter names must be strings, got {}", k.repr().map(|r| r.to_string()).unwrap_or_default())))?;
+        let key: String = k.extract().map_err(|_| PyTypeError::new_err(format!("parameter names must be strings, got {}", excerpt(&k.repr().map(|r| r.to_string()).unwrap_or_default()))))?;
         if let Some((section, name)) = key.split_once('.') {
             set(table, section, name, leaf(&key, &v)?)?;
         } else if v.cast::<PyMapping>().is_ok() && !v.is_instance_of::<PyString>() {
             let inner = v.cast::<PyMapping>().expect("checked");
             for item in inner.items()?.iter() {
                 let (k2, v2): (Bound<'_, PyAny>, Bound<'_, PyAny>) = item.extract()?;
-                let name: String = k2.extract().map_err(|_| PyTypeError::new_err(format!("parameter names in [{key}] must be strings")))?;
+                let name: String = k2.extract().map_err(|_| PyTypeError::new_err(format!("parameter names in [{}] must be strings", excerpt(&key))))?;
                 set(table, &key, &name, leaf(&format!("{key}.{name}"), &v2)?)?;
             }
         } else {
             return Err(PyValueError::new_err(format!(
-                "parameter `{key}`: expected a section holding a mapping (e.g. {{\"geometry\": {{\"pin_radius\": 0.028}}}}) \
-                 or a dotted name (e.g. \"geometry.pin_radius\")"
+                "parameter `{}`: expected a section holding a mapping (e.g. {{\"geometry\": {{\"pin_radius\": 0.028}}}}) \
+                 or a dotted name (e.g. \"geometry.pin_radius\")",
+                excerpt(&key)
             )));
         }
     }
@@ -64,7 +88,7 @@ fn set(table: &mut toml::Table, section: &str, name: &str, value: toml::Value) -
             t.insert(name.to_string(), value);
             Ok(())
         }
-        _ => Err(PyValueError::new_err(format!("parameter section `{section}` is not a table"))),
+        _ => Err(PyValueError::new_err(format!("parameter section `{}` is not a table", excerpt(section)))),
     }
 }
 
@@ -87,17 +111,17 @@ pub fn check_keys(table: &toml::Table, rig: bool) -> PyResult<()> {
                 sections.push("rig");
             }
             return Err(PyValueError::new_err(format!(
-                "unknown parameter section `{section}`: the sections are {}",
+                "unknown parameter section `{}`: the sections are {}",
+                excerpt(section),
                 sections.join(", ")
             )));
         }
-        if let toml::Value::Table(t) = inner {
-            if let Some(k) = t.keys().find(|k| !known.contains(k)) {
-                return Err(PyValueError::new_err(format!(
-                    "unknown parameter `{section}.{k}`: [{section}] has {}",
-                    known.join(", ")
-                )));
-            }
+        if let Some(k) = inner.as_table().and_then(|t| t.keys().find(|k| !known.contains(k))) {
+            return Err(PyValueError::new_err(format!(
+                "unknown parameter `{}`: [{section}] has {}",
+                excerpt(&format!("{section}.{k}")),
+                known.join(", ")
+            )));
         }
     }
     Ok(())
@@ -105,5 +129,5 @@ pub fn check_keys(table: &toml::Table, rig: bool) -> PyResult<()> {
 
 /// The text of `table` as a parameter file.
 pub fn to_text(table: &toml::Table) -> PyResult<String> {
-    toml::to_string(table).map_err(|e| PyValueError::new_err(format!("parameter file: {e}")))
+    toml::to_string(table).map_err(|e| PyValueError::new_err(format!("parameter file: {}", excerpt(&e.to_string()))))
 }

@@ -66,3 +66,17 @@ def cycle_cli(cli, tmp_path):
         return read_csv(out / "cycle.csv")
 
     return run
+
+
+def inside_film_bound(joint, loads, speeds):
+    """Mask of the points the model answers: False where the fluid's film would pass the
+    diametral clearance (the ValueError naming it, docs/conventions.md), True elsewhere."""
+    keep = []
+    for load, speed in zip(np.ravel(loads), np.ravel(speeds)):
+        try:
+            joint.evaluate(load, speed)
+            keep.append(True)
+        except ValueError as e:
+            assert "diametral clearance" in str(e), str(e)
+            keep.append(False)
+    return np.array(keep, dtype=bool)

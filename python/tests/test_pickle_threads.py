@@ -13,7 +13,7 @@ import pytest
 import pinjoint
 
 L = np.geomspace(1e3, 1e5, 40)[:, None]
-W = np.geomspace(1e-3, 1e3, 50)
+W = np.geomspace(1e-3, 10.0, 50)  # inside the film bound at 1 kN (docs/conventions.md)
 
 
 def same(a, b):
@@ -25,7 +25,7 @@ def same(a, b):
     [
         pinjoint.Joint(),
         pinjoint.Joint({"friction.boundary_friction_coefficient": 0.1, "lubricant.viscosity": 0.02}),
-        pinjoint.Joint(fidelity="table", tolerance=1e-3, envelope=(2e3, 8e4, 1e-2, 50.0)),
+        pinjoint.Joint(fidelity="table", tolerance=1e-3, envelope=(5e3, 8e4, 1e-2, 10.0)),
         pinjoint.Joint(fidelity="auto"),
     ],
 )
@@ -56,7 +56,7 @@ def test_threads_share_a_joint_and_match_serial():
 def test_the_gil_is_released_during_evaluate():
     joint = pinjoint.Joint()
     l = np.full(400_000, 2e4)
-    w = np.geomspace(1e-3, 1e3, 400_000)
+    w = np.geomspace(1e-3, 300.0, 400_000)  # inside the film bound at 20 kN (docs/conventions.md)
     ticks = []
     stop = threading.Event()
 

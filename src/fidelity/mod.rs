@@ -92,7 +92,7 @@ impl FromStr for Fidelity {
     /// `full | table | boundary | auto`, ASCII case-insensitive, surrounding blanks ignored.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         let t = s.trim();
-        Fidelity::ALL.into_iter().find(|f| f.as_str().eq_ignore_ascii_case(t)).ok_or_else(|| FidelityError::UnknownFidelity(s.to_string()))
+        Fidelity::ALL.into_iter().find(|f| f.as_str().eq_ignore_ascii_case(t)).ok_or_else(|| FidelityError::UnknownFidelity(crate::fmt::excerpt(s)))
     }
 }
 
@@ -270,7 +270,10 @@ impl Evaluator {
             }
         };
         match hit {
-            Some(e) => Ok(e),
+            Some(e) => {
+                self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega)?;
+                Ok(e)
+            }
             None => {
                 // Also the path of invalid inputs (NaN fails every comparison): the solver rejects them.
                 let op = self.solver.evaluate(load, omega)?;
@@ -283,17 +286,20 @@ impl Evaluator {
     }
 
     /// The table or boundary level's answer when (`load`, `omega`) is inside the envelope (or
-    /// `omega` = 0 inside the load range); `None` otherwise and always for `full`. Takes `&self`
+    /// `omega` = 0 inside the load range) and its film within [`Joint::max_film_thickness`];
+    /// `None` otherwise and always for `full`. Takes `&self`
     /// and keeps no history, so a caller with its own warm-started solve (the rig) can use the
     /// level and do the fallback itself.
     #[inline]
     pub fn evaluate_inside(&self, load: f64, omega: f64) -> Option<Evaluation> {
         let load = load.abs();
-        match &self.backend {
+        let e = match &self.backend {
             Backend::Table(t) => t.evaluate(load, omega),
             Backend::Boundary(b) => b.evaluate(load, omega),
             Backend::Full => None,
-        }
+        }?;
+        // A film beyond the clearance is the full solve's error to give.
+        self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega).ok().map(|()| e)
     }
 
     /// As [`Evaluator::evaluate`], completed into every output of the model
@@ -314,7 +320,10 @@ impl Evaluator {
             Backend::Full => return Ok((self.solver.evaluate(load, omega)?, Source::Full, false)),
         };
         match hit {
-            Some(e) => Ok((self.operating_point(&e), e.source, false)),
+            Some(e) => {
+                self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega)?;
+                Ok((self.operating_point(&e), e.source, false))
+            }
             None => {
                 let op = self.solver.evaluate(load, omega)?;
                 let first = self.fallbacks == 0;

@@ -26,15 +26,15 @@ impl RigConfig {
     /// Parse a (partial) parameter file with an optional `[rig]` section; missing keys keep
     /// their defaults; unknown keys are rejected by name.
     pub fn from_toml_str(text: &str) -> Result<Self, ParamError> {
-        let mut table: toml::Table = toml::from_str(text).map_err(|e| ParamError::Parse(e.to_string()))?;
+        let mut table: toml::Table = toml::from_str(text).map_err(|e| ParamError::Parse(crate::params::parse_message(text, &e)))?;
         let rig = match table.remove("rig") {
             None => RigParams::default(),
             Some(toml::Value::Table(t)) => {
-                RigParams::deserialize(t).map_err(|e| ParamError::Parse(format!("[rig]: {e}")))?
+                RigParams::deserialize(t).map_err(|e| ParamError::Parse(format!("[rig]: {}", crate::fmt::excerpt(e.to_string().trim()))))?
             }
             Some(other) => return Err(ParamError::Parse(format!("`rig` must be a table ([rig]), found {}", other.type_str()))),
         };
-        let rest = toml::to_string(&table).map_err(|e| ParamError::Parse(e.to_string()))?;
+        let rest = toml::to_string(&table).map_err(|e| ParamError::Parse(crate::fmt::excerpt(&e.to_string())))?;
         let model = Params::from_toml_str(&rest)?;
         rig.validate()?;
         Ok(Self { model, rig })

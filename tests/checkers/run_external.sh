@@ -50,8 +50,8 @@ TARGET="${CARGO_TARGET_DIR:-$ROOT/target}"
 WORK="$TARGET/checkers"
 rm -rf "$WORK"
 mkdir -p "$WORK"
-cargo build --release -q -p pinjoint-cli
-[[ -n "${PINJOINT_KEEP_FMUS:-}" ]] || cargo run --release -q -p fmu_build >/dev/null
+cargo build --locked --release -q -p pinjoint-cli
+[[ -n "${PINJOINT_KEEP_FMUS:-}" ]] || cargo run --locked --release -q -p fmu_build >/dev/null
 PINJOINT="$TARGET/release/pinjoint"
 FMU2="$TARGET/fmu"
 FMU3="$TARGET/fmu/fmi3"

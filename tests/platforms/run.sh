@@ -47,13 +47,13 @@ export PATH="$VENV/bin:$PATH"
 stage "tools installed"
 
 # --- 2. builds ---------------------------------------------------------------------
-cargo run --release -q -p fmu_build -- --platforms all
-cargo build --release -q --lib -p pinjoint-fmu       # the native reference build (target/release)
-cargo build --release -q -p pinjoint --example reference_points
+cargo run --locked --release -q -p fmu_build -- --platforms all
+cargo build --locked --release -q --lib -p pinjoint-fmu       # the native reference build (target/release)
+cargo build --locked --release -q -p pinjoint --example reference_points
 stage "built the FMU binary for every platform"
 
 # --- 3. what the binaries export and need -------------------------------------------
-cargo test --release -q -p fmu_build --test platform_binaries -- --ignored --nocapture
+cargo test --locked --release -q -p fmu_build --test platform_binaries -- --ignored --nocapture
 stage "binaries inspected"
 
 # --- 4. run each binary --------------------------------------------------------------

@@ -24,9 +24,9 @@ fi
 # PINJOINT_KEEP_FMUS=1: test the FMUs already in target/fmu (e.g. the all-platform ones of
 # tests/platforms/run.sh) instead of rebuilding them for this host only.
 if [[ -z "${PINJOINT_KEEP_FMUS:-}" || ! -f target/fmu/PinJoint.fmu || ! -f target/fmu/PinJointRig.fmu ]]; then
-    cargo run --release -q -p fmu_build
+    cargo run --locked --release -q -p fmu_build
 fi
-cargo build --release -q -p pinjoint --example reference_points --example rig_reference --example presliding_reference
+cargo build --locked --release -q -p pinjoint --example reference_points --example rig_reference --example presliding_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"
 if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy, scipy" 2>/dev/null; then
@@ -37,4 +37,4 @@ fi
 export PINJOINT_FMU="$ROOT/target/fmu/PinJoint.fmu"
 export PINJOINT_RIG_FMU="$ROOT/target/fmu/PinJointRig.fmu"
 "$VENV/bin/python" -m pytest -q tests/python "$@"
-cargo test --release -q -p pinjoint-fmu --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse
+cargo test --locked --release -q -p pinjoint-fmu --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse

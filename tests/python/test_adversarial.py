@@ -63,7 +63,9 @@ CASES = [
     # Negative loads are magnitudes.
     ("pj negative load", PJ, STEP + [["set", "load", -20e3], ["set", "angular_velocity", 0.3], ["step", 0.0, 0.1], ["get", "torque"]],
      [OK, OK, OK, OK, OK], []),
-    ("pj load -1e-12", PJ, STEP + [["set", "load", -1e-12], ["step", 0.0, 0.1]], [OK, OK, OK], []),
+    # So light a load gives a film beyond the diametral clearance at the band's edge: the step
+    # fails naming it (docs/conventions.md).
+    ("pj load -1e-12", PJ, STEP + [["set", "load", -1e-12], ["step", 0.0, 0.1]], [OK, OK, ERROR], ["diametral clearance"]),
     # Huge numbers in messages are short.
     ("pj load 1e308 message", PJ, STEP + [["set", "load", 1e308]], [OK, ERROR], ["1e308"]),
     ("pj load -inf", PJ, STEP + [["set", "load", float("-inf")]], [OK, ERROR], ["load = -inf N"]),
@@ -78,8 +80,8 @@ CASES = [
     # PinJointRig.
     ("rig tiny load 5e-324", RIG, [["set", "load", 5e-324], ["init"], ["step", 0.0, 0.05]], None, []),
     ("rig tiny load 1e-200", RIG, [["set", "load", 1e-200], ["init"], ["step", 0.0, 0.05]], None, []),
-    ("rig load 1e-100 to 0.3 s", RIG, [["set", "load", 1e-100], ["init"], ["step", 0.0, 0.3]], [OK, OK, OK], []),
-    ("rig load 1e-25 to 0.3 s", RIG, [["set", "load", 1e-25], ["init"], ["step", 0.0, 0.3]], [OK, OK, OK], []),
+    ("rig load 1e-100 to 0.3 s", RIG, [["set", "load", 1e-100], ["init"], ["step", 0.0, 0.3]], [OK, OK, ERROR], ["diametral clearance"]),
+    ("rig load 1e-25 to 0.3 s", RIG, [["set", "load", 1e-25], ["init"], ["step", 0.0, 0.3]], [OK, OK, ERROR], ["diametral clearance"]),
     ("rig negative load", RIG, [["set", "load", -20e3], ["init"], ["step", 0.0, 0.05], ["get", "torque"]], [OK, OK, OK, OK], []),
     ("rig auto with asperity_density 7150", RIG, [["set", "fidelity", 3], ["set", "surface.asperity_density", 7150.0], ["init"]],
      None, []),

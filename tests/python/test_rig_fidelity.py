@@ -25,7 +25,7 @@ def test_fidelity_parameters_in_the_model_description(rig_model_description):
     assert v["fidelity"].type == "Enumeration" and v["fidelity"].causality == "parameter"
     assert [i.name for i in v["fidelity"].declaredType.items] == ["full", "table", "boundary", "auto"]
     assert (v["fidelity"].min, v["fidelity"].max, v["fidelity"].start) == ("0", "3", "0")
-    starts = {"tolerance": 1e-4, "envelope.load_min": 1e3, "envelope.load_max": 1e5,
+    starts = {"tolerance": 1e-4, "envelope.load_min": 5e3, "envelope.load_max": 1e5,
               "envelope.speed_min": 1e-3, "envelope.speed_max": 10.0}
     for n, s in starts.items():
         assert v[n].type == "Real" and v[n].causality == "parameter" and float(v[n].start) == s, n
@@ -34,7 +34,7 @@ def test_fidelity_parameters_in_the_model_description(rig_model_description):
 @pytest.mark.parametrize("tol", [1e-3, 1e-4])
 def test_table_stroke_stays_within_tolerance_of_full(rig_fmu_path, tol):
     full = run(rig_fmu_path, fidelity=0)
-    table = run(rig_fmu_path, fidelity=1, tolerance=tol, **{"envelope.load_min": 1e3, "envelope.load_max": 1e5,
+    table = run(rig_fmu_path, fidelity=1, tolerance=tol, **{"envelope.load_min": 5e3, "envelope.load_max": 1e5,
                                                              "envelope.speed_min": 1e-3, "envelope.speed_max": 10.0})
     assert np.any(full["stuck"]) and not np.all(full["stuck"]), "the run passes reversals and stick phases"
     for name in ["torque", "friction_torque"]:
@@ -65,4 +65,4 @@ def test_bad_envelope_is_refused_at_initialization_by_name(rig_fmu_path):
         simulate_fmu(rig_fmu_path, stop_time=0.1, start_values={"fidelity": 1, "envelope.load_max": 500.0},
                      logger=lambda env, name, status, cat, msg: messages.append(msg.decode()))
     assert "fmi2ExitInitializationMode" in str(e.value)
-    assert any("envelope.load_min = 1000 N is invalid: it must be below envelope.load_max = 500 N" in m for m in messages), messages
+    assert any("envelope.load_min = 5000 N is invalid: it must be below envelope.load_max = 500 N" in m for m in messages), messages

@@ -28,7 +28,7 @@ impl Transform {
     pub fn for_range(range: Range) -> Self {
         match range {
             Range::Positive | Range::NonNegative => Transform::Log,
-            Range::HalfOpen(lo, hi) | Range::OpenClosed(lo, hi) => Transform::Logit(lo, hi),
+            Range::HalfOpen(lo, hi) | Range::OpenClosed(lo, hi) | Range::Closed(lo, hi) => Transform::Logit(lo, hi),
         }
     }
     /// θ → β (None outside the domain).

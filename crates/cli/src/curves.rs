@@ -6,9 +6,24 @@ use super::error::{CliError, Result};
 use pinjoint::{Joint, OperatingPoint};
 use rayon::prelude::*;
 
-/// The model over `speeds` (rad/s) at `load`, on every core, in order.
+/// The model over `speeds` (rad/s, ascending) at `load`, on every core, in order. The curve
+/// ends before the first speed where the fluid film passes the diametral clearance
+/// ([`pinjoint::ModelError::FilmBeyondClearance`], said once on standard error); that error
+/// at the first speed, and any other error, is the answer.
 pub fn curve(joint: &Joint, load: f64, speeds: &[f64]) -> Result<Vec<OperatingPoint>> {
-    speeds.par_iter().map(|&w| joint.evaluate(load, w).map_err(CliError::from)).collect()
+    let all: Vec<_> = speeds.par_iter().map(|&w| joint.evaluate(load, w)).collect();
+    let mut ops = Vec::with_capacity(all.len());
+    for r in all {
+        match r {
+            Ok(op) => ops.push(op),
+            Err(e @ pinjoint::ModelError::FilmBeyondClearance { .. }) if !ops.is_empty() => {
+                eprintln!("note: the curve at {} N ends at {} of {} speeds: {e}", pinjoint::fmt::Num(load), ops.len(), speeds.len());
+                break;
+            }
+            Err(e) => return Err(CliError::from(e)),
+        }
+    }
+    Ok(ops)
 }
 
 /// CSV: load, speed, speed_rpm, then the result columns.

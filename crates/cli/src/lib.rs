@@ -103,13 +103,25 @@ pub fn run(cli: &Cli) -> error::Result<()> {
 
 /// Parse, run, report: exit 0 on success, 1 on an error (printed as `error: ...`),
 /// 2 on a usage error (clap's message).
+///
+/// No message is longer than about [`pinjoint::fmt::MESSAGE_CHARS`] characters: clap's own
+/// usage errors quote the argument, which may be 128 KiB long, and are cut as the
+/// command's errors are ([`pinjoint::fmt::bounded_message`]).
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if matches!(e.kind(), clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion) => e.exit(),
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => e.exit(),
+        Err(e) => {
+            eprint!("{}", pinjoint::fmt::bounded_message(&e.render().to_string()));
+            return ExitCode::from(2);
+        }
+    };
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {}", pinjoint::fmt::short_numbers(&e.to_string()));
+            eprintln!("error: {}", pinjoint::fmt::bounded_message(&pinjoint::fmt::short_numbers(&e.to_string())));
             ExitCode::FAILURE
         }
     }

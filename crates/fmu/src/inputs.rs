@@ -15,13 +15,13 @@ pub const LOAD_RULE: Rule = Rule::Finite("is invalid: it must be a finite number
 pub const FINITE: Rule = Rule::Finite("is not a finite number");
 
 /// The `temperature` input (K, display degC) at value reference `vr`: the lubricant
-/// temperature, in (138.15, 673.15] K, start 293.15 K; `description` is the model's.
+/// temperature, in [238.15, 673.15] K (the library's range, [`pinjoint::params::MIN_TEMPERATURE`]), start 293.15 K; `description` is the model's.
 pub fn temperature<S: 'static>(vr: u32, description: &str, get: fn(&S) -> f64, set: fn(&mut S, f64)) -> Row<S> {
     let mut v = declare("temperature", vr, Kind::Real, Causality::Input, Some("K"), Some("degC"), description);
     v.start = Some(DEFAULT_TEMPERATURE);
     v.min = Some(MIN_TEMPERATURE);
     v.max = Some(MAX_TEMPERATURE);
-    Row::new(v, get, set, Rule::OpenClosed(MIN_TEMPERATURE, MAX_TEMPERATURE))
+    Row::new(v, get, set, Rule::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE))
 }
 
 /// A load at or beyond the joint's asperity capacity ([`pinjoint::Joint::capacity`]) is an

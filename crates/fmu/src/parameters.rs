@@ -31,6 +31,7 @@ pub fn declared_bounds(range: Range) -> (Option<f64>, Option<f64>) {
         Range::NonNegative => (Some(0.0), None),
         Range::HalfOpen(lo, _) => (Some(lo), None),
         Range::OpenClosed(_, hi) => (None, Some(hi)),
+        Range::Closed(lo, hi) => (Some(lo), Some(hi)),
     }
 }
 

@@ -29,6 +29,8 @@ pub enum Rule {
     NonNegative,
     /// A number in the half-open interval (lo, hi].
     OpenClosed(f64, f64),
+    /// A number in the closed interval [lo, hi].
+    Closed(f64, f64),
     /// A whole number that is one of the enumeration's codes.
     Code(&'static EnumType),
 }
@@ -43,6 +45,9 @@ impl Rule {
             Rule::NonNegative => (!(x.is_finite() && x >= 0.0)).then(|| "is not a finite number >= 0".to_string()),
             Rule::OpenClosed(lo, hi) => {
                 (!(x > lo && x <= hi)).then(|| format!("is out of range: it must be in ({lo}, {hi}] {unit}").trim_end().to_string())
+            }
+            Rule::Closed(lo, hi) => {
+                (!(x >= lo && x <= hi)).then(|| format!("is out of range: it must be in [{lo}, {hi}] {unit}").trim_end().to_string())
             }
             Rule::Code(t) => {
                 let ok = x.fract() == 0.0 && t.item(x as i64).is_some();

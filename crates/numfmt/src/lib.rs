@@ -62,9 +62,55 @@ pub fn short_numbers(message: &str) -> String {
     out
 }
 
+/// The most characters of an input (a file's line, a key, a value's text) that any message
+/// quotes: [`excerpt`].
+pub const EXCERPT_CHARS: usize = 200;
+
+/// The most characters of any one error message a front end prints, logs or raises
+/// ([`bounded_message`]): a message quoting an [`excerpt`] of its input stays far below it.
+pub const MESSAGE_CHARS: usize = 1000;
+
+/// `text` as a message may quote it: unchanged when it has at most [`EXCERPT_CHARS`]
+/// characters, else its first [`EXCERPT_CHARS`] characters and how many were left out
+/// (`abc… (9999800 more characters)`).
+pub fn excerpt(text: &str) -> String {
+    match text.char_indices().nth(EXCERPT_CHARS) {
+        None => text.to_string(),
+        Some((cut, _)) => format!("{}… ({} more characters)", &text[..cut], text[cut..].chars().count()),
+    }
+}
+
+/// `message` with at most about [`MESSAGE_CHARS`] characters: unchanged when it is that
+/// short, else its beginning and its end (where the CLI's usage hint stands) with the number
+/// of characters left out between them. The last guard of every front end, whatever a
+/// message quoted.
+pub fn bounded_message(message: &str) -> String {
+    let n = message.chars().count();
+    if n <= MESSAGE_CHARS {
+        return message.to_string();
+    }
+    let (head, tail) = (MESSAGE_CHARS * 4 / 5, MESSAGE_CHARS / 10);
+    let head_end = message.char_indices().nth(head).map_or(message.len(), |(i, _)| i);
+    let tail_start = message.char_indices().nth(n - tail).map_or(message.len(), |(i, _)| i);
+    format!("{} … ({} characters left out) … {}", &message[..head_end], n - head - tail, &message[tail_start..])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn excerpt_and_bounded_message_cap_the_length() {
+        assert_eq!(excerpt("short"), "short");
+        let long = "é".repeat(10 * EXCERPT_CHARS);
+        let e = excerpt(&long);
+        assert!(e.starts_with(&"é".repeat(EXCERPT_CHARS)) && e.ends_with(&format!("({} more characters)", 9 * EXCERPT_CHARS)), "{e}");
+        assert!(e.chars().count() < EXCERPT_CHARS + 30);
+        let m = format!("error: {}\nFor more information, try '--help'.", "x".repeat(1_000_000));
+        let b = bounded_message(&m);
+        assert!(b.chars().count() <= MESSAGE_CHARS + 60 && b.starts_with("error: xxx") && b.ends_with("try '--help'."), "{b}");
+        assert_eq!(bounded_message("plain"), "plain");
+    }
 
     #[test]
     fn short_and_round_trip() {

@@ -157,7 +157,8 @@ impl Logger {
     fn emit(&self, status: Status, c: Category, message: &str) {
         let category = c_text(c.name());
         // Numbers in the short round-trip form however the message was built (no 309 digits).
-        let message = crate::fmt::short_numbers(message);
+        // And at most about MESSAGE_CHARS characters, whatever input a message quoted.
+        let message = crate::fmt::bounded_message(&crate::fmt::short_numbers(message));
         match self.callback {
             Sink::Fmi2(cb) => {
                 // '#' introduces a value-reference reference in FMI 2.0 messages; "##" is a literal '#'.
@@ -170,7 +171,7 @@ impl Logger {
             }
             Sink::Fmi3(cb) => {
                 // FMI 3.0 messages carry no instance name: it is prefixed.
-                let msg = c_text(&format!("[{}] {message}", self.instance_name.to_string_lossy()));
+                let msg = c_text(&format!("[{}] {message}", crate::fmt::excerpt(&self.instance_name.to_string_lossy())));
                 // SAFETY: non-NULL callback from the host; the strings outlive the call.
                 unsafe { cb(self.env, status.c(), category.as_ptr(), msg.as_ptr()) }
             }

@@ -203,7 +203,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(Row::new(band, |s: &Values| s.zv.band, |s, x| s.zv.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in (138.15, 673.15] K. A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [238.15, 673.15] K (-35 to 400 C; below, the film at 20 kN passes the diametral clearance at rig speeds: see lubricant.temperature). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
     rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows.extend(zero_velocity::rows(201, p + 12));
@@ -287,7 +287,7 @@ mod tests {
         let msg = |n: &str, x: f64| TABLE.check(at(n), x).unwrap_err().to_string();
         assert_eq!(msg("angle", f64::NAN), "input angle = NaN rad is not a finite number");
         assert_eq!(msg("load", f64::INFINITY), "input load = inf N is invalid: it must be a finite number (a negative value is taken as its magnitude)");
-        assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in (138.15, 673.15] K");
+        assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in [238.15, 673.15] K");
         assert_eq!(msg("fidelity", 0.5), "parameter fidelity = 0.5 is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)");
         assert!(TABLE.check(at("load"), -1e308).is_ok());
     }

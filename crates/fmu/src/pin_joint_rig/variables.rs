@@ -37,10 +37,14 @@ pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
 
 /// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
 /// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
-/// 1-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s).
+/// 5-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s;
+/// from 5 kN, PinJoint's lower end, so that the table's margin beyond the envelope keeps the
+/// film inside the diametral clearance: from 1 kN the table reached 398 N x 16 rad/s, an
+/// 80 um film in a 50 um clearance, and from 2 kN 752 N x 26 rad/s, 68 um;
+/// `pinjoint::ModelError::FilmBeyondClearance`).
 /// Speeds below speed_min (around every reversal) and points outside it are answered by
 /// the full solve (logged once).
-pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([1e3, 100e3, 1e-3, 10.0]);
+pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([5e3, 100e3, 1e-3, 10.0]);
 
 /// The outputs of the last sample: the rig's [`Sample`] and the minimum film from the
 /// joint. All 0 before the first sample.
@@ -238,7 +242,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.extend(crate::parameters::rows(300, None, |s: &Values| &s.settings.cfg.model, |s| &mut s.settings.cfg.model));
     rows.extend(fidelity::rows(400, None, DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.settings.fidelity, |s| &mut s.settings.fidelity));
     rows.push(crate::inputs::temperature(3,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in (138.15, 673.15] K. Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [238.15, 673.15] K (-35 to 400 C; below, the film at 20 kN passes the diametral clearance at rig speeds: see lubricant.temperature). Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
         |s: &Values| s.settings.temperature, |s, x| s.settings.temperature = x));
     rows.push(crate::validity::output(24, &["load", "temperature"], VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows
