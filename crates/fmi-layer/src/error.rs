@@ -11,7 +11,7 @@
 
 use crate::fmi2::interface::Interface;
 use crate::fmi2::model::ModelError;
-use crate::fmt::Num;
+use numfmt::Num;
 use std::ffi::c_int;
 use std::fmt;
 
