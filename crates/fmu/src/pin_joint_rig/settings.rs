@@ -1,11 +1,23 @@
 //! The rig FMU's settings: every parameter and input value an instance holds, with the
 //! checks of initialization (each value's own check is its row's, [`super::variables::TABLE`]).
 
-use super::variables::{rig_spec, DEFAULT_FIDELITY};
 use crate::fidelity::FidelitySettings;
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::{Envelope, Fidelity};
+use pinjoint::rig::params::{RigParamSpec, RIG_PARAMS};
 use pinjoint::rig::{Formulation, Inputs, Method, RigConfig, RigParams};
+
+/// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
+/// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
+/// 1-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s).
+/// Speeds below speed_min (around every reversal) and points outside it are answered by
+/// the full solve (logged once).
+pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([1e3, 100e3, 1e-3, 10.0]);
+
+/// The row of [`RIG_PARAMS`] with `key`.
+pub fn rig_spec(key: &str) -> &'static RigParamSpec {
+    RIG_PARAMS.iter().find(|s| s.key == key).expect("a [rig] key")
+}
 
 /// Every value a host can set, as the model holds it (Booleans and Integers as f64).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -20,7 +20,7 @@
 
 use super::settings::Settings;
 use crate::declare::declare;
-use crate::fidelity::{self, FidelitySettings};
+use crate::fidelity;
 use crate::inputs::{FINITE, LOAD_RULE};
 use crate::parameters::declared_bounds;
 use crate::table::{Access, Row, Rule, Table};
@@ -29,18 +29,13 @@ use pinjoint::rig::params::{RigParamSpec, RigParams, RIG_PARAMS};
 use pinjoint::rig::Sample;
 use std::sync::LazyLock;
 
+pub use super::settings::{rig_spec, DEFAULT_FIDELITY};
+
 /// Version of the serialized state's layout (3: the `temperature` input is the last setting).
 pub const STATE_VERSION: u8 = 3;
 
 /// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
 pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
-
-/// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
-/// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
-/// 1-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s).
-/// Speeds below speed_min (around every reversal) and points outside it are answered by
-/// the full solve (logged once).
-pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([1e3, 100e3, 1e-3, 10.0]);
 
 /// The outputs of the last sample: the rig's [`Sample`] and the minimum film from the
 /// joint. All 0 before the first sample.
@@ -93,11 +88,6 @@ pub static UNITS: LazyLock<Vec<UnitDef>> = LazyLock::new(|| crate::units::used_b
 /// Rows of [`RIG_PARAMS`] that are `rig.<key>` parameters.
 pub fn rig_rows() -> impl Iterator<Item = usize> {
     (0..RIG_PARAMS.len()).filter(|&i| !NOT_RIG_PARAMETERS.contains(&RIG_PARAMS[i].key))
-}
-
-/// The row of [`RIG_PARAMS`] with `key`.
-pub fn rig_spec(key: &str) -> &'static RigParamSpec {
-    RIG_PARAMS.iter().find(|s| s.key == key).expect("a [rig] key")
 }
 
 /// `rig.formulation`: the codes of the former Integer parameter.
