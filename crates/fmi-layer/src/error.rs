@@ -11,7 +11,7 @@
 
 use crate::fmi2::interface::Interface;
 use crate::fmi2::model::ModelError;
-use numfmt::Num;
+use crate::fmt::Num;
 use std::ffi::c_int;
 use std::fmt;
 

@@ -157,7 +157,7 @@ impl Logger {
     fn emit(&self, status: Status, c: Category, message: &str) {
         let category = c_text(c.name());
         // Numbers in the short round-trip form however the message was built (no 309 digits).
-        let message = numfmt::short_numbers(message);
+        let message = crate::fmt::short_numbers(message);
         match self.callback {
             Sink::Fmi2(cb) => {
                 // '#' introduces a value-reference reference in FMI 2.0 messages; "##" is a literal '#'.
@@ -187,7 +187,7 @@ pub fn c_text(s: &str) -> CString {
 /// A number for messages: plain decimal in the everyday range, scientific
 /// notation for very small or very large magnitudes (5e-324, not 323 zeros).
 pub fn show(v: f64) -> String {
-    numfmt::Num(v).to_string()
+    crate::fmt::Num(v).to_string()
 }
 
 #[cfg(test)]

@@ -5,14 +5,7 @@ use crate::fidelity::FidelitySettings;
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::{Envelope, Fidelity};
 use pinjoint::rig::params::{RigParamSpec, RIG_PARAMS};
-use pinjoint::rig::{Formulation, Inputs, Method, RigConfig, RigParams};
-
-/// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
-/// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
-/// 1-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s).
-/// Speeds below speed_min (around every reversal) and points outside it are answered by
-/// the full solve (logged once).
-pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([1e3, 100e3, 1e-3, 10.0]);
+use pinjoint::rig::{Formulation, Inputs, Method, RigConfig};
 
 /// The row of [`RIG_PARAMS`] with `key`.
 pub fn rig_spec(key: &str) -> &'static RigParamSpec {
@@ -40,21 +33,6 @@ pub struct Settings {
     /// The `temperature` input (K), the lubricant temperature (`cfg.model.lubricant.temperature`
     /// is unused, as `cfg.rig.load` is).
     pub temperature: f64,
-}
-
-impl Default for Settings {
-    fn default() -> Self {
-        Settings {
-            cfg: RigConfig::default(),
-            use_command_input: false,
-            formulation: 0.0,
-            method: 0.0,
-            load: RigParams::default().load,
-            command_angle: 0.0,
-            fidelity: DEFAULT_FIDELITY,
-            temperature: pinjoint::params::DEFAULT_TEMPERATURE,
-        }
-    }
 }
 
 impl Settings {

@@ -20,22 +20,29 @@
 
 use super::settings::Settings;
 use crate::declare::declare;
-use crate::fidelity;
+use crate::fidelity::{self, FidelitySettings};
 use crate::inputs::{FINITE, LOAD_RULE};
 use crate::parameters::declared_bounds;
 use crate::table::{Access, Row, Rule, Table};
 use fmi_layer::fmi2::variables::{Causality, EnumType, Kind, UnitDef, Variable};
 use pinjoint::rig::params::{RigParamSpec, RigParams, RIG_PARAMS};
-use pinjoint::rig::Sample;
+use pinjoint::rig::{RigConfig, Sample};
 use std::sync::LazyLock;
 
-pub use super::settings::{rig_spec, DEFAULT_FIDELITY};
+pub use super::settings::rig_spec;
 
 /// Version of the serialized state's layout (3: the `temperature` input is the last setting).
 pub const STATE_VERSION: u8 = 3;
 
 /// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
 pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
+
+/// Start values of the fidelity parameters: the full solve (today's rig, bit for bit);
+/// tolerance 1e-4 (PinJoint's); an envelope wide enough for the rig's strokes and loads,
+/// 1-100 kN and |omega| 1e-3-10 rad/s (the default 1 Hz, 40 deg stroke peaks at 4.4 rad/s).
+/// Speeds below speed_min (around every reversal) and points outside it are answered by
+/// the full solve (logged once).
+pub const DEFAULT_FIDELITY: FidelitySettings = FidelitySettings::full([1e3, 100e3, 1e-3, 10.0]);
 
 /// The outputs of the last sample: the rig's [`Sample`] and the minimum film from the
 /// joint. All 0 before the first sample.
@@ -72,6 +79,22 @@ pub struct Values {
     pub settings: Settings,
     /// The outputs of the last sample.
     pub out: Outputs,
+}
+
+impl Default for Settings {
+    /// The start value of every input and parameter.
+    fn default() -> Self {
+        Settings {
+            cfg: RigConfig::default(),
+            use_command_input: false,
+            formulation: 0.0,
+            method: 0.0,
+            load: RigParams::default().load,
+            command_angle: 0.0,
+            fidelity: DEFAULT_FIDELITY,
+            temperature: pinjoint::params::DEFAULT_TEMPERATURE,
+        }
+    }
 }
 
 /// The table, in modelDescription order.
