@@ -38,20 +38,6 @@ ALLOWED = {
         "fit.rs lib.rs prepare.rs result.rs rig_fit.rs",
         "order:lib.rs",
     ],
-    "crates/fmi-layer": [
-        "error.rs fmi2/bytes.rs fmi2/instance.rs fmi2/logging.rs fmi2/model.rs fmi2/snapshot.rs fmi2/variables.rs lib.rs",
-        "order:fmi2/api/mod.rs",
-        "order:fmi2/mod.rs",
-        "order:fmi3/mod.rs",
-    ],
-    "crates/fmu": [
-        "inputs.rs table.rs",
-        "pin_joint_rig/settings.rs pin_joint_rig/variables.rs",
-        "lib.rs pass_through.rs pin_joint/doc.rs pin_joint/mod.rs pin_joint_rig/doc.rs pin_joint_rig/mod.rs",
-        "order:lib.rs",
-        "order:pin_joint/mod.rs",
-        "order:pin_joint_rig/mod.rs",
-    ],
 }
 
 

@@ -19,7 +19,7 @@
 //! [`export_fmi2!`], the one entry point that must choose a model by GUID.
 
 // Modules in dependency order, lowest first; each file uses only files listed before it:
-// `fmt` (numfmt); in `fmi2`, the leaves `types`, `state`, `logging`, `model`, `interface`;
+// `fmt` (numfmt, another crate); in `fmi2`, the leaves `types`, `state`, `logging`, `interface`, `model`;
 // then `error` (which uses only those leaves); then the rest of `fmi2` (`bytes`, `snapshot`,
 // `variables`, `instance`, `api`), the shared XML writer `xml`, `fmi2::xml`, and `fmi3`.
 pub mod fmi2;
@@ -31,4 +31,6 @@ mod tests;
 
 pub use error::{CallError, StateFormatError, XmlError};
 
-use numfmt as fmt;
+// The number formatting every message uses (`crate::fmt::…`): another crate's, so no file of
+// this crate depends on the root through it.
+pub(crate) use numfmt as fmt;

@@ -3,10 +3,10 @@
 
 use crate::declare::declare;
 use crate::table::{Row, Rule};
-use fmi_layer::fmi2::logging::show;
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use fmi_layer::fmi2::variables::{Causality, Kind};
 use pinjoint::params::{DEFAULT_TEMPERATURE, MAX_TEMPERATURE, MIN_TEMPERATURE};
+
+pub use crate::capacity::check_capacity;
 
 /// The rule of the `load` input (N): any finite number, its magnitude the load.
 pub const LOAD_RULE: Rule = Rule::Finite("is invalid: it must be a finite number (a negative value is taken as its magnitude)");
@@ -22,14 +22,4 @@ pub fn temperature<S: 'static>(vr: u32, description: &str, get: fn(&S) -> f64, s
     v.min = Some(MIN_TEMPERATURE);
     v.max = Some(MAX_TEMPERATURE);
     Row::new(v, get, set, Rule::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE))
-}
-
-/// A load at or beyond the joint's asperity capacity ([`pinjoint::Joint::capacity`]) is an
-/// error naming both.
-pub fn check_capacity(load: f64, capacity: f64) -> ModelResult<()> {
-    if load.abs() >= capacity {
-        let rule = format!("is beyond the asperity model's capacity of {} N for these parameters", show(capacity));
-        return Err(ModelError::invalid("input", "load", load, "N", rule));
-    }
-    Ok(())
 }

@@ -189,7 +189,7 @@ impl<S> Table<S> {
     pub fn check_input(&self, i: usize, x: f64, capacity: Option<f64>) -> ModelResult<()> {
         self.check(i, x)?;
         match capacity {
-            Some(c) if self.rows[i].var.name == "load" => crate::inputs::check_capacity(x, c),
+            Some(c) if self.rows[i].var.name == "load" => crate::capacity::check_capacity(x, c),
             _ => Ok(()),
         }
     }

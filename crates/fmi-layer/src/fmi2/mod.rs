@@ -14,8 +14,8 @@
 pub mod types;
 pub mod state;
 pub mod logging;
-pub mod model;
 pub mod interface;
+pub mod model;
 pub mod bytes;
 pub mod snapshot;
 pub mod variables;

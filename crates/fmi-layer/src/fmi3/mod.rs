@@ -14,9 +14,9 @@
 //! Enumeration → Enumeration (accessed with `fmi3GetInt64`/`fmi3SetInt64`). No clocks, no
 //! scheduled execution, no event mode in Co-Simulation (`hasEventMode = false`).
 
-pub mod api;
 pub mod types;
 pub mod xml;
+pub mod api;
 
 /// Export `fmi3InstantiateModelExchange` and `fmi3InstantiateCoSimulation` for the models
 /// `$registry()` returns (a `fn() -> Vec<&'static ModelInfo>`), at the root of the model

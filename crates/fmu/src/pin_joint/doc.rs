@@ -3,9 +3,8 @@
 
 use pinjoint::zero_velocity::band::DEFAULT_SPEED_BAND;
 use pinjoint::zero_velocity::Presliding;
-use super::INFO;
 use crate::doc_table::{head, rows, Style};
-use fmi_layer::fmi2::variables::Causality;
+use fmi_layer::fmi2::variables::{Causality, ModelInfo};
 use pinjoint::{Joint, Params};
 use std::fmt::Write;
 
@@ -40,10 +39,10 @@ pub fn explicit_min_inertia(law: &Presliding, ts: f64, h: f64) -> f64 {
     (k * h * law.damping_time).max(k * h * (h + law.damping_time) / 2.0)
 }
 
-/// The HTML page.
-pub fn index_html() -> String {
-    let v = &INFO.variables;
-    let (guid, version, requirements) = (INFO.guid(), INFO.version, crate::requirements_html());
+/// The HTML page of `info` (the PinJoint model's description, [`super::INFO`]).
+pub fn index_html(info: &ModelInfo) -> String {
+    let v = &info.variables;
+    let (guid, version, requirements) = (info.guid(), info.version, crate::requirements_html());
     let (platforms, extensions) = (crate::platforms_doc::PLATFORMS_HTML, crate::extensions_doc::EXTENSIONS_HTML);
     let validity = crate::validity::html(false);
     let [inputs, outputs, params] = [Causality::Input, Causality::Output, Causality::Parameter].map(|c| rows(v, c, Style::Plain));

@@ -3,11 +3,14 @@
 //! torque and the model's other quantities; parameters the 26 keys of the
 //! parameter file plus the zero-velocity treatment ([`zero_velocity`]).
 
-pub mod doc;
-pub mod model;
-pub mod variables;
-pub mod partials;
+// Modules in dependency order, lowest first: the zero-velocity rows and friction, the variable
+// table, the outputs at a set of values, the directional derivatives, the model, its page.
 pub mod zero_velocity;
+pub mod variables;
+mod evaluate;
+pub mod partials;
+pub mod model;
+pub mod doc;
 
 use fmi_layer::fmi2::variables::ModelInfo;
 use std::sync::LazyLock;
@@ -25,6 +28,6 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
         (variables::table(), &variables::UNITS),
         (0.0, 10.0, 1e-3),
         || Box::new(model::PinJointModel::new()),
-        doc::index_html,
+        || doc::index_html(&INFO),
     )
 });

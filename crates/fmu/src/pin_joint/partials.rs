@@ -17,7 +17,7 @@
 //! angle partial is the presliding tangent stiffness in the direction of motion (that of ω;
 //! [`pinjoint::zero_velocity::joint::tangent_held`]): the one a linearly implicit host needs.
 
-use super::model::{operating_point, outputs};
+use super::evaluate::{operating_point, outputs};
 use super::variables::{Values, TABLE};
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::Evaluator;

@@ -206,7 +206,7 @@ fn rows() -> Vec<Row<Values>> {
         "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [238.15, 673.15] K (-35 to 400 C; below, the film at 20 kN passes the diametral clearance at rig speeds: see lubricant.temperature). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
     rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
-    rows.extend(zero_velocity::rows(201, p + 12));
+    rows.extend(zero_velocity::rows(201, p + 12, |s: &Values| &s.zv, |s| &mut s.zv));
     rows.extend(presliding_rows(p + 16));
     rows
 }

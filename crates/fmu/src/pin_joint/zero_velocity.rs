@@ -14,7 +14,6 @@
 //! continuous state `presliding_torque` with derivative `der(presliding_torque)`; the angle is
 //! not used.
 
-use super::variables::Values;
 use crate::declare::declare;
 use crate::table::{Row, Rule};
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
@@ -90,8 +89,8 @@ pub fn band_friction(omega: f64, width: f64, sliding: f64, edge: impl FnOnce() -
 }
 
 /// The parameter rows `zero_velocity.model` and the three presliding parameters at value
-/// references `vr`.. and state slots `slot`..
-pub fn rows(vr: u32, slot: usize) -> Vec<Row<Values>> {
+/// references `vr`.. and state slots `slot`..; `at` finds the settings in the model's values.
+pub fn rows<S: 'static>(vr: u32, slot: usize, at: fn(&S) -> &ZeroVelocitySettings, at_mut: fn(&mut S) -> &mut ZeroVelocitySettings) -> Vec<Row<S>> {
     let d = Presliding::default();
     let mut model = declare("zero_velocity.model", vr, Kind::Enumeration(&MODEL_TYPE), Causality::Parameter, None, None,
         "Zero-velocity treatment: 0 = band (stateless ramp inside zero_velocity.speed_band; a drive below breakaway creeps), \
@@ -106,27 +105,27 @@ pub fn rows(vr: u32, slot: usize) -> Vec<Row<Values>> {
         v
     };
     let rows = vec![
-        Row::new(model, |s: &Values| s.zv.code, |s, x| s.zv.code = x, Rule::Code(&MODEL_TYPE)),
+        Row::new(model, move |s| at(s).code, move |s, x| at_mut(s).code = x, Rule::Code(&MODEL_TYPE)),
         Row::new(
             real(presliding::ANGLE_NAME, vr + 1, Some("rad"), Some("deg"), d.angle, (None, Some(1.0)),
                 "Presliding angle phi_s: the elastic deflection at which the presliding torque would reach the sliding torque (stiffness k = T/phi_s); in (0, 1] rad. \
                  The default 1.5e-3 rad (42 um at the pin surface) keeps explicit hosts stable at 10 ms steps for J >= 20 kg.m2 up to 60 kN"),
-            |s: &Values| s.zv.law.angle,
-            |s, x| s.zv.law.angle = x,
+            move |s| at(s).law.angle,
+            move |s, x| at_mut(s).law.angle = x,
             Rule::OpenClosed(0.0, 1.0),
         ),
         Row::new(
             real(presliding::ELASTIC_LIMIT_NAME, vr + 2, None, None, d.elastic_limit, (Some(0.0), None),
                 "Elastic limit beta: fraction of the sliding torque up to which presliding is purely elastic (no drift under any drive below beta T); in [0, 1)"),
-            |s: &Values| s.zv.law.elastic_limit,
-            |s, x| s.zv.law.elastic_limit = x,
+            move |s| at(s).law.elastic_limit,
+            move |s, x| at_mut(s).law.elastic_limit = x,
             Rule::Any,
         ),
         Row::new(
             real(presliding::DAMPING_TIME_NAME, vr + 3, Some("s"), Some("ms"), d.damping_time, (Some(0.0), Some(1e3)),
                 "Presliding damping time t_d: damping c = t_d k of the elastic deflection rate; in [0, 1000] s"),
-            |s: &Values| s.zv.law.damping_time,
-            |s, x| s.zv.law.damping_time = x,
+            move |s| at(s).law.damping_time,
+            move |s, x| at_mut(s).law.damping_time = x,
             Rule::Any,
         ),
     ];

@@ -1,9 +1,8 @@
 //! `documentation/index.html` of the PinJointRig FMU, generated from the same
 //! variable table as the modelDescription, with numbers computed by the library.
 
-use super::INFO;
 use crate::doc_table::{head, rows, Style};
-use fmi_layer::fmi2::variables::Causality;
+use fmi_layer::fmi2::variables::{Causality, ModelInfo};
 use pinjoint::rig::RigParams;
 use pinjoint::{Joint, Params};
 
@@ -34,12 +33,12 @@ at 20 kN): explicit integrators take steps of that size while the joint &ldquo;s
 RK4 step 1e-4 s, events located to 1e-10 s, internal segments of 0.05 s.</li>
 </ul>"#;
 
-/// The HTML page.
-pub fn index_html() -> String {
+/// The HTML page of `info` (the PinJointRig model's description, [`super::INFO`]).
+pub fn index_html(info: &ModelInfo) -> String {
     let j = Joint::new(&Params::default()).expect("defaults are valid");
     let r = RigParams::default();
-    let v = &INFO.variables;
-    let (guid, version, requirements) = (INFO.guid(), INFO.version, crate::requirements_html());
+    let v = &info.variables;
+    let (guid, version, requirements) = (info.guid(), info.version, crate::requirements_html());
     let (platforms, extensions) = (crate::platforms_doc::PLATFORMS_HTML, crate::extensions_doc::EXTENSIONS_HTML);
     let validity = crate::validity::html(true);
     let [inputs, outputs, params] = [Causality::Input, Causality::Output, Causality::Parameter].map(|c| rows(v, c, Style::Typed));
@@ -174,11 +173,12 @@ mod tests {
 
     #[test]
     fn every_variable_and_output_is_documented() {
-        let html = super::index_html();
-        for v in &super::INFO.variables {
+        let info = &*crate::pin_joint_rig::INFO;
+        let html = super::index_html(info);
+        for v in &info.variables {
             assert!(html.contains(&format!("<code>{}</code>", v.name)), "{}", v.name);
         }
-        assert_eq!(super::INFO.variables.iter().filter(|v| v.causality == Causality::Output).count(), 15);
+        assert_eq!(info.variables.iter().filter(|v| v.causality == Causality::Output).count(), 15);
         assert!(html.contains("Pan &amp; Hamrock") && html.contains("Roelands' temperature relation") && html.contains("Chevalier"));
         assert!(html.contains("Routh") && html.contains("67.2 N&middot;m at 20 kN"), "breakaway torque from the library");
     }

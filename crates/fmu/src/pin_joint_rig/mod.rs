@@ -5,11 +5,13 @@
 //! quantities and the energy balance. Served by the same shared library as
 //! PinJoint (`fmi2Instantiate` picks the model by GUID).
 
-pub mod doc;
-pub mod model;
+// Modules in dependency order, lowest first: the settings, the variable table, the FMU
+// state, the model, its page.
 pub mod settings;
-pub mod state;
 pub mod variables;
+pub mod state;
+pub mod model;
+pub mod doc;
 
 use fmi_layer::fmi2::variables::ModelInfo;
 use std::sync::LazyLock;
@@ -26,6 +28,6 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| {
         (variables::table(), &variables::UNITS),
         (0.0, 3.0, 1e-3),
         || Box::new(model::RigModel::new()),
-        doc::index_html,
+        || doc::index_html(&INFO),
     )
 });

@@ -1,11 +1,16 @@
 //! The rig FMU's settings: every parameter and input value an instance holds, with the
 //! checks of initialization (each value's own check is its row's, [`super::variables::TABLE`]).
 
-use super::variables::{rig_spec, DEFAULT_FIDELITY};
 use crate::fidelity::FidelitySettings;
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::{Envelope, Fidelity};
-use pinjoint::rig::{Formulation, Inputs, Method, RigConfig, RigParams};
+use pinjoint::rig::params::{RigParamSpec, RIG_PARAMS};
+use pinjoint::rig::{Formulation, Inputs, Method, RigConfig};
+
+/// The row of [`RIG_PARAMS`] with `key`.
+pub fn rig_spec(key: &str) -> &'static RigParamSpec {
+    RIG_PARAMS.iter().find(|s| s.key == key).expect("a [rig] key")
+}
 
 /// Every value a host can set, as the model holds it (Booleans and Integers as f64).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -28,21 +33,6 @@ pub struct Settings {
     /// The `temperature` input (K), the lubricant temperature (`cfg.model.lubricant.temperature`
     /// is unused, as `cfg.rig.load` is).
     pub temperature: f64,
-}
-
-impl Default for Settings {
-    fn default() -> Self {
-        Settings {
-            cfg: RigConfig::default(),
-            use_command_input: false,
-            formulation: 0.0,
-            method: 0.0,
-            load: RigParams::default().load,
-            command_angle: 0.0,
-            fidelity: DEFAULT_FIDELITY,
-            temperature: pinjoint::params::DEFAULT_TEMPERATURE,
-        }
-    }
 }
 
 impl Settings {

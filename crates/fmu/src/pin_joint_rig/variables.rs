@@ -26,8 +26,10 @@ use crate::parameters::declared_bounds;
 use crate::table::{Access, Row, Rule, Table};
 use fmi_layer::fmi2::variables::{Causality, EnumType, Kind, UnitDef, Variable};
 use pinjoint::rig::params::{RigParamSpec, RigParams, RIG_PARAMS};
-use pinjoint::rig::Sample;
+use pinjoint::rig::{RigConfig, Sample};
 use std::sync::LazyLock;
+
+pub use super::settings::rig_spec;
 
 /// Version of the serialized state's layout (3: the `temperature` input is the last setting).
 pub const STATE_VERSION: u8 = 3;
@@ -83,6 +85,22 @@ pub struct Values {
     pub out: Outputs,
 }
 
+impl Default for Settings {
+    /// The start value of every input and parameter.
+    fn default() -> Self {
+        Settings {
+            cfg: RigConfig::default(),
+            use_command_input: false,
+            formulation: 0.0,
+            method: 0.0,
+            load: RigParams::default().load,
+            command_angle: 0.0,
+            fidelity: DEFAULT_FIDELITY,
+            temperature: pinjoint::params::DEFAULT_TEMPERATURE,
+        }
+    }
+}
+
 /// The table, in modelDescription order.
 pub static TABLE: LazyLock<Table<Values>> = LazyLock::new(|| Table::new(rows()));
 
@@ -97,11 +115,6 @@ pub static UNITS: LazyLock<Vec<UnitDef>> = LazyLock::new(|| crate::units::used_b
 /// Rows of [`RIG_PARAMS`] that are `rig.<key>` parameters.
 pub fn rig_rows() -> impl Iterator<Item = usize> {
     (0..RIG_PARAMS.len()).filter(|&i| !NOT_RIG_PARAMETERS.contains(&RIG_PARAMS[i].key))
-}
-
-/// The row of [`RIG_PARAMS`] with `key`.
-pub fn rig_spec(key: &str) -> &'static RigParamSpec {
-    RIG_PARAMS.iter().find(|s| s.key == key).expect("a [rig] key")
 }
 
 /// `rig.formulation`: the codes of the former Integer parameter.
