@@ -28,23 +28,24 @@
 pub mod fast_math;
 pub mod newton;
 pub mod starvation;
+pub mod roelands_temperature;
 pub mod params;
 // The paper's equations:
 pub mod gw;
-pub mod contact;
 pub mod viscosity;
+pub mod contact;
 pub mod film;
 pub mod min_film;
 pub mod asperity;
 pub mod mixed;
 pub mod solve_start;
+pub mod paper;
+pub mod validity;
 pub mod joint;
 // What the front ends use:
-pub mod paper;
 pub mod fidelity;
 pub mod record;
 pub mod rig;
-pub mod validity;
 pub mod zero_velocity;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).

@@ -420,7 +420,8 @@ impl Params {
             return Err(ParamError::NoClearance { pin_radius: g.pin_radius, bush_radius: g.bush_radius });
         }
         // η0 at the lubricant temperature (Roelands' temperature relation) must stay a liquid's.
-        let eta = crate::viscosity::at_temperature(&self.lubricant).viscosity;
+        let l = &self.lubricant;
+        let eta = crate::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, l.temperature, l.reference_temperature, l.roelands_temperature_index);
         if !(eta.is_finite() && eta > 0.0 && eta <= GLASS_VISCOSITY) {
             let l = &self.lubricant;
             return Err(ParamError::OutOfRange {

@@ -87,9 +87,8 @@ pub fn at_temperature(l: &Lubricant) -> Lubricant {
         return *l;
     }
     let f = temperature_factor(l);
-    let ln_ratio = (l.viscosity / l.roelands_viscosity_limit).ln() * f;
     Lubricant {
-        viscosity: l.roelands_viscosity_limit * ln_ratio.exp(),
+        viscosity: crate::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, l.temperature, l.reference_temperature, l.roelands_temperature_index),
         pressure_viscosity_coefficient: l.pressure_viscosity_coefficient * f,
         ..*l
     }
@@ -97,8 +96,7 @@ pub fn at_temperature(l: &Lubricant) -> Lubricant {
 
 /// f = [(135 + θ)/(135 + θ_ref)]^−S0 of [`at_temperature`] (1 at T = T_ref).
 pub fn temperature_factor(l: &Lubricant) -> f64 {
-    const ZERO_C: f64 = 273.15;
-    ((135.0 + l.temperature - ZERO_C) / (135.0 + l.reference_temperature - ZERO_C)).powf(-l.roelands_temperature_index)
+    crate::roelands_temperature::factor(l.temperature, l.reference_temperature, l.roelands_temperature_index)
 }
 
 #[cfg(test)]
