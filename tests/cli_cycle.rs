@@ -244,6 +244,8 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
         "fig13_torque_1Hz.svg",
         "starvation_stribeck.svg",
         "starvation_cycle_1Hz.svg",
+        "at_rest_hold.svg",
+        "at_rest_loop.svg",
     ];
     let csvs = [
         "stribeck.csv",
@@ -257,6 +259,8 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
         "starvation_stribeck.csv",
         "starvation_cycle_1Hz.csv",
         "starvation_summary.csv",
+        "at_rest_hold.csv",
+        "at_rest_loop.csv",
     ];
     let names: BTreeSet<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     let expected: BTreeSet<String> = svgs.iter().chain(&csvs).chain(&["index.html", "README.md"]).map(std::string::ToString::to_string).collect();

@@ -36,8 +36,8 @@ impl Rng {
     }
 }
 
-/// The rows: the envelope's boundaries and both sides, then random points over 1-200 kN,
-/// 1e-4-100 rad/s (both signs) and a handful of temperatures in random order.
+/// The rows: the envelope's boundaries and both sides, then random points over 5-200 kN,
+/// 1e-4-3 rad/s (both signs; inside the film bound down to 250 K) and a handful of temperatures in random order.
 fn rows(seed: u64) -> Vec<(f64, f64, f64)> {
     let w_max = validity::SLIDING_SPEED.hi / 0.028;
     let mut v = vec![
@@ -53,10 +53,11 @@ fn rows(seed: u64) -> Vec<(f64, f64, f64)> {
         (20e3, 0.5, 273.15f64.next_down()),
     ];
     let mut r = Rng(seed);
-    let temps: Vec<f64> = (0..4).map(|_| 230.0 + 120.0 * r.next()).chain([293.15, 253.15]).collect();
+    let temps: Vec<f64> = (0..4).map(|_| 250.0 + 100.0 * r.next()).chain([293.15, 253.15]).collect();
     for _ in 0..120 {
-        let load = r.log_uniform(1e3, 2e5);
-        let w = r.log_uniform(1e-4, 100.0) * if r.next() < 0.5 { -1.0 } else { 1.0 };
+        // Inside the film bound (tests/ranges.rs) down to 250 K: loads from 5 kN, speeds to 3 rad/s.
+        let load = r.log_uniform(5e3, 2e5);
+        let w = r.log_uniform(1e-4, 3.0) * if r.next() < 0.5 { -1.0 } else { 1.0 };
         let t = temps[(r.next() * temps.len() as f64) as usize % temps.len()];
         v.push((load, w, t));
     }
@@ -80,7 +81,8 @@ fn sweep_with_temperatures_at_every_fidelity() {
     let pts = rows(0x5eed_2025);
     let (_d, input) = temp_file("pts.csv", &csv_of(&pts));
     let tol = 1e-3;
-    let env = ["--envelope-load", "5000:60000", "--envelope-speed", "0.01:10"];
+    // A table envelope whose margins stay inside the film bound at the rows' coldest temperature (250 K).
+    let env = ["--envelope-load", "10000:60000", "--envelope-speed", "0.01:1"];
     let joints: std::collections::HashMap<u64, Joint> = pts.iter().map(|&(_, _, t)| (t.to_bits(), at(t))).collect();
     for fidelity in ["full", "table", "boundary", "auto"] {
         let mut args = vec!["sweep", "--input", input.to_str().unwrap(), "--fidelity", fidelity, "--tolerance", "1e-3"];

@@ -379,7 +379,8 @@ fn extreme_valid_inputs_under_presliding_are_finite_and_bounded() {
     t += 0.1;
     i.get_real(&outputs(), &mut v).unwrap();
     assert!(v[..9].iter().all(|&x| x == 0.0), "{v:?}");
-    for (load, w) in [(5e8, 1.0), (20e3, 1e6), (5e8, 1e6), (5e8, -1e6), (1e-30, 1e6), (60e3, 1e-300), (1e-300, 0.0)] {
+    // Extreme but inside the film bound (a film beyond the clearance is an error: tests/ranges.rs).
+    for (load, w) in [(5e8, 1.0), (5e8, -1e3), (60e3, 1e-300), (1e-300, 0.0)] {
         i.set_real(&[2, 3], &[w, load]).unwrap();
         i.do_step(t, 0.1, true).unwrap();
         t += 0.1;

@@ -24,7 +24,7 @@ fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
 }
 
 fn temperature() -> impl Strategy<Value = f64> {
-    prop_oneof![150.0f64..673.15, 220.0f64..380.0, prop::sample::select(vec![273.15, 288.15, 293.15, 298.15])]
+    prop_oneof![238.15f64..673.15, 240.0f64..380.0, prop::sample::select(vec![273.15, 288.15, 293.15, 298.15])]
 }
 
 proptest! {
@@ -44,7 +44,7 @@ proptest! {
         for (temp, load, w, drift_steps) in steps {
             // A drift of 1e-3 K per step ending at `temp`, then the comparison.
             for k in (0..drift_steps).rev() {
-                let tk = (temp - 1e-3 * k as f64).max(138.2);
+                let tk = (temp - 1e-3 * k as f64).max(238.15);
                 prop_assert_eq!(set(c, "temperature", tk), OK);
                 prop_assert_eq!(set(c, "load", load), OK);
                 prop_assert_eq!(set(c, "angular_velocity", w), OK);
@@ -89,7 +89,7 @@ fn validity_output_at_every_boundary_and_one_log_per_excursion() {
         (20e3, 1.0, 298.15f64.next_up(), Validity::Extrapolation),
         (20e3, 1.0, 273.15, Validity::Extrapolation),
         (20e3, 1.0, 273.15f64.next_down(), Validity::KnownWrong),
-        (20e3, 0.21, 219.15, Validity::KnownWrong),
+        (20e3, 0.21, 243.15, Validity::KnownWrong),
         (0.0, 1.0, 293.15, Validity::Extrapolation),
     ];
     let h = Host::new();
@@ -124,11 +124,11 @@ fn validity_output_at_every_boundary_and_one_log_per_excursion() {
 #[test]
 fn cold_soak_is_said_known_wrong() {
     let h = Host::new();
-    let c = logged(&h, &[("temperature", 233.15), ("angular_velocity", 0.21)]);
+    let c = logged(&h, &[("temperature", 243.15), ("angular_velocity", 0.21)]);
     h.step(c, 0.0, 0.01);
     assert_eq!(get(c, "validity"), 2.0);
     let m = h.messages().into_iter().find(|m| m.text.starts_with("validity")).expect("logged");
-    assert!(m.text.contains("too LOW") && m.text.contains("temperature = 233.15 K"), "{}", m.text);
+    assert!(m.text.contains("too LOW") && m.text.contains("temperature = 243.15 K"), "{}", m.text);
     free(c);
 }
 

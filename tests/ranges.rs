@@ -287,7 +287,11 @@ fn the_load_is_a_magnitude_as_the_fmu_description_says() {
         out
     };
     assert_eq!(run(-30e3), run(30e3));
-    assert!(run(0.0).iter().all(|&x| x == 0.0));
+    // Unloaded: every output 0 but `validity` (last), which says the load is outside 5-60 kN.
+    let unloaded = run(0.0);
+    let (validity, rest) = unloaded.split_last().unwrap();
+    assert!(rest.iter().all(|&x| x == 0.0), "{unloaded:?}");
+    assert_eq!(*validity, 1.0);
 }
 
 /// Issue 23 item 3 through the FMU: a megabyte GUID, resource location or instance name is

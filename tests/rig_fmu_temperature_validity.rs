@@ -18,7 +18,7 @@ proptest! {
     #[test]
     fn a_temperature_change_continues_as_a_fresh_rig(
         t1 in 0.05f64..0.8,
-        temps in prop::collection::vec(prop_oneof![230.0f64..360.0, Just(293.15)], 1..4),
+        temps in prop::collection::vec(prop_oneof![255.0f64..360.0, Just(293.15)], 1..4),
         step in prop::sample::select(vec![1e-3, 7e-3, 0.02]),
         fidelity in prop::sample::select(vec![0.0, 2.0]),
     ) {
