@@ -198,7 +198,7 @@ impl Presliding {
         self.stiffness(bound) * omega * self.fraction(tau, dir, bound)
     }
 
-    /// The friction torque on the pin (N·m): −(clamp(τ, −T, T) + t_d·k·ω·max(g, 0)).
+    /// The friction torque on the pin (N·m): −clamp(clamp(τ, −T, T) + t_d·k·ω·max(g, 0), −T, T).
     #[inline]
     pub fn torque<S: Scalar>(&self, tau: S, omega: S, bound: S) -> S {
         if unloaded(bound.re()) {
@@ -211,7 +211,9 @@ impl Presliding {
         }
         // The elastic deflection rate is at most ω (g > 1 only relaxes an excess state).
         let g = if g.re() > 1.0 { S::c(1.0) } else { g };
-        -(held + S::c(self.damping_time) * self.stiffness(bound) * omega * g)
+        // The contact transmits at most the sliding torque: the damping adds to the held
+        // torque up to the bound (Coulomb's limit on the whole friction torque).
+        -clamp(held + S::c(self.damping_time) * self.stiffness(bound) * omega * g, bound)
     }
 
     /// The power the joint dissipates (W) at the presliding torque `tau`, `omega` and `bound`:
@@ -230,9 +232,14 @@ impl Presliding {
         }
         let c = S::c(self.damping_time) * self.stiffness(bound);
         let g = if g.re() > 1.0 { S::c(1.0) } else { g };
+        // The friction's power F·ω (F = −torque, the damping capped at the bound) less the
+        // elastic power held·ż stored in the deflection: the plastic part and the damping part.
+        let total = clamp(held + c * omega * g, bound);
         let plastic = held * omega * (S::c(1.0) - g);
         let plastic = if plastic.re() > 0.0 { plastic } else { S::c(0.0) };
-        plastic + c * g * omega * omega
+        let damping = (total - held) * omega;
+        let damping = if damping.re() > 0.0 { damping } else { S::c(0.0) };
+        plastic + damping
     }
 }
 

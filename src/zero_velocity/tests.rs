@@ -161,7 +161,7 @@ fn the_rate_is_the_derivative_of_the_update() {
 }
 
 #[test]
-fn the_torque_exceeds_the_bound_by_at_most_the_damping_term() {
+fn the_torque_never_exceeds_the_sliding_torque() {
     let mut d = Draw(4);
     let l = Presliding::default();
     for _ in 0..2000 {
@@ -169,8 +169,8 @@ fn the_torque_exceeds_the_bound_by_at_most_the_damping_term() {
         let tau = d.range(-2.0, 2.0) * t;
         let w = d.range(-10.0, 10.0);
         let torque = l.torque(tau, w, t);
-        let damping = l.damping_time * t / l.angle * w.abs();
-        assert!(torque.abs() <= t + damping * (1.0 + 1e-15), "{torque} T {t} w {w}");
+        // Never beyond the sliding torque: the damping is capped there.
+        assert!(torque.abs() <= t, "{torque} T {t} w {w}");
         // At rest only the held torque, never above the bound.
         assert!(l.torque(tau, 0.0, t).abs() <= t);
     }
@@ -322,11 +322,11 @@ fn the_dissipation_is_nonnegative_and_the_sliding_power_in_steady_sliding() {
         let torque = l.torque(tau, w, t);
         assert!(p <= (torque * w).abs() + t * w.abs() * (1.0 + 1e-12), "{p}");
     }
-    for &w in &[0.3_f64, -0.3] {
+    for &w in &[0.01_f64, -0.01] {
         let t = 67.2;
         let held = w.signum() * t;
         assert_eq!(l.dissipation(held, w, t).to_bits(), (l.torque(held, w, t) * w).abs().to_bits());
-        // Elastic range: only the damping.
+        // Elastic range, below the damping's cap: only the damping.
         let c = l.damping_time * t / l.angle;
         assert!((l.dissipation(0.1 * t, w, t) - c * w * w).abs() < 1e-12 * c * w * w);
     }
@@ -341,7 +341,8 @@ fn the_angle_partial_is_the_stiffness_against_the_motion_being_made() {
     // Sliding forward at the bound: no stiffness along the motion, elastic against a reversal.
     let j = PreslidingJoint::at_state(l, t, 0.0);
     assert_eq!(j.torque_partials(0.0, 0.5, bound).d[0], 0.0);
-    assert!((j.torque_partials(0.0, -0.5, bound).d[0] + k).abs() < 1e-9 * k);
+    // (at a slow reversal: a fast one saturates the damping at the bound, where no input moves the torque)
+    assert!((j.torque_partials(0.0, -0.01, bound).d[0] + k).abs() < 1e-9 * k);
     // At rest with nothing moving: the unloading (elastic) stiffness.
     assert!((j.torque_partials(0.0, 0.0, bound).d[0] + k).abs() < 1e-9 * k);
     let fresh = PreslidingJoint::new(l, 0.0);
@@ -349,8 +350,8 @@ fn the_angle_partial_is_the_stiffness_against_the_motion_being_made() {
     // Committed beyond a bound that has since fallen (faster sliding, lower T): the output is
     // the bound; a reversal unloads elastically from it.
     let above = PreslidingJoint::at_state(l, 1.02 * t, 0.0);
-    let j = above.torque_partials(1e-4, -0.4, bound);
-    assert_eq!(j.v, above.torque_at(1e-4, -0.4, t));
+    let j = above.torque_partials(1e-4, -0.01, bound);
+    assert_eq!(j.v, above.torque_at(1e-4, -0.01, t));
     assert!((j.d[0] + k).abs() < 1e-9 * k, "{}", j.d[0]);
 }
 
@@ -375,7 +376,7 @@ fn model_exchange_relaxes_an_excess_state_in_either_direction() {
     let t = 20.16;
     // Beyond the bound behind the motion: the state rises faster than elastic unloading.
     assert!(l.rate(-200.0, 0.05, t) > 0.05 * t / l.angle * 10.0);
-    // The torque stays within the bound plus the damping.
+    // The torque stays within the bound.
     let torque = l.torque(-200.0, 0.05, t);
-    assert!(torque.abs() <= t + l.damping_time * t / l.angle * 0.05 * (1.0 + 1e-12), "{torque}");
+    assert!(torque.abs() <= t, "{torque}");
 }

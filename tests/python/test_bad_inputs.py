@@ -85,11 +85,12 @@ def test_extreme_loads_and_speeds_give_the_library_values(unzipped, model_descri
     s.free()
 
 
-@pytest.mark.parametrize("load,omega", [(5e8, 1.0), (20e3, 1e6), (5e8, 1e6), (5e8, -1e6), (5e3, -1e6), (5e8, 0.01), (5e8, 0.0)])
+# Extreme but inside the film bound (a film beyond the clearance is an error: test_ranges.py).
+@pytest.mark.parametrize("load,omega", [(5e8, 1.0), (5e8, -1e3), (5e8, 0.01), (5e8, 0.0), (60e3, 100.0)])
 def test_extreme_loads_and_speeds_under_presliding_are_finite_and_bounded(unzipped, model_description, load, omega):
     """The default (presliding) on the same inputs after one step: finite, the library's
     values for every output the zero-velocity model does not touch, the torque within the
-    sliding torque plus the documented damping term t_d T |w| / phi_s."""
+    sliding torque (the damping is capped there)."""
     s = Slave(unzipped, model_description, "step")
     s.fmu.setReal([2, 3], [omega, load])
     s.fmu.doStep(0.1, 0.1)
@@ -100,7 +101,7 @@ def test_extreme_loads_and_speeds_under_presliding_are_finite_and_bounded(unzipp
                  "asperity_load_fraction", "mean_pressure", "sommerfeld_number"):
         assert out[name] == float(ref[name]), (name, out[name], float(ref[name]))
     t = float(ref["torque"])
-    assert abs(out["torque"]) <= t * (1 + DAMPING_TIME * abs(omega) / PRESLIDING_ANGLE) * (1 + 1e-12), (out["torque"], t)
+    assert abs(out["torque"]) <= t, (out["torque"], t)
     assert out["power_loss"] >= 0.0
     s.free()
 

@@ -141,7 +141,8 @@ pub fn write(dir: &Path, params: &Params) -> Result<Vec<PathBuf>> {
         rows.extend(ops.into_iter().map(|o| (layer, o)));
     }
     let rig_peak_rpm = 2.0 * PI * RIG_AMPLITUDE_DEG.to_radians() / RAD_S_PER_RPM;
-    mu = mu.band(RPM_RANGE.0, RPM_RANGE.1, "paper's simulated range 1-800 rpm").marker(&[rig_peak_rpm], "1 Hz stroke peak, 41.9 rpm");
+    mu = mu.band(RPM_RANGE.0, RPM_RANGE.1, "paper's simulated range 1-800 rpm").marker(&[rig_peak_rpm], "1 Hz stroke peak, 41.9 rpm: validity checked up to here, extrapolation beyond");
+    share = share.marker(&[rig_peak_rpm], "validity: checked up to 41.9 rpm, extrapolation beyond");
     share = share.band(RPM_RANGE.0, RPM_RANGE.1, "paper's simulated range 1-800 rpm");
     let stribeck = stacked_plot(
         "Starved-inlet extension (off by default): h_c^-g = h_flooded^-g + h_oil^-g, g = 2.8",

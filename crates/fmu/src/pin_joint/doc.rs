@@ -91,8 +91,8 @@ elastic presliding torque. Along a deflection increment d&Delta; with u = sign(d
 du/d&Delta; = k for u &le; &beta;T (purely elastic: no drift under any drive below &beta;T, and every unloading is elastic),
 du/d&Delta; = k(T &minus; u)/(T &minus; &beta;T) above (the elasto-plastic transition to sliding), with k = T/&phi;<sub>s</sub>.
 In steady sliding &tau; = &plusmn;T and the torque is the model's &minus;sign(&omega;)&mu;RP<sub>T</sub> bit for bit.
-The torque is <code>torque</code> = &minus;(clamp(&tau;, &minus;T, T) + c&middot;&zcirc;), c = t<sub>d</sub>k, &zcirc; = &omega;&middot;g the elastic
-deflection rate: it never exceeds the sliding torque by more than the damping t<sub>d</sub>T|&omega;|/&phi;<sub>s</sub>.
+The torque is <code>torque</code> = &minus;clamp(clamp(&tau;, &minus;T, T) + c&middot;&zcirc;, &minus;T, T), c = t<sub>d</sub>k, &zcirc; = &omega;&middot;g
+the elastic deflection rate: it never exceeds the sliding torque (the damping adds up to Coulomb's limit).
 The breakaway torque follows the load at every step: a load change while the joint is held changes the bound, not the
 held torque (no jerk); a drop below the held torque lets the joint slide, as it should.</p>
 <ul>
@@ -104,7 +104,9 @@ initialization: the torque read after setting (angle, angular_velocity) is the o
 fmi2DoStep (which commits it), and &part;torque/&part;angle = &minus;k in stick. A host that never sets the angle drives the
 state by angular_velocity&middot;h over each step (the exact solution with the input held). The update is the law's exact
 solution over the increment: unconditionally stable and bounded for any step and any angle increment. Feed angle and
-angular velocity at each step start.</li>
+angular velocity at each step start. The locals <code>presliding_reference_angle</code> (the angle at which the state
+was committed) and <code>presliding_angle_driven</code> (whether the host has set the angle) are this bookkeeping, kept in
+the FMU state.</li>
 <li>Model Exchange: <code>presliding_torque</code> is the one continuous state (nominal 100 N&middot;m) with derivative
 <code>der(presliding_torque)</code> = k&omega;g, Lipschitz in the state, so an implicit solver owns it. No event indicators:
 the right-hand side is continuous (its kinks at &beta;T and &omega; = 0 are not jumps).</li>
