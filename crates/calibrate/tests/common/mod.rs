@@ -86,7 +86,13 @@ pub fn rig_record(load: f64, f: f64, j: f64, mu_c: f64, noise: f64, offset: f64,
     cfg.rig.inertia = j;
     cfg.rig.breakaway_factor = 1.3;
     let s = run_cycles(&cfg, cycles as f64, spc).expect("rig runs");
-    let mut r = record(&format!("rig {load} N {f} Hz J {j}"), &s, noise, 0.0, offset, seed);
+    logged(&format!("rig {load} N {f} Hz J {j}"), &s, noise, offset, seed)
+}
+
+/// What a data logger records of rig run `s`: white torque noise of `noise` N·m, `offset` N·m,
+/// and the angle on a 17-bit encoder at a random phase (each seed its own pattern).
+pub fn logged(name: &str, s: &[Sample], noise: f64, offset: f64, seed: u64) -> Record {
+    let mut r = record(name, s, noise, 0.0, offset, seed);
     let shift = ENCODER * SplitMix::new(seed ^ 0xA5A5).uniform();
     r.angle = Some(s.iter().map(|x| ((x.angle + shift) / ENCODER).round() * ENCODER).collect());
     r
