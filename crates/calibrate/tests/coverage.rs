@@ -1,4 +1,4 @@
-//! Coverage of the quasi-static fit's 95 % intervals (issue 24 item 5): over 260 synthetic fits
+//! Coverage of the quasi-static fit's 95 % intervals (issue 24 item 5): over 280 synthetic fits
 //! (direct and rig records, J of 0, 0.05 and 2 kg·m² fitted or given, 5–60 kN, 0.5–1.5 Hz,
 //! 0.2–1 N·m of torque noise, a 17-bit encoder at a random phase, a new seed each fit), the
 //! intervals of μ_c and of J must cover the truth at close to the nominal rate.
@@ -45,7 +45,7 @@ fn report(what: &str, out: &[Outcome]) {
 }
 
 #[test]
-fn the_95_percent_intervals_cover_the_truth_in_at_least_90_percent_of_260_fits() {
+fn the_95_percent_intervals_cover_the_truth_in_at_least_90_percent_of_280_fits() {
     // The bootstrap with 400 resamples (the default's 1000 only smooth its percentiles).
     let options = |inertia: Option<f64>| Options { inertia, resamples: 400, ..Options::default() };
     let mut all = Vec::new();
@@ -60,7 +60,8 @@ fn the_95_percent_intervals_cover_the_truth_in_at_least_90_percent_of_260_fits()
         (2.0, [10e3, 60e3], 1.0, 0.5),
     ];
     // J given (subtracted, not fitted): J, loads, frequency, noise.
-    let given_cases = [(0.05, [20e3, 40e3], 1.0, 0.5), (2.0, [10e3, 60e3], 1.0, 0.5), (2.0, [20e3, 40e3], 0.5, 0.2)];
+    let given_cases =
+        [(0.05, [20e3, 40e3], 1.0, 0.5), (2.0, [10e3, 60e3], 1.0, 0.5), (2.0, [20e3, 40e3], 0.5, 0.2), (2.0, [20e3, 40e3], 1.5, 0.5)];
     for (k, &(j, loads, f, noise)) in direct_cases.iter().chain(&given_cases).enumerate() {
         let given = k >= direct_cases.len();
         let out: Vec<Outcome> = (0..20u64)
@@ -100,15 +101,17 @@ fn the_95_percent_intervals_cover_the_truth_in_at_least_90_percent_of_260_fits()
         all.extend(out);
     }
     report("all", &all);
-    // A true coverage of 95 % gives at least 90 % (234 of 260 for μ_c, 180 of 200 for J) with
-    // probability 0.9997 and 0.9988 (binomial); a true 85 % passes with probability 0.012 and
-    // 0.025, and a true 90 % about half the time.
+    // A true coverage of 95 % gives at least 90 % (252 of 280 for μ_c, 180 of 200 for J) with
+    // probability 0.9998 and 0.9988 (binomial); a true 85 % passes with probability 0.009 and
+    // 0.025, and a true 90 % about half the time. Before a given J was subtracted at the
+    // matched filter's points the μ_c intervals covered 240/280 (86 %; 2/20 with J = 2 given at
+    // 1.5 Hz).
     let ((cm, nm, zm), (cj, nj, zj)) = tally(&all);
-    assert_eq!((nm, nj), (260, 200));
+    assert_eq!((nm, nj), (280, 200));
     assert!(cm * 10 >= 9 * nm, "mu_c intervals cover {cm}/{nm}");
     assert!(cj * 10 >= 9 * nj, "J intervals cover {cj}/{nj}");
     // And the standard errors are the spread of the errors: the rms of error/standard error is
-    // 1 for calibrated errors; measured 1.07 (μ_c) and 1.18 (J); 1.25 would mean standard
+    // 1 for calibrated errors; measured 1.06 (μ_c) and 1.18 (J); 1.25 would mean standard
     // errors 25 % small.
     assert!(zm < 1.25 && zj < 1.25, "rms error/standard error: mu_c {zm:.3}, J {zj:.3}");
 }
