@@ -25,7 +25,7 @@ use super::options::{Model, Options};
 use super::prepare::{prepare, Prepared, STICK_SLIP_IRREGULARITY};
 use super::record::Record;
 use super::result::{Calibration, Estimate, Series};
-use super::uncertainty::analyse;
+use super::uncertainty::{analyse, widen_two_way};
 use levenberg_marquardt::LevenbergMarquardt;
 use nalgebra::{DMatrix, DVector};
 use pinjoint::Params;
@@ -253,9 +253,13 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
         });
     }
     let cl: Vec<usize> = points.iter().map(|p| p.cluster).collect();
-    let u = analyse(&jac, &r, &cl, clusters.len(), options.resamples, options.seed).ok_or_else(|| CalibrationError::Unidentifiable {
+    let mut u = analyse(&jac, &r, &cl, clusters.len(), options.resamples, options.seed).ok_or_else(|| CalibrationError::Unidentifiable {
         what: "the fitted quantities cannot be determined from these records (singular normal matrix)".into(),
     })?;
+    // Errors that repeat in every cycle (an encoder's rounding when the sampling is locked to
+    // the motion, times J) cancel out of the spread from stroke to stroke: the strokes and the
+    // phases of the cycle as two-way clusters see them (tests/coverage.rs).
+    widen_two_way(&mut u, &jac, &r, &cl, &phases(&points, &filter));
 
     // Estimates in the parameters' own units.
     let params = problem.params_at(&beta);
@@ -338,6 +342,26 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
         settle_time: options.exclusion.settle_time,
         series,
     }, deviation))
+}
+
+/// The phase of each fitted point: its record, direction and place in its stroke in bins of
+/// twice the matched filter's window (at least 8 samples).
+fn phases(points: &[Point], filter: &Filter) -> Vec<usize> {
+    let mut first: HashMap<usize, usize> = HashMap::new();
+    for p in points {
+        let e = first.entry(p.cluster).or_insert(p.row);
+        *e = (*e).min(p.row);
+    }
+    let mut ids: HashMap<(usize, bool, usize), usize> = HashMap::new();
+    points
+        .iter()
+        .map(|p| {
+            let width = (2 * filter.taps[p.rec].len()).max(8);
+            let key = (p.rec, p.omega > 0.0, (p.row - first[&p.cluster]) / width);
+            let next = ids.len();
+            *ids.entry(key).or_insert(next)
+        })
+        .collect()
 }
 
 /// Every sample of every record, measured and fitted.
