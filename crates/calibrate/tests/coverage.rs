@@ -104,13 +104,16 @@ fn the_95_percent_intervals_cover_the_truth_in_at_least_90_percent_of_300_fits()
     report("all", &all);
     // A true coverage of 95 % gives at least 90 % (270 of 300 for μ_c, 198 of 220 for J) with
     // probability 0.9998 and 0.9992 (binomial); a true 85 % passes with probability 0.006 and
-    // 0.018, and a true 90 % about half the time. BEFORE_NOTE
+    // 0.018, and a true 90 % about half the time. Measured: 287/300 and 206/220. Before a given J
+    // went through the matched filter and before the two-way clusters: 262/300 (3/20 with J = 2
+    // given at 1.5 Hz) and 203/220.
     let ((cm, nm, zm), (cj, nj, zj)) = tally(&all);
     assert_eq!((nm, nj), (300, 220));
     assert!(cm * 10 >= 9 * nm, "mu_c intervals cover {cm}/{nm}");
     assert!(cj * 10 >= 9 * nj, "J intervals cover {cj}/{nj}");
     // And the standard errors are the spread of the errors: the rms of error/standard error is
-    // 1 for calibrated errors; measured 1.06 (μ_c) and 1.18 (J); 1.25 would mean standard
-    // errors 25 % small.
-    assert!(zm < 1.25 && zj < 1.25, "rms error/standard error: mu_c {zm:.3}, J {zj:.3}");
+    // 1 for calibrated errors (its spread over N fits about 1/√(2N) = 0.05, so 1.15 is 3 of
+    // them). Measured 0.95 (μ_c) and 1.09 (J); without the two-way clusters 1.09 and 1.19,
+    // before the matched filter for a given J 1.41 (μ_c).
+    assert!(zm < 1.15 && zj < 1.15, "rms error/standard error: mu_c {zm:.3}, J {zj:.3}");
 }
