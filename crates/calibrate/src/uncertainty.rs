@@ -14,7 +14,9 @@
 //!   (exact for the linear μ_c fit), 95 % percentile interval.
 //!
 //! The reported standard error is the larger of iid and cluster-robust; the reported 95 %
-//! interval is the union of the t interval on it and the bootstrap interval.
+//! interval is the union of the t interval on it and the bootstrap interval. The quasi-static
+//! fit then widens both by the two-way cluster-robust covariance, strokes × phases of the cycle
+//! ([`widen_two_way`]), which sees errors repeated in every cycle.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -282,7 +284,7 @@ mod tests {
         // over the strokes: its variance is 40² Σ_φ e_φ², which the stroke clusters see only
         // as 40 Σ_φ e_φ² (and the fit's residuals hide it). The two-way error must see it.
         let mut rng = SplitMix::new(11);
-        let (g, m) = (40, 8);
+        let (g, m) = (40usize, 8usize);
         let pattern: Vec<f64> = (0..m).map(|_| rng.uniform() - 0.5).collect();
         let (mut x, mut y, mut cl, mut ph) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         for c in 0..g {
