@@ -207,14 +207,17 @@ pub fn widen_two_way(u: &mut Uncertainty, j: &DMatrix<f64>, r: &DVector<f64>, cl
         return;
     }
     // The meat Σ_g s_g s_gᵀ of the scores summed within each group of `key`.
-    let meat = |key: &dyn Fn(usize) -> u64| {
-        let mut g: std::collections::HashMap<u64, DVector<f64>> = std::collections::HashMap::new();
+    let meat = |key: &dyn Fn(usize) -> (usize, usize)| {
+        let mut g: std::collections::HashMap<(usize, usize), DVector<f64>> = std::collections::HashMap::new();
         for i in 0..n {
-            *g.entry(key(i)).or_insert_with(|| DVector::zeros(p)) += j.row(i).transpose() * r[i];
+            let s = g.entry(key(i)).or_insert_with(|| DVector::zeros(p));
+            for k in 0..p {
+                s[k] += j[(i, k)] * r[i];
+            }
         }
         g.values().fold(DMatrix::<f64>::zeros(p, p), |m, s| m + s * s.transpose())
     };
-    let m = meat(&|i| cluster[i] as u64) + meat(&|i| (1u64 << 40) + phase[i] as u64) - meat(&|i| ((cluster[i] as u64) << 20) + phase[i] as u64);
+    let m = meat(&|i| (cluster[i], 0)) + meat(&|i| (0, phase[i])) - meat(&|i| (cluster[i], phase[i]));
     let v = &inv * m * &inv;
     for k in 0..p {
         let se = v[(k, k)].max(0.0).sqrt();
