@@ -33,7 +33,7 @@ use super::coords::{resolve, Extra, Transform};
 use super::error::CalibrationError;
 use super::exclusion::{Reason, Window};
 use super::estimates::{check_options, estimate, keys_of, warnings, INERTIA, MIN_POINTS_PER_PARAMETER};
-use super::fit::calibrate_core;
+use super::fit::calibrate_core_with;
 use super::lm::{Adapter, Residuals};
 use super::options::{Model, Options};
 use super::prepare::prepare;
@@ -313,7 +313,7 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     // Start: μ_c (and J when it is not given) from the quasi-static fit; the given μ_c and the
     // rig's J if that fails.
     let core = Options { model: Model::Core, fit: Vec::new(), resamples: 0, ..options.clone() };
-    let core_fit = calibrate_core(records, &core).ok();
+    let core_fit = calibrate_core_with(records, &core, false).ok();
     let mu0 = core_fit.as_ref().map_or(options.params.friction.boundary_friction_coefficient, |c| c.estimates[0].value);
     let (lo_j, hi_j) = match pinjoint::rig::RIG_PARAMS.iter().find(|s| s.key == "inertia").map(|s| s.range) {
         Some(pinjoint::params::Range::HalfOpen(lo, hi)) => (lo, hi),

@@ -14,7 +14,9 @@
 //!   (exact for the linear μ_c fit), 95 % percentile interval.
 //!
 //! The reported standard error is the larger of iid and cluster-robust; the reported 95 %
-//! interval is the union of the t interval on it and the bootstrap interval.
+//! interval is the union of the t interval on it and the bootstrap interval. The quasi-static
+//! fit then widens both by the two-way cluster-robust covariance, strokes × phases of the cycle
+//! ([`widen_two_way`]), which sees errors repeated in every cycle.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -190,6 +192,43 @@ pub fn analyse(j: &DMatrix<f64>, r: &DVector<f64>, cluster: &[usize], clusters: 
     })
 }
 
+/// Widen `u` by the two-way cluster-robust covariance (Cameron, Gelbach and Miller 2011,
+/// "Robust inference with multiway clustering", J. Bus. Econ. Stat. 29(2)): strokes (`cluster`)
+/// and phases of the cycle (`phase`, the same place in every stroke of one direction of one
+/// record), V = V_stroke + V_phase − V_cell with the cells the (stroke, phase) pairs. It sees
+/// errors that repeat in every cycle (the stroke clusters alone do not: their spread from stroke
+/// to stroke is 0). A standard error, and its t interval, grow where this one is larger; with
+/// fewer than [`MIN_CLUSTERS`] phases nothing changes.
+pub fn widen_two_way(u: &mut Uncertainty, j: &DMatrix<f64>, r: &DVector<f64>, cluster: &[usize], phase: &[usize]) {
+    let (n, p) = j.shape();
+    let Some(inv) = (j.transpose() * j).try_inverse() else { return };
+    let phases = phase.iter().max().map_or(0, |m| m + 1);
+    if phases < MIN_CLUSTERS {
+        return;
+    }
+    // The meat Σ_g s_g s_gᵀ of the scores summed within each group of `key`.
+    let meat = |key: &dyn Fn(usize) -> (usize, usize)| {
+        let mut g: std::collections::HashMap<(usize, usize), DVector<f64>> = std::collections::HashMap::new();
+        for i in 0..n {
+            let s = g.entry(key(i)).or_insert_with(|| DVector::zeros(p));
+            for k in 0..p {
+                s[k] += j[(i, k)] * r[i];
+            }
+        }
+        g.values().fold(DMatrix::<f64>::zeros(p, p), |m, s| m + s * s.transpose())
+    };
+    let m = meat(&|i| (cluster[i], 0)) + meat(&|i| (0, phase[i])) - meat(&|i| (cluster[i], phase[i]));
+    let v = &inv * m * &inv;
+    for k in 0..p {
+        let se = v[(k, k)].max(0.0).sqrt();
+        if se > u.standard_error[k] {
+            u.standard_error[k] = se;
+            let (lo, hi) = u.ci95[k];
+            u.ci95[k] = (lo.min(-u.quantile * se), hi.max(u.quantile * se));
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -239,5 +278,42 @@ mod tests {
         assert!(ratio > 8.0 && ratio < 11.0, "{ratio}");
         let b = u.bootstrap_ci95.unwrap()[0];
         assert!(b.1 - b.0 > 2.0 * u.standard_error_iid[0] * 1.96 * 5.0);
+    }
+
+    #[test]
+    fn two_way_errors_see_a_pattern_repeated_in_every_stroke() {
+        // 40 strokes of 8 phases: white noise plus a pattern that is the same in every stroke.
+        // Fitting a slope on x = ±1 alternating phases, the pattern e_φ·x_φ adds up coherently
+        // over the strokes: its variance is 40² Σ_φ e_φ², which the stroke clusters see only
+        // as 40 Σ_φ e_φ² (and the fit's residuals hide it). The two-way error must see it.
+        let mut rng = SplitMix::new(11);
+        let (g, m) = (40usize, 8usize);
+        let pattern: Vec<f64> = (0..m).map(|_| rng.uniform() - 0.5).collect();
+        let (mut x, mut y, mut cl, mut ph) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for c in 0..g {
+            for (k, e) in pattern.iter().enumerate() {
+                let xi = if k % 2 == 0 { 1.0 } else { -1.0 };
+                x.push(xi);
+                y.push(e + 0.01 * (rng.uniform() - 0.5));
+                cl.push(c);
+                ph.push(k);
+            }
+        }
+        let n = x.len();
+        let j = DMatrix::from_iterator(n, 1, x.iter().copied());
+        let beta = x.iter().zip(&y).map(|(a, b)| a * b).sum::<f64>() / n as f64;
+        let r = DVector::from_iterator(n, x.iter().zip(&y).map(|(a, b)| b - beta * a));
+        let mut u = analyse(&j, &r, &cl, g, 0, 1).unwrap();
+        let before = u.standard_error[0];
+        widen_two_way(&mut u, &j, &r, &cl, &ph);
+        // β̂ − β = Σ_φ x_φ·e_φ / m whatever the number of strokes: over draws of the pattern
+        // its standard deviation is √(Σ_φ Var e_φ)/m, estimated by √(Σ_φ r_φ²)/m from the
+        // per-phase residuals r_φ. The two-way sandwich gives √(1 − 1/g) of that (its meat is
+        // g²·Σ r_φ² from the phases, less g·Σ r_φ² from the cells, and ≈ 0 from the strokes,
+        // whose scores the fit makes 0); the iid error gives 1/√g of it and the stroke one ≈ 0.
+        let exact = (pattern.iter().enumerate().map(|(k, e)| (e - beta * if k % 2 == 0 { 1.0 } else { -1.0 }).powi(2)).sum::<f64>()).sqrt() / m as f64;
+        assert!(before < 0.3 * exact, "stroke-clustered {before} vs {exact}");
+        assert!((u.standard_error[0] / (exact * (1.0 - 1.0 / g as f64).sqrt()) - 1.0).abs() < 0.02, "two-way {} vs {exact}", u.standard_error[0]);
+        assert!(u.ci95[0].1 >= u.quantile * u.standard_error[0] * 0.999);
     }
 }
