@@ -124,16 +124,17 @@ PRESLIDING_ANGLE, ELASTIC_LIMIT, DAMPING_TIME = 1.5e-3, 0.95, 0.01
 
 def presliding_torque(tau, omega, bound):
     """The presliding law's friction torque, written out from its documentation (Dupont et al.
-    2002 single-state elasto-plastic law): -(clamp(tau, -T, T) + t_d (T/phi_s) w max(g, 0)),
-    with g = 1 while s tau <= beta T (s = sign w), else (T - s tau)/(T - beta T); 0 unloaded."""
+    2002 single-state elasto-plastic law): -clamp(clamp(tau, -T, T) + t_d (T/phi_s) w min(max(g, 0), 1), -T, T)
+    (the damping adds up to the sliding torque), with g = 1 while s tau <= beta T (s = sign w),
+    else (T - s tau)/(T - beta T); 0 unloaded."""
     tau, omega, bound = (np.asarray(x, float) for x in np.broadcast_arrays(tau, omega, bound))
     held = np.clip(tau, -bound, bound)
     u = np.where(omega < 0, -tau, tau)
     limit = ELASTIC_LIMIT * bound
     with np.errstate(divide="ignore", invalid="ignore"):
         g = np.where(u <= limit, 1.0, (bound - u) / (bound - limit))
-    damping = np.where((omega != 0) & (g > 0), DAMPING_TIME * (bound / PRESLIDING_ANGLE) * omega * g, 0.0)
-    return np.where(bound > 0, -(held + damping), 0.0)
+    damping = np.where((omega != 0) & (g > 0), DAMPING_TIME * (bound / PRESLIDING_ANGLE) * omega * np.minimum(g, 1.0), 0.0)
+    return np.where(bound > 0, -np.clip(held + damping, -bound, bound), 0.0)
 
 
 def assert_close(actual, expected, rel=1e-12, what=""):
