@@ -12,8 +12,8 @@ with T the library's torque magnitude μ R P (eq. 11) and ω_b the FMU's default
 These are the band's rows (the hosts set zero_velocity.model = band).
 
 PinJoint with the default zero-velocity model (`--kind joint-presliding`, the presliding state,
-driven by ω): on every loaded row |torque| <= T(P, |ω|) (1 + t_d |ω| / φ_s) (the sliding
-torque (the damping is capped there); defaults t_d = 0.01 s, φ_s = 1.5e-3 rad) and the
+driven by ω): on every loaded row |torque| <= T(P, |ω|) (the sliding torque: the damping is
+capped there; defaults t_d = 0.01 s, φ_s = 1.5e-3 rad) and the
 torque never drives the motion in sliding; in steady sliding, i.e. after 2° of travel since
 the last reversal (the travel ∫|ω|dt integrated from the rows by the trapezoidal rule) on rows
 whose travel since the previous row is at least 40 (1 - β) φ_s = 3e-3 rad (over which the state
