@@ -3,11 +3,11 @@
 Run by `pinjoint-bench` (or by hand):
     .venv/bin/python benches/fmu_step.py PinJoint.fmu PassThrough.fmu [--steps N] [--repeats R]
 
-Every configuration is driven by the same loop: set the Real inputs, fmi2DoStep, get two
-Real outputs (PinJoint: angle, angular_velocity, load -> torque, friction_coefficient;
-PassThrough: u1, u2 -> y1, y2). PinJoint runs with its default zero-velocity model
-(presliding, the state driven by the angle) at every fidelity, and at full fidelity with the
-band ("full-band"), the stateless law. The inputs follow a 1 Hz, +-40 deg sine stroke at 20 kN +- 10 %, so the
+Every configuration is driven by the same loop: set two Real inputs, fmi2DoStep, get two
+Real outputs (PinJoint: angular_velocity, load -> torque, friction_coefficient; PassThrough:
+u1, u2 -> y1, y2). PinJoint runs with its default zero-velocity model (presliding; the loop
+does not set the angle, so angular_velocity * step drives the state) at every fidelity, and
+at full fidelity with the band ("full-band"), the stateless law. The inputs follow a 1 Hz, +-40 deg sine stroke at 20 kN +- 10 %, so the
 joint sweeps the speeds of the rig. The configurations are interleaved over the repeats
 (round-robin) so that drifts of a busy machine touch all alike; the fastest repeat of each is
 kept (the least disturbed), the median too. Prints one JSON object on standard output.
@@ -67,10 +67,10 @@ def main(argv):
         t0 = time.perf_counter()
         s = instance(pin, md_p, dir_p, ints=ints, reals=env)
         build = time.perf_counter() - t0
-        configs[name] = (s, [vr_p["angle"], vr_p["angular_velocity"], vr_p["load"]], [vr_p["torque"], vr_p["friction_coefficient"]])
+        configs[name] = (s, [vr_p["angular_velocity"], vr_p["load"]], [vr_p["torque"], vr_p["friction_coefficient"]])
         configs[name] += (build,)
     s = instance(pin, md_p, dir_p, ints={vr_p["fidelity"]: 0}, reals=env)
-    vin_t = [vr_p["angle"], vr_p["angular_velocity"], vr_p["load"], vr_p["temperature"]]
+    vin_t = [vr_p["angular_velocity"], vr_p["load"], vr_p["temperature"]]
     configs["full-fixed-T"] = (s, vin_t, [vr_p["torque"], vr_p["friction_coefficient"]], None, 318.15, 0.0)
     s = instance(pin, md_p, dir_p, ints={vr_p["fidelity"]: 0}, reals=env)
     configs["full-warming"] = (s, vin_t, [vr_p["torque"], vr_p["friction_coefficient"]], None, 308.15, 1e-3)
@@ -107,8 +107,8 @@ def drive_from(s, vin, vout, n, h, clocks, name, temperature=None):
     if temperature is not None:
         t0_k, rise = temperature
         ins = [x + (t0_k + rise * k,) for k, x in enumerate(ins)]
-    if len(vin) == 2:
-        ins = [x[1:] for x in ins]
+    # The loop sets angular_velocity and load (and temperature): drop the angle.
+    ins = [x[1:] for x in ins]
     set_real, do_step, get_real = s.setReal, s.doStep, s.getReal
     t0 = time.perf_counter()
     for k in range(n):

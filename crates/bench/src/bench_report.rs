@@ -214,8 +214,8 @@ fn fmu_section(r: &Report, md: &mut String) -> String {
     writeln!(
         md,
         "fmpy {} on Python {}, {} steps of {} s per repeat, {} repeats interleaved round-robin. The loop: set \
-         angle, angular_velocity and load, `fmi2DoStep`, get torque and friction_coefficient (PassThrough: u1, u2 → y1, y2). \
-         Inputs: a 1 Hz ±40° stroke at 20 kN ± 10 %; envelope 15–25 kN, 1e-3–6 rad/s, tolerance {}. PinJoint runs with its default zero-velocity model, presliding (the state driven by the angle); `full-band` is full fidelity with the stateless band.\n",
+         angular_velocity and load, `fmi2DoStep`, get torque and friction_coefficient (PassThrough: u1, u2 → y1, y2). \
+         Inputs: a 1 Hz ±40° stroke at 20 kN ± 10 %; envelope 15–25 kN, 1e-3–6 rad/s, tolerance {}. PinJoint runs with its default zero-velocity model, presliding (the loop does not set the angle: angular_velocity times the step drives the state); `full-band` is full fidelity with the stateless band.\n",
         v["fmpy"].as_str().unwrap_or("?"),
         v["python"].as_str().unwrap_or("?"),
         v["steps"],
