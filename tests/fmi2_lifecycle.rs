@@ -298,7 +298,8 @@ fn model_exchange_and_unsupported_functions_return_error_with_a_message() {
     let known = [vr("geometry.pin_radius")];
     assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, known.as_ptr(), 1, [1.0].as_ptr(), x.as_mut_ptr()) }, ERROR);
     assert!(h.last().contains("geometry.pin_radius"), "{}", h.last());
-    assert_eq!(set(c, "angular_velocity", 0.3), OK);
+    // Slow enough that the damping stays below the sliding torque (it is capped there).
+    assert_eq!(set(c, "angular_velocity", 0.01), OK);
     let known = [vr("angular_velocity")];
     assert_eq!(unsafe { fmi2GetDirectionalDerivative(c, r.as_ptr(), 1, known.as_ptr(), 1, [1.0].as_ptr(), x.as_mut_ptr()) }, OK);
     assert!(x[0].is_finite() && x[0] < 0.0, "the damping of the presliding deflection: {}", x[0]);
