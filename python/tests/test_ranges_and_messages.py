@@ -24,8 +24,9 @@ def invariants(p: pinjoint.Params, out: dict, load: float, slack: float) -> None
     mu, pm = float(out["friction_coefficient"]), float(out["mean_pressure"])
     mu_max = mu_c + (lub["limiting_shear_stress"] + lub["limiting_shear_stress_slope"] * pm) / pm
     for k in pinjoint.RESULT_COLUMNS:
-        if k != "regime":
+        if k not in ("regime", "validity"):  # the two named (string) columns
             assert np.isfinite(out[k]), (k, out)
+    assert str(out["validity"]) in pinjoint.VALIDITIES, out["validity"]
     assert 0 <= mu <= mu_max * (1 + slack), (mu, mu_max)
     assert abs(float(out["torque"])) <= mu_max * (1 + slack) * r * abs(load) * (1 + 1e-12)
     for k in ("fluid_load_fraction", "asperity_load_fraction"):
