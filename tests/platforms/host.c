@@ -8,8 +8,8 @@
  * Prints one line per result, "<tag> <values>", every number with %.17g (17 significant
  * digits read back to the same double):
  *   PinJoint <fidelity> <case> <load> <omega> <10 outputs, value references 10..19>
- *     the friction law over a grid of loads (0 N to 150 kN) and speeds (-83.8 to
- *     83.8 rad/s, zero and inside the zero-speed band included), one step of 1 ms each,
+ *     the friction law over a grid of loads (0 N to 150 kN) and speeds (-50 to
+ *     50 rad/s, zero and inside the zero-speed band included), one step of 1 ms each,
  *     at fidelity 0 (full) and 1 (table), zero_velocity.model = band (the stateless law the
  *     library's torque is compared with); then case "mu011_band0": boundary friction
  *     0.11 and the zero-speed band off; then case "presliding": the same grid at fidelity 0
@@ -59,8 +59,9 @@ static const VR PJ_FIDELITY = 300, PJ_MU_C = 120, PJ_BAND = 200, PJ_MODEL = 201;
 enum { BAND = 0, DEFAULT_MODEL = -1 };
 
 static void pin_joint_grid(const Api *a, const char *guid, const char *tag, int fidelity, int model, const VR *vr, const double *x, size_t n) {
-    static const double loads[] = {0.0, 1e3, 5e3, 20e3, 60e3, 150e3};
-    static const double speeds[] = {-83.8, -6.0, -0.21, -0.02, -0.004, 0.0, 1e-4, 0.004, 0.0101, 0.02, 0.21, 1.0, 6.0, 83.8};
+    /* Inside the film-clearance bound (docs/conventions.md): 1 kN fails above ~25 rad/s, 2 kN at 83.8. */
+    static const double loads[] = {0.0, 2e3, 5e3, 20e3, 60e3, 150e3};
+    static const double speeds[] = {-50.0, -6.0, -0.21, -0.02, -0.004, 0.0, 1e-4, 0.004, 0.0101, 0.02, 0.21, 1.0, 6.0, 50.0};
     C c = start(a, guid, vr, x, n, PJ_FIDELITY, fidelity, model < 0 ? 0 : PJ_MODEL, model);
     double t = 0.0, h = 1e-3, y[10];
     for (size_t i = 0; i < sizeof loads / sizeof *loads; i++)
