@@ -494,14 +494,7 @@ impl Joint {
     /// is the same to the solver tolerance. Without a guess the solve starts from
     /// [`Joint::cold_start`], so the answer depends on (`load`, `omega`) and the parameters alone.
     pub fn evaluate_from(&self, load: f64, omega: f64, guess: Option<f64>) -> Result<OperatingPoint, ModelError> {
-        let load = load.abs();
-        if !(load.is_finite() && load > 0.0) {
-            return Err(ModelError::Load(load));
-        }
-        if !omega.is_finite() {
-            return Err(ModelError::Speed(omega));
-        }
-        let lt = self.load_terms(load)?;
+        let (load, lt) = self.checked_load_terms(load, omega)?;
         let (op, _) = self.evaluate_at(&lt, omega, guess)?;
         self.check_film(op.film_thickness, op.fluid_load_fraction, load, omega)?;
         Ok(op)
@@ -513,6 +506,13 @@ impl Joint {
     /// tests of the solver over the whole range of its equations; a model answer is
     /// [`Joint::evaluate`]'s.
     pub fn evaluate_unbounded(&self, load: f64, omega: f64) -> Result<OperatingPoint, ModelError> {
+        let (_, lt) = self.checked_load_terms(load, omega)?;
+        Ok(self.evaluate_at(&lt, omega, None)?.0)
+    }
+
+    /// The load's magnitude and its terms, after checking the inputs of an evaluation: the
+    /// load finite and > 0 in magnitude, ω finite.
+    fn checked_load_terms(&self, load: f64, omega: f64) -> Result<(f64, LoadTerms), ModelError> {
         let load = load.abs();
         if !(load.is_finite() && load > 0.0) {
             return Err(ModelError::Load(load));
@@ -520,8 +520,7 @@ impl Joint {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
         }
-        let lt = self.load_terms(load)?;
-        Ok(self.evaluate_at(&lt, omega, None)?.0)
+        Ok((load, self.load_terms(load)?))
     }
 
     /// Where a moving solve starts: the start table's value at (ln P_T, ln u), or the caller's

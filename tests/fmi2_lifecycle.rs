@@ -422,13 +422,9 @@ fn directional_derivative_with_respect_to_the_angle_at_rest_is_the_stiffness() {
     at_rest_partial("angle", |_, k| -k);
 }
 
-/// With respect to the angular velocity: the damping -t_d k. `Presliding::torque` in
-/// src/zero_velocity/presliding.rs returns early at omega = 0 (`if w == 0.0 { return -held; }`),
-/// dropping the jet's derivative in omega: the FMU answers 0 (and `Presliding::rate` likewise
-/// answers 0 for d der(presliding_torque) / d omega, which is k there). Ignored until fixed
-/// (reported to the lead).
+/// With respect to the angular velocity: the damping -t_d k (the law takes ω's partials at
+/// rest in the unloading direction, where the range is elastic).
 #[test]
-#[ignore = "Presliding::torque/rate return early at omega = 0, dropping d/d omega (reported)"]
 fn directional_derivative_with_respect_to_the_angular_velocity_at_rest_is_the_damping() {
     at_rest_partial("angular_velocity", |law, k| -law.damping_time * k);
 }

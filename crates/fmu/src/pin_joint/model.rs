@@ -44,14 +44,15 @@ impl PinJointModel {
     }
 
     fn evaluator(&mut self) -> ModelResult<&mut Evaluator> {
-        self.v.zv.validate()?;
         if let Some(ev) = self.evaluator.as_mut().filter(|e| e.temperature().to_bits() != self.v.temperature.to_bits()) {
             // A new temperature: the same evaluator moved there (bit for bit one built there;
             // at full a few logarithms, a table or boundary level is built again).
             ev.set_temperature(self.v.temperature).map_err(|e| ModelError::failed("", e))?;
         }
         if self.evaluator.is_none() {
-            // Every parameter is checked as set, `lubricant.temperature` too (the input replaces it).
+            // Every parameter is checked as set, `lubricant.temperature` too (the input replaces it);
+            // a changed parameter drops the evaluator, so this runs again after any change.
+            self.v.zv.validate()?;
             self.v.params.validate().map_err(|e| ModelError::failed("", e))?;
             let params = self.effective_params();
             Joint::new(&params).map_err(|e| ModelError::failed("", e))?;
@@ -71,9 +72,14 @@ impl PinJointModel {
         p
     }
 
-    /// The zero-velocity model chosen (validated at exit of initialization).
+    /// The zero-velocity model chosen. Its settings were validated when the evaluator was built
+    /// (or the state restored); the full check runs here only for a code that is not a model.
     fn zero_velocity(&self) -> ModelResult<ZeroVelocityModel> {
-        self.v.zv.validate()
+        let code = self.v.zv.code;
+        match ZeroVelocityModel::from_code(code as i64) {
+            Some(m) if code.fract() == 0.0 => Ok(m),
+            _ => self.v.zv.validate(),
+        }
     }
 
     /// Whether the model steps the presliding state itself (Co-Simulation) and the angle's
