@@ -2,7 +2,7 @@
 //! on the built-in parameters, with an index page and a README in the output directory.
 //!
 //! This folder holds the command and its parts, each in a module (in dependency order):
-//! [`rig`] simulates the paper's 15 rig conditions; [`claims`] computes the claims table;
+//! [`rig`] simulates the paper's 15 rig conditions; [`mod@claims`] computes the claims table;
 //! [`plots`] draws Figures 7–13; [`index`] writes the captions, `index.html` and `README.md`;
 //! [`starvation`] and [`at_rest`] are the extensions' figures. This file holds the
 //! command's arguments and [`run`], which writes Figures 3 and 4 (through `stribeck` and

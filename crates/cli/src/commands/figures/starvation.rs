@@ -10,7 +10,7 @@
 //!   starvation_summary.csv           per layer and load: the speed where μ falls to 0.11 and where
 //!                                    the asperities' share falls to 1/2, μ at 800 rpm, the dip
 //!
-//! `pinjoint figures` ([`super::run`]) calls [`write`] into its output directory.
+//! `pinjoint figures` ([`super::run`]) calls [`write()`] into its output directory.
 
 
 use crate::common::{csv_io, exact, log_space, RAD_S_PER_RPM, RIG_AMPLITUDE_DEG};
