@@ -21,6 +21,9 @@ fn batch_err(e: BatchError) -> PyErr {
     PyValueError::new_err(pinjoint::fmt::bounded_message(&text))
 }
 
+/// Two float64 arrays of shape (n,).
+type ArrayPair<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
+
 /// The joints of `pinjoint.PreslidingBatch` (its native half).
 #[pyclass(name = "_PreslidingBatch", module = "pinjoint._native")]
 pub struct NativePreslidingBatch {
@@ -145,7 +148,7 @@ impl NativePreslidingBatch {
 
     /// (presliding torques N·m, reference angles rad), arrays of shape (n,).
     #[getter]
-    fn states<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)> {
+    fn states<'py>(&self, py: Python<'py>) -> PyResult<ArrayPair<'py>> {
         let n = self.batch.len();
         let (mut t, mut a) = (vec![0.0; n], vec![0.0; n]);
         self.batch.states(&mut t, &mut a).map_err(batch_err)?;

@@ -83,10 +83,8 @@ impl Model {
         if load == 0.0 {
             return Ok(0.0);
         }
-        if let Some(ev) = &self.level {
-            if let Some(e) = ev.evaluate_inside(load, omega) {
-                return Ok(e.torque);
-            }
+        if let Some(e) = self.level.as_ref().and_then(|ev| ev.evaluate_inside(load, omega)) {
+            return Ok(e.torque);
         }
         self.joint.evaluate(load, omega).map(|op| op.torque)
     }
