@@ -23,6 +23,7 @@ Public names
 Joint            the model at a fidelity level; ``evaluate(load, speed)``
 Presliding       the joint at rest (the PinJoint FMU's presliding law), a stateful object
 PreslidingBatch  n presliding joints stepped together over NumPy arrays (scenes at scale)
+pinjoint.scenes  the free-fall scene on PreslidingBatch and its parameter uncertainty (a module)
 Params           the parameter set (the parameter file's keys, validation and messages)
 default_params   the paper's parameters
 simulate_cycle   whole strokes of the paper's torsion test rig (columns of cycle.csv)

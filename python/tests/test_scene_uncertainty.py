@@ -128,3 +128,21 @@ def test_the_study_is_reproducible_and_equal_on_a_local_cluster(tmp_path, monkey
     # Another seed, other samples.
     assert ex.main([*small[:-1], "8", "--no-figure", "--output", str(tmp_path / "c")]) == 0
     assert (tmp_path / "c" / "samples.csv").read_bytes() != (tmp_path / "a" / "samples.csv").read_bytes()
+
+
+def test_a_real_fit_drives_the_example(tmp_path):
+    truth = pinjoint.Params({MU: 0.105})
+    rec = pinjoint.simulate_cycle(0.3, np.radians(40), 20e3, cycles=3, samples_per_cycle=1000, params=truth)
+    fit = pinjoint.calibrate([dict(rec, load=20e3)])
+    s = scenes.sample_parameters(4000, 2, calibration=fit)
+    est = fit["parameters"][MU]
+    assert list(s) == [MU]
+    assert abs(s[MU].mean() - est["value"]) < 5 * est["standard_error"] / math.sqrt(4000)
+    assert s[MU].std() == pytest.approx(est["standard_error"], rel=0.05)
+    path = tmp_path / "fit.json"
+    path.write_text(fit.to_json())
+    ex = load_example()
+    assert ex.main(["--calibration", str(path), "--samples", "40", "--end-time", "2", "--temperature-c", "20", "--no-figure", "--output", str(tmp_path / "o")]) == 0
+    rows = (tmp_path / "o" / "samples.csv").read_text().splitlines()
+    mu = np.array([float(r.split(",")[1]) for r in rows[1:]])
+    assert np.all(np.abs(mu - est["value"]) < 6 * est["standard_error"])
