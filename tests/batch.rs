@@ -299,3 +299,20 @@ fn models_are_shared_and_released() {
     b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
     assert_eq!(b.models_held(), 1);
 }
+
+/// A level that cannot be built for one joint's parameters names that joint, and changes
+/// nothing.
+#[test]
+fn a_level_that_cannot_be_built_names_the_joint() {
+    let mut thick = Params::default();
+    thick.lubricant.viscosity *= 4.0; // its film passes the clearance at the table's ghost nodes
+    let s = Settings { fidelity: Fidelity::Table, tolerance: 1e-3, envelope: Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap() };
+    let mut b = PreslidingBatch::new(3, BatchParams::PerJoint(vec![Params::default(), thick, thick]), Presliding::default(), s).unwrap();
+    let (a, w, l) = (vec![0.0; 3], vec![0.5; 3], vec![2e4; 3]);
+    let mut out = vec![0.0; 3];
+    let e = b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None }, &mut out).unwrap_err();
+    assert!(matches!(e, BatchError::Level { index: 1, .. }), "{e}");
+    assert!(e.to_string().starts_with("fidelity level for the joint at index 1: "), "{e}");
+    assert_eq!(b.models_held(), 0);
+    assert_eq!(b.state(0), (0.0, 0.0));
+}

@@ -75,7 +75,7 @@ impl Models {
         let base = &self.bases[key.0 as usize];
         let t = f64::from_bits(key.1);
         let joint = if key.1 == base.params().lubricant.temperature.to_bits() { base.clone() } else { base.at_temperature(t).map_err(|source| BatchError::Temperature { index: 0, source })? };
-        Model::build(joint, &self.settings).map_err(BatchError::Fidelity)
+        Model::build(joint, &self.settings).map_err(|source| BatchError::Level { index: 0, source })
     }
 
     /// Make every joint's slot hold the model of its key: `wanted(i)` is joint i's key,
@@ -111,6 +111,7 @@ impl Models {
                 }
                 return Err(match e.clone() {
                     BatchError::Temperature { source, .. } => BatchError::Temperature { index, source },
+                    BatchError::Level { source, .. } => BatchError::Level { index, source },
                     other => other,
                 });
             }

@@ -67,9 +67,18 @@ pub enum BatchError {
         /// The parameter's error (names lubricant.temperature, its value and unit).
         source: ParamError,
     },
-    /// The fidelity settings (tolerance, envelope) or a level that cannot be built.
+    /// The fidelity settings (tolerance, envelope).
     #[error("fidelity: {0}")]
     Fidelity(FidelityError),
+    /// A level (a table, the boundary level) that cannot be built for a joint's parameters
+    /// at its temperature.
+    #[error("fidelity level for the joint at index {index}: {source}")]
+    Level {
+        /// The (first) joint asking for it.
+        index: usize,
+        /// Why it cannot be built.
+        source: FidelityError,
+    },
     /// The presliding law's settings.
     #[error("{0}")]
     Law(ZeroVelocityError),
