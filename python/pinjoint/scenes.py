@@ -22,9 +22,11 @@ Equations (phi the leg's angle from down-locked, omega = dphi/dt, positive = up)
 * locked at the first step with phi_n+1 <= 0: time_to_lock = n h + h phi_n/(phi_n - phi_n+1) (linear
   interpolation inside the step), speed_at_lock = |omega_n+1|; not locked by end_time: inf and NaN;
 * lock margin (static, at the lock) = lock_link_torque / (lock_link_pivots x T_break) - 1, T_break
-  the joint's sliding torque at rest (omega = 0) at lock_link_load and the temperature (its
-  breakaway torque: with a grease model, its yield torque included);
-* friction energy = sum over the steps until the lock of -T_f (phi_n+1 - phi_n) (J).
+  the joint's breakaway torque at lock_link_load and the temperature: its sliding torque as
+  omega -> 0+, the larger of the values at omega = 0 and at BREAKAWAY_SPEED (with a grease
+  model, its yield torque included);
+* friction energy = sum over the steps of -T_f (phi_n+1 - phi_n), up to phi = 0 in the step that
+  locks (J).
 
 >>> from pinjoint import scenes
 >>> out = scenes.free_fall(3, temperature=[293.15, 273.15, 253.15])
@@ -43,6 +45,11 @@ import numpy as np
 from ._batch import PreslidingBatch
 from ._coerce import short
 from ._native import MU_C, Params
+
+
+#: The angular velocity (rad/s) standing for omega -> 0+ in the breakaway torque: far below any
+#: speed at which the film carries load in the joint model.
+BREAKAWAY_SPEED = 1e-9
 
 
 @dataclasses.dataclass(frozen=True)
@@ -117,7 +124,9 @@ def free_fall(
     omega = np.zeros(n)
     alpha = np.zeros(n)
     batch = PreslidingBatch(n, params, per_joint=per_joint, host_inertia=J / s.trunnion_joints, fidelity=fidelity, angle=phi, **batch_options)
-    t_break = batch.sliding_torque(0.0, s.lock_link_load, temp)
+    # The breakaway torque: the sliding torque as omega -> 0+ (at rest and just above it: a
+    # model whose rest point differs from its limit gives the larger).
+    t_break = np.maximum(batch.sliding_torque(0.0, s.lock_link_load, temp), batch.sliding_torque(BREAKAWAY_SPEED, s.lock_link_load, temp))
     steps = int(round(s.end_time / h))
     t_lock = np.full(n, np.inf)
     w_lock = np.full(n, np.nan)
@@ -142,8 +151,10 @@ def free_fall(
             series["angular_velocity"].append(omega.copy())
             series["load"].append(load)
             series["friction_torque"].append(tf)
-        energy += np.where(active, -tf * (phi_new - phi), 0.0)
         newly = active & (phi_new <= 0.0)
+        # The friction's work until the lock: over the whole step, or up to phi = 0 in the
+        # step that locks.
+        energy += np.where(active, -tf * (np.where(newly, 0.0, phi_new) - phi), 0.0)
         if newly.any():
             p0, p1 = phi[newly], phi_new[newly]
             t_lock[newly] = k * h + h * p0 / (p0 - p1)

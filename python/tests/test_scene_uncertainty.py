@@ -45,9 +45,10 @@ def scalar_free_fall(scene, mu_c):
         a = total / s.inertia
         w_new = w + s.step * a
         phi_new = phi + s.step * w_new
-        energy += -tf * (phi_new - phi)
         if phi_new <= 0:
+            energy += tf * phi
             return k * s.step + s.step * phi / (phi - phi_new), abs(w_new), energy
+        energy += -tf * (phi_new - phi)
         phi, w = phi_new, w_new
     return math.inf, math.nan, energy
 
