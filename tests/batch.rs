@@ -297,7 +297,17 @@ fn models_are_shared_and_released() {
     assert_eq!(b.models_held(), 2);
     let t = vec![310.0; n];
     b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
-    assert_eq!(b.models_held(), 1);
+    // In use: 310 K; retained: 293.15 K and 303.15 K.
+    assert_eq!(b.models_held(), 3);
+    // Back to 293.15 K: the retained model, no new one.
+    b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None }, &mut out).unwrap();
+    assert_eq!(b.models_held(), 3);
+    // Many temperatures one after another: at most RETAINED kept beside the one in use.
+    for k in 0..10 {
+        let t = vec![300.0 + k as f64; n];
+        b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
+    }
+    assert_eq!(b.models_held(), 1 + pinjoint::batch::cache::RETAINED);
 }
 
 /// A level that cannot be built for one joint's parameters names that joint, and changes

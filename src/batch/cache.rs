@@ -2,14 +2,20 @@
 //! at that key: joints with one parameter set and one temperature share one [`Model`] (one
 //! table at the table level). A temperature that changes builds the model at the new one
 //! ([`Joint::at_temperature`]: a few logarithms at full, the level built and measured again
-//! otherwise, the cost of the scalar `Evaluator::set_temperature`); a model no joint uses
-//! any more is dropped at the end of the call, so at most one model per joint is held.
+//! otherwise, the cost of the scalar `Evaluator::set_temperature`). A model no joint uses any
+//! more is kept among the [`RETAINED`] most recently released (a host that alternates between
+//! two temperatures, or calls `torque` with a temperature and `commit` without, does not
+//! rebuild a table each call); older ones are dropped at the end of the call, so at most one
+//! model per joint plus [`RETAINED`] are held.
 
 use super::error::BatchError;
 use super::model::{Model, Settings};
 use crate::joint::Joint;
 use rayon::prelude::*;
 use std::collections::HashMap;
+
+/// Models no joint uses that are kept for reuse.
+pub const RETAINED: usize = 4;
 
 /// (parameter set, temperature's bits).
 pub type Key = (u32, u64);
@@ -28,12 +34,14 @@ pub struct Models {
     pending: Vec<(Key, usize)>,
     /// Slots whose last user left in this call (reused buffer).
     released: Vec<u32>,
+    /// Slots holding a model no joint uses, oldest first (at most [`RETAINED`]).
+    retired: std::collections::VecDeque<u32>,
 }
 
 impl Models {
     /// The models of `bases` (one joint per parameter set) at `settings`, none built yet.
     pub fn new(bases: Vec<Joint>, settings: Settings) -> Self {
-        Models { bases, settings, slots: Vec::new(), users: Vec::new(), index: HashMap::new(), free: Vec::new(), pending: Vec::new(), released: Vec::new() }
+        Models { bases, settings, slots: Vec::new(), users: Vec::new(), index: HashMap::new(), free: Vec::new(), pending: Vec::new(), released: Vec::new(), retired: std::collections::VecDeque::new() }
     }
 
     /// The fidelity settings.
@@ -58,7 +66,7 @@ impl Models {
         self.slots[slot as usize].as_ref().expect("a slot in use holds its model").0
     }
 
-    /// Models held now.
+    /// Models held now (those in use and the retained ones).
     pub fn held(&self) -> usize {
         self.slots.iter().filter(|s| s.is_some()).count()
     }
@@ -146,16 +154,25 @@ impl Models {
                 }
             }
             let new = self.index[&k];
+            if self.users[new as usize] == 0 {
+                // A retired model back in use.
+                self.retired.retain(|&r| r != new);
+            }
             self.users[new as usize] += 1;
             *s = new;
         }
-        for &s in &self.released {
-            if self.users[s as usize] == 0 {
-                if let Some((k, _)) = self.slots[s as usize].take() {
-                    self.index.remove(&k);
-                }
-                self.free.push(s);
+        for i in 0..self.released.len() {
+            let s = self.released[i];
+            if self.users[s as usize] == 0 && !self.retired.contains(&s) {
+                self.retired.push_back(s);
             }
+        }
+        while self.retired.len() > RETAINED {
+            let s = self.retired.pop_front().expect("longer than RETAINED");
+            if let Some((k, _)) = self.slots[s as usize].take() {
+                self.index.remove(&k);
+            }
+            self.free.push(s);
         }
         Ok(())
     }

@@ -134,7 +134,8 @@ impl PreslidingBatch {
         self.models.bases()[if self.per_joint { i } else { 0 }].params()
     }
 
-    /// The models (one per parameter set and temperature in use) held now.
+    /// The models held now: one per parameter set and temperature in use, and up to
+    /// [`cache::RETAINED`] no joint uses any more (kept for reuse).
     pub fn models_held(&self) -> usize {
         self.models.held()
     }
