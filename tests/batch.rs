@@ -304,7 +304,7 @@ fn models_are_shared_and_released() {
     assert_eq!(b.models_held(), 3);
     // Many temperatures one after another: at most RETAINED kept beside the one in use.
     for k in 0..10 {
-        let t = vec![300.0 + k as f64; n];
+        let t = vec![300.0 + f64::from(k); n];
         b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
     }
     assert_eq!(b.models_held(), 1 + pinjoint::batch::cache::RETAINED);
