@@ -29,6 +29,10 @@ fn bench_quick_writes_the_report_and_plots() {
         "Not measured in this run: skipped (--no-fmu)",
         "## Calibration of long records",
         "`pinjoint calibrate` on 100000 rows",
+        "## Scenes at scale",
+        "2000 scenes × 200 steps at table fidelity ≤ 60 s on 2 cores",
+        "table fidelity costs ≤ 0.1 × full, per joint-step",
+        "memory of a batch of 2000 joints ≤ 64 MiB beyond the outputs",
         "--quick",
     ] {
         assert!(md.contains(needle), "BENCHMARKS.md lacks {needle:?}:\n{md}");
@@ -57,4 +61,28 @@ fn bench_without_python_says_so() {
     let md = std::fs::read_to_string(dir.path().join("BENCHMARKS.md")).unwrap();
     // Either the FMUs are not built in this tree, or Python is missing: the report names it.
     assert!(md.contains("Not measured in this run:") && (md.contains("/nonexistent/python") || md.contains("fmu_build")), "{md}");
+}
+
+/// `--only-batch` replaces the batch section of an existing BENCHMARKS.md in place and leaves
+/// the rest of the file as it was.
+#[test]
+fn only_batch_replaces_its_section_in_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("BENCHMARKS.md");
+    std::fs::write(&path, "# Benchmarks\n\nthe rest of the file\n").unwrap();
+    for _ in 0..2 {
+        let o = Command::new(env!("CARGO_BIN_EXE_pinjoint-bench"))
+            .args(["--quick", "--only-batch", "--package-python", "/nonexistent/python", "--output"])
+            .arg(dir.path())
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let md = std::fs::read_to_string(&path).unwrap();
+    assert!(md.starts_with("# Benchmarks\n\nthe rest of the file\n"), "{md}");
+    assert_eq!(md.matches("## Scenes at scale").count(), 1, "{md}");
+    assert!(md.contains("not measured (no Python at /nonexistent/python"), "{md}");
+    // Measured numbers: the memory row gives a peak in MiB.
+    let row = md.lines().find(|l| l.starts_with("| memory of a batch")).expect("memory row");
+    assert!(row.contains("peak ") && row.contains(" MiB at table fidelity"), "{row}");
 }

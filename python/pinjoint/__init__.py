@@ -22,6 +22,8 @@ Public names
 ------------
 Joint            the model at a fidelity level; ``evaluate(load, speed)``
 Presliding       the joint at rest (the PinJoint FMU's presliding law), a stateful object
+PreslidingBatch  n presliding joints stepped together over NumPy arrays (scenes at scale)
+pinjoint.scenes  the free-fall scene on PreslidingBatch and its parameter uncertainty (a module)
 Params           the parameter set (the parameter file's keys, validation and messages)
 default_params   the paper's parameters
 simulate_cycle   whole strokes of the paper's torsion test rig (columns of cycle.csv)
@@ -35,6 +37,7 @@ from ._native import CYCLE_COLUMNS, MU_C, REGIMES, RESULT_COLUMNS, VALIDITIES, P
 from ._joint import DEFAULT_ENVELOPE, Joint, default_params
 from ._cycle import simulate_cycle
 from ._presliding import DEFAULT_PRESLIDING, Presliding
+from ._batch import PreslidingBatch
 from ._calibrate import Calibration, calibrate
 
 __all__ = [
@@ -46,6 +49,7 @@ __all__ = [
     "Joint",
     "Params",
     "Presliding",
+    "PreslidingBatch",
     "calibrate",
     "REGIMES",
     "VALIDITIES",

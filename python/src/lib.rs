@@ -8,6 +8,7 @@
 //! - [`params`]: the `Params` class (the parameter file's keys, validation and messages).
 //! - [`joint`]: `_Joint`, the vectorised, parallel, GIL-free evaluation.
 //! - [`presliding`]: `_Presliding`, the stateful presliding joint (the FMU's zero-velocity law).
+//! - [`presliding_batch`]: `_PreslidingBatch`, n presliding joints stepped together (`pinjoint::batch`).
 //! - [`cycle`]: `_simulate_cycle`, whole rig strokes (the columns of `cycle.csv`).
 //! - [`calibrate`]: `_calibrate`, the fit of `pinjoint calibrate` (`pinjoint-calibrate`).
 //! - [`messages`]: error texts with values in their shortest round-trip form.
@@ -20,6 +21,7 @@ pub mod values;
 pub mod params;
 pub mod joint;
 pub mod presliding;
+pub mod presliding_batch;
 pub mod cycle;
 pub mod calibrate;
 
@@ -29,6 +31,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<params::PyParams>()?;
     m.add_class::<joint::NativeJoint>()?;
     m.add_class::<presliding::NativePresliding>()?;
+    m.add_class::<presliding_batch::NativePreslidingBatch>()?;
     m.add_function(wrap_pyfunction!(cycle::simulate_cycle, m)?)?;
     m.add_function(wrap_pyfunction!(calibrate::calibrate, m)?)?;
     m.add("MU_C", pinjoint_calibrate::MU_C)?;

@@ -3,6 +3,7 @@
 
 use super::bench_eval::{self, EvalResult};
 use super::bench_calibrate;
+use super::bench_batch;
 use super::bench_report::{write_calibration_only, write_report, FmuSection, Report};
 use super::bench_rig::{self, RigResult};
 use super::bench_throughput;
@@ -27,6 +28,8 @@ library's cold evaluation per point, and the SciPy implementation of the model (
 run by the same Python) per point, as ratios;\n  \
 calibration of long records: a whole `pinjoint calibrate` process on a record of 1e6 and of 1e7 rows \
 (wall time, peak memory, fit.csv size, the fitted μ_c and J against the truth; --only-calibration runs it alone);\n  \
+scenes at scale: 1e4 presliding joints x 1e4 steps at table fidelity on 2 threads, full against table per joint-step, \
+the batch's memory, and PreslidingBatch against Joint.evaluate and a Presliding loop in Python (--only-batch runs it alone);\n  \
 per FMU step through fmpy: set inputs + doStep + get outputs per fidelity as a ratio to the PassThrough \
 FMU in the same loop (needs target/fmu/*.fmu from `cargo run --release -p fmu_build` and a Python with \
 fmpy, by default .venv/bin/python; without them the report says so).\n\
@@ -53,6 +56,13 @@ pub struct BenchCmd {
     /// DIR/BENCHMARKS_calibration.md (BENCHMARKS.md is written by the whole run only)
     #[arg(long)]
     pub only_calibration: bool,
+    /// Python interpreter with the `pinjoint` package (the batch section's Python part)
+    #[arg(long, value_name = "FILE", default_value = ".venv-python/bin/python")]
+    pub package_python: PathBuf,
+    /// Run only the scenes-at-scale (batch) section and replace it in DIR/BENCHMARKS.md in
+    /// place (appended when absent); the rest of the file is left as it was
+    #[arg(long)]
+    pub only_batch: bool,
 }
 
 fn progress(what: &str) {
@@ -107,6 +117,11 @@ pub fn run(cmd: &BenchCmd) -> Result<()> {
         let path = write_calibration_only(&dir, &calibration, cmd.quick, started.elapsed().as_secs_f64())?;
         return report_written(&[path]);
     }
+    if cmd.only_batch {
+        let b = bench_batch::measure(cmd.quick, &cmd.package_python, &progress);
+        let path = super::bench_report::write_batch_only(&dir, &b, cmd.quick, started.elapsed().as_secs_f64())?;
+        return report_written(&[path]);
+    }
     let eval: Vec<EvalResult> = bench_eval::measure(cmd.quick, &progress);
     progress("per cycle simulation: reference run");
     let reference = bench_rig::reference(cmd.quick)?;
@@ -117,7 +132,8 @@ pub fn run(cmd: &BenchCmd) -> Result<()> {
     let throughput = bench_throughput::measure(cmd.quick, &cmd.python, work.path(), &progress);
     let calibration = bench_calibrate::measure(cmd.quick, work.path(), &progress);
     let fmu = fmu_section(cmd);
-    let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, calibration, seconds: started.elapsed().as_secs_f64() };
+    let batch = bench_batch::measure(cmd.quick, &cmd.package_python, &progress);
+    let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, calibration, batch, seconds: started.elapsed().as_secs_f64() };
     let paths = write_report(&dir, &report)?;
     if paths.is_empty() {
         return Err(CliError::Invalid("bench: nothing written".into()));

@@ -36,6 +36,8 @@ pub struct Report {
     pub throughput: std::result::Result<Throughput, ThroughputError>,
     /// The long-record calibration, or why it failed.
     pub calibration: std::result::Result<CalibrationBench, ThroughputError>,
+    /// Scenes at scale: the batch section.
+    pub batch: crate::bench_batch::BatchBench,
     /// Wall time of the whole benchmark run, in s.
     pub seconds: f64,
 }
@@ -345,6 +347,28 @@ pub fn write_calibration_only(
     Ok(path)
 }
 
+/// `--only-batch`: the batch section measured alone, put into DIR/BENCHMARKS.md in place of
+/// the one there (between [`crate::bench_batch::BEGIN`] and [`crate::bench_batch::END`]), or
+/// appended; the rest of the file is unchanged.
+pub fn write_batch_only(dir: &Path, b: &crate::bench_batch::BatchBench, quick: bool, seconds: f64) -> Result<PathBuf> {
+    use crate::bench_batch::{section, BEGIN, END};
+    let (_, body) = section(b);
+    let note = format!(
+        "Measured by `pinjoint-bench --only-batch --output DIR`{} in {seconds:.0} s on this machine (shared with other work: \
+         times are noisy; the ratios are what to quote), separately from the rest of this file.\n\n",
+        if quick { " --quick" } else { "" }
+    );
+    let note = if quick { format!("{note}With --quick: few joints and steps, NOT meaningful figures.\n\n") } else { note };
+    let path = dir.join("BENCHMARKS.md");
+    let old = std::fs::read_to_string(&path).unwrap_or_default();
+    let text = match (old.find(BEGIN), old.find(END)) {
+        (Some(a), Some(z)) if z > a => format!("{}{BEGIN}\n{body}{note}{END}{}", &old[..a], &old[z + END.len()..]),
+        _ => format!("{old}{}{BEGIN}\n{body}{note}{END}\n", if old.is_empty() || old.ends_with("\n\n") { "" } else { "\n" }),
+    };
+    write_text(&path, &[], &text)?;
+    Ok(path)
+}
+
 /// The cost of a temperature change through fmpy: the warming step against the
 /// fixed-temperature one (fastest repeats, medians in brackets), against the 1.20× target.
 pub fn temperature_ratio(v: &serde_json::Value) -> String {
@@ -488,11 +512,13 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     };
     writeln!(md, "| a PinJoint step whose temperature changed (full, fmpy) within 1.20 × a fixed-temperature step | {warming} |").unwrap();
     writeln!(md, "| a presliding PinJoint step (full fidelity) through fmpy within 1.05 × the same loop with the band | {presliding_vs_band} |").unwrap();
-    for (target, result) in throughput.iter().chain(&calibration) {
+    let (batch_targets, batch_body) = crate::bench_batch::section(&r.batch);
+    for (target, result) in throughput.iter().chain(&calibration).chain(&batch_targets) {
         writeln!(md, "| {target} | {result} |").unwrap();
     }
     writeln!(md).unwrap();
     md.push_str(&body);
+    writeln!(md, "{}\n{batch_body}{}", crate::bench_batch::BEGIN, crate::bench_batch::END).unwrap();
     let paths = vec![dir.join("BENCHMARKS.md"), dir.join("bench_evaluation.svg"), dir.join("bench_rig.svg")];
     write_text(&paths[1], &[], &eval_svg(r)?)?;
     write_text(&paths[2], &[], &rig_svg(r)?)?;

@@ -1,0 +1,235 @@
+//! `pinjoint-bench`, scenes at scale (issue 30): n presliding joints stepped together
+//! (`pinjoint::batch`).
+//!
+//! In Rust: 10⁴ joints × 10⁴ steps at table fidelity on a pool of 2 threads (wall time);
+//! the cost of a joint-step at full and at table fidelity over the same inputs (their ratio);
+//! the memory the batch holds beyond the caller's outputs (peak heap bytes counted by the
+//! bench's allocator, [`crate::alloc_count`]). In Python (`benches/batch_step.py`, run by the
+//! package's interpreter): `PreslidingBatch` at full fidelity against the vectorised
+//! `Joint.evaluate` of as many points and against n `Presliding` objects in a Python loop.
+//! Every figure is from one run; timings are never asserted.
+
+use crate::alloc_count;
+use pinjoint::batch::{BatchParams, Inputs, PreslidingBatch, Settings};
+use pinjoint::fidelity::Fidelity;
+use pinjoint::zero_velocity::Presliding;
+use pinjoint::Params;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+/// Input frames cycled through (each step sees other inputs than the one before).
+const FRAMES: usize = 16;
+/// Step of the scene (s).
+const STEP: f64 = 1e-3;
+
+/// The inputs of `FRAMES` consecutive steps of n joints: each joint swings ±A_i at f_i
+/// (0.2–2 Hz, 0.05–0.5 rad) under a load of 5–50 kN varying by ±20 %; one joint in ten held at
+/// rest (ω = 0).
+fn frames(n: usize) -> Vec<[Vec<f64>; 3]> {
+    let mut s: u64 = 0x6261_7463_6821;
+    let mut u = move || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (s >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let joints: Vec<(f64, f64, f64, bool)> = (0..n).map(|_| (0.05 + 0.45 * u(), 0.2 + 1.8 * u(), 5e3 * 10f64.powf(u()), u() < 0.1)).collect();
+    (0..FRAMES)
+        .map(|k| {
+            let t = 0.37 + k as f64 * STEP;
+            let mut f = [Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n)];
+            for &(a, hz, p, rest) in &joints {
+                let w = std::f64::consts::TAU * hz;
+                let (sn, cs) = (w * t).sin_cos();
+                f[0].push(if rest { 1e-5 * sn } else { a * sn });
+                f[1].push(if rest { 0.0 } else { a * w * cs });
+                f[2].push(p * (1.0 + 0.2 * sn));
+            }
+            f
+        })
+        .collect()
+}
+
+fn batch(n: usize, fidelity: Fidelity) -> PreslidingBatch {
+    PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings { fidelity, ..Settings::default() }).expect("valid settings")
+}
+
+/// Run `steps` steps of `b` over `frames`; seconds.
+fn run(b: &mut PreslidingBatch, frames: &[[Vec<f64>; 3]], steps: usize, out: &mut [f64]) -> f64 {
+    let t0 = Instant::now();
+    for k in 0..steps {
+        let f = &frames[k % frames.len()];
+        let inputs = Inputs { angle: &f[0], angular_velocity: &f[1], load: &f[2], temperature: None };
+        b.step(&inputs, out).expect("inputs inside the model's range");
+    }
+    t0.elapsed().as_secs_f64()
+}
+
+/// What the section measured.
+#[derive(Debug, Clone)]
+pub struct BatchBench {
+    /// Joints and steps of the long table run, and its threads.
+    pub joints: usize,
+    /// Steps of the long run.
+    pub steps: usize,
+    /// Threads of the pool.
+    pub threads: usize,
+    /// Wall time of the long run (s), building the table included.
+    pub table_seconds: f64,
+    /// Time to build the batch's table (s).
+    pub table_build_seconds: f64,
+    /// ns per joint-step (wall time / joints / steps, 2 threads): full and table, fastest of
+    /// the repeats, over the same inputs.
+    pub full_ns: f64,
+    /// See `full_ns`.
+    pub table_ns: f64,
+    /// Peak heap bytes the batch held beyond the caller's output array, at table and full
+    /// fidelity.
+    pub peak_bytes_table: usize,
+    /// See `peak_bytes_table`.
+    pub peak_bytes_full: usize,
+    /// The Python measurements (JSON of `benches/batch_step.py`), or why not.
+    pub python: Result<serde_json::Value, String>,
+}
+
+/// The Python script: in the working directory, else in the source tree.
+fn script() -> Option<PathBuf> {
+    [Path::new("benches/batch_step.py").to_path_buf(), Path::new(env!("CARGO_MANIFEST_DIR")).join("../../benches/batch_step.py")].into_iter().find(|p| p.is_file())
+}
+
+fn python_part(python: &Path, quick: bool) -> Result<serde_json::Value, String> {
+    if !python.is_file() {
+        return Err(format!("no Python at {}: run `python/run_tests.sh` once (it makes .venv-python with the package)", python.display()));
+    }
+    let script = script().ok_or("benches/batch_step.py not found")?;
+    let mut cmd = Command::new(python);
+    cmd.arg(&script);
+    if quick {
+        cmd.arg("--quick");
+    }
+    let o = cmd.output().map_err(|e| format!("running {}: {e}", python.display()))?;
+    if !o.status.success() {
+        return Err(format!("{} failed: {}", script.display(), String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("")));
+    }
+    serde_json::from_slice(&o.stdout).map_err(|e| format!("unreadable output of {}: {e}", script.display()))
+}
+
+/// Measure the section. `python`: the interpreter with the `pinjoint` package.
+pub fn measure(quick: bool, python: &Path, progress: &dyn Fn(&str)) -> BatchBench {
+    let (joints, steps, short, reps) = if quick { (2_000, 200, 20, 1) } else { (10_000, 10_000, 200, 3) };
+    let threads = 2;
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("a thread pool");
+    let frames = frames(joints);
+    let mut out = vec![0.0; joints];
+    progress("batch: full against table per joint-step");
+    let (mut full_ns, mut table_ns) = (f64::INFINITY, f64::INFINITY);
+    let (mut peak_full, mut peak_table) = (0, 0);
+    pool.install(|| {
+        for _ in 0..reps {
+            for fid in [Fidelity::Full, Fidelity::Table] {
+                let base = alloc_count::reset_peak();
+                let mut b = batch(joints, fid);
+                run(&mut b, &frames, 1, &mut out); // builds the model (the table)
+                let s = run(&mut b, &frames, short, &mut out);
+                let peak = alloc_count::peak() - base;
+                let ns = s * 1e9 / (joints * short) as f64;
+                if fid == Fidelity::Full {
+                    (full_ns, peak_full) = (full_ns.min(ns), peak_full.max(peak));
+                } else {
+                    (table_ns, peak_table) = (table_ns.min(ns), peak_table.max(peak));
+                }
+            }
+        }
+    });
+    progress(&format!("batch: {joints} joints x {steps} steps at table fidelity, {threads} threads"));
+    let (table_seconds, table_build_seconds) = pool.install(|| {
+        let t0 = Instant::now();
+        let base = alloc_count::reset_peak();
+        let mut b = batch(joints, Fidelity::Table);
+        run(&mut b, &frames, 1, &mut out);
+        let build = t0.elapsed().as_secs_f64();
+        run(&mut b, &frames, steps - 1, &mut out);
+        peak_table = peak_table.max(alloc_count::peak() - base);
+        (t0.elapsed().as_secs_f64(), build)
+    });
+    progress("batch: Python (PreslidingBatch, Joint.evaluate, Presliding loop)");
+    let python = python_part(python, quick);
+    BatchBench { joints, steps, threads, table_seconds, table_build_seconds, full_ns, table_ns, peak_bytes_table: peak_table, peak_bytes_full: peak_full, python }
+}
+
+fn met(ok: bool) -> &'static str {
+    if ok { "**met**" } else { "**missed**" }
+}
+
+/// The section's targets (target, result) and its text.
+pub fn section(b: &BatchBench) -> (Vec<(String, String)>, String) {
+    let mut t = Vec::new();
+    let mut body = String::new();
+    let steps_total = (b.joints * b.steps) as f64;
+    t.push((
+        format!("{} scenes × {} steps at table fidelity ≤ 60 s on {} cores (Rust `pinjoint::batch`)", b.joints, b.steps, b.threads),
+        format!("{} — {:.1} s = {:.2} × the target ({:.0} ns a joint-step; the table built in {:.3} s)", met(b.table_seconds <= 60.0), b.table_seconds, b.table_seconds / 60.0, b.table_seconds * 1e9 / steps_total, b.table_build_seconds),
+    ));
+    let r = b.table_ns / b.full_ns;
+    t.push(("table fidelity costs ≤ 0.1 × full, per joint-step (batch, Rust)".into(), format!("{} — {:.3} × (table {:.0} ns, full {:.0} ns a joint-step, {} threads, fastest repeats)", met(r <= 0.1), r, b.table_ns, b.full_ns, b.threads)));
+    let mib = |x: usize| x as f64 / (1024.0 * 1024.0);
+    let worst = b.peak_bytes_table.max(b.peak_bytes_full);
+    t.push((
+        format!("memory of a batch of {} joints ≤ 64 MiB beyond the outputs", b.joints),
+        format!("{} — peak {:.1} MiB at table fidelity, {:.1} MiB at full (heap bytes counted by the bench's allocator)", met(mib(worst) <= 64.0), mib(b.peak_bytes_table), mib(b.peak_bytes_full)),
+    ));
+    match &b.python {
+        Ok(v) => {
+            let f = |k: &str| v[k].as_f64().unwrap_or(f64::NAN);
+            let floor = f("batch_step_ns") / f("evaluate_ns");
+            t.push((
+                "`PreslidingBatch` at full fidelity ≤ 1.5 × `Joint.evaluate` of as many points (Python)".into(),
+                format!("{} — {:.3} × (a step {:.0} ns, evaluate {:.0} ns a joint; torque + commit {:.3} ×)", met(floor <= 1.5), floor, f("batch_step_ns"), f("evaluate_ns"), f("batch_torque_commit_ns") / f("evaluate_ns")),
+            ));
+            let gain = f("loop_ns") / f("batch_torque_commit_ns");
+            t.push((
+                "`PreslidingBatch` ≥ 2.5 × faster than `Presliding` objects in a Python loop".into(),
+                format!("{} — {:.1} × (loop {:.0} ns a joint-step: torque + commit; batch torque + commit {:.0} ns)", met(gain >= 2.5), gain, f("loop_ns"), f("batch_torque_commit_ns")),
+            ));
+            t.push((
+                "table fidelity ≤ 0.1 × full through Python (`PreslidingBatch.step`)".into(),
+                format!("{} — {:.3} × (table {:.0} ns, full {:.0} ns a joint-step)", met(f("batch_table_ns") / f("batch_step_ns") <= 0.1), f("batch_table_ns") / f("batch_step_ns"), f("batch_table_ns"), f("batch_step_ns")),
+            ));
+        }
+        Err(why) => t.push(("`PreslidingBatch` against `Joint.evaluate` and a `Presliding` loop (Python)".into(), format!("not measured ({why})"))),
+    }
+    writeln!(body, "## Scenes at scale: `pinjoint::batch` and `PreslidingBatch`\n").unwrap();
+    writeln!(
+        body,
+        "n presliding joints stepped together (`src/batch/`), each bit for bit the scalar law. The inputs: {} frames of \
+         {} joints each swinging ±0.05–0.5 rad at 0.2–2 Hz under 5–50 kN ±20 % (one in ten held at rest), cycled, \
+         a `step` (torque, then commit) a frame, default parameters, envelope 5–60 kN × 0.01–10 rad/s, tolerance 1e-4. \
+         Time per joint-step = wall time / joints / steps on a pool of {} threads; memory = peak heap bytes from building \
+         the batch to the end of its run, the caller's output array excluded.\n",
+        FRAMES, b.joints, b.threads
+    )
+    .unwrap();
+    writeln!(body, "| target | result |\n|---|---|").unwrap();
+    for (a, r) in &t {
+        writeln!(body, "| {a} | {r} |").unwrap();
+    }
+    if let Ok(v) = &b.python {
+        writeln!(
+            body,
+            "\nPython: {} joints, {} steps a repeat, {} repeats interleaved, fastest repeat; NumPy {}, Python {}; the loop over \
+             `Presliding` objects timed on {} joints. `evaluate_ns` is `Joint.evaluate(load, speed)` of n points (every output \
+             column) per point.",
+            v["n"], v["steps"], v["repeats"], v["numpy"].as_str().unwrap_or("?"), v["python"].as_str().unwrap_or("?"), v["loop_joints"]
+        )
+        .unwrap();
+    }
+    writeln!(body).unwrap();
+    (t, body)
+}
+
+/// Markers of the section inside BENCHMARKS.md (so `--only-batch` can replace it in place).
+pub const BEGIN: &str = "<!-- batch section: pinjoint-bench (--only-batch replaces it) -->";
+/// See [`BEGIN`].
+pub const END: &str = "<!-- end of batch section -->";

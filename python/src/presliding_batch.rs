@@ -1,0 +1,215 @@
+//! `_PreslidingBatch`: n presliding joints stepped together (`pinjoint::batch`), over NumPy
+//! arrays of shape (n,), without the GIL: bit for bit n `_Presliding` objects at fidelity
+//! full (the same library code).
+
+use crate::messages::{model_error, short};
+use crate::params::PyParams;
+use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1, PyReadonlyArray2};
+use pinjoint::batch::{BatchError, BatchParams, Inputs, PreslidingBatch, Settings};
+use pinjoint::fidelity::{Envelope, Fidelity, FidelityError};
+use pinjoint::zero_velocity::Presliding;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+
+/// A batch error as a ValueError with the library's message (a model error's numbers in
+/// their short form, as `Joint.evaluate` gives them).
+fn batch_err(e: BatchError) -> PyErr {
+    let text = match &e {
+        BatchError::Model { index, source } => format!("at index {index}: {}", model_error(source)),
+        other => other.to_string(),
+    };
+    PyValueError::new_err(pinjoint::fmt::bounded_message(&text))
+}
+
+/// Two float64 arrays of shape (n,).
+type ArrayPair<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
+
+/// The joints of `pinjoint.PreslidingBatch` (its native half).
+#[pyclass(name = "_PreslidingBatch", module = "pinjoint._native")]
+pub struct NativePreslidingBatch {
+    batch: PreslidingBatch,
+    /// Copies of one call's inputs (the caller's arrays may change while the GIL is released).
+    buf: [Vec<f64>; 4],
+}
+
+/// Copy `src` into `dst` (kept between calls: no allocation once grown).
+fn copy_into(dst: &mut Vec<f64>, src: &PyReadonlyArray1<'_, f64>) -> PyResult<()> {
+    dst.clear();
+    match src.as_slice() {
+        Ok(s) => dst.extend_from_slice(s),
+        Err(_) => dst.extend(src.as_array().iter().copied()),
+    }
+    Ok(())
+}
+
+impl NativePreslidingBatch {
+    /// Copy the inputs; returns whether a temperature was given.
+    fn take(&mut self, angle: &PyReadonlyArray1<'_, f64>, omega: &PyReadonlyArray1<'_, f64>, load: &PyReadonlyArray1<'_, f64>, temperature: Option<&PyReadonlyArray1<'_, f64>>) -> PyResult<bool> {
+        copy_into(&mut self.buf[0], angle)?;
+        copy_into(&mut self.buf[1], omega)?;
+        copy_into(&mut self.buf[2], load)?;
+        if let Some(t) = temperature {
+            copy_into(&mut self.buf[3], t)?;
+        }
+        Ok(temperature.is_some())
+    }
+}
+
+#[pymethods]
+impl NativePreslidingBatch {
+    #[new]
+    #[pyo3(signature = (n, params, keys, values, law, fidelity, tolerance, envelope))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        n: usize,
+        params: Vec<PyRef<'_, PyParams>>,
+        keys: Vec<String>,
+        values: Option<PyReadonlyArray2<'_, f64>>,
+        law: (f64, f64, f64),
+        fidelity: &str,
+        tolerance: f64,
+        envelope: (f64, f64, f64, f64),
+    ) -> PyResult<Self> {
+        let fid: Fidelity = fidelity.parse().map_err(|e: FidelityError| PyValueError::new_err(e.to_string()))?;
+        let env = Envelope::new(envelope.0, envelope.1, envelope.2, envelope.3).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let law = Presliding::new(law.0, law.1, law.2).map_err(|e| PyValueError::new_err(e.to_string()))?;
+        let mut sets: Vec<pinjoint::Params> = params.iter().map(|p| p.inner).collect();
+        if let Some(v) = values {
+            let v = v.as_array();
+            if v.ncols() != keys.len() || v.nrows() != n {
+                return Err(PyValueError::new_err(format!("per-joint values have shape ({}, {}), expected ({n}, {})", v.nrows(), v.ncols(), keys.len())));
+            }
+            if sets.len() == 1 {
+                sets = vec![sets[0]; n];
+            }
+            for (c, key) in keys.iter().enumerate() {
+                for (i, p) in sets.iter_mut().enumerate() {
+                    if p.set_by_name(key, v[(i, c)]).is_none() {
+                        return Err(PyValueError::new_err(format!("per_joint: {} is not a parameter (see pinjoint.param_table())", pinjoint::fmt::excerpt(key))));
+                    }
+                }
+            }
+        }
+        let bp = if sets.len() == 1 { BatchParams::Shared(sets[0]) } else { BatchParams::PerJoint(sets) };
+        let batch = PreslidingBatch::new(n, bp, law, Settings { fidelity: fid, tolerance, envelope: env }).map_err(batch_err)?;
+        Ok(Self { batch, buf: Default::default() })
+    }
+
+    /// The friction torque (N·m) of every joint at the inputs, the states unchanged.
+    #[pyo3(signature = (angle, angular_velocity, load, temperature=None))]
+    fn torque<'py>(
+        &mut self,
+        py: Python<'py>,
+        angle: PyReadonlyArray1<'py, f64>,
+        angular_velocity: PyReadonlyArray1<'py, f64>,
+        load: PyReadonlyArray1<'py, f64>,
+        temperature: Option<PyReadonlyArray1<'py, f64>>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.call(py, angle, angular_velocity, load, temperature, 0).map(|o| o.expect("an output"))
+    }
+
+    /// Commit every joint's state at its angle.
+    #[pyo3(signature = (angle, angular_velocity, load, temperature=None))]
+    fn commit<'py>(
+        &mut self,
+        py: Python<'py>,
+        angle: PyReadonlyArray1<'py, f64>,
+        angular_velocity: PyReadonlyArray1<'py, f64>,
+        load: PyReadonlyArray1<'py, f64>,
+        temperature: Option<PyReadonlyArray1<'py, f64>>,
+    ) -> PyResult<()> {
+        self.call(py, angle, angular_velocity, load, temperature, 1).map(|_| ())
+    }
+
+    /// The torque at the inputs, then commit (one solve per joint).
+    #[pyo3(signature = (angle, angular_velocity, load, temperature=None))]
+    fn step<'py>(
+        &mut self,
+        py: Python<'py>,
+        angle: PyReadonlyArray1<'py, f64>,
+        angular_velocity: PyReadonlyArray1<'py, f64>,
+        load: PyReadonlyArray1<'py, f64>,
+        temperature: Option<PyReadonlyArray1<'py, f64>>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.call(py, angle, angular_velocity, load, temperature, 2).map(|o| o.expect("an output"))
+    }
+
+    /// Every joint's sliding torque T(P, |omega|) (N·m) at the inputs.
+    #[pyo3(signature = (angular_velocity, load, temperature=None))]
+    fn sliding_torque<'py>(
+        &mut self,
+        py: Python<'py>,
+        angular_velocity: PyReadonlyArray1<'py, f64>,
+        load: PyReadonlyArray1<'py, f64>,
+        temperature: Option<PyReadonlyArray1<'py, f64>>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.call(py, load.clone(), angular_velocity, load, temperature, 3).map(|o| o.expect("an output"))
+    }
+
+    /// (presliding torques N·m, reference angles rad), arrays of shape (n,).
+    #[getter]
+    fn states<'py>(&self, py: Python<'py>) -> PyResult<ArrayPair<'py>> {
+        let n = self.batch.len();
+        let (mut t, mut a) = (vec![0.0; n], vec![0.0; n]);
+        self.batch.states(&mut t, &mut a).map_err(batch_err)?;
+        Ok((t.into_pyarray(py), a.into_pyarray(py)))
+    }
+
+    /// Replace every state: presliding torques (N·m) and reference angles (rad), shape (n,).
+    fn set_states(&mut self, torque: PyReadonlyArray1<'_, f64>, angle: PyReadonlyArray1<'_, f64>) -> PyResult<()> {
+        let (t, a) = (torque.as_array().to_vec(), angle.as_array().to_vec());
+        self.batch.set_states(&t, &a).map_err(batch_err)
+    }
+
+    /// Store the host inertia per joint (kg·m²), or clear it (None).
+    fn set_host_inertia(&mut self, inertia: Option<PyReadonlyArray1<'_, f64>>) -> PyResult<()> {
+        let v = inertia.map(|a| a.as_array().to_vec());
+        self.batch.set_host_inertia(v.as_deref()).map_err(batch_err)
+    }
+
+    /// Models (parameter set × temperature at a level) held now.
+    #[getter]
+    fn models_held(&self) -> usize {
+        self.batch.models_held()
+    }
+
+    /// The number of joints.
+    fn __len__(&self) -> usize {
+        self.batch.len()
+    }
+
+    fn __repr__(&self) -> String {
+        let l = self.batch.law();
+        format!("_PreslidingBatch(n={}, law=({}, {}, {}))", self.batch.len(), short(l.angle), short(l.elastic_limit), short(l.damping_time))
+    }
+}
+
+impl NativePreslidingBatch {
+    /// One call: 0 torque, 1 commit, 2 step, 3 sliding torque. The GIL is released while
+    /// the joints are stepped.
+    fn call<'py>(
+        &mut self,
+        py: Python<'py>,
+        angle: PyReadonlyArray1<'py, f64>,
+        omega: PyReadonlyArray1<'py, f64>,
+        load: PyReadonlyArray1<'py, f64>,
+        temperature: Option<PyReadonlyArray1<'py, f64>>,
+        what: u8,
+    ) -> PyResult<Option<Bound<'py, PyArray1<f64>>>> {
+        let with_t = self.take(&angle, &omega, &load, temperature.as_ref())?;
+        let n = self.batch.len();
+        let mut out = if what == 1 { Vec::new() } else { vec![0.0; n] };
+        let Self { batch, buf } = self;
+        let res = py.detach(|| {
+            let inputs = Inputs { angle: &buf[0], angular_velocity: &buf[1], load: &buf[2], temperature: with_t.then_some(&buf[3][..]) };
+            match what {
+                0 => batch.torque(&inputs, &mut out),
+                1 => batch.commit(&inputs),
+                2 => batch.step(&inputs, &mut out),
+                _ => batch.sliding_torque(inputs.load, inputs.angular_velocity, inputs.temperature, &mut out),
+            }
+        });
+        res.map_err(batch_err)?;
+        Ok((what != 1).then(|| out.into_pyarray(py)))
+    }
+}

@@ -1,0 +1,239 @@
+//! Many presliding joints stepped together: a scene at scale (issue 30).
+//!
+//! A [`PreslidingBatch`] holds n joints, each exactly the scalar object of
+//! [`crate::zero_velocity::PreslidingJoint`] (the law of Dupont, Hayward, Armstrong and
+//! Altpeter, IEEE TAC 47(5), 2002, bounded by the sliding torque of eq. 11), and steps them
+//! all in one call over struct-of-arrays inputs ([`Inputs`]: angle, angular velocity, load,
+//! temperature), in parallel over rayon's threads, without allocating per call once the
+//! temperatures settle. Each joint's sliding torque comes from its parameter set at its
+//! temperature at the batch's fidelity level ([`model::Model`]): shared by default, per joint
+//! when asked. Joints at one (parameter set, temperature) share one model ([`cache`]), so a
+//! table level is built once for them all.
+//!
+//! Bit for bit the scalar law, by construction: each joint's state is a `PreslidingJoint`
+//! driven by the same calls (`torque_at`, `commit`) with the sliding torque from the same
+//! functions as the scalar front ends (the cold complete solve at full, as the Python
+//! `Presliding` object and the PinJoint FMU's step; the level inside its envelope at the
+//! other levels, as the vectorised `Joint.evaluate`). The answer of one joint depends on its
+//! own inputs and state alone, whatever the thread count or chunking. `tests/batch.rs`
+//! checks this against n scalar objects over random scenes at every level.
+//!
+//! ```
+//! use pinjoint::batch::{BatchParams, Inputs, PreslidingBatch, Settings};
+//! use pinjoint::zero_velocity::Presliding;
+//! use pinjoint::Params;
+//! let n = 3;
+//! let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings::default()).unwrap();
+//! let (angle, omega, load) = ([1e-4, 0.0, 0.1], [0.0, 0.0, 0.2], [20e3, 20e3, 20e3]);
+//! let inputs = Inputs { angle: &angle, angular_velocity: &omega, load: &load, temperature: None };
+//! let mut torque = vec![0.0; n];
+//! b.step(&inputs, &mut torque).unwrap(); // the torque at the inputs, then commit
+//! assert!(torque[0] < 0.0 && torque[1] == 0.0 && torque[2] < 0.0);
+//! ```
+
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+pub mod error;
+pub mod inputs;
+pub mod model;
+pub mod cache;
+pub mod step;
+
+pub use error::BatchError;
+pub use inputs::Inputs;
+pub use model::{Model, Settings};
+
+use crate::joint::Joint;
+use crate::params::Params;
+use crate::zero_velocity::{Presliding, PreslidingJoint};
+use cache::Models;
+use step::{Action, JointState};
+
+/// The parameter sets of a batch.
+#[derive(Debug, Clone)]
+pub enum BatchParams {
+    /// One set for every joint (the default).
+    Shared(Params),
+    /// One set per joint, in joint order.
+    PerJoint(Vec<Params>),
+}
+
+/// n presliding joints stepped together (see the [module documentation](self)).
+#[derive(Debug, Clone)]
+pub struct PreslidingBatch {
+    joints: Vec<JointState>,
+    /// Each joint's model slot (u32::MAX before its first call).
+    slots: Vec<u32>,
+    models: Models,
+    per_joint: bool,
+    law: Presliding,
+    /// Per joint, kg·m²; None: not set.
+    // TODO(issue 29): pass to each joint's `PreslidingJoint` once it has a `host_inertia`
+    // setting; until then it is stored (and pickled by the Python front end) but not used.
+    host_inertia: Option<Vec<f64>>,
+    /// Each joint's model key in this call (a buffer kept between calls).
+    keys: Vec<cache::Key>,
+}
+
+impl PreslidingBatch {
+    /// `n` joints at rest at angle 0, nothing held, with the presliding `law`, the parameter
+    /// sets `params` (validated: a per-joint error names the joint) and the fidelity
+    /// `settings`. The models are built at the first call (at the temperatures it gives).
+    pub fn new(n: usize, params: BatchParams, law: Presliding, settings: Settings) -> Result<Self, BatchError> {
+        if n == 0 {
+            return Err(BatchError::Empty);
+        }
+        law.validate().map_err(BatchError::Law)?;
+        settings.validate()?;
+        if matches!(settings.fidelity, crate::fidelity::Fidelity::Table | crate::fidelity::Fidelity::Auto) && settings.tolerance < crate::fidelity::FULL_ERROR_BOUND {
+            return Err(BatchError::Fidelity(crate::fidelity::FidelityError::ToleranceBelowModelAccuracy { value: settings.tolerance, floor: crate::fidelity::FULL_ERROR_BOUND }));
+        }
+        let (sets, per_joint) = match params {
+            BatchParams::Shared(p) => (vec![p], false),
+            BatchParams::PerJoint(v) if v.len() == n => (v, true),
+            BatchParams::PerJoint(v) => return Err(BatchError::ParamCount { expected: n, got: v.len() }),
+        };
+        let bases = sets.iter().enumerate().map(|(index, p)| Joint::new(p).map_err(|source| BatchError::Params { index, source })).collect::<Result<Vec<_>, _>>()?;
+        Ok(PreslidingBatch {
+            joints: vec![JointState::new(PreslidingJoint::new(law, 0.0)); n],
+            slots: vec![u32::MAX; n],
+            models: Models::new(bases, settings),
+            per_joint,
+            law,
+            host_inertia: None,
+            keys: Vec::with_capacity(n),
+        })
+    }
+
+    /// The number of joints.
+    pub fn len(&self) -> usize {
+        self.joints.len()
+    }
+
+    /// Never true (a batch has at least one joint); for clippy's `len` rule.
+    pub fn is_empty(&self) -> bool {
+        self.joints.is_empty()
+    }
+
+    /// The presliding law every joint follows.
+    pub fn law(&self) -> &Presliding {
+        &self.law
+    }
+
+    /// The fidelity settings.
+    pub fn settings(&self) -> &Settings {
+        self.models.settings()
+    }
+
+    /// Whether each joint has its own parameter set.
+    pub fn per_joint(&self) -> bool {
+        self.per_joint
+    }
+
+    /// The parameter set of joint `i`.
+    pub fn params(&self, i: usize) -> &Params {
+        self.models.bases()[if self.per_joint { i } else { 0 }].params()
+    }
+
+    /// The models held now: one per parameter set and temperature in use, and up to
+    /// [`cache::RETAINED`] no joint uses any more (kept for reuse).
+    pub fn models_held(&self) -> usize {
+        self.models.held()
+    }
+
+    /// The host inertia per joint (kg·m²), when set.
+    pub fn host_inertia(&self) -> Option<&[f64]> {
+        self.host_inertia.as_deref()
+    }
+
+    /// Set the host inertia per joint (kg·m², finite > 0; one value per joint), or clear it.
+    /// Stored, not yet used: the scalar `PreslidingJoint` has no such setting yet (issue 29).
+    pub fn set_host_inertia(&mut self, inertia: Option<&[f64]>) -> Result<(), BatchError> {
+        if let Some(v) = inertia {
+            inputs::check_length("host_inertia", v, self.len())?;
+            if let Some((index, &value)) = v.iter().enumerate().find(|(_, x)| !(x.is_finite() && **x > 0.0)) {
+                return Err(BatchError::HostInertia { index, value });
+            }
+        }
+        self.host_inertia = inertia.map(<[f64]>::to_vec);
+        Ok(())
+    }
+
+    /// Joint `i`'s state: (presliding torque τ in N·m, reference angle in rad).
+    pub fn state(&self, i: usize) -> (f64, f64) {
+        let s = &self.joints[i].state;
+        (s.presliding_torque(), s.reference_angle())
+    }
+
+    /// Every joint's state into `torque` (N·m) and `angle` (rad), one value per joint each.
+    pub fn states(&self, torque: &mut [f64], angle: &mut [f64]) -> Result<(), BatchError> {
+        inputs::check_length("torque", torque, self.len())?;
+        inputs::check_length("angle", angle, self.len())?;
+        for ((j, t), a) in self.joints.iter().zip(torque).zip(angle) {
+            (*t, *a) = (j.state.presliding_torque(), j.state.reference_angle());
+        }
+        Ok(())
+    }
+
+    /// Replace every joint's state: presliding torque (N·m) and reference angle (rad), one
+    /// finite value per joint each.
+    pub fn set_states(&mut self, torque: &[f64], angle: &[f64]) -> Result<(), BatchError> {
+        inputs::check_length("presliding_torque", torque, self.len())?;
+        inputs::check_length("angle", angle, self.len())?;
+        for (i, (&t, &a)) in torque.iter().zip(angle).enumerate() {
+            inputs::finite("presliding_torque", i, t, "N.m")?;
+            inputs::finite("angle", i, a, "rad")?;
+        }
+        for ((j, &t), &a) in self.joints.iter_mut().zip(torque).zip(angle) {
+            j.state.set_state(t, a);
+        }
+        Ok(())
+    }
+
+    /// Point every joint at the model of its parameter set at its temperature.
+    fn assign(&mut self, temperature: Option<&[f64]>) -> Result<(), BatchError> {
+        let PreslidingBatch { models, slots, keys, per_joint, .. } = self;
+        let n = slots.len();
+        keys.resize(n, (0, 0));
+        for (i, k) in keys.iter_mut().enumerate() {
+            *k = models.key_of(if *per_joint { i as u32 } else { 0 }, temperature.map(|t| t[i]));
+        }
+        models.assign(slots, |i| keys[i])
+    }
+
+    fn run(&mut self, inputs: &Inputs, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
+        inputs.check(self.len())?;
+        if action != Action::Commit {
+            inputs::check_length("output", out, self.len())?;
+        }
+        self.assign(inputs.temperature)?;
+        step::run(&mut self.joints, &self.slots, &self.models, inputs, action, out)
+    }
+
+    /// The friction torque on each pin (N·m) at the inputs into `out`, the states unchanged:
+    /// joint i's `PreslidingJoint::torque_at(angle, ω, T)` with T its sliding torque.
+    /// On an error (the lowest joint index's) no state has changed.
+    pub fn torque(&mut self, inputs: &Inputs, out: &mut [f64]) -> Result<(), BatchError> {
+        self.run(inputs, Action::Torque, out)
+    }
+
+    /// Commit every joint's state at its input angle (the FMU's step when the host sets the
+    /// angle). On an error no state has changed.
+    pub fn commit(&mut self, inputs: &Inputs) -> Result<(), BatchError> {
+        self.run(inputs, Action::Commit, &mut [])
+    }
+
+    /// [`PreslidingBatch::torque`] then [`PreslidingBatch::commit`] at the same inputs, the
+    /// sliding torque solved once: the explicit host's step.
+    pub fn step(&mut self, inputs: &Inputs, out: &mut [f64]) -> Result<(), BatchError> {
+        self.run(inputs, Action::Step, out)
+    }
+
+    /// Each joint's sliding torque T(P, |ω|) (N·m, ≥ 0) at `load` (N), `angular_velocity`
+    /// (rad/s) and `temperature` (K; None: each parameter set's) into `out`: at ω = 0 the
+    /// breakaway torque. The states are unchanged.
+    pub fn sliding_torque(&mut self, load: &[f64], angular_velocity: &[f64], temperature: Option<&[f64]>, out: &mut [f64]) -> Result<(), BatchError> {
+        let inputs = Inputs { angle: load, angular_velocity, load, temperature };
+        inputs::check_length("load", load, self.len())?;
+        self.run(&inputs, Action::Bound, out)
+    }
+}

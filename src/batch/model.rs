@@ -1,0 +1,91 @@
+//! One parameter set at one temperature at a fidelity level: the sliding torque
+//! T = μ(P, |ω|)·R·|P| (eq. 11) that bounds the presliding law, computed exactly as the
+//! scalar front ends compute it.
+//!
+//! The scalar law is the `Presliding` object of the Python package and the PinJoint FMU's
+//! step: the sliding torque of the cold complete solve ([`Joint::evaluate`], no warm start,
+//! so the answer depends on the inputs alone), 0 for an unloaded joint; at the table,
+//! boundary and auto levels the level's answer inside its envelope and the cold complete
+//! solve elsewhere (the vectorised `Joint.evaluate` of the Python package). A [`Model`]
+//! answers bit for bit as that scalar path, because it calls the same functions.
+
+use super::error::BatchError;
+use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
+use crate::joint::{Joint, ModelError};
+
+/// The fidelity a batch runs at: the level, its tolerance and its envelope (as the scalar
+/// [`Evaluator::new`] takes them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    /// The level asked for (`Auto` resolves per parameter set and temperature).
+    pub fidelity: Fidelity,
+    /// Largest relative error accepted (table, boundary, auto).
+    pub tolerance: f64,
+    /// Loads (N) and speed magnitudes (rad/s) where table and boundary answer.
+    pub envelope: Envelope,
+}
+
+impl Default for Settings {
+    /// Full fidelity; tolerance 1e-4 and the envelope 5–60 kN, 0.01–10 rad/s (the PinJoint
+    /// FMU's and the Python package's defaults) for the other levels.
+    fn default() -> Self {
+        Settings { fidelity: Fidelity::Full, tolerance: 1e-4, envelope: Envelope { load_min: 5e3, load_max: 60e3, speed_min: 0.01, speed_max: 10.0 } }
+    }
+}
+
+impl Settings {
+    /// Check the tolerance and envelope as [`Evaluator::new`] does.
+    pub fn validate(&self) -> Result<(), BatchError> {
+        crate::fidelity::validate_tolerance(self.tolerance).map_err(BatchError::Fidelity)?;
+        self.envelope.validate().map_err(BatchError::Fidelity)
+    }
+}
+
+/// The sliding torque of one parameter set at one temperature.
+#[derive(Debug, Clone)]
+pub struct Model {
+    joint: Joint,
+    /// The table or boundary level (None at full, and where auto chose full).
+    level: Option<Evaluator>,
+}
+
+impl Model {
+    /// `joint` (built at the temperature wanted) at the level of `settings`.
+    pub fn build(joint: Joint, settings: &Settings) -> Result<Self, crate::fidelity::FidelityError> {
+        if settings.fidelity == Fidelity::Full {
+            return Ok(Model { joint, level: None });
+        }
+        let ev = Evaluator::with_joint(joint.clone(), settings.fidelity, settings.tolerance, settings.envelope)?;
+        let level = (ev.chosen() != Level::Full).then_some(ev);
+        Ok(Model { joint, level })
+    }
+
+    /// The joint (its parameters, capacity and temperature).
+    pub fn joint(&self) -> &Joint {
+        &self.joint
+    }
+
+    /// The level in use (what auto chose).
+    pub fn level(&self) -> Level {
+        self.level.as_ref().map_or(Level::Full, Evaluator::chosen)
+    }
+
+    /// The sliding torque T(P, |ω|) (N·m) at `load` (N, its magnitude) and `omega` (rad/s):
+    /// 0 for `load` = 0; the level inside its envelope, else the cold complete solve.
+    /// Errors: a load at or beyond the asperity model's capacity, and every error of
+    /// [`Joint::evaluate`]. The inputs must be finite (the batch checks them first).
+    #[inline]
+    pub fn sliding_torque(&self, load: f64, omega: f64) -> Result<f64, ModelError> {
+        let capacity = self.joint.capacity();
+        if load.abs() >= capacity {
+            return Err(ModelError::BeyondCapacity { load: load.abs(), capacity });
+        }
+        if load == 0.0 {
+            return Ok(0.0);
+        }
+        if let Some(e) = self.level.as_ref().and_then(|ev| ev.evaluate_inside(load, omega)) {
+            return Ok(e.torque);
+        }
+        self.joint.evaluate(load, omega).map(|op| op.torque)
+    }
+}

@@ -1,0 +1,114 @@
+//! The parallel passes of a call: the sliding torque of every joint (cached per joint, so
+//! `torque` then `commit` at the same inputs solves once), then the presliding law of each.
+//! Rayon chunks over the joints; nothing is allocated per call.
+
+use super::cache::Models;
+use super::error::BatchError;
+use super::inputs::{finite, Inputs};
+use crate::zero_velocity::PreslidingJoint;
+use rayon::prelude::*;
+
+/// Joints handed to one rayon task; below two chunks the work stays on the calling thread.
+pub const CHUNK: usize = 512;
+
+/// One joint: its presliding state and the last sliding torque computed for it.
+#[derive(Debug, Clone, Copy)]
+pub struct JointState {
+    /// The scalar law's state.
+    pub state: PreslidingJoint,
+    /// Bits of the (load, angular velocity, temperature) of `bound`; load NaN: none yet.
+    key: [u64; 3],
+    /// The sliding torque at `key` (N·m).
+    pub bound: f64,
+}
+
+impl JointState {
+    /// At `state`, no sliding torque computed yet.
+    pub fn new(state: PreslidingJoint) -> Self {
+        JointState { state, key: [f64::NAN.to_bits(), 0, 0], bound: f64::NAN }
+    }
+}
+
+/// What the second pass does with each joint's sliding torque.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    /// The friction torque at the inputs into the output; the state unchanged.
+    Torque,
+    /// Commit the state at the input angle.
+    Commit,
+    /// Both: the torque at the inputs, then commit.
+    Step,
+    /// The sliding torque itself into the output (no angle used).
+    Bound,
+}
+
+/// The first failing joint of a chunk starting at `offset`, if any.
+fn bounds_chunk(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+    for (k, (j, &slot)) in joints.iter_mut().zip(slots).enumerate() {
+        let i = offset + k;
+        let res = (|| {
+            let load = finite("load", i, inp.load[i], "N")?;
+            let omega = finite("angular_velocity", i, inp.angular_velocity[i], "rad/s")?;
+            if angle {
+                finite("angle", i, inp.angle[i], "rad")?;
+            }
+            let key = [load.to_bits(), omega.to_bits(), models.key(slot).1];
+            if key != j.key {
+                j.bound = models.get(slot).sliding_torque(load, omega).map_err(|source| BatchError::Model { index: i, source })?;
+                j.key = key;
+            }
+            Ok(())
+        })();
+        if let Err(e) = res {
+            return Some((i, e));
+        }
+    }
+    None
+}
+
+/// The law on a chunk (every bound computed).
+fn law_chunk(joints: &mut [JointState], out: &mut [f64], inp: &Inputs, offset: usize, action: Action) {
+    for (k, j) in joints.iter_mut().enumerate() {
+        let i = offset + k;
+        match action {
+            Action::Torque => out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound),
+            Action::Commit => j.state.commit(inp.angle[i], j.bound),
+            Action::Step => {
+                out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound);
+                j.state.commit(inp.angle[i], j.bound);
+            }
+            Action::Bound => out[k] = j.bound,
+        }
+    }
+}
+
+/// Every joint's sliding torque at `inp` (the inputs' lengths and the slots already set),
+/// then `action`. On an error (the lowest joint index's) no state has changed. `out` has one
+/// value per joint (unused by [`Action::Commit`]: it may be empty then).
+pub fn run(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
+    let n = joints.len();
+    let angle = action != Action::Bound;
+    let err = if n < 2 * CHUNK {
+        bounds_chunk(joints, slots, models, inp, 0, angle)
+    } else {
+        joints
+            .par_chunks_mut(CHUNK)
+            .zip(slots.par_chunks(CHUNK))
+            .enumerate()
+            .filter_map(|(c, (j, s))| bounds_chunk(j, s, models, inp, c * CHUNK, angle))
+            .min_by_key(|(i, _)| *i)
+    };
+    if let Some((_, e)) = err {
+        return Err(e);
+    }
+    let out_len = if action == Action::Commit { 0 } else { n };
+    let out = &mut out[..out_len];
+    if n < 2 * CHUNK {
+        law_chunk(joints, out, inp, 0, action);
+    } else if action == Action::Commit {
+        joints.par_chunks_mut(CHUNK).enumerate().for_each(|(c, j)| law_chunk(j, &mut [], inp, c * CHUNK, action));
+    } else {
+        joints.par_chunks_mut(CHUNK).zip(out.par_chunks_mut(CHUNK)).enumerate().for_each(|(c, (j, o))| law_chunk(j, o, inp, c * CHUNK, action));
+    }
+    Ok(())
+}

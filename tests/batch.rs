@@ -1,0 +1,328 @@
+//! The batch is n scalar presliding joints, bit for bit (issue 30): random scenes at every
+//! fidelity level, shared and per-joint parameters, with and without per-joint temperatures,
+//! against n independent `PreslidingJoint`s whose sliding torque is computed here the way the
+//! scalar front ends compute it (the Python `Presliding` object's cold full solve; the
+//! level's answer inside the envelope otherwise, as the vectorised `Joint.evaluate`).
+
+use pinjoint::batch::{BatchError, BatchParams, Inputs, PreslidingBatch, Settings};
+use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
+use pinjoint::zero_velocity::{Presliding, PreslidingJoint};
+use pinjoint::{Joint, ModelError, Params};
+use proptest::prelude::*;
+use std::collections::HashMap;
+
+/// The scalar sliding torque of the front ends, written out independently of the batch.
+struct Scalar {
+    fidelity: Fidelity,
+    settings: Settings,
+    joints: HashMap<(usize, u64), (Joint, Option<Evaluator>)>,
+}
+
+impl Scalar {
+    fn new(settings: Settings) -> Self {
+        Scalar { fidelity: settings.fidelity, settings, joints: HashMap::new() }
+    }
+
+    fn bound(&mut self, i: usize, params: &Params, temperature: Option<f64>, load: f64, omega: f64) -> Result<f64, ModelError> {
+        let mut p = *params;
+        if let Some(t) = temperature {
+            p.lubricant.temperature = t;
+        }
+        let s = self.settings;
+        let fid = self.fidelity;
+        let (joint, level) = self.joints.entry((i, p.lubricant.temperature.to_bits())).or_insert_with(|| {
+            let joint = Joint::new(&p).unwrap();
+            let level = (fid != Fidelity::Full).then(|| Evaluator::new(&p, fid, s.tolerance, s.envelope).unwrap());
+            (joint, level)
+        });
+        // As python/src/presliding.rs: the capacity, then an unloaded joint, then the model.
+        if load.abs() >= joint.capacity() {
+            return Err(ModelError::BeyondCapacity { load: load.abs(), capacity: joint.capacity() });
+        }
+        if load == 0.0 {
+            return Ok(0.0);
+        }
+        if let Some(e) = level.as_ref().and_then(|ev| ev.evaluate_inside(load, omega)) {
+            return Ok(e.torque);
+        }
+        joint.evaluate(load, omega).map(|op| op.torque)
+    }
+}
+
+#[derive(Debug, Clone)]
+struct Step {
+    angle: Vec<f64>,
+    omega: Vec<f64>,
+    load: Vec<f64>,
+    temperature: Option<Vec<f64>>,
+    /// 0: torque then commit at the same inputs; 1: step; 2: torque, then commit at other loads.
+    mode: u8,
+}
+
+fn omega_strategy() -> impl Strategy<Value = f64> {
+    prop_oneof![Just(0.0), Just(-0.0), -1e-3..1e-3f64, -5.0..5.0f64, -0.05..0.05f64]
+}
+
+fn load_strategy() -> impl Strategy<Value = f64> {
+    prop_oneof![1 => Just(0.0), 8 => 1e3..6e4f64, 2 => -6e4..-1e3f64, 1 => 4e3..7e3f64]
+}
+
+fn scene(n: usize, steps: usize, temps: bool) -> impl Strategy<Value = Vec<Step>> {
+    scene_in(n, steps, temps, 240.0)
+}
+
+/// Temperatures from `cold` (K) to 330 K (a table is built over the envelope's ghost nodes,
+/// where a cold, viscous lubricant's film passes the clearance: the level cannot be built).
+fn scene_in(n: usize, steps: usize, temps: bool, cold: f64) -> impl Strategy<Value = Vec<Step>> {
+    let step = (
+        prop::collection::vec(-2e-3..2e-3f64, n),
+        prop::collection::vec(omega_strategy(), n),
+        prop::collection::vec(load_strategy(), n),
+        prop::collection::vec(prop_oneof![Just(293.15), Just(cold.max(253.15)), Just(318.15), cold..330.0f64], n),
+        0u8..3,
+        any::<bool>(),
+        any::<bool>(),
+    );
+    prop::collection::vec(step, 1..steps).prop_map(move |v| {
+        let mut angle = vec![0.0; n];
+        let mut last: Option<(Vec<f64>, Vec<f64>)> = None;
+        v.into_iter()
+            .map(|(da, omega, load, t, mode, use_t, hold)| {
+                for (a, d) in angle.iter_mut().zip(&da) {
+                    *a += d;
+                }
+                // Half the steps hold the last load and speed (a joint at rest, a steady
+                // slide): only the temperature or the angle moves.
+                let (omega, load) = match (&last, hold) {
+                    (Some((w, l)), true) => (w.clone(), l.clone()),
+                    _ => (omega, load),
+                };
+                last = Some((omega.clone(), load.clone()));
+                Step { angle: angle.clone(), omega, load, temperature: (temps && use_t).then_some(t), mode }
+            })
+            .collect()
+    })
+}
+
+fn settings(fidelity: Fidelity) -> Settings {
+    Settings { fidelity, tolerance: 1e-3, envelope: Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap() }
+}
+
+/// Run `scene` on the batch and on the scalar joints; every output and state bit for bit,
+/// every error at the same index.
+fn check(params: &[Params], per_joint: bool, fidelity: Fidelity, scene: &[Step]) -> Result<(), TestCaseError> {
+    let n = scene[0].angle.len();
+    let law = Presliding::new(2e-3, 0.9, 0.02).unwrap();
+    let bp = if per_joint { BatchParams::PerJoint(params.to_vec()) } else { BatchParams::Shared(params[0]) };
+    let mut batch = PreslidingBatch::new(n, bp, law, settings(fidelity)).unwrap();
+    let mut scalar = Scalar::new(settings(fidelity));
+    let mut states = vec![PreslidingJoint::new(law, 0.0); n];
+    let p = |i: usize| if per_joint { params[i] } else { params[0] };
+    let mut out = vec![0.0; n];
+    for s in scene {
+        let t = s.temperature.as_deref();
+        let inputs = Inputs { angle: &s.angle, angular_velocity: &s.omega, load: &s.load, temperature: t };
+        // The reference: every joint's bound, the first error.
+        let mut bounds = vec![0.0; n];
+        let mut first_err = None;
+        for i in 0..n {
+            match scalar.bound(i, &p(i), t.map(|t| t[i]), s.load[i], s.omega[i]) {
+                Ok(b) => bounds[i] = b,
+                Err(e) => {
+                    first_err = Some((i, e));
+                    break;
+                }
+            }
+        }
+        let before: Vec<(f64, f64)> = (0..n).map(|i| batch.state(i)).collect();
+        let res = if s.mode == 1 { batch.step(&inputs, &mut out) } else { batch.torque(&inputs, &mut out) };
+        if let Some((i, e)) = first_err {
+            prop_assert_eq!(res, Err(BatchError::Model { index: i, source: e }));
+            prop_assert_eq!(&before, &(0..n).map(|i| batch.state(i)).collect::<Vec<_>>());
+            continue;
+        }
+        prop_assert!(res.is_ok(), "{res:?}");
+        for i in 0..n {
+            let want = states[i].torque_at(s.angle[i], s.omega[i], bounds[i]);
+            prop_assert_eq!(out[i].to_bits(), want.to_bits(), "joint {} torque {} != {}", i, out[i], want);
+        }
+        let commit_load: Vec<f64> = if s.mode == 2 { s.load.iter().map(|l| l * 0.75).collect() } else { s.load.clone() };
+        if s.mode != 1 {
+            let ci = Inputs { load: &commit_load, ..inputs };
+            let mut cb = vec![0.0; n];
+            let mut cerr = None;
+            for i in 0..n {
+                match scalar.bound(i, &p(i), t.map(|t| t[i]), commit_load[i], s.omega[i]) {
+                    Ok(b) => cb[i] = b,
+                    Err(e) => {
+                        cerr = Some((i, e));
+                        break;
+                    }
+                }
+            }
+            let r = batch.commit(&ci);
+            if let Some((i, e)) = cerr {
+                prop_assert_eq!(r, Err(BatchError::Model { index: i, source: e }));
+                continue;
+            }
+            prop_assert!(r.is_ok());
+            bounds = cb;
+        }
+        for i in 0..n {
+            states[i].commit(s.angle[i], bounds[i]);
+            let (tau, a) = batch.state(i);
+            prop_assert_eq!(tau.to_bits(), states[i].presliding_torque().to_bits(), "joint {} state", i);
+            prop_assert_eq!(a.to_bits(), states[i].reference_angle().to_bits());
+        }
+    }
+    Ok(())
+}
+
+fn mu_params() -> impl Strategy<Value = Params> {
+    (0.08..0.16f64, 0.7..1.4f64).prop_map(|(mu, eta)| {
+        let mut p = Params::default();
+        p.friction.boundary_friction_coefficient = mu;
+        p.lubricant.viscosity *= eta;
+        p
+    })
+}
+
+/// Viscosities a table level can be built with over the envelope's ghost nodes.
+fn mild_params() -> impl Strategy<Value = Params> {
+    (0.08..0.16f64, 0.7..1.0f64).prop_map(|(mu, eta)| {
+        let mut p = Params::default();
+        p.friction.boundary_friction_coefficient = mu;
+        p.lubricant.viscosity *= eta;
+        p
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    #[test]
+    fn full_shared_params(s in scene(7, 25, true), p in mu_params()) {
+        check(&[p], false, Fidelity::Full, &s)?;
+    }
+
+    #[test]
+    fn full_per_joint_params(s in scene(6, 20, true), p in prop::collection::vec(mu_params(), 6)) {
+        check(&p, true, Fidelity::Full, &s)?;
+    }
+
+    #[test]
+    fn boundary_per_joint_params(s in scene_in(5, 20, true, 283.0), p in prop::collection::vec(mild_params(), 5)) {
+        check(&p, true, Fidelity::Boundary, &s)?;
+    }
+}
+
+proptest! {
+    // Every table build costs milliseconds: fewer cases, few temperatures.
+    #![proptest_config(ProptestConfig { cases: 8, ..ProptestConfig::default() })]
+
+    #[test]
+    fn table_shared_params(s in scene(9, 20, false), p in mild_params()) {
+        check(&[p], false, Fidelity::Table, &s)?;
+    }
+
+    #[test]
+    fn table_and_auto_with_temperatures(s in scene_in(3, 6, true, 283.0), p in prop::collection::vec(mild_params(), 3), auto in any::<bool>()) {
+        check(&p, true, if auto { Fidelity::Auto } else { Fidelity::Table }, &s)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 4, ..ProptestConfig::default() })]
+
+    /// More joints than one rayon chunk: the parallel path, the same numbers.
+    #[test]
+    fn many_joints_on_every_thread(s in scene(1500, 4, true), p in mu_params()) {
+        check(&[p], false, Fidelity::Full, &s)?;
+    }
+}
+
+#[test]
+fn bad_inputs_name_the_argument_and_the_index() {
+    let n = 4;
+    let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings::default()).unwrap();
+    let (a, w, l) = (vec![0.0; n], vec![0.1; n], vec![2e4; n]);
+    let mut out = vec![0.0; n];
+    let short = vec![0.1; 3];
+    let e = b.torque(&Inputs { angle: &a, angular_velocity: &short, load: &l, temperature: None }, &mut out).unwrap_err();
+    assert_eq!(e.to_string(), "angular_velocity has 3 values, the batch has 4 joints: every input must have one value per joint");
+    let mut l2 = l.clone();
+    l2[2] = f64::NAN;
+    let e = b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l2, temperature: None }, &mut out).unwrap_err();
+    assert_eq!(e.to_string(), "load = NaN N at index 2 is not a finite number");
+    let mut a2 = a.clone();
+    a2[3] = f64::INFINITY;
+    let e = b.commit(&Inputs { angle: &a2, angular_velocity: &w, load: &l, temperature: None }).unwrap_err();
+    assert_eq!(e, BatchError::NotFinite { argument: "angle", index: 3, value: f64::INFINITY, unit: "rad" });
+    let t = [293.15, f64::NAN, 293.15, 293.15];
+    let e = b.torque(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap_err();
+    assert_eq!(e.to_string(), "temperature = NaN K at index 1 is not a finite number");
+    let t = [293.15, 293.15, 293.15, 1e4];
+    let e = b.torque(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap_err();
+    assert!(matches!(e, BatchError::Temperature { index: 3, .. }), "{e}");
+    assert!(e.to_string().contains("lubricant.temperature"), "{e}");
+    let mut l3 = l.clone();
+    l3[1] = 1e12;
+    let e = b.torque(&Inputs { angle: &a, angular_velocity: &w, load: &l3, temperature: None }, &mut out).unwrap_err();
+    assert!(matches!(e, BatchError::Model { index: 1, source: ModelError::BeyondCapacity { .. } }), "{e}");
+    // Nothing changed by the failed calls: the states are still at rest.
+    for i in 0..n {
+        assert_eq!(b.state(i), (0.0, 0.0));
+    }
+    assert_eq!(PreslidingBatch::new(0, BatchParams::Shared(Params::default()), Presliding::default(), Settings::default()).unwrap_err(), BatchError::Empty);
+    let e = PreslidingBatch::new(3, BatchParams::PerJoint(vec![Params::default(); 2]), Presliding::default(), Settings::default()).unwrap_err();
+    assert_eq!(e, BatchError::ParamCount { expected: 3, got: 2 });
+    let mut bad = Params::default();
+    bad.friction.boundary_friction_coefficient = -1.0;
+    let e = PreslidingBatch::new(2, BatchParams::PerJoint(vec![Params::default(), bad]), Presliding::default(), Settings::default()).unwrap_err();
+    assert!(matches!(e, BatchError::Params { index: 1, .. }), "{e}");
+}
+
+/// Joints at one temperature share one model; a model no joint uses is dropped.
+#[test]
+fn models_are_shared_and_released() {
+    let n = 50;
+    let s = Settings { fidelity: Fidelity::Table, ..Settings::default() };
+    let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), s).unwrap();
+    let (a, w, l) = (vec![0.0; n], vec![0.5; n], vec![2e4; n]);
+    let mut out = vec![0.0; n];
+    b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None }, &mut out).unwrap();
+    assert_eq!(b.models_held(), 1);
+    let t: Vec<f64> = (0..n).map(|i| if i % 2 == 0 { 293.15 } else { 303.15 }).collect();
+    b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
+    assert_eq!(b.models_held(), 2);
+    let t = vec![310.0; n];
+    b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
+    // In use: 310 K; retained: 293.15 K and 303.15 K.
+    assert_eq!(b.models_held(), 3);
+    // Back to 293.15 K: the retained model, no new one.
+    b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None }, &mut out).unwrap();
+    assert_eq!(b.models_held(), 3);
+    // Many temperatures one after another: at most RETAINED kept beside the one in use.
+    for k in 0..10 {
+        let t = vec![300.0 + f64::from(k); n];
+        b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
+    }
+    assert_eq!(b.models_held(), 1 + pinjoint::batch::cache::RETAINED);
+}
+
+/// A level that cannot be built for one joint's parameters names that joint, and changes
+/// nothing.
+#[test]
+fn a_level_that_cannot_be_built_names_the_joint() {
+    let mut thick = Params::default();
+    thick.lubricant.viscosity *= 4.0; // its film passes the clearance at the table's ghost nodes
+    let s = Settings { fidelity: Fidelity::Table, tolerance: 1e-3, envelope: Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap() };
+    let mut b = PreslidingBatch::new(3, BatchParams::PerJoint(vec![Params::default(), thick, thick]), Presliding::default(), s).unwrap();
+    let (a, w, l) = (vec![0.0; 3], vec![0.5; 3], vec![2e4; 3]);
+    let mut out = vec![0.0; 3];
+    let e = b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None }, &mut out).unwrap_err();
+    assert!(matches!(e, BatchError::Level { index: 1, .. }), "{e}");
+    assert!(e.to_string().starts_with("fidelity level for the joint at index 1: "), "{e}");
+    assert_eq!(b.models_held(), 0);
+    assert_eq!(b.state(0), (0.0, 0.0));
+}
