@@ -23,6 +23,7 @@ use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::Evaluator;
 use pinjoint::zero_velocity::jet::{Jet, Scalar};
 use pinjoint::zero_velocity::joint::{bound_partials, tangent_held};
+use pinjoint::zero_velocity::modes::{self, Mode};
 use pinjoint::zero_velocity::{band, ZeroVelocityModel};
 
 /// The knowns a partial can be taken with respect to.
@@ -68,9 +69,14 @@ fn friction_jets(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta
         ZeroVelocityModel::Presliding => {
             let (t, dw, dp) = bound_partials(&mut bound, load, omega)?;
             let t = Jet::with(t, [0.0, dw, dp]);
-            let law = &v.zv.law;
+            let law = &v.zv.law.at_step(v.step);
+            let mode = if me { Mode::from_code(v.mode).unwrap_or_default() } else { Mode::Stick };
             let tau = if me { Jet::var(v.tau, 0) } else { tangent_held(law, v.tau, delta, omega, t) };
-            Ok(FrictionJets { torque: law.torque(tau, w, t), power: law.dissipation(tau, w, t), rate: law.rate(tau, w, t) })
+            Ok(FrictionJets {
+                torque: modes::torque(law, mode, tau, w, t),
+                power: modes::dissipation(law, mode, tau, w, t),
+                rate: modes::rate(law, mode, tau, w, t),
+            })
         }
         ZeroVelocityModel::Band => {
             let width = v.zv.band;
