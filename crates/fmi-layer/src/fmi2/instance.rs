@@ -543,6 +543,7 @@ impl Instance {
     /// `fmi2Terminate`: to the `terminated` state.
     pub fn terminate(&mut self) -> CallResult {
         self.state = State::Terminated;
+        self.logger.flush_repeats();
         self.event(&format!("terminated at t = {} s", self.time));
         Ok(Status::Ok)
     }
@@ -550,6 +551,7 @@ impl Instance {
     /// `fmi2Reset`: every variable back to its start value, time and start time 0, to the
     /// `instantiated` state.
     pub fn reset(&mut self) -> CallResult {
+        self.logger.flush_repeats();
         self.model.set_start_values();
         self.model.set_interface(self.interface);
         self.state = State::Instantiated;
