@@ -299,6 +299,42 @@ mod tests {
         assert!(matches!(source, Some(pinjoint::ParamError::OutOfRange { .. })), "{source:?}");
     }
 
+    /// A state whose Model Exchange mode is not 0, 1 or -1 is refused, nothing changed.
+    #[test]
+    fn a_state_with_a_bad_mode_is_refused() {
+        let mut m = PinJointModel::new();
+        let mode = TABLE.index("presliding_mode").unwrap();
+        for bad in [2.0, 0.5, f64::NAN] {
+            let mut v = Values::default();
+            TABLE.set(&mut v, mode, bad);
+            let mut w = ByteWriter::default();
+            TABLE.write(STATE_VERSION, &v, &mut w);
+            let e = m.deserialize(&w.buf).unwrap_err();
+            assert!(matches!(e, ModelError::RejectedState(_) | ModelError::InvalidValue { .. }), "{bad}: {e}");
+        }
+        assert_eq!(m.v.mode, 0.0);
+    }
+
+    /// The first angle set after initialization is the reference when none was set in
+    /// initialization mode; one set there is the reference itself.
+    #[test]
+    fn the_first_angle_is_the_reference_unless_set_in_initialization() {
+        let angle = TABLE.index("angle").unwrap();
+        let mut m = PinJointModel::new();
+        m.exit_initialization(0.0).unwrap();
+        m.set_real(angle, 1.4);
+        m.compute_outputs().unwrap();
+        assert_eq!(m.v.out.friction.torque, 0.0);
+        assert_eq!((m.v.angle_ref, m.v.angle_pending, m.v.angle_driven), (1.4, 0.0, 1.0));
+        let mut m = PinJointModel::new();
+        m.set_real(angle, 0.0);
+        m.exit_initialization(0.0).unwrap();
+        m.set_real(angle, 1.4);
+        m.compute_outputs().unwrap();
+        let bound = m.v.out.point.unwrap().torque;
+        assert_eq!(m.v.out.friction.torque, -bound);
+    }
+
     /// A state with another layout version is rejected by name, nothing changed.
     #[test]
     fn a_foreign_state_is_rejected() {
