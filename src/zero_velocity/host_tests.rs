@@ -27,6 +27,7 @@ struct MeRun {
     events: usize,
 }
 
+#[allow(clippy::too_many_arguments)] // a test harness: the scene's settings spelled out
 fn me_run(law: &Presliding, j: f64, bound: f64, drive: impl Fn(f64) -> f64, h: f64, t_end: f64, rk4: bool, law_rate: bool) -> MeRun {
     let f = |t: f64, y: [f64; 3], mode: Mode| -> [f64; 3] {
         let (torque, rate) = if law_rate {
@@ -181,7 +182,7 @@ fn the_host_inertia_damping_is_near_critical_and_within_the_explicit_bound() {
                     // Symplectic Euler with the torque held: trace 2 − a − b, determinant 1 − a.
                     let (tr, det) = (2.0 - a - b, 1.0 - a);
                     let disc = tr * tr - 4.0 * det;
-                    let modulus = if disc < 0.0 { det.sqrt() } else { ((tr.abs() + disc.sqrt()) / 2.0).max(0.0) };
+                    let modulus = if disc < 0.0 { det.sqrt() } else { f64::midpoint(tr.abs(), disc.sqrt()).max(0.0) };
                     assert!(modulus < 1.0, "J {j} T {bound} h {h}: |lambda| {modulus}");
                     if disc >= 0.0 {
                         assert!((tr - disc.sqrt()) / 2.0 >= 0.0, "J {j} T {bound} h {h}: a negative eigenvalue (sign alternation)");
@@ -241,7 +242,7 @@ fn a_wrapped_angle_gives_the_torque_of_the_continuous_one() {
     let mut b = PreslidingJoint::new(Presliding::default(), wrap(3.0));
     let mut c = PreslidingJoint::new(Presliding::default(), 3.0 + 4.0 * TAU);
     for i in 1..20_000 {
-        let th = 3.0 + w * h * i as f64;
+        let th = 3.0 + w * h * f64::from(i);
         let (ta, tb, tc) = (a.torque_at(th, w, bound), b.torque_at(wrap(th), w, bound), c.torque_at(th + 4.0 * TAU, w, bound));
         assert!((ta - tb).abs() < 1e-6 && (ta - tc).abs() < 1e-6, "{i}: {ta} {tb} {tc}");
         a.commit_step(th, w, bound, h);

@@ -42,6 +42,12 @@ use super::presliding::Presliding;
 /// torque by at most 0.01·(1 − β)·T (0.05 % of T).
 pub const SLIP_FRACTION: f64 = 0.01;
 
+/// Whether the sliding torque `bound` is not > 0 (0, negative or NaN): an unloaded joint.
+#[inline]
+fn unloaded(bound: f64) -> bool {
+    bound.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+}
+
 /// The mode of the Model Exchange state.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Mode {
@@ -88,7 +94,7 @@ impl Mode {
 /// behind the motion unloads elastically, g = 1); 0 in slip and when unloaded.
 #[inline]
 pub fn rate<S: Scalar>(law: &Presliding, mode: Mode, tau: S, omega: S, bound: S) -> S {
-    if mode != Mode::Stick || !(bound.re() > 0.0) {
+    if mode != Mode::Stick || unloaded(bound.re()) {
         return S::c(0.0);
     }
     // At rest g is taken in the unloading direction: the value is 0, ∂/∂ω the elastic k.
@@ -130,7 +136,7 @@ pub fn event_due(law: &Presliding, mode: Mode, tau: f64, omega: f64, bound: f64)
 /// reaches the bound along the motion (τ ← s·T), a slip that stopped or reversed back to stick
 /// at s·T. Unloaded: stick at 0. Returns the new mode and state.
 pub fn update(law: &Presliding, mode: Mode, tau: f64, omega: f64, bound: f64) -> (Mode, f64) {
-    if !(bound > 0.0) {
+    if unloaded(bound) {
         return (Mode::Stick, 0.0);
     }
     let tau = match mode {

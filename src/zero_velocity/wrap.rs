@@ -51,8 +51,8 @@ mod tests {
         };
         let h = 1e-3;
         for k in 0..20_000 {
-            let omega = 0.1 + 0.01 * (k % 7) as f64;
-            let t = k as f64 * h;
+            let omega = 0.1 + 0.01 * f64::from(k % 7);
+            let t = f64::from(k) * h;
             let (a, b) = (3.0 + omega * t, 3.0 + omega * (t + h));
             let d = increment(wrap(b) - wrap(a), omega * h);
             assert!((d - omega * h).abs() < 1e-9, "{k}: {d}");
