@@ -11,13 +11,14 @@
 //! not debug output: they are reported from instantiation on, unless the host names
 //! `logStatusError`/`logStatusFatal` in `fmi2SetDebugLogging` with `loggingOn = false`.
 //!
-//! Rate limit ([`Repeats`]): a message that recurs (the same text with its numbers ignored,
-//! in the same category: a flag toggling every step, every `logAll` call line) is logged
+//! Rate limit ([`Repeats`]): a debug message that recurs (the same text with its numbers
+//! ignored, in the same category: a flag toggling every step, every `logAll` call line) is logged
 //! [`REPEAT_LIMIT`] times, then a line saying further repeats are counted; then one summary
 //! line at each power of ten of its count, and a final one at `fmi2Terminate`/`fmi2Reset`
 //! ([`Logger::flush_repeats`]). A message repeated n times thus writes at most
 //! REPEAT_LIMIT + 2 + log10(n) lines; at most [`REPEAT_KEYS`] distinct messages are counted
-//! apart, the rest together.
+//! apart, the rest together. Error and fatal messages are not limited: each goes with a
+//! call the host sees fail, and the message is the only place its reason is given.
 
 use super::types::{Fmi2CallbackLogger, Fmi2ComponentEnvironment, Status};
 use std::cell::RefCell;
@@ -242,6 +243,10 @@ impl Logger {
     /// is not over its repeat limit (module doc).
     pub fn log(&self, status: Status, c: Category, message: &str) {
         if !self.is_enabled(c) {
+            return;
+        }
+        if status >= Status::Error {
+            self.emit(status, c, message);
             return;
         }
         let verdict = self.repeats.borrow_mut().see(status, c, message);
