@@ -374,3 +374,35 @@ def test_bad_inputs_and_steps_leave_the_presliding_state_as_it_was(path):
         assert j.torque() == before
     finally:
         j.close()
+
+
+@pytest.mark.parametrize("path", FMUS)
+def test_temperature_and_load_changes_while_held_do_not_release_or_jerk(path):
+    """A body of 50 kg m^2 held by 0.5 T_s(20 kN), explicit 1 ms: the temperature steps
+    20 -> 40 -> -10 C and the load 20 -> 30 kN while it is held; the joint stays held (the
+    angle moves less than 1e-7 rad after settling) and the torque does not jump at the changes
+    (its step-to-step change stays below 1e-3 T_s). The host inertia is given so that the
+    start's presliding ring is gone by the first change."""
+    j = cosim(path, **{HOST_INERTIA: 50.0})
+    vr_temp = j.require("temperature").valueReference
+    try:
+        T_s = j.static_torque(20 * KN)
+        h, J, theta, omega = 1e-3, 50.0, 0.0, 0.0
+        angles, torques = [], []
+        for i in range(6000):
+            t = i * h
+            temperature = 293.15 if t < 2.0 else (313.15 if t < 3.5 else 263.15)
+            load = 20 * KN if t < 4.5 else 30 * KN
+            j.set_reals([vr_temp], [temperature])
+            j.set_inputs(theta, omega, load)
+            tq = j.torque()
+            j.do_step(t, h)
+            angles.append(theta)
+            torques.append(tq)
+            omega += h * (0.5 * T_s + tq) / J
+            theta += h * omega
+        angles, torques = np.array(angles), np.array(torques)
+        assert np.ptp(angles[1500:]) < 1e-7, np.ptp(angles[1500:])
+        assert np.abs(np.diff(torques[1500:])).max() < 1e-3 * T_s, np.abs(np.diff(torques[1500:])).max()
+    finally:
+        j.close()
