@@ -201,18 +201,20 @@ mod tests {
         for code in [0.0, 1.0, 2.0, 3.0] {
             let settings = crate::fidelity::FidelitySettings { code, ..DEFAULT_FIDELITY };
             let mut ev = settings.build(&pinjoint::Params::default()).unwrap();
-            // (model, load, omega, committed tau, angle increment, model exchange)
+            // (model, load, omega, committed tau, angle increment, model exchange, ME mode)
             let cases = [
-                (ZeroVelocityModel::Presliding, 20e3, 1e-3, 10.0, 2e-4, false),
-                (ZeroVelocityModel::Presliding, 20e3, 0.3, 60.0, 1e-4, false),
-                (ZeroVelocityModel::Presliding, 55e3, -0.5, -150.0, -3e-3, false),
-                (ZeroVelocityModel::Presliding, 20e3, 0.2, 30.0, 0.0, true),
-                (ZeroVelocityModel::Presliding, 20e3, 0.2, 66.0, 0.0, true),
-                (ZeroVelocityModel::Band, 20e3, 0.004, 0.0, 0.0, false),
-                (ZeroVelocityModel::Band, 55e3, -0.7, 0.0, 0.0, false),
+                (ZeroVelocityModel::Presliding, 20e3, 1e-3, 10.0, 2e-4, false, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.3, 60.0, 1e-4, false, 0.0),
+                (ZeroVelocityModel::Presliding, 55e3, -0.5, -150.0, -3e-3, false, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.2, 30.0, 0.0, true, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.2, 66.0, 0.0, true, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.2, 66.0, 0.0, true, 1.0),
+                (ZeroVelocityModel::Presliding, 40e3, -0.2, 100.0, 0.0, true, 1.0),
+                (ZeroVelocityModel::Band, 20e3, 0.004, 0.0, 0.0, false, 0.0),
+                (ZeroVelocityModel::Band, 55e3, -0.7, 0.0, 0.0, false, 0.0),
             ];
-            for (model, load, omega, tau, delta, me) in cases {
-                let v = values(model, load, omega, tau);
+            for (model, load, omega, tau, delta, me, mode) in cases {
+                let v = Values { mode, ..values(model, load, omega, tau) };
                 let mut jac = vec![0.0; unknowns.len() * knowns.len()];
                 jacobian(&mut ev, &v, model, delta, me, (&unknowns, &known_idx), &mut jac).unwrap();
                 let f = |ev: &mut Evaluator, x: &Values, delta: f64| output_values(ev, x, model, delta).unwrap();
