@@ -113,7 +113,9 @@ state by angular_velocity&middot;h over each step (the exact solution with the i
 solution over the increment: unconditionally stable and bounded for any step and any angle increment. Feed angle and
 angular velocity at each step start. The locals <code>presliding_reference_angle</code> (the angle at which the state
 was committed) and <code>presliding_angle_driven</code> (whether the host has set the angle) are this bookkeeping, kept in
-the FMU state.</li>
+the FMU state, with <code>presliding_angle_pending</code> (no angle set yet: the next one is the reference),
+<code>presliding_step</code> and <code>presliding_reference_speed</code> (the last step and &omega; there, against which the next
+angle is read modulo 2&pi;).</li>
 <li>Model Exchange: <code>presliding_torque</code> is the one continuous state (nominal 100 N&middot;m). In stick
 (<code>presliding_mode</code> = 0) its derivative is k&omega;&middot;clamp(g, 0, 1): it moves only along &omega;, by at most the
 elastic k|&omega;|, so no explicit step can make it oscillate; in slip (&plusmn;1) it is held and the torque is the sliding torque.
