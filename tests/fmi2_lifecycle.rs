@@ -155,14 +155,17 @@ fn reset_then_a_fresh_run_equals_the_first() {
     unsafe { fmi2FreeInstance(c) };
 }
 
-/// Model Exchange (issues 11, 22): one continuous state, `presliding_torque` (nominal 100 N.m),
-/// no event indicators; the outputs follow the inputs and the state at every get: at the start
-/// state (0) equal to the Co-Simulation instance's at the same inputs (which has not stepped, so
-/// its state is the start value too), at any state the core law's torque and its rate
-/// ([`Presliding::torque`], [`Presliding::rate`]) with the library's sliding torque as the
-/// bound, bit for bit; the state arrays are checked; the ME state machine.
+/// Model Exchange (issues 11, 22, 29): one continuous state, `presliding_torque` (nominal
+/// 100 N.m), no event indicators, step events; the outputs follow the inputs and the state at
+/// every get: at the start state (0) equal to the Co-Simulation instance's at the same inputs
+/// (which has not stepped, so its state is the start value too), at any state in stick the core
+/// law's torque ([`Presliding::torque`]) and the stick rate ([`modes::rate`]) with the library's
+/// sliding torque as the bound, bit for bit; fmi2CompletedIntegratorStep asks for an event
+/// exactly when [`modes::event_due`] says, and the event iteration applies [`modes::update`];
+/// the state arrays are checked; the ME state machine.
 #[test]
 fn model_exchange_outputs_follow_the_inputs_and_the_continuous_state() {
+    use pinjoint::zero_velocity::modes::{self, Mode};
     use pinjoint::zero_velocity::presliding::Presliding;
     let h = Host::new();
     let me = h.instantiate_with("me", FMI2_MODEL_EXCHANGE, &guid(), None, false);
@@ -202,7 +205,7 @@ fn model_exchange_outputs_follow_the_inputs_and_the_continuous_state() {
             assert_eq!(back[0].to_bits(), tau.to_bits());
             let mut der = [f64::NAN];
             assert_eq!(unsafe { fmi2GetDerivatives(me, der.as_mut_ptr(), 1) }, OK);
-            assert_eq!(der[0].to_bits(), law.rate(tau, omega, bound).to_bits(), "rate at omega = {omega}, tau = {tau}");
+            assert_eq!(der[0].to_bits(), modes::rate(&law, Mode::Stick, tau, omega, bound).to_bits(), "rate at omega = {omega}, tau = {tau}");
             assert_eq!(get(me, "der(presliding_torque)").to_bits(), der[0].to_bits());
             assert_eq!(get(me, "torque").to_bits(), law.torque(tau, omega, bound).to_bits(), "torque at omega = {omega}, tau = {tau}");
             assert_eq!(get(me, "power_loss").to_bits(), law.dissipation(tau, omega, bound).to_bits());
@@ -210,9 +213,32 @@ fn model_exchange_outputs_follow_the_inputs_and_the_continuous_state() {
                 assert!(der[0] * omega > 0.0, "the deflection follows the motion");
             }
         }
+        // The last state, 1.2 T, is beyond the bound: a step event, and the event iteration
+        // projects it (to the bound, or to slip at +-T along the motion).
         let (mut enter, mut stop) = (1, 1);
         assert_eq!(unsafe { fmi2CompletedIntegratorStep(me, 1, &mut enter, &mut stop) }, OK);
-        assert_eq!((enter, stop), (0, 0));
+        let tau = 1.2 * bound;
+        assert!(modes::event_due(&law, Mode::Stick, tau, omega, bound));
+        assert_eq!((enter, stop), (1, 0));
+        assert_eq!(fmi2EnterEventMode(me), OK);
+        let mut info = [0i32; 8];
+        assert_eq!(unsafe { fmi2NewDiscreteStates(me, info.as_mut_ptr().cast()) }, OK);
+        assert_eq!((info[0], info[3]), (0, 1), "no further iteration; the state changed");
+        let (mode, expected) = modes::update(&law, Mode::Stick, tau, omega, bound);
+        assert_eq!(unsafe { fmi2GetContinuousStates(me, x.as_mut_ptr(), 1) }, OK);
+        assert_eq!(x[0].to_bits(), expected.to_bits());
+        assert_eq!(get(me, "presliding_mode"), mode.code());
+        assert_eq!(unsafe { fmi2NewDiscreteStates(me, info.as_mut_ptr().cast()) }, OK);
+        assert_eq!(info[3], 0, "a second iteration changes nothing");
+        assert_eq!(fmi2EnterContinuousTimeMode(me), OK);
+        assert_eq!(unsafe { fmi2CompletedIntegratorStep(me, 1, &mut enter, &mut stop) }, OK);
+        assert_eq!((enter, stop), (0, 0), "no event due after the update");
+        // Back to stick for the next case (a slip at omega = 0 returns to stick at its event).
+        assert_eq!(fmi2EnterEventMode(me), OK);
+        assert_eq!(set(me, "angular_velocity", 0.0), OK);
+        assert_eq!(unsafe { fmi2NewDiscreteStates(me, info.as_mut_ptr().cast()) }, OK);
+        assert_eq!(get(me, "presliding_mode"), 0.0);
+        assert_eq!(fmi2EnterContinuousTimeMode(me), OK);
     }
     // The state arrays have the length nx = 1; a state the model refuses changes nothing.
     assert_eq!(unsafe { fmi2GetDerivatives(me, x.as_mut_ptr(), 0) }, ERROR);
@@ -223,7 +249,7 @@ fn model_exchange_outputs_follow_the_inputs_and_the_continuous_state() {
     assert_eq!(unsafe { fmi2SetContinuousStates(me, [f64::NAN].as_ptr(), 1) }, ERROR);
     assert!(h.last().contains("presliding_torque"), "{}", h.last());
     assert_eq!(unsafe { fmi2GetContinuousStates(me, x.as_mut_ptr(), 1) }, OK);
-    assert_eq!(x[0], 1.2 * joint.evaluate(60e3, -1e-4).unwrap().torque, "unchanged by the refused calls");
+    assert_eq!(x[0], joint.evaluate(60e3, -1e-4).unwrap().torque, "unchanged by the refused calls (the last event's state: 1.2 T projected onto T)");
     assert_eq!(fmi2GetEventIndicators(me, x.as_mut_ptr(), 0), OK);
     assert_eq!(fmi2GetEventIndicators(me, x.as_mut_ptr(), 1), ERROR);
     // Parameters cannot be set in continuous-time mode; doStep is not a Model Exchange call.

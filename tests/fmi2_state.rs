@@ -59,9 +59,10 @@ fn serialize_round_trip_across_instances_is_bit_exact() {
     drive(a, 0, 250);
     let mut s = get_state(a);
     let bytes = serialize(a, s);
-    // 45 values of 8 bytes (version 5: 38 of version 4, the zero-velocity model, its three
-    // parameters and the presliding state) and the container's header.
-    assert!(bytes.len() < 460, "small: {} bytes", bytes.len());
+    // 50 values of 8 bytes (version 6: 38 of version 4, the zero-velocity model, its three
+    // parameters, the presliding state, the host inertia and the host-convention bookkeeping)
+    // and the container's header.
+    assert!(bytes.len() < 500, "small: {} bytes", bytes.len());
     assert_eq!(&bytes[..8], b"FMI2STAT");
     let expect = drive(a, 250, 400);
 
@@ -116,13 +117,15 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
     fix_crc(&mut b);
     assert_eq!(deserialize(c, &b), Err(ERROR));
     assert!(h.last().contains("PinJoint state version 7"), "{}", h.last());
-    // A state of the previous layout (version 4, before the presliding state) is refused by
-    // name: it lacks the presliding state, so it cannot be continued.
-    let mut b = bytes.clone();
-    b[model_at] = 4;
-    fix_crc(&mut b);
-    assert_eq!(deserialize(c, &b), Err(ERROR));
-    assert!(h.last().contains("PinJoint state version 4; this FMU reads version 5"), "{}", h.last());
+    // States of the previous layouts (version 4, before the presliding state; version 5,
+    // before the host inertia and the Model Exchange mode) are refused by name.
+    for old in [4u8, 5] {
+        let mut b = bytes.clone();
+        b[model_at] = old;
+        fix_crc(&mut b);
+        assert_eq!(deserialize(c, &b), Err(ERROR));
+        assert!(h.last().contains(&format!("PinJoint state version {old}; this FMU reads version 6")), "{}", h.last());
+    }
     // A valid checksum over an impossible value: each is checked as its setter or the
     // parameter check at initialization checks it (issue 9: these were accepted before).
     let word = |k: usize| model_at + 1 + 2 + 8 * k;
@@ -141,6 +144,12 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
         (word(n + 15), f64::NAN, "zero_velocity.damping_time = NaN s"),
         (word(n + 16), f64::NAN, "presliding_torque = NaN"),
         (word(n + 17), f64::INFINITY, "presliding_reference_angle = inf"),
+        (word(n + 19), -1.0, "zero_velocity.host_inertia = -1 kg.m2"),
+        (word(n + 20), 2.0, "presliding_mode"),
+        (word(n + 20), 0.5, "Integer"),
+        (word(n + 21), -1.0, "presliding_step"),
+        (word(n + 22), f64::NAN, "presliding_reference_speed"),
+        (word(n + 23), 0.5, "Boolean"),
     ] {
         let mut b = bytes.clone();
         b[at..at + 8].copy_from_slice(&v.to_bits().to_le_bytes());

@@ -137,7 +137,7 @@ class Joint:
         """The largest load (N) the asperity model can take for these parameters."""
         return self._native.capacity
 
-    def evaluate(self, load: Any, speed: Any) -> Dict[str, np.ndarray]:
+    def evaluate(self, load: Any, speed: Any, errors: str = "raise") -> Dict[str, np.ndarray]:
         """The model at every (load, speed) pair, NumPy-broadcast.
 
         load   N, a magnitude: a negative value is taken as |load| (-P gives the answer at
@@ -151,12 +151,17 @@ class Joint:
         load = 0, |load| beyond the asperity model's capacity, a fluid film thicker than the
         diametral clearance 2(R_b - R)) raises ValueError naming the
         index (in the broadcast shape), the quantity, its value and unit, for the first such
-        point in C order; nothing is returned then.
+        point in C order; nothing is returned then (``errors="raise"``, the default).
+        With ``errors="nan"`` every other point is answered (bit for bit as alone) and the points
+        the model cannot take are NaN in every float column (load and speed keep the inputs),
+        with regime and validity "refused"; a shape or type error still raises.
 
         Returns a dict of arrays of the broadcast shape: load, speed, then RESULT_COLUMNS
         (float64, SI units; regime as strings "boundary", "mixed", "full-film"; validity as
         strings "checked", "extrapolation", "known-wrong").
         """
+        if errors not in ("raise", "nan"):
+            raise ValueError(f'errors = {errors!r} is not a choice: it must be "raise" or "nan"')
         lo = as_float_array("load", "N", load)
         sp = as_float_array("speed", "rad/s", speed)
         try:
@@ -168,16 +173,63 @@ class Joint:
         shape = lo_b.shape
         flat_l = np.ascontiguousarray(lo_b).reshape(-1)
         flat_s = np.ascontiguousarray(sp_b).reshape(-1)
-        cols, codes = self._native.evaluate_flat(flat_l, flat_s, list(shape))
+        if errors == "raise":
+            cols, codes = self._native.evaluate_flat(flat_l, flat_s, list(shape))
+            refused = None
+        else:
+            cols, codes, refused = self._evaluate_or_refuse(flat_l, flat_s)
         out: Dict[str, np.ndarray] = {
             "load": flat_l.copy().reshape(shape),
             "speed": flat_s.copy().reshape(shape),
         }
         for name, arr in cols.items():
             out[name] = arr.reshape(shape)
-        out["regime"] = _REGIME_NAMES[codes & 3].reshape(shape)
-        out["validity"] = _VALIDITY_NAMES[codes >> 2].reshape(shape)
+        regime = _REGIME_NAMES[codes & 3].astype(object)
+        validity = _VALIDITY_NAMES[codes >> 2].astype(object)
+        if refused is not None and refused.any():
+            regime[refused] = "refused"
+            validity[refused] = "refused"
+        out["regime"] = regime.astype(str).reshape(shape)
+        out["validity"] = validity.astype(str).reshape(shape)
         return out
+
+    def _evaluate_or_refuse(self, flat_l: np.ndarray, flat_s: np.ndarray) -> Any:
+        """evaluate_flat over the flat arrays, answering every point it can: a failing block is
+        halved until the failing points are single (O(bad points * log n) extra calls), those
+        are NaN. Returns (columns, codes, refused mask)."""
+        n = flat_l.size
+        refused = np.zeros(n, dtype=bool)
+        cols: Dict[str, np.ndarray] = {}
+        codes = np.zeros(n, dtype=np.int64)
+        # Points that cannot be taken whatever the model: not finite, zero load.
+        bad = ~(np.isfinite(flat_l) & np.isfinite(flat_s)) | (flat_l == 0.0)
+        refused |= bad
+        blocks = [(0, n)]
+        while blocks:
+            a, b = blocks.pop()
+            idx = np.nonzero(~bad[a:b])[0] + a
+            if idx.size == 0:
+                continue
+            try:
+                c, k = self._native.evaluate_flat(flat_l[idx], flat_s[idx], [idx.size])
+            except ValueError:
+                if idx.size == 1:
+                    refused[idx] = True
+                else:
+                    mid = a + (b - a) // 2
+                    blocks += [(mid, b), (a, mid)]
+                continue
+            for name, arr in c.items():
+                col = cols.get(name)
+                if col is None:
+                    col = cols[name] = np.full(n, np.nan, dtype=arr.dtype if arr.dtype.kind == "f" else np.float64)
+                col[idx] = arr
+            codes[idx] = np.asarray(k)
+        if not cols:
+            # Every point refused: the columns' names from a point the model takes.
+            c, _ = self._native.evaluate_flat(np.array([20e3]), np.array([1.0]), [1])
+            cols = {name: np.full(n, np.nan) for name in c}
+        return cols, codes, refused
 
     def at_temperature(self, temperature: float) -> "Joint":
         """This joint at lubricant temperature `temperature` (K), same fidelity settings.

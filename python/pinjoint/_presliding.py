@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Dict, Tuple
+from typing import Any, Dict, Optional, Tuple
 
 from ._coerce import ParamsLike, as_params
 from ._native import _Presliding
@@ -34,6 +34,15 @@ class Presliding:
 
     Inputs: angle (rad), angular_velocity (rad/s), load (N, its magnitude is the load);
     a non-finite value raises ValueError naming it.
+
+    The host's conventions, as in the FMU: the angle is taken modulo 2*pi (the increment
+    since the reference is the 2*pi-equivalent closest to angular_velocity*step of the last
+    ``commit(..., step=h)``, or closest to 0 when no step was given), so a host may wrap its
+    angle into (-pi, pi]. ``angle=None`` makes the first angle given the reference (no
+    deflection there). ``host_inertia`` (kg*m^2, 0 = not given) damps the presliding mode near
+    critically (zeta = 0.7), capped for an explicit host at the step given to ``commit``.
+
+    A Presliding pickles (parameters, law and state): the copy continues bit for bit.
     """
 
     def __init__(
@@ -42,17 +51,27 @@ class Presliding:
         presliding_angle: float = DEFAULT_PRESLIDING[0],
         elastic_limit: float = DEFAULT_PRESLIDING[1],
         damping_time: float = DEFAULT_PRESLIDING[2],
-        angle: float = 0.0,
+        angle: Optional[float] = 0.0,
+        host_inertia: float = 0.0,
     ) -> None:
-        self._native = _Presliding(as_params(params), float(presliding_angle), float(elastic_limit), float(damping_time), float(angle))
+        self._params = as_params(params)
+        self._native = _Presliding(self._params, float(presliding_angle), float(elastic_limit), float(damping_time),
+                                   None if angle is None else float(angle), float(host_inertia))
+
+    def __reduce__(self) -> Any:
+        return (_restore, (self._params, self.law, self.host_inertia, self._native.full_state))
 
     def torque(self, angle: float, angular_velocity: float, load: float) -> float:
         """The friction torque on the pin (N*m) at these inputs; the state is not changed."""
         return self._native.torque(float(angle), float(angular_velocity), float(load))
 
-    def commit(self, angle: float, angular_velocity: float, load: float) -> None:
-        """Make the presliding torque at ``angle`` the state (the FMU's step when the host sets the angle)."""
-        self._native.commit(float(angle), float(angular_velocity), float(load))
+    def commit(self, angle: float, angular_velocity: float, load: float, step: Optional[float] = None) -> None:
+        """Make the presliding torque at ``angle`` the state (the FMU's step when the host sets the angle).
+
+        ``step`` (s): the host's step just taken, as the FMU's doStep knows it: the next angle
+        is read modulo 2*pi against angular_velocity*step, and the host-inertia damping is
+        capped at it. None: not known."""
+        self._native.commit(float(angle), float(angular_velocity), float(load), None if step is None else float(step))
 
     def advance(self, angular_velocity: float, load: float, step: float) -> None:
         """Drive the state by angular_velocity*step (the FMU's step when the host does not set the angle)."""
@@ -80,6 +99,18 @@ class Presliding:
         """(presliding_angle in rad, elastic_limit, damping_time in s)."""
         return self._native.law
 
+    @property
+    def host_inertia(self) -> float:
+        """The host's inertia on the pin (kg*m^2, 0 = not given)."""
+        return self._native.host_inertia
+
     def __repr__(self) -> str:
         tau, ref = self.state
         return f"Presliding(tau={tau!r} N*m, reference_angle={ref!r} rad, law={self.law!r})"
+
+
+def _restore(params: Any, law: Tuple[float, float, float], host_inertia: float, state: Tuple[float, float, float, float, bool]) -> Presliding:
+    """A Presliding from its pickled parts (``Presliding.__reduce__``)."""
+    j = Presliding(params, *law, angle=0.0, host_inertia=host_inertia)
+    j._native.set_full_state(*state)
+    return j

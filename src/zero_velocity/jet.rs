@@ -4,8 +4,8 @@
 //! and its [`Jet`] instance gives the exact partials the FMU's directional derivatives
 //! report.
 //!
-//! Hand-written rather than the `num-dual` crate: the law needs five operations
-//! (`+ − × ÷`, `exp`) on `Copy` values, while `num-dual`'s `DualNum` trait brings its own
+//! Hand-written rather than the `num-dual` crate: the law needs six operations
+//! (`+ − × ÷`, `exp`, `sqrt`) on `Copy` values, while `num-dual`'s `DualNum` trait brings its own
 //! nalgebra major version and a `Clone`-only API for a few dozen lines of arithmetic.
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -19,6 +19,8 @@ pub trait Scalar: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = 
     fn re(self) -> f64;
     /// e^self.
     fn exp(self) -> Self;
+    /// √self (self ≥ 0).
+    fn sqrt(self) -> Self;
 }
 
 impl Scalar for f64 {
@@ -33,6 +35,10 @@ impl Scalar for f64 {
     #[inline]
     fn exp(self) -> Self {
         f64::exp(self)
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        f64::sqrt(self)
     }
 }
 
@@ -111,6 +117,13 @@ impl Scalar for Jet {
         let e = self.v.exp();
         self.map(e, |x| x * e)
     }
+    fn sqrt(self) -> Self {
+        let r = self.v.sqrt();
+        // d√v = dv/(2√v); at v = 0 the derivative is unbounded: 0 there (a value the callers
+        // never differentiate: the law takes √(k·J) only for a loaded joint, k > 0).
+        let f = if r > 0.0 { 0.5 / r } else { 0.0 };
+        self.map(r, |x| x * f)
+    }
 }
 
 #[cfg(test)]
@@ -121,7 +134,7 @@ mod tests {
     #[test]
     fn partials_match_central_differences() {
         fn f<S: Scalar>(x: S, y: S, z: S) -> S {
-            (x * y - z).exp() / (y + S::c(2.0)) - (-x) * z
+            (x * y - z).exp() / (y + S::c(2.0)) - (-x) * z + (x * x + z).sqrt()
         }
         let p = [0.3, -0.7, 1.1];
         let j = f(Jet::var(p[0], 0), Jet::var(p[1], 1), Jet::var(p[2], 2));

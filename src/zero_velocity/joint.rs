@@ -8,7 +8,16 @@
 //! ([`PreslidingJoint::torque_at`]); [`PreslidingJoint::commit`] makes it the new state.
 //! A host that does not track the angle drives the state with ω·h instead
 //! ([`PreslidingJoint::advance`]). Under Model Exchange the host's integrator owns τ and
-//! integrates [`Presliding::rate`].
+//! integrates [`super::modes::rate`].
+//!
+//! The host's conventions, in one place for every front end:
+//! - **Angles modulo 2π.** The increment θ − θ_ref is the 2π-equivalent closest to ω·h, ω the
+//!   angular velocity and h the step of the last commit ([`super::wrap::increment`]); a host
+//!   that wraps its angle into (−π, π] gets the same torque as one that does not.
+//! - **The first angle.** A joint made by [`PreslidingJoint::unreferenced`] takes the first
+//!   angle it sees as its reference: no deflection at the first step.
+//! - **The host's step** of the last commit also caps the host-inertia damping
+//!   ([`Presliding::damping`]).
 
 use super::jet::{Jet, Scalar};
 use super::presliding::Presliding;
@@ -35,27 +44,66 @@ pub fn bound_partials<E>(mut bound: impl FnMut(f64, f64) -> Result<f64, E>, load
 /// The presliding state of one joint and its law.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PreslidingJoint {
+    /// The law; its `step` is the host's step of the last commit (0 before one).
     law: Presliding,
     /// τ, the presliding torque at the reference angle (N·m).
     torque: f64,
     /// θ_ref (rad).
     angle: f64,
+    /// ω at the last commit (rad/s): ω·h is the increment the next angle is read against.
+    omega: f64,
+    /// No reference yet: the first angle seen becomes it.
+    unreferenced: bool,
 }
 
 impl PreslidingJoint {
     /// At rest at `angle` (rad), nothing held.
     pub fn new(law: Presliding, angle: f64) -> Self {
-        PreslidingJoint { law, torque: 0.0, angle }
+        PreslidingJoint { law, torque: 0.0, angle, omega: 0.0, unreferenced: false }
+    }
+
+    /// At rest, nothing held, with no reference angle yet: the first angle given to
+    /// [`PreslidingJoint::torque_at`], [`PreslidingJoint::held_at`] or a commit is the reference
+    /// (no deflection there).
+    pub fn unreferenced(law: Presliding) -> Self {
+        PreslidingJoint { unreferenced: true, ..PreslidingJoint::new(law, 0.0) }
     }
 
     /// With a committed presliding torque `torque` (N·m) at the reference angle `angle` (rad).
     pub fn at_state(law: Presliding, torque: f64, angle: f64) -> Self {
-        PreslidingJoint { law, torque, angle }
+        PreslidingJoint { law, torque, angle, omega: 0.0, unreferenced: false }
     }
 
-    /// The law.
+    /// The law (its `step` the host's step of the last commit).
     pub fn law(&self) -> &Presliding {
         &self.law
+    }
+
+    /// Whether the joint still waits for its first angle ([`PreslidingJoint::unreferenced`]).
+    pub fn is_unreferenced(&self) -> bool {
+        self.unreferenced
+    }
+
+    /// The host's step of the last commit (s; 0 before one) and ω there (rad/s).
+    pub fn last_step(&self) -> (f64, f64) {
+        (self.law.step, self.omega)
+    }
+
+    /// Restore the step bookkeeping ([`PreslidingJoint::last_step`]) and whether the joint
+    /// waits for its first angle (e.g. from a stored state).
+    pub fn set_last_step(&mut self, step: f64, omega: f64, unreferenced: bool) {
+        self.law = self.law.at_step(step);
+        self.omega = if omega.is_finite() { omega } else { 0.0 };
+        self.unreferenced = unreferenced;
+    }
+
+    /// The increment from the reference to `angle` (rad): modulo 2π, the equivalent closest to
+    /// ω·h of the last commit ([`super::wrap::increment`]); 0 while unreferenced.
+    pub fn increment(&self, angle: f64) -> f64 {
+        if self.unreferenced {
+            return 0.0;
+        }
+        super::wrap::increment(angle - self.angle, self.omega * self.law.step)
     }
 
     /// The committed presliding torque τ (N·m).
@@ -68,16 +116,18 @@ impl PreslidingJoint {
         self.angle
     }
 
-    /// Replace the state (e.g. from a stored FMU state, or a Model Exchange host's τ).
+    /// Replace the state (e.g. from a stored FMU state, or a Model Exchange host's τ); the
+    /// joint has a reference from then on.
     pub fn set_state(&mut self, torque: f64, angle: f64) {
         self.torque = torque;
         self.angle = angle;
+        self.unreferenced = false;
     }
 
     /// The presliding torque τ at `angle` (rad) with the sliding torque `bound` (N·m): the
-    /// exact update over θ − θ_ref.
+    /// exact update over the increment θ − θ_ref ([`PreslidingJoint::increment`]).
     pub fn held_at(&self, angle: f64, bound: f64) -> f64 {
-        self.law.deflect(self.torque, angle - self.angle, bound)
+        self.law.deflect(self.torque, self.increment(angle), bound)
     }
 
     /// The friction torque on the pin (N·m) at `angle` (rad) and `omega` (rad/s) with the
@@ -90,6 +140,15 @@ impl PreslidingJoint {
     pub fn commit(&mut self, angle: f64, bound: f64) {
         self.torque = self.held_at(angle, bound);
         self.angle = angle;
+        self.unreferenced = false;
+    }
+
+    /// Commit at `angle` as a host step of `step` s at `omega` rad/s: as
+    /// [`PreslidingJoint::commit`], and ω·h becomes the increment the next angle is read
+    /// against (`step` 0 or not a finite number > 0: not known, the nearest equivalent to 0).
+    pub fn commit_step(&mut self, angle: f64, omega: f64, bound: f64, step: f64) {
+        self.commit(angle, bound);
+        self.set_last_step(step, omega, false);
     }
 
     /// Drive the state by ω·h (for a host that does not set the angle): τ ← the update over
@@ -103,7 +162,7 @@ impl PreslidingJoint {
     /// The angle partial is the tangent stiffness in the direction of motion
     /// ([`tangent_held`]).
     pub fn torque_partials(&self, angle: f64, omega: f64, bound: Jet) -> Jet {
-        let tau = tangent_held(&self.law, self.torque, angle - self.angle, omega, bound);
+        let tau = tangent_held(&self.law, self.torque, self.increment(angle), omega, bound);
         self.law.torque(tau, Jet::var(omega, 1), bound)
     }
 }

@@ -12,13 +12,17 @@
 //!   limit), breaks away at the sliding torque and slides with the model's torque exactly.
 //!   [`joint::PreslidingJoint`] is the stateful object every front end (FMU, Python) steps.
 //!
-//! [`jet`] gives the law's exact partial derivatives (the FMU's directional derivatives).
+//! [`jet`] gives the law's exact partial derivatives (the FMU's directional derivatives);
+//! [`wrap`] the angle convention (any angle continuous modulo 2π); [`modes`] the stick and
+//! slip modes of the Model Exchange state (no stiffness for explicit integrators).
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 pub mod error;
 pub mod jet;
 pub mod band;
 pub mod presliding;
+pub mod wrap;
+pub mod modes;
 pub mod joint;
 
 pub use error::ZeroVelocityError;
@@ -73,3 +77,5 @@ impl ZeroVelocityModel {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod host_tests;

@@ -29,13 +29,25 @@
 //! The friction torque on the pin is
 //!
 //! ```text
-//!   torque = −( clamp(τ, −T, T) + c·ż ),   c = t_d·k,   ż = ω·max(g, 0),
+//!   torque = −( clamp(τ, −T, T) + c·ż ),   c = t_d·k (or 2ζ√(kJ) below),   ż = ω·max(g, 0),
 //! ```
 //!
 //! where g = (du/dΔ)/k in the direction of ω (1 in the elastic range, 0 at the bound) and t_d
 //! the damping time. In steady sliding τ = ±T and ż = 0: the torque is the model's
-//! −sign(ω)·μRP bit for bit. Elsewhere it exceeds the sliding bound by at most the damping
-//! term |c·ω| = t_d·T·|ω|/φ_s.
+//! −sign(ω)·μRP bit for bit. The damping adds to the held torque up to the bound: the
+//! torque never exceeds the sliding torque.
+//!
+//! Damping with the host's inertia ([`Presliding::damping`]). With the body's inertia J on
+//! the pin (`host_inertia`, 0 = not given) the presliding spring k and J form an oscillator of
+//! natural frequency ω_n = √(k/J); the damping is then c = 2ζ·√(k·J) with ζ = 0.7
+//! ([`HOST_DAMPING_RATIO`]) instead of t_d·k, so a heavy body settles within a few periods
+//! and a dither near ω_n is amplified by at most 1/(2ζ·√(1 − ζ²)) ≈ 1.0. When the host's step h
+//! is known (Co-Simulation: the last communication step) c is capped for an explicit host
+//! (symplectic Euler, the torque held over the step): that host steps the oscillator with
+//! the matrix of trace 2 − a − b and determinant 1 − a, a = h·c/J, b = h²·k/J; its eigenvalues
+//! are real and positive (the motion decays without sign alternation) when a < 1 and
+//! a + b < 2, so c ≤ [`EXPLICIT_MARGIN`]·(J/h)·min(1, 2 − b) (0 when b ≥ 2: a body that light
+//! is outside every explicit envelope at that step).
 
 use super::jet::Scalar;
 use super::error::ZeroVelocityError;
@@ -55,6 +67,18 @@ pub const DEFAULT_ELASTIC_LIMIT: f64 = 0.95;
 /// Default damping time t_d (s): the presliding damping is c = t_d·k.
 pub const DEFAULT_DAMPING_TIME: f64 = 0.01;
 
+/// The damping ratio ζ of the presliding mode when the host gives its inertia: 0.7, near
+/// critical (the fastest decay without overshoot of note; a resonant drive is amplified by
+/// 1/(2ζ√(1 − ζ²)) = 1.0).
+pub const HOST_DAMPING_RATIO: f64 = 0.7;
+
+/// The fraction of the explicit host's no-sign-alternation bound the host-inertia damping is
+/// capped at ([`Presliding::damping`]): 0.9.
+pub const EXPLICIT_MARGIN: f64 = 0.9;
+
+/// The largest host inertia accepted (kg·m²): 1e9.
+pub const MAX_HOST_INERTIA: f64 = 1e9;
+
 /// The parameters of the presliding law.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Presliding {
@@ -62,13 +86,25 @@ pub struct Presliding {
     pub angle: f64,
     /// β (dimensionless, in [0, 1)): elastic limit as a fraction of the sliding torque.
     pub elastic_limit: f64,
-    /// t_d (s, ≥ 0): damping time, c = t_d·k.
+    /// t_d (s, ≥ 0): damping time, c = t_d·k (when `host_inertia` is 0).
     pub damping_time: f64,
+    /// J (kg·m², ≥ 0): the host's inertia on the pin, 0 = not given. When given, the damping
+    /// is c = 2ζ√(k·J), capped for an explicit host at `step` ([`Presliding::damping`]).
+    pub host_inertia: f64,
+    /// h (s, ≥ 0): the host's step the host-inertia damping is capped for; 0 = not known (no
+    /// cap). Not a parameter: the front ends set it from the host's steps.
+    pub step: f64,
 }
 
 impl Default for Presliding {
     fn default() -> Self {
-        Presliding { angle: DEFAULT_PRESLIDING_ANGLE, elastic_limit: DEFAULT_ELASTIC_LIMIT, damping_time: DEFAULT_DAMPING_TIME }
+        Presliding {
+            angle: DEFAULT_PRESLIDING_ANGLE,
+            elastic_limit: DEFAULT_ELASTIC_LIMIT,
+            damping_time: DEFAULT_DAMPING_TIME,
+            host_inertia: 0.0,
+            step: 0.0,
+        }
     }
 }
 
@@ -78,6 +114,8 @@ pub const ANGLE_NAME: &str = "zero_velocity.presliding_angle";
 pub const ELASTIC_LIMIT_NAME: &str = "zero_velocity.elastic_limit";
 /// See [`ANGLE_NAME`].
 pub const DAMPING_TIME_NAME: &str = "zero_velocity.damping_time";
+/// See [`ANGLE_NAME`].
+pub const HOST_INERTIA_NAME: &str = "zero_velocity.host_inertia";
 
 /// Whether `x` is not > 0 (0, negative or NaN): an unloaded bound, or no elastic fraction.
 #[inline]
@@ -88,13 +126,27 @@ fn unloaded(x: f64) -> bool {
 impl Presliding {
     /// The law with these parameters, checked ([`Presliding::validate`]).
     pub fn new(angle: f64, elastic_limit: f64, damping_time: f64) -> Result<Self, ZeroVelocityError> {
-        let p = Presliding { angle, elastic_limit, damping_time };
+        let p = Presliding { angle, elastic_limit, damping_time, ..Presliding::default() };
         p.validate()?;
         Ok(p)
     }
 
-    /// φ_s a finite number > 0 (at most 1 rad), β in [0, 1), t_d a finite number in [0, 1e3] s;
-    /// the error names the parameter, its value and unit.
+    /// The law with the host's inertia `host_inertia` (kg·m², 0 = not given), checked.
+    pub fn with_host_inertia(self, host_inertia: f64) -> Result<Self, ZeroVelocityError> {
+        let p = Presliding { host_inertia, ..self };
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// The law with the host's step `step` (s; 0 or anything not a finite number > 0: not
+    /// known), for the explicit cap of the host-inertia damping.
+    #[must_use]
+    pub fn at_step(self, step: f64) -> Self {
+        Presliding { step: if step.is_finite() && step > 0.0 { step } else { 0.0 }, ..self }
+    }
+
+    /// φ_s a finite number > 0 (at most 1 rad), β in [0, 1), t_d a finite number in [0, 1e3] s,
+    /// J in [0, 1e9] kg·m²; the error names the parameter, its value and unit.
     pub fn validate(&self) -> Result<(), ZeroVelocityError> {
         let bad = |name: &'static str, value: f64, unit: &'static str, rule: &'static str| {
             Err(ZeroVelocityError::Invalid { name, value, unit, rule })
@@ -108,7 +160,31 @@ impl Presliding {
         if !(self.damping_time >= 0.0 && self.damping_time <= 1e3) {
             return bad(DAMPING_TIME_NAME, self.damping_time, "s", "it must be a number in [0, 1000] s");
         }
+        if !(self.host_inertia >= 0.0 && self.host_inertia <= MAX_HOST_INERTIA) {
+            return bad(HOST_INERTIA_NAME, self.host_inertia, "kg.m2", "it must be a number in [0, 1e9] kg.m2 (0: not given)");
+        }
         Ok(())
+    }
+
+    /// The presliding damping c (N·m·s/rad) at the stiffness `k`: t_d·k without the host's
+    /// inertia; with it (J > 0) 2ζ√(k·J), capped at the step h when known by
+    /// [`EXPLICIT_MARGIN`]·(J/h)·min(1, 2 − h²·k/J) (module doc: the explicit host's
+    /// no-sign-alternation bound).
+    #[inline]
+    pub fn damping<S: Scalar>(&self, k: S) -> S {
+        let j = self.host_inertia;
+        if j <= 0.0 {
+            return S::c(self.damping_time) * k;
+        }
+        let c = S::c(2.0 * HOST_DAMPING_RATIO) * (k * S::c(j)).sqrt();
+        let h = self.step;
+        if h <= 0.0 {
+            return c;
+        }
+        let room = S::c(2.0) - k * S::c(h * h / j);
+        let room = if room.re() > 1.0 { S::c(1.0) } else if room.re() < 0.0 { S::c(0.0) } else { room };
+        let cap = S::c(EXPLICIT_MARGIN * j / h) * room;
+        if cap.re() < c.re() { cap } else { c }
     }
 
     /// Stiffness k = T/φ_s (N·m/rad) at the sliding torque `bound` = T.
@@ -168,7 +244,7 @@ impl Presliding {
     /// (where g = 1 in the elastic range), so the ω-derivatives at rest are the elastic ones
     /// (∂torque/∂ω = −t_d·k, ∂(dτ/dt)/∂ω = k), and the values (0 rate, no damping) are unchanged.
     #[inline]
-    fn direction<S: Scalar>(&self, tau: S, omega: S) -> f64 {
+    pub(crate) fn direction<S: Scalar>(&self, tau: S, omega: S) -> f64 {
         let w = omega.re();
         if w != 0.0 {
             w
@@ -198,7 +274,8 @@ impl Presliding {
         self.stiffness(bound) * omega * self.fraction(tau, dir, bound)
     }
 
-    /// The friction torque on the pin (N·m): −clamp(clamp(τ, −T, T) + t_d·k·ω·max(g, 0), −T, T).
+    /// The friction torque on the pin (N·m): −clamp(clamp(τ, −T, T) + c·ω·max(g, 0), −T, T),
+    /// c the damping ([`Presliding::damping`]).
     #[inline]
     pub fn torque<S: Scalar>(&self, tau: S, omega: S, bound: S) -> S {
         if unloaded(bound.re()) {
@@ -213,7 +290,7 @@ impl Presliding {
         let g = if g.re() > 1.0 { S::c(1.0) } else { g };
         // The contact transmits at most the sliding torque: the damping adds to the held
         // torque up to the bound (Coulomb's limit on the whole friction torque).
-        -clamp(held + S::c(self.damping_time) * self.stiffness(bound) * omega * g, bound)
+        -clamp(held + self.damping(self.stiffness(bound)) * omega * g, bound)
     }
 
     /// The power the joint dissipates (W) at the presliding torque `tau`, `omega` and `bound`:
@@ -230,7 +307,7 @@ impl Presliding {
         if unloaded(g.re()) {
             return abs(held * omega);
         }
-        let c = S::c(self.damping_time) * self.stiffness(bound);
+        let c = self.damping(self.stiffness(bound));
         let g = if g.re() > 1.0 { S::c(1.0) } else { g };
         // The friction's power F·ω (F = −torque, the damping capped at the bound) less the
         // elastic power held·ż stored in the deflection: the plastic part and the damping part.

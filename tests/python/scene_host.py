@@ -287,7 +287,28 @@ class MEJoint(_Fmu):
         return t_w, t_x, d_w, d_x
 
     def completed_step(self):
-        self.fmu.completedIntegratorStep()
+        """fmi2CompletedIntegratorStep; returns whether the FMU asks for a step event."""
+        r = self.fmu.completedIntegratorStep()
+        return bool(r[0]) if isinstance(r, (tuple, list)) else False
+
+    def event(self, t, theta, omega, load, x):
+        """Event mode at (t, inputs, states): the event iteration, back to continuous time;
+        returns the states afterwards (changed if the FMU says valuesOfContinuousStatesChanged)."""
+        self._set(t, theta, omega, load, x)
+        self.fmu.enterEventMode()
+        changed = False
+        while True:
+            r = self.fmu.updateDiscreteStates() if self.fmi3 else self.fmu.newDiscreteStates()
+            # FMI 2: (newDiscreteStatesNeeded, terminate, nominalsChanged, valuesChanged, ...);
+            # FMI 3: (discreteStatesNeedUpdate, terminate, nominalsChanged, valuesChanged, ...).
+            changed |= bool(r[3])
+            if not r[0]:
+                break
+        self.fmu.enterContinuousTimeMode()
+        if changed and self.n_states:
+            self.fmu.getContinuousStates(self._x, self.n_states)
+            return list(self._x[:self.n_states]), True
+        return list(x), False
 
 
 def open_cosim(path, model=None, params=None, load=20e3, instance="scene"):
@@ -454,6 +475,50 @@ def implicit(joint, J, drive, load, h, t_end, theta0=0.0, omega0=0.0, relineariz
     joint.set_inputs(theta, omega, P(t))
     t_[n], a_[n], w_[n], tq_[n], d_[n] = t, theta, omega, joint.torque(), drive(t)
     return Run(t_, a_, w_, tq_, d_, {"host": "implicit", "h": h, "J": J})
+
+
+def fixed_step_me(joint, J, drive, load, h, t_end, method="euler", theta0=0.0, omega0=0.0, events=True):
+    """A fixed-step explicit Model Exchange host over [angle, w, x...]: explicit Euler
+    (method="euler") or classic Runge-Kutta 4 ("rk4") at step h, the drive and load sampled at
+    each stage's time. After each step: fmi2CompletedIntegratorStep, and when it asks for a
+    step event (events=True), event mode: the event iteration, and the states read back if the
+    FMU changed them. Run.info: "events" (their number), "x_max" (max |x| seen)."""
+    P = _load_fn(load)
+    nx = joint.n_states
+    n = int(round(t_end / h))
+    y = np.array([theta0, omega0] + list(getattr(joint, "x0", [0.0] * nx)), float)
+
+    def f(t, y):
+        tq, dx = joint.evaluate(t, y[0], y[1], P(t), y[2:])
+        return np.array([y[1], (drive(t) + tq) / J] + list(dx)), tq
+
+    t_ = np.empty(n + 1)
+    a_, w_, tq_, d_ = np.empty(n + 1), np.empty(n + 1), np.empty(n + 1), np.empty(n + 1)
+    n_events, x_max = 0, 0.0
+    for i in range(n):
+        t = i * h
+        k1, tq = f(t, y)
+        t_[i], a_[i], w_[i], tq_[i], d_[i] = t, y[0], y[1], tq, drive(t)
+        if method == "euler":
+            y = y + h * k1
+        elif method == "rk4":
+            k2, _ = f(t + h / 2, y + h / 2 * k1)
+            k3, _ = f(t + h / 2, y + h / 2 * k2)
+            k4, _ = f(t + h, y + h * k3)
+            y = y + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        else:
+            raise ValueError(f"method = {method!r}: 'euler' or 'rk4'")
+        joint.evaluate(t + h, y[0], y[1], P(t + h), y[2:])
+        if joint.completed_step() and events:
+            x, _ = joint.event(t + h, y[0], y[1], P(t + h), y[2:])
+            y[2:] = x
+            n_events += 1
+        if nx:
+            x_max = max(x_max, float(np.abs(y[2:]).max()))
+    t = n * h
+    tq, _ = joint.evaluate(t, y[0], y[1], P(t), y[2:])
+    t_[n], a_[n], w_[n], tq_[n], d_[n] = t, y[0], y[1], tq, drive(t)
+    return Run(t_, a_, w_, tq_, d_, {"host": f"ME {method}", "h": h, "J": J, "events": n_events, "x_max": x_max})
 
 
 def model_exchange(joint, J, drive, load, t_end, rtol=1e-6, atol=None, jacobian=True, max_step=np.inf,
@@ -649,15 +714,19 @@ WALK_TOL = 1e-3 * DEG        # rad, total walk under a dither below breakaway
 
 @dataclass
 class Host:
-    """How a scene is integrated: kind 'explicit' (h, order), 'implicit' (h) or 'me'
-    (rtol, jacobian)."""
+    """How a scene is integrated: kind 'explicit' (h, order), 'implicit' (h), 'me' (SciPy BDF:
+    rtol, jacobian) or 'me-fixed' (fixed-step Model Exchange honouring step events: h, method
+    'euler' or 'rk4')."""
     kind: str
     h: float = 1e-3
     order: str = "read-step"
     rtol: float = 1e-6
     jacobian: bool = True
+    method: str = "euler"
 
     def run(self, joint, J, drive, load, t_end):
+        if self.kind == "me-fixed":
+            return fixed_step_me(joint, J, drive, load, self.h, t_end, self.method)
         if self.kind == "explicit":
             return explicit(joint, J, drive, load, self.h, t_end, order=self.order)
         if self.kind == "implicit":
@@ -669,6 +738,8 @@ class Host:
     def __str__(self):
         if self.kind == "me":
             return f"ME BDF rtol {self.rtol:g}"
+        if self.kind == "me-fixed":
+            return f"ME {self.method} h = {self.h * 1e3:g} ms"
         return f"{self.kind} h = {self.h * 1e3:g} ms"
 
 

@@ -76,25 +76,38 @@ def gentle_input():
 @pytest.mark.parametrize("path", [FMU, FMI3], ids=["fmi2", "fmi3"])
 def test_model_exchange_presliding_is_the_law_at_the_solver_state(path, case):
     """The default model under ME with CVode: one continuous state, presliding_torque, which
-    the solver integrates; at every output point the torque is the law's at the recorded state
-    and the library's sliding torque, the other outputs the library's; the state stays within
-    the sliding torque; in sliding the torque opposes the motion."""
+    the solver integrates in stick (presliding_mode 0); at every output point the torque is the
+    law's at the recorded state and the library's sliding torque in stick, the sliding torque
+    -s T in slip (presliding_mode s = +-1, entered and left at step events), the other outputs
+    the library's; the state stays within the sliding torque in stick; in sliding the torque
+    opposes the motion."""
     if case == "gentle":
         stop, signal, dt = 6.0, gentle_input(), 0.01
     else:
         stop, signal, dt = float(case.split("-")[1]), input_signal(), DT
     r = simulate_fmu(str(path), stop_time=stop, output_interval=dt, input=signal, fmi_type="ModelExchange",
-                     solver="CVode", output=["angular_velocity", "load", "presliding_torque"] + OUTPUTS)
-    load, omega, tau = r["load"], r["angular_velocity"], r["presliding_torque"]
+                     solver="CVode", output=["angular_velocity", "load", "presliding_torque", "presliding_mode"] + OUTPUTS)
+    load, omega, tau, mode = r["load"], r["angular_velocity"], r["presliding_torque"], r["presliding_mode"]
     ref = reference(load, omega)
-    assert_close(r["torque"], presliding_torque(tau, omega, ref["torque"]), rel=1e-12, what="torque")
+    slip = mode != 0
+    assert slip.sum() > 100 and set(np.unique(mode)) <= {-1, 0, 1}, "the joint slides in slip mode"
+    # Slip follows the motion; where omega has just reversed the mode changes at the end of the
+    # solver's step (a step event), so an output point may fall between: at most one per change.
+    against = slip & (np.sign(omega) != mode)
+    changes = np.count_nonzero(np.diff(mode))
+    assert against.sum() <= changes, f"slip against the motion at {against.sum()} points, {changes} mode changes"
+    held = np.where(slip, mode * ref["torque"], tau)
+    assert_close(r["torque"], presliding_torque(held, omega, ref["torque"]), rel=1e-12, what="torque")
+    along = slip & ~against
+    assert_close(r["torque"][along], -mode[along] * ref["torque"][along], rel=0, what="slip torque")
+    tau, ref_stick = tau[~slip], {"torque": ref["torque"][~slip]}
     for name in ("friction_coefficient", "film_thickness", "lambda_ratio", "fluid_load_fraction",
                  "asperity_load_fraction", "mean_pressure", "sommerfeld_number"):
         assert_close(r[name], ref[name], rel=1e-12, what=name)
     # Where the sliding torque falls with speed the state lags it from above (the law relaxes it
     # towards T over (1 - beta) phi_s of travel; the torque is clamped): within 1 %.
-    assert np.all(np.abs(tau) <= ref["torque"] * 1.01), "the state within the sliding torque"
-    assert np.abs(tau).max() > 0.9 * ref["torque"].min(), "the state reaches the sliding torque"
+    assert np.all(np.abs(tau) <= ref_stick["torque"] * 1.01), "the state within the sliding torque"
+    assert np.abs(tau).max() > 0.9 * ref_stick["torque"].min(), "the state reaches the sliding torque"
     moving = omega != 0
     assert np.all(np.abs(r["torque"][moving]) <= ref["torque"][moving] * (1 + DAMPING_TIME_RATIO * np.abs(omega[moving])))
     fast = np.abs(omega) > 0.3

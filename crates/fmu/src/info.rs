@@ -62,6 +62,7 @@ pub fn model_info(
         documentation,
         model_exchange: false,
         directional_derivatives: false,
+        step_events: false,
         legal: LEGAL,
     }
 }

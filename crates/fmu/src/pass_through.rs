@@ -52,6 +52,7 @@ pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     },
     model_exchange: false,
     directional_derivatives: false,
+    step_events: false,
     legal: crate::LEGAL,
 });
 

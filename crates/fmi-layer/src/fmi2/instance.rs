@@ -309,6 +309,30 @@ impl Instance {
         self.update_outputs()
     }
 
+    /// Model Exchange, at the end of an integrator step: the outputs at the current states and
+    /// inputs, checked, then whether the model asks for a step event.
+    pub fn completed_integrator_step(&mut self) -> Result<bool, CallError> {
+        self.update_outputs()?;
+        let due = self.model.completed_integrator_step();
+        self.log_model_message();
+        Ok(due?)
+    }
+
+    /// Model Exchange, the event iteration: the outputs current, then the model's discrete
+    /// update; returns whether the continuous states changed (the outputs are then recomputed
+    /// at the next getter).
+    pub fn update_discrete_states(&mut self) -> Result<bool, CallError> {
+        self.update_outputs()?;
+        let changed = self.model.update_discrete_states();
+        self.log_model_message();
+        let changed = changed?;
+        if changed {
+            self.outputs_current = false;
+            self.update_outputs()?;
+        }
+        Ok(changed)
+    }
+
     /// An error unless the instance was created for Model Exchange (guards the Model Exchange
     /// functions).
     pub fn require_model_exchange(&self) -> Result<(), CallError> {
@@ -519,6 +543,7 @@ impl Instance {
     /// `fmi2Terminate`: to the `terminated` state.
     pub fn terminate(&mut self) -> CallResult {
         self.state = State::Terminated;
+        self.logger.flush_repeats();
         self.event(&format!("terminated at t = {} s", self.time));
         Ok(Status::Ok)
     }
@@ -526,6 +551,7 @@ impl Instance {
     /// `fmi2Reset`: every variable back to its start value, time and start time 0, to the
     /// `instantiated` state.
     pub fn reset(&mut self) -> CallResult {
+        self.logger.flush_repeats();
         self.model.set_start_values();
         self.model.set_interface(self.interface);
         self.state = State::Instantiated;

@@ -10,9 +10,99 @@
 //! debug categories (events, warnings, discards, all). Error and fatal messages are
 //! not debug output: they are reported from instantiation on, unless the host names
 //! `logStatusError`/`logStatusFatal` in `fmi2SetDebugLogging` with `loggingOn = false`.
+//!
+//! Rate limit ([`Repeats`]): a debug message that recurs (the same text with its numbers
+//! ignored, in the same category: a flag toggling every step, every `logAll` call line) is logged
+//! [`REPEAT_LIMIT`] times, then a line saying further repeats are counted; then one summary
+//! line at each power of ten of its count, and a final one at `fmi2Terminate`/`fmi2Reset`
+//! ([`Logger::flush_repeats`]). A message repeated n times thus writes at most
+//! REPEAT_LIMIT + 2 + log10(n) lines; at most [`REPEAT_KEYS`] distinct messages are counted
+//! apart, the rest together. Error and fatal messages are not limited: each goes with a
+//! call the host sees fail, and the message is the only place its reason is given.
 
 use super::types::{Fmi2CallbackLogger, Fmi2ComponentEnvironment, Status};
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::ffi::{c_char, c_int, c_void, CString};
+
+/// How many times one recurring message is logged before its repeats are only counted.
+pub const REPEAT_LIMIT: u64 = 10;
+
+/// How many distinct recurring messages are counted apart (the rest share one count).
+pub const REPEAT_KEYS: usize = 256;
+
+/// The counts of the messages logged, by their text with numbers ignored (module doc).
+#[derive(Debug, Clone, Default)]
+pub struct Repeats {
+    /// key → (times seen, the last text, its status and category).
+    seen: HashMap<String, (u64, String, Status, Category)>,
+}
+
+/// `message` with every run of digits (and a sign, point or exponent inside a number)
+/// replaced by `#`: the key under which its repeats are counted.
+fn repeat_key(c: Category, message: &str) -> String {
+    let mut key = String::with_capacity(message.len() + 8);
+    key.push_str(c.name());
+    key.push('|');
+    let mut in_number = false;
+    for ch in message.chars().take(400) {
+        let numeric = ch.is_ascii_digit() || (in_number && matches!(ch, '.' | 'e' | 'E' | '-' | '+'));
+        if numeric {
+            if !in_number {
+                key.push('#');
+            }
+        } else {
+            key.push(ch);
+        }
+        in_number = numeric;
+    }
+    key
+}
+
+/// What to write for one message: nothing, the message, or the message and a note.
+enum Verdict {
+    Log,
+    LogThenNote(u64),
+    Summary(u64),
+    Quiet,
+}
+
+impl Repeats {
+    fn see(&mut self, status: Status, c: Category, message: &str) -> Verdict {
+        let mut key = repeat_key(c, message);
+        if !self.seen.contains_key(&key) && self.seen.len() >= REPEAT_KEYS {
+            key = format!("{}|(other messages)", c.name());
+        }
+        let entry = self.seen.entry(key).or_insert_with(|| (0, String::new(), status, c));
+        entry.0 += 1;
+        entry.1 = message.to_owned();
+        entry.2 = status;
+        let n = entry.0;
+        if n < REPEAT_LIMIT {
+            Verdict::Log
+        } else if n == REPEAT_LIMIT {
+            Verdict::LogThenNote(n)
+        } else if n >= 100 && is_power_of_ten(n) {
+            Verdict::Summary(n)
+        } else {
+            Verdict::Quiet
+        }
+    }
+
+    /// The messages whose repeats were counted, not logged: (count, last text, status, category); the counts restart.
+    fn drain(&mut self) -> Vec<(u64, String, Status, Category)> {
+        let mut out: Vec<_> = self.seen.drain().map(|(_, v)| v).filter(|v| v.0 > REPEAT_LIMIT).collect();
+        out.sort_by(|a, b| a.1.cmp(&b.1));
+        out
+    }
+}
+
+fn is_power_of_ten(mut n: u64) -> bool {
+    while n >= 10 && n.is_multiple_of(10) {
+        n /= 10;
+    }
+    n == 1
+}
 
 /// FMI 3.0 `fmi3LogMessageCallback(instanceEnvironment, status, category, message)`.
 pub type Fmi3LogMessageCallback = unsafe extern "C" fn(*mut c_void, c_int, *const c_char, *const c_char);
@@ -106,13 +196,15 @@ pub struct Logger {
     env: Fmi2ComponentEnvironment,
     instance_name: CString,
     enabled: u8,
+    /// The rate limit's counts (module doc).
+    repeats: RefCell<Repeats>,
 }
 
 impl Logger {
     /// The FMI 2.0 logger: messages go to `callback` with `env` as its first argument and
     /// `instance_name`; `logging_on` is `loggingOn` of `fmi2Instantiate`.
     pub fn new(callback: Fmi2CallbackLogger, env: Fmi2ComponentEnvironment, instance_name: &str, logging_on: bool) -> Self {
-        let mut l = Logger { callback: Sink::Fmi2(callback), env, instance_name: c_text(instance_name), enabled: 0 };
+        let mut l = Logger { callback: Sink::Fmi2(callback), env, instance_name: c_text(instance_name), enabled: 0, repeats: RefCell::default() };
         l.set_all(logging_on);
         l
     }
@@ -120,7 +212,7 @@ impl Logger {
     /// The FMI 3.0 logger (`logMessage` may be NULL: then nothing is logged).
     pub fn new_fmi3(callback: Option<Fmi3LogMessageCallback>, env: *mut c_void, instance_name: &str, logging_on: bool) -> Self {
         let sink = callback.map_or(Sink::None, Sink::Fmi3);
-        let mut l = Logger { callback: sink, env, instance_name: c_text(instance_name), enabled: 0 };
+        let mut l = Logger { callback: sink, env, instance_name: c_text(instance_name), enabled: 0, repeats: RefCell::default() };
         l.set_all(logging_on);
         l
     }
@@ -147,10 +239,36 @@ impl Logger {
         self.enabled & c.bit() != 0
     }
 
-    /// Send `message` in category `c` with `status`, if that category is on.
+    /// Send `message` in category `c` with `status`, if that category is on and the message
+    /// is not over its repeat limit (module doc).
     pub fn log(&self, status: Status, c: Category, message: &str) {
-        if self.is_enabled(c) {
+        if !self.is_enabled(c) {
+            return;
+        }
+        if status >= Status::Error {
             self.emit(status, c, message);
+            return;
+        }
+        let verdict = self.repeats.borrow_mut().see(status, c, message);
+        match verdict {
+            Verdict::Log => self.emit(status, c, message),
+            Verdict::LogThenNote(n) => {
+                self.emit(status, c, message);
+                self.emit(status, c, &format!("(the message above was logged {n} times; its further repeats, numbers aside, are counted, not logged: a summary at 100, 1000, ... repeats and at fmi2Terminate or fmi2Reset)"));
+            }
+            Verdict::Summary(n) => self.emit(status, c, &format!("(repeated {n} times so far, the last:) {}", crate::fmt::excerpt(message))),
+            Verdict::Quiet => {}
+        }
+    }
+
+    /// The final summary of the messages over their repeat limit (one line each), then the
+    /// counts restart: called at `fmi2Terminate`/`fmi3Terminate` and `fmi2Reset`/`fmi3Reset`.
+    pub fn flush_repeats(&self) {
+        let over = self.repeats.borrow_mut().drain();
+        for (n, last, status, c) in over {
+            if self.is_enabled(c) {
+                self.emit(status, c, &format!("(repeated {n} times in all, the last:) {}", crate::fmt::excerpt(&last)));
+            }
         }
     }
 
@@ -193,7 +311,39 @@ pub fn show(v: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::show;
+    use super::*;
+
+    /// A flag toggling every step (two alternating messages with changing numbers) for 20 000
+    /// steps writes a bounded number of lines, then the summary.
+    #[test]
+    fn a_toggling_flag_logs_a_bounded_number_of_lines() {
+        let mut r = Repeats::default();
+        let mut lines = 0;
+        for i in 0..20_000u64 {
+            let (c, m) = if i % 2 == 0 {
+                (Category::Events, format!("validity 2 (known_wrong): temperature {} K is below 273.15 K", 273.1 - i as f64 * 1e-6))
+            } else {
+                (Category::All, "fmi2DoStep called in state stepComplete".to_string())
+            };
+            lines += match r.see(Status::Ok, c, &m) {
+                Verdict::Log | Verdict::Summary(_) => 1,
+                Verdict::LogThenNote(_) => 2,
+                Verdict::Quiet => 0,
+            };
+        }
+        // Per message: REPEAT_LIMIT + the note + summaries at 100, 1000, 10 000.
+        assert_eq!(lines, 2 * (REPEAT_LIMIT + 1 + 3));
+        let left = r.drain();
+        assert_eq!(left.len(), 2);
+        assert!(left.iter().all(|x| x.0 == 10_000));
+        assert!(r.drain().is_empty());
+        // Messages that differ in more than numbers are counted apart; beyond REPEAT_KEYS together.
+        for i in 0..1000 {
+            let _ = r.see(Status::Ok, Category::Events, &format!("message {}", char::from_u32(0x4e00 + i).unwrap()));
+        }
+        assert_eq!(r.seen.len(), REPEAT_KEYS + 1);
+        assert!(is_power_of_ten(1000) && !is_power_of_ten(1001) && is_power_of_ten(1));
+    }
 
     #[test]
     fn numbers_in_messages() {

@@ -134,6 +134,20 @@ pub trait Model {
     /// Advance from `time` over `step` (> 0) with the inputs held; outputs are current.
     fn do_step(&mut self, time: f64, step: f64) -> ModelResult<()>;
 
+    /// Model Exchange, at `fmi2CompletedIntegratorStep` (outputs current): whether the model
+    /// asks for an event (a step event: `enterEventMode`). Default: never. A model that asks
+    /// sets [`ModelInfo::step_events`](crate::fmi2::variables::ModelInfo::step_events).
+    fn completed_integrator_step(&mut self) -> ModelResult<bool> {
+        Ok(false)
+    }
+
+    /// Model Exchange, in event mode (`fmi2NewDiscreteStates`, `fmi3UpdateDiscreteStates`;
+    /// outputs current): update the discrete states; returns whether the continuous states
+    /// changed (`valuesOfContinuousStatesChanged`). Default: nothing to update.
+    fn update_discrete_states(&mut self) -> ModelResult<bool> {
+        Ok(false)
+    }
+
     /// The partial derivatives of variables `unknowns` with respect to variables `knowns` at
     /// the current values: `out[i * knowns.len() + j] = ∂ variable unknowns[i] / ∂ variable
     /// knowns[j]` (indices into the variable table, row-major, `out.len() == unknowns.len() *

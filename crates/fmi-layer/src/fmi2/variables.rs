@@ -230,9 +230,10 @@ pub const CAPABILITIES: &[(&str, &str)] = &[
     ("providesDirectionalDerivative", "false"),
 ];
 
-/// Model Exchange capabilities (FMI 2.0 `<ModelExchange>`): no event indicators and no
-/// work at the end of an integrator step, so the host's `fmi2CompletedIntegratorStep` is not
-/// needed. `providesDirectionalDerivative` is written with the model's
+/// Model Exchange capabilities (FMI 2.0 `<ModelExchange>`): no event indicators; the host's
+/// `fmi2CompletedIntegratorStep` is not needed unless the model asks for step events
+/// (`completedIntegratorStepNotNeeded` is written from [`ModelInfo::step_events`]).
+/// `providesDirectionalDerivative` is written with the model's
 /// [`ModelInfo::directional_derivatives`] instead of the value here.
 pub const ME_CAPABILITIES: &[(&str, &str)] = &[
     ("needsExecutionTool", "false"),
@@ -286,6 +287,11 @@ pub struct ModelInfo {
     /// (FMI 3.0) and `fmi2GetDirectionalDerivative`/`fmi3GetDirectionalDerivative` call it.
     /// When false those functions are refused without asking the model.
     pub directional_derivatives: bool,
+    /// Model Exchange: the model asks for step events ([`Model::completed_integrator_step`]) and
+    /// updates discrete states in event mode ([`Model::update_discrete_states`]), so the host
+    /// must call `fmi2CompletedIntegratorStep`/`fmi3CompletedIntegratorStep`
+    /// (`completedIntegratorStepNotNeeded="false"`, `needsCompletedIntegratorStep="true"`).
+    pub step_events: bool,
     /// Author, copyright and licence of the model.
     pub legal: Legal,
 }

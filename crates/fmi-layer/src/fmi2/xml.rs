@@ -34,7 +34,14 @@ fn type_element(info: &ModelInfo, v: &Variable) -> Result<String, XmlError> {
 /// model's [`ModelInfo::directional_derivatives`].
 fn capabilities(info: &ModelInfo, list: &'static [(&'static str, &'static str)]) -> Vec<(&'static str, &'static str)> {
     let provides = if info.directional_derivatives { "true" } else { "false" };
-    list.iter().map(|&(k, v)| (k, if k == "providesDirectionalDerivative" { provides } else { v })).collect()
+    let not_needed = if info.step_events { "false" } else { "true" };
+    list.iter()
+        .map(|&(k, v)| match k {
+            "providesDirectionalDerivative" => (k, provides),
+            "completedIntegratorStepNotNeeded" => (k, not_needed),
+            _ => (k, v),
+        })
+        .collect()
 }
 
 /// The type definitions of FMI 2.0: one Real type per unit in use, named for its quantity

@@ -539,8 +539,11 @@ guarded! {
         nextEventTimeDefined: *mut Fmi3Boolean,
         nextEventTime: *mut f64,
     ) -> Fmi3StatusC: NEW_DISCRETE_STATES => |inst| unsafe {
-        let flags = [discreteStatesNeedUpdate, terminateSimulation, nominalsOfContinuousStatesChanged, valuesOfContinuousStatesChanged, nextEventTimeDefined];
+        inst.require_model_exchange()?;
+        let changed = inst.update_discrete_states()?;
+        let flags = [discreteStatesNeedUpdate, terminateSimulation, nominalsOfContinuousStatesChanged, nextEventTimeDefined];
         nothing_to_do(inst, &flags)?;
+        put(valuesOfContinuousStatesChanged, Fmi3Boolean::from(changed));
         put(nextEventTime, 0.0);
         Ok(Status::Ok)
     };
@@ -550,13 +553,19 @@ guarded! {
     fn fmi3EnterContinuousTimeMode(instance: Fmi3Instance) -> Fmi3StatusC: ENTER_CONTINUOUS_TIME_MODE => Instance::enter_continuous_time_mode;
 
     /// `fmi3CompletedIntegratorStep` (FMI 3.0): checks the outputs at the current
-    /// inputs (a model failure is `fmi3Error`); never asks for an event or termination (both
-    /// flags false where non-NULL).
+    /// inputs (a model failure is `fmi3Error`); `enterEventMode` is the model's step event,
+    /// `terminateSimulation` false (where non-NULL).
     ///
     /// # Safety
     /// `enterEventMode` and `terminateSimulation` are NULL or writable.
     unsafe fn fmi3CompletedIntegratorStep(instance: Fmi3Instance, _noSetFMUStatePriorToCurrentPoint: Fmi3Boolean, enterEventMode: *mut Fmi3Boolean, terminateSimulation: *mut Fmi3Boolean) -> Fmi3StatusC:
-        COMPLETED_INTEGRATOR_STEP => |inst| unsafe { nothing_to_do(inst, &[enterEventMode, terminateSimulation]) };
+        COMPLETED_INTEGRATOR_STEP => |inst| unsafe {
+            inst.require_model_exchange()?;
+            let due = inst.completed_integrator_step()?;
+            nothing_to_do(inst, &[terminateSimulation])?;
+            put(enterEventMode, Fmi3Boolean::from(due));
+            Ok(Status::Ok)
+        };
 
     /// `fmi3SetTime` (FMI 3.0): Model Exchange, records the host's solver time `time`
     /// in s (the model's outputs and derivatives do not depend on time explicitly); `fmi3Error` for a non-finite time or on a

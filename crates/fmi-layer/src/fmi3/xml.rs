@@ -61,7 +61,15 @@ fn variable(info: &ModelInfo, v: &Variable) -> Result<String, XmlError> {
 /// model's [`ModelInfo::directional_derivatives`].
 fn capabilities<'a>(info: &ModelInfo, lists: impl IntoIterator<Item = &'a (&'static str, &'static str)>) -> Vec<(&'static str, &'static str)> {
     let provides = if info.directional_derivatives { "true" } else { "false" };
-    lists.into_iter().map(|&(k, v)| (k, if k == "providesDirectionalDerivatives" { provides } else { v })).collect()
+    let needed = if info.step_events { "true" } else { "false" };
+    lists
+        .into_iter()
+        .map(|&(k, v)| match k {
+            "providesDirectionalDerivatives" => (k, provides),
+            "needsCompletedIntegratorStep" => (k, needed),
+            _ => (k, v),
+        })
+        .collect()
 }
 
 /// The complete FMI 3.0 modelDescription.xml of `info` (Model Exchange if the model offers it,

@@ -213,6 +213,7 @@ fn info(name: &'static str, directional_derivatives: bool, create: fn() -> Box<d
         documentation: String::new,
         model_exchange: true,
         directional_derivatives,
+        step_events: false,
         legal: Legal { author: "test", copyright: "test", license: "test" },
     }
 }

@@ -98,7 +98,14 @@ held torque (no jerk); a drop below the held torque lets the joint slide, as it 
 <ul>
 <li>Parameters: <code>zero_velocity.presliding_angle</code> &phi;<sub>s</sub> (default {phi} rad = {phi_um:.0} &micro;m at the pin surface:
 the elastic deflection at which the presliding torque would reach the sliding torque), <code>zero_velocity.elastic_limit</code>
-&beta; (default {beta}), <code>zero_velocity.damping_time</code> t<sub>d</sub> (default {td} s).</li>
+&beta; (default {beta}), <code>zero_velocity.damping_time</code> t<sub>d</sub> (default {td} s), <code>zero_velocity.host_inertia</code>
+J (kg&middot;m&sup2;, default 0 = not given: when given the damping is c = 2&zeta;&radic;(kJ), &zeta; = 0.7, capped under Co-Simulation
+at the last step h by c &le; 0.9(J/h)&middot;min(1, 2 &minus; h&sup2;k/J), the explicit host's no-sign-alternation bound: heavy bodies settle
+within seconds and a dither near the presliding resonance does not walk).</li>
+<li>The host's conventions: the <code>angle</code> is taken modulo 2&pi; (the increment since the reference is the 2&pi;-equivalent
+closest to angular_velocity&middot;h of the last step, so a host may wrap its angle into (&minus;&pi;, &pi;]); when no angle is set in
+initialization mode, the first angle set afterwards is the reference (no deflection at t = 0); a restored FMU state keeps its
+reference.</li>
 <li>Co-Simulation: the state is driven by the <code>angle</code> input's increments once the host has set the angle after
 initialization: the torque read after setting (angle, angular_velocity) is the one at that angle, the same before and after
 fmi2DoStep (which commits it), and &part;torque/&part;angle = &minus;k in stick. A host that never sets the angle drives the
@@ -106,10 +113,15 @@ state by angular_velocity&middot;h over each step (the exact solution with the i
 solution over the increment: unconditionally stable and bounded for any step and any angle increment. Feed angle and
 angular velocity at each step start. The locals <code>presliding_reference_angle</code> (the angle at which the state
 was committed) and <code>presliding_angle_driven</code> (whether the host has set the angle) are this bookkeeping, kept in
-the FMU state.</li>
-<li>Model Exchange: <code>presliding_torque</code> is the one continuous state (nominal 100 N&middot;m) with derivative
-<code>der(presliding_torque)</code> = k&omega;g, Lipschitz in the state, so an implicit solver owns it. No event indicators:
-the right-hand side is continuous (its kinks at &beta;T and &omega; = 0 are not jumps).</li>
+the FMU state, with <code>presliding_angle_pending</code> (no angle set yet: the next one is the reference),
+<code>presliding_step</code> and <code>presliding_reference_speed</code> (the last step and &omega; there, against which the next
+angle is read modulo 2&pi;).</li>
+<li>Model Exchange: <code>presliding_torque</code> is the one continuous state (nominal 100 N&middot;m). In stick
+(<code>presliding_mode</code> = 0) its derivative is k&omega;&middot;clamp(g, 0, 1): it moves only along &omega;, by at most the
+elastic k|&omega;|, so no explicit step can make it oscillate; in slip (&plusmn;1) it is held and the torque is the sliding torque.
+The mode changes at step events (fmi2CompletedIntegratorStep asks for event mode when the state reaches the bound along the
+motion or a slip's &omega; stops or reverses; fmi2NewDiscreteStates switches it and sets the state). Explicit Euler at 1 ms
+and RK4 at 10 ms hold, break away and reverse for J &ge; 20 kg&middot;m&sup2; up to 60 kN; BDF and CVode as before.</li>
 <li>Envelope of an explicit host (symplectic Euler, torque held over the step h, body inertia J): in stick the loop is
 a spring k = T<sub>s</sub>/&phi;<sub>s</sub> and damper c = t<sub>d</sub>k; it decays without sign-alternation when
 (k/J)&middot;h&middot;t<sub>d</sub> &lt; 1 and (k/J)&middot;h&middot;(h + t<sub>d</sub>) &lt; 2, and is stable when
@@ -117,7 +129,7 @@ a spring k = T<sub>s</sub>/&phi;<sub>s</sub> and damper c = t<sub>d</sub>k; it d
 k = {k60:.3e} N&middot;m/rad) and h = 10 ms this holds for J &ge; {jmin60:.1} kg&middot;m&sup2;; at 20 kN for J &ge; {jmin20:.1} kg&middot;m&sup2;.
 A linearly implicit host using the directional derivatives is stable at any step. The presliding ring
 (frequency &radic;(k/J), damping ratio (t<sub>d</sub>/2)&radic;(k/J)) decays with time constant 2J/(t<sub>d</sub>k): for heavy bodies
-(J in the thousands of kg&middot;m&sup2;) under a sudden drive it rings for tens of seconds; raise t<sub>d</sub> within the bound above.</li>
+(J in the thousands of kg&middot;m&sup2;) under a sudden drive it rings for tens of seconds: give <code>zero_velocity.host_inertia</code>.</li>
 </ul>
 <h3>band</h3>
 <p>The stateless law of earlier versions, bit for bit: inside the band |&omega;| &lt; &omega;<sub>b</sub> (parameter
@@ -163,7 +175,7 @@ All have variability <em>fixed</em>: set them before fmi2ExitInitializationMode.
 
 <h2>Model Exchange</h2>
 <p>With <code>zero_velocity.model = presliding</code> (default) the FMU has <b>one continuous state</b>, <code>presliding_torque</code>,
-and no event indicators; with <code>band</code> the state is not used (its derivative is 0) and the torque is a stateless map
+no event indicators and <b>step events</b> (its stick and slip modes, above); with <code>band</code> the state is not used (its derivative is 0) and the torque is a stateless map
 of the inputs. The host's own solver owns &omega; (e.g. <code>J d&omega;/dt = T_drive + torque</code>) and the presliding state;
 an implicit solver (BDF) takes the presliding stiffness k = T/&phi;<sub>s</sub> in its stride. Directional derivatives of the
 torque and of the state derivative with respect to the state and the inputs are provided for its Jacobian.</p>
@@ -173,8 +185,11 @@ T(P, &omega;<sub>b</sub>)/&omega;<sub>b</sub>, e.g. {tb20:.1} N&middot;m / {band
 the torque jumps by 2&mu;<sub>c</sub>RP at &omega; = 0 and variable-step solvers shrink their step at every reversal.</li>
 <li><code>dissipated_energy</code> is a Co-Simulation quantity (the sum of power_loss times the step over the steps taken).
 Model Exchange takes no steps, so it is not computed there and <b>stays 0</b>; integrate <code>power_loss</code> in the host.</li>
-<li>Event mode has nothing to iterate (no discrete states, no time events); <code>fmi2CompletedIntegratorStep</code> is not needed
-but, if called, checks the outputs at the current inputs. Parameters can only be set before exit of initialization.</li>
+<li>Call <code>fmi2CompletedIntegratorStep</code> after every integrator step and enter event mode when it asks: the event
+iteration (one <code>fmi2NewDiscreteStates</code>) switches the presliding mode and may set the state
+(<code>valuesOfContinuousStatesChanged</code>); no time events. A host that ignores the step events stays in stick: bounded and
+exact in steady sliding, but a reversal after the sliding torque fell unloads from the excess. Parameters can only be set
+before exit of initialization.</li>
 </ul>
 
 <h2>Directional derivatives</h2>

@@ -6,6 +6,7 @@ use super::variables::{Outputs, Values};
 use super::zero_velocity::{band_friction, presliding_friction};
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::Evaluator;
+use pinjoint::zero_velocity::modes::Mode;
 use pinjoint::zero_velocity::ZeroVelocityModel;
 
 /// The library's operating point at (`load`, `omega`) from `ev`, cold (no warm start): the
@@ -35,8 +36,9 @@ pub fn outputs(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta: 
     let (op, mut first) = operating_point(ev, load, omega)?;
     let friction = match model {
         ZeroVelocityModel::Presliding => {
-            let law = &v.zv.law;
-            presliding_friction(law, law.deflect(v.tau, delta, op.torque), omega, op.torque)
+            let law = v.zv.law.at_step(v.step);
+            let mode = Mode::from_code(v.mode).unwrap_or_default();
+            presliding_friction(&law, mode, law.deflect(v.tau, delta, op.torque), omega, op.torque)
         }
         ZeroVelocityModel::Band => band_friction(omega, v.zv.band, op.torque, || {
             let (edge, f) = operating_point(ev, load, v.zv.band)?;

@@ -21,6 +21,8 @@ use std::sync::LazyLock;
 pub static INFO: LazyLock<ModelInfo> = LazyLock::new(|| ModelInfo {
     model_exchange: true,
     directional_derivatives: true,
+    // Model Exchange: the presliding state's stick and slip modes change at step events.
+    step_events: true,
     ..crate::model_info(
         "PinJoint",
         "Frictional torque of a grease-lubricated aircraft landing-gear pin joint (mixed lubrication: \

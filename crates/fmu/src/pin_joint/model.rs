@@ -14,6 +14,8 @@ use fmi_layer::fmi2::logging::show;
 use fmi_layer::fmi2::model::{Model, ModelError, ModelResult};
 use fmi_layer::fmi2::variables::Causality;
 use pinjoint::fidelity::Evaluator;
+use pinjoint::zero_velocity::modes::{self, Mode};
+use pinjoint::zero_velocity::wrap::increment;
 use pinjoint::zero_velocity::ZeroVelocityModel;
 use pinjoint::Joint;
 
@@ -35,6 +37,10 @@ pub struct PinJointModel {
     interface: Option<Interface>,
     /// Whether the inputs were outside the validity envelope at the last evaluation.
     validity: pinjoint::validity::Tracker,
+    /// Initialization is over (exit of initialization mode, or a state restored after it).
+    initialized: bool,
+    /// The host set the angle in initialization mode: it is the reference.
+    angle_in_init: bool,
 }
 
 impl PinJointModel {
@@ -88,9 +94,20 @@ impl PinJointModel {
         self.interface != Some(Interface::ModelExchange) && self.v.angle_driven == 1.0
     }
 
-    /// The angle increment the outputs deflect the committed state by.
+    /// The angle increment the outputs deflect the committed state by: modulo 2π, the
+    /// equivalent closest to ω·h of the last step ([`pinjoint::zero_velocity::wrap`]).
     fn delta(&self) -> f64 {
-        if self.angle_drives() { self.v.angle - self.v.angle_ref } else { 0.0 }
+        if self.angle_drives() { increment(self.v.angle - self.v.angle_ref, self.v.omega_ref * self.v.step) } else { 0.0 }
+    }
+
+    /// The Model Exchange mode (stick under Co-Simulation).
+    fn mode(&self) -> Mode {
+        Mode::from_code(self.v.mode).unwrap_or_default()
+    }
+
+    /// The sliding torque at the held inputs (0 unloaded or before an evaluation).
+    fn bound(&self) -> f64 {
+        self.v.out.point.map_or(0.0, |p| p.torque)
     }
 
     /// The evaluator in use (after initialization).
@@ -123,9 +140,19 @@ impl Model for PinJointModel {
         let var = TABLE.set(&mut self.v, i, x);
         if var.causality == Causality::Parameter {
             self.evaluator = None;
-        } else if var.name == "angle" && self.evaluator.is_some() {
-            // Set after initialization: from now on the angle drives the presliding state.
-            self.v.angle_driven = 1.0;
+        } else if var.name == "angle" {
+            if !self.initialized {
+                self.angle_in_init = true;
+            } else {
+                if self.v.angle_pending == 1.0 {
+                    // The first angle after (re)initialization, none set in initialization
+                    // mode: it is the reference, not a deflection from the start value.
+                    self.v.angle_ref = x;
+                    self.v.angle_pending = 0.0;
+                }
+                // Set after initialization: from now on the angle drives the presliding state.
+                self.v.angle_driven = 1.0;
+            }
         }
     }
 
@@ -135,10 +162,33 @@ impl Model for PinJointModel {
 
     fn exit_initialization(&mut self, _start_time: f64) -> ModelResult<()> {
         self.evaluator()?;
-        // The presliding state is committed at the initial angle.
+        // The presliding state is committed at the initial angle; if the host set none, at
+        // the first angle it sets.
         self.v.angle_ref = self.v.angle;
         self.v.angle_driven = 0.0;
+        self.v.angle_pending = if self.angle_in_init { 0.0 } else { 1.0 };
+        self.v.mode = 0.0;
+        self.v.step = 0.0;
+        self.v.omega_ref = 0.0;
+        self.initialized = true;
         Ok(())
+    }
+
+    fn completed_integrator_step(&mut self) -> ModelResult<bool> {
+        if self.zero_velocity()? != ZeroVelocityModel::Presliding || self.interface != Some(Interface::ModelExchange) {
+            return Ok(false);
+        }
+        Ok(modes::event_due(&self.v.zv.law, self.mode(), self.v.tau, self.v.omega, self.bound()))
+    }
+
+    fn update_discrete_states(&mut self) -> ModelResult<bool> {
+        if self.zero_velocity()? != ZeroVelocityModel::Presliding || self.interface != Some(Interface::ModelExchange) {
+            return Ok(false);
+        }
+        let (mode, tau) = modes::update(&self.v.zv.law, self.mode(), self.v.tau, self.v.omega, self.bound());
+        let changed = tau.to_bits() != self.v.tau.to_bits();
+        (self.v.mode, self.v.tau) = (mode.code(), tau);
+        Ok(changed)
     }
 
     fn compute_outputs(&mut self) -> ModelResult<()> {
@@ -171,6 +221,8 @@ impl Model for PinJointModel {
             return Err(ModelError::NotFinite(format!("dissipated_energy overflows ({e} J)")));
         }
         if self.zero_velocity()? == ZeroVelocityModel::Presliding {
+            // The step and ω the next angle is read against (and the damping capped at).
+            (self.v.step, self.v.omega_ref) = (step, self.v.omega);
             if self.angle_drives() {
                 // Commit the presliding torque the outputs already hold at this angle.
                 self.v.tau = self.v.out.friction.held;
@@ -180,14 +232,14 @@ impl Model for PinJointModel {
                 // follows the motion the state assumed.
                 let bound = self.v.out.point.map_or(0.0, |p| p.torque);
                 let travel = self.v.omega * step;
-                let law = self.v.zv.law;
+                let law = self.v.zv.law.at_step(step);
                 self.v.tau = law.deflect(self.v.tau, travel, bound);
                 self.v.angle_ref += travel;
                 if !self.v.angle_ref.is_finite() {
                     return Err(ModelError::NotFinite(format!("presliding_reference_angle overflows ({} rad)", show(self.v.angle_ref))));
                 }
                 // The inputs are held: the operating point (and T) stand; only the friction moves.
-                self.v.out.friction = if self.v.load == 0.0 { Default::default() } else { presliding_friction(&law, self.v.tau, self.v.omega, bound) };
+                self.v.out.friction = if self.v.load == 0.0 { Default::default() } else { presliding_friction(&law, Mode::Stick, self.v.tau, self.v.omega, bound) };
             }
         }
         self.v.energy = e;
@@ -219,10 +271,13 @@ impl Model for PinJointModel {
         v.zv.validate()?;
         v.fidelity.validate()?;
         check_capacity(v.load, joint.capacity())?;
+        if Mode::from_code(v.mode).is_none() {
+            return Err(ModelError::RejectedState(format!("presliding_mode = {} is not a mode (0, 1 or -1)", show(v.mode))));
+        }
         // The same parameters keep the built evaluator (a table is not rebuilt on every restore).
         let same = v.params == self.v.params && v.fidelity == self.v.fidelity && v.zv == self.v.zv;
         let evaluator = if same { self.evaluator.take() } else { None };
-        *self = PinJointModel { v, evaluator, message: None, interface: self.interface, validity: self.validity };
+        *self = PinJointModel { v, evaluator, message: None, interface: self.interface, validity: self.validity, initialized: true, angle_in_init: false };
         Ok(())
     }
 }
@@ -244,6 +299,42 @@ mod tests {
         assert!(matches!(source, Some(pinjoint::ParamError::OutOfRange { .. })), "{source:?}");
     }
 
+    /// A state whose Model Exchange mode is not 0, 1 or -1 is refused, nothing changed.
+    #[test]
+    fn a_state_with_a_bad_mode_is_refused() {
+        let mut m = PinJointModel::new();
+        let mode = TABLE.index("presliding_mode").unwrap();
+        for bad in [2.0, 0.5, f64::NAN] {
+            let mut v = Values::default();
+            TABLE.set(&mut v, mode, bad);
+            let mut w = ByteWriter::default();
+            TABLE.write(STATE_VERSION, &v, &mut w);
+            let e = m.deserialize(&w.buf).unwrap_err();
+            assert!(matches!(e, ModelError::RejectedState(_) | ModelError::InvalidValue { .. }), "{bad}: {e}");
+        }
+        assert_eq!(m.v.mode, 0.0);
+    }
+
+    /// The first angle set after initialization is the reference when none was set in
+    /// initialization mode; one set there is the reference itself.
+    #[test]
+    fn the_first_angle_is_the_reference_unless_set_in_initialization() {
+        let angle = TABLE.index("angle").unwrap();
+        let mut m = PinJointModel::new();
+        m.exit_initialization(0.0).unwrap();
+        m.set_real(angle, 1.4);
+        m.compute_outputs().unwrap();
+        assert_eq!(m.v.out.friction.torque, 0.0);
+        assert_eq!((m.v.angle_ref, m.v.angle_pending, m.v.angle_driven), (1.4, 0.0, 1.0));
+        let mut m = PinJointModel::new();
+        m.set_real(angle, 0.0);
+        m.exit_initialization(0.0).unwrap();
+        m.set_real(angle, 1.4);
+        m.compute_outputs().unwrap();
+        let bound = m.v.out.point.unwrap().torque;
+        assert_eq!(m.v.out.friction.torque, -bound);
+    }
+
     /// A state with another layout version is rejected by name, nothing changed.
     #[test]
     fn a_foreign_state_is_rejected() {
@@ -253,7 +344,7 @@ mod tests {
         bytes[0] = 9;
         let e = m.deserialize(&bytes).unwrap_err();
         assert!(matches!(e, ModelError::RejectedState(_)));
-        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 5");
+        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 6");
         bytes[0] = STATE_VERSION;
         m.deserialize(&bytes).unwrap();
     }

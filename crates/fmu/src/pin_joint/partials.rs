@@ -23,6 +23,7 @@ use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use pinjoint::fidelity::Evaluator;
 use pinjoint::zero_velocity::jet::{Jet, Scalar};
 use pinjoint::zero_velocity::joint::{bound_partials, tangent_held};
+use pinjoint::zero_velocity::modes::{self, Mode};
 use pinjoint::zero_velocity::{band, ZeroVelocityModel};
 
 /// The knowns a partial can be taken with respect to.
@@ -68,9 +69,14 @@ fn friction_jets(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta
         ZeroVelocityModel::Presliding => {
             let (t, dw, dp) = bound_partials(&mut bound, load, omega)?;
             let t = Jet::with(t, [0.0, dw, dp]);
-            let law = &v.zv.law;
+            let law = &v.zv.law.at_step(v.step);
+            let mode = if me { Mode::from_code(v.mode).unwrap_or_default() } else { Mode::Stick };
             let tau = if me { Jet::var(v.tau, 0) } else { tangent_held(law, v.tau, delta, omega, t) };
-            Ok(FrictionJets { torque: law.torque(tau, w, t), power: law.dissipation(tau, w, t), rate: law.rate(tau, w, t) })
+            Ok(FrictionJets {
+                torque: modes::torque(law, mode, tau, w, t),
+                power: modes::dissipation(law, mode, tau, w, t),
+                rate: modes::rate(law, mode, tau, w, t),
+            })
         }
         ZeroVelocityModel::Band => {
             let width = v.zv.band;
@@ -195,18 +201,20 @@ mod tests {
         for code in [0.0, 1.0, 2.0, 3.0] {
             let settings = crate::fidelity::FidelitySettings { code, ..DEFAULT_FIDELITY };
             let mut ev = settings.build(&pinjoint::Params::default()).unwrap();
-            // (model, load, omega, committed tau, angle increment, model exchange)
+            // (model, load, omega, committed tau, angle increment, model exchange, ME mode)
             let cases = [
-                (ZeroVelocityModel::Presliding, 20e3, 1e-3, 10.0, 2e-4, false),
-                (ZeroVelocityModel::Presliding, 20e3, 0.3, 60.0, 1e-4, false),
-                (ZeroVelocityModel::Presliding, 55e3, -0.5, -150.0, -3e-3, false),
-                (ZeroVelocityModel::Presliding, 20e3, 0.2, 30.0, 0.0, true),
-                (ZeroVelocityModel::Presliding, 20e3, 0.2, 66.0, 0.0, true),
-                (ZeroVelocityModel::Band, 20e3, 0.004, 0.0, 0.0, false),
-                (ZeroVelocityModel::Band, 55e3, -0.7, 0.0, 0.0, false),
+                (ZeroVelocityModel::Presliding, 20e3, 1e-3, 10.0, 2e-4, false, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.3, 60.0, 1e-4, false, 0.0),
+                (ZeroVelocityModel::Presliding, 55e3, -0.5, -150.0, -3e-3, false, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.2, 30.0, 0.0, true, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.2, 66.0, 0.0, true, 0.0),
+                (ZeroVelocityModel::Presliding, 20e3, 0.2, 66.0, 0.0, true, 1.0),
+                (ZeroVelocityModel::Presliding, 40e3, -0.2, 100.0, 0.0, true, 1.0),
+                (ZeroVelocityModel::Band, 20e3, 0.004, 0.0, 0.0, false, 0.0),
+                (ZeroVelocityModel::Band, 55e3, -0.7, 0.0, 0.0, false, 0.0),
             ];
-            for (model, load, omega, tau, delta, me) in cases {
-                let v = values(model, load, omega, tau);
+            for (model, load, omega, tau, delta, me, mode) in cases {
+                let v = Values { mode, ..values(model, load, omega, tau) };
                 let mut jac = vec![0.0; unknowns.len() * knowns.len()];
                 jacobian(&mut ev, &v, model, delta, me, (&unknowns, &known_idx), &mut jac).unwrap();
                 let f = |ev: &mut Evaluator, x: &Values, delta: f64| output_values(ev, x, model, delta).unwrap();

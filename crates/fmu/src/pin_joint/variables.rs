@@ -15,6 +15,8 @@
 //! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 42 |
 //! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 43, 44 |
 //! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature | not stored |
+//! | 205 | `zero_velocity.host_inertia` | 45 |
+//! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 46–49 |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
@@ -26,10 +28,12 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (5: version 4's values, then the zero-velocity
-/// model and presliding parameters and the presliding state). The state also carries its
-/// value count, so a layout with another number of values is refused whatever its version.
-pub const STATE_VERSION: u8 = 5;
+/// Version of the serialized state's layout (6: version 5's values, then the host inertia,
+/// the Model Exchange mode, the last step, ω there and whether the first angle is pending;
+/// 5: version 4's values, then the zero-velocity model and presliding parameters and the
+/// presliding state). The state also carries its value count, so a layout with another
+/// number of values is refused whatever its version.
+pub const STATE_VERSION: u8 = 6;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -66,6 +70,17 @@ pub struct Values {
     /// `presliding_angle_driven` (0 or 1): the host has set the angle since initialization, so
     /// the angle's increments drive the state (else angular_velocity·h).
     pub angle_driven: f64,
+    /// `presliding_angle_pending` (0 or 1): no angle was set in initialization and none since:
+    /// the next angle set is the reference (no deflection there).
+    pub angle_pending: f64,
+    /// `presliding_mode` (0 stick, ±1 slip): the Model Exchange mode
+    /// ([`pinjoint::zero_velocity::modes`]); 0 under Co-Simulation.
+    pub mode: f64,
+    /// `presliding_step` (s): the last Co-Simulation step (0 before the first): the angle's
+    /// increment is read against ω·h, and the host-inertia damping capped at h.
+    pub step: f64,
+    /// `presliding_reference_speed` (rad/s): ω at the last Co-Simulation step.
+    pub omega_ref: f64,
     /// The `angle` input (rad).
     pub angle: f64,
     /// The `angular_velocity` input (rad/s).
@@ -91,6 +106,10 @@ impl Default for Values {
             tau: 0.0,
             angle_ref: 0.0,
             angle_driven: 0.0,
+            angle_pending: 0.0,
+            mode: 0.0,
+            step: 0.0,
+            omega_ref: 0.0,
             angle: 0.0,
             omega: 0.0,
             load: DEFAULT_LOAD,
@@ -208,7 +227,36 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows.extend(zero_velocity::rows(201, p + 12, |s: &Values| &s.zv, |s| &mut s.zv));
     rows.extend(presliding_rows(p + 16));
+    rows.push(zero_velocity::host_inertia_row(205, p + 19, |s: &Values| &s.zv, |s| &mut s.zv));
+    rows.extend(host_rows(p + 20));
     rows
+}
+
+/// The host-convention bookkeeping of the presliding state (version 6): the Model Exchange
+/// mode, the last step and ω there, the pending first angle; slots from `slot`.
+fn host_rows(slot: usize) -> Vec<Row<Values>> {
+    let local = |name: &str, vr: u32, kind: Kind, unit: Option<&'static str>, text: &str| {
+        let mut v = declare(name, vr, kind, Causality::Local, unit, None, text);
+        v.start = Some(0.0);
+        v
+    };
+    let finite = crate::inputs::FINITE;
+    vec![
+        Row::new(local("presliding_mode", 44, Kind::Integer, None,
+            "Model Exchange: 0 = stick (presliding_torque integrated), 1 / -1 = slip in +omega / -omega (the torque is the sliding torque, the state held); \
+             changed only in event mode, the model asking for a step event when the state reaches the bound or a slip stops"),
+            |s: &Values| s.mode, |s, x| s.mode = x, Rule::Closed(-1.0, 1.0)).at_slot(slot),
+        Row::new(local("presliding_step", 45, Kind::Real, Some("s"),
+            "Co-Simulation: the last communication step h (0 before the first): the angle's increment is read modulo 2 pi as the one closest to \
+             presliding_reference_speed * h, and the host-inertia damping is capped at h"),
+            |s: &Values| s.step, |s, x| s.step = x, Rule::NonNegative).at_slot(slot + 1),
+        Row::new(local("presliding_reference_speed", 46, Kind::Real, Some("rad/s"),
+            "Co-Simulation: angular_velocity at the last communication step"),
+            |s: &Values| s.omega_ref, |s, x| s.omega_ref = x, finite).at_slot(slot + 2),
+        Row::new(local("presliding_angle_pending", 47, Kind::Boolean, None,
+            "Co-Simulation: true while no angle was set, in initialization or since: the first angle set is the reference (no deflection there)"),
+            |s: &Values| s.angle_pending, |s, x| s.angle_pending = x, Rule::Any).at_slot(slot + 3),
+    ]
 }
 
 /// The presliding state's rows: `presliding_torque` (the continuous state, slot `slot`), its
@@ -253,11 +301,12 @@ pub fn validity(s: &Values) -> pinjoint::Validity {
 mod tests {
     use super::*;
 
-    /// The state order of version 5: version 4's (parameters, band, angle, speed, load,
+    /// The state order of version 6: version 5's values, then the host inertia and the
+    /// host-convention bookkeeping. Version 5: version 4's (parameters, band, angle, speed, load,
     /// energy, fidelity code, tolerance, envelope, temperature), then the zero-velocity
     /// parameters and the presliding state.
     #[test]
-    fn the_state_order_is_that_of_version_5() {
+    fn the_state_order_is_that_of_version_6() {
         let names: Vec<&str> = TABLE.stored().iter().map(|&i| TABLE.rows()[i].var.name.as_str()).collect();
         let p = PARAMS.len();
         assert_eq!(names[..p], PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect::<Vec<_>>()[..]);
@@ -267,7 +316,8 @@ mod tests {
                 "zero_velocity.speed_band", "angle", "angular_velocity", "load", "dissipated_energy", "fidelity", "tolerance",
                 "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max", "temperature",
                 "zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time",
-                "presliding_torque", "presliding_reference_angle", "presliding_angle_driven"
+                "presliding_torque", "presliding_reference_angle", "presliding_angle_driven", "zero_velocity.host_inertia",
+                "presliding_mode", "presliding_step", "presliding_reference_speed", "presliding_angle_pending"
             ]
         );
     }

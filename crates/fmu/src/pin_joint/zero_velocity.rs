@@ -18,6 +18,7 @@ use crate::declare::declare;
 use crate::table::{Row, Rule};
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use fmi_layer::fmi2::variables::{Causality, EnumType, Kind};
+use pinjoint::zero_velocity::modes::{self, Mode};
 use pinjoint::zero_velocity::presliding::{self, Presliding};
 use pinjoint::zero_velocity::{band, ZeroVelocityModel};
 
@@ -38,7 +39,8 @@ pub struct ZeroVelocitySettings {
     pub code: f64,
     /// `zero_velocity.speed_band` ω_b (rad/s).
     pub band: f64,
-    /// `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time`.
+    /// `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time`,
+    /// `zero_velocity.host_inertia` (its `step` is 0: the model sets the host's step per evaluation).
     pub law: Presliding,
 }
 
@@ -77,9 +79,28 @@ pub struct Friction {
     pub rate: f64,
 }
 
-/// The presliding outputs at the held torque `tau` (N·m), ω and the sliding torque `bound`.
-pub fn presliding_friction(law: &Presliding, tau: f64, omega: f64, bound: f64) -> Friction {
-    Friction { torque: law.torque(tau, omega, bound), power_loss: law.dissipation(tau, omega, bound), held: tau, rate: law.rate(tau, omega, bound) }
+/// The presliding outputs at the held torque `tau` (N·m), ω and the sliding torque `bound`, in
+/// the Model Exchange `mode` (always stick under Co-Simulation; [`modes`]).
+pub fn presliding_friction(law: &Presliding, mode: Mode, tau: f64, omega: f64, bound: f64) -> Friction {
+    Friction {
+        torque: modes::torque(law, mode, tau, omega, bound),
+        power_loss: modes::dissipation(law, mode, tau, omega, bound),
+        held: tau,
+        rate: modes::rate(law, mode, tau, omega, bound),
+    }
+}
+
+/// The `zero_velocity.host_inertia` parameter row at value reference `vr`, state slot `slot`.
+pub fn host_inertia_row<S: 'static>(vr: u32, slot: usize, at: fn(&S) -> &ZeroVelocitySettings, at_mut: fn(&mut S) -> &mut ZeroVelocitySettings) -> Row<S> {
+    let mut v = declare(presliding::HOST_INERTIA_NAME, vr, Kind::Real, Causality::Parameter, Some("kg.m2"), None,
+        "Inertia J of the host's body on the pin (kg.m2), 0 = not given (the default). When given, the presliding damping is c = 2 zeta sqrt(k J), \
+         zeta = 0.7 (near critical: a heavy body settles within a few presliding periods, a resonant dither below breakaway does not walk) instead of \
+         zero_velocity.damping_time k, capped under Co-Simulation for an explicit host at the last communication step h: \
+         c <= 0.9 (J/h) min(1, 2 - h^2 k/J); in [0, 1e9]");
+    v.start = Some(0.0);
+    v.min = Some(0.0);
+    v.max = Some(presliding::MAX_HOST_INERTIA);
+    Row::new(v, move |s| at(s).law.host_inertia, move |s, x| at_mut(s).law.host_inertia = x, Rule::Any).at_slot(slot)
 }
 
 /// The band outputs: `sliding` = T(P, |ω|), `edge` = T(P, ω_b) (evaluated only inside the band).

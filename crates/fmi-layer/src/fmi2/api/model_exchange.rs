@@ -2,9 +2,10 @@
 //! `ModelInfo::model_exchange`: the host's integrator owns the model's continuous states
 //! (`ModelInfo::continuous_states`, possibly none) and sets them with
 //! `fmi2SetContinuousStates`; the outputs and state derivatives are recomputed from states,
-//! inputs and parameters on the next getter. There are no event indicators (nz = 0). Event
-//! mode has nothing to iterate: `fmi2NewDiscreteStates` reports no discrete-state update, no
-//! change of the continuous states or their nominals, no next time event. The functions are
+//! inputs and parameters on the next getter. There are no event indicators (nz = 0); a model
+//! may ask for step events at `fmi2CompletedIntegratorStep` and update its discrete states
+//! (and reinitialize its continuous states) in `fmi2NewDiscreteStates`, which never asks for
+//! another iteration, a change of nominals or a time event. The functions are
 //! refused on a Co-Simulation instance (and their masks keep them out of Co-Simulation states).
 //!
 //! The functions with an array of continuous states or event indicators are the same in
@@ -44,8 +45,10 @@ guarded! {
     fn fmi2EnterEventMode(c: Fmi2Component) -> Fmi2StatusC: ENTER_EVENT_MODE => Instance::enter_event_mode;
 
     /// `fmi2NewDiscreteStates` (FMI 2.0 §3.2.2): the event iteration. Checks the outputs at
-    /// the current inputs (a model failure is `fmi2Error`), then writes an `fmi2EventInfo` with
-    /// every flag false and no next time event: nothing discrete to update.
+    /// the current inputs (a model failure is `fmi2Error`), lets the model update its discrete
+    /// states ([`Instance::update_discrete_states`]), then writes an `fmi2EventInfo`:
+    /// `valuesOfContinuousStatesChanged` as the model says, every other flag false, no next
+    /// time event.
     ///
     /// # Safety
     /// `eventInfo` is NULL or points to a writable `fmi2EventInfo`.
@@ -54,12 +57,12 @@ guarded! {
         if eventInfo.is_null() {
             return Err(CallError::Null("eventInfo"));
         }
-        inst.refresh_outputs()?;
+        let changed = inst.update_discrete_states()?;
         let none = Fmi2EventInfo {
             new_discrete_states_needed: FMI2_FALSE,
             terminate_simulation: FMI2_FALSE,
             nominals_of_continuous_states_changed: FMI2_FALSE,
-            values_of_continuous_states_changed: FMI2_FALSE,
+            values_of_continuous_states_changed: if changed { FMI2_TRUE } else { FMI2_FALSE },
             next_event_time_defined: FMI2_FALSE,
             next_event_time: 0.0,
         };
@@ -72,8 +75,9 @@ guarded! {
     fn fmi2EnterContinuousTimeMode(c: Fmi2Component) -> Fmi2StatusC: ENTER_CONTINUOUS_TIME_MODE => Instance::enter_continuous_time_mode;
 
     /// `fmi2CompletedIntegratorStep` (FMI 2.0 §3.2.2): checks the outputs at the current
-    /// inputs (a model failure is `fmi2Error`); never asks for an event or termination (both
-    /// flags `fmi2False`). `fmi2Error` if either pointer is NULL.
+    /// inputs (a model failure is `fmi2Error`); `enterEventMode` is the model's step event
+    /// ([`Instance::completed_integrator_step`]), `terminateSimulation` `fmi2False`.
+    /// `fmi2Error` if either pointer is NULL.
     ///
     /// # Safety
     /// `enterEventMode` and `terminateSimulation` are writable.
@@ -87,10 +91,10 @@ guarded! {
         if enterEventMode.is_null() || terminateSimulation.is_null() {
             return Err(CallError::Null("enterEventMode or terminateSimulation"));
         }
-        inst.refresh_outputs()?;
+        let due = inst.completed_integrator_step()?;
         // SAFETY: non-NULL and writable per the contract.
         unsafe {
-            *enterEventMode = FMI2_FALSE;
+            *enterEventMode = if due { FMI2_TRUE } else { FMI2_FALSE };
             *terminateSimulation = FMI2_FALSE;
         }
         Ok(Status::Ok)
