@@ -228,8 +228,8 @@ mod tests {
         let cold = arrhenius(200.0, 3000.0, 219.15, 293.15);
         assert!((cold / 200.0 - (3000.0f64 * (1.0 / 219.15 - 1.0 / 293.15)).exp()).abs() < 1e-12);
         let mut prev = f64::INFINITY;
-        for i in 0..100 {
-            let t = 218.15 + i as f64 * 1.75;
+        for i in 0..100u32 {
+            let t = 218.15 + f64::from(i) * 1.75;
             let v = arrhenius(200.0, 3000.0, t, 293.15);
             assert!(v < prev);
             prev = v;
