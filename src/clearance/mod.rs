@@ -205,6 +205,27 @@ mod tests {
         assert!((tiny / expect - 1.0).abs() < 1e-3);
     }
 
+    /// In full film the Newtonian clearance torque over the whole clearance (θ_c = 0) plus
+    /// the journal's Poiseuille torque is the journal's friction torque f W R of Raimondi &
+    /// Boyd's friction variable, at the eccentricity the Sommerfeld number gives (the
+    /// paper's pin: R = 28 mm, c = 25 µm, B = 59.4 mm).
+    #[test]
+    fn full_film_torque_is_the_journal_friction() {
+        let (r, c, b) = (0.028, 25e-6, 0.0594);
+        let table = crate::journal::JournalTable::shared(b / (2.0 * r)).unwrap();
+        let oil = GreaseRheology::newtonian(0.0125);
+        for (load, omega) in [(200.0, 50.0), (2000.0, 20.0), (20e3, 5.0)] {
+            let p = load / (2.0 * r * b);
+            let s = 0.0125 * omega / (2.0 * PI) / p * (r / c) * (r / c);
+            let (eps, _) = table.eccentricity(s.ln());
+            let torque = clearance_torque(&oil, omega * r, r, b, c, eps, 0.0) + table.poiseuille_torque(eps, c, load);
+            let expect = table.friction_variable(eps) * c / r * load * r;
+            assert!((torque / expect - 1.0).abs() < 1e-9, "W {load} ω {omega}: {torque} vs {expect}");
+            // Petroff: a lower bound.
+            assert!(torque > 2.0 * PI * 0.0125 * omega * r * r * r * b / c);
+        }
+    }
+
     proptest! {
         /// Jensen (x ↦ x^−n convex, n > 0): over the arc, the mean of h^−n is at least the
         /// mean gap's h̄^−n, h̄/c = 1 + 2ε sin θ_c/(2π − 2θ_c); at θ_c = 0 that is Petroff's

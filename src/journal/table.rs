@@ -195,6 +195,14 @@ impl JournalTable {
         self.attitude_of_logit.eval(y).0
     }
 
+    /// The pressure-flow (Poiseuille) torque on the journal, (c ε/2) W sin φ(ε) (N·m), at
+    /// eccentricity ratio `eps`, radial clearance `clearance` c (m) and load `load` W (N):
+    /// the part of the journal's friction the Couette shear of the clearance does not
+    /// hold (∫(h/2) ∂p/∂x dA by parts; Raimondi & Boyd's friction variable includes it).
+    pub fn poiseuille_torque(&self, eps: f64, clearance: f64, load: f64) -> f64 {
+        0.5 * clearance * eps * load * self.attitude_angle(eps).sin()
+    }
+
     /// The friction variable (R/c)·f at eccentricity ratio `eps` ∈ (0, 1):
     /// 2π² S/√(1 − ε²) + ε sin φ/2 (the journal's friction: Couette over the whole
     /// clearance plus the pressure-flow term), as Raimondi & Boyd tabulate it.
