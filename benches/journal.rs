@@ -14,6 +14,7 @@ fn journal(c: &mut Criterion) {
     g.bench_function("table_build", |b| b.iter(|| JournalTable::build(black_box(59.4 / 56.0)).unwrap()));
     let t = JournalTable::shared(59.4 / 56.0).unwrap();
     g.bench_function("eccentricity", |b| b.iter(|| t.eccentricity(black_box(-2.3))));
+    g.bench_function("power_law_table_build", |b| b.iter(|| pinjoint::clearance::PowerLawTable::build(black_box(0.4)).unwrap()));
     g.finish();
 
     let (r, bl, cl) = (0.028, 0.0594, 25e-6);
@@ -23,6 +24,10 @@ fn journal(c: &mut Criterion) {
     g.bench_function("newtonian", |b| b.iter(|| clearance_torque(&oil, black_box(0.05), r, bl, cl, black_box(0.98), black_box(0.2))));
     g.bench_function("grease_theta_c_0", |b| b.iter(|| clearance_torque(&grease, black_box(0.05), r, bl, cl, black_box(0.98), black_box(0.0))));
     g.bench_function("grease_theta_c_0.2", |b| b.iter(|| clearance_torque(&grease, black_box(0.05), r, bl, cl, black_box(0.98), black_box(0.2))));
+    let table = pinjoint::clearance::PowerLawTable::shared(grease.flow_index).unwrap();
+    let geo = pinjoint::clearance::ClearanceGeometry { radius: r, length: bl, clearance: cl };
+    g.bench_function("grease_tabulated_theta_c_0.2", |b| b.iter(|| pinjoint::clearance::clearance_torque_tabulated(&table, &grease, &geo, black_box(0.05), black_box(0.98), black_box(0.2))));
+    g.bench_function("power_law_table_only", |b| b.iter(|| table.integral(black_box(0.98), black_box(0.2))));
     g.bench_function("power_law_integral_only", |b| b.iter(|| pinjoint::clearance::power_law_integral(black_box(0.98), black_box(0.2), black_box(0.4))));
     g.bench_function("newtonian_integral_only", |b| b.iter(|| pinjoint::clearance::newtonian_integral(black_box(0.98), black_box(0.2))));
     g.finish();

@@ -31,10 +31,12 @@
 //! (2π − 2θ_c)), and J is not monotone in ε (the arc's far side widens as ε grows).
 
 pub mod integrals;
+pub mod table;
 pub mod torque;
 
 pub use integrals::{MAX_ECCENTRICITY, newtonian_integral, power_law_integral};
-pub use torque::{ClearanceTorque, clearance_torque, clearance_torque_parts, yield_torque};
+pub use table::{FlowIndexError, PowerLawTable};
+pub use torque::{ClearanceGeometry, ClearanceTorque, clearance_torque, clearance_torque_parts, clearance_torque_tabulated, yield_torque};
 
 #[cfg(test)]
 mod tests {
@@ -203,6 +205,24 @@ mod tests {
         // Continuous at U → 0⁺ (the rate parts vanish like U^n).
         let tiny = clearance_torque(&g, 1e-12, 0.028, 0.0594, 25e-6, 0.9, 0.2);
         assert!((tiny / expect - 1.0).abs() < 1e-3);
+    }
+
+    /// The tabulated torque equals the rule's to the rule's accuracy, part by part, and is
+    /// the rule itself when the table's flow index differs.
+    #[test]
+    fn tabulated_torque_matches_the_rule() {
+        let g = GreaseRheology { yield_stress: 300.0, consistency: 20.0, flow_index: 0.4, base_viscosity: 0.0125 };
+        let geo = ClearanceGeometry { radius: 0.028, length: 0.0594, clearance: 25e-6 };
+        let table = super::PowerLawTable::shared(0.4).unwrap();
+        for (u, eps, t) in [(0.05, 0.9, 0.1), (0.1, 0.99, 0.0), (1e-3, 0.5, 0.5), (0.0, 0.9, 0.2)] {
+            let a = clearance_torque_tabulated(&table, &g, &geo, u, eps, t);
+            let b = clearance_torque_parts(&g, u, 0.028, 0.0594, 25e-6, eps, t);
+            assert_eq!(a.yield_part, b.yield_part);
+            assert_eq!(a.newtonian_part, b.newtonian_part);
+            assert!((a.power_law_part - b.power_law_part).abs() <= 1e-4 * b.power_law_part, "{a:?} {b:?}");
+        }
+        let other = GreaseRheology { flow_index: 0.5, ..g };
+        assert_eq!(clearance_torque_tabulated(&table, &other, &geo, 0.05, 0.9, 0.1), clearance_torque_parts(&other, 0.05, 0.028, 0.0594, 25e-6, 0.9, 0.1));
     }
 
     /// In full film the Newtonian clearance torque over the whole clearance (θ_c = 0) plus

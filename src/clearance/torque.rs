@@ -3,6 +3,7 @@
 use std::f64::consts::PI;
 
 use super::integrals::{newtonian_integral, power_law_integral};
+use super::table::PowerLawTable;
 use crate::grease::GreaseRheology;
 
 /// The clearance torque's three parts (N·m), all ≥ 0.
@@ -47,6 +48,38 @@ pub fn clearance_torque_parts(rheology: &GreaseRheology, sliding_speed: f64, rad
         0.0
     };
     ClearanceTorque { yield_part, power_law_part, newtonian_part }
+}
+
+/// The clearance's geometry: pin radius R, bush length B and radial clearance c (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClearanceGeometry {
+    /// R, pin radius (m).
+    pub radius: f64,
+    /// B, bush length (m).
+    pub length: f64,
+    /// c, radial clearance (m).
+    pub clearance: f64,
+}
+
+/// As [`clearance_torque_parts`] (same parts, same clamps), with Jₙ from `table`
+/// ([`PowerLawTable`]: the model's hot path, a lookup instead of the 12-node rule, and more
+/// accurate near ε = 1) when the table's flow index is the rheology's; otherwise exactly
+/// [`clearance_torque_parts`].
+pub fn clearance_torque_tabulated(table: &PowerLawTable, rheology: &GreaseRheology, geometry: &ClearanceGeometry, sliding_speed: f64, eps_g: f64, theta_c: f64) -> ClearanceTorque {
+    let ClearanceGeometry { radius, length, clearance } = *geometry;
+    let n = rheology.flow_index;
+    if n != table.flow_index() || rheology.consistency <= 0.0 || sliding_speed == 0.0 {
+        return clearance_torque_parts(rheology, sliding_speed, radius, length, clearance, eps_g, theta_c);
+    }
+    let u = sliding_speed.abs();
+    let r2b = radius * radius * length;
+    let t = theta_c.clamp(0.0, PI);
+    let rate = u / clearance;
+    ClearanceTorque {
+        yield_part: rheology.yield_stress * (2.0 * PI - 2.0 * t) * r2b,
+        power_law_part: rheology.consistency * rate.powf(n) * table.integral(eps_g, t) * r2b,
+        newtonian_part: rheology.base_viscosity * rate * newtonian_integral(eps_g, t) * r2b,
+    }
 }
 
 /// The clearance torque (N·m): the sum of [`clearance_torque_parts`].
