@@ -68,7 +68,7 @@ pub struct ClearanceGeometry {
 pub fn clearance_torque_tabulated(table: &PowerLawTable, rheology: &GreaseRheology, geometry: &ClearanceGeometry, sliding_speed: f64, eps_g: f64, theta_c: f64) -> ClearanceTorque {
     let ClearanceGeometry { radius, length, clearance } = *geometry;
     let n = rheology.flow_index;
-    if n != table.flow_index() || rheology.consistency <= 0.0 || sliding_speed == 0.0 {
+    if n != table.flow_index() || n == 1.0 || rheology.consistency <= 0.0 || sliding_speed == 0.0 {
         return clearance_torque_parts(rheology, sliding_speed, radius, length, clearance, eps_g, theta_c);
     }
     let u = sliding_speed.abs();
