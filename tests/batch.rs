@@ -420,3 +420,63 @@ fn a_level_that_cannot_be_built_names_the_joint() {
     assert_eq!(b.models_held(), 0);
     assert_eq!(b.state(0), (0.0, 0.0));
 }
+
+/// A bad host step or host inertia names the argument and the joint, and changes nothing.
+#[test]
+fn bad_steps_and_inertias_name_the_joint() {
+    let n = 3;
+    let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings::default()).unwrap();
+    let (a, w, l) = (vec![1e-4; n], vec![0.1; n], vec![2e4; n]);
+    let inputs = Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None };
+    let e = b.commit_step(&inputs, &[1e-3, -1e-3, 1e-3]).unwrap_err();
+    assert_eq!(e.to_string(), "step = -0.001 s at index 1 is invalid: it must be a finite number >= 0");
+    let e = b.step_with(&inputs, &[1e-3, 1e-3, f64::NAN], &mut [0.0; 3]).unwrap_err();
+    assert!(matches!(e, BatchError::Step { index: 2, .. }), "{e}");
+    let e = b.commit_step(&inputs, &[1e-3; 2]).unwrap_err();
+    assert_eq!(e, BatchError::Shape { argument: "step", expected: 3, got: 2 });
+    assert_eq!(b.state(0), (0.0, 0.0));
+    let e = b.set_host_inertia(Some(&[10.0, -1.0, 10.0])).unwrap_err();
+    assert_eq!(e.to_string(), "host_inertia = -1 kg.m2 at index 1 is invalid: it must be a number in [0, 1e9] kg.m2 (0: not given)");
+    assert!(matches!(b.set_host_inertia(Some(&[10.0, 10.0, f64::INFINITY])), Err(BatchError::HostInertia { index: 2, .. })));
+    assert!(b.host_inertia().is_none() && b.joint_law(0).host_inertia == 0.0);
+}
+
+/// Independent of the scalar object: a host that wraps its angle into (−π, π] (or shifts it
+/// by turns) gets the torques of a host that reports the continuous angle, when it gives its
+/// steps; and the host inertia's damping is capped at the step given (a lighter body at a
+/// longer step: less damping torque).
+#[test]
+fn a_wrapped_angle_reads_as_the_continuous_one() {
+    let n = 4;
+    let h = 1e-3;
+    let new = || {
+        let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings::default()).unwrap();
+        b.set_host_inertia(Some(&[0.0, 1.0, 30.0, 1e3])).unwrap();
+        b
+    };
+    let (mut cont, mut wrapped) = (new(), new());
+    let (mut oc, mut ow) = (vec![0.0; n], vec![0.0; n]);
+    let l = vec![2e4; n];
+    let mut max_diff: f64 = 0.0;
+    for k in 0..4000 {
+        let t = f64::from(k) * h;
+        // Oscillating about π: small presliding strokes and slides through ±π.
+        let w: Vec<f64> = (0..n).map(|i| 0.5 * (1.0 + i as f64) * (7.0 * t).cos()).collect();
+        let x: Vec<f64> = (0..n).map(|i| 3.1 + 0.5 * (1.0 + i as f64) / 7.0 * (7.0 * t).sin()).collect();
+        let xw: Vec<f64> = x.iter().enumerate().map(|(i, &x)| report(x, if i % 2 == 0 { 1 } else { 2 }, -(i as i32))).collect();
+        let steps = vec![h; n];
+        cont.step_with(&Inputs { angle: &x, angular_velocity: &w, load: &l, temperature: None }, &steps, &mut oc).unwrap();
+        wrapped.step_with(&Inputs { angle: &xw, angular_velocity: &w, load: &l, temperature: None }, &steps, &mut ow).unwrap();
+        for i in 0..n {
+            max_diff = max_diff.max((oc[i] - ow[i]).abs());
+        }
+    }
+    // The increments differ only by the rounding of x ± 2π: far below the torque's scale.
+    assert!(max_diff < 1e-6, "{max_diff}");
+    assert!(cont.joint_law(1).step == h && cont.joint_law(3).host_inertia == 1e3);
+    // The damping cap: J = 1 kg·m² at h = 10 ms is capped (0.9·J/h·min(1, 2 − h²k/J)).
+    let law = *cont.joint_law(1);
+    let k = 100.0 / law.angle;
+    let capped = law.at_step(1e-2).damping(k);
+    assert!(capped < law.at_step(0.0).damping(k) && capped <= 0.9 * 1.0 / 1e-2, "{capped}");
+}
