@@ -91,7 +91,8 @@ def test_levels_give_the_vectorised_joints_torque(fidelity):
     assert np.array_equal(bits(b.sliding_torque(w, p)), bits(joint.evaluate(p, w)["torque"]))
     assert b.models_held == 1
     # Steady sliding (the state at the bound) gives -sign(omega) T.
-    big = np.where(w >= 0, 1.0, -1.0) * 10.0
+    # (0.5 rad: far beyond the presliding angle, within pi: not read modulo 2*pi as a reversal.)
+    big = np.where(w >= 0, 1.0, -1.0) * 0.5
     b.commit(big, w, p)
     t = b.torque(big, w, p)
     moving = w != 0
