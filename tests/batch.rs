@@ -3,6 +3,9 @@
 //! against n independent `PreslidingJoint`s whose sliding torque is computed here the way the
 //! scalar front ends compute it (the Python `Presliding` object's cold full solve; the
 //! level's answer inside the envelope otherwise, as the vectorised `Joint.evaluate`).
+//! With the host's conventions (issue 29): per-joint host inertia, commits with the host's step
+//! (the next angle read modulo 2π against ω·h, the damping capped at h), angles wrapped into
+//! (−π, π] or shifted by whole turns, and joints waiting for their first angle.
 
 use pinjoint::batch::{BatchError, BatchParams, Inputs, PreslidingBatch, Settings};
 use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
@@ -55,6 +58,8 @@ struct Step {
     omega: Vec<f64>,
     load: Vec<f64>,
     temperature: Option<Vec<f64>>,
+    /// The host's step per joint (s) given to the commit; None: `commit` without a step.
+    step: Option<Vec<f64>>,
     /// 0: torque then commit at the same inputs; 1: step; 2: torque, then commit at other loads.
     mode: u8,
 }
@@ -68,12 +73,33 @@ fn load_strategy() -> impl Strategy<Value = f64> {
 }
 
 fn scene(n: usize, steps: usize, temps: bool) -> impl Strategy<Value = Vec<Step>> {
-    scene_in(n, steps, temps, 240.0)
+    scene_in(n, steps, temps, 240.0, false)
+}
+
+/// A host step (s): 0 (not known) or 0.1 to 20 ms.
+fn step_strategy() -> impl Strategy<Value = f64> {
+    prop_oneof![1 => Just(0.0), 6 => 1e-4..2e-2f64]
+}
+
+/// The angle a host reports for the true angle `x` (rad): as is (0), wrapped into (−π, π]
+/// (1), or shifted by `turns` whole turns (2).
+fn report(x: f64, how: u8, turns: i32) -> f64 {
+    use std::f64::consts::{PI, TAU};
+    match how {
+        0 => x,
+        1 => {
+            let w = (x + PI).rem_euclid(TAU) - PI;
+            if w == -PI { PI } else { w }
+        }
+        _ => x + f64::from(turns) * TAU,
+    }
 }
 
 /// Temperatures from `cold` (K) to 330 K (a table is built over the envelope's ghost nodes,
 /// where a cold, viscous lubricant's film passes the clearance: the level cannot be built).
-fn scene_in(n: usize, steps: usize, temps: bool, cold: f64) -> impl Strategy<Value = Vec<Step>> {
+/// With `wrap`, the true angles start anywhere in ±10 rad (some near ±π) and the host reports
+/// each one as is, wrapped into (−π, π] or shifted by whole turns, at random per joint and step.
+fn scene_in(n: usize, steps: usize, temps: bool, cold: f64, wrap: bool) -> impl Strategy<Value = Vec<Step>> {
     let step = (
         prop::collection::vec(-2e-3..2e-3f64, n),
         prop::collection::vec(omega_strategy(), n),
@@ -82,12 +108,14 @@ fn scene_in(n: usize, steps: usize, temps: bool, cold: f64) -> impl Strategy<Val
         0u8..3,
         any::<bool>(),
         any::<bool>(),
+        (prop::option::of(prop::collection::vec(step_strategy(), n)), prop::collection::vec((0u8..3, -3i32..4), n)),
     );
-    prop::collection::vec(step, 1..steps).prop_map(move |v| {
-        let mut angle = vec![0.0; n];
+    let start = prop::collection::vec(prop_oneof![Just(std::f64::consts::PI - 1e-3), Just(-std::f64::consts::PI + 5e-4), -10.0..10.0f64], n);
+    (prop::collection::vec(step, 1..steps), start).prop_map(move |(v, start)| {
+        let mut angle = if wrap { start } else { vec![0.0; n] };
         let mut last: Option<(Vec<f64>, Vec<f64>)> = None;
         v.into_iter()
-            .map(|(da, omega, load, t, mode, use_t, hold)| {
+            .map(|(da, omega, load, t, mode, use_t, hold, (step, how))| {
                 for (a, d) in angle.iter_mut().zip(&da) {
                     *a += d;
                 }
@@ -98,7 +126,8 @@ fn scene_in(n: usize, steps: usize, temps: bool, cold: f64) -> impl Strategy<Val
                     _ => (omega, load),
                 };
                 last = Some((omega.clone(), load.clone()));
-                Step { angle: angle.clone(), omega, load, temperature: (temps && use_t).then_some(t), mode }
+                let reported = if wrap { angle.iter().zip(&how).map(|(&x, &(h, k))| report(x, h, k)).collect() } else { angle.clone() };
+                Step { angle: reported, omega, load, temperature: (temps && use_t).then_some(t), step, mode }
             })
             .collect()
     })
@@ -108,15 +137,44 @@ fn settings(fidelity: Fidelity) -> Settings {
     Settings { fidelity, tolerance: 1e-3, envelope: Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap() }
 }
 
+/// The host's side of a scene: per-joint host inertia (kg·m², 0 = not given) and whether the
+/// joints start waiting for their first angle.
+#[derive(Debug, Clone, Default)]
+struct Host {
+    inertia: Option<Vec<f64>>,
+    unreferenced: bool,
+}
+
+fn host_strategy(n: usize) -> impl Strategy<Value = Host> {
+    (prop::option::of(prop::collection::vec(prop_oneof![1 => Just(0.0), 4 => 0.05..1e4f64], n)), any::<bool>())
+        .prop_map(|(inertia, unreferenced)| Host { inertia, unreferenced })
+}
+
 /// Run `scene` on the batch and on the scalar joints; every output and state bit for bit,
 /// every error at the same index.
 fn check(params: &[Params], per_joint: bool, fidelity: Fidelity, scene: &[Step]) -> Result<(), TestCaseError> {
+    check_host(params, per_joint, fidelity, scene, &Host::default())
+}
+
+/// [`check`] with the host's conventions: each scalar joint is built as the scalar front ends
+/// build it (`with_host_inertia`, `PreslidingJoint::unreferenced`) and committed with
+/// `commit_step` where the scene gives a step.
+fn check_host(params: &[Params], per_joint: bool, fidelity: Fidelity, scene: &[Step], host: &Host) -> Result<(), TestCaseError> {
     let n = scene[0].angle.len();
     let law = Presliding::new(2e-3, 0.9, 0.02).unwrap();
     let bp = if per_joint { BatchParams::PerJoint(params.to_vec()) } else { BatchParams::Shared(params[0]) };
     let mut batch = PreslidingBatch::new(n, bp, law, settings(fidelity)).unwrap();
+    if host.unreferenced {
+        batch.set_last_steps(&vec![0.0; n], &vec![0.0; n], &vec![true; n]).unwrap();
+    }
+    batch.set_host_inertia(host.inertia.as_deref()).unwrap();
     let mut scalar = Scalar::new(settings(fidelity));
-    let mut states = vec![PreslidingJoint::new(law, 0.0); n];
+    let mut states: Vec<PreslidingJoint> = (0..n)
+        .map(|i| {
+            let l = law.with_host_inertia(host.inertia.as_ref().map_or(0.0, |v| v[i])).unwrap();
+            if host.unreferenced { PreslidingJoint::unreferenced(l) } else { PreslidingJoint::new(l, 0.0) }
+        })
+        .collect();
     let p = |i: usize| if per_joint { params[i] } else { params[0] };
     let mut out = vec![0.0; n];
     for s in scene {
@@ -135,7 +193,11 @@ fn check(params: &[Params], per_joint: bool, fidelity: Fidelity, scene: &[Step])
             }
         }
         let before: Vec<(f64, f64)> = (0..n).map(|i| batch.state(i)).collect();
-        let res = if s.mode == 1 { batch.step(&inputs, &mut out) } else { batch.torque(&inputs, &mut out) };
+        let res = match (s.mode, &s.step) {
+            (1, Some(h)) => batch.step_with(&inputs, h, &mut out),
+            (1, None) => batch.step(&inputs, &mut out),
+            _ => batch.torque(&inputs, &mut out),
+        };
         if let Some((i, e)) = first_err {
             prop_assert_eq!(res, Err(BatchError::Model { index: i, source: e }));
             prop_assert_eq!(&before, &(0..n).map(|i| batch.state(i)).collect::<Vec<_>>());
@@ -160,7 +222,10 @@ fn check(params: &[Params], per_joint: bool, fidelity: Fidelity, scene: &[Step])
                     }
                 }
             }
-            let r = batch.commit(&ci);
+            let r = match &s.step {
+                Some(h) => batch.commit_step(&ci, h),
+                None => batch.commit(&ci),
+            };
             if let Some((i, e)) = cerr {
                 prop_assert_eq!(r, Err(BatchError::Model { index: i, source: e }));
                 continue;
@@ -168,11 +233,19 @@ fn check(params: &[Params], per_joint: bool, fidelity: Fidelity, scene: &[Step])
             prop_assert!(r.is_ok());
             bounds = cb;
         }
+        let (mut h, mut w, mut u) = (vec![0.0; n], vec![0.0; n], vec![false; n]);
+        batch.last_steps(&mut h, &mut w, &mut u).unwrap();
         for i in 0..n {
-            states[i].commit(s.angle[i], bounds[i]);
+            match &s.step {
+                Some(step) => states[i].commit_step(s.angle[i], s.omega[i], bounds[i], step[i]),
+                None => states[i].commit(s.angle[i], bounds[i]),
+            }
             let (tau, a) = batch.state(i);
             prop_assert_eq!(tau.to_bits(), states[i].presliding_torque().to_bits(), "joint {} state", i);
             prop_assert_eq!(a.to_bits(), states[i].reference_angle().to_bits());
+            let (sh, sw) = states[i].last_step();
+            prop_assert_eq!((h[i].to_bits(), w[i].to_bits(), u[i]), (sh.to_bits(), sw.to_bits(), states[i].is_unreferenced()));
+            prop_assert_eq!(batch.joint_law(i), states[i].law());
         }
     }
     Ok(())
@@ -211,8 +284,24 @@ proptest! {
     }
 
     #[test]
-    fn boundary_per_joint_params(s in scene_in(5, 20, true, 283.0), p in prop::collection::vec(mild_params(), 5)) {
+    fn boundary_per_joint_params(s in scene_in(5, 20, true, 283.0, false), p in prop::collection::vec(mild_params(), 5)) {
         check(&p, true, Fidelity::Boundary, &s)?;
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// Host inertia, the host's steps, wrapped angles and a first angle pending: n scalar
+    /// joints driven the same way, bit for bit.
+    #[test]
+    fn host_conventions_full(s in scene_in(6, 25, true, 240.0, true), p in prop::collection::vec(mu_params(), 6), h in host_strategy(6), pj in any::<bool>()) {
+        check_host(&p, pj, Fidelity::Full, &s, &h)?;
+    }
+
+    #[test]
+    fn host_conventions_boundary(s in scene_in(4, 15, true, 283.0, true), p in prop::collection::vec(mild_params(), 4), h in host_strategy(4)) {
+        check_host(&p, true, Fidelity::Boundary, &s, &h)?;
     }
 }
 
@@ -226,7 +315,7 @@ proptest! {
     }
 
     #[test]
-    fn table_and_auto_with_temperatures(s in scene_in(3, 6, true, 283.0), p in prop::collection::vec(mild_params(), 3), auto in any::<bool>()) {
+    fn table_and_auto_with_temperatures(s in scene_in(3, 6, true, 283.0, false), p in prop::collection::vec(mild_params(), 3), auto in any::<bool>()) {
         check(&p, true, if auto { Fidelity::Auto } else { Fidelity::Table }, &s)?;
     }
 }
@@ -238,6 +327,11 @@ proptest! {
     #[test]
     fn many_joints_on_every_thread(s in scene(1500, 4, true), p in mu_params()) {
         check(&[p], false, Fidelity::Full, &s)?;
+    }
+
+    #[test]
+    fn many_joints_with_host_conventions(s in scene_in(1200, 4, true, 240.0, true), p in mu_params(), h in host_strategy(1200)) {
+        check_host(&[p], false, Fidelity::Full, &s, &h)?;
     }
 }
 
@@ -325,4 +419,64 @@ fn a_level_that_cannot_be_built_names_the_joint() {
     assert!(e.to_string().starts_with("fidelity level for the joint at index 1: "), "{e}");
     assert_eq!(b.models_held(), 0);
     assert_eq!(b.state(0), (0.0, 0.0));
+}
+
+/// A bad host step or host inertia names the argument and the joint, and changes nothing.
+#[test]
+fn bad_steps_and_inertias_name_the_joint() {
+    let n = 3;
+    let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings::default()).unwrap();
+    let (a, w, l) = (vec![1e-4; n], vec![0.1; n], vec![2e4; n]);
+    let inputs = Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None };
+    let e = b.commit_step(&inputs, &[1e-3, -1e-3, 1e-3]).unwrap_err();
+    assert_eq!(e.to_string(), "step = -0.001 s at index 1 is invalid: it must be a finite number >= 0");
+    let e = b.step_with(&inputs, &[1e-3, 1e-3, f64::NAN], &mut [0.0; 3]).unwrap_err();
+    assert!(matches!(e, BatchError::Step { index: 2, .. }), "{e}");
+    let e = b.commit_step(&inputs, &[1e-3; 2]).unwrap_err();
+    assert_eq!(e, BatchError::Shape { argument: "step", expected: 3, got: 2 });
+    assert_eq!(b.state(0), (0.0, 0.0));
+    let e = b.set_host_inertia(Some(&[10.0, -1.0, 10.0])).unwrap_err();
+    assert_eq!(e.to_string(), "host_inertia = -1 kg.m2 at index 1 is invalid: it must be a number in [0, 1e9] kg.m2 (0: not given)");
+    assert!(matches!(b.set_host_inertia(Some(&[10.0, 10.0, f64::INFINITY])), Err(BatchError::HostInertia { index: 2, .. })));
+    assert!(b.host_inertia().is_none() && b.joint_law(0).host_inertia == 0.0);
+}
+
+/// Independent of the scalar object: a host that wraps its angle into (−π, π] (or shifts it
+/// by turns) gets the torques of a host that reports the continuous angle, when it gives its
+/// steps; and the host inertia's damping is capped at the step given (a lighter body at a
+/// longer step: less damping torque).
+#[test]
+fn a_wrapped_angle_reads_as_the_continuous_one() {
+    let n = 4;
+    let h = 1e-3;
+    let new = || {
+        let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings::default()).unwrap();
+        b.set_host_inertia(Some(&[0.0, 1.0, 30.0, 1e3])).unwrap();
+        b
+    };
+    let (mut cont, mut wrapped) = (new(), new());
+    let (mut oc, mut ow) = (vec![0.0; n], vec![0.0; n]);
+    let l = vec![2e4; n];
+    let mut max_diff: f64 = 0.0;
+    for k in 0..4000 {
+        let t = f64::from(k) * h;
+        // Oscillating about π: small presliding strokes and slides through ±π.
+        let w: Vec<f64> = (0..n).map(|i| 0.5 * (1.0 + i as f64) * (7.0 * t).cos()).collect();
+        let x: Vec<f64> = (0..n).map(|i| 3.1 + 0.5 * (1.0 + i as f64) / 7.0 * (7.0 * t).sin()).collect();
+        let xw: Vec<f64> = x.iter().enumerate().map(|(i, &x)| report(x, if i % 2 == 0 { 1 } else { 2 }, -(i as i32))).collect();
+        let steps = vec![h; n];
+        cont.step_with(&Inputs { angle: &x, angular_velocity: &w, load: &l, temperature: None }, &steps, &mut oc).unwrap();
+        wrapped.step_with(&Inputs { angle: &xw, angular_velocity: &w, load: &l, temperature: None }, &steps, &mut ow).unwrap();
+        for i in 0..n {
+            max_diff = max_diff.max((oc[i] - ow[i]).abs());
+        }
+    }
+    // The increments differ only by the rounding of x ± 2π: far below the torque's scale.
+    assert!(max_diff < 1e-6, "{max_diff}");
+    assert!(cont.joint_law(1).step == h && cont.joint_law(3).host_inertia == 1e3);
+    // The damping cap: J = 1 kg·m² at h = 10 ms is capped (0.9·J/h·min(1, 2 − h²k/J)).
+    let law = *cont.joint_law(1);
+    let k = 100.0 / law.angle;
+    let capped = law.at_step(1e-2).damping(k);
+    assert!(capped < law.at_step(0.0).damping(k) && capped <= 0.9 * 1.0 / 1e-2, "{capped}");
 }

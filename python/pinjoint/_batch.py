@@ -35,20 +35,29 @@ class PreslidingBatch:
                 file key (e.g. ``{"friction.boundary_friction_coefficient": mu}``) applied
                 over ``params``; each joint's set is validated (an error names the joint).
     presliding_angle, elastic_limit, damping_time   the law, as ``Presliding``.
-    host_inertia  kg*m^2, a number or an array (n,): stored and pickled. TODO(issue 29):
-                passed to each joint once the scalar law has this setting; not used yet.
+    host_inertia  the host's inertia on each pin (kg*m^2, 0 = not given), a number or an
+                array (n,), as ``Presliding(host_inertia=...)``: damps each joint's
+                presliding mode near critically (zeta = 0.7), capped for an explicit host
+                at the step given to ``commit``/``step``. None: 0 for every joint.
     fidelity    "full" (the cold complete solve: equal to ``Presliding`` bit for bit),
                 "table", "boundary" or "auto" with ``tolerance`` and ``envelope`` as
                 ``Joint`` (inside the envelope the level's answer, outside the complete
                 solve: equal to ``Joint(...).evaluate``'s torque bit for bit).
-    angle       each joint's initial reference angle (rad), a number or an array (n,).
+    angle       each joint's initial reference angle (rad), a number or an array (n,);
+                None: as ``Presliding(angle=None)``, each joint takes the first angle it
+                is given as its reference (no deflection there).
 
     Calls (each input a number or an array of shape (n,), any integer or float dtype):
 
     torque(angle, angular_velocity, load[, temperature])   the friction torque (N*m) of
         every joint, shape (n,); the states are not changed.
-    commit(angle, angular_velocity, load[, temperature])   commit every state at its angle.
-    step(...)      torque, then commit at the same inputs (one solve per joint).
+    commit(angle, angular_velocity, load[, temperature][, step])   commit every state at
+        its angle; ``step`` (s, a number or an array (n,), finite >= 0; None: not known) is
+        the host's step just taken, as ``Presliding.commit(..., step=h)``: each joint's next
+        angle is read modulo 2*pi against angular_velocity*step (a host may wrap its angles
+        into (-pi, pi]), and its host-inertia damping is capped at the step.
+    step(...)      torque, then commit at the same inputs (one solve per joint), with the
+        same ``step`` argument.
     sliding_torque(angular_velocity, load[, temperature])  each joint's sliding torque
         T = mu*R*|P| (N*m); at angular_velocity 0 the breakaway torque.
 
@@ -62,8 +71,12 @@ class PreslidingBatch:
     of range are a ValueError naming the argument and the first failing index; bool,
     complex, string and object data a TypeError. Nothing is changed by a call that raises.
 
-    A PreslidingBatch pickles (settings and every joint's state; the rebuilt batch steps on
-    bit for bit), so it travels to multiprocessing and Dask workers.
+    A batch of n joints equals n ``Presliding`` objects driven the same way, bit for bit at
+    fidelity full: with host_inertia, steps, wrapped angles and angle=None.
+
+    A PreslidingBatch pickles (settings, host inertia and every joint's state: presliding
+    torque, reference angle, last step and angular velocity, pending first angle; the rebuilt
+    batch steps on bit for bit), so it travels to multiprocessing and Dask workers.
 
     >>> import numpy as np, pinjoint
     >>> b = pinjoint.PreslidingBatch(3)
@@ -127,6 +140,10 @@ class PreslidingBatch:
         self._envelope = env
         self._host_inertia = None
         self.host_inertia = host_inertia
+        if angle is None:
+            z = np.zeros(n)
+            self._native.set_full_states(z, z, z, z, np.ones(n, dtype=bool))
+            return
         a0 = self._vector("angle", "rad", angle)
         bad = np.flatnonzero(~np.isfinite(a0))
         if bad.size:
@@ -161,13 +178,20 @@ class PreslidingBatch:
         """The friction torque on every pin (N*m), shape (n,), at these inputs; the states are not changed."""
         return self._native.torque(*self._args(angle, angular_velocity, load, temperature))
 
-    def commit(self, angle: Any, angular_velocity: Any, load: Any, temperature: Any = None) -> None:
-        """Make each joint's presliding torque at its ``angle`` its state (the FMU's step when the host sets the angle)."""
-        self._native.commit(*self._args(angle, angular_velocity, load, temperature))
+    def _step(self, step: Any) -> Optional[np.ndarray]:
+        return None if step is None else self._vector("step", "s", step)
 
-    def step(self, angle: Any, angular_velocity: Any, load: Any, temperature: Any = None) -> np.ndarray:
-        """``torque`` then ``commit`` at the same inputs (one solve per joint); returns the torque (N*m), shape (n,)."""
-        return self._native.step(*self._args(angle, angular_velocity, load, temperature))
+    def commit(self, angle: Any, angular_velocity: Any, load: Any, temperature: Any = None, step: Any = None) -> None:
+        """Make each joint's presliding torque at its ``angle`` its state (the FMU's step when the host sets the angle).
+
+        ``step`` (s, a number or an array (n,)): the host's step just taken, as
+        ``Presliding.commit(..., step=h)``: the next angle is read modulo 2*pi against
+        angular_velocity*step, and the host-inertia damping is capped at it. None: not known."""
+        self._native.commit(*self._args(angle, angular_velocity, load, temperature), self._step(step))
+
+    def step(self, angle: Any, angular_velocity: Any, load: Any, temperature: Any = None, step: Any = None) -> np.ndarray:
+        """``torque`` then ``commit`` (with ``step``) at the same inputs (one solve per joint); returns the torque (N*m), shape (n,)."""
+        return self._native.step(*self._args(angle, angular_velocity, load, temperature), self._step(step))
 
     def sliding_torque(self, angular_velocity: Any, load: Any, temperature: Any = None) -> np.ndarray:
         """Each joint's sliding torque T = mu(P, |omega|)*R*|P| (N*m, >= 0), shape (n,): its
@@ -198,7 +222,7 @@ class PreslidingBatch:
 
     @property
     def host_inertia(self) -> Optional[np.ndarray]:
-        """The host inertia per joint (kg*m^2), or None. Stored, not used yet (issue 29)."""
+        """The host inertia per joint (kg*m^2, 0 = not given), or None (0 for every joint)."""
         return None if self._host_inertia is None else self._host_inertia.copy()
 
     @host_inertia.setter
@@ -216,21 +240,35 @@ class PreslidingBatch:
         """Models (a parameter set at a temperature and level) held now: joints sharing both share one."""
         return self._native.models_held
 
+    @property
+    def last_step(self) -> Tuple[np.ndarray, np.ndarray]:
+        """(the host's step of each joint's last commit in s, 0 before one or when not given;
+        the angular velocity there in rad/s): angular_velocity*step is what the next angle is
+        read against."""
+        _, _, h, w, _ = self._native.full_states
+        return h, w
+
+    @property
+    def unreferenced(self) -> np.ndarray:
+        """Whether each joint still waits for its first angle (``angle=None``), bool (n,)."""
+        return self._native.full_states[4]
+
     def __reduce__(self):
-        tau, ref = self.state
         keys, values = self._per_joint
         per_joint = {k: values[:, c].copy() for c, k in enumerate(keys)} if keys else None
         params = self._sets[0] if len(self._sets) == 1 else list(self._sets)
         return (
             _rebuild,
-            (self._n, params, self._law, self._host_inertia, self._fidelity, self._tolerance, self._envelope, per_joint, tau, ref),
+            (self._n, params, self._law, self._host_inertia, self._fidelity, self._tolerance, self._envelope, per_joint,
+             self._native.full_states),
         )
 
     def __repr__(self) -> str:
         return f"pinjoint.PreslidingBatch(n={self._n}, fidelity={self._fidelity!r}, law={self._law!r})"
 
 
-def _rebuild(n, params, law, host_inertia, fidelity, tolerance, envelope, per_joint, tau, ref) -> PreslidingBatch:
+def _rebuild(n, params, law, host_inertia, fidelity, tolerance, envelope, per_joint, states) -> PreslidingBatch:
+    """A PreslidingBatch from its pickled parts (``PreslidingBatch.__reduce__``)."""
     b = PreslidingBatch(n, params, *law, host_inertia=host_inertia, fidelity=fidelity, tolerance=tolerance, envelope=envelope, per_joint=per_joint)
-    b.set_state(tau, ref)
+    b._native.set_full_states(*states)
     return b

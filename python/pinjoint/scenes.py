@@ -13,7 +13,9 @@ Equations (phi the leg's angle from down-locked, omega = dphi/dt, positive = up)
 * gravity  T_g = -m g l sin(phi);  damper  T_d = -c1 omega - c2 omega |omega|;
   lock spring  T_s = -T_l where phi < phi_e;
 * trunnion friction  T_f = trunnion_joints x (the presliding joint's torque at phi, omega, the
-  pin load P and the temperature), from ``PreslidingBatch`` (host_inertia = J / trunnion_joints);
+  pin load P and the temperature), from ``PreslidingBatch`` (host_inertia = J / trunnion_joints,
+  each commit with the step h: the presliding damping near critical, capped for this explicit
+  host at h);
 * pin load from the leg's dynamics, the cg at l(sin phi, -cos phi):
   a_cg = l [alpha (cos phi, sin phi) + omega^2 (-sin phi, cos phi)] with alpha of the previous
   step (0 at the first: lagged one step), F = m a_cg + (0, m g), P = trunnion_load_share |F|;
@@ -139,7 +141,7 @@ def free_fall(
         fx = m * (l * (alpha * cs - w2 * sn))
         fy = m * (l * (alpha * sn + w2 * cs)) + m * g
         load = s.trunnion_load_share * np.hypot(fx, fy)
-        tf = s.trunnion_joints * batch.step(phi, omega, load, temp)
+        tf = s.trunnion_joints * batch.step(phi, omega, load, temp, step=h)
         torque = -m * g * l * sn - s.damper_linear * omega - s.damper_quadratic * omega * np.abs(omega)
         torque = torque - np.where(phi < s.lock_spring_angle, s.lock_spring_torque, 0.0) + tf
         alpha_new = torque / J

@@ -24,12 +24,17 @@ fn batch_err(e: BatchError) -> PyErr {
 /// Two float64 arrays of shape (n,).
 type ArrayPair<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
 
+/// Everything the joints hold, arrays of shape (n,): presliding torques (N·m), reference
+/// angles (rad), last steps (s), ω at the last commits (rad/s), pending first angles.
+type FullStates<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<bool>>);
+
 /// The joints of `pinjoint.PreslidingBatch` (its native half).
 #[pyclass(name = "_PreslidingBatch", module = "pinjoint._native")]
 pub struct NativePreslidingBatch {
     batch: PreslidingBatch,
-    /// Copies of one call's inputs (the caller's arrays may change while the GIL is released).
-    buf: [Vec<f64>; 4],
+    /// Copies of one call's inputs: angle, angular velocity, load, temperature, step (the
+    /// caller's arrays may change while the GIL is released).
+    buf: [Vec<f64>; 5],
 }
 
 /// Copy `src` into `dst` (kept between calls: no allocation once grown).
@@ -43,15 +48,25 @@ fn copy_into(dst: &mut Vec<f64>, src: &PyReadonlyArray1<'_, f64>) -> PyResult<()
 }
 
 impl NativePreslidingBatch {
-    /// Copy the inputs; returns whether a temperature was given.
-    fn take(&mut self, angle: &PyReadonlyArray1<'_, f64>, omega: &PyReadonlyArray1<'_, f64>, load: &PyReadonlyArray1<'_, f64>, temperature: Option<&PyReadonlyArray1<'_, f64>>) -> PyResult<bool> {
+    /// Copy the inputs; returns whether a temperature and a step were given.
+    fn take(
+        &mut self,
+        angle: &PyReadonlyArray1<'_, f64>,
+        omega: &PyReadonlyArray1<'_, f64>,
+        load: &PyReadonlyArray1<'_, f64>,
+        temperature: Option<&PyReadonlyArray1<'_, f64>>,
+        step: Option<&PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<(bool, bool)> {
         copy_into(&mut self.buf[0], angle)?;
         copy_into(&mut self.buf[1], omega)?;
         copy_into(&mut self.buf[2], load)?;
         if let Some(t) = temperature {
             copy_into(&mut self.buf[3], t)?;
         }
-        Ok(temperature.is_some())
+        if let Some(h) = step {
+            copy_into(&mut self.buf[4], h)?;
+        }
+        Ok((temperature.is_some(), step.is_some()))
     }
 }
 
@@ -105,11 +120,12 @@ impl NativePreslidingBatch {
         load: PyReadonlyArray1<'py, f64>,
         temperature: Option<PyReadonlyArray1<'py, f64>>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        self.call(py, angle, angular_velocity, load, temperature, 0).map(|o| o.expect("an output"))
+        self.call(py, angle, angular_velocity, load, temperature, None, 0).map(|o| o.expect("an output"))
     }
 
-    /// Commit every joint's state at its angle.
-    #[pyo3(signature = (angle, angular_velocity, load, temperature=None))]
+    /// Commit every joint's state at its angle; `step` (s per joint, None: not known) the
+    /// host's step, as `_Presliding.commit`.
+    #[pyo3(signature = (angle, angular_velocity, load, temperature=None, step=None))]
     fn commit<'py>(
         &mut self,
         py: Python<'py>,
@@ -117,12 +133,13 @@ impl NativePreslidingBatch {
         angular_velocity: PyReadonlyArray1<'py, f64>,
         load: PyReadonlyArray1<'py, f64>,
         temperature: Option<PyReadonlyArray1<'py, f64>>,
+        step: Option<PyReadonlyArray1<'py, f64>>,
     ) -> PyResult<()> {
-        self.call(py, angle, angular_velocity, load, temperature, 1).map(|_| ())
+        self.call(py, angle, angular_velocity, load, temperature, step, 1).map(|_| ())
     }
 
-    /// The torque at the inputs, then commit (one solve per joint).
-    #[pyo3(signature = (angle, angular_velocity, load, temperature=None))]
+    /// The torque at the inputs, then commit (one solve per joint) with the host's `step`.
+    #[pyo3(signature = (angle, angular_velocity, load, temperature=None, step=None))]
     fn step<'py>(
         &mut self,
         py: Python<'py>,
@@ -130,8 +147,9 @@ impl NativePreslidingBatch {
         angular_velocity: PyReadonlyArray1<'py, f64>,
         load: PyReadonlyArray1<'py, f64>,
         temperature: Option<PyReadonlyArray1<'py, f64>>,
+        step: Option<PyReadonlyArray1<'py, f64>>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        self.call(py, angle, angular_velocity, load, temperature, 2).map(|o| o.expect("an output"))
+        self.call(py, angle, angular_velocity, load, temperature, step, 2).map(|o| o.expect("an output"))
     }
 
     /// Every joint's sliding torque T(P, |omega|) (N·m) at the inputs.
@@ -143,7 +161,7 @@ impl NativePreslidingBatch {
         load: PyReadonlyArray1<'py, f64>,
         temperature: Option<PyReadonlyArray1<'py, f64>>,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        self.call(py, load.clone(), angular_velocity, load, temperature, 3).map(|o| o.expect("an output"))
+        self.call(py, load.clone(), angular_velocity, load, temperature, None, 3).map(|o| o.expect("an output"))
     }
 
     /// (presliding torques N·m, reference angles rad), arrays of shape (n,).
@@ -159,6 +177,37 @@ impl NativePreslidingBatch {
     fn set_states(&mut self, torque: PyReadonlyArray1<'_, f64>, angle: PyReadonlyArray1<'_, f64>) -> PyResult<()> {
         let (t, a) = (torque.as_array().to_vec(), angle.as_array().to_vec());
         self.batch.set_states(&t, &a).map_err(batch_err)
+    }
+
+    /// Everything the joints hold (for pickling): presliding torques (N·m), reference angles
+    /// (rad), last steps (s), ω at the last commits (rad/s), pending first angles.
+    #[getter]
+    fn full_states<'py>(&self, py: Python<'py>) -> PyResult<FullStates<'py>> {
+        let n = self.batch.len();
+        let (mut t, mut a, mut h, mut w, mut u) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![false; n]);
+        self.batch.states(&mut t, &mut a).map_err(batch_err)?;
+        self.batch.last_steps(&mut h, &mut w, &mut u).map_err(batch_err)?;
+        Ok((t.into_pyarray(py), a.into_pyarray(py), h.into_pyarray(py), w.into_pyarray(py), u.into_pyarray(py)))
+    }
+
+    /// Restore [`NativePreslidingBatch::full_states`] (all true `unreferenced` with the states
+    /// at rest: every joint takes its first angle as its reference).
+    fn set_full_states(
+        &mut self,
+        torque: PyReadonlyArray1<'_, f64>,
+        angle: PyReadonlyArray1<'_, f64>,
+        step: PyReadonlyArray1<'_, f64>,
+        omega: PyReadonlyArray1<'_, f64>,
+        unreferenced: PyReadonlyArray1<'_, bool>,
+    ) -> PyResult<()> {
+        let (t, a, h, w, u) = (torque.as_array().to_vec(), angle.as_array().to_vec(), step.as_array().to_vec(), omega.as_array().to_vec(), unreferenced.as_array().to_vec());
+        // Checked before anything changes: the last steps first (they fail alone), then both.
+        let before = self.batch.clone();
+        let res = self.batch.set_states(&t, &a).and_then(|()| self.batch.set_last_steps(&h, &w, &u));
+        if res.is_err() {
+            self.batch = before;
+        }
+        res.map_err(batch_err)
     }
 
     /// Store the host inertia per joint (kg·m²), or clear it (None).
@@ -185,8 +234,9 @@ impl NativePreslidingBatch {
 }
 
 impl NativePreslidingBatch {
-    /// One call: 0 torque, 1 commit, 2 step, 3 sliding torque. The GIL is released while
-    /// the joints are stepped.
+    /// One call: 0 torque, 1 commit, 2 step (with the host's `step` when given), 3 sliding
+    /// torque. The GIL is released while the joints are stepped.
+    #[allow(clippy::too_many_arguments)]
     fn call<'py>(
         &mut self,
         py: Python<'py>,
@@ -194,18 +244,22 @@ impl NativePreslidingBatch {
         omega: PyReadonlyArray1<'py, f64>,
         load: PyReadonlyArray1<'py, f64>,
         temperature: Option<PyReadonlyArray1<'py, f64>>,
+        step: Option<PyReadonlyArray1<'py, f64>>,
         what: u8,
     ) -> PyResult<Option<Bound<'py, PyArray1<f64>>>> {
-        let with_t = self.take(&angle, &omega, &load, temperature.as_ref())?;
+        let (with_t, with_h) = self.take(&angle, &omega, &load, temperature.as_ref(), step.as_ref())?;
         let n = self.batch.len();
         let mut out = if what == 1 { Vec::new() } else { vec![0.0; n] };
         let Self { batch, buf } = self;
         let res = py.detach(|| {
             let inputs = Inputs { angle: &buf[0], angular_velocity: &buf[1], load: &buf[2], temperature: with_t.then_some(&buf[3][..]) };
-            match what {
-                0 => batch.torque(&inputs, &mut out),
-                1 => batch.commit(&inputs),
-                2 => batch.step(&inputs, &mut out),
+            let step = with_h.then_some(&buf[4][..]);
+            match (what, step) {
+                (0, _) => batch.torque(&inputs, &mut out),
+                (1, Some(h)) => batch.commit_step(&inputs, h),
+                (1, None) => batch.commit(&inputs),
+                (2, Some(h)) => batch.step_with(&inputs, h, &mut out),
+                (2, None) => batch.step(&inputs, &mut out),
                 _ => batch.sliding_torque(inputs.load, inputs.angular_velocity, inputs.temperature, &mut out),
             }
         });

@@ -91,7 +91,8 @@ def test_levels_give_the_vectorised_joints_torque(fidelity):
     assert np.array_equal(bits(b.sliding_torque(w, p)), bits(joint.evaluate(p, w)["torque"]))
     assert b.models_held == 1
     # Steady sliding (the state at the bound) gives -sign(omega) T.
-    big = np.where(w >= 0, 1.0, -1.0) * 10.0
+    # (0.5 rad: far beyond the presliding angle, within pi: not read modulo 2*pi as a reversal.)
+    big = np.where(w >= 0, 1.0, -1.0) * 0.5
     b.commit(big, w, p)
     t = b.torque(big, w, p)
     moving = w != 0
@@ -186,3 +187,123 @@ def test_bad_input_names_the_argument_and_the_index():
         pinjoint.PreslidingBatch(0)
     with pytest.raises(ValueError, match=r"host_inertia = -1 kg.m2 at index 0 is invalid"):
         pinjoint.PreslidingBatch(2, host_inertia=-1.0)
+
+
+def wrap_report(x, how, turns):
+    """The angle a host reports for the true angle x: as is (0), wrapped into (-pi, pi] (1),
+    or shifted by whole turns (2)."""
+    w = np.where(how == 1, np.remainder(x + np.pi, 2 * np.pi) - np.pi, x)
+    w = np.where((how == 1) & (w == -np.pi), np.pi, w)
+    return np.where(how == 2, x + turns * 2 * np.pi, w)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_host_conventions_equal_n_presliding_objects_bit_for_bit(seed):
+    """host_inertia, the host's steps (a number, an array, None), wrapped angles and
+    angle=None: n Presliding objects driven the same way, bit for bit, states and last steps."""
+    rng = np.random.default_rng(100 + seed)
+    n = 23
+    law = (2e-3, 0.9, 0.02)
+    inertia = rng.choice([0.0, 0.3, 5.0, 750.0, 1e4], n) * rng.uniform(0.5, 1.5, n)
+    unreferenced = seed % 2 == 0
+    start = rng.choice([np.pi - 1e-3, -np.pi + 5e-4, 0.0, 2.0], n) + rng.uniform(-10, 10, n) * (rng.uniform(size=n) < 0.3)
+    batch = pinjoint.PreslidingBatch(n, None, *law, host_inertia=inertia, angle=None if unreferenced else start)
+    objs = [pinjoint.Presliding(None, *law, angle=None if unreferenced else float(start[i]), host_inertia=float(inertia[i])) for i in range(n)]
+    assert np.array_equal(batch.host_inertia, inertia)
+    assert np.array_equal(batch.unreferenced, np.full(n, unreferenced))
+    for k, (da, w, p) in enumerate(random_scene(rng, n, 50)):
+        a = wrap_report(start + da, rng.integers(0, 3, n), rng.integers(-3, 4, n))
+        h = [None, 1e-3, rng.choice([0.0, 1e-4, 5e-3, 2e-2], n)][k % 3]
+        load_c = p * (0.5 if k % 4 == 3 else 1.0)
+        if k % 2 == 0:
+            t = batch.step(a, w, p, step=h)
+        else:
+            t = batch.torque(a, w, p)
+            batch.commit(a, w, load_c, None, h)
+        ref = [o.torque(a[i], w[i], p[i]) for i, o in enumerate(objs)]
+        for i, o in enumerate(objs):
+            hi = None if h is None else float(np.broadcast_to(h, (n,))[i])
+            o.commit(a[i], w[i], p[i] if k % 2 == 0 else load_c[i], step=hi)
+        assert np.array_equal(bits(t), bits(ref)), k
+        full = [o._native.full_state for o in objs]
+        tau, ref_angle = batch.state
+        step, omega = batch.last_step
+        for c, got in enumerate((tau, ref_angle, step, omega)):
+            assert np.array_equal(bits(got), bits([f[c] for f in full])), (k, c)
+        assert np.array_equal(batch.unreferenced, [f[4] for f in full]), k
+
+
+def test_the_damping_cap_and_the_wrapped_angle_act():
+    """Not a no-op: the host inertia and the step change the torque as the scalar law says;
+    a wrapped angle reads as the continuous one; an increment near pi is read against
+    omega*step only when the step is given."""
+    n = 3
+    j = pinjoint.PreslidingBatch(n, host_inertia=[0.0, 1.0, 1.0])
+    # In the elastic range at speed: the damping term differs with J and with the cap at h.
+    j.commit([0.0] * n, 0.0, 2e4, step=[0.0, 0.0, 1e-2])
+    t = j.torque(1e-5, 0.05, 2e4)
+    assert t[0] != t[1] != t[2] and abs(t[2] - t[0]) > 0 and abs(t[1]) > abs(t[2])
+    # A slide through pi, the host wrapping: with the step, the same torque as continuous.
+    cont = pinjoint.PreslidingBatch(2, angle=np.pi - 0.01)
+    wrapped = pinjoint.PreslidingBatch(2, angle=np.pi - 0.01)
+    h, w = 1e-3, 2.0
+    x = np.pi - 0.01
+    for k in range(20):
+        x = x + w * h
+        xw = x - 2 * np.pi if x > np.pi else x
+        tc = cont.step([x, x], w, 2e4, step=h)
+        tw = wrapped.step([xw, x], w, 2e4, step=h)
+        assert np.allclose(tc, tw, rtol=0, atol=1e-6), k
+    assert x > np.pi
+    # A true increment of 3.5 rad reported wrapped (3.5 - 2*pi) after a commit at 30 rad/s:
+    # with the step 0.1 s (omega*h = 3 rad) read as +3.5 (sliding forward, torque -T at
+    # rest); without it as the nearest to 0, -2.78 rad (a reversal: +T).
+    for h, sign in ((0.1, -1.0), (None, 1.0)):
+        r = pinjoint.PreslidingBatch(1)
+        r.commit(0.0, 30.0, 2e4, step=h)
+        t = r.torque(3.5 - 2 * np.pi, 0.0, 2e4)[0]
+        assert sign * t > 0 and abs(t) == pytest.approx(r.sliding_torque(0.0, 2e4)[0]), (h, t)
+
+
+def test_pickle_keeps_host_inertia_steps_and_pending_first_angles():
+    rng = np.random.default_rng(12)
+    n = 9
+    inertia = rng.uniform(0.5, 50.0, n)
+    b = pinjoint.PreslidingBatch(n, host_inertia=inertia, angle=None)
+    c0 = pickle.loads(pickle.dumps(b))
+    assert c0.unreferenced.all() and np.array_equal(c0.host_inertia, inertia)
+    scene = list(random_scene(rng, n, 24))
+    for k, (a, w, p) in enumerate(scene[:12]):
+        b.step(a + 3.0, w, p, step=rng.choice([0.0, 1e-3, 1e-2], n))
+        if k == 0:
+            # The first angle became each joint's reference in b; the pickled copy still waits.
+            assert not b.unreferenced.any() and c0.unreferenced.all()
+    c = pickle.loads(pickle.dumps(b))
+    assert np.array_equal(c.host_inertia, inertia)
+    assert all(np.array_equal(bits(x), bits(y)) for x, y in zip(b.last_step, c.last_step))
+    for a, w, p in scene[12:]:
+        # Wrapped on one side, read against the last step's omega*h on both.
+        a = np.remainder(a + 3.0 + np.pi, 2 * np.pi) - np.pi
+        assert np.array_equal(bits(b.step(a, w, p, 300.0, 2e-3)), bits(c.step(a, w, p, 300.0, 2e-3)))
+    assert all(np.array_equal(bits(x), bits(y)) for x, y in zip(b.state, c.state))
+    # The copy pickled before the first angle starts where b started.
+    a, w, p = scene[0]
+    fresh = pinjoint.PreslidingBatch(n, host_inertia=inertia, angle=None)
+    assert np.array_equal(bits(c0.step(a + 3.0, w, p)), bits(fresh.step(a + 3.0, w, p)))
+
+
+def test_bad_steps_name_the_argument_and_the_index():
+    b = pinjoint.PreslidingBatch(3, host_inertia=[1.0, 0.0, 2.0])
+    a, w, p = np.zeros(3), np.full(3, 0.1), np.full(3, 2e4)
+    with pytest.raises(ValueError, match=r"^step = -0.001 s at index 1 is invalid: it must be a finite number >= 0$"):
+        b.commit(a + 1e-4, w, p, step=[1e-3, -1e-3, 1e-3])
+    with pytest.raises(ValueError, match=r"^step = NaN s at index 0 is invalid"):
+        b.step(a + 1e-4, w, p, step=np.nan)
+    with pytest.raises(ValueError, match=r"step has shape \(2,\), the batch has n = 3 joints"):
+        b.step(a + 1e-4, w, p, step=[1e-3, 1e-3])
+    with pytest.raises(TypeError, match=r"step \(s\) must hold real numbers"):
+        b.commit(a, w, p, step=[True, False, True])
+    assert np.array_equal(b.state[0], np.zeros(3)) and np.array_equal(b.last_step[0], np.zeros(3))
+    with pytest.raises(ValueError, match=r"host_inertia = 2000000000 kg.m2 at index 2 is invalid"):
+        pinjoint.PreslidingBatch(3, host_inertia=[1.0, 1.0, 2e9])
+    assert np.array_equal(pinjoint.PreslidingBatch(2, host_inertia=0.0).host_inertia, [0.0, 0.0])

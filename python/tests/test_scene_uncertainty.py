@@ -30,16 +30,17 @@ def load_example():
 
 def scalar_free_fall(scene, mu_c):
     """The scene's equations for one leg, in plain Python floats with a pinjoint.Presliding
-    trunnion joint (written independently of pinjoint.scenes)."""
+    trunnion joint (written independently of pinjoint.scenes): the host's inertia on each pin
+    J / trunnion_joints, each commit with the step h."""
     s = scene
-    joint = pinjoint.Presliding(pinjoint.Params({MU: mu_c}), angle=s.up_angle)
+    joint = pinjoint.Presliding(pinjoint.Params({MU: mu_c}), angle=s.up_angle, host_inertia=s.inertia / s.trunnion_joints)
     phi, w, a, energy = s.up_angle, 0.0, 0.0, 0.0
     for k in range(int(round(s.end_time / s.step))):
         ax = s.cg_distance * (a * math.cos(phi) - w * w * math.sin(phi))
         ay = s.cg_distance * (a * math.sin(phi) + w * w * math.cos(phi))
         load = s.trunnion_load_share * math.hypot(s.leg_mass * ax, s.leg_mass * ay + s.leg_mass * s.gravity)
         tf = s.trunnion_joints * joint.torque(phi, w, load)
-        joint.commit(phi, w, load)
+        joint.commit(phi, w, load, step=s.step)
         total = -s.leg_mass * s.gravity * s.cg_distance * math.sin(phi) - s.damper_linear * w - s.damper_quadratic * w * abs(w)
         total += (-s.lock_spring_torque if phi < s.lock_spring_angle else 0.0) + tf
         a = total / s.inertia

@@ -33,11 +33,19 @@ pub enum BatchError {
         unit: &'static str,
     },
     /// An invalid host inertia.
-    #[error("host_inertia = {} kg.m2 at index {index} is invalid: it must be a finite number > 0 kg.m2", crate::fmt::Num(*value))]
+    #[error("host_inertia = {} kg.m2 at index {index} is invalid: it must be a number in [0, 1e9] kg.m2 (0: not given)", crate::fmt::Num(*value))]
     HostInertia {
         /// The joint's index.
         index: usize,
         /// The value given (kg·m²).
+        value: f64,
+    },
+    /// An invalid host step (not a finite number ≥ 0).
+    #[error("step = {} s at index {index} is invalid: it must be a finite number >= 0", crate::fmt::Num(*value))]
+    Step {
+        /// The joint's index.
+        index: usize,
+        /// The value given (s).
         value: f64,
     },
     /// A batch of no joints.

@@ -11,12 +11,20 @@
 //! table level is built once for them all.
 //!
 //! Bit for bit the scalar law, by construction: each joint's state is a `PreslidingJoint`
-//! driven by the same calls (`torque_at`, `commit`) with the sliding torque from the same
+//! driven by the same calls (`torque_at`, `commit`, `commit_step`) with the sliding torque from the same
 //! functions as the scalar front ends (the cold complete solve at full, as the Python
 //! `Presliding` object and the PinJoint FMU's step; the level inside its envelope at the
 //! other levels, as the vectorised `Joint.evaluate`). The answer of one joint depends on its
 //! own inputs and state alone, whatever the thread count or chunking. `tests/batch.rs`
 //! checks this against n scalar objects over random scenes at every level.
+//!
+//! The host's conventions are the scalar joint's (see [`crate::zero_velocity::joint`]): each
+//! joint's law carries its host inertia ([`PreslidingBatch::set_host_inertia`],
+//! `Presliding::with_host_inertia`); a commit with the host's step
+//! ([`PreslidingBatch::commit_step`], [`PreslidingBatch::step_with`]) is the scalar
+//! `commit_step`, so the next angle is read modulo 2π against ω·h and the host-inertia damping
+//! is capped at h; a joint may wait for its first angle ([`PreslidingBatch::set_last_steps`],
+//! as `PreslidingJoint::unreferenced`).
 //!
 //! ```
 //! use pinjoint::batch::{BatchParams, Inputs, PreslidingBatch, Settings};
@@ -66,9 +74,7 @@ pub struct PreslidingBatch {
     models: Models,
     per_joint: bool,
     law: Presliding,
-    /// Per joint, kg·m²; None: not set.
-    // TODO(issue 29): pass to each joint's `PreslidingJoint` once it has a `host_inertia`
-    // setting; until then it is stored (and pickled by the Python front end) but not used.
+    /// Per joint, kg·m² (each joint's law carries it); None: not set (0, not given).
     host_inertia: Option<Vec<f64>>,
     /// Each joint's model key in this call (a buffer kept between calls).
     keys: Vec<cache::Key>,
@@ -145,16 +151,72 @@ impl PreslidingBatch {
         self.host_inertia.as_deref()
     }
 
-    /// Set the host inertia per joint (kg·m², finite > 0; one value per joint), or clear it.
-    /// Stored, not yet used: the scalar `PreslidingJoint` has no such setting yet (issue 29).
+    /// Set the host inertia per joint (kg·m² in [0, 1e9], 0 = not given; one value per
+    /// joint), or clear it (None: 0 for every joint). Joint i's law becomes
+    /// `law.with_host_inertia(inertia[i])`: the presliding damping 2ζ√(k·J), capped at the
+    /// host's step of the last commit (`Presliding::damping`). The states, the last steps and
+    /// the pending first angles are kept. On an error nothing has changed.
     pub fn set_host_inertia(&mut self, inertia: Option<&[f64]>) -> Result<(), BatchError> {
+        let n = self.len();
         if let Some(v) = inertia {
-            inputs::check_length("host_inertia", v, self.len())?;
-            if let Some((index, &value)) = v.iter().enumerate().find(|(_, x)| !(x.is_finite() && **x > 0.0)) {
-                return Err(BatchError::HostInertia { index, value });
-            }
+            inputs::check_length("host_inertia", v, n)?;
+        }
+        let j = |i: usize| inertia.map_or(0.0, |v| v[i]);
+        let laws = (0..n)
+            .map(|index| self.law.with_host_inertia(j(index)).map_err(|_| BatchError::HostInertia { index, value: j(index) }))
+            .collect::<Result<Vec<_>, _>>()?;
+        for (js, law) in self.joints.iter_mut().zip(laws) {
+            let s = &js.state;
+            let ((step, omega), unreferenced) = (s.last_step(), s.is_unreferenced());
+            let mut state = PreslidingJoint::at_state(law, s.presliding_torque(), s.reference_angle());
+            state.set_last_step(step, omega, unreferenced);
+            js.state = state;
         }
         self.host_inertia = inertia.map(<[f64]>::to_vec);
+        Ok(())
+    }
+
+    /// Joint `i`'s law (its host inertia, and its `step` the host's step of the last commit).
+    pub fn joint_law(&self, i: usize) -> &Presliding {
+        self.joints[i].state.law()
+    }
+
+    /// Every joint's step bookkeeping into `step` (s, the host's step of the last commit; 0
+    /// before one or when not given), `omega` (rad/s, ω at that commit) and `unreferenced`
+    /// (whether the joint waits for its first angle), one value per joint each: with
+    /// [`PreslidingBatch::states`] everything a joint holds.
+    pub fn last_steps(&self, step: &mut [f64], omega: &mut [f64], unreferenced: &mut [bool]) -> Result<(), BatchError> {
+        let n = self.len();
+        inputs::check_length("step", step, n)?;
+        inputs::check_length("angular_velocity", omega, n)?;
+        if unreferenced.len() != n {
+            return Err(BatchError::Shape { argument: "unreferenced", expected: n, got: unreferenced.len() });
+        }
+        for (((j, h), w), u) in self.joints.iter().zip(step).zip(omega).zip(unreferenced) {
+            ((*h, *w), *u) = (j.state.last_step(), j.state.is_unreferenced());
+        }
+        Ok(())
+    }
+
+    /// Restore the step bookkeeping ([`PreslidingBatch::last_steps`]; after
+    /// [`PreslidingBatch::set_states`], which marks every joint referenced): `step` finite
+    /// ≥ 0 (s), `omega` finite (rad/s). `unreferenced` all true with the states at rest is a
+    /// batch of `PreslidingJoint::unreferenced` joints: each takes the first angle it is given
+    /// as its reference. On an error nothing has changed.
+    pub fn set_last_steps(&mut self, step: &[f64], omega: &[f64], unreferenced: &[bool]) -> Result<(), BatchError> {
+        let n = self.len();
+        inputs::check_length("step", step, n)?;
+        inputs::check_length("angular_velocity", omega, n)?;
+        if unreferenced.len() != n {
+            return Err(BatchError::Shape { argument: "unreferenced", expected: n, got: unreferenced.len() });
+        }
+        for (i, (&h, &w)) in step.iter().zip(omega).enumerate() {
+            step::check_step(i, h)?;
+            inputs::finite("angular_velocity", i, w, "rad/s")?;
+        }
+        for (((j, &h), &w), &u) in self.joints.iter_mut().zip(step).zip(omega).zip(unreferenced) {
+            j.state.set_last_step(h, w, u);
+        }
         Ok(())
     }
 
@@ -200,32 +262,50 @@ impl PreslidingBatch {
         models.assign(slots, |i| keys[i])
     }
 
-    fn run(&mut self, inputs: &Inputs, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
+    fn run(&mut self, inputs: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
         inputs.check(self.len())?;
+        if let Some(h) = steps {
+            inputs::check_length("step", h, self.len())?;
+        }
         if action != Action::Commit {
             inputs::check_length("output", out, self.len())?;
         }
         self.assign(inputs.temperature)?;
-        step::run(&mut self.joints, &self.slots, &self.models, inputs, action, out)
+        step::run(&mut self.joints, &self.slots, &self.models, inputs, steps, action, out)
     }
 
     /// The friction torque on each pin (N·m) at the inputs into `out`, the states unchanged:
     /// joint i's `PreslidingJoint::torque_at(angle, ω, T)` with T its sliding torque.
     /// On an error (the lowest joint index's) no state has changed.
     pub fn torque(&mut self, inputs: &Inputs, out: &mut [f64]) -> Result<(), BatchError> {
-        self.run(inputs, Action::Torque, out)
+        self.run(inputs, None, Action::Torque, out)
     }
 
     /// Commit every joint's state at its input angle (the FMU's step when the host sets the
-    /// angle). On an error no state has changed.
+    /// angle), the host's step not given: each joint's `PreslidingJoint::commit` (its last
+    /// step kept). On an error no state has changed.
     pub fn commit(&mut self, inputs: &Inputs) -> Result<(), BatchError> {
-        self.run(inputs, Action::Commit, &mut [])
+        self.run(inputs, None, Action::Commit, &mut [])
+    }
+
+    /// Commit every joint's state at its input angle as a host step of `step` (s, finite ≥ 0,
+    /// one per joint; 0: not known): each joint's `PreslidingJoint::commit_step`, so its next
+    /// angle is read modulo 2π against ω·h and its host-inertia damping is capped at h. On an
+    /// error no state has changed.
+    pub fn commit_step(&mut self, inputs: &Inputs, step: &[f64]) -> Result<(), BatchError> {
+        self.run(inputs, Some(step), Action::Commit, &mut [])
     }
 
     /// [`PreslidingBatch::torque`] then [`PreslidingBatch::commit`] at the same inputs, the
     /// sliding torque solved once: the explicit host's step.
     pub fn step(&mut self, inputs: &Inputs, out: &mut [f64]) -> Result<(), BatchError> {
-        self.run(inputs, Action::Step, out)
+        self.run(inputs, None, Action::Step, out)
+    }
+
+    /// [`PreslidingBatch::torque`] then [`PreslidingBatch::commit_step`] with the host's
+    /// `step` (s, one per joint) at the same inputs, the sliding torque solved once.
+    pub fn step_with(&mut self, inputs: &Inputs, step: &[f64], out: &mut [f64]) -> Result<(), BatchError> {
+        self.run(inputs, Some(step), Action::Step, out)
     }
 
     /// Each joint's sliding torque T(P, |ω|) (N·m, ≥ 0) at `load` (N), `angular_velocity`
@@ -234,6 +314,6 @@ impl PreslidingBatch {
     pub fn sliding_torque(&mut self, load: &[f64], angular_velocity: &[f64], temperature: Option<&[f64]>, out: &mut [f64]) -> Result<(), BatchError> {
         let inputs = Inputs { angle: load, angular_velocity, load, temperature };
         inputs::check_length("load", load, self.len())?;
-        self.run(&inputs, Action::Bound, out)
+        self.run(&inputs, None, Action::Bound, out)
     }
 }

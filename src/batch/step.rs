@@ -42,8 +42,14 @@ pub enum Action {
     Bound,
 }
 
+/// A host step (s) that is a finite number ≥ 0, else [`BatchError::Step`] naming the joint.
+#[inline]
+pub fn check_step(index: usize, value: f64) -> Result<f64, BatchError> {
+    if value.is_finite() && value >= 0.0 { Ok(value) } else { Err(BatchError::Step { index, value }) }
+}
+
 /// The first failing joint of a chunk starting at `offset`, if any.
-fn bounds_chunk(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+fn bounds_chunk(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
     for (k, (j, &slot)) in joints.iter_mut().zip(slots).enumerate() {
         let i = offset + k;
         let res = (|| {
@@ -51,6 +57,9 @@ fn bounds_chunk(joints: &mut [JointState], slots: &[u32], models: &Models, inp: 
             let omega = finite("angular_velocity", i, inp.angular_velocity[i], "rad/s")?;
             if angle {
                 finite("angle", i, inp.angle[i], "rad")?;
+            }
+            if let Some(h) = steps {
+                check_step(i, h[i])?;
             }
             let key = [load.to_bits(), omega.to_bits(), models.key(slot).1];
             if key != j.key {
@@ -66,16 +75,26 @@ fn bounds_chunk(joints: &mut [JointState], slots: &[u32], models: &Models, inp: 
     None
 }
 
+/// Commit joint `i` at its input angle: `PreslidingJoint::commit`, or with the host's step
+/// `PreslidingJoint::commit_step` (ω·h the next increment is read against, the damping cap).
+#[inline]
+fn commit(j: &mut JointState, inp: &Inputs, steps: Option<&[f64]>, i: usize) {
+    match steps {
+        Some(h) => j.state.commit_step(inp.angle[i], inp.angular_velocity[i], j.bound, h[i]),
+        None => j.state.commit(inp.angle[i], j.bound),
+    }
+}
+
 /// The law on a chunk (every bound computed).
-fn law_chunk(joints: &mut [JointState], out: &mut [f64], inp: &Inputs, offset: usize, action: Action) {
+fn law_chunk(joints: &mut [JointState], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
     for (k, j) in joints.iter_mut().enumerate() {
         let i = offset + k;
         match action {
             Action::Torque => out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound),
-            Action::Commit => j.state.commit(inp.angle[i], j.bound),
+            Action::Commit => commit(j, inp, steps, i),
             Action::Step => {
                 out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound);
-                j.state.commit(inp.angle[i], j.bound);
+                commit(j, inp, steps, i);
             }
             Action::Bound => out[k] = j.bound,
         }
@@ -83,19 +102,21 @@ fn law_chunk(joints: &mut [JointState], out: &mut [f64], inp: &Inputs, offset: u
 }
 
 /// Every joint's sliding torque at `inp` (the inputs' lengths and the slots already set),
-/// then `action`. On an error (the lowest joint index's) no state has changed. `out` has one
-/// value per joint (unused by [`Action::Commit`]: it may be empty then).
-pub fn run(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
+/// then `action`; a commit with `steps` (one host step per joint, s, length checked) commits
+/// each joint as `PreslidingJoint::commit_step`. On an error (the lowest joint index's) no
+/// state has changed. `out` has one value per joint (unused by [`Action::Commit`]: it may be
+/// empty then).
+pub fn run(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
     let n = joints.len();
     let angle = action != Action::Bound;
     let err = if n < 2 * CHUNK {
-        bounds_chunk(joints, slots, models, inp, 0, angle)
+        bounds_chunk(joints, slots, models, inp, steps, 0, angle)
     } else {
         joints
             .par_chunks_mut(CHUNK)
             .zip(slots.par_chunks(CHUNK))
             .enumerate()
-            .filter_map(|(c, (j, s))| bounds_chunk(j, s, models, inp, c * CHUNK, angle))
+            .filter_map(|(c, (j, s))| bounds_chunk(j, s, models, inp, steps, c * CHUNK, angle))
             .min_by_key(|(i, _)| *i)
     };
     if let Some((_, e)) = err {
@@ -104,11 +125,11 @@ pub fn run(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inpu
     let out_len = if action == Action::Commit { 0 } else { n };
     let out = &mut out[..out_len];
     if n < 2 * CHUNK {
-        law_chunk(joints, out, inp, 0, action);
+        law_chunk(joints, out, inp, steps, 0, action);
     } else if action == Action::Commit {
-        joints.par_chunks_mut(CHUNK).enumerate().for_each(|(c, j)| law_chunk(j, &mut [], inp, c * CHUNK, action));
+        joints.par_chunks_mut(CHUNK).enumerate().for_each(|(c, j)| law_chunk(j, &mut [], inp, steps, c * CHUNK, action));
     } else {
-        joints.par_chunks_mut(CHUNK).zip(out.par_chunks_mut(CHUNK)).enumerate().for_each(|(c, (j, o))| law_chunk(j, o, inp, c * CHUNK, action));
+        joints.par_chunks_mut(CHUNK).zip(out.par_chunks_mut(CHUNK)).enumerate().for_each(|(c, (j, o))| law_chunk(j, o, inp, steps, c * CHUNK, action));
     }
     Ok(())
 }
