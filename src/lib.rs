@@ -47,6 +47,8 @@ pub mod fidelity;
 pub mod record;
 pub mod rig;
 pub mod zero_velocity;
+// Scenes that put the joint in a mechanism:
+pub mod scene;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).
 pub use numfmt as fmt;
