@@ -25,7 +25,7 @@ pub enum SceneError {
     Parse(String),
     /// The joint model refuses its parameters at this temperature (e.g. below the paper model's
     /// lowest admissible temperature): the scene was not run.
-    #[error("the joint model refuses temperature = {t} K ({c} C): {source}", t = crate::fmt::Num(*.temperature), c = crate::fmt::Num(*.temperature - 273.15))]
+    #[error("the joint model refuses temperature = {t} K ({c} C): {source}", t = crate::fmt::Num(*.temperature), c = crate::fmt::Num(((*.temperature - 273.15) * 1e6).round() / 1e6))]
     Temperature {
         /// The temperature asked for (K).
         temperature: f64,

@@ -48,6 +48,7 @@ impl Trunnion {
         let bound = if load == 0.0 { 0.0 } else { ev.evaluate(load, omega)?.torque };
         let torque = self.state.torque_at(angle, omega, bound);
         self.state.commit(angle, bound);
-        Ok(self.pins * torque)
+        // + 0.0: no −0 at rest.
+        Ok(self.pins * torque + 0.0)
     }
 }
