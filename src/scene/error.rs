@@ -58,6 +58,28 @@ pub enum SceneError {
         /// The model's reason.
         source: ModelError,
     },
+    /// The integration left the finite numbers (a guard: the step limits of
+    /// [`super::params::FreeFallParams::validate`] are meant to prevent it).
+    #[error(
+        "the integration is no longer finite after t = {t} s (angle = {a} rad, angular velocity = {w} rad/s, pin load = {p} N, friction torque = {f} N.m): reduce scene.step",
+        t = crate::fmt::Num(*.time),
+        a = crate::fmt::Num(*.angle),
+        w = crate::fmt::Num(*.omega),
+        p = crate::fmt::Num(*.load),
+        f = crate::fmt::Num(*.friction)
+    )]
+    NotFinite {
+        /// Time of the step (s).
+        time: f64,
+        /// The leg's angle φ at its start (rad).
+        angle: f64,
+        /// Its angular velocity ω (rad/s).
+        omega: f64,
+        /// The pin load P (N).
+        load: f64,
+        /// The trunnion friction torque (N·m).
+        friction: f64,
+    },
     /// The lock links' breakaway torque could not be evaluated.
     #[error("the lock links' breakaway torque at lock_link_load = {p} N has no answer: {source}", p = crate::fmt::Num(*.load))]
     Breakaway {

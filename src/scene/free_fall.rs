@@ -98,17 +98,15 @@ pub fn applied_torque(scene: &FreeFallParams, phi: f64, omega: f64) -> f64 {
 /// The envelope of loads and speeds the table and boundary fidelities are built over (outside it
 /// they answer with the complete solve, so the envelope sets the cost, not the answer): per-pin
 /// loads from a fifth to twice the leg's static share (at least 10 N to 100 N), speeds from
-/// 1e-3 rad/s to a bound on |ω| (at least 0.1 rad/s): the smaller of the energy bound,
-/// ½Jω² ≤ m g l (1 − cos φ_up) + T_l·min(φ_e, φ_up) (friction and damper only take energy out),
-/// and the damper's terminal speed under the largest drive, c1 ω + c2 ω² = m g l + T_l (faster,
+/// 1e-3 rad/s to a bound on |ω| (at least 0.1 rad/s): the smaller of the energy bound
+/// ([`FreeFallParams::speed_bound`]) and the damper's terminal speed under the largest drive, c1 ω + c2 ω² = m g l + T_l (faster,
 /// the damper alone outweighs every driving torque).
 pub fn envelope(scene: &FreeFallParams) -> Envelope {
     let weight = scene.trunnion_load_share * scene.leg_mass * scene.gravity;
     let load_min = (0.2 * weight).max(10.0);
     let load_max = (2.0 * weight).max(10.0 * load_min);
     let mgl = scene.leg_mass * scene.gravity * scene.cg_distance;
-    let work = mgl * (1.0 - scene.up_angle.cos()) + scene.lock_spring_torque * scene.lock_spring_angle.min(scene.up_angle);
-    let energy = (2.0 * work / scene.inertia).sqrt();
+    let energy = scene.speed_bound();
     let (c1, c2, drive) = (scene.damper_linear, scene.damper_quadratic, mgl + scene.lock_spring_torque);
     let terminal = if c2 > 0.0 {
         // The positive root of c2 ω² + c1 ω − drive = 0, written without cancellation.
@@ -180,6 +178,9 @@ pub fn simulate(scene: &FreeFallParams, params: &Params, temperature: f64) -> Re
         alpha = (applied_torque(scene, phi, omega) + friction) / scene.inertia;
         let omega_next = omega + h * alpha;
         let phi_next = phi + h * omega_next;
+        if !(phi_next.is_finite() && omega_next.is_finite()) {
+            return Err(SceneError::NotFinite { time: t, angle: phi, omega, load, friction });
+        }
         series.push(Sample { time: t, angle: phi, angular_velocity: omega, load, friction_torque: friction });
         if phi_next <= 0.0 {
             // Inside the step the angle is linear in time (ω_{n+1} over the step).

@@ -100,6 +100,8 @@ impl FreeFallParams {
     /// centre of gravity); g, c1, c2, T_l, the lock-link torque ≥ 0; 0 < φ_up < π;
     /// 0 ≤ φ_e < π; the load share in [0, 1]; the lock-link load > 0; the temperature > 0 K
     /// (the joint model checks its own range); h > 0, t_max > 0 and t_max/h ≤ [`MAX_STEPS`];
+    /// h at most the damper's relaxation time J/(c1 + 2 c2 ω_max) and half the pendulum's
+    /// time scale √(J/(m g l));
     /// at most [`MAX_JOINTS`] pins and 1 to [`MAX_JOINTS`] lock-link pivots; tolerance > 0.
     pub fn validate(&self) -> Result<(), SceneError> {
         let bad = |name: &'static str, value: f64, unit: &'static str, rule: &str| Err(SceneError::Invalid { name, value, unit, rule: rule.into() });
@@ -148,6 +150,22 @@ impl FreeFallParams {
         if !(1..=MAX_JOINTS).contains(&self.lock_link_pivots) {
             return bad("lock_link_pivots", f64::from(self.lock_link_pivots), "", &format!("it must be an integer in [1, {MAX_JOINTS}]"));
         }
+        // The explicit steps must resolve the leg's fastest rates: the damper's relaxation
+        // J/(c1 + 2 c2 ω_max) (ω_max the energy bound of `speed_bound`) and the pendulum's
+        // √(J/(m g l)); beyond them semi-implicit Euler oscillates or diverges.
+        let damping_rate = (self.damper_linear + 2.0 * self.damper_quadratic * self.speed_bound()) / self.inertia;
+        if !(self.step * damping_rate <= 1.0) {
+            return bad(
+                "step",
+                self.step,
+                "s",
+                &format!("it must be at most J/(c1 + 2 c2 w_max) = {} s, the damper's relaxation time (w_max = {} rad/s from energy)", crate::fmt::Num(1.0 / damping_rate), crate::fmt::Num(self.speed_bound())),
+            );
+        }
+        let pendulum = (self.leg_mass * self.gravity * self.cg_distance / self.inertia).sqrt();
+        if !(self.step * pendulum <= 0.5) {
+            return bad("step", self.step, "s", &format!("it must be at most 0.5 sqrt(J/(m g l)) = {} s, half the pendulum's time scale", crate::fmt::Num(0.5 / pendulum)));
+        }
         let steps = (self.end_time / self.step).ceil();
         if steps > MAX_STEPS {
             return bad(
@@ -158,6 +176,13 @@ impl FreeFallParams {
             );
         }
         Ok(())
+    }
+
+    /// A bound on the leg's speed |ω| (rad/s) from energy: ½Jω² ≤ m g l (1 − cos φ_up) +
+    /// T_l·min(φ_e, φ_up) (friction and damper only take energy out).
+    pub fn speed_bound(&self) -> f64 {
+        let work = self.leg_mass * self.gravity * self.cg_distance * (1.0 - self.up_angle.cos()) + self.lock_spring_torque * self.lock_spring_angle.min(self.up_angle);
+        (2.0 * work / self.inertia).sqrt()
     }
 
     /// The number of steps to the end time, ⌈t_max/h⌉ (the parameters valid).
