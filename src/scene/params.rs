@@ -154,7 +154,8 @@ impl FreeFallParams {
         // J/(c1 + 2 c2 ω_max) (ω_max the energy bound of `speed_bound`) and the pendulum's
         // √(J/(m g l)); beyond them semi-implicit Euler oscillates or diverges.
         let damping_rate = (self.damper_linear + 2.0 * self.damper_quadratic * self.speed_bound()) / self.inertia;
-        if !(self.step * damping_rate <= 1.0) {
+        // Every quantity is finite here (checked above).
+        if self.step * damping_rate > 1.0 {
             return bad(
                 "step",
                 self.step,
@@ -163,7 +164,7 @@ impl FreeFallParams {
             );
         }
         let pendulum = (self.leg_mass * self.gravity * self.cg_distance / self.inertia).sqrt();
-        if !(self.step * pendulum <= 0.5) {
+        if self.step * pendulum > 0.5 {
             return bad("step", self.step, "s", &format!("it must be at most 0.5 sqrt(J/(m g l)) = {} s, half the pendulum's time scale", crate::fmt::Num(0.5 / pendulum)));
         }
         let steps = (self.end_time / self.step).ceil();
