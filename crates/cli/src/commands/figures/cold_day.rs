@@ -259,3 +259,33 @@ pub fn write(dir: &Path, params: &Params) -> Result<(Vec<PathBuf>, Entry)> {
     write_atomic(&paths[2], &[], |w| series_csv(w, &rows))?;
     Ok((paths, entry(&rows, &scene)))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A lubricant the model refuses at the cold end (Roelands' S0 = 5 makes η0 a glass's at
+    /// −54 °C): the figure still draws, the CSV has every temperature, and the refused ones are
+    /// shown as not run with the model's reason, in the CSV, the caption and the figure.
+    #[test]
+    fn a_refused_temperature_is_shown_as_not_run() {
+        let mut params = Params::default();
+        params.lubricant.roelands_temperature_index = 5.0;
+        let dir = tempfile::tempdir().unwrap();
+        let (paths, entry) = write(dir.path(), &params).unwrap();
+        assert_eq!(paths.len(), 3);
+        let text = std::fs::read_to_string(dir.path().join("cold_day.csv")).unwrap();
+        let mut rdr = csv::Reader::from_reader(text.as_bytes());
+        let rows: Vec<csv::StringRecord> = rdr.records().map(std::result::Result::unwrap).collect();
+        assert_eq!(rows.iter().map(|r| r[0].parse::<f64>().unwrap()).collect::<Vec<_>>(), TEMPERATURES_C);
+        let cold = rows.iter().find(|r| &r[0] == "-54.0").unwrap();
+        assert_eq!(&cold[2], "not run");
+        assert!(cold[10].contains("lubricant.temperature") && cold[10].contains("219.15 K"), "{:?}", &cold[10]);
+        assert!(entry.caption.contains("-54 °C: not run"), "{}", entry.caption);
+        let svg = std::fs::read_to_string(dir.path().join("cold_day.svg")).unwrap();
+        assert!(svg.contains("not run, the joint model refuses") && svg.contains("-54 °C"));
+        // The room-temperature run is untouched by the cold end's refusal.
+        let room = rows.iter().find(|r| &r[0] == "20.0").unwrap();
+        assert_eq!(&room[2], "locked");
+    }
+}
