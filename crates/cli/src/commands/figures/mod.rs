@@ -211,8 +211,9 @@ pub fn run(cmd: &FiguresCmd) -> Result<()> {
     paths.extend(self::starvation::write(&dir, &cfg.model)?);
     // Friction at rest: the band and the presliding state under a holding drive and a small loop.
     paths.extend(self::at_rest::write(&dir, &cfg.model)?);
-    // The cold-day scene: a main gear's free-fall extension at four temperatures.
-    let (cold_paths, cold_entry) = self::cold_day::write(&dir, &cfg.model)?;
+    // The cold-day scene: a main gear's free-fall extension at four temperatures. Its joint has
+    // the library's default parameters, whatever model the paper's figures are drawn with.
+    let (cold_paths, cold_entry) = self::cold_day::write(&dir, &pinjoint::Params::default())?;
     paths.extend(cold_paths);
     let info = RunInfo { quick: cmd.quick, samples_per_cycle: rig_settings.samples_per_cycle, rtol: rig_settings.rtol, atol: rig_settings.atol };
     let mut list = entries(&joint, &results, &core)?;
