@@ -4,8 +4,9 @@
 //!
 //! Files (into the figures directory):
 //!   cold_day.svg          (a) the leg's angle against time at each temperature the model runs,
-//!                         with the trunnion friction off for comparison; (b) the trunnion
-//!                         friction torque against time; (c) the lock margin against
+//!                         with the trunnion friction off for comparison; (b) how far each leg
+//!                         lags behind the one without trunnion friction; (c) the trunnion
+//!                         friction torque against time; (d) the lock margin against
 //!                         temperature, the temperatures the model refuses marked
 //!   cold_day.csv          per temperature: status (`locked`, `not locked`, `not run`), time to
 //!                         lock (`inf` if not locked), speed at lock, lock margin, breakaway
@@ -139,6 +140,21 @@ fn label(c: f64) -> String {
     format!("{c:+} °C")
 }
 
+/// The points of one temperature's lag behind the leg without trunnion friction: (time s, lag
+/// deg) every [`DECIMATE`] steps. Both runs have the same step, so sample i of both is at the same
+/// time (the lock samples, at interpolated times, are left out).
+fn lag_points(o: &FreeFallOutcome, f: &FreeFallOutcome) -> Vec<(f64, f64)> {
+    let n = o.series.len().min(f.series.len()).saturating_sub(1);
+    o.series[..n].iter().zip(&f.series[..n]).step_by(DECIMATE).map(|(a, b)| (a.time, (a.angle - b.angle).to_degrees())).collect()
+}
+
+/// The largest lag (deg) of a row's run behind its run without trunnion friction.
+fn lag(r: &Row) -> Option<f64> {
+    let (Ok(o), Ok(f)) = (&r.run, &r.frictionless) else { return None };
+    let n = o.series.len().min(f.series.len()).saturating_sub(1);
+    Some(o.series[..n].iter().zip(&f.series[..n]).map(|(a, b)| (a.angle - b.angle).to_degrees()).fold(0.0, f64::max))
+}
+
 /// The figure's caption, with this run's numbers.
 pub fn caption(rows: &[Row], scene: &FreeFallParams) -> String {
     let mut ran = Vec::new();
@@ -147,12 +163,8 @@ pub fn caption(rows: &[Row], scene: &FreeFallParams) -> String {
         match (&r.run, &r.frictionless) {
             (Ok(o), Ok(f)) => {
                 let lock = if o.locked {
-                    format!(
-                        "locks after {} s at {} rad/s (without trunnion friction {} s)",
-                        sig(o.time_to_lock, 4),
-                        sig(o.speed_at_lock.unwrap_or(0.0), 3),
-                        sig(f.time_to_lock, 4)
-                    )
+                    let delay = if f.locked { format!(", {} ms after the leg without trunnion friction", sig(1e3 * (o.time_to_lock - f.time_to_lock), 3)) } else { String::new() };
+                    format!("locks after {} s at {} rad/s{delay}", sig(o.time_to_lock, 5), sig(o.speed_at_lock.unwrap_or(0.0), 4))
                 } else {
                     format!("does not lock within {} s", sig(scene.end_time, 3))
                 };
@@ -197,12 +209,16 @@ does not depend on temperature (stated). ",
         }
         text.push_str(&refused.join("; "));
     }
+    if let Some(worst) = rows.iter().filter_map(|r| lag(r).map(|l| (r.celsius, l))).max_by(|a, b| a.1.total_cmp(&b.1)) {
+        text.push_str(&format!(
+            ". Gravity and the damper set the motion: the trunnion friction holds the leg back by at most {}° (at {}; panel b)",
+            sig(worst.1, 3),
+            label(worst.0)
+        ));
+    }
     text.push_str(
-        ". With the paper's model the trunnion friction changes the time to lock by milliseconds: at these speeds and \
-loads the joint is near boundary lubrication (μ ≈ μ_c), the damper and gravity set the motion; the margin at the lock \
-is the boundary friction's μ_c R P at rest, independent of temperature in this model. Cooling thickens the oil film and \
-lowers the running torque (the wrong way for a grease below 0 °C: known-wrong there, refused below −35 °C). The grease \
-in the clearance (yield and running torque, issue 28) changes these numbers; docs/cold-day-scene.md says by how much.",
+        ". The margin moves with temperature only through the lock links' breakaway torque. docs/cold-day-scene.md says \
+which of the model's mechanisms move these numbers, and by how much.",
     );
     text
 }
@@ -229,7 +245,18 @@ pub fn write(dir: &Path, params: &Params) -> Result<(Vec<PathBuf>, Entry)> {
             angle = angle.series(Series::line(label(r.celsius), decimated(o).map(|s| (s.time, s.angle.to_degrees())).collect()).coloured(k));
         }
     }
-    let mut torque = Chart::new("(b) the trunnion pins' friction torque on the leg against time", Axis::linear("time [s]"), Axis::linear("friction torque [N·m]")).legend(Corner::UpperRight);
+    let mut lags = Chart::new(
+        "(b) how far the leg lags behind the one without trunnion friction (the joint model's effect on the motion)",
+        Axis::linear("time [s]"),
+        Axis::linear("angle lag [deg]"),
+    )
+    .legend(Corner::UpperLeft);
+    for (k, r) in rows.iter().enumerate() {
+        if let (Ok(o), Ok(f)) = (&r.run, &r.frictionless) {
+            lags = lags.series(Series::line(label(r.celsius), lag_points(o, f)).coloured(k));
+        }
+    }
+    let mut torque = Chart::new("(c) the trunnion pins' friction torque on the leg against time", Axis::linear("time [s]"), Axis::linear("friction torque [N·m]")).legend(Corner::UpperRight);
     for (k, r) in rows.iter().enumerate() {
         if let Ok(o) = &r.run {
             torque = torque.series(Series::line(label(r.celsius), decimated(o).map(|s| (s.time, s.friction_torque)).collect()).coloured(k));
@@ -242,7 +269,7 @@ pub fn write(dir: &Path, params: &Params) -> Result<(Vec<PathBuf>, Entry)> {
     let refused: Vec<f64> = rows.iter().filter(|r| r.run.is_err()).map(|r| r.celsius).collect();
     let top = margins.iter().map(|m| m.1).fold(1.0_f64, f64::max);
     let mut margin = Chart::new(
-        "(c) the lock margin at the lock, lock_link_torque / (pivots × T_break) − 1",
+        "(d) the lock margin at the lock, lock_link_torque / (pivots × T_break) − 1",
         Axis::linear("temperature [°C]").with_range(-60.0, 30.0),
         Axis::linear("lock margin [-]").with_range(0.0_f64.min(margins.iter().map(|m| m.1).fold(0.0, f64::min)), 1.2 * top),
     )
@@ -252,7 +279,7 @@ pub fn write(dir: &Path, params: &Params) -> Result<(Vec<PathBuf>, Entry)> {
         let list: Vec<String> = refused.iter().map(|c| label(*c)).collect();
         margin = margin.marker(&refused, format!("not run, the joint model refuses: {}", list.join(", ")));
     }
-    let svg = stacked_plot("The cold-day scene: free-fall extension of a main gear (illustrative)", &[angle, torque, margin], (900, 1250))?;
+    let svg = stacked_plot("The cold-day scene: free-fall extension of a main gear (illustrative)", &[angle, lags, torque, margin], (900, 1650))?;
     let paths: Vec<PathBuf> = ["cold_day.svg", "cold_day.csv", "cold_day_series.csv"].iter().map(|f| dir.join(f)).collect();
     write_text(&paths[0], &[], &svg)?;
     write_atomic(&paths[1], &[], |w| summary_csv(w, &rows))?;
