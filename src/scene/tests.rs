@@ -324,3 +324,50 @@ fn the_default_scene_locks_with_a_positive_margin_and_bounded_series() {
     assert_eq!(short.series.last().unwrap().time, 0.5);
     let _ = pin_load(&s, 0.0, 0.0, 0.0);
 }
+
+/// A value of any kind a file or a caller could give: special values, signs, extremes, and
+/// (mostly) the range `lo..hi`.
+fn any_value(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    prop_oneof![
+        1 => Just(f64::NAN),
+        1 => Just(f64::INFINITY),
+        1 => Just(-1.0),
+        1 => Just(0.0),
+        1 => Just(1e300),
+        1 => Just(1e-300),
+        150 => lo..hi,
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    /// Whatever the scene's numbers, a run gives an outcome with finite numbers or a typed error;
+    /// never a panic. (The run is kept short: at most 2 s at steps of at least 0.2 ms.)
+    #[test]
+    fn any_scene_gives_an_outcome_or_a_typed_error(
+        (leg_mass, cg_distance, inertia_factor, gravity, up_angle, damper_linear) in
+            (any_value(10.0, 5000.0), any_value(0.2, 3.0), any_value(0.9, 3.0), any_value(0.0, 30.0), any_value(0.01, 3.2), any_value(0.0, 1e4)),
+        (damper_quadratic, lock_spring_angle, lock_spring_torque, trunnion_load_share, lock_link_torque, lock_link_load) in
+            (any_value(0.0, 1e4), any_value(0.0, 0.5), any_value(0.0, 2000.0), any_value(0.0, 1.1), any_value(0.0, 200.0), any_value(1.0, 2e4)),
+        (trunnion_joints, lock_link_pivots, temperature, step, end_time) in
+            (0u32..18, 0u32..18, any_value(200.0, 400.0), any_value(2e-4, 2e-2), any_value(0.01, 2.0)),
+    ) {
+        let s = FreeFallParams {
+            leg_mass, cg_distance, inertia: inertia_factor * leg_mass * cg_distance * cg_distance, gravity, up_angle, damper_linear,
+            damper_quadratic, lock_spring_angle, lock_spring_torque, trunnion_load_share, trunnion_joints, lock_link_torque,
+            lock_link_load, lock_link_pivots, temperature, step, end_time, ..FreeFallParams::default()
+        };
+        match s.run(&Params::default()) {
+            Ok(o) => {
+                prop_assert!(!o.series.is_empty() && o.series.len() <= s.steps() + 1);
+                for x in &o.series {
+                    prop_assert!([x.time, x.angle, x.angular_velocity, x.load, x.friction_torque].iter().all(|v| v.is_finite()), "{:?}", x);
+                }
+                prop_assert!(o.time_to_lock > 0.0 && o.friction_energy.is_finite() && !o.lock_margin.is_nan() && o.breakaway_torque >= 0.0);
+                prop_assert_eq!(o.locked, o.time_to_lock.is_finite());
+            }
+            Err(e) => prop_assert!(!e.to_string().is_empty()),
+        }
+    }
+}
