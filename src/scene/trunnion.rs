@@ -27,8 +27,9 @@ impl Trunnion {
     /// `tolerance` over `envelope`, outside it the complete solve). With no pins nothing is built
     /// and the torque is 0.
     pub fn new(joint: Joint, pins: u32, fidelity: Fidelity, tolerance: f64, envelope: Envelope, angle: f64) -> Result<Self, FidelityError> {
-        // The presliding law's default settings (SCENE: "default presliding settings"). Once
-        // `PreslidingJoint` has a host-inertia setting, it is J / pins here.
+        // The presliding law's default settings. Once the law has a host-inertia setting
+        // (`Presliding::with_host_inertia`, `at_step`), it is the leg's J / pins at the scene's
+        // step h here (the caller has both), and the step commits with the host's step.
         let state = PreslidingJoint::new(Presliding::default(), angle);
         let evaluator = if pins == 0 { None } else { Some(Evaluator::with_joint(joint, fidelity, tolerance, envelope)?) };
         Ok(Trunnion { evaluator, state, pins: f64::from(pins) })
