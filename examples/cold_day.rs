@@ -9,7 +9,7 @@
 //! Prints, per temperature, the time to lock, the speed at lock, the lock margin, the trunnion's
 //! friction energy and how it splits between the joint model's mechanisms (the asperities'
 //! boundary friction μ_c/γ2 and the film's shear, eq. 10, weighted by the angle turned), and the
-//! time to lock without trunnion friction; writes them to `cold_day.csv` (or the path given). A
+//! time to lock without trunnion friction; writes them to `out/cold_day.csv` (or the path given). A
 //! temperature the joint model refuses is printed and written with the model's reason: it is
 //! not an error of the example.
 
@@ -35,7 +35,13 @@ fn boundary_share(o: &FreeFallOutcome, params: &Params) -> Result<f64, Box<dyn s
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let path = std::env::args().nth(1).unwrap_or_else(|| "cold_day.csv".into());
+    let path = match std::env::args().nth(1) {
+        Some(p) => p,
+        None => {
+            std::fs::create_dir_all("out")?;
+            "out/cold_day.csv".into()
+        }
+    };
     let params = Params::default();
     let scene = FreeFallParams::default();
     let frictionless = FreeFallParams { trunnion_joints: 0, ..scene };
