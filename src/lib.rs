@@ -53,6 +53,8 @@ pub mod rig;
 pub mod zero_velocity;
 #[cfg(feature = "batch")]
 pub mod batch;
+// Scenes that put the joint in a mechanism:
+pub mod scene;
 
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).
 pub use numfmt as fmt;

@@ -246,6 +246,7 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
         "starvation_cycle_1Hz.svg",
         "at_rest_hold.svg",
         "at_rest_loop.svg",
+        "cold_day.svg",
     ];
     let csvs = [
         "stribeck.csv",
@@ -261,6 +262,8 @@ fn figures_quick_writes_every_file_and_the_index_shows_them() {
         "starvation_summary.csv",
         "at_rest_hold.csv",
         "at_rest_loop.csv",
+        "cold_day.csv",
+        "cold_day_series.csv",
     ];
     let names: BTreeSet<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     let expected: BTreeSet<String> = svgs.iter().chain(&csvs).chain(&["index.html", "README.md"]).map(std::string::ToString::to_string).collect();
@@ -321,4 +324,63 @@ fn params_rig_prints_a_file_that_cycle_reads_back() {
     let out = tmp.path().join("o");
     ok(&["cycle", "--params", file.to_str().unwrap(), "--cycles", "1", "--samples-per-cycle", "40", "--output", out.to_str().unwrap()]);
     assert!((read_cycle(&out).last().unwrap()[0] - 0.25).abs() < 1e-12, "the file's frequency (4 Hz) was not used");
+}
+
+/// The cold-day scene in `figures`: the figure is written and linked, its CSV has one row for
+/// each of +20, −20, −40 and −54 °C, each either run (locked with a finite time, speed and margin,
+/// or not locked with `inf`) or marked not run with the model's reason, which the caption and the
+/// figure's legend repeat; the series CSV has the runs that ran.
+#[test]
+fn figures_cold_day_scene_has_every_temperature() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("figs");
+    ok(&["figures", "--quick", "--output", dir.to_str().unwrap()]);
+    let html = std::fs::read_to_string(dir.join("index.html")).unwrap();
+    let readme = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    let svg = std::fs::read_to_string(dir.join("cold_day.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    assert!(html.contains("<img src=\"cold_day.svg\"") && readme.contains("](cold_day.svg)"));
+    assert!(html.contains("href=\"cold_day.csv\"") && html.contains("href=\"cold_day_series.csv\""));
+
+    let mut rdr = csv::Reader::from_path(dir.join("cold_day.csv")).unwrap();
+    let h: Vec<String> = rdr.headers().unwrap().iter().map(String::from).collect();
+    let col = |name: &str| h.iter().position(|c| c == name).unwrap_or_else(|| panic!("no column {name}"));
+    let rows: Vec<csv::StringRecord> = rdr.records().map(Result::unwrap).collect();
+    let temperatures: Vec<f64> = rows.iter().map(|r| r[col("temperature_C")].parse().unwrap()).collect();
+    assert_eq!(temperatures, [20.0, -20.0, -40.0, -54.0]);
+    let mut ran = BTreeSet::new();
+    for r in &rows {
+        let c: f64 = r[col("temperature_C")].parse().unwrap();
+        let k: f64 = r[col("temperature_K")].parse().unwrap();
+        assert!((k - c - 273.15).abs() < 1e-9);
+        assert!(!r.iter().any(|v| v.contains("NaN")), "{r:?}");
+        let label = format!("{c:+} °C");
+        assert!(html.contains(&label), "the caption lacks {label}");
+        match &r[col("status")] {
+            "not run" => {
+                let reason = &r[col("reason")];
+                assert!(reason.contains("K") && !reason.is_empty(), "{r:?}");
+                assert!(r[col("time_to_lock")].is_empty() && r[col("lock_margin")].is_empty());
+                assert!(html.contains(&format!("{label}: not run")), "the caption does not say {label} was not run");
+                assert!(svg.contains(&label), "the figure does not show {label}");
+            }
+            status @ ("locked" | "not locked") => {
+                let t: f64 = r[col("time_to_lock")].parse().unwrap();
+                let margin: f64 = r[col("lock_margin")].parse().unwrap();
+                let energy: f64 = r[col("friction_energy")].parse().unwrap();
+                assert!(margin.is_finite() && energy >= 0.0, "{r:?}");
+                if status == "locked" {
+                    let w: f64 = r[col("speed_at_lock")].parse().unwrap();
+                    assert!(t.is_finite() && t > 0.0 && w > 0.0, "{r:?}");
+                } else {
+                    assert!(t == f64::INFINITY && r[col("speed_at_lock")].is_empty(), "{r:?}");
+                }
+                ran.insert(label);
+            }
+            other => panic!("status {other:?}"),
+        }
+    }
+    let mut rdr = csv::Reader::from_path(dir.join("cold_day_series.csv")).unwrap();
+    let series: BTreeSet<String> = rdr.records().map(|r| format!("{:+} °C", r.unwrap()[0].parse::<f64>().unwrap())).collect();
+    assert_eq!(series, ran);
 }

@@ -1,4 +1,6 @@
-//! The claims table in `docs/paper-comparison.md` is the one `pinjoint figures` computes: a
+//! The claims table in `docs/paper-comparison.md` (and the starved-inlet table of
+//! `docs/extensions.md`, the cold-day table and figure of `docs/cold-day-scene.md`) is the one
+//! `pinjoint figures` computes: a
 //! full run (the page quotes the full run's numbers), then the table between the markers is
 //! compared line by line with the page's copy. Regenerate with
 //! `cargo run --release -- figures --output out/figures` and copy the table from
@@ -65,6 +67,43 @@ fn check_starvation_table(dir: &std::path::Path) {
     assert_eq!(checked, 4, "the starvation table has 4 rows");
 }
 
+/// The cold-day table of docs/cold-day-scene.md quotes this run's `cold_day.csv`: every
+/// temperature, its status, and each number rounded to the decimals the page shows.
+fn check_cold_day_table(dir: &std::path::Path) {
+    let mut rdr = csv::Reader::from_path(dir.join("cold_day.csv")).unwrap();
+    let header: Vec<String> = rdr.headers().unwrap().iter().map(String::from).collect();
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no column {name}"));
+    let rows: Vec<csv::StringRecord> = rdr.records().map(Result::unwrap).collect();
+    let page = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/cold-day-scene.md");
+    let text = std::fs::read_to_string(page).unwrap();
+    let b = text.find("<!-- cold-day table:").expect("docs/cold-day-scene.md: no cold-day table start marker");
+    let e = text[b..].find("<!-- end of cold-day table -->").expect("docs/cold-day-scene.md: no cold-day table end marker") + b;
+    let lines: Vec<&str> = text[b..e].lines().filter(|l| l.starts_with("| ") && !l.starts_with("| temperature")).collect();
+    assert_eq!(lines.len(), rows.len(), "docs/cold-day-scene.md: the table has {} rows, cold_day.csv {}", lines.len(), rows.len());
+    for (line, r) in lines.iter().zip(&rows) {
+        let cells: Vec<&str> = line.trim_matches('|').split('|').map(str::trim).collect();
+        let c: f64 = r[col("temperature_C")].parse().unwrap();
+        assert_eq!(cells[0], format!("{c:+} °C").replace('-', "−"), "{line}");
+        assert_eq!(cells[1], &r[col("status")], "{c} °C: status; regenerate the table from cold_day.csv of `pinjoint figures`");
+        let names = ["time_to_lock", "speed_at_lock", "lock_margin", "friction_energy", "time_to_lock_without_friction"];
+        for (q, name) in cells[2..].iter().zip(names) {
+            let v = r[col(name)].parse::<f64>().ok();
+            if *q == "–" {
+                assert!(v.is_none(), "{c} °C: {name} quoted – , computed {v:?}");
+            } else if *q == "inf" {
+                assert_eq!(v, Some(f64::INFINITY), "{c} °C: {name}");
+            } else {
+                assert!(quotes(q, v, 1.0), "{c} °C: {name} quoted {q}, computed {v:?}; regenerate the table from cold_day.csv of `pinjoint figures`");
+            }
+        }
+    }
+    let committed = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/figures/cold_day.svg");
+    assert!(
+        std::fs::read(committed).unwrap_or_else(|e| panic!("{committed}: {e}")) == std::fs::read(dir.join("cold_day.svg")).unwrap(),
+        "docs/figures/cold_day.svg differs from the one `pinjoint figures` draws: copy it from out/figures/cold_day.svg"
+    );
+}
+
 #[test]
 fn paper_comparison_claims_table_is_the_one_the_code_computes() {
     let tmp = tempfile::tempdir().unwrap();
@@ -84,6 +123,7 @@ fn paper_comparison_claims_table_is_the_one_the_code_computes() {
     assert!(rows >= 25, "{rows} claims");
     assert_eq!(html.matches("<tr><td>").count(), rows);
     check_starvation_table(&dir);
+    check_cold_day_table(&dir);
     // The README's figure is the one this run draws, byte for byte.
     let committed = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/figures/stribeck.svg");
     assert!(

@@ -68,6 +68,9 @@ pub enum CliError {
     /// a fidelity level cannot evaluate.
     #[error("{0}")]
     Fidelity(#[from] FidelityError),
+    /// A scene (`figures`' cold-day scene) that could not be set up.
+    #[error("{0}")]
+    Scene(#[from] pinjoint::scene::SceneError),
     /// An SVG chart could not be drawn.
     #[error(transparent)]
     Plot(#[from] PlotError),

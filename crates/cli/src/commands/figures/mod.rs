@@ -4,7 +4,7 @@
 //! This folder holds the command and its parts, each in a module (in dependency order):
 //! [`rig`] simulates the paper's 15 rig conditions; [`mod@claims`] computes the claims table;
 //! [`plots`] draws Figures 7–13; [`index`] writes the captions, `index.html` and `README.md`;
-//! [`starvation`] and [`at_rest`] are the extensions' figures. This file holds the
+//! [`starvation`] and [`at_rest`] are the extensions' figures; [`cold_day`] the cold-day scene. This file holds the
 //! command's arguments and [`run`], which writes Figures 3 and 4 (through `stribeck` and
 //! `map`) and calls the parts. A new figure goes in a module of its own here, declared
 //! below and called from [`run`], with an entry in [`index`].
@@ -16,6 +16,7 @@ pub mod plots;
 pub mod index;
 pub mod starvation;
 pub mod at_rest;
+pub mod cold_day;
 
 use crate::common::{csv_io, exact, lin_space, log_space, readable, PAPER_RPM_RANGE, RAD_S_PER_RPM};
 use crate::error::Result;
@@ -49,6 +50,7 @@ fig10_mu_load.svg                 Figure 10: ... against load\n  \
 rig_averages.csv, core_curves.csv the data of Figures 8-10\n  \
 fig11_torque_0.03Hz.svg/.csv, fig12_torque_0.3Hz.svg/.csv, fig13_torque_1Hz.svg/.csv   Figures 11-13\n  \
 at_rest_hold.svg/.csv, at_rest_loop.svg/.csv   friction at rest: band against presliding\n  \
+cold_day.svg/.csv, cold_day_series.csv   the cold-day scene: a main gear's free-fall extension at +20, -20, -40, -54 C\n  \
 index.html, README.md             every figure with a caption comparing it with the paper\n\
 The rig side is 15 simulations (loads 5, 10, 20, 40, 60 kN × 0.03, 0.3, 1 Hz, ±40°), two strokes \
 each from rest, the first left out, run on every core. The x value of a run in Figures 8 and 9 is \
@@ -209,8 +211,13 @@ pub fn run(cmd: &FiguresCmd) -> Result<()> {
     paths.extend(self::starvation::write(&dir, &cfg.model)?);
     // Friction at rest: the band and the presliding state under a holding drive and a small loop.
     paths.extend(self::at_rest::write(&dir, &cfg.model)?);
+    // The cold-day scene: a main gear's free-fall extension at four temperatures. Its joint has
+    // the library's default parameters, whatever model the paper's figures are drawn with.
+    let (cold_paths, cold_entry) = self::cold_day::write(&dir, &pinjoint::Params::default())?;
+    paths.extend(cold_paths);
     let info = RunInfo { quick: cmd.quick, samples_per_cycle: rig_settings.samples_per_cycle, rtol: rig_settings.rtol, atol: rig_settings.atol };
-    let list = entries(&joint, &results, &core)?;
+    let mut list = entries(&joint, &results, &core)?;
+    list.push(cold_entry);
     let table = claims(&joint, &results, cfg.rig.amplitude)?;
     for (name, text) in [("index.html", html(&list, &table, &info)), ("README.md", markdown(&list, &table, &info))] {
         let p = dir.join(name);
