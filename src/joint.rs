@@ -417,7 +417,13 @@ impl Joint {
     /// line contact's e^{ln r} at w = 0.
     #[inline]
     fn min_film_ratio(ln_r: f64, weight: f64) -> f64 {
-        if weight == 0.0 { ln_r.exp() } else { ((1.0 - weight) * ln_r).exp() }
+        if weight == 0.0 {
+            ln_r.exp()
+        } else if weight >= 1.0 {
+            1.0
+        } else {
+            ((1.0 - weight) * ln_r).exp()
+        }
     }
 
     /// ε_g = 1 − h/c of the clearance around the film `film` (m), clamped to [0, 1).

@@ -153,7 +153,7 @@ pub fn lin_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 
 /// The model's outputs in CSV files, after the input columns (SI units). The h_min columns
 /// (an extension) and `validity` come last so that the earlier columns keep their positions.
-pub const RESULT_COLUMNS: [&str; 13] = pinjoint::record::NAMES;
+pub const RESULT_COLUMNS: [&str; pinjoint::record::NAMES.len()] = pinjoint::record::NAMES;
 
 /// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
 /// `BrokenPipe`, which ends the program quietly).
