@@ -1,8 +1,23 @@
-//! The `pinjoint` command line: one file per subcommand, shared pieces in `common`,
-//! `error` and `output`, numbers for people in `numbers`, SVG charts in `plot`. A new
-//! subcommand adds a file and a variant of [`Command`]. The binary (`src/main.rs`) only
-//! calls [`main`]; this library page is the command line's API documentation (the binary
-//! has none of its own: see `docs/cli.md`).
+//! The `pinjoint` command line. The binary (`src/main.rs`) only calls [`main`]; this library
+//! page is the command line's API documentation (the binary has none of its own: see
+//! `docs/cli.md`).
+//!
+//! Layout:
+//! - [`commands`]: one module per subcommand, a file for a single-file command
+//!   (`commands/point.rs`) and a folder for one with parts (`commands/figures/`,
+//!   `commands/cycle/`, `commands/sweep/`, `commands/calibrate/`, each with its command in
+//!   `mod.rs` and its parts beside it);
+//! - the pieces the commands share, at the top level: [`exact`] (round-trip numbers for CSV),
+//!   [`numbers`] (numbers for people), [`plot`] (SVG charts), [`error`] (the commands' error
+//!   type), [`common`] (the `--params` flag, speed flags, the CSV result columns, the rig's
+//!   operating region), [`output`] (the rules every output file follows), [`fidelity_args`]
+//!   (the `--fidelity` and envelope flags of `point` and `sweep`) and [`curves`] (the speed
+//!   sweeps `stribeck` and `map` share);
+//! - this file: the parsed arguments ([`Cli`], [`Command`]) and the dispatch ([`run`],
+//!   [`main`]).
+//!
+//! A new subcommand is a module in [`commands`] and a variant of [`Command`]; a new figure of
+//! `pinjoint figures` is a module in [`commands::figures`].
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 // Shared pieces:
@@ -14,27 +29,10 @@ pub mod common;
 pub mod output;
 pub mod fidelity_args;
 pub mod curves;
-// The commands, each after its parts:
-pub mod params_cmd;
-pub mod point;
-pub mod sweep_input;
-pub mod sweep;
-pub mod stribeck;
-pub mod map;
-pub mod cycle_run;
-pub mod cycle_stream;
-pub mod cycle_plots;
-pub mod cycle;
-pub mod calibrate_report;
-pub mod calibrate;
-pub mod figures_rig;
-pub mod figures_claims;
-pub mod figures_plots;
-pub mod figures_index;
-pub mod figures_starvation;
-pub mod figures_at_rest;
-pub mod figures;
+// The subcommands:
+pub mod commands;
 
+use commands::{calibrate, cycle, figures, map, params, point, stribeck, sweep};
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
@@ -77,7 +75,7 @@ pub struct Cli {
 // (clap applies it after the struct's); each command is documented on its struct instead.
 #[allow(missing_docs)]
 pub enum Command {
-    Params(params_cmd::ParamsCmd),
+    Params(params::ParamsCmd),
     Point(point::PointCmd),
     Sweep(sweep::SweepCmd),
     Stribeck(stribeck::StribeckCmd),
@@ -90,7 +88,7 @@ pub enum Command {
 /// Runs the parsed command; the error is what [`main`] prints.
 pub fn run(cli: &Cli) -> error::Result<()> {
     match &cli.command {
-        Command::Params(c) => params_cmd::run(c),
+        Command::Params(c) => params::run(c),
         Command::Point(c) => point::run(c),
         Command::Sweep(c) => sweep::run(c),
         Command::Stribeck(c) => stribeck::run(c),

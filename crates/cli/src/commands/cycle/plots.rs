@@ -1,9 +1,9 @@
 //! Plots of one rig run: torque against time (the paper's Figures 11–13), torque against angle
 //! (Figure 7d) and the four panels of Figure 7.
 
-use super::common::readable;
-use super::cycle_run::{core_torque, CycleRun};
-use super::error::Result;
+use crate::common::readable;
+use super::simulation::{core_torque, CycleRun};
+use crate::error::Result;
 use crate::plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
 use pinjoint::rig::Sample;
 

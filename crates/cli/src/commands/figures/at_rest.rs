@@ -12,9 +12,9 @@
 //!                             a function of ω (an ellipse through the origin); presliding gives
 //!                             the elastic line and, past breakaway, the elasto-plastic loop
 
-use super::common::{csv_io, exact};
-use super::error::Result;
-use super::output::{output_dir, write_atomic, write_text};
+use crate::common::{csv_io, exact};
+use crate::error::Result;
+use crate::output::{output_dir, write_atomic, write_text};
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series};
 use pinjoint::zero_velocity::{band, Presliding, PreslidingJoint};
 use pinjoint::{Joint, Params};

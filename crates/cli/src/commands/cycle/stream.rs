@@ -7,9 +7,9 @@
 //! kept and everything (CSV, plots, averages) is what [`CycleRun::simulate`] gives, bit for
 //! bit: the averages are the same trapezoidal sums in the same order.
 
-use super::common::csv_io;
-use super::cycle_run::{sample_fields, CycleRun, CYCLE_COLUMNS};
-use super::error::{CliError, Result};
+use crate::common::csv_io;
+use super::simulation::{sample_fields, CycleRun, CYCLE_COLUMNS};
+use crate::error::{CliError, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::rig::{RigConfig, RigSim, Sample};
 use std::io::Write;

@@ -3,13 +3,18 @@
 //! Reads one CSV per test (the columns `pinjoint cycle` writes: `time` s, `angle` rad and/or
 //! `angular_velocity` rad/s, `torque` N·m, and `load` N or `--load`), fits with the
 //! `pinjoint-calibrate` library and writes `calibrated.toml`, `report.md`, `report.html`,
-//! `fit.csv` and three SVG plots (see `calibrate_report`).
+//! `fit.csv` and three SVG plots (see [`report`]).
+//!
+//! This folder holds the command (arguments, reading the records, the fit, in this file)
+//! and [`report`], what it writes.
+
+pub mod report;
 
 use pinjoint_calibrate as cal;
 
-use super::calibrate_report::{fit_csv, report_html, report_json, report_md, svgs, toml_file};
-use super::error::{CliError, Result};
-use super::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
+use self::report::{fit_csv, report_html, report_json, report_md, svgs, toml_file};
+use crate::error::{CliError, Result};
+use crate::output::{output_dir, report_written, to_stdout, write_atomic, write_text};
 use cal::decimate::BlockMean;
 use cal::{Calibration, ExclusionRule, Model, Options, Record};
 use clap::Args;

@@ -2,13 +2,13 @@
 //! `README.md` in the output directory. Every number in a caption is computed from this run's
 //! results; the paper's statements are quoted beside them for comparison.
 
-use super::common::{lin_space, log_space, readable, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
-use super::figures_claims::{self, speed_at, Claim};
-use super::numbers::{nm, pct, sig};
-use super::error::Result;
-use super::figures_plots::PAPER_LOW_SPEED_MU;
-use super::figures_plots::CoreCurves;
-use super::figures_rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
+use crate::common::{lin_space, log_space, readable, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
+use super::claims::{speed_at, Claim};
+use crate::numbers::{nm, pct, sig};
+use crate::error::Result;
+use super::plots::PAPER_LOW_SPEED_MU;
+use super::plots::CoreCurves;
+use super::rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
 use std::f64::consts::TAU;
 use pinjoint::Joint;
@@ -354,7 +354,7 @@ pub fn entries(joint: &Joint, results: &[RigResult], core: &CoreCurves) -> Resul
     Ok(out)
 }
 
-/// Friction at rest: the zero-velocity models (`figures_at_rest`).
+/// Friction at rest: the zero-velocity models ([`super::at_rest`]).
 fn at_rest() -> Entry {
     Entry {
         title: "Friction at rest: band against presliding".into(),
@@ -369,7 +369,7 @@ an elasto-plastic loop beyond it; the band, a function of ω alone, gives a loop
     }
 }
 
-/// The starved-inlet extension (off by default; `figures_starvation`).
+/// The starved-inlet extension (off by default; [`super::starvation`]).
 fn starvation() -> Entry {
     Entry {
         title: "Extension: a starved inlet (off by default)".into(),
@@ -433,7 +433,7 @@ figure{margin:2.5em 0}img{max-width:100%;border:1px solid #ddd}figcaption{margin
         out.push_str(&format!("<p>{}</p>\n", html_escape(&p)));
     }
     out.push_str("<h2>The paper's statements against this model</h2>\n");
-    out.push_str(&figures_claims::html(claims, html_escape));
+    out.push_str(&super::claims::html(claims, html_escape));
     for e in entries {
         out.push_str(&format!("<figure>\n<h2>{}</h2>\n", html_escape(&e.title)));
         for img in &e.images {
@@ -457,7 +457,7 @@ pub fn markdown(entries: &[Entry], claims: &[Claim], info: &RunInfo) -> String {
     out.push_str("## The paper's statements against this model\n\n");
     out.push_str(CLAIMS_BEGIN);
     out.push('\n');
-    out.push_str(&figures_claims::markdown(claims));
+    out.push_str(&super::claims::markdown(claims));
     out.push_str(CLAIMS_END);
     out.push_str("\n\n");
     for e in entries {

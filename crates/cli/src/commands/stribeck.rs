@@ -1,10 +1,10 @@
 //! `pinjoint stribeck`: the paper's Figure 3 — μ, 1/γ1, 1/γ2 and λ against the Sommerfeld
 //! number at one load — as CSV and SVG.
 
-use super::common::{log_space, positive, readable, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
-use super::curves::{curve, points_csv};
-use super::error::{CliError, Result};
-use super::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
+use crate::common::{log_space, positive, readable, rig_peak_speed, ParamsArg, PAPER_RPM_RANGE, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
+use crate::curves::{curve, points_csv};
+use crate::error::{CliError, Result};
+use crate::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
 use clap::Args;
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series};
 use pinjoint::{Joint, OperatingPoint};
@@ -100,7 +100,7 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
         readable(load / 1e3),
         readable((p_m / 1e6 * 100.0).round() / 100.0),
         readable(s_per_rad_s),
-        super::common::temperature_note(joint.params().lubricant.temperature)
+        crate::common::temperature_note(joint.params().lubricant.temperature)
     );
     Ok(stacked_plot(&title, &[mu, shares, lambda], (900, 1200))?)
 }

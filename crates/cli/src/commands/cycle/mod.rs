@@ -1,14 +1,24 @@
 //! `pinjoint cycle`: whole articulation strokes on the simulated rig (the paper's Figures 7,
 //! 11–13): the trace as CSV, torque against time and angle as SVG, and the paper's
 //! cycle-average friction coefficient (eq. 11).
+//!
+//! This folder holds the command and its parts (in dependency order): [`simulation`], one rig
+//! simulation with its averages and CSV columns (also used by `pinjoint figures`);
+//! [`stream`], the same streamed to the CSV with bounded memory; [`plots`], the run's SVG
+//! charts. This file holds the command's arguments and [`run`].
 
-use super::common::{load_rig_config, positive, readable, RAD_S_PER_RPM};
-use super::cycle_plots::{torque_angle_svg, torque_time_svg};
-use super::cycle_run::{default_skip, CycleRun};
-use super::cycle_stream::stream_cycles;
-use super::error::{CliError, Result};
-use super::fidelity_args::{describe, FidelityArgs};
-use super::output::{inputs_of, output_dir, refuse_files, report_written, to_stdout, write_atomic, write_text};
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+pub mod simulation;
+pub mod stream;
+pub mod plots;
+
+use crate::common::{load_rig_config, positive, readable, RAD_S_PER_RPM};
+use self::plots::{torque_angle_svg, torque_time_svg};
+use self::simulation::{default_skip, CycleRun};
+use self::stream::stream_cycles;
+use crate::error::{CliError, Result};
+use crate::fidelity_args::{describe, FidelityArgs};
+use crate::output::{inputs_of, output_dir, refuse_files, report_written, to_stdout, write_atomic, write_text};
 use clap::{Args, ValueEnum};
 use pinjoint::rig::{Formulation, Method, RigConfig};
 use pinjoint::Joint;
@@ -105,7 +115,7 @@ pub enum MethodArg {
 }
 
 /// Most strokes and samples one run may compute (the samples are streamed to cycle.csv; at
-/// most `cycle_stream::PLOT_SAMPLES` are kept for the plots).
+/// most [`stream::PLOT_SAMPLES`] are kept for the plots).
 pub const MAX_CYCLES: usize = 100_000;
 /// Most samples one run may write (see [`MAX_CYCLES`]).
 pub const MAX_SAMPLES: usize = 20_000_000;
@@ -125,7 +135,7 @@ fn config(cmd: &CycleCmd) -> Result<RigConfig> {
     if let Some(p) = cmd.load {
         cfg.rig.load = positive("load magnitude", p.abs(), "N")?;
     }
-    super::common::set_temperature(&mut cfg.model, cmd.temperature)?;
+    crate::common::set_temperature(&mut cfg.model, cmd.temperature)?;
     if let Some(m) = cmd.formulation {
         cfg.rig.formulation = match m {
             FormulationArg::Hybrid => Formulation::Hybrid,

@@ -6,11 +6,11 @@
 //! cannot drift from the code; statements about measurements the paper does not publish as
 //! data are marked as such, and so are effects the model leaves out.
 
-use super::common::{readable, RAD_S_PER_RPM};
-use super::cycle_run::stroke_average;
-use super::error::Result;
-use super::numbers::{nm, pct, sig};
-use super::figures_rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
+use crate::common::{readable, RAD_S_PER_RPM};
+use crate::commands::cycle::simulation::stroke_average;
+use crate::error::Result;
+use crate::numbers::{nm, pct, sig};
+use super::rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::TAU;
@@ -590,7 +590,7 @@ pub fn html(claims: &[Claim], escape: impl Fn(&str) -> String) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::figures_plots::CoreCurves;
+    use crate::commands::figures::plots::CoreCurves;
 
     fn joint() -> Joint {
         Joint::new(&Params::default()).unwrap()

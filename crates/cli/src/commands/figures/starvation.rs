@@ -10,12 +10,12 @@
 //!   starvation_summary.csv           per layer and load: the speed where μ falls to 0.11 and where
 //!                                    the asperities' share falls to 1/2, μ at 800 rpm, the dip
 //!
-//! Hook into `pinjoint figures` with `paths.extend(figures_starvation::write(dir, &params)?)`.
+//! `pinjoint figures` ([`super::run`]) calls [`write()`] into its output directory.
 
 
-use super::common::{csv_io, exact, log_space, RAD_S_PER_RPM, RIG_AMPLITUDE_DEG};
-use super::error::{CliError, Result};
-use super::output::{output_dir, write_atomic, write_text};
+use crate::common::{csv_io, exact, log_space, RAD_S_PER_RPM, RIG_AMPLITUDE_DEG};
+use crate::error::{CliError, Result};
+use crate::output::{output_dir, write_atomic, write_text};
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series};
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::PI;

@@ -1,10 +1,10 @@
 //! `pinjoint map`: the paper's Figure 4 — λ and μ over load and speed — as CSV and SVG,
 //! with the rig experiments' operating region marked.
 
-use super::common::{lin_space, log_space, positive, rig_peak_speed, ParamsArg, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
-use super::error::{CliError, Result};
-use super::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
-use super::curves::{curve, points_csv};
+use crate::common::{lin_space, log_space, positive, rig_peak_speed, ParamsArg, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
+use crate::error::{CliError, Result};
+use crate::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
+use crate::curves::{curve, points_csv};
 use clap::Args;
 use crate::plot::{heat_map, stacked_plot, Axis, Chart, Corner, HeatMap, Region, Series};
 use pinjoint::{Joint, OperatingPoint};

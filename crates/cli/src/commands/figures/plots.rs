@@ -2,11 +2,11 @@
 //! averages against Sommerfeld number, sliding speed and load, with the core's curves) and
 //! Figures 11–13 (torque against time at 0.03, 0.3 and 1 Hz).
 
-use super::common::{lin_space, log_space, readable};
-use super::cycle_run::stroke_average;
-use super::cycle_plots::{overview_svg, run_label, torque_time_chart, RECORDED};
-use super::error::Result;
-use super::figures_rig::{at_frequency, RigResult, PAPER_FREQUENCIES};
+use crate::common::{lin_space, log_space, readable};
+use crate::commands::cycle::simulation::stroke_average;
+use crate::commands::cycle::plots::{overview_svg, run_label, torque_time_chart, RECORDED};
+use crate::error::Result;
+use super::rig::{at_frequency, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
 use crate::plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
 use pinjoint::Joint;

@@ -2,13 +2,18 @@
 //! streaming: read, evaluate and write in bounded batches (memory independent of the
 //! number of rows). Each batch is parsed, evaluated and formatted in chunks on every core
 //! while the previous batch is written and the next one read.
+//!
+//! This folder holds the command (arguments, evaluation and output, in this file) and
+//! [`input`], which reads the CSV records in bounded batches.
 
-use super::common::{csv_io, ParamsArg, RESULT_COLUMNS};
-use super::error::{CliError, Result};
-use super::exact::push_exact;
-use super::fidelity_args::{note_fallback, range_of, FidelityArgs};
-use super::output::{refuse_inputs, to_stdout, write_atomic};
-use super::sweep_input::{split, Batch, RecordReader};
+pub mod input;
+
+use crate::common::{csv_io, ParamsArg, RESULT_COLUMNS};
+use crate::error::{CliError, Result};
+use crate::exact::push_exact;
+use crate::fidelity_args::{note_fallback, range_of, FidelityArgs};
+use crate::output::{refuse_inputs, to_stdout, write_atomic};
+use self::input::{split, Batch, RecordReader};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::fidelity::Evaluator;
@@ -160,7 +165,7 @@ fn read_header<R: BufRead>(reader: &mut RecordReader<R>, file: &str) -> Result<C
 }
 
 /// Parse, check, evaluate and format the records `recs` of `batch`.
-fn chunk(batch: &Batch, recs: &[super::sweep_input::Record], cols: &Columns, mode: &Mode, file: &str) -> Result<ChunkOut> {
+fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mode, file: &str) -> Result<ChunkOut> {
     let width = cols.header.len();
     let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
     let mut rec = csv::ByteRecord::with_capacity(64, width);

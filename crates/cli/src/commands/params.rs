@@ -1,9 +1,9 @@
 //! `pinjoint params`: print the complete parameter file (defaults, or a file's values filled up).
 
-use super::common::ParamsArg;
-use super::common::load_rig_config;
-use super::error::Result;
-use super::output::to_stdout;
+use crate::common::ParamsArg;
+use crate::common::load_rig_config;
+use crate::error::Result;
+use crate::output::to_stdout;
 use clap::Args;
 
 #[derive(Args, Debug)]

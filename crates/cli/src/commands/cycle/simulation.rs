@@ -2,8 +2,8 @@
 //! paper's cycle-average friction coefficient (eq. 11) and the cycle's characteristic speeds,
 //! the quasi-static core values to compare with, and the trace as CSV.
 
-use super::common::exact;
-use super::error::Result;
+use crate::common::exact;
+use crate::error::Result;
 use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, RigConfig, Sample};
 use pinjoint::Joint;
 use std::f64::consts::TAU;
@@ -20,7 +20,7 @@ pub struct CycleRun {
     pub cycles: usize,
     /// Strokes left out of the averages (start-up transient).
     pub skip: usize,
-    /// Samples kept for the plots: all of them up to [`crate::cycle_stream::PLOT_SAMPLES`], else
+    /// Samples kept for the plots: all of them up to [`super::stream::PLOT_SAMPLES`], else
     /// every k-th (every sample went to cycle.csv).
     pub samples: Vec<Sample>,
     /// Eq. 11: mean |recorded torque| over cycles skip+1..=cycles, divided by R·P.

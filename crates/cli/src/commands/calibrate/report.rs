@@ -3,8 +3,8 @@
 
 use pinjoint::rig::RigConfig;
 use pinjoint_calibrate::{Calibration, Estimate, Model, Reason, INERTIA, MU_C};
-use super::common::exact;
-use super::error::Result;
+use crate::common::exact;
+use crate::error::Result;
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series, Style};
 use serde_json::{json, Map, Value};
 use std::io::{self, Write};

@@ -1,9 +1,9 @@
 //! `pinjoint point`: one operating point as a table or one JSON object.
 
-use super::common::{finite, readable, ParamsArg, RAD_S_PER_RPM};
-use super::error::Result;
-use super::fidelity_args::{note_fallback, FidelityArgs};
-use super::output::to_stdout;
+use crate::common::{finite, readable, ParamsArg, RAD_S_PER_RPM};
+use crate::error::Result;
+use crate::fidelity_args::{note_fallback, FidelityArgs};
+use crate::output::to_stdout;
 use clap::Args;
 use pinjoint::record::{Record, Value, LUBRICANT};
 use pinjoint::OperatingPoint;
@@ -135,7 +135,7 @@ pub fn run(cmd: &PointCmd) -> Result<()> {
     let op = if cmd.fidelity.is_full()? {
         joint.evaluate(cmd.load, omega)?
     } else {
-        let p = super::common::positive("load magnitude", cmd.load.abs(), "N")?;
+        let p = crate::common::positive("load magnitude", cmd.load.abs(), "N")?;
         let w = omega.abs();
         let speeds = if w > 0.0 { (0.5 * w, 2.0 * w) } else { (1e-3, 1.0) };
         let mut ev = cmd.fidelity.build(&cmd.params.load()?, (0.5 * p, 2.0 * p), speeds)?;

@@ -8,7 +8,7 @@
 //! is split on commas here (the common case, no copy of the text but into the reused
 //! record); any other goes through a `csv` reader.
 
-use super::error::{CliError, Result};
+use crate::error::{CliError, Result};
 use std::io::{BufRead, Read};
 
 /// The longest record accepted, in bytes: keeps memory bounded whatever the input.

@@ -3,9 +3,9 @@
 //! average, characteristic speeds), and the measures the captions quote (flatness of the
 //! slow stroke, mid-stroke dip, servo oscillation).
 
-use super::common::{csv_io, exact};
-use super::cycle_run::{core_torque, CycleRun, CYCLE_COLUMNS};
-use super::error::Result;
+use crate::common::{csv_io, exact};
+use crate::commands::cycle::simulation::{core_torque, CycleRun, CYCLE_COLUMNS};
+use crate::error::Result;
 use pinjoint::paper::LOADS as PAPER_LOADS;
 use indicatif::ProgressBar;
 use pinjoint::rig::{RigConfig, Sample};
@@ -239,7 +239,7 @@ pub fn traces_csv(w: &mut dyn std::io::Write, runs: &[&CycleRun]) -> std::io::Re
     for run in runs {
         let t0 = run.skip as f64 * run.period();
         for s in run.window() {
-            let row = [exact(run.load()), exact(s.time - t0)].into_iter().chain(super::cycle_run::sample_fields(s));
+            let row = [exact(run.load()), exact(s.time - t0)].into_iter().chain(crate::commands::cycle::simulation::sample_fields(s));
             wtr.write_record(row).map_err(csv_io)?;
         }
     }

@@ -1,16 +1,32 @@
 //! `pinjoint figures`: the paper's Figures 3, 4, 7, 8–10 (simulated side) and 11–13 in one run,
 //! on the built-in parameters, with an index page and a README in the output directory.
+//!
+//! This folder holds the command and its parts, each in a module (in dependency order):
+//! [`rig`] simulates the paper's 15 rig conditions; [`mod@claims`] computes the claims table;
+//! [`plots`] draws Figures 7–13; [`index`] writes the captions, `index.html` and `README.md`;
+//! [`starvation`] and [`at_rest`] are the extensions' figures. This file holds the
+//! command's arguments and [`run`], which writes Figures 3 and 4 (through `stribeck` and
+//! `map`) and calls the parts. A new figure goes in a module of its own here, declared
+//! below and called from [`run`], with an entry in [`index`].
 
-use super::common::{csv_io, exact, lin_space, log_space, readable, PAPER_RPM_RANGE, RAD_S_PER_RPM};
-use super::error::Result;
-use super::figures_claims::claims;
-use super::figures_index::{entries, html, markdown, RunInfo};
-use super::figures_plots::{fig10_svg, fig7_svg, fig8_svg, fig9_svg, nominal_speed, torque_cycle_svg, CoreCurves};
-use super::figures_rig::{at_frequency, averages_csv, conditions, find, simulate_all, traces_csv, RigResult, RigSettings, PAPER_FREQUENCIES};
-use super::map::{write_map, Grid};
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+pub mod rig;
+pub mod claims;
+pub mod plots;
+pub mod index;
+pub mod starvation;
+pub mod at_rest;
+
+use crate::common::{csv_io, exact, lin_space, log_space, readable, PAPER_RPM_RANGE, RAD_S_PER_RPM};
+use crate::error::Result;
+use self::claims::claims;
+use self::index::{entries, html, markdown, RunInfo};
+use self::plots::{fig10_svg, fig7_svg, fig8_svg, fig9_svg, nominal_speed, torque_cycle_svg, CoreCurves};
+use self::rig::{at_frequency, averages_csv, conditions, find, simulate_all, traces_csv, RigResult, RigSettings, PAPER_FREQUENCIES};
+use crate::commands::map::{write_map, Grid};
 use pinjoint::paper::LOADS as PAPER_LOADS;
-use super::output::{output_dir, to_stdout, write_atomic, write_text};
-use super::stribeck::{write_stribeck, DEFAULT_SPEED_RANGE};
+use crate::output::{output_dir, to_stdout, write_atomic, write_text};
+use crate::commands::stribeck::{write_stribeck, DEFAULT_SPEED_RANGE};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::rig::RigConfig;
@@ -190,9 +206,9 @@ pub fn run(cmd: &FiguresCmd) -> Result<()> {
     bar.set_message("figures");
     paths.extend(rig_figures(&dir, &results, &core, pin_radius, cfg.rig.amplitude)?);
     // The starved-inlet extension (off by default): how it moves Fig. 3 and the 1 Hz cycle.
-    paths.extend(super::figures_starvation::write(&dir, &cfg.model)?);
+    paths.extend(self::starvation::write(&dir, &cfg.model)?);
     // Friction at rest: the band and the presliding state under a holding drive and a small loop.
-    paths.extend(super::figures_at_rest::write(&dir, &cfg.model)?);
+    paths.extend(self::at_rest::write(&dir, &cfg.model)?);
     let info = RunInfo { quick: cmd.quick, samples_per_cycle: rig_settings.samples_per_cycle, rtol: rig_settings.rtol, atol: rig_settings.atol };
     let list = entries(&joint, &results, &core)?;
     let table = claims(&joint, &results, cfg.rig.amplitude)?;

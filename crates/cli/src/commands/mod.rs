@@ -1,0 +1,20 @@
+//! The subcommands of `pinjoint`, one module each: a file for a command that fits in one
+//! ([`params`], [`point`], [`stribeck`], [`map`]), a folder for one with parts ([`sweep`],
+//! [`cycle`], [`calibrate`], [`figures`]: the command in its `mod.rs`, each part in a file
+//! beside it). Every command module holds its clap arguments (`…Cmd`, whose doc comments and
+//! `#[command]` attributes are its `--help`) and its `run`; the pieces they share (parameter
+//! files, output files, numbers, plots) are the crate's top-level modules.
+//!
+//! A new command is a new module here (a file, or a folder once it has parts), declared below
+//! after the commands it uses, plus a variant of [`crate::Command`] and its arm in
+//! [`crate::run`].
+
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+pub mod params;
+pub mod point;
+pub mod sweep;
+pub mod stribeck;
+pub mod map;
+pub mod cycle;
+pub mod calibrate;
+pub mod figures;
