@@ -189,16 +189,17 @@ impl Complete {
     }
 
     /// The journal's weight w at ln S (eq. 20 at the whole load with η_b(T); −∞ at rest: w = 0):
-    /// ρ_J = 1 − ε(S), below T_ref (cold supply) the supplied ρ_J = (1 − ε(S_ref))·ratio,
-    /// S_ref the Sommerfeld number with η_b(T_ref).
+    /// w(ρ_J), ρ_J = 1 − ε(S); below T_ref (cold supply) ε(S_ref), S_ref the Sommerfeld number
+    /// with η_b(T_ref): the weights of the two films stay those of the flooded joint at T_ref,
+    /// and both films are the reference's scaled by the replenishment ratio, so the composite
+    /// film is too (non-increasing as T falls, at every load share).
     #[inline]
     pub fn weight(&self, ln_sommerfeld: f64) -> f64 {
         if ln_sommerfeld == f64::NEG_INFINITY {
             return 0.0;
         }
         let (e, _) = self.journal.eccentricity(ln_sommerfeld + self.ln_eta_shift);
-        let rho = 1.0 - e;
-        journal_weight(if self.ln_supply == 0.0 { rho } else { rho * self.ln_supply.exp() })
+        journal_weight(1.0 - e)
     }
 
     /// The journal's film for the solve, `None` where w = 0 (the paper's film alone): with the
