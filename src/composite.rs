@@ -18,7 +18,8 @@
 //!   friction variable (R/c)f = 2π²S/√(1 − ε²) + (ε/2) sin φ is the two terms at w = 1).
 //!   At rest T = μ_c·R·P + τ_y(T)·(2π − 2a/R)·R²·B: the grease's yield torque adds to breakaway.
 
-use crate::clearance::{clearance_torque, yield_torque, Rheology};
+use crate::clearance::{clearance_torque, yield_torque};
+use crate::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
 use crate::mixed::{JournalFilm, LoadSharing};
 use crate::params::{ParamError, Params};
@@ -55,16 +56,17 @@ pub fn journal_weight(rho: f64) -> f64 {
 pub fn rheology(params: &Params, base_viscosity: f64) -> Rheology {
     let g = &params.grease;
     if !g.enabled {
-        return Rheology { yield_stress: 0.0, consistency: 0.0, flow_index: 1.0, base_viscosity };
+        return Rheology::newtonian(base_viscosity);
     }
-    let l = &params.lubricant;
-    let d = 1.0 / l.temperature - 1.0 / l.reference_temperature;
-    Rheology {
-        yield_stress: g.yield_stress * (g.yield_activation * d).exp(),
-        consistency: g.consistency * (g.consistency_activation * d).exp(),
+    let reference = GreaseReference {
+        yield_stress: g.yield_stress,
+        consistency: g.consistency,
         flow_index: g.flow_index,
-        base_viscosity,
-    }
+        yield_activation: g.yield_activation,
+        consistency_activation: g.consistency_activation,
+    };
+    let l = &params.lubricant;
+    reference.at(l.temperature, l.reference_temperature, base_viscosity)
 }
 
 /// The complete model's terms of one joint at one temperature.
