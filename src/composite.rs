@@ -216,6 +216,15 @@ impl Complete {
         })
     }
 
+    /// The journal's film of the flooded joint at ln S (no cold supply), with its weight:
+    /// what the start table's nodes are solved with (they hold the reference temperature's
+    /// roots). `None` where w = 0.
+    pub fn reference_journal_film(&self, ln_sommerfeld: f64) -> Option<JournalFilm<'_>> {
+        let (e, _) = self.journal.eccentricity(ln_sommerfeld);
+        let weight = journal_weight(1.0 - e);
+        (weight > 0.0).then_some(JournalFilm { weight, ln_sommerfeld, ln_clearance: self.ln_clearance, table: &self.journal })
+    }
+
     /// ε_g = 1 − h/c for the film `film` (m), clamped to [0, 1).
     #[inline]
     pub fn eccentricity(&self, film: f64) -> f64 {

@@ -93,7 +93,7 @@ fn sweep_with_temperatures_at_every_fidelity() {
         let (mu, torque, col_v) = (h.iter().position(|c| c == "friction_coefficient").unwrap(), h.iter().position(|c| c == "torque").unwrap(), h.len() - 1);
         assert_eq!(out.len(), pts.len());
         for (k, (row, &(p, w, t))) in out.iter().zip(&pts).enumerate() {
-            let expect = validity::of_point(p, w.abs() * 0.028, t);
+            let expect = validity::of_point(p, w.abs() * 0.028, t, false);
             assert_eq!(row[col_v], expect.as_str(), "{fidelity} row {k}: {p} N, {w} rad/s, {t} K");
             let op = joints[&t.to_bits()].evaluate(p, w).unwrap();
             let got: f64 = row[mu].parse().unwrap();
@@ -121,7 +121,7 @@ fn stribeck_and_map_carry_the_validity_column() {
         let mut seen = std::collections::BTreeSet::new();
         for r in &rows {
             let (p, w): (f64, f64) = (r[0].parse().unwrap(), r[1].parse().unwrap());
-            assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, tk).as_str());
+            assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, tk, false).as_str());
             seen.insert(r[h.len() - 1].clone());
         }
         let expect: Vec<&str> = match (t, load) {
@@ -142,7 +142,7 @@ fn stribeck_and_map_carry_the_validity_column() {
     assert_eq!(h.last().map(String::as_str), Some("validity"));
     for r in &rows {
         let (p, w): (f64, f64) = (r[0].parse().unwrap(), r[1].parse().unwrap());
-        assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, 293.15).as_str());
+        assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, 293.15, false).as_str());
     }
     let svgs: Vec<String> = std::fs::read_dir(&dir).unwrap().filter_map(|e| {
         let p = e.unwrap().path();
