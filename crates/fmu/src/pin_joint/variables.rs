@@ -26,10 +26,12 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (5: version 4's values, then the zero-velocity
-/// model and presliding parameters and the presliding state). The state also carries its
-/// value count, so a layout with another number of values is refused whatever its version.
-pub const STATE_VERSION: u8 = 5;
+/// Version of the serialized state's layout (6: version 5's with the complete model's eight
+/// parameters, `model.paper` and `grease.*`, after the paper's; 5: version 4's values, then the
+/// zero-velocity model and presliding parameters and the presliding state). The state also
+/// carries its value count, so a layout with another number of values is refused whatever its
+/// version.
+pub const STATE_VERSION: u8 = 6;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;

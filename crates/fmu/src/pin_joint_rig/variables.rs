@@ -31,8 +31,9 @@ use std::sync::LazyLock;
 
 pub use super::settings::rig_spec;
 
-/// Version of the serialized state's layout (3: the `temperature` input is the last setting).
-pub const STATE_VERSION: u8 = 3;
+/// Version of the serialized state's layout (4: version 3's with the complete model's eight
+/// parameters, `model.paper` and `grease.*`; 3: the `temperature` input is the last setting).
+pub const STATE_VERSION: u8 = 4;
 
 /// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
 pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
