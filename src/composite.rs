@@ -156,7 +156,11 @@ impl Complete {
             name: "geometry.bush_length".into(),
             value: g.bush_length,
             unit: "m",
-            range: format!("such that the journal bearing of L/D = {} can be solved ({e})", crate::fmt::Num(l_over_d)),
+            range: format!(
+                "such that the journal bearing's L/D = B/(2R) (here {} with geometry.pin_radius = {} m) can be solved ({e})",
+                crate::fmt::Num(l_over_d),
+                crate::fmt::Num(g.pin_radius)
+            ),
         })?;
         let c = params.radial_clearance();
         let mut complete = Self {

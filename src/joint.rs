@@ -76,10 +76,11 @@ pub enum ModelError {
         /// The largest load the asperity model carries for these parameters (N).
         capacity: f64,
     },
-    /// The central film would be thicker than the diametral clearance 2(R_b − R), the widest
-    /// gap the bush leaves around the pin: the line-contact film of eq. 12 has left the
-    /// geometry it was derived for (a lubricant too viscous for this speed and load: a low
-    /// temperature, a high speed or a light load).
+    /// The paper's model only (`model.paper = true`): the central film would be thicker than
+    /// the diametral clearance 2(R_b − R), the widest gap the bush leaves around the pin: the
+    /// line-contact film of eq. 12 has left the geometry it was derived for (a lubricant too
+    /// viscous for this speed and load: a low temperature, a high speed or a light load). The
+    /// complete model hands the film to the journal bearing there ([`crate::composite`]).
     #[error(
         "the model gives film_thickness = {h} m at load = {l} N, angular velocity = {w} rad/s, more than the \
          diametral clearance 2(R_b - R) = {c} m the bush leaves around the pin: the line-contact film (eq. 12) \
@@ -821,7 +822,8 @@ impl Joint {
     }
 
     /// The diametral clearance 2(R_b − R) (m): the widest gap the bush leaves around the pin,
-    /// and so the largest central film the model answers with ([`ModelError::FilmBeyondClearance`]).
+    /// and so the largest central film the paper's model answers with
+    /// ([`ModelError::FilmBeyondClearance`]; the complete model's film is the composite one).
     pub fn max_film_thickness(&self) -> f64 {
         2.0 * self.params.radial_clearance()
     }
