@@ -500,7 +500,12 @@ fn unit_text(unit: &'static str) -> &'static str {
 impl Params {
     /// Check every value against its range and the cross-constraints.
     pub fn validate(&self) -> Result<(), ParamError> {
+        // The paper's model's own temperature floor first (its message names the way out).
+        let paper_range = self.model.paper && self.lubricant.temperature.is_finite() && !(PAPER_MIN_TEMPERATURE..=MAX_TEMPERATURE).contains(&self.lubricant.temperature);
         for s in PARAMS.iter() {
+            if paper_range && s.section == "lubricant" && s.key == "temperature" {
+                break;
+            }
             let v = (s.get)(self);
             if !v.is_finite() {
                 return Err(ParamError::NotFinite { name: s.name(), value: v, unit: unit_text(s.unit) });
@@ -514,7 +519,7 @@ impl Params {
                 });
             }
         }
-        if self.model.paper && self.lubricant.temperature < PAPER_MIN_TEMPERATURE {
+        if paper_range {
             return Err(ParamError::OutOfRange {
                 name: "lubricant.temperature".into(),
                 value: self.lubricant.temperature,

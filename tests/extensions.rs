@@ -169,7 +169,8 @@ fn fmu_temperature_input_and_min_film_outputs_are_the_library_values() {
     let index = |name: &str| TABLE.index(name).unwrap();
     let (angular_velocity, load, temperature) = (index("angular_velocity"), index("load"), index("temperature"));
     let mut m = PinJointModel::new();
-    // Default input 293.15 K: the paper model, bit for bit.
+    // Default input 293.15 K, with model.paper = true: the paper model, bit for bit.
+    m.set_real(index("model.paper"), 1.0);
     assert_eq!(m.get_real(temperature), 293.15);
     m.set_real(load, 20e3);
     m.set_real(angular_velocity, 1.0);
