@@ -35,7 +35,7 @@ use crate::mixed::FilmGroups;
 /// when the supply limits the film (grease enabled, T < T_ref); `None` when the contact is
 /// flooded (T ≥ T_ref or grease disabled).
 pub fn ln_supply_ratio(enabled: bool, exponent: f64, temperature: f64, reference_temperature: f64, ln_eta_ref: f64, ln_eta: f64) -> Option<f64> {
-    (enabled && temperature < reference_temperature).then(|| exponent * (ln_eta_ref - ln_eta))
+    (enabled && temperature < reference_temperature).then_some(exponent * (ln_eta_ref - ln_eta))
 }
 
 /// The film groups of the supplied film: `reference` (eq. 12's groups with η0 and α at
