@@ -31,6 +31,18 @@
 //! base oil's η_b(T) is the model's Roelands relation (the paper's eq. 5 temperature form,
 //! `crate::roelands_temperature`), passed in by the caller.
 //!
+//! # The base oil
+//! With the paper's values (η0 = 12.45 mPa·s at 20 °C, η∞ = 6.31e-5 Pa·s, S0 = 1.262) the
+//! Roelands relation gives η_b = 1.44 mPa·s at 100 °C, 5.88 mPa·s at 40 °C, 34 mPa·s at
+//! 0 °C, 1.14 Pa·s at −40 °C, 10.1 Pa·s at −54 °C and 1.24 kPa·s at −73 °C (it steepens
+//! towards its pole at −135 °C). Published base-oil viscosities of AeroShell Grease 33 or
+//! another MIL-PRF-23827 Type I grease were NOT found (searched 2026-11-27; a secondary
+//! source, legalclarity.org on MIL-PRF-23827, says Type I is a metallic-soap, typically
+//! lithium, grease on a diester base oil for −73 °C to 121 °C). As recalled, not verified:
+//! diester base oils of such greases have about 10–12 mm²/s at 40 °C and 3 mm²/s at 100 °C,
+//! i.e. about twice the paper's η0(T) at 40 °C (5.9 mPa·s ≈ 6.3 mm²/s); the paper's value
+//! is what the model uses.
+//!
 //! # Defaults and their sources
 //! See the constants below ([`DEFAULT_YIELD_STRESS`] …) and the notes on each: which are
 //! published data for this grease class, which are chosen where none was found, and how the
@@ -166,12 +178,16 @@ impl GreaseRheology {
 // ---------------------------------------------------------------------------------------
 
 /// τ_y at 20 °C, 200 Pa: CHOSEN, no published value for a MIL-PRF-23827 Type I grease was
-/// found. Published yield stresses of NLGI 1–2 lithium and lithium-complex greases at room
-/// temperature (oscillatory strain sweeps, the method Cyriac, Lugt & Bosman 2015 recommend)
-/// lie between about 10² and 10³ Pa, the softer grades lower; a Type I grease is a soft
-/// grade (worked penetration about 270–310, NLGI 1–2). Sensitivity: the yield torque at
-/// rest is τ_y·2π R²B = 0.059 N·m at 200 Pa for the paper's pin (R = 28 mm, B = 59.4 mm),
-/// 0.1 % of the joint's breakaway torque at 20 kN (μ R P ≈ 62 N·m); even 1000 Pa is 0.5 %.
+/// found (searched 2026-11-27: AeroShell Grease 33 data, MIL-PRF-23827, lithium-complex
+/// grease rheology). Published yield stresses of NLGI 1–2 lithium and lithium-complex greases
+/// at room temperature (oscillatory strain sweeps, the method Cyriac, Lugt & Bosman 2015
+/// recommend) lie between about 10² and 10³ Pa, the softer grades lower (as recalled, not a
+/// table found here); the Type I greases are soft (NLGI 1–2). Westerberg et al. (2018,
+/// "Contaminant particle motion in lubricating grease flow", Lubricants 6(1), 10) model
+/// lithium greases of NLGI 00–2 as Herschel–Bulkley fluids (the form used here; their fitted
+/// numbers were not at hand). Sensitivity: the yield torque at rest is τ_y·2π R²B = 0.059 N·m
+/// at 200 Pa for the paper's pin (R = 28 mm, B = 59.4 mm), 0.1 % of the joint's breakaway
+/// torque at 20 kN (μ R P ≈ 62 N·m); 1000 Pa would be 0.5 %.
 pub const DEFAULT_YIELD_STRESS: f64 = 200.0;
 
 /// K at 20 °C, 20 Pa·sⁿ: CHOSEN (no published Herschel–Bulkley fit of this grease found):
@@ -207,15 +223,23 @@ pub const DEFAULT_YIELD_ACTIVATION: f64 = 3000.0;
 /// E_y/R = 2000–4000 K gives 381–1103 Pa·s.
 pub const DEFAULT_CONSISTENCY_ACTIVATION: f64 = 4000.0;
 
-/// m, the cold-supply exponent (PHYSICS item 4): 1. The oil that reaches the track comes
-/// from bleeding and capillary reflow, both viscous flows of the base oil driven by
-/// capillary pressure: Darcy flow of the base oil through the thickener's porous structure
-/// (Baart, van der Vorst, Lugt & van Ostayen, 2010, "Oil-bleeding model for lubricating
-/// grease based on viscous flow through a porous microstructure", Tribol. Trans. 53,
-/// 340–348) and capillary replenishment of the track (Gershuni, Larson & Lugt, 2008,
-/// "Lubricant replenishment in rolling bearing contacts", Tribol. Trans. 51, 643–651), each
-/// a rate ∝ σ/η_b with the surface tension σ nearly constant: m = 1. Not verified against
-/// the papers' text here (titles and findings as recalled); sensitivity 0.5–2 to be shown.
+/// m, the cold-supply exponent (the complete model's `grease.supply_exponent`): 1. The oil
+/// that reaches the track comes from the grease by bleeding and capillary reflow, viscous
+/// flows of the base oil driven by capillary (wetting) pressure, at a rate ∝ σ/η_b with the
+/// surface tension σ nearly independent of temperature, hence ∝ 1/η_b: m = 1. Sources found
+/// (searched 2026-11-27): Akchurin, van den Ende & Lugt (2022, "Modeling impact of grease
+/// mechanical ageing on bleed and permeability in rolling bearings", Tribol. Int. 170,
+/// 107507) treat the grease as a porous medium and interpret bleed by Darcy's law (flux ∝
+/// permeability/η); Zhang, Mugele, Lugt & van den Ende (2020, "Characterizing the
+/// fluid–matrix affinity in an organogel from the growth dynamics of oil stains on blotting
+/// paper", Soft Matter; arXiv 1909.08743) describe the oil's release from grease by a
+/// Washburn-like law (time scale ∝ η/affinity). Recalled, not verified here: Baart, van der
+/// Vorst, Lugt & van Ostayen (2010, Tribol. Trans. 53, 340–348), the Darcy bleed model;
+/// Gershuni, Larson & Lugt (2008, Tribol. Trans. 51, 643–651), capillary replenishment of the
+/// track. No measurement of the replenished film against temperature that would fix m was
+/// found: m = 0.5–2 is the sensitivity range to show (at −54 °C with the paper's oil,
+/// η_b(20 °C)/η_b(−54 °C) = 1.2e-3, so the supplied film scale is 0.035, 1.2e-3 or 1.5e-6 of
+/// the reference for m = 0.5, 1, 2).
 pub const DEFAULT_SUPPLY_EXPONENT: f64 = 1.0;
 
 #[cfg(test)]
@@ -228,8 +252,8 @@ mod tests {
         let cold = arrhenius(200.0, 3000.0, 219.15, 293.15);
         assert!((cold / 200.0 - (3000.0f64 * (1.0 / 219.15 - 1.0 / 293.15)).exp()).abs() < 1e-12);
         let mut prev = f64::INFINITY;
-        for i in 0..100 {
-            let t = 218.15 + i as f64 * 1.75;
+        for i in 0..100u32 {
+            let t = 218.15 + f64::from(i) * 1.75;
             let v = arrhenius(200.0, 3000.0, t, 293.15);
             assert!(v < prev);
             prev = v;

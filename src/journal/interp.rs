@@ -25,7 +25,7 @@ impl Monotone {
     /// known asymptote; `None`: the last interval's secant.
     pub fn with_last_slope(x: Vec<f64>, y: Vec<f64>, last: Option<f64>) -> Option<Self> {
         let n = x.len();
-        if n < 2 || y.len() != n || x.windows(2).any(|w| !(w[1] > w[0])) || y.iter().any(|v| !v.is_finite()) {
+        if n < 2 || y.len() != n || x.windows(2).any(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater)) || y.iter().any(|v| !v.is_finite()) {
             return None;
         }
         let h: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
@@ -83,11 +83,11 @@ mod tests {
 
     #[test]
     fn reproduces_a_cubic_closely_and_a_line_exactly() {
-        let x: Vec<f64> = (0..20).map(|i| i as f64 * 0.25).collect();
+        let x: Vec<f64> = (0..20u32).map(|i| f64::from(i) * 0.25).collect();
         let line: Vec<f64> = x.iter().map(|v| 3.0 - 2.0 * v).collect();
         let m = Monotone::new(x.clone(), line).unwrap();
-        for i in 0..100 {
-            let t = -1.0 + i as f64 * 0.07;
+        for i in 0..100u32 {
+            let t = -1.0 + f64::from(i) * 0.07;
             let (v, d) = m.eval(t);
             assert!((v - (3.0 - 2.0 * t)).abs() < 1e-12 && (d + 2.0).abs() < 1e-12);
         }

@@ -46,11 +46,11 @@ pub fn long_bearing(eps: f64) -> (f64, f64, f64) {
     // ∫_{−π}^{θ2} g(θ) dθ in ψ (ψ from −π to ψ(θ2)).
     let integrate = |theta2: f64, g: &dyn Fn(f64) -> f64| {
         let (a, b) = (-PI, psi_of(theta2));
-        let panels = 400;
-        let w = (b - a) / panels as f64;
+        let panels: u32 = 400;
+        let w = (b - a) / f64::from(panels);
         let mut sum = 0.0;
         for p in 0..panels {
-            let mid = a + (p as f64 + 0.5) * w;
+            let mid = a + (f64::from(p) + 0.5) * w;
             for (x, wt) in GAUSS8 {
                 let psi = mid + 0.5 * w * x;
                 sum += 0.5 * w * wt * g(theta_of(psi)) * dtheta(psi);

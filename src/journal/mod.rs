@@ -6,6 +6,7 @@
 //! - [`reynolds`]: the finite-volume solution of the Reynolds equation of the finite bearing
 //!   with the Swift–Stieber (Reynolds) cavitation condition at one ε (a linear complementarity
 //!   problem, solved by a primal–dual active-set method with a banded Cholesky factorisation).
+//! - [`error`]: the errors, [`JournalError`].
 //! - [`limits`]: the limits it tends to (Petroff's concentric journal, Ocvirk's short bearing,
 //!   the infinitely long bearing with the Reynolds condition by 1-D quadrature).
 //! - [`interp`]: the monotone C¹ interpolation of the table.
@@ -22,28 +23,10 @@
 //! pressure, no supply groove).
 
 pub mod reynolds;
+pub mod error;
 pub mod limits;
 pub mod interp;
 pub mod table;
 
+pub use error::JournalError;
 pub use table::JournalTable;
-
-/// Errors of the journal-bearing table.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum JournalError {
-    /// The length-to-diameter ratio is not a positive finite number.
-    #[error("journal bearing: the length-to-diameter ratio L/D = B/(2R) = {value} (dimensionless) must be positive and finite")]
-    LengthToDiameter {
-        /// L/D given.
-        value: f64,
-    },
-    /// A Reynolds solve failed (not reachable for a valid L/D; a guard).
-    #[error(transparent)]
-    Solve(#[from] reynolds::SolveError),
-    /// The solved S(ε) was not strictly decreasing (not reachable; a guard of the table).
-    #[error("journal bearing: the solved Sommerfeld numbers are not strictly decreasing in the eccentricity ratio at L/D = {length_to_diameter}")]
-    NotMonotone {
-        /// L/D of the table.
-        length_to_diameter: f64,
-    },
-}

@@ -322,8 +322,8 @@ mod tests {
         for &eps in &[0.1f64, 0.5, 0.9, 0.99] {
             let k: f64 = ((1.0 - eps) / (1.0 + eps)).sqrt();
             let beta = (1.0 - k) / (1.0 + k);
-            for i in 0..50 {
-                let t = -3.0 + 6.0 * i as f64 / 49.0;
+            for i in 0..50u32 {
+                let t = -3.0 + 6.0 * f64::from(i) / 49.0;
                 let psi = psi_of_theta(t, beta);
                 assert!((theta_of_psi(psi, beta) - t).abs() < 1e-12);
                 // tan(θ/2) = k tan(ψ/2)

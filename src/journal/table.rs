@@ -22,7 +22,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use super::JournalError;
+use super::error::JournalError;
 use super::interp::Monotone;
 use super::reynolds::{Grid, solve};
 
@@ -60,13 +60,13 @@ impl JournalTable {
     /// first use (a few milliseconds; `benches/journal.rs`).
     pub fn shared(length_to_diameter: f64) -> Result<Arc<JournalTable>, JournalError> {
         let key = length_to_diameter.to_bits();
-        if let Some(t) = cache().lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+        if let Some(t) = cache().lock().unwrap_or_else(std::sync::PoisonError::into_inner).get(&key) {
             return Ok(Arc::clone(t));
         }
         let table = Arc::new(Self::build(length_to_diameter)?);
         // A poisoned lock only means another thread panicked while holding it: the map is
         // still a valid map, so go on with it.
-        let mut map = cache().lock().unwrap_or_else(|e| e.into_inner());
+        let mut map = cache().lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         if map.len() >= CACHE_MAX {
             map.clear();
         }
@@ -195,6 +195,14 @@ impl JournalTable {
         self.attitude_of_logit.eval(y).0
     }
 
+    /// The pressure-flow (Poiseuille) torque on the journal, (c ε/2) W sin φ(ε) (N·m), at
+    /// eccentricity ratio `eps`, radial clearance `clearance` c (m) and load `load` W (N):
+    /// the part of the journal's friction the Couette shear of the clearance does not
+    /// hold (∫(h/2) ∂p/∂x dA by parts; Raimondi & Boyd's friction variable includes it).
+    pub fn poiseuille_torque(&self, eps: f64, clearance: f64, load: f64) -> f64 {
+        0.5 * clearance * eps * load * self.attitude_angle(eps).sin()
+    }
+
     /// The friction variable (R/c)·f at eccentricity ratio `eps` ∈ (0, 1):
     /// 2π² S/√(1 − ε²) + ε sin φ/2 (the journal's friction: Couette over the whole
     /// clearance plus the pressure-flow term), as Raimondi & Boyd tabulate it.
@@ -301,8 +309,8 @@ mod tests {
         assert!((ratio(0.005) - 1.0).abs() < 1e-4, "{}", ratio(0.005));
         assert!((ratio(0.05) - 1.0).abs() < 5e-3, "{}", ratio(0.05));
         assert!(ratio(0.05) - 1.0 > 50.0 * (ratio(0.005) - 1.0));
-        for i in 1..200 {
-            let eps = i as f64 / 200.0;
+        for i in 1..200u32 {
+            let eps = f64::from(i) / 200.0;
             assert!(ratio(eps) > 1.0, "ε {eps}: {}", ratio(eps));
         }
     }
@@ -418,8 +426,8 @@ mod tests {
         let t = JournalTable::build(1.0606).unwrap();
         let mut prev = t.attitude_angle(0.0);
         assert!(prev > 80f64.to_radians() && prev < 90f64.to_radians());
-        for i in 1..=1000 {
-            let eps = 1.0 - (1.0 - i as f64 / 1000.0).max(1e-9) * 1.0;
+        for i in 1..=1000u32 {
+            let eps = 1.0 - (1.0 - f64::from(i) / 1000.0).max(1e-9);
             let phi = t.attitude_angle(eps.min(1.0 - 1e-9));
             assert!(phi <= prev + 1e-15, "ε {eps}");
             prev = phi;
