@@ -18,7 +18,7 @@
 //!   friction variable (R/c)f = 2π²S/√(1 − ε²) + (ε/2) sin φ is the two terms at w = 1).
 //!   At rest T = μ_c·R·P + τ_y(T)·(2π − 2a/R)·R²·B: the grease's yield torque adds to breakaway.
 
-use crate::clearance::{clearance_torque, yield_torque};
+use crate::clearance::{clearance_torque_tabulated, yield_torque, ClearanceGeometry, PowerLawTable};
 use crate::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
 use crate::mixed::{JournalFilm, LoadSharing};
@@ -81,6 +81,9 @@ pub struct Complete {
     length: f64,
     /// The clearance's lubricant at the temperature.
     pub rheology: Rheology,
+    /// J_n of the grease's flow index, tabulated once per n (process-wide; the clearance
+    /// torque's power-law part by a lookup instead of the 12-node rule).
+    power_law: Arc<PowerLawTable>,
     /// The cold supply ([`crate::cold_supply`]): ln of the replenishment ratio (0 where the
     /// contact is flooded), and ln(η_b(T_ref)/η_b(T)) (0 there too): the journal's film is, as
     /// the line contact's, the reference temperature's scaled by the ratio.
@@ -163,7 +166,14 @@ impl Complete {
             ),
         })?;
         let c = params.radial_clearance();
+        let power_law = PowerLawTable::shared(params.grease.flow_index).map_err(|e| ParamError::OutOfRange {
+            name: "grease.flow_index".into(),
+            value: params.grease.flow_index,
+            unit: "(dimensionless)",
+            range: format!("in (0, 1] ({e})"),
+        })?;
         let mut complete = Self {
+            power_law,
             journal,
             clearance: c,
             ln_clearance: c.ln(),
@@ -250,7 +260,8 @@ impl Complete {
     /// The clearance's torque (N·m) at sliding speed `u` (m/s) for the film `film` (m).
     #[inline]
     pub fn clearance_torque(&self, weight: f64, half_width: f64, u: f64, film: f64) -> f64 {
-        clearance_torque(&self.rheology, u, self.radius, self.length, self.clearance, self.eccentricity(film), self.contact_angle(weight, half_width))
+        let geometry = ClearanceGeometry { radius: self.radius, length: self.length, clearance: self.clearance };
+        clearance_torque_tabulated(&self.power_law, &self.rheology, &geometry, u, self.eccentricity(film), self.contact_angle(weight, half_width)).total()
     }
 
     /// Every part at the solved load sharing `ls`, weight w, ln S at the whole load, Hertz
