@@ -295,7 +295,7 @@ mod tests {
         let h = 1e-4;
         let mut prev = 0.0;
         for i in 1..=1000 {
-            let t = i as f64 / 1000.0;
+            let t = f64::from(i) / 1000.0;
             let v = smoothstep(t);
             assert!(v >= prev);
             prev = v;

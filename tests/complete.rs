@@ -154,7 +154,8 @@ fn continuous_across_the_transitions_in_load_speed_and_temperature() {
     // at 2 kN), and T_ref (the cold supply starts there) at 20 kN and 3 rad/s, at 2 kN and
     // 30 rad/s (through the journal's region).
     let j = Joint::new(&Params::default()).unwrap();
-    let sweeps: Vec<(&str, f64, f64, Box<dyn Fn(f64) -> [f64; 3]>)> = vec![
+    type Sweep<'a> = (&'a str, f64, f64, Box<dyn Fn(f64) -> [f64; 3] + 'a>);
+    let sweeps: Vec<Sweep> = vec![
         ("load", 100f64.ln(), 100e3f64.ln(), Box::new(|x: f64| tfl(&j, x.exp(), 30.0))),
         ("speed", 0.01f64.ln(), 200f64.ln(), Box::new(|x: f64| tfl(&j, 2e3, x.exp()))),
         ("temperature", 253.15, 313.15, Box::new(|t: f64| tfl(&Joint::new(&at(t)).unwrap(), 20e3, 3.0))),
@@ -180,9 +181,9 @@ fn within_three_percent_of_the_paper_at_the_rig_conditions() {
     let paper = Joint::new(&Params::paper()).unwrap();
     let mut worst = (0.0f64, 0.0, 0.0);
     for k in 0..=24 {
-        let load = 5e3 * 12f64.powf(k as f64 / 24.0);
+        let load = 5e3 * 12f64.powf(f64::from(k) / 24.0);
         for m in 0..=40 {
-            let omega = if m == 0 { 0.0 } else { pinjoint::validity::MAX_RIG_ANGULAR_SPEED * 1e-4f64.powf(1.0 - m as f64 / 40.0) };
+            let omega = if m == 0 { 0.0 } else { pinjoint::validity::MAX_RIG_ANGULAR_SPEED * 1e-4f64.powf(1.0 - f64::from(m) / 40.0) };
             let (a, b) = (complete.evaluate(load, omega).unwrap(), paper.evaluate(load, omega).unwrap());
             let e = (a.torque / b.torque - 1.0).abs();
             if e > worst.0 {
