@@ -42,9 +42,11 @@ pub mod film;
 pub mod min_film;
 pub mod asperity;
 pub mod mixed;
+pub mod cold_supply;
 pub mod solve_start;
 pub mod paper;
 pub mod validity;
+pub mod composite;
 pub mod joint;
 // What the front ends use:
 pub mod fidelity;

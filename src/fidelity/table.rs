@@ -51,6 +51,7 @@ use super::error::FidelityError;
 use super::evaluation::{regime_from_shares, Evaluation, Source};
 use super::hermite::{bicubic, bicubic_coefficients, central_slope, fourth_difference};
 use super::rest::RestTable;
+use crate::composite::RestYield;
 use crate::joint::Joint;
 use serde::Serialize;
 
@@ -108,16 +109,23 @@ pub struct StribeckTable {
     radius: f64,
     roughness: f64,
     rest: RestTable,
+    rest_yield: RestYield,
     report: ErrorReport,
     stats: TableStats,
     /// The tolerance the table was built for (caps the advertised bound).
     tolerance: f64,
 }
 
+/// The logit below which the table holds [`LOGIT_FLOOR`]: x1 = e^y < 4.3e-18 there, below any
+/// tolerance in the shares and in μ. A moving joint whose film is bounded (the complete
+/// model's cold supply in the journal's region, a starved inlet) can have its fluid carry
+/// nothing (logit −∞) at a finite speed; the floor keeps the tabulated asinh y finite there.
+pub const LOGIT_FLOOR: f64 = -40.0;
+
 /// The tabulated variables at one solution.
 #[inline]
 fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
-    [op.fluid_friction_coefficient, op.logit.asinh(), op.film_thickness]
+    [op.fluid_friction_coefficient, op.logit.max(LOGIT_FLOOR).asinh(), op.film_thickness]
 }
 
 /// Weights turning errors in the three tabulated variables into errors of the outputs:
@@ -125,7 +133,7 @@ fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
 #[inline]
 fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
     let mu = op.friction_coefficient;
-    let cosh_s = op.logit.hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
+    let cosh_s = op.logit.max(LOGIT_FLOOR).hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
     let share = op.fluid_load_fraction * op.asperity_load_fraction * cosh_s;
     (1.0 / mu, mu_c * share / mu, share, 1.0 / op.film_thickness)
 }
@@ -287,6 +295,7 @@ impl StribeckTable {
             radius: p.geometry.pin_radius,
             roughness: joint.composite_roughness(),
             rest,
+            rest_yield: joint.rest_yield(),
             tolerance: f64::INFINITY,
             report: ErrorReport::default(),
             stats: TableStats {
@@ -394,7 +403,7 @@ impl StribeckTable {
     #[inline]
     pub fn rest(&self, load: f64) -> Option<Evaluation> {
         let h = self.rest.film(load)?;
-        Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Rest))
+        Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, &self.rest_yield, Source::Rest))
     }
 
     /// Largest errors measured against the complete solve on the check points (every cell
@@ -424,20 +433,25 @@ impl StribeckTable {
     }
 }
 
-/// The rest state (ω = 0): 1/γ1 = 0, 1/γ2 = 1, μ = μ_c, film `h`. Also the boundary level's
+/// The rest state (ω = 0): 1/γ1 = 0, 1/γ2 = 1, μ = μ_c plus the grease's yield torque over
+/// R·P (complete model), film `h`. Also the boundary level's
 /// answer at any speed (with `omega` as given).
 #[inline(always)]
-pub(crate) fn rest_evaluation(load: f64, h: f64, mu_c: f64, radius: f64, roughness: f64, source: Source) -> Evaluation {
+pub(crate) fn rest_evaluation(load: f64, h: f64, mu_c: f64, radius: f64, roughness: f64, rest_yield: &RestYield, source: Source) -> Evaluation {
+    // The grease's yield torque at rest (complete model; 0 for the paper's: μ = μ_c exactly),
+    // composed as the complete solve composes it at ω = 0.
+    let mu_f = rest_yield.at(load) / (radius * load);
+    let mu = mu_f + mu_c;
     Evaluation {
         load,
         angular_velocity: 0.0,
-        friction_coefficient: mu_c,
-        torque: mu_c * radius * load,
+        friction_coefficient: mu,
+        torque: mu * radius * load,
         film_thickness: h,
         lambda_ratio: h / roughness,
         fluid_load_fraction: 0.0,
         asperity_load_fraction: 1.0,
-        fluid_friction_coefficient: 0.0,
+        fluid_friction_coefficient: mu_f,
         asperity_friction_coefficient: mu_c,
         logit: f64::NEG_INFINITY,
         regime: crate::Regime::Boundary,

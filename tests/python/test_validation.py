@@ -24,13 +24,14 @@ def test_interface(model_description):
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
     assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load", "temperature"]
-    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "validity"]
+    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "clearance_torque", "journal_weight", "eccentricity_ratio", "grease_yield_torque", "validity"]
     params = [n for n in v if v[n].causality == "parameter"]
     # The 26 parameter-file keys, the band, fidelity, tolerance, the 4 envelope bounds, the
-    # zero-velocity model, the 3 presliding parameters and the host inertia.
-    assert len(params) == 38 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    # zero-velocity model, the 3 presliding parameters, the host inertia and the complete
+    # model's eight (model.paper, grease.*).
+    assert len(params) == 46 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
     assert {"zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time",
-            "zero_velocity.host_inertia"} <= set(params)
+            "zero_velocity.host_inertia", "model.paper", "grease.enabled"} <= set(params)
     assert v["zero_velocity.model"].type == "Enumeration" and int(v["zero_velocity.model"].start) == 1, "presliding by default"
     # One continuous state (Model Exchange) and directional derivatives in both interfaces.
     assert [d.variable.name for d in md.derivatives] == ["der(presliding_torque)"]

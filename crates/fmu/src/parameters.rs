@@ -6,12 +6,15 @@
 use crate::declare::declare;
 use crate::table::{Row, Rule};
 use fmi_layer::fmi2::variables::{Causality, Kind, Variable};
-use pinjoint::params::{ParamSpec, Range, PARAMS};
+use pinjoint::params::{Kind as ParamKind, ParamSpec, Range, PARAMS};
 use pinjoint::Params;
 
 /// Display unit a user expects for a parameter.
 fn display_unit(s: &ParamSpec) -> Option<&'static str> {
     match (s.section, s.unit) {
+        // The grease's values in their SI units (an activation temperature is no temperature
+        // to show in degC; its stresses are Pa, not MPa).
+        ("grease", _) => None,
         ("geometry", "m") => Some("mm"),
         (_, "m") => Some("um"),
         (_, "Pa") if s.key.contains("modulus") => Some("GPa"),
@@ -42,10 +45,24 @@ fn declaration(s: &ParamSpec, vr: u32) -> Variable {
     if s.section == "lubricant" && s.key == "temperature" {
         description.push_str(". In this FMU the input `temperature` sets the lubricant temperature; this parameter is not used");
     }
-    let mut v = declare(&s.name(), vr, Kind::Real, Causality::Parameter, (s.unit != "1").then_some(s.unit), display_unit(s), description);
+    let kind = match s.kind {
+        ParamKind::Real => Kind::Real,
+        ParamKind::Boolean => Kind::Boolean,
+    };
+    // A unit with a parameter's exponent (K in Pa.s^n) has no SI base-unit form for the
+    // modelDescription: said in the description instead.
+    let declarable = !s.unit.contains('^');
+    if !declarable {
+        description.push_str(&format!(" [{}]", s.unit));
+    }
+    let unit = (s.unit != "1" && kind == Kind::Real && declarable).then_some(s.unit);
+    let display = if kind == Kind::Real && declarable { display_unit(s) } else { None };
+    let mut v = declare(&s.name(), vr, kind, Causality::Parameter, unit, display, description);
     v.start = Some(s.default_value());
-    v.min = min;
-    v.max = max;
+    if kind == Kind::Real {
+        v.min = min;
+        v.max = max;
+    }
     v
 }
 

@@ -210,7 +210,7 @@ impl Model for PinJointModel {
         self.v.out = out;
         let v = super::variables::validity(&self.v);
         let s = &self.v;
-        let excursion = || pinjoint::validity::excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature);
+        let excursion = || pinjoint::validity::excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper);
         crate::validity::note(&mut self.validity, v, excursion, "", &mut self.message);
         Ok(())
     }
@@ -344,7 +344,7 @@ mod tests {
         bytes[0] = 9;
         let e = m.deserialize(&bytes).unwrap_err();
         assert!(matches!(e, ModelError::RejectedState(_)));
-        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 6");
+        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 7");
         bytes[0] = STATE_VERSION;
         m.deserialize(&bytes).unwrap();
     }
