@@ -30,25 +30,46 @@ pub struct Shape {
     pub boundary: f64,
 }
 
-/// The shape at every (load, ω) pair, warm-starting each solve from the previous one.
-/// `names`/`rows` identify the sample in an error.
-pub fn shapes(params: &Params, points: &[(f64, f64)], ident: &dyn Fn(usize) -> (String, usize)) -> Result<Vec<Shape>, CalibrationError> {
+/// One operating point of a record: load (N), angular velocity (rad/s) and the lubricant
+/// temperature (K) when the record gives it (None: the parameters' `lubricant.temperature`).
+pub type Operating = (f64, f64, Option<f64>);
+
+/// The shape at every operating point, warm-starting each solve from the previous one. A
+/// point with a temperature is evaluated by the joint at that temperature
+/// ([`Joint::at_temperature`]: bit for bit the joint built with it, at the cost of a few
+/// logarithms), made again only where the temperature changes (once a record for a constant
+/// one). `ident` identifies the sample in an error.
+pub fn shapes(params: &Params, points: &[Operating], ident: &dyn Fn(usize) -> (String, usize)) -> Result<Vec<Shape>, CalibrationError> {
     let joint = Joint::new(params)?;
     let r = params.geometry.pin_radius;
     let mut guess = None;
-    points
-        .iter()
-        .enumerate()
-        .map(|(i, &(load, w))| {
-            let op = joint.evaluate_from(load, w, guess).map_err(|source| {
-                let (record, row) = ident(i);
-                CalibrationError::Model { record, row, source }
-            })?;
-            guess = op.logit.is_finite().then_some(op.logit);
-            let s = sign(w) * r * load;
-            Ok(Shape { fluid: s * op.fluid_friction_coefficient, boundary: s * op.asperity_load_fraction })
-        })
-        .collect()
+    let mut at: Option<(u64, Joint)> = None;
+    let mut out = Vec::with_capacity(points.len());
+    for (i, &(load, w, temperature)) in points.iter().enumerate() {
+        let fail = |source| {
+            let (record, row) = ident(i);
+            CalibrationError::Model { record, row, source }
+        };
+        let j = match temperature {
+            Some(t) if t.to_bits() != params.lubricant.temperature.to_bits() => {
+                if at.as_ref().is_none_or(|(bits, _)| *bits != t.to_bits()) {
+                    let made = joint.at_temperature(t).map_err(|e| {
+                        let (record, row) = ident(i);
+                        CalibrationError::Temperature { record, row, value: t, why: format!("the model refuses it: {e}") }
+                    })?;
+                    at = Some((t.to_bits(), made));
+                    guess = None;
+                }
+                &at.as_ref().expect("made above").1
+            }
+            _ => &joint,
+        };
+        let op = j.evaluate_from(load, w, guess).map_err(fail)?;
+        guess = op.logit.is_finite().then_some(op.logit);
+        let s = sign(w) * r * load;
+        out.push(Shape { fluid: s * op.fluid_friction_coefficient, boundary: s * op.asperity_load_fraction });
+    }
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -80,11 +101,17 @@ mod tests {
     fn shape_reproduces_the_signed_torque() {
         let p = Params::default();
         let j = Joint::new(&p).unwrap();
-        let pts = [(20e3, 2.0), (20e3, -2.0), (40e3, 0.0)];
+        let pts = [(20e3, 2.0, None), (20e3, -2.0, Some(273.15)), (40e3, 0.0, None)];
         let s = shapes(&p, &pts, &|i| ("t".into(), i)).unwrap();
-        for (k, &(load, w)) in pts.iter().enumerate() {
-            // Recorded torque is the actuator's: minus the friction torque on the pin.
-            let t = -j.evaluate(load, w).unwrap().signed_torque();
+        for (k, &(load, w, temp)) in pts.iter().enumerate() {
+            // Recorded torque is the actuator's: minus the friction torque on the pin, at the
+            // point's temperature (a joint built at it, not the shared one's `at_temperature`).
+            let jt = temp.map(|t| {
+                let mut q = p;
+                q.lubricant.temperature = t;
+                Joint::new(&q).unwrap()
+            });
+            let t = -jt.as_ref().unwrap_or(&j).evaluate(load, w).unwrap().signed_torque();
             let m = s[k].fluid + 0.12 * s[k].boundary;
             assert!((t - m).abs() <= 1e-12 * t.abs().max(1.0), "{t} {m}");
         }
