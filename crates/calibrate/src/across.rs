@@ -60,7 +60,8 @@ pub struct Plan {
 pub fn record_temperatures(records: &[Record]) -> Vec<Option<f64>> {
     records
         .iter()
-        .map(|r| r.temperature.as_ref().filter(|t| !t.is_empty()).map(|t| t.iter().sum::<f64>() / t.len() as f64))
+        // The mean of the differences from the first value: exact for a constant column.
+        .map(|r| r.temperature.as_ref().filter(|t| !t.is_empty()).map(|t| t[0] + t.iter().map(|x| x - t[0]).sum::<f64>() / t.len() as f64))
         .collect()
 }
 
