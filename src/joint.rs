@@ -3,7 +3,8 @@
 
 use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
-use crate::mixed::{solve_starved, solve_starved_with, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
+use crate::composite::{Complete, Parts};
+use crate::mixed::{solve_composite, solve_starved, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
 use crate::params::{Lubricant, ParamError, Params};
 use crate::solve_start::{StartCut, StartTable};
 use crate::viscosity::{limiting_shear_stress, ln_roelands_from};
@@ -166,6 +167,18 @@ pub struct OperatingPoint {
     /// Whether the load, sliding speed and the joint's lubricant temperature are inside the
     /// conditions the model was checked against ([`crate::validity::of_point`]).
     pub validity: crate::validity::Validity,
+    /// T_clearance, N·m: the torque of the lubricant in the clearance outside the contact arc,
+    /// its yield part included (complete model, [`crate::composite`]; 0 for the paper's model).
+    pub clearance_torque: f64,
+    /// w, the journal bearing's weight in the composite film (0: the paper's line contact
+    /// alone, 1: the full-film journal bearing; 0 for the paper's model).
+    pub journal_weight: f64,
+    /// ε_g = 1 − h_c/c, the eccentricity ratio of the clearance around the film (clamped to
+    /// [0, 1)).
+    pub eccentricity_ratio: f64,
+    /// τ_y(T)·(2π − 2θ_c)·R²·B, N·m: the grease's yield torque, part of
+    /// `clearance_torque` and of the torque at rest (0 without grease and for the paper's model).
+    pub grease_yield_torque: f64,
 }
 
 /// A friction torque of magnitude `torque` given its sign: opposite to `omega` (eq. 11), zero
@@ -247,6 +260,9 @@ pub struct Joint {
     ln_g: f64,
     /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`).
     starved: Option<crate::mixed::StarvedInlet>,
+    /// The complete model's terms at the temperature; `None` for the paper's model
+    /// (`model.paper = true`), whose path is then today's, bit for bit.
+    complete: Option<Complete>,
 }
 
 impl Joint {
@@ -291,6 +307,7 @@ impl Joint {
             start: Arc::new(StartTable::empty()),
             start_film: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, reference.viscosity, reference.pressure_viscosity_coefficient),
             start_shift: f64::NAN,
+            complete: None,
         };
         joint.set_temperature_terms()?;
         joint.start = Arc::new(StartTable::new(joint.capacity));
@@ -336,6 +353,21 @@ impl Joint {
         self.ln_u_mean_unit = (0.5 * lub.viscosity / (e_eff * r_red)).ln();
         self.ln_g = (lub.pressure_viscosity_coefficient * e_eff).ln();
         self.start_shift = if lub.viscosity == params.lubricant.viscosity { 0.0 } else { self.ln_eta0 - params.lubricant.viscosity.ln() };
+        if !params.model.paper {
+            let complete = match &self.complete {
+                Some(c) => c.at_temperature(params, lub.viscosity),
+                None => Complete::new(params, lub.viscosity)?,
+            };
+            self.complete = Some(complete);
+            // The cold supply: the reference film scaled by the replenishment ratio (below
+            // T_ref only; crate::cold_supply). Its start is the reference's at the same speed.
+            let g = &params.grease;
+            let reference = &params.lubricant;
+            if let Some(r) = crate::cold_supply::ln_supply_ratio(g.enabled, g.supply_exponent, reference.temperature, reference.reference_temperature, reference.viscosity.ln(), self.ln_eta0) {
+                self.film_unit = crate::cold_supply::supplied(&self.start_film, r);
+                self.start_shift = 0.0;
+            }
+        }
         self.lub = lub;
         Ok(())
     }
@@ -377,7 +409,66 @@ impl Joint {
     pub fn min_film(&self, load: f64, omega: f64, film_thickness: f64, fluid_fraction: f64) -> f64 {
         let u = omega.abs() * self.params.geometry.pin_radius;
         let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + load.ln(), self.ln_u_mean_unit + u.ln(), self.ln_g, fluid_fraction.ln());
-        film_thickness * ln_r.exp()
+        film_thickness * Self::min_film_ratio(ln_r, self.journal_weight(load, omega))
+    }
+
+    /// h_min/h_c from the line contact's ln(h_min/h_c) and the journal's weight w: the
+    /// composite (h_min/h_c)^(1 − w) (the journal's film h_J is its own minimum), exactly the
+    /// line contact's e^{ln r} at w = 0.
+    #[inline]
+    fn min_film_ratio(ln_r: f64, weight: f64) -> f64 {
+        if weight == 0.0 { ln_r.exp() } else { ((1.0 - weight) * ln_r).exp() }
+    }
+
+    /// ε_g = 1 − h/c of the clearance around the film `film` (m), clamped to [0, 1).
+    pub fn eccentricity_of(&self, film: f64) -> f64 {
+        (1.0 - film / self.params.radial_clearance()).clamp(0.0, 1.0 - f64::EPSILON)
+    }
+
+    /// Whether this joint runs the paper's model (`model.paper = true`).
+    pub fn is_paper(&self) -> bool {
+        self.complete.is_none()
+    }
+
+    /// The journal's weight w at (`load` N, `omega` rad/s): a function of the operating
+    /// point alone ([`crate::composite`]); 0 at rest and for the paper's model.
+    pub fn journal_weight(&self, load: f64, omega: f64) -> f64 {
+        match &self.complete {
+            Some(c) if omega != 0.0 && omega.is_finite() => c.weight(self.sommerfeld_at(load.abs() / self.projected_area, omega).ln()),
+            _ => 0.0,
+        }
+    }
+
+    /// The grease's yield torque at rest τ_y(T)·(2π − 2a/R)·R²·B (N·m) under `load` (N): what
+    /// the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
+    /// and for the paper's model.
+    pub fn rest_yield_torque(&self, load: f64) -> f64 {
+        match &self.complete {
+            Some(c) => c.yield_torque(0.0, self.hertz_unit.half_width * load.abs().sqrt()),
+            None => 0.0,
+        }
+    }
+
+    /// The grease's yield torque at rest as a function of the load ([`Joint::rest_yield_torque`],
+    /// for the fidelity levels' rest state).
+    pub fn rest_yield(&self) -> crate::composite::RestYield {
+        crate::composite::RestYield::new(self.complete.as_ref(), self.hertz_unit.half_width)
+    }
+
+    /// The complete model's outputs that follow from the operating point and its film `film`
+    /// (m): (clearance torque N·m, journal weight, ε_g, grease yield torque N·m), as
+    /// [`Joint::evaluate`] gives them; (0, 0, ε_g, 0) for the paper's model.
+    pub fn clearance_outputs(&self, load: f64, omega: f64, film: f64) -> (f64, f64, f64, f64) {
+        let eps = self.eccentricity_of(film);
+        match &self.complete {
+            Some(c) => {
+                let w = self.journal_weight(load, omega);
+                let a = self.hertz_unit.half_width * load.abs().sqrt();
+                let u = omega.abs() * self.params.geometry.pin_radius;
+                (c.clearance_torque(w, a, u, film), w, eps, c.yield_torque(w, a))
+            }
+            None => (0.0, 0.0, eps, 0.0),
+        }
     }
     /// R' (m).
     pub fn reduced_radius(&self) -> f64 {
@@ -399,7 +490,7 @@ impl Joint {
     /// conditions the model was checked against ([`crate::validity::of_point`] with the
     /// sliding speed |ω|R): the `validity` of [`Joint::evaluate`]'s answer there.
     pub fn validity(&self, load: f64, omega: f64) -> crate::validity::Validity {
-        crate::validity::of_point(load, omega.abs() * self.params.geometry.pin_radius, self.params.lubricant.temperature)
+        crate::validity::of_point(load, omega.abs() * self.params.geometry.pin_radius, self.params.lubricant.temperature, self.params.model.paper)
     }
 
     /// √(σ² + σ_b²), the composite roughness of λ (eq. 21), m.
@@ -474,9 +565,11 @@ impl Joint {
         self.lub.viscosity * omega.abs() / (2.0 * PI * line_load) * self.clearance_ratio_sq
     }
 
-    /// The boundary-friction torque μ_c R |P| at `load` (N): the ω → 0 limit of eq. 11.
+    /// The torque at rest (ω → 0⁺) at `load` (N): μ_c R |P| (the ω → 0 limit of eq. 11) plus,
+    /// for the complete model, the grease's yield torque ([`Joint::rest_yield_torque`]).
     pub fn boundary_torque(&self, load: f64) -> f64 {
-        self.params.friction.boundary_friction_coefficient * self.params.geometry.pin_radius * load.abs()
+        let t = self.params.friction.boundary_friction_coefficient * self.params.geometry.pin_radius * load.abs();
+        if self.complete.is_some() { t + self.rest_yield_torque(load) } else { t }
     }
 
     /// The operating point at `load` (N) and angular velocity `omega` (rad/s).
@@ -538,13 +631,28 @@ impl Joint {
     }
 
     /// The load-sharing solve and μ (eqs. 3, 8, 10) at the load of `lt` and speed u = |ω|R:
-    /// (ln u, the solve, μ_fluid, μ_asperity). `omega` must be finite.
-    fn solve_at(&self, lt: &LoadTerms, omega: f64, start: Start, sensitivities: bool) -> (f64, LoadSharing, f64, f64) {
+    /// (ln u, the solve, μ_fluid, μ_asperity, the complete model's parts). `omega` must be
+    /// finite. μ_fluid is the lubricant's part of μ: Q_H/P_T (eq. 3) for the paper's model;
+    /// for the complete model ((1 − w)·Q_H·R + T_clearance + w·T_poiseuille)/(R·P)
+    /// ([`crate::composite`]), so that μ = μ_fluid + μ_asperity = T/(R·P) either way.
+    fn solve_at(&self, lt: &LoadTerms, omega: f64, start: Start, sensitivities: bool) -> (f64, LoadSharing, f64, f64, Parts) {
         let p = &self.params;
         let u = omega.abs() * p.geometry.pin_radius;
         let ln_u = u.ln();
         let film = (u > 0.0).then(|| self.film_unit.at_ratio(lt.ln_load, ln_u));
+        // The complete model's journal weight (0 at rest and for the paper's model).
+        let (weight, ln_s) = match &self.complete {
+            Some(c) if u > 0.0 => {
+                let ln_s = self.sommerfeld(lt, omega).ln();
+                (c.weight(ln_s), ln_s)
+            }
+            _ => (0.0, f64::NEG_INFINITY),
+        };
+        let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s));
         let guess = match start {
+            // Where the journal shares the film the start table (the line contact's) is
+            // further off than a neighbour's root: a caller's guess is taken as it is.
+            Start::From(Some(g)) if u > 0.0 && journal.is_some() && g.is_finite() => Some(g),
             Start::From(guess) if u > 0.0 => Some(self.start_from(guess, lt.ln_load, ln_u)),
             Start::From(guess) => guess,
             // The cut is the table at its load to rounding; where it has no value (another
@@ -555,11 +663,11 @@ impl Joint {
             }),
             Start::Cut(_) => None,
         };
-        let ls = solve_starved_with(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved, sensitivities);
+        let ls = solve_composite(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved, journal.as_ref(), sensitivities);
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (docs/model.md, limits), whatever η.
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
-        let mu_fluid = if u > 0.0 {
+        let mu_contact = if u > 0.0 {
             let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ls.ln_film_thickness;
             lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::fast_math::exp(ln_x)).exp_m1()
         } else {
@@ -567,7 +675,15 @@ impl Joint {
         };
         // Eq. 8: Q_C = μ_c P_C = μ_c P_T/γ2.
         let mu_asperity = p.friction.boundary_friction_coefficient * ls.asperity_fraction;
-        (ln_u, ls, mu_fluid, mu_asperity)
+        match &self.complete {
+            None => (ln_u, ls, mu_contact, mu_asperity, Parts::default()),
+            Some(c) => {
+                let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u);
+                let rp = p.geometry.pin_radius * lt.load;
+                let mu_fluid = (1.0 - weight) * mu_contact + (parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
+                (ln_u, ls, mu_fluid, mu_asperity, parts)
+            }
+        }
     }
 
     /// The torque magnitude T = μ R P (eq. 11) at the load of `lt` and angular velocity
@@ -619,7 +735,7 @@ impl Joint {
         if !omega.is_finite() {
             return Err(ModelError::Speed(omega));
         }
-        let (_, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, start, sensitivities);
+        let (_, ls, mu_fluid, mu_asperity, _) = self.solve_at(lt, omega, start, sensitivities);
         let mu = mu_fluid + mu_asperity;
         let torque = mu * self.params.geometry.pin_radius * lt.load;
         // The checks of `check_finite`, in its order, on the same numbers (h_min and λ_min are
@@ -658,7 +774,7 @@ impl Joint {
         let g = &self.params.geometry;
         let (load, hz) = (lt.load, lt.hertz);
         let u = omega.abs() * g.pin_radius;
-        let (ln_u, ls, mu_fluid, mu_asperity) = self.solve_at(lt, omega, Start::From(guess), false);
+        let (ln_u, ls, mu_fluid, mu_asperity, parts) = self.solve_at(lt, omega, Start::From(guess), false);
         let mu = mu_fluid + mu_asperity;
         let op = OperatingPoint {
             load,
@@ -681,11 +797,15 @@ impl Joint {
             regime: Regime::from_shares(ls.fluid_fraction, ls.asperity_fraction),
             min_film_thickness: 0.0,
             min_lambda_ratio: 0.0,
-            validity: crate::validity::of_point(load, u, self.params.lubricant.temperature),
+            validity: self.validity(load, omega),
+            clearance_torque: parts.clearance_torque,
+            journal_weight: parts.weight,
+            eccentricity_ratio: self.eccentricity_of(ls.film_thickness),
+            grease_yield_torque: parts.yield_torque,
         };
         // h_min (as Joint::min_film, with ln P_T and ln u already at hand).
         let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + lt.ln_load, self.ln_u_mean_unit + ln_u, self.ln_g, op.fluid_load_fraction.ln());
-        let h_min = op.film_thickness * ln_r.exp();
+        let h_min = op.film_thickness * Self::min_film_ratio(ln_r, parts.weight);
         let op = OperatingPoint { min_film_thickness: h_min, min_lambda_ratio: h_min / self.roughness, ..op };
         check_finite(&op)?;
         Ok((op, ls))
@@ -702,7 +822,12 @@ impl Joint {
     /// Bair–Winer's limiting stress τ_L(p_m) = τ_L0 + β0 p_m (eq. 3: Q_H/P_T =
     /// τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m ≤ τ_L/p_m), so μ = (Q_H + Q_C)/P_T ≤ μ_c + τ_L0/p_m + β0,
     /// p_m the Hertz mean pressure under the load (eq. 6). Light loads allow a large μ (p_m → 0).
+    /// For the paper's model; the complete model adds the clearance's shear, which grows
+    /// without bound with the speed (the base oil's Newtonian part): +∞ there.
     pub fn max_friction_coefficient(&self, load: f64) -> f64 {
+        if self.complete.is_some() {
+            return f64::INFINITY;
+        }
         let p_m = self.hertz_unit.mean_pressure * load.abs().sqrt();
         self.params.friction.boundary_friction_coefficient + limiting_shear_stress(&self.lub, p_m) / p_m
     }
@@ -712,6 +837,10 @@ impl Joint {
     /// In the boundary regime and at rest the separation is the asperities' (eq. 19, a few
     /// summit heights), bounded by the surfaces, not by eq. 12.
     pub fn check_film(&self, film: f64, fluid_fraction: f64, load: f64, omega: f64) -> Result<(), ModelError> {
+        // The complete model's film is the composite one, bounded by the journal bearing.
+        if self.complete.is_some() {
+            return Ok(());
+        }
         let limit = self.max_film_thickness();
         if film > limit && fluid_fraction >= REGIME_SHARE {
             return Err(ModelError::FilmBeyondClearance { film, limit, load, omega });

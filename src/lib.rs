@@ -29,6 +29,8 @@ pub mod fast_math;
 pub mod newton;
 pub mod starvation;
 pub mod roelands_temperature;
+pub mod clearance;
+pub mod journal;
 pub mod params;
 // The paper's equations:
 pub mod gw;
@@ -38,9 +40,11 @@ pub mod film;
 pub mod min_film;
 pub mod asperity;
 pub mod mixed;
+pub mod cold_supply;
 pub mod solve_start;
 pub mod paper;
 pub mod validity;
+pub mod composite;
 pub mod joint;
 // What the front ends use:
 pub mod fidelity;

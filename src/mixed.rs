@@ -128,6 +128,27 @@ pub fn solve_starved(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surfac
 /// 1e-7 from its start they cost one more residual evaluation, at the root. The root, the
 /// shares and h_c are the same either way, bit for bit.
 pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess: Option<f64>, starved: Option<StarvedInlet>, sensitivities: bool) -> LoadSharing {
+    solve_composite(film, asp, s, guess, starved, None, sensitivities)
+}
+
+/// [`solve_starved_with`] with the composite film of the complete model when `journal` is
+/// given ([`crate::composite`]): `ln h(x1) = (1 − w)·ln h_13(x1) + w·ln h_J(x1)`,
+/// `h_J(x1) = c·(1 − ε(S/x1))`. `None` is exactly [`solve_starved_with`]'s path, bit for bit.
+///
+/// Both films decrease in x1 (ε grows with the journal's load x1·P, i.e. falls with S/x1), so
+/// the residual stays strictly increasing in y with one root; h_J → c as x1 → 0, so with
+/// w = 1 (or a starved inlet) r(−∞) is finite, and when r(−∞) ≥ 0 the fluid carries nothing
+/// (the zero-speed solution), as for the starved film. The journal's term has no analytic
+/// second derivative here, so the solve takes Newton's iteration (no third-order first step).
+pub fn solve_composite(
+    film: Option<&FilmGroups>,
+    asp: &AsperityGroups,
+    s: &Surface,
+    guess: Option<f64>,
+    starved: Option<StarvedInlet>,
+    journal: Option<&JournalFilm>,
+    sensitivities: bool,
+) -> LoadSharing {
     let rest = |asp: &AsperityGroups| {
         let t = inverse_ln_f32(asp.required_ln_f32(0.0));
         let h = s.summit_mean_plane_offset + t * s.summit_height_std;
@@ -142,12 +163,23 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
             dlogit_dln_speed: 0.0,
         }
     };
-    if let (Some(_), Some(st)) = (film, starved) {
+    if let (Some(_), Some(st), None) = (film, starved, journal) {
         // r(−∞): film = h_oil, asperities carry everything (ln x2 = 0).
         let h_oil = (-st.ln_q).exp();
         let (ln_f, _) = ln_f32_slope((h_oil - s.summit_mean_plane_offset) / s.summit_height_std);
         if ln_f - asp.required_ln_f32(0.0) >= 0.0 {
             return rest(asp);
+        }
+    }
+    if let (Some(_), Some(j)) = (film, journal) {
+        // r(−∞): h_13 → h_oil (starved) or ∞, h_J → c; bounded only if one of them is.
+        let ln_h13 = starved.map_or(f64::INFINITY, |st| -st.ln_q);
+        let ln_h = if j.weight >= 1.0 { j.ln_clearance } else { (1.0 - j.weight) * ln_h13 + j.weight * j.ln_clearance };
+        if ln_h.is_finite() {
+            let (ln_f, _) = ln_f32_slope((exp(ln_h) - s.summit_mean_plane_offset) / s.summit_height_std);
+            if ln_f - asp.required_ln_f32(0.0) >= 0.0 {
+                return rest(asp);
+            }
         }
     }
     let Some(film) = film else {
@@ -163,7 +195,7 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
     // s = −r/r′ is at most THIRD_ORDER_ACCEPT, Halley's step y0 + s/(1 + K s) (K = r″/2r′)
     // leaves an error C·s³ with C = K² − r‴/6r′, and the solve ends after one evaluation.
     // Otherwise Newton's iteration continues from y0, its first step Halley's.
-    let p0 = Point::at(film, asp, s, starved, y0, starved.is_none(), sensitivities);
+    let p0 = Point::at(film, asp, s, starved, journal, y0, starved.is_none() && journal.is_none(), sensitivities);
     let step = -p0.r / p0.dr;
     let k = p0.d2r / (2.0 * p0.dr);
     let (y, ln_h, last, mut evaluations) = if p0.raw_r >= COMPRESS_FROM && step.abs() <= THIRD_ORDER_ACCEPT && (k * step).abs() <= 0.1 {
@@ -174,7 +206,7 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
     } else {
         let mut last = p0;
         let residual = |y: f64| {
-            let p = Point::at(film, asp, s, starved, y, false, true);
+            let p = Point::at(film, asp, s, starved, journal, y, false, true);
             last = p;
             (p.r, p.dr)
         };
@@ -193,7 +225,7 @@ pub fn solve_starved_with(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &S
         (f64::NAN, f64::NAN)
     } else if last.g_m.is_nan() || (evaluations == 1 && (y - last.y).abs() > SENSITIVITY_REUSE) {
         evaluations += 1;
-        Point::at(film, asp, s, starved, y, false, true).sensitivities()
+        Point::at(film, asp, s, starved, journal, y, false, true).sensitivities()
     } else {
         last.sensitivities()
     };
@@ -244,6 +276,32 @@ struct Point {
     g_m: f64,
     g_l: f64,
     sigmoid: f64,
+    /// ∂ln F/∂ln h_c times the journal's part of ∂ln h/∂ln P_T at fixed y (0 without the
+    /// journal; its ∂/∂ln u is the opposite: S ∝ u/P).
+    kj: f64,
+}
+
+/// The journal bearing's film in the load-sharing solve (the complete model,
+/// [`crate::composite`]): its weight w in (0, 1], ln S at the full load and ln c.
+#[derive(Clone, Copy)]
+pub struct JournalFilm<'a> {
+    /// w, the journal's weight in the composite film.
+    pub weight: f64,
+    /// ln S (eq. 20) at the whole load: the journal carrying x1·P has ln S − ln x1.
+    pub ln_sommerfeld: f64,
+    /// ln c, the radial clearance's logarithm (m).
+    pub ln_clearance: f64,
+    /// ε(S) of the joint's L/D.
+    pub table: &'a crate::journal::JournalTable,
+}
+
+impl JournalFilm<'_> {
+    /// ln h_J and d ln h_J/d ln x1 when the fluid carries the share x1 (given as ln x1).
+    #[inline]
+    pub fn ln_film(&self, ln_x1: f64) -> (f64, f64) {
+        let (e, de) = self.table.eccentricity(self.ln_sommerfeld - ln_x1);
+        (self.ln_clearance + (-e).ln_1p(), de / (1.0 - e))
+    }
 }
 
 impl Point {
@@ -251,7 +309,8 @@ impl Point {
     /// inside the Chebyshev interval of F_{3/2}; NaN otherwise), and with it the parts of the
     /// sensitivities only if `gradient` (NaN otherwise).
     #[inline(always)]
-    fn at(film: &FilmGroups, asp: &AsperityGroups, s: &Surface, starved: Option<StarvedInlet>, y: f64, second: bool, gradient: bool) -> Self {
+    #[allow(clippy::too_many_arguments)]
+    fn at(film: &FilmGroups, asp: &AsperityGroups, s: &Surface, starved: Option<StarvedInlet>, journal: Option<&JournalFilm>, y: f64, second: bool, gradient: bool) -> Self {
         let sh = Shares::new(y);
         // Eq. 13 by eq. 12's substitution (film::ln_scaled_moes_grad): along y, ln x1 moves
         // by x2, and (ln M, ln L) by (1/2, 3/4) per unit ln x1.
@@ -279,6 +338,15 @@ impl Point {
             w = ws;
             d2ln_h = f64::NAN;
         }
+        let mut jp = 0.0; // the journal's ∂ln h/∂ln P_T at fixed y
+        if let Some(j) = journal {
+            let (ln_hj, dj) = j.ln_film(sh.ln_x1);
+            ln_h = (1.0 - j.weight) * ln_h + j.weight * ln_hj;
+            dln_h = (1.0 - j.weight) * dln_h + j.weight * sh.x2 * dj;
+            w *= 1.0 - j.weight;
+            d2ln_h = f64::NAN;
+            jp = j.weight * dj; // ln S − ln x1: ∂/∂ln P = ∂/∂ln x1
+        }
         let h = exp(ln_h);
         let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;
         let (ln_f, dln_f, d2ln_f) = if second {
@@ -300,7 +368,7 @@ impl Point {
             f64::NAN
         };
         let (r, dr) = compress(raw_r, raw_dr);
-        Self { y, r, dr, raw_r, raw_dr, d2r, ln_h, dln_h, d2ln_h, kw: k * w, g_m, g_l, sigmoid }
+        Self { y, r, dr, raw_r, raw_dr, d2r, ln_h, dln_h, d2ln_h, kw: k * w, g_m, g_l, sigmoid, kj: if journal.is_some() { k * jp } else { 0.0 } }
     }
 
     /// dy/dln P_T and dy/dln u by the implicit function theorem at this point,
@@ -308,8 +376,12 @@ impl Point {
     /// ln L′ = 0, ln R′U^½′ = 0, ln C′ = −½, ln K′ = a2 − a3 in ln P_T, and ln M′ = −½,
     /// ln L′ = ¼, ln R′U^½′ = ½ in ln u (FilmGroups::at_ratio, AsperityGroups::at_load_ratio).
     fn sensitivities(&self) -> (f64, f64) {
-        let dr_load = self.kw * self.g_m - (self.sigmoid * (A2 - A3) + 0.5);
-        let dr_speed = self.kw * (0.5 - 0.5 * self.g_m + 0.25 * self.g_l);
+        let mut dr_load = self.kw * self.g_m - (self.sigmoid * (A2 - A3) + 0.5);
+        let mut dr_speed = self.kw * (0.5 - 0.5 * self.g_m + 0.25 * self.g_l);
+        if self.kj != 0.0 {
+            dr_load += self.kj;
+            dr_speed -= self.kj;
+        }
         let finite_or_zero = |v: f64| if v.is_finite() { -v } else { 0.0 };
         (finite_or_zero(dr_load / self.raw_dr), finite_or_zero(dr_speed / self.raw_dr))
     }

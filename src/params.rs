@@ -107,7 +107,41 @@ pub struct Friction {
     pub boundary_friction_coefficient: f64,
 }
 
-/// The full parameter set. `Params::default()` is the paper's rig.
+/// Which model answers (issue 28): the paper's, or the complete model (default).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Model {
+    /// true: the paper's model, bit for bit (the line-contact film of eq. 12 refused beyond
+    /// the diametral clearance, temperatures from [`PAPER_MIN_TEMPERATURE`]); false (default):
+    /// the complete model (journal bearing in full film, the grease in the clearance, the
+    /// cold supply; docs/cold-day.md).
+    pub paper: bool,
+}
+
+/// The grease in the clearance and its supply to the contact (complete model only; see
+/// [`crate::clearance`] for the rheology and the sources of the defaults).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Grease {
+    /// true (default): Herschel–Bulkley grease in the clearance, cold supply to the contact;
+    /// false: the base oil alone fills the clearance (Newtonian), flooded supply.
+    pub enabled: bool,
+    /// τ_y, yield stress at `lubricant.reference_temperature` (Pa).
+    pub yield_stress: f64,
+    /// K, Herschel–Bulkley consistency at the reference temperature (Pa·s^n).
+    pub consistency: f64,
+    /// n, Herschel–Bulkley flow index (-), 0 < n ≤ 1.
+    pub flow_index: f64,
+    /// E_y/R_gas (K): τ_y(T) = τ_y,ref·exp(E_y/R (1/T − 1/T_ref)).
+    pub yield_activation: f64,
+    /// E_K/R_gas (K): K(T) = K_ref·exp(E_K/R (1/T − 1/T_ref)).
+    pub consistency_activation: f64,
+    /// m, exponent of the cold supply's replenishment ratio (η_b(T_ref)/η_b(T))^m (-).
+    pub supply_exponent: f64,
+}
+
+/// The full parameter set. `Params::default()` is the paper's rig with the complete model;
+/// [`Params::paper`] the paper's model.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Params {
@@ -123,6 +157,10 @@ pub struct Params {
     pub friction: Friction,
     /// Extension, not in the paper; off by default.
     pub starvation: Starvation,
+    /// The paper's model or the complete one (default).
+    pub model: Model,
+    /// The grease in the clearance (complete model).
+    pub grease: Grease,
 }
 
 impl Default for Geometry {
@@ -173,6 +211,25 @@ impl Default for Starvation {
         Self { inlet_layer_inverse: 0.0, exponent: crate::starvation::DEFAULT_EXPONENT }
     }
 }
+impl Default for Grease {
+    fn default() -> Self {
+        use crate::clearance as c;
+        Self {
+            enabled: true,
+            yield_stress: c::DEFAULT_YIELD_STRESS,
+            consistency: c::DEFAULT_CONSISTENCY,
+            flow_index: c::DEFAULT_FLOW_INDEX,
+            yield_activation: c::DEFAULT_YIELD_ACTIVATION,
+            consistency_activation: c::DEFAULT_CONSISTENCY_ACTIVATION,
+            supply_exponent: DEFAULT_SUPPLY_EXPONENT,
+        }
+    }
+}
+
+/// Default exponent m of the cold supply (docs/cold-day.md): the oil the grease releases
+/// into the track scales like 1/η of the base oil.
+pub const DEFAULT_SUPPLY_EXPONENT: f64 = 1.0;
+
 impl Default for Friction {
     fn default() -> Self {
         Self { boundary_friction_coefficient: 0.12 }
@@ -246,6 +303,18 @@ pub struct ParamSpec {
     pub get: fn(&Params) -> f64,
     /// Writes the parameter into a [`Params`], in SI units (no range check).
     pub set: fn(&mut Params, f64),
+    /// Real number or boolean switch.
+    pub kind: Kind,
+}
+
+/// The type of a parameter's value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// A real number (SI unit).
+    Real,
+    /// A switch, `true | false` in the file; 1.0 / 0.0 through [`ParamSpec::get`], and any
+    /// value other than 0 is `true` through [`ParamSpec::set`].
+    Boolean,
 }
 
 impl ParamSpec {
@@ -271,12 +340,30 @@ macro_rules! spec {
             range: $range,
             get: |p: &Params| p.$sec.$key,
             set: |p: &mut Params, v: f64| p.$sec.$key = v,
+            kind: Kind::Real,
+        }
+    };
+}
+
+macro_rules! switch {
+    ($sec:ident . $key:ident, $src:expr, $desc:expr) => {
+        ParamSpec {
+            section: stringify!($sec),
+            key: stringify!($key),
+            symbol: "-",
+            unit: "1",
+            description: $desc,
+            source: $src,
+            range: Range::Closed(0.0, 1.0),
+            get: |p: &Params| if p.$sec.$key { 1.0 } else { 0.0 },
+            set: |p: &mut Params, v: f64| p.$sec.$key = v != 0.0,
+            kind: Kind::Boolean,
         }
     };
 }
 
 /// Every parameter, in file order.
-pub static PARAMS: [ParamSpec; 26] = [
+pub static PARAMS: [ParamSpec; 34] = [
     spec!(geometry.pin_radius, "R", "m", Range::Positive, "Table 1", "Outer radius of the pin"),
     spec!(geometry.bush_radius, "R_b", "m", Range::Positive, "Table 1", "Inner radius of the bush (must exceed the pin radius; the radial clearance is R_b - R)"),
     spec!(geometry.bush_length, "B", "m", Range::Positive, "Table 1", "Length of the bush (contact length)"),
@@ -299,14 +386,22 @@ pub static PARAMS: [ParamSpec; 26] = [
     spec!(lubricant.limiting_shear_stress_slope, "beta_0", "1", Range::NonNegative, "Table 3", "Slope of the limiting shear stress against pressure (eq. 4)"),
     spec!(friction.boundary_friction_coefficient, "mu_c", "1", Range::NonNegative, "Section 3.1", "Friction coefficient of the asperity contacts (boundary friction)"),
     // Appended after the paper's parameters (existing order, FMU value references and state layouts kept).
-    spec!(lubricant.temperature, "T", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Lubricant temperature; eta_0 and alpha follow Roelands' temperature relation from their values at the reference temperature (exactly the Table 3 values at T = T_ref). From -35 C: Roelands' relation has its pole at -135 C (eta_0 infinite), the Table 3 oil would be a glass (1e12 Pa.s) at -102 C, and at -40 C its film at 20 kN passes the diametral clearance from 5.5 rad/s (the default rig's start-up overshoot), at -35 C from 8 rad/s; for any parameters eta_0(T) above 1e12 Pa.s is rejected"),
+    spec!(lubricant.temperature, "T", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Lubricant temperature; eta_0 and alpha follow Roelands' temperature relation from their values at the reference temperature (exactly the Table 3 values at T = T_ref). From -55 C with the complete model; the paper's model (model.paper = true) from -35 C: Roelands' relation has its pole at -135 C (eta_0 infinite), the Table 3 oil would be a glass (1e12 Pa.s) at -102 C, and at -40 C its film at 20 kN passes the diametral clearance from 5.5 rad/s (the default rig's start-up overshoot), at -35 C from 8 rad/s; for any parameters eta_0(T) above 1e12 Pa.s is rejected"),
     spec!(lubricant.reference_temperature, "T_ref", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Extension (default: room temperature, 20 C, assumed)", "Temperature at which eta_0 and alpha hold (Table 3: room temperature)"),
     spec!(lubricant.roelands_temperature_index, "S_0", "1", Range::NonNegative, "Extension: Roelands (1966); default fitted to an ISO VG 100 mineral oil", "Roelands temperature-viscosity index S_0: ln(eta_0/eta_inf) scales as (1 + (T - 273.15 K)/135 K)^-S_0"),
     spec!(starvation.inlet_layer_inverse, "1/h_oil", "1/m", Range::NonNegative, "Extension: Chevalier et al. (1998); default 0 = fully flooded (the paper's model)", "Reciprocal of the lubricant layer thickness available at the inlet (starved-inlet film correction); 0 = fully flooded"),
     spec!(starvation.exponent, "gamma_s", "1", Range::OpenClosed(0.0, 100.0), "Extension: Chevalier et al. (1998)", "Exponent of the starvation relation h = (h_ff^-g + h_oil^-g)^(-1/g)"),
+    switch!(model.paper, "Issue 28 (default false: the complete model)", "true: the paper's model, bit for bit (film refused beyond the diametral clearance, temperature from -35 C); false: the complete model (journal bearing in full film, grease in the clearance, cold supply)"),
+    switch!(grease.enabled, "Complete model (default true)", "true: Herschel-Bulkley grease in the clearance and the cold supply to the contact; false: the base oil alone fills the clearance (Newtonian), flooded supply"),
+    spec!(grease.yield_stress, "tau_y", "Pa", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Yield stress of the grease at the reference temperature (Herschel-Bulkley)"),
+    spec!(grease.consistency, "K", "Pa.s^n", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Consistency of the grease at the reference temperature (Herschel-Bulkley tau = tau_y + K gamma_dot^n + eta_b gamma_dot)"),
+    spec!(grease.flow_index, "n", "1", Range::OpenClosed(0.0, 1.0), crate::clearance::GREASE_SOURCE, "Flow index of the grease (Herschel-Bulkley)"),
+    spec!(grease.yield_activation, "E_y/R", "K", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Activation temperature of the yield stress: tau_y(T) = tau_y exp(E_y/R (1/T - 1/T_ref))"),
+    spec!(grease.consistency_activation, "E_K/R", "K", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Activation temperature of the consistency: K(T) = K exp(E_K/R (1/T - 1/T_ref))"),
+    spec!(grease.supply_exponent, "m", "1", Range::Closed(0.0, 10.0), "Complete model: cold supply (docs/cold-day.md), default 1", "Exponent of the cold supply: below T_ref the contact film is at most the reference film times (eta_b(T_ref)/eta_b(T))^m; 0 = no supply limit"),
 ];
 
-/// Lowest admissible temperature (K), −35 °C. Roelands' temperature term (1 + θ/135 °C)
+/// Lowest admissible temperature (K) of the paper's model (`model.paper = true`), −35 °C. Roelands' temperature term (1 + θ/135 °C)
 /// has its pole at θ = −135 °C, where η0 → ∞ (at 145 K the film of the Table 3 oil was
 /// 1e108 m); the relation describes a liquid, and the Table 3 oil (S0 = 1.262) would reach
 /// [`GLASS_VISCOSITY`] at −102 °C (171.1 K). Long before that the film leaves the joint: at
@@ -317,7 +412,11 @@ pub static PARAMS: [ParamSpec; 26] = [
 /// 5.5 rad/s, where −40 °C gives 52 µm: at −35 °C the film stays inside up to 8 rad/s
 /// (42 µm), twice the stroke's peak. For other lubricant parameters
 /// [`Params::validate`] also rejects a temperature where η0(T) exceeds [`GLASS_VISCOSITY`].
-pub const MIN_TEMPERATURE: f64 = 238.15;
+pub const PAPER_MIN_TEMPERATURE: f64 = 238.15;
+
+/// Lowest admissible temperature (K) of the complete model, −55 °C: the declared service range
+/// (issue 28). The paper's model (`model.paper = true`) keeps [`PAPER_MIN_TEMPERATURE`].
+pub const MIN_TEMPERATURE: f64 = 218.15;
 
 /// The largest lubricant viscosity the model takes (Pa·s): 1e12 Pa·s, the conventional
 /// viscosity of a liquid at its glass transition. Above it the lubricant is a glass, Roelands'
@@ -415,6 +514,19 @@ impl Params {
                 });
             }
         }
+        if self.model.paper && self.lubricant.temperature < PAPER_MIN_TEMPERATURE {
+            return Err(ParamError::OutOfRange {
+                name: "lubricant.temperature".into(),
+                value: self.lubricant.temperature,
+                unit: "K",
+                range: format!(
+                    "in [{}, {}] with model.paper = true (the paper's film leaves the clearance below -35 C); set model.paper = false for the complete model, which takes temperatures from {} K (-55 C)",
+                    crate::fmt::Num(PAPER_MIN_TEMPERATURE),
+                    crate::fmt::Num(MAX_TEMPERATURE),
+                    crate::fmt::Num(MIN_TEMPERATURE)
+                ),
+            });
+        }
         let g = &self.geometry;
         if g.bush_radius - g.pin_radius <= 0.0 {
             return Err(ParamError::NoClearance { pin_radius: g.pin_radius, bush_radius: g.bush_radius });
@@ -438,6 +550,11 @@ impl Params {
             });
         }
         Ok(())
+    }
+
+    /// The paper's rig with the paper's model (`model.paper = true`): today's numbers, bit for bit.
+    pub fn paper() -> Self {
+        Self { model: Model { paper: true }, ..Self::default() }
     }
 
     /// Radial clearance c = R_b − R (m), derived, never an input.
@@ -471,14 +588,11 @@ impl Params {
             for s in PARAMS.iter().filter(|s| s.section == section) {
             let unit = if s.unit == "1" { "-" } else { s.unit };
             // `{:?}` prints the shortest representation that round-trips exactly.
-            out.push_str(&format!(
-                "{} = {:?}  # {} [{}], {}\n",
-                s.key,
-                (s.get)(self),
-                s.symbol,
-                unit,
-                s.description
-            ));
+            let value = match s.kind {
+                Kind::Real => format!("{:?}", (s.get)(self)),
+                Kind::Boolean => ((s.get)(self) != 0.0).to_string(),
+            };
+            out.push_str(&format!("{} = {value}  # {} [{}], {}\n", s.key, s.symbol, unit, s.description));
             }
         }
         out
@@ -527,8 +641,36 @@ mod tests {
         }
         let v: toml::Table = toml::from_str(&toml::to_string(&p).unwrap()).unwrap();
         for (i, s) in PARAMS.iter().enumerate() {
-            assert_eq!(v[s.section][s.key].as_float().unwrap(), 1000.0 + i as f64, "{}", s.name());
+            match s.kind {
+                Kind::Real => assert_eq!(v[s.section][s.key].as_float().unwrap(), 1000.0 + i as f64, "{}", s.name()),
+                Kind::Boolean => assert_eq!(v[s.section][s.key].as_bool(), Some(true), "{}", s.name()),
+            }
         }
+        // A switch reads back what was set, both ways.
+        for s in PARAMS.iter().filter(|s| s.kind == Kind::Boolean) {
+            for v in [0.0, 1.0] {
+                (s.set)(&mut p, v);
+                assert_eq!((s.get)(&p), v, "{}", s.name());
+            }
+        }
+    }
+
+    #[test]
+    fn switches_parse_as_booleans_and_the_paper_model_keeps_its_floor() {
+        let p = Params::from_toml_str("[model]\npaper = true\n[grease]\nenabled = false\n").unwrap();
+        assert!(p.model.paper && !p.grease.enabled);
+        assert_eq!(Params::from_toml_str(&p.to_toml_string()).unwrap(), p);
+        assert!(Params::from_toml_str("[model]\npaper = 1.0\n").is_err());
+        // −40 C: the complete model takes it, the paper's model names the key and the way out.
+        let mut q = Params::default();
+        q.lubricant.temperature = 233.15;
+        q.validate().unwrap();
+        q.model.paper = true;
+        let m = q.validate().unwrap_err().to_string();
+        assert!(m.contains("lubricant.temperature = 233.15 K") && m.contains("model.paper = false"), "{m}");
+        q.lubricant.temperature = MIN_TEMPERATURE - 0.01;
+        q.model.paper = false;
+        assert!(q.validate().is_err());
     }
 
     #[test]
@@ -587,7 +729,7 @@ mod tests {
 
     #[test]
     fn every_range_rejects_a_bad_value() {
-        for s in PARAMS.iter() {
+        for s in PARAMS.iter().filter(|s| s.kind == Kind::Real) {
             let mut p = Params::default();
             (s.set)(&mut p, -1.0);
             assert!(p.validate().is_err(), "{} accepted -1", s.name());

@@ -16,13 +16,16 @@
 //! | stroke amplitude A (rig) | 40° (±1e-6 relative) | section 4.4 ("pin angular displacement of ±40°") |
 //!
 //! Outside these ranges the answer is an [`Validity::Extrapolation`]: the equations still
-//! hold as written, but nothing measured confirms them there. One band is worse
-//! ([`Validity::KnownWrong`]): below [`COLD_SOAK`] (0 °C) the model has the grease's base oil
+//! hold as written, but nothing measured confirms them there. One band is worse for the
+//! paper's model (`model.paper = true`; [`Validity::KnownWrong`]): below [`COLD_SOAK`] (0 °C)
+//! it has the grease's base oil
 //! only, whose film Roelands' temperature relation thickens without bound as it cools, so μ
 //! falls (0.021 at −40 °C, 12°/s, 20 kN, against 0.119 at 20 °C), while a cold-soaked
 //! grease's thickener gains a yield stress the model does not have and the real joint turns
 //! stiffer: the model's μ and torque are then too LOW, by an amount nothing in the model
-//! bounds.
+//! bounds. The complete model (default) has the grease (its yield stress and consistency in
+//! the clearance, the cold supply to the contact; docs/cold-day.md): its answers below 0 °C
+//! are an [`Validity::Extrapolation`], modelled but not confirmed by a measurement.
 //!
 //! The ranges are those of the operating point (load, speed, temperature) and the rig's
 //! stroke; they assume the paper's joint (Tables 1–3). A parameter set far from those tables
@@ -42,7 +45,8 @@ pub enum Validity {
     /// Code 1: some quantity outside its checked range (the model's equations, unconfirmed
     /// there; the direction of the error is not known).
     Extrapolation,
-    /// Code 2: the temperature is below [`COLD_SOAK`]: μ and torque are known to be too low.
+    /// Code 2: the paper's model (`model.paper = true`) below [`COLD_SOAK`]: μ and torque are
+    /// known to be too low.
     KnownWrong,
 }
 
@@ -68,7 +72,7 @@ impl Validity {
             Validity::Checked => "inside the conditions the model was checked against (the paper's rig tests)",
             Validity::Extrapolation => "outside the conditions the model was checked against: an extrapolation",
             Validity::KnownWrong => {
-                "below 0 C (cold soak): the model has the base oil's film only and no grease yield stress, so its friction coefficient and torque are too LOW"
+                "below 0 C (cold soak) with the paper's model (model.paper = true): it has the base oil's film only and no grease, so its friction coefficient and torque are too LOW (the complete model, model.paper = false, has the grease)"
             }
         }
     }
@@ -191,17 +195,20 @@ impl std::fmt::Display for Excursion {
 }
 
 /// The validity of an operating point at `load` (N, its magnitude is used), sliding speed
-/// `sliding_speed` (m/s, its magnitude) and lubricant `temperature` (K). NaN in any is an
+/// `sliding_speed` (m/s, its magnitude) and lubricant `temperature` (K), for the paper's
+/// model (`paper` true: below [`COLD_SOAK`] known-wrong) or the complete model (below
+/// [`COLD_SOAK`] an extrapolation: modelled, not confirmed by a measurement). NaN in any is an
 /// extrapolation.
-pub fn of_point(load: f64, sliding_speed: f64, temperature: f64) -> Validity {
-    excursion(load, sliding_speed, temperature).map_or(Validity::Checked, |e| e.validity)
+pub fn of_point(load: f64, sliding_speed: f64, temperature: f64, paper: bool) -> Validity {
+    excursion(load, sliding_speed, temperature, paper).map_or(Validity::Checked, |e| e.validity)
 }
 
-/// The worst excursion of an operating point (as [`of_point`]), `None` when checked. The
-/// cold-soak band comes first; otherwise the first range left in [`RANGES`] order.
-pub fn excursion(load: f64, sliding_speed: f64, temperature: f64) -> Option<Excursion> {
+/// The worst excursion of an operating point (as [`of_point`]), `None` when checked. For the
+/// paper's model the cold-soak band comes first; otherwise the first range left in
+/// [`RANGES`] order.
+pub fn excursion(load: f64, sliding_speed: f64, temperature: f64, paper: bool) -> Option<Excursion> {
     // `!(T >= COLD_SOAK)` would take NaN as cold: NaN is an extrapolation, not a known error.
-    if temperature < COLD_SOAK {
+    if paper && temperature < COLD_SOAK {
         return Some(Excursion { validity: Validity::KnownWrong, range: TEMPERATURE, value: temperature });
     }
     [(LOAD, load.abs()), (SLIDING_SPEED, sliding_speed.abs()), (TEMPERATURE, temperature)]
@@ -277,10 +284,21 @@ mod tests {
 
     #[test]
     fn nan_is_an_extrapolation() {
-        assert_eq!(of_point(f64::NAN, 0.01, 293.15), Validity::Extrapolation);
-        assert_eq!(of_point(20e3, f64::NAN, 293.15), Validity::Extrapolation);
-        assert_eq!(of_point(20e3, 0.01, f64::NAN), Validity::Extrapolation);
+        for paper in [false, true] {
+            assert_eq!(of_point(f64::NAN, 0.01, 293.15, paper), Validity::Extrapolation);
+            assert_eq!(of_point(20e3, f64::NAN, 293.15, paper), Validity::Extrapolation);
+            assert_eq!(of_point(20e3, 0.01, f64::NAN, paper), Validity::Extrapolation);
+        }
         assert_eq!(of_stroke(f64::NAN, 0.7), Validity::Extrapolation);
+    }
+
+    #[test]
+    fn cold_is_known_wrong_only_for_the_paper_model() {
+        for t in [273.0, 253.15, 218.15] {
+            assert_eq!(of_point(20e3, 0.01, t, true), Validity::KnownWrong);
+            assert_eq!(of_point(20e3, 0.01, t, false), Validity::Extrapolation);
+        }
+        assert_eq!(of_point(20e3, 0.01, 293.15, false), Validity::Checked);
     }
 
     #[test]

@@ -1,4 +1,5 @@
-//! The `boundary` level: μ = μ_c, the fluid carrying nothing.
+//! The `boundary` level: μ = μ_c, the fluid carrying nothing (with the complete model, plus
+//! the grease's yield torque at rest over R·P: the rest state's torque at any speed).
 //!
 //! Valid where the fluid's share of the load is negligible. The answer at any speed is
 //! the rest state of the same load: μ = μ_c (exact at ω = 0), 1/γ1 = 0, 1/γ2 = 1, and the
@@ -20,6 +21,7 @@ use super::error::FidelityError;
 use super::evaluation::{Evaluation, Source};
 use super::rest::RestTable;
 use super::table::rest_evaluation;
+use crate::composite::RestYield;
 use crate::joint::Joint;
 
 /// Advertised bound = `SAFETY` × the largest measured error.
@@ -33,6 +35,7 @@ const LOCAL: usize = 9;
 pub struct BoundaryLevel {
     envelope: Envelope,
     rest: RestTable,
+    rest_yield: RestYield,
     mu_c: f64,
     radius: f64,
     roughness: f64,
@@ -48,6 +51,7 @@ impl BoundaryLevel {
         let mut level = Self {
             envelope: *envelope,
             rest,
+            rest_yield: joint.rest_yield(),
             mu_c: p.friction.boundary_friction_coefficient,
             radius: p.geometry.pin_radius,
             roughness: joint.composite_roughness(),
@@ -93,7 +97,7 @@ impl BoundaryLevel {
     #[inline(always)]
     fn interior(&self, load: f64, omega: f64) -> Evaluation {
         let h = self.rest.film_clamped(load);
-        let mut e = rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Boundary);
+        let mut e = rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, &self.rest_yield, Source::Boundary);
         e.angular_velocity = omega;
         e
     }
@@ -106,7 +110,7 @@ impl BoundaryLevel {
             Some(self.interior(load, omega))
         } else if omega == 0.0 && self.envelope.contains_load(load) {
             let h = self.rest.film(load)?;
-            Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Rest))
+            Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, &self.rest_yield, Source::Rest))
         } else {
             None
         }

@@ -110,6 +110,7 @@ pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
     let q = joint.load_speed(e.load, e.angular_velocity);
     // h_min from h_c and the fluid share exactly as the core does it (crate::min_film).
     let h_min = joint.min_film(e.load, e.angular_velocity, e.film_thickness, e.fluid_load_fraction);
+    let (clearance_torque, journal_weight, eccentricity_ratio, grease_yield_torque) = joint.clearance_outputs(e.load, e.angular_velocity, e.film_thickness);
     OperatingPoint {
         load: e.load,
         angular_velocity: e.angular_velocity,
@@ -132,5 +133,9 @@ pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
         min_film_thickness: h_min,
         min_lambda_ratio: h_min / joint.composite_roughness(),
         validity: joint.validity(e.load, e.angular_velocity),
+        clearance_torque,
+        journal_weight,
+        eccentricity_ratio,
+        grease_yield_torque,
     }
 }

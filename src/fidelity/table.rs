@@ -51,6 +51,7 @@ use super::error::FidelityError;
 use super::evaluation::{regime_from_shares, Evaluation, Source};
 use super::hermite::{bicubic, bicubic_coefficients, central_slope, fourth_difference};
 use super::rest::RestTable;
+use crate::composite::RestYield;
 use crate::joint::Joint;
 use serde::Serialize;
 
@@ -108,6 +109,7 @@ pub struct StribeckTable {
     radius: f64,
     roughness: f64,
     rest: RestTable,
+    rest_yield: RestYield,
     report: ErrorReport,
     stats: TableStats,
     /// The tolerance the table was built for (caps the advertised bound).
@@ -287,6 +289,7 @@ impl StribeckTable {
             radius: p.geometry.pin_radius,
             roughness: joint.composite_roughness(),
             rest,
+            rest_yield: joint.rest_yield(),
             tolerance: f64::INFINITY,
             report: ErrorReport::default(),
             stats: TableStats {
@@ -394,7 +397,7 @@ impl StribeckTable {
     #[inline]
     pub fn rest(&self, load: f64) -> Option<Evaluation> {
         let h = self.rest.film(load)?;
-        Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, Source::Rest))
+        Some(rest_evaluation(load, h, self.mu_c, self.radius, self.roughness, &self.rest_yield, Source::Rest))
     }
 
     /// Largest errors measured against the complete solve on the check points (every cell
@@ -424,20 +427,25 @@ impl StribeckTable {
     }
 }
 
-/// The rest state (ω = 0): 1/γ1 = 0, 1/γ2 = 1, μ = μ_c, film `h`. Also the boundary level's
+/// The rest state (ω = 0): 1/γ1 = 0, 1/γ2 = 1, μ = μ_c plus the grease's yield torque over
+/// R·P (complete model), film `h`. Also the boundary level's
 /// answer at any speed (with `omega` as given).
 #[inline(always)]
-pub(crate) fn rest_evaluation(load: f64, h: f64, mu_c: f64, radius: f64, roughness: f64, source: Source) -> Evaluation {
+pub(crate) fn rest_evaluation(load: f64, h: f64, mu_c: f64, radius: f64, roughness: f64, rest_yield: &RestYield, source: Source) -> Evaluation {
+    // The grease's yield torque at rest (complete model; 0 for the paper's: μ = μ_c exactly),
+    // composed as the complete solve composes it at ω = 0.
+    let mu_f = rest_yield.at(load) / (radius * load);
+    let mu = mu_f + mu_c;
     Evaluation {
         load,
         angular_velocity: 0.0,
-        friction_coefficient: mu_c,
-        torque: mu_c * radius * load,
+        friction_coefficient: mu,
+        torque: mu * radius * load,
         film_thickness: h,
         lambda_ratio: h / roughness,
         fluid_load_fraction: 0.0,
         asperity_load_fraction: 1.0,
-        fluid_friction_coefficient: 0.0,
+        fluid_friction_coefficient: mu_f,
         asperity_friction_coefficient: mu_c,
         logit: f64::NEG_INFINITY,
         regime: crate::Regime::Boundary,

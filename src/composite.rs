@@ -1,0 +1,293 @@
+//! The complete model's composition (issue 28; not in the paper; docs/cold-day.md): the
+//! journal bearing's weight, the composite film, and the torque of the whole clearance.
+//!
+//! * **Journal weight** w: a function of the operating point only (so the load-sharing
+//!   residual stays monotone in its unknown): the quintic smoothstep (C²) of ln ρ_J,
+//!   ρ_J = 1 − ε(S) the journal's minimum film over the clearance at the full load, exactly 0
+//!   for ρ_J ≤ [`RHO_0`] and exactly 1 for ρ_J ≥ [`RHO_1`] (ε ≤ 0.8, where Raimondi & Boyd's
+//!   full-film tables hold in full). Over the paper's rig conditions at 20 °C ρ_J < 0.06, so
+//!   w = 0 and the paper's load sharing is untouched there.
+//! * **Composite film** in the solve ([`crate::mixed::solve_composite`]):
+//!   ln h(x1) = (1 − w)·ln h_13(x1) + w·ln h_J(x1), h_J(x1) = c·(1 − ε(S/x1)).
+//! * **Torque** (magnitude): T = T_asp + (1 − w)·T_contact,fluid + T_clearance + w·T_poiseuille,
+//!   T_asp = μ_c·x2·R·P (eq. 8), T_contact,fluid = Q_H·R (eq. 3) with the composite film,
+//!   T_clearance the shear of the lubricant in the clearance outside the contact arc
+//!   |θ| ≤ θ_c = (1 − w)·a/R over the gap h_g(θ) = c(1 − ε_g cos θ), ε_g = 1 − h/c
+//!   ([`crate::clearance::clearance_torque`]), and T_poiseuille = (c·ε_J/2)·x1·P·sin φ(ε_J),
+//!   the pressure-flow torque of the journal carrying x1·P (ε_J = 1 − h_J/c; Raimondi & Boyd's
+//!   friction variable (R/c)f = 2π²S/√(1 − ε²) + (ε/2) sin φ is the two terms at w = 1).
+//!   At rest T = μ_c·R·P + τ_y(T)·(2π − 2a/R)·R²·B: the grease's yield torque adds to breakaway.
+
+use crate::clearance::{clearance_torque, yield_torque, Rheology};
+use crate::journal::JournalTable;
+use crate::mixed::{JournalFilm, LoadSharing};
+use crate::params::{ParamError, Params};
+use std::sync::Arc;
+
+/// ρ_J at and below which the journal's weight is 0 (ε ≥ 0.94).
+pub const RHO_0: f64 = 0.06;
+/// ρ_J at and above which the journal's weight is 1 (ε ≤ 0.8).
+pub const RHO_1: f64 = 0.2;
+
+/// The quintic smoothstep t³(10 − 15t + 6t²) on [0, 1], 0 below, 1 above: C², monotone.
+pub fn smoothstep(t: f64) -> f64 {
+    if t <= 0.0 {
+        0.0
+    } else if t >= 1.0 {
+        1.0
+    } else {
+        t * t * t * (10.0 + t * (-15.0 + 6.0 * t))
+    }
+}
+
+/// w(ρ_J): the smoothstep of ln ρ_J between ln [`RHO_0`] and ln [`RHO_1`].
+pub fn journal_weight(rho: f64) -> f64 {
+    if rho <= RHO_0 {
+        return 0.0;
+    }
+    smoothstep((rho / RHO_0).ln() / (RHO_1 / RHO_0).ln())
+}
+
+/// The lubricant of the clearance at the joint's temperature: the grease's Herschel–Bulkley
+/// parameters by their Arrhenius laws from the reference temperature, with the base oil's
+/// Newtonian viscosity η_b(T) (Roelands' temperature relation); the base oil alone
+/// (τ_y = K = 0) with the grease disabled.
+pub fn rheology(params: &Params, base_viscosity: f64) -> Rheology {
+    let g = &params.grease;
+    if !g.enabled {
+        return Rheology { yield_stress: 0.0, consistency: 0.0, flow_index: 1.0, base_viscosity };
+    }
+    let l = &params.lubricant;
+    let d = 1.0 / l.temperature - 1.0 / l.reference_temperature;
+    Rheology {
+        yield_stress: g.yield_stress * (g.yield_activation * d).exp(),
+        consistency: g.consistency * (g.consistency_activation * d).exp(),
+        flow_index: g.flow_index,
+        base_viscosity,
+    }
+}
+
+/// The complete model's terms of one joint at one temperature.
+#[derive(Debug, Clone)]
+pub struct Complete {
+    /// The journal bearing of the joint's L/D = B/(2R).
+    pub journal: Arc<JournalTable>,
+    /// c = R_b − R (m) and its logarithm.
+    pub clearance: f64,
+    ln_clearance: f64,
+    radius: f64,
+    length: f64,
+    /// The clearance's lubricant at the temperature.
+    pub rheology: Rheology,
+    /// The cold supply ([`crate::cold_supply`]): ln of the replenishment ratio (0 where the
+    /// contact is flooded), and ln(η_b(T_ref)/η_b(T)) (0 there too): the journal's film is, as
+    /// the line contact's, the reference temperature's scaled by the ratio.
+    ln_supply: f64,
+    ln_eta_shift: f64,
+}
+
+/// The grease's yield torque at rest as a function of the load alone, for the fidelity
+/// levels' rest state: τ_y(T)·(2π − 2a/R)·R²·B with a = a(1 N)·√P (eq. 6). Zero for the paper's
+/// model and without grease.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RestYield {
+    rheology: Option<Rheology>,
+    radius: f64,
+    length: f64,
+    unit_half_width: f64,
+}
+
+impl RestYield {
+    /// The rest yield torque of `complete` (None: the paper's model) with the Hertz
+    /// half-width `unit_half_width` (m) at 1 N.
+    pub fn new(complete: Option<&Complete>, unit_half_width: f64) -> Self {
+        match complete {
+            Some(c) if c.rheology.yield_stress > 0.0 => Self { rheology: Some(c.rheology), radius: c.radius, length: c.length, unit_half_width },
+            _ => Self::default(),
+        }
+    }
+
+    /// The yield torque at rest under `load` (N), N·m: [`Complete::yield_torque`] at w = 0,
+    /// bit for bit.
+    #[inline]
+    pub fn at(&self, load: f64) -> f64 {
+        match &self.rheology {
+            Some(r) => {
+                let a = self.unit_half_width * load.abs().sqrt();
+                yield_torque(r, self.radius, self.length, ((1.0 - 0.0) * a / self.radius).min(std::f64::consts::PI))
+            }
+            None => 0.0,
+        }
+    }
+}
+
+/// Equal when the geometry and the clearance's lubricant are: the journal table is a function
+/// of the geometry's L/D.
+impl PartialEq for Complete {
+    fn eq(&self, other: &Self) -> bool {
+        (self.clearance, self.radius, self.length, self.rheology) == (other.clearance, other.radius, other.length, other.rheology)
+    }
+}
+
+/// The complete model's parts of the torque at one operating point.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Parts {
+    /// w, the journal's weight.
+    pub weight: f64,
+    /// ε_g = 1 − h/c, clamped to [0, 1).
+    pub eccentricity: f64,
+    /// T_clearance, N·m (its yield part included).
+    pub clearance_torque: f64,
+    /// τ_y(T)·(2π − 2θ_c)·R²·B, N·m: the yield part of T_clearance.
+    pub yield_torque: f64,
+    /// T_poiseuille, N·m (not yet weighted by w).
+    pub poiseuille_torque: f64,
+}
+
+impl Complete {
+    /// The terms for `params` with the base oil's viscosity `base_viscosity` (Pa·s) at the
+    /// temperature.
+    pub fn new(params: &Params, base_viscosity: f64) -> Result<Self, ParamError> {
+        let g = &params.geometry;
+        let l_over_d = g.bush_length / (2.0 * g.pin_radius);
+        let journal = JournalTable::shared(l_over_d).map_err(|e| ParamError::OutOfRange {
+            name: "geometry.bush_length".into(),
+            value: g.bush_length,
+            unit: "m",
+            range: format!("such that the journal bearing of L/D = {} can be solved ({e})", crate::fmt::Num(l_over_d)),
+        })?;
+        let c = params.radial_clearance();
+        let mut complete = Self {
+            journal,
+            clearance: c,
+            ln_clearance: c.ln(),
+            radius: g.pin_radius,
+            length: g.bush_length,
+            rheology: rheology(params, base_viscosity),
+            ln_supply: 0.0,
+            ln_eta_shift: 0.0,
+        };
+        complete.set_supply(params, base_viscosity);
+        Ok(complete)
+    }
+
+    fn set_supply(&mut self, params: &Params, base_viscosity: f64) {
+        let (g, l) = (&params.grease, &params.lubricant);
+        let (ln_ref, ln_eta) = (l.viscosity.ln(), base_viscosity.ln());
+        match crate::cold_supply::ln_supply_ratio(g.enabled, g.supply_exponent, l.temperature, l.reference_temperature, ln_ref, ln_eta) {
+            Some(r) => (self.ln_supply, self.ln_eta_shift) = (r, ln_ref - ln_eta),
+            None => (self.ln_supply, self.ln_eta_shift) = (0.0, 0.0),
+        }
+    }
+
+    /// These terms at another temperature: the same journal table, the clearance's lubricant
+    /// for `params` (at its temperature) with the base oil's viscosity `base_viscosity`.
+    pub fn at_temperature(&self, params: &Params, base_viscosity: f64) -> Self {
+        let mut c = Self { rheology: rheology(params, base_viscosity), ..self.clone() };
+        c.set_supply(params, base_viscosity);
+        c
+    }
+
+    /// The journal's weight w at ln S (eq. 20 at the whole load with η_b(T); −∞ at rest: w = 0):
+    /// ρ_J = 1 − ε(S), below T_ref (cold supply) the supplied ρ_J = (1 − ε(S_ref))·ratio,
+    /// S_ref the Sommerfeld number with η_b(T_ref).
+    #[inline]
+    pub fn weight(&self, ln_sommerfeld: f64) -> f64 {
+        if ln_sommerfeld == f64::NEG_INFINITY {
+            return 0.0;
+        }
+        let (e, _) = self.journal.eccentricity(ln_sommerfeld + self.ln_eta_shift);
+        let rho = 1.0 - e;
+        journal_weight(if self.ln_supply == 0.0 { rho } else { rho * self.ln_supply.exp() })
+    }
+
+    /// The journal's film for the solve, `None` where w = 0 (the paper's film alone): with the
+    /// cold supply, h_J(x1) = c·(1 − ε(S_ref/x1))·ratio.
+    #[inline]
+    pub fn journal_film(&self, weight: f64, ln_sommerfeld: f64) -> Option<JournalFilm<'_>> {
+        (weight > 0.0).then_some(JournalFilm {
+            weight,
+            ln_sommerfeld: ln_sommerfeld + self.ln_eta_shift,
+            ln_clearance: self.ln_clearance + self.ln_supply,
+            table: &self.journal,
+        })
+    }
+
+    /// ε_g = 1 − h/c for the film `film` (m), clamped to [0, 1).
+    #[inline]
+    pub fn eccentricity(&self, film: f64) -> f64 {
+        (1.0 - film / self.clearance).clamp(0.0, 1.0 - f64::EPSILON)
+    }
+
+    /// The half-angle θ_c = (1 − w)·a/R of the contact arc left out of the clearance, rad.
+    #[inline]
+    pub fn contact_angle(&self, weight: f64, half_width: f64) -> f64 {
+        ((1.0 - weight) * half_width / self.radius).min(std::f64::consts::PI)
+    }
+
+    /// The yield torque τ_y(T)·(2π − 2θ_c)·R²·B (N·m) at weight w and Hertz half-width a.
+    #[inline]
+    pub fn yield_torque(&self, weight: f64, half_width: f64) -> f64 {
+        yield_torque(&self.rheology, self.radius, self.length, self.contact_angle(weight, half_width))
+    }
+
+    /// The clearance's torque (N·m) at sliding speed `u` (m/s) for the film `film` (m).
+    #[inline]
+    pub fn clearance_torque(&self, weight: f64, half_width: f64, u: f64, film: f64) -> f64 {
+        clearance_torque(&self.rheology, u, self.radius, self.length, self.clearance, self.eccentricity(film), self.contact_angle(weight, half_width))
+    }
+
+    /// Every part at the solved load sharing `ls`, weight w, ln S at the whole load, Hertz
+    /// half-width a (m), load P (N) and sliding speed u (m/s).
+    pub fn parts(&self, weight: f64, ln_sommerfeld: f64, ls: &LoadSharing, half_width: f64, load: f64, u: f64) -> Parts {
+        let poiseuille_torque = if weight > 0.0 && ls.fluid_fraction > 0.0 {
+            let (e, _) = self.journal.eccentricity(ln_sommerfeld + self.ln_eta_shift - ls.fluid_fraction.ln());
+            // The journal's eccentricity: 1 − h_J/c (the supplied film below T_ref).
+            let e = if self.ln_supply == 0.0 { e } else { 1.0 - (1.0 - e) * self.ln_supply.exp() };
+            0.5 * self.clearance * e * ls.fluid_fraction * load * self.journal.attitude_angle(e).sin()
+        } else {
+            0.0
+        };
+        Parts {
+            weight,
+            eccentricity: self.eccentricity(ls.film_thickness),
+            clearance_torque: self.clearance_torque(weight, half_width, u, ls.film_thickness),
+            yield_torque: self.yield_torque(weight, half_width),
+            poiseuille_torque,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn smoothstep_is_c2_and_monotone() {
+        assert_eq!((smoothstep(-1.0), smoothstep(0.0), smoothstep(1.0), smoothstep(2.0)), (0.0, 0.0, 1.0, 1.0));
+        let h = 1e-4;
+        let mut prev = 0.0;
+        for i in 1..=1000 {
+            let t = i as f64 / 1000.0;
+            let v = smoothstep(t);
+            assert!(v >= prev);
+            prev = v;
+        }
+        // First and second derivatives vanish at both ends (one-sided differences).
+        for t in [0.0, 1.0 - 2.0 * h] {
+            let d1 = (smoothstep(t + h) - smoothstep(t)) / h;
+            assert!(d1.abs() < 1e-6, "{t}: {d1}");
+        }
+        assert!((smoothstep(0.5) - 0.5).abs() < 1e-15);
+    }
+
+    #[test]
+    fn weight_is_zero_and_one_at_its_ends() {
+        assert_eq!(journal_weight(0.0), 0.0);
+        assert_eq!(journal_weight(RHO_0), 0.0);
+        assert_eq!(journal_weight(RHO_1), 1.0);
+        assert_eq!(journal_weight(1.0), 1.0);
+        let mid = journal_weight((RHO_0 * RHO_1).sqrt());
+        assert!((mid - 0.5).abs() < 1e-12, "{mid}");
+    }
+}
