@@ -52,6 +52,25 @@ struct Point {
     since: f64,
 }
 
+/// The grease's flow index n (dropped from the default fit across temperature when the speeds
+/// span less than [`MIN_SPEED_SPAN`]).
+pub const FLOW_INDEX: &str = "grease.flow_index";
+
+/// The span of speeds (95th over 5th percentile of |ω| over the used samples) from which the
+/// flow index is fitted by default: a decade.
+pub const MIN_SPEED_SPAN: f64 = 10.0;
+
+/// 95th over 5th percentile of |ω| over `points`.
+fn speed_span(points: &[Point]) -> f64 {
+    let mut w: Vec<f64> = points.iter().map(|p| p.omega.abs()).collect();
+    if w.is_empty() {
+        return 1.0;
+    }
+    w.sort_by(f64::total_cmp);
+    let at = |f: f64| w[((w.len() - 1) as f64 * f).round() as usize];
+    at(0.95) / at(0.05)
+}
+
 /// Extensions of the settling window at most (each by half the stated settling time).
 pub const MAX_SETTLE_EXTENSIONS: usize = 6;
 
@@ -276,13 +295,28 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
     // The screened (default) keys whose column at the start the other columns explain (or
     // that move nothing) are dropped before the fit, one at a time.
     let mut dropped_before = Vec::new();
+    // The flow index shows only through the shear rate's spread: over a narrow span of speeds
+    // K·γ̇^n is a valley in (K, n), along which the fit crawls without end.
+    if let Some(k) = extras.iter().position(|e| screened.contains(&e.key.name()) && e.key.name() == FLOW_INDEX) {
+        let span = speed_span(&support);
+        if !(span >= MIN_SPEED_SPAN) {
+            dropped_before.push((
+                FLOW_INDEX.to_string(),
+                format!(
+                    "the used samples' speeds span a factor {span:.3} (5th to 95th percentile of |omega|), less than the {MIN_SPEED_SPAN} \
+                     needed to tell the flow index from the consistency: record strokes of frequencies a decade apart"
+                ),
+            ));
+            extras.remove(k);
+        }
+    }
     loop {
         let which: Vec<usize> = (0..extras.len()).filter(|&k| screened.contains(&extras[k].key.name())).collect();
         if which.is_empty() {
             break;
         }
         let trial = Problem { extras: &extras, ..template };
-        let (jac, _) = trial.jacobian(&start(&trial)?)?;
+        let (jac, _) = trial.jacobian(&start(&trial)?, false)?;
         let d = independence(&jac, &which);
         let (i, &least) = d.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1)).expect("not empty");
         if !(least < MIN_INDEPENDENCE) {
@@ -317,7 +351,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
         let linear = problem.linear_solve(&beta)?;
         beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
     }
-    let (jac, model) = problem.jacobian(&beta)?;
+    let (jac, model) = problem.jacobian(&beta, true)?;
     let r = &y - &model;
     if !(beta.iter().all(|b| b.is_finite()) && r.norm_squared().is_finite()) {
         return Err(CalibrationError::Unidentifiable {
@@ -533,7 +567,7 @@ struct Problem<'a> {
     base: Params,
     extras: &'a [Extra],
     offset: bool,
-    ident: &'a dyn Fn(usize) -> (String, usize),
+    ident: &'a (dyn Fn(usize) -> (String, usize) + Sync),
 }
 
 impl Problem<'_> {
@@ -614,9 +648,10 @@ impl Problem<'_> {
             .ok_or_else(|| CalibrationError::Unidentifiable { what: "singular least-squares problem for mu_c".into() })
     }
 
-    /// Jacobian of the model with respect to β (central differences for the extras, exact for
-    /// μ_c, J and T_0), and the model.
-    fn jacobian(&self, beta: &DVector<f64>) -> Result<(DMatrix<f64>, DVector<f64>), CalibrationError> {
+    /// Jacobian of the model with respect to β (central differences for the extras when
+    /// `central`, else forward ones; exact for μ_c, J and T_0), and the model. LM's steps take
+    /// the forward one (half the model evaluations), the intervals the central one.
+    fn jacobian(&self, beta: &DVector<f64>, central: bool) -> Result<(DMatrix<f64>, DVector<f64>), CalibrationError> {
         let s = self.shapes(beta)?;
         let n = s.len();
         let model = self.model_of(&s, beta);
@@ -627,7 +662,7 @@ impl Problem<'_> {
             let (mut bp, mut bm) = (beta.clone(), beta.clone());
             bp[k] += h;
             bm[k] -= h;
-            let d = (self.model(&bp)? - self.model(&bm)?) / (2.0 * h);
+            let d = if central { (self.model(&bp)? - self.model(&bm)?) / (2.0 * h) } else { (self.model(&bp)? - &model) / h };
             j.set_column(k, &d);
         }
         for c in 0..beta.len() - m {
@@ -659,7 +694,7 @@ impl Residuals for LmProblem<'_, '_> {
         }
     }
     fn jacobian_at(&self, beta: &DVector<f64>) -> Option<DMatrix<f64>> {
-        match self.p.jacobian(beta) {
+        match self.p.jacobian(beta, false) {
             Ok((j, _)) => Some(j),
             Err(e) => {
                 self.error.borrow_mut().get_or_insert(e);

@@ -9,6 +9,7 @@
 
 use super::error::CalibrationError;
 use pinjoint::{Joint, Params};
+use rayon::prelude::*;
 
 /// sign(ω) with sign(0) = 0 (no friction direction at rest).
 pub fn sign(w: f64) -> f64 {
@@ -34,22 +35,40 @@ pub struct Shape {
 /// temperature (K) when the record gives it (None: the parameters' `lubricant.temperature`).
 pub type Operating = (f64, f64, Option<f64>);
 
-/// The shape at every operating point, warm-starting each solve from the previous one. A
-/// point with a temperature is evaluated by the joint at that temperature
-/// ([`Joint::at_temperature`]: bit for bit the joint built with it, at the cost of a few
-/// logarithms), made again only where the temperature changes (once a record for a constant
-/// one). `ident` identifies the sample in an error.
-pub fn shapes(params: &Params, points: &[Operating], ident: &dyn Fn(usize) -> (String, usize)) -> Result<Vec<Shape>, CalibrationError> {
+/// Operating points solved in one sequence (warm-started from each other); the sequences are
+/// solved in parallel (rayon). A fixed length, so that the answers do not depend on the number
+/// of threads.
+pub const CHUNK: usize = 1024;
+
+/// The shape at every operating point, warm-starting each solve from the previous one within
+/// a [`CHUNK`] of points, the chunks in parallel. A point with a temperature is evaluated by
+/// the joint at that temperature ([`Joint::at_temperature`]: bit for bit the joint built with
+/// it, at the cost of a few logarithms), made again only where the temperature changes (once a
+/// chunk for a constant one). `ident` identifies the sample in an error.
+pub fn shapes(params: &Params, points: &[Operating], ident: &(dyn Fn(usize) -> (String, usize) + Sync)) -> Result<Vec<Shape>, CalibrationError> {
     let joint = Joint::new(params)?;
+    let chunks = points
+        .par_chunks(CHUNK)
+        .enumerate()
+        .map(|(c, pts)| chunk_shapes(&joint, params, pts, c * CHUNK, ident))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(chunks.into_iter().flatten().collect())
+}
+
+/// [`shapes`] of one chunk, its first point the `first`-th.
+fn chunk_shapes(
+    joint: &Joint,
+    params: &Params,
+    points: &[Operating],
+    first: usize,
+    ident: &(dyn Fn(usize) -> (String, usize) + Sync),
+) -> Result<Vec<Shape>, CalibrationError> {
     let r = params.geometry.pin_radius;
     let mut guess = None;
     let mut at: Option<(u64, Joint)> = None;
     let mut out = Vec::with_capacity(points.len());
-    for (i, &(load, w, temperature)) in points.iter().enumerate() {
-        let fail = |source| {
-            let (record, row) = ident(i);
-            CalibrationError::Model { record, row, source }
-        };
+    for (k, &(load, w, temperature)) in points.iter().enumerate() {
+        let i = first + k;
         let j = match temperature {
             Some(t) if t.to_bits() != params.lubricant.temperature.to_bits() => {
                 if at.as_ref().is_none_or(|(bits, _)| *bits != t.to_bits()) {
@@ -62,9 +81,12 @@ pub fn shapes(params: &Params, points: &[Operating], ident: &dyn Fn(usize) -> (S
                 }
                 &at.as_ref().expect("made above").1
             }
-            _ => &joint,
+            _ => joint,
         };
-        let op = j.evaluate_from(load, w, guess).map_err(fail)?;
+        let op = j.evaluate_from(load, w, guess).map_err(|source| {
+            let (record, row) = ident(i);
+            CalibrationError::Model { record, row, source }
+        })?;
         guess = op.logit.is_finite().then_some(op.logit);
         let s = sign(w) * r * load;
         out.push(Shape { fluid: s * op.fluid_friction_coefficient, boundary: s * op.asperity_load_fraction });
