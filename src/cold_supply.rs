@@ -2,10 +2,13 @@
 //! grease feeds the contact less oil. Not in the paper; docs/cold-day.md.
 //!
 //! A grease lubricates the contact through the oil its thickener releases (bleed) and the
-//! oil that flows back into the track between passes; both are driven by capillary and
-//! surface-tension forces against the base oil's viscosity, so the rate scales like
-//! 1/η_b (Cann, 1999; Lugt, *Grease Lubrication in Rolling Bearings*, Wiley, 2013, ch. 9 on
-//! replenishment). The film the supply allows is the film the flooded contact had at the
+//! oil that flows back into the track between passes: Darcy flow of the base oil through the
+//! thickener (Baart, van der Vorst, Lugt & van Ostayen, 2010, Tribol. Trans. 53, 340–348) and
+//! capillary replenishment of the track (Gershuni, Larson & Lugt, 2008, Tribol. Trans. 51,
+//! 643–651), both viscous flows driven by surface tension, so their rate scales like 1/η_b
+//! (the exponent m = 1, [`crate::grease::DEFAULT_SUPPLY_EXPONENT`]; the papers' findings as
+//! the journal-bearing work recalled them, not checked against their text here). The film the
+//! supply allows is the film the flooded contact had at the
 //! reference temperature, scaled by the replenishment ratio:
 //!
 //! `h_13,supplied(x1; T) = min(h_13(x1; T), h_13(x1; T_ref)·(η_b(T_ref)/η_b(T))^m)` for
@@ -23,7 +26,8 @@
 //!
 //! m (`grease.supply_exponent`, default 1) is the uncertain part: no published measurement
 //! of the replenishment of a landing-gear grease against temperature was found; docs/cold-day.md
-//! shows the sensitivity to m over 0.5–2.
+//! shows the sensitivity to m over 0.5–2. The same ratio scales the journal bearing's film
+//! below T_ref ([`crate::composite`]).
 
 use crate::mixed::FilmGroups;
 

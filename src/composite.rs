@@ -18,7 +18,8 @@
 //!   friction variable (R/c)f = 2π²S/√(1 − ε²) + (ε/2) sin φ is the two terms at w = 1).
 //!   At rest T = μ_c·R·P + τ_y(T)·(2π − 2a/R)·R²·B: the grease's yield torque adds to breakaway.
 
-use crate::clearance::{clearance_torque, yield_torque, Rheology};
+use crate::clearance::{clearance_torque, yield_torque};
+use crate::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
 use crate::mixed::{JournalFilm, LoadSharing};
 use crate::params::{ParamError, Params};
@@ -55,16 +56,17 @@ pub fn journal_weight(rho: f64) -> f64 {
 pub fn rheology(params: &Params, base_viscosity: f64) -> Rheology {
     let g = &params.grease;
     if !g.enabled {
-        return Rheology { yield_stress: 0.0, consistency: 0.0, flow_index: 1.0, base_viscosity };
+        return Rheology::newtonian(base_viscosity);
     }
-    let l = &params.lubricant;
-    let d = 1.0 / l.temperature - 1.0 / l.reference_temperature;
-    Rheology {
-        yield_stress: g.yield_stress * (g.yield_activation * d).exp(),
-        consistency: g.consistency * (g.consistency_activation * d).exp(),
+    let reference = GreaseReference {
+        yield_stress: g.yield_stress,
+        consistency: g.consistency,
         flow_index: g.flow_index,
-        base_viscosity,
-    }
+        yield_activation: g.yield_activation,
+        consistency_activation: g.consistency_activation,
+    };
+    let l = &params.lubricant;
+    reference.at(l.temperature, l.reference_temperature, base_viscosity)
 }
 
 /// The complete model's terms of one joint at one temperature.
@@ -154,7 +156,11 @@ impl Complete {
             name: "geometry.bush_length".into(),
             value: g.bush_length,
             unit: "m",
-            range: format!("such that the journal bearing of L/D = {} can be solved ({e})", crate::fmt::Num(l_over_d)),
+            range: format!(
+                "such that the journal bearing's L/D = B/(2R) (here {} with geometry.pin_radius = {} m) can be solved ({e})",
+                crate::fmt::Num(l_over_d),
+                crate::fmt::Num(g.pin_radius)
+            ),
         })?;
         let c = params.radial_clearance();
         let mut complete = Self {
@@ -189,16 +195,17 @@ impl Complete {
     }
 
     /// The journal's weight w at ln S (eq. 20 at the whole load with η_b(T); −∞ at rest: w = 0):
-    /// ρ_J = 1 − ε(S), below T_ref (cold supply) the supplied ρ_J = (1 − ε(S_ref))·ratio,
-    /// S_ref the Sommerfeld number with η_b(T_ref).
+    /// w(ρ_J), ρ_J = 1 − ε(S); below T_ref (cold supply) ε(S_ref), S_ref the Sommerfeld number
+    /// with η_b(T_ref): the weights of the two films stay those of the flooded joint at T_ref,
+    /// and both films are the reference's scaled by the replenishment ratio, so the composite
+    /// film is too (non-increasing as T falls, at every load share).
     #[inline]
     pub fn weight(&self, ln_sommerfeld: f64) -> f64 {
         if ln_sommerfeld == f64::NEG_INFINITY {
             return 0.0;
         }
         let (e, _) = self.journal.eccentricity(ln_sommerfeld + self.ln_eta_shift);
-        let rho = 1.0 - e;
-        journal_weight(if self.ln_supply == 0.0 { rho } else { rho * self.ln_supply.exp() })
+        journal_weight(1.0 - e)
     }
 
     /// The journal's film for the solve, `None` where w = 0 (the paper's film alone): with the
@@ -211,6 +218,15 @@ impl Complete {
             ln_clearance: self.ln_clearance + self.ln_supply,
             table: &self.journal,
         })
+    }
+
+    /// The journal's film of the flooded joint at ln S (no cold supply), with its weight:
+    /// what the start table's nodes are solved with (they hold the reference temperature's
+    /// roots). `None` where w = 0.
+    pub fn reference_journal_film(&self, ln_sommerfeld: f64) -> Option<JournalFilm<'_>> {
+        let (e, _) = self.journal.eccentricity(ln_sommerfeld);
+        let weight = journal_weight(1.0 - e);
+        (weight > 0.0).then_some(JournalFilm { weight, ln_sommerfeld, ln_clearance: self.ln_clearance, table: &self.journal })
     }
 
     /// ε_g = 1 − h/c for the film `film` (m), clamped to [0, 1).

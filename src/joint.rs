@@ -4,7 +4,7 @@
 use crate::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
 use crate::composite::{Complete, Parts};
-use crate::mixed::{solve_composite, solve_starved, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
+use crate::mixed::{solve_composite, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
 use crate::params::{Lubricant, ParamError, Params};
 use crate::solve_start::{StartCut, StartTable};
 use crate::viscosity::{limiting_shear_stress, ln_roelands_from};
@@ -76,10 +76,11 @@ pub enum ModelError {
         /// The largest load the asperity model carries for these parameters (N).
         capacity: f64,
     },
-    /// The central film would be thicker than the diametral clearance 2(R_b − R), the widest
-    /// gap the bush leaves around the pin: the line-contact film of eq. 12 has left the
-    /// geometry it was derived for (a lubricant too viscous for this speed and load: a low
-    /// temperature, a high speed or a light load).
+    /// The paper's model only (`model.paper = true`): the central film would be thicker than
+    /// the diametral clearance 2(R_b − R), the widest gap the bush leaves around the pin: the
+    /// line-contact film of eq. 12 has left the geometry it was derived for (a lubricant too
+    /// viscous for this speed and load: a low temperature, a high speed or a light load). The
+    /// complete model hands the film to the journal bearing there ([`crate::composite`]).
     #[error(
         "the model gives film_thickness = {h} m at load = {l} N, angular velocity = {w} rad/s, more than the \
          diametral clearance 2(R_b - R) = {c} m the bush leaves around the pin: the line-contact film (eq. 12) \
@@ -260,6 +261,8 @@ pub struct Joint {
     ln_g: f64,
     /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`).
     starved: Option<crate::mixed::StarvedInlet>,
+    /// ln S (eq. 20) at P = 1 N, u = 1 m/s with η0(T_ref): ln η0(T_ref) + ln(B (R/c)²/π).
+    ln_sommerfeld_reference: f64,
     /// The complete model's terms at the temperature; `None` for the paper's model
     /// (`model.paper = true`), whose path is then today's, bit for bit.
     complete: Option<Complete>,
@@ -308,6 +311,7 @@ impl Joint {
             start_film: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, reference.viscosity, reference.pressure_viscosity_coefficient),
             start_shift: f64::NAN,
             complete: None,
+            ln_sommerfeld_reference: (reference.viscosity * g.bush_length / PI * (g.pin_radius / params.radial_clearance()).powi(2)).ln(),
         };
         joint.set_temperature_terms()?;
         joint.start = Arc::new(StartTable::new(joint.capacity));
@@ -377,7 +381,10 @@ impl Joint {
     fn start_node(&self, ln_p: f64, ln_u: f64, warm: Option<f64>) -> crate::solve_start::Node {
         let asp = self.asp_unit.at_load_ratio(ln_p);
         let film = self.start_film.at_ratio(ln_p, ln_u);
-        let ls = solve_starved(Some(&film), &asp, &self.params.surface, warm, self.starved);
+        // The complete model: the composite film of the flooded joint at the reference
+        // temperature (S with η0(T_ref)), so that the table starts the journal's region too.
+        let journal = self.complete.as_ref().and_then(|c| c.reference_journal_film(self.ln_sommerfeld_reference + ln_u - ln_p));
+        let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.starved, journal.as_ref(), true);
         crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
     }
 
@@ -417,7 +424,13 @@ impl Joint {
     /// line contact's e^{ln r} at w = 0.
     #[inline]
     fn min_film_ratio(ln_r: f64, weight: f64) -> f64 {
-        if weight == 0.0 { ln_r.exp() } else { ((1.0 - weight) * ln_r).exp() }
+        if weight == 0.0 {
+            ln_r.exp()
+        } else if weight >= 1.0 {
+            1.0
+        } else {
+            ((1.0 - weight) * ln_r).exp()
+        }
     }
 
     /// ε_g = 1 − h/c of the clearance around the film `film` (m), clamped to [0, 1).
@@ -650,9 +663,6 @@ impl Joint {
         };
         let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s));
         let guess = match start {
-            // Where the journal shares the film the start table (the line contact's) is
-            // further off than a neighbour's root: a caller's guess is taken as it is.
-            Start::From(Some(g)) if u > 0.0 && journal.is_some() && g.is_finite() => Some(g),
             Start::From(guess) if u > 0.0 => Some(self.start_from(guess, lt.ln_load, ln_u)),
             Start::From(guess) => guess,
             // The cut is the table at its load to rounding; where it has no value (another
@@ -812,7 +822,8 @@ impl Joint {
     }
 
     /// The diametral clearance 2(R_b − R) (m): the widest gap the bush leaves around the pin,
-    /// and so the largest central film the model answers with ([`ModelError::FilmBeyondClearance`]).
+    /// and so the largest central film the paper's model answers with
+    /// ([`ModelError::FilmBeyondClearance`]; the complete model's film is the composite one).
     pub fn max_film_thickness(&self) -> f64 {
         2.0 * self.params.radial_clearance()
     }

@@ -29,8 +29,10 @@ pub mod fast_math;
 pub mod newton;
 pub mod starvation;
 pub mod roelands_temperature;
-pub mod clearance;
+// The joint as a journal bearing and the grease in its clearance (issue 28; no parameters):
 pub mod journal;
+pub mod grease;
+pub mod clearance;
 pub mod params;
 // The paper's equations:
 pub mod gw;

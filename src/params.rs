@@ -119,7 +119,7 @@ pub struct Model {
 }
 
 /// The grease in the clearance and its supply to the contact (complete model only; see
-/// [`crate::clearance`] for the rheology and the sources of the defaults).
+/// [`crate::grease`] for the rheology and the sources of the defaults).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Grease {
@@ -213,7 +213,7 @@ impl Default for Starvation {
 }
 impl Default for Grease {
     fn default() -> Self {
-        use crate::clearance as c;
+        use crate::grease as c;
         Self {
             enabled: true,
             yield_stress: c::DEFAULT_YIELD_STRESS,
@@ -221,14 +221,10 @@ impl Default for Grease {
             flow_index: c::DEFAULT_FLOW_INDEX,
             yield_activation: c::DEFAULT_YIELD_ACTIVATION,
             consistency_activation: c::DEFAULT_CONSISTENCY_ACTIVATION,
-            supply_exponent: DEFAULT_SUPPLY_EXPONENT,
+            supply_exponent: c::DEFAULT_SUPPLY_EXPONENT,
         }
     }
 }
-
-/// Default exponent m of the cold supply (docs/cold-day.md): the oil the grease releases
-/// into the track scales like 1/η of the base oil.
-pub const DEFAULT_SUPPLY_EXPONENT: f64 = 1.0;
 
 impl Default for Friction {
     fn default() -> Self {
@@ -393,13 +389,17 @@ pub static PARAMS: [ParamSpec; 34] = [
     spec!(starvation.exponent, "gamma_s", "1", Range::OpenClosed(0.0, 100.0), "Extension: Chevalier et al. (1998)", "Exponent of the starvation relation h = (h_ff^-g + h_oil^-g)^(-1/g)"),
     switch!(model.paper, "Issue 28 (default false: the complete model)", "true: the paper's model, bit for bit (film refused beyond the diametral clearance, temperature from -35 C); false: the complete model (journal bearing in full film, grease in the clearance, cold supply)"),
     switch!(grease.enabled, "Complete model (default true)", "true: Herschel-Bulkley grease in the clearance and the cold supply to the contact; false: the base oil alone fills the clearance (Newtonian), flooded supply"),
-    spec!(grease.yield_stress, "tau_y", "Pa", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Yield stress of the grease at the reference temperature (Herschel-Bulkley)"),
-    spec!(grease.consistency, "K", "Pa.s^n", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Consistency of the grease at the reference temperature (Herschel-Bulkley tau = tau_y + K gamma_dot^n + eta_b gamma_dot)"),
-    spec!(grease.flow_index, "n", "1", Range::OpenClosed(0.0, 1.0), crate::clearance::GREASE_SOURCE, "Flow index of the grease (Herschel-Bulkley)"),
-    spec!(grease.yield_activation, "E_y/R", "K", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Activation temperature of the yield stress: tau_y(T) = tau_y exp(E_y/R (1/T - 1/T_ref))"),
-    spec!(grease.consistency_activation, "E_K/R", "K", Range::NonNegative, crate::clearance::GREASE_SOURCE, "Activation temperature of the consistency: K(T) = K exp(E_K/R (1/T - 1/T_ref))"),
+    spec!(grease.yield_stress, "tau_y", "Pa", Range::NonNegative, GREASE_SOURCE, "Yield stress of the grease at the reference temperature (Herschel-Bulkley)"),
+    spec!(grease.consistency, "K", "Pa.s^n", Range::NonNegative, GREASE_SOURCE, "Consistency of the grease at the reference temperature (Herschel-Bulkley tau = tau_y + K gamma_dot^n + eta_b gamma_dot)"),
+    spec!(grease.flow_index, "n", "1", Range::OpenClosed(0.0, 1.0), GREASE_SOURCE, "Flow index of the grease (Herschel-Bulkley)"),
+    spec!(grease.yield_activation, "E_y/R", "K", Range::NonNegative, GREASE_SOURCE, "Activation temperature of the yield stress: tau_y(T) = tau_y exp(E_y/R (1/T - 1/T_ref))"),
+    spec!(grease.consistency_activation, "E_K/R", "K", Range::NonNegative, GREASE_SOURCE, "Activation temperature of the consistency: K(T) = K exp(E_K/R (1/T - 1/T_ref))"),
     spec!(grease.supply_exponent, "m", "1", Range::Closed(0.0, 10.0), "Complete model: cold supply (docs/cold-day.md), default 1", "Exponent of the cold supply: below T_ref the contact film is at most the reference film times (eta_b(T_ref)/eta_b(T))^m; 0 = no supply limit"),
 ];
+
+/// Where the grease's defaults come from ([`crate::grease`]: chosen for the paper's grease class
+/// where no published value was found; docs/cold-day.md).
+const GREASE_SOURCE: &str = "Complete model: lithium-complex grease to MIL-PRF-23827 Type I, chosen within published ranges (crate::grease, docs/cold-day.md)";
 
 /// Lowest admissible temperature (K) of the paper's model (`model.paper = true`), −35 °C. Roelands' temperature term (1 + θ/135 °C)
 /// has its pole at θ = −135 °C, where η0 → ∞ (at 145 K the film of the Table 3 oil was

@@ -4,7 +4,8 @@
 //! appears in all of them.
 //!
 //! The order is the sweep's: the nine quantities of the paper's model, `regime`, then the
-//! extensions (h_min, eq. 21 as printed), so the earlier columns keep their positions.
+//! extensions (h_min, eq. 21 as printed; the complete model's clearance torque, journal weight,
+//! eccentricity ratio and grease yield torque) and `validity` last, so the earlier columns keep their positions.
 //!
 //! [`POINT`] is every quantity of an operating point (the CSV columns with the inputs and the
 //! parts of μ), in the order of `pinjoint point --json`; [`LUBRICANT`] the lubricant state a
@@ -40,7 +41,7 @@ pub struct Column {
 }
 
 /// Every result column, in the sweep's order.
-pub const COLUMNS: [Column; 13] = [
+pub const COLUMNS: [Column; 17] = [
     Column { name: "friction_coefficient", unit: "1", description: "friction coefficient μ (eq. 10)", value: Value::Number(|o| o.friction_coefficient) },
     Column { name: "torque", unit: "N.m", description: "torque magnitude μ·R·P_T (eq. 11)", value: Value::Number(|o| o.torque) },
     Column { name: "film_thickness", unit: "m", description: "central film thickness h_c (eqs. 13, 19)", value: Value::Number(|o| o.film_thickness) },
@@ -53,6 +54,25 @@ pub const COLUMNS: [Column; 13] = [
     Column { name: "regime", unit: "-", description: "boundary, mixed or full-film (1 % load-share thresholds)", value: Value::Regime },
     Column { name: "min_film_thickness", unit: "m", description: "minimum film h_min (Pan–Hamrock ratio; extension)", value: Value::Number(|o| o.min_film_thickness) },
     Column { name: "min_lambda_ratio", unit: "1", description: "λ from h_min (eq. 21 as printed; extension)", value: Value::Number(|o| o.min_lambda_ratio) },
+    Column {
+        name: "clearance_torque",
+        unit: "N.m",
+        description: "torque of the lubricant in the clearance outside the contact arc, yield part included (complete model; 0 for model.paper)",
+        value: Value::Number(|o| o.clearance_torque),
+    },
+    Column {
+        name: "journal_weight",
+        unit: "1",
+        description: "weight w of the journal bearing in the composite film (0 line contact, 1 full-film journal; complete model)",
+        value: Value::Number(|o| o.journal_weight),
+    },
+    Column { name: "eccentricity_ratio", unit: "1", description: "eccentricity ratio of the clearance 1 - h_c/c (clamped to [0, 1))", value: Value::Number(|o| o.eccentricity_ratio) },
+    Column {
+        name: "grease_yield_torque",
+        unit: "N.m",
+        description: "the grease's yield torque, part of the clearance torque and of the torque at rest (complete model)",
+        value: Value::Number(|o| o.grease_yield_torque),
+    },
     Column {
         name: "validity",
         unit: "-",
@@ -79,11 +99,11 @@ pub const DETAILS: [Column; 5] = [
 
 /// Every quantity of an operating point but the solver's `logit`, in the order of `pinjoint
 /// point --json`: [`INPUTS`], [`COLUMNS`] up to `regime`, [`DETAILS`], then the h_min
-/// columns and `validity`.
-pub const POINT: [Column; 20] = {
-    let mut all = [COLUMNS[0]; 20];
+/// columns, the complete model's clearance columns and `validity`.
+pub const POINT: [Column; 24] = {
+    let mut all = [COLUMNS[0]; 24];
     let mut k = 0;
-    while k < 20 {
+    while k < 24 {
         all[k] = match k {
             0..2 => INPUTS[k],
             2..12 => COLUMNS[k - 2],
@@ -149,8 +169,8 @@ impl Serialize for Record<'_> {
 }
 
 /// The names of [`COLUMNS`], in order.
-pub const NAMES: [&str; 13] = {
-    let mut names = [""; 13];
+pub const NAMES: [&str; COLUMNS.len()] = {
+    let mut names = [""; COLUMNS.len()];
     let mut i = 0;
     while i < COLUMNS.len() {
         names[i] = COLUMNS[i].name;

@@ -162,7 +162,20 @@ pub const STROKE_AMPLITUDE: Range = Range {
 /// Every checked range: the operating point's three, then the rig's stroke.
 pub const RANGES: [Range; 5] = [LOAD, SLIDING_SPEED, TEMPERATURE, FREQUENCY, STROKE_AMPLITUDE];
 
-/// Below this temperature (K, 0 °C) the answer is [`Validity::KnownWrong`].
+/// The declared service range of the complete model (issue 28): every operating point with
+/// a load in [[`SERVICE_LOAD_MIN`], the capacity), |ω| ≤ [`SERVICE_SPEED_MAX`] and a temperature
+/// in [[`SERVICE_TEMPERATURE_MIN`], [`SERVICE_TEMPERATURE_MAX`]] is answered at every fidelity
+/// level (no refusal; `tests/complete.rs`).
+pub const SERVICE_LOAD_MIN: f64 = 10.0;
+/// Largest speed |ω| of the declared service range (rad/s): above the paper's simulated
+/// 800 rpm (83.8 rad/s) and the issue's 173 rad/s.
+pub const SERVICE_SPEED_MAX: f64 = 200.0;
+/// Lowest temperature of the declared service range (K), −55 °C.
+pub const SERVICE_TEMPERATURE_MIN: f64 = 218.15;
+/// Highest temperature of the declared service range (K), +120 °C.
+pub const SERVICE_TEMPERATURE_MAX: f64 = 393.15;
+
+/// Below this temperature (K, 0 °C) the answer is [`Validity::KnownWrong`] for the paper's model.
 pub const COLD_SOAK: f64 = 273.15;
 
 /// The first quantity that put an answer outside the checked ranges, with its value.

@@ -18,7 +18,7 @@ fn dir_names(d: &Path) -> BTreeSet<String> {
     std::fs::read_dir(d).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect()
 }
 
-const RESULT_COLUMNS: [&str; 13] = [
+const RESULT_COLUMNS: [&str; 17] = [
     "friction_coefficient",
     "torque",
     "film_thickness",
@@ -31,6 +31,10 @@ const RESULT_COLUMNS: [&str; 13] = [
     "regime",
     "min_film_thickness",
     "min_lambda_ratio",
+    "clearance_torque",
+    "journal_weight",
+    "eccentricity_ratio",
+    "grease_yield_torque",
     "validity",
 ];
 
@@ -155,6 +159,10 @@ fn point_json_has_exactly_the_documented_keys_and_the_library_values() {
         "asperity_friction_coefficient",
         "min_film_thickness",
         "min_lambda_ratio",
+        "clearance_torque",
+        "journal_weight",
+        "eccentricity_ratio",
+        "grease_yield_torque",
         "validity",
         "temperature",
         "inlet_viscosity",
@@ -345,14 +353,15 @@ fn sweep_reads_standard_input_skips_blank_and_comment_lines_and_trims() {
 
 #[test]
 fn sweep_uses_the_parameter_file() {
-    let (d, pf) = temp_file("p.toml", "[friction]\nboundary_friction_coefficient = 0.08\n[lubricant]\nviscosity = 0.05\n");
+    // The paper's model: at rest μ = μ_c exactly (the complete model adds the grease's yield).
+    let (d, pf) = temp_file("p.toml", "[model]\npaper = true\n[friction]\nboundary_friction_coefficient = 0.08\n[lubricant]\nviscosity = 0.05\n");
     let pts = vec![(20e3, 0.0), (20e3, 5.0), (5e3, 10.0)];
     let input = d.path().join("pts.csv");
     std::fs::write(&input, points_csv(&pts)).unwrap();
     let o = run(&["sweep", "--input", input.to_str().unwrap(), "--params", pf.to_str().unwrap()]);
     assert_eq!(o.code, 0, "{}", o.stderr);
     let (_, rows) = parse_csv(&o.stdout);
-    let mut p = Params::default();
+    let mut p = Params::paper();
     p.friction.boundary_friction_coefficient = 0.08;
     p.lubricant.viscosity = 0.05;
     let j = Joint::new(&p).unwrap();
@@ -380,8 +389,6 @@ fn sweep_malformed_rows_name_line_column_value_and_unit_and_leave_no_file() {
         ("load,speed,torque\n1,2,3\n", &["line 1", "`torque`", "output column"]),
         ("", &["line 1", "no header"]),
         ("load,speed\n1000,1\n\u{0}\u{ff}x,2\n", &["line 3"]),
-        // A row whose film would pass the clearance (1 N at 1 rad/s: 1.9 mm) is named.
-        ("load,speed\n1,1\n", &["line 2", "film_thickness = 0.00194983", "diametral clearance"]),
     ];
     for (input, needles) in cases {
         let d = tempfile::tempdir().unwrap();
@@ -393,6 +400,15 @@ fn sweep_malformed_rows_name_line_column_value_and_unit_and_leave_no_file() {
         assert_eq!(dir_names(d.path()), BTreeSet::from(["in.csv".to_string()]), "no partial or temporary file for {input:?}");
         assert_eq!(o.stdout, "");
     }
+    // With the paper's model a row whose film would pass the clearance (1 N at 1 rad/s:
+    // 1.9 mm) is named; the complete model answers it (the journal bearing).
+    let d = tempfile::tempdir().unwrap();
+    let (inp, out, paper) = (d.path().join("in.csv"), d.path().join("out.csv"), d.path().join("paper.toml"));
+    std::fs::write(&inp, "load,speed\n1,1\n").unwrap();
+    std::fs::write(&paper, "[model]\npaper = true\n").unwrap();
+    let o = fails(&["sweep", "--input", inp.to_str().unwrap(), "--output", out.to_str().unwrap(), "--params", paper.to_str().unwrap()], None, 1, &["line 2", "film_thickness = 0.00194983", "diametral clearance"]);
+    assert_eq!(o.stdout, "");
+    ok(&["sweep", "--input", inp.to_str().unwrap(), "--output", out.to_str().unwrap()]);
 }
 
 #[test]
@@ -418,7 +434,11 @@ fn sweep_io_errors_name_the_path() {
 fn stribeck_writes_figure_3_csv_and_svg_from_the_library() {
     let d = tempfile::tempdir().unwrap();
     let dir = d.path().join("fig3");
-    let o = run(&["stribeck", "--load", "20000", "--min-speed", "0.01", "--max-rpm", "8000", "--points", "31", "--output", dir.to_str().unwrap()]);
+    // The paper's model, whose film leaves the clearance at the fast end (the complete model
+    // answers there: tests/complete.rs).
+    let paper = d.path().join("paper.toml");
+    std::fs::write(&paper, "[model]\npaper = true\n").unwrap();
+    let o = run(&["stribeck", "--load", "20000", "--min-speed", "0.01", "--max-rpm", "8000", "--points", "31", "--output", dir.to_str().unwrap(), "--params", paper.to_str().unwrap()]);
     assert_eq!(o.code, 0, "{}", o.stderr);
     assert!(o.stdout.contains("stribeck.csv") && o.stdout.contains("stribeck.svg"));
     let (h, rows) = parse_csv(&std::fs::read_to_string(dir.join("stribeck.csv")).unwrap());
@@ -432,12 +452,13 @@ fn stribeck_writes_figure_3_csv_and_svg_from_the_library() {
     assert_eq!(w[0], 0.01);
     let ratio = (8000.0 * 2.0 * PI / 60.0 / 0.01f64).powf(1.0 / 30.0);
     assert!((w[28] / (0.01 * ratio.powi(28)) - 1.0).abs() < 1e-9);
-    assert!(joint().evaluate(20000.0, 0.01 * ratio.powi(29)).is_err());
+    let paper_joint = Joint::new(&Params::paper()).unwrap();
+    assert!(paper_joint.evaluate(20000.0, 0.01 * ratio.powi(29)).is_err());
     for k in 1..29 {
         let ratio = w[k] / w[k - 1];
         assert!((ratio - (w[1] / w[0])).abs() < 1e-9, "log-spaced");
     }
-    let j = joint();
+    let j = paper_joint;
     let mut s_prev = 0.0;
     for r in &rows {
         let op = j.evaluate(20000.0, r[1].parse().unwrap()).unwrap();

@@ -47,10 +47,13 @@ fn calibrates_cycle_records_and_writes_every_file() {
     assert_eq!(csv.lines().filter(|l| l.ends_with(",1")).count() as u64, used);
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
     assert!(html.matches("<svg").count() >= 3 && html.contains("Excluded samples"));
-    // The calibrated file is a complete parameter file: `point` reads it and gives μ_c at rest.
+    // The calibrated file is a complete parameter file: `point` reads it and gives μ_c at rest
+    // (the asperities' part; the complete model adds the grease's yield torque over R·P).
     let p = ok(&["point", "--load", "20000", "--speed", "0", "--json", "--params", s(&out.join("calibrated.toml"))]);
     let pv: serde_json::Value = serde_json::from_str(p.stdout.trim()).unwrap();
-    assert!((pv["friction_coefficient"].as_f64().unwrap() - value).abs() < 1e-15, "{}", p.stdout);
+    assert!((pv["asperity_friction_coefficient"].as_f64().unwrap() - value).abs() < 1e-15, "{}", p.stdout);
+    let yield_mu = pv["grease_yield_torque"].as_f64().unwrap() / (0.028 * 20e3);
+    assert!((pv["friction_coefficient"].as_f64().unwrap() - (value + yield_mu)).abs() < 1e-15, "{}", p.stdout);
     // Without --json: a summary and the files written.
     let o = ok(&["calibrate", "--input", s(&a), "--load", "20000", "--output", s(&out)]);
     assert!(o.stdout.contains("friction.boundary_friction_coefficient = 0.10") && o.stdout.contains("wrote"), "{}", o.stdout);

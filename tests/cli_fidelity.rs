@@ -59,7 +59,11 @@ fn auto_reports_its_choice_and_boundary_is_mu_c() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert!(err.contains("auto -> boundary"), "{err}");
-    assert_eq!(json(&out)["friction_coefficient"].as_f64().unwrap(), 0.12);
+    // The boundary level is the rest state: μ_c plus the grease's yield torque over R·P.
+    let v = json(&out);
+    assert_eq!(v["asperity_friction_coefficient"].as_f64().unwrap(), 0.12);
+    let rest = Joint::new(&pinjoint::Params::default()).unwrap().boundary_torque(50e3) / (0.028 * 50e3);
+    assert!((v["friction_coefficient"].as_f64().unwrap() - rest).abs() < 1e-15, "{out}");
     // Wide envelope, tight tolerance: boundary is rejected and the reason is printed.
     let (_, _, err) = run(&["point", "--load", "20000", "--speed", "2", "--fidelity", "auto", "--tolerance", "1e-4"]);
     assert!(err.contains("auto -> table") && err.contains("rejected: boundary"), "{err}");

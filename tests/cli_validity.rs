@@ -93,7 +93,7 @@ fn sweep_with_temperatures_at_every_fidelity() {
         let (mu, torque, col_v) = (h.iter().position(|c| c == "friction_coefficient").unwrap(), h.iter().position(|c| c == "torque").unwrap(), h.len() - 1);
         assert_eq!(out.len(), pts.len());
         for (k, (row, &(p, w, t))) in out.iter().zip(&pts).enumerate() {
-            let expect = validity::of_point(p, w.abs() * 0.028, t);
+            let expect = validity::of_point(p, w.abs() * 0.028, t, false);
             assert_eq!(row[col_v], expect.as_str(), "{fidelity} row {k}: {p} N, {w} rad/s, {t} K");
             let op = joints[&t.to_bits()].evaluate(p, w).unwrap();
             let got: f64 = row[mu].parse().unwrap();
@@ -121,11 +121,11 @@ fn stribeck_and_map_carry_the_validity_column() {
         let mut seen = std::collections::BTreeSet::new();
         for r in &rows {
             let (p, w): (f64, f64) = (r[0].parse().unwrap(), r[1].parse().unwrap());
-            assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, tk).as_str());
+            assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, tk, false).as_str());
             seen.insert(r[h.len() - 1].clone());
         }
         let expect: Vec<&str> = match (t, load) {
-            ("253.15", _) => vec!["known-wrong"],
+            ("253.15", _) => vec!["extrapolation"], // the complete model: modelled, not known-wrong
             (_, "70000") => vec!["extrapolation"],
             _ => vec!["checked", "extrapolation"], // 800 rpm is beyond the rig's speeds
         };
@@ -134,7 +134,7 @@ fn stribeck_and_map_carry_the_validity_column() {
         let svg = std::fs::read_to_string(dir.join("stribeck.svg")).unwrap();
         assert!(svg.contains("validity: checked") || svg.contains("outside 5-60 kN"), "T {t}, P {load}");
         assert_eq!(svg.contains("outside 5-60 kN: extrapolation"), load == "70000");
-        assert_eq!(svg.contains("too LOW"), t == "253.15");
+        assert!(!svg.contains("too LOW"), "T {t}: the complete model is not known to be wrong");
     }
     let dir = d.path().join("map");
     ok(&["map", "--loads", "3", "--speeds", "4", "--output", dir.to_str().unwrap()]);
@@ -142,7 +142,7 @@ fn stribeck_and_map_carry_the_validity_column() {
     assert_eq!(h.last().map(String::as_str), Some("validity"));
     for r in &rows {
         let (p, w): (f64, f64) = (r[0].parse().unwrap(), r[1].parse().unwrap());
-        assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, 293.15).as_str());
+        assert_eq!(r[h.len() - 1], validity::of_point(p, w * 0.028, 293.15, false).as_str());
     }
     let svgs: Vec<String> = std::fs::read_dir(&dir).unwrap().filter_map(|e| {
         let p = e.unwrap().path();
@@ -154,7 +154,14 @@ fn stribeck_and_map_carry_the_validity_column() {
 /// `point`'s table and JSON say the validity, on both sides of the cold-soak boundary.
 #[test]
 fn point_says_the_validity() {
-    for (t, expect) in [("273.15", Validity::Extrapolation), ("273.1499", Validity::KnownWrong), ("293.15", Validity::Checked), ("298.16", Validity::Extrapolation)] {
+    // The complete model (default): below 0 C an extrapolation; the paper's model known-wrong.
+    let d = tempfile::tempdir().unwrap();
+    let paper = d.path().join("paper.toml");
+    std::fs::write(&paper, "[model]\npaper = true\n").unwrap();
+    let o = ok(&["point", "--load", "20000", "--speed", "0.21", "--temperature", "273.1499", "--json", "--params", paper.to_str().unwrap()]);
+    let m: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
+    assert_eq!(m["validity"], Validity::KnownWrong.as_str());
+    for (t, expect) in [("273.15", Validity::Extrapolation), ("273.1499", Validity::Extrapolation), ("293.15", Validity::Checked), ("298.16", Validity::Extrapolation)] {
         let o = ok(&["point", "--load", "20000", "--speed", "0.21", "--temperature", t, "--json"]);
         let m: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
         assert_eq!(m["validity"], expect.as_str(), "T = {t}");

@@ -15,10 +15,10 @@ fn points() -> Vec<(f64, f64)> {
 
 #[test]
 fn reference_temperature_reproduces_the_paper_model_bit_for_bit() {
-    let base = Joint::new(&Params::default()).unwrap();
+    let base = Joint::new(&Params::paper()).unwrap();
     // Any reference temperature, with T = T_ref, and any S0: identical doubles.
     for (t, s0) in [(293.15, 1.262), (250.0, 3.0), (400.0, 0.0)] {
-        let mut p = Params::default();
+        let mut p = Params::paper();
         p.lubricant.temperature = t;
         p.lubricant.reference_temperature = t;
         p.lubricant.roelands_temperature_index = s0;
@@ -34,7 +34,7 @@ fn reference_temperature_reproduces_the_paper_model_bit_for_bit() {
 }
 
 fn at(t: f64) -> Joint {
-    let mut p = Params::default();
+    let mut p = Params::paper();
     p.lubricant.temperature = t;
     Joint::new(&p).unwrap()
 }
@@ -62,7 +62,7 @@ fn cold_soak_and_hot_apron_viscosities() {
     // −55 °C and +70 °C with the defaults: the numbers the README and FMU pages quote. (−55 °C
     // is below the model's declared temperature range, −35 °C, where the film would pass the
     // clearance at rig speeds: the viscosity relation itself is evaluated there.)
-    let cold = |t: f64| pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: t, ..Params::default().lubricant }).viscosity;
+    let cold = |t: f64| pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: t, ..Params::paper().lubricant }).viscosity;
     let (c, h) = (cold(218.15), at(343.15).lubricant().viscosity);
     assert!((c / 12.25 - 1.0).abs() < 0.01, "{c}");
     assert!((h / 2.59e-3 - 1.0).abs() < 0.01, "{h}");
@@ -70,7 +70,7 @@ fn cold_soak_and_hot_apron_viscosities() {
 
 #[test]
 fn an_overflowing_temperature_is_a_typed_error() {
-    let mut p = Params::default();
+    let mut p = Params::paper();
     p.lubricant.temperature = 140.0;
     p.lubricant.roelands_temperature_index = 60.0;
     let e = Joint::new(&p).unwrap_err().to_string();
@@ -78,7 +78,7 @@ fn an_overflowing_temperature_is_a_typed_error() {
 }
 
 fn starved(h_oil: f64, gamma: f64) -> Joint {
-    let mut p = Params::default();
+    let mut p = Params::paper();
     p.starvation.inlet_layer_inverse = 1.0 / h_oil;
     p.starvation.exponent = gamma;
     Joint::new(&p).unwrap()
@@ -86,9 +86,9 @@ fn starved(h_oil: f64, gamma: f64) -> Joint {
 
 #[test]
 fn starvation_off_is_the_flooded_model_and_a_thick_layer_tends_to_it() {
-    let flooded = Joint::new(&Params::default()).unwrap();
+    let flooded = Joint::new(&Params::paper()).unwrap();
     // Off (1/h_oil = 0, the default) whatever the exponent: bit for bit.
-    let mut p = Params::default();
+    let mut p = Params::paper();
     p.starvation.exponent = 1.3;
     let off = Joint::new(&p).unwrap();
     for (load, w) in points() {
@@ -118,7 +118,7 @@ fn starvation_off_is_the_flooded_model_and_a_thick_layer_tends_to_it() {
 fn starved_film_obeys_its_relation_where_the_fluid_carries_everything() {
     // At high speed the asperities carry ~nothing, so the solved h_c is the starved film of the
     // fluid-only problem: h = (h_ff^−γ + h_oil^−γ)^(−1/γ) with h_ff the flooded full film.
-    let flooded = Joint::new(&Params::default()).unwrap();
+    let flooded = Joint::new(&Params::paper()).unwrap();
     let (load, w) = (5e3, 1000.0);
     let hff = flooded.evaluate_unbounded(load, w).unwrap();
     assert!(hff.asperity_load_fraction < 1e-12);
@@ -134,7 +134,7 @@ fn starved_film_obeys_its_relation_where_the_fluid_carries_everything() {
 
 #[test]
 fn a_layer_thinner_than_the_rest_gap_leaves_the_joint_in_boundary_friction() {
-    let flooded = Joint::new(&Params::default()).unwrap();
+    let flooded = Joint::new(&Params::paper()).unwrap();
     let rest = flooded.evaluate(20e3, 0.0).unwrap().film_thickness;
     let j = starved(0.9 * rest, 2.8);
     for &w in &[0.01, 1.0, 100.0, 1000.0] {
@@ -148,7 +148,7 @@ fn a_layer_thinner_than_the_rest_gap_leaves_the_joint_in_boundary_friction() {
 
 #[test]
 fn min_film_is_below_the_central_film_and_zero_at_rest() {
-    let j = Joint::new(&Params::default()).unwrap();
+    let j = Joint::new(&Params::paper()).unwrap();
     for (load, w) in points() {
         let o = j.evaluate_unbounded(load, w).unwrap();
         assert!(o.min_film_thickness <= o.film_thickness && o.min_film_thickness >= 0.0);
@@ -176,7 +176,7 @@ fn fmu_temperature_input_and_min_film_outputs_are_the_library_values() {
     m.exit_initialization(0.0).unwrap();
     m.compute_outputs().unwrap();
     let out = |m: &PinJointModel, o: &str| m.get_real(index(o));
-    let op = Joint::new(&Params::default()).unwrap().evaluate(20e3, 1.0).unwrap();
+    let op = Joint::new(&Params::paper()).unwrap().evaluate(20e3, 1.0).unwrap();
     assert_eq!(out(&m, "friction_coefficient").to_bits(), op.friction_coefficient.to_bits());
     assert_eq!(out(&m, "min_film_thickness").to_bits(), op.min_film_thickness.to_bits());
     assert_eq!(out(&m, "min_lambda_ratio").to_bits(), op.min_lambda_ratio.to_bits());

@@ -8,7 +8,7 @@ use pinjoint::fidelity::{Envelope, ErrorReport, Evaluator, Fidelity, FidelityErr
 use pinjoint::{Joint, OperatingPoint, Params};
 
 fn joint() -> Joint {
-    Joint::new(&Params::default()).unwrap()
+    Joint::new(&Params::paper()).unwrap()
 }
 
 /// The brief's envelope: 5 to 60 kN, 0.01 to 10 rad/s.
@@ -18,7 +18,7 @@ fn brief() -> Envelope {
 
 /// An evaluator of the default joint at `fidelity` and `tolerance` over [`brief`].
 fn brief_evaluator(fidelity: Fidelity, tolerance: f64) -> Evaluator {
-    Evaluator::new(&Params::default(), fidelity, tolerance, brief()).unwrap()
+    Evaluator::new(&Params::paper(), fidelity, tolerance, brief()).unwrap()
 }
 
 /// Envelopes: deep boundary, the brief's, mixed, mixed into full film, spanning all regimes.
@@ -69,7 +69,7 @@ fn fidelity_names_parse_and_print() {
 
 #[test]
 fn inputs_are_validated_with_quantity_value_and_unit() {
-    let p = Params::default();
+    let p = Params::paper();
     let env = brief();
     for bad in [0.0, -1e-3, f64::NAN, f64::INFINITY] {
         let e = Evaluator::new(&p, Fidelity::Table, bad, env).unwrap_err();
@@ -102,7 +102,7 @@ fn inputs_are_validated_with_quantity_value_and_unit() {
 #[test]
 fn table_meets_its_advertised_bound_on_fresh_points() {
     let j = joint();
-    let p = Params::default();
+    let p = Params::paper();
     let cases = [("brief", 1e-2), ("brief", 1e-4), ("brief", 1e-6), ("mixed", 1e-3), ("mixed", 1e-5), ("spanning", 1e-2)];
     for (name, tol) in cases {
         let env = envelopes().into_iter().find(|e| e.0 == name).unwrap().1;
@@ -138,7 +138,7 @@ fn table_is_continuous_across_cells() {
 #[test]
 fn auto_never_picks_a_level_that_violates_the_tolerance() {
     let j = joint();
-    let p = Params::default();
+    let p = Params::paper();
     for (name, env) in envelopes() {
         for tol in [1e-1, 1e-2, 1e-3, 1e-4, 1e-6] {
             let mut ev = Evaluator::new(&p, Fidelity::Auto, tol, env).unwrap();
@@ -178,7 +178,7 @@ fn auto_never_picks_a_level_that_violates_the_tolerance() {
 #[test]
 fn boundary_level_reports_its_measured_error() {
     let j = joint();
-    let p = Params::default();
+    let p = Params::paper();
     for (name, env) in envelopes() {
         let mut ev = Evaluator::new(&p, Fidelity::Boundary, 1e-3, env).unwrap();
         assert_eq!(ev.chosen(), Level::Boundary);
@@ -200,7 +200,7 @@ fn boundary_level_reports_its_measured_error() {
 #[test]
 fn outside_the_envelope_table_and_boundary_fall_back_to_full_and_say_so_once() {
     let j = joint();
-    let p = Params::default();
+    let p = Params::paper();
     let env = brief();
     for f in [Fidelity::Table, Fidelity::Boundary] {
         let mut ev = Evaluator::new(&p, f, 1e-2, env).unwrap();
@@ -228,7 +228,7 @@ fn outside_the_envelope_table_and_boundary_fall_back_to_full_and_say_so_once() {
 #[test]
 fn rest_is_exact_at_every_level() {
     let j = joint();
-    let p = Params::default();
+    let p = Params::paper();
     let env = brief();
     let mut rng = CheckRng::new(0x0e57);
     for f in Fidelity::ALL {

@@ -200,7 +200,7 @@ fn cases() -> Vec<(At, &'static str, Call, &'static str)> {
             fix_crc(b);
         }), "input angular_velocity = NaN rad/s"),
         (Step, "deserialize a state of the layout before the presliding state", |i| damaged(i, |b| { let at = model_part(); b[at] = 4; fix_crc(b) }),
-            "PinJoint state version 4; this FMU reads version 5"),
+            "PinJoint state version 4; this FMU reads version 6"),
         (Step, "deserialize a state holding a NaN presliding torque", |i| damaged(i, |b| {
             let at = model_part() + 3 + 8 * (PARAMS.len() + 16);
             b[at..at + 8].copy_from_slice(&f64::NAN.to_le_bytes());

@@ -62,7 +62,7 @@ proptest! {
             prop_assert_eq!(status, OK, "{}", fresh.last());
             fresh.step(f, 0.0, 1e-3);
             prop_assert_eq!(outputs_bits(c), outputs_bits(f), "T = {} K, P = {} N, omega = {} rad/s", temp, load, w);
-            let expect = validity::of_point(load, w.abs() * 0.028, temp);
+            let expect = validity::of_point(load, w.abs() * 0.028, temp, false);
             prop_assert_eq!(get(c, "validity"), f64::from(expect.code()));
             free(f);
         }

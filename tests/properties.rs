@@ -9,18 +9,22 @@ use proptest::prelude::*;
 /// (Poisson ratios kept below 0.5, the bush kept larger than the pin).
 fn params() -> impl Strategy<Value = Params> {
     (prop::collection::vec(-0.5f64..0.5, PARAMS.len()), 1e-5f64..1e-3).prop_map(|(scales, clearance_rel)| {
-        let mut p = Params::default();
+        let mut p = Params::paper();
         for (s, k) in PARAMS.iter().zip(scales) {
             let v = s.default_value() * 10f64.powf(k);
             (s.set)(&mut p, v);
         }
+        // The paper's model (the switches are not scaled; the complete model has its own
+        // properties in tests/complete.rs).
+        p.model.paper = true;
+        p.grease = pinjoint::params::Grease::default();
         p.materials.pin_poisson_ratio = p.materials.pin_poisson_ratio.min(0.49);
         p.materials.bush_poisson_ratio = p.materials.bush_poisson_ratio.min(0.49);
         p.geometry.bush_radius = p.geometry.pin_radius * (1.0 + clearance_rel);
         // The lubricant at its reference temperature (the Table 3 values as drawn; the temperature
         // extension has its own tests in tests/extensions.rs: scaled 10^±0.5, T and T_ref could
         // leave the admissible range or overflow η0).
-        p.lubricant.temperature = p.lubricant.reference_temperature.clamp(pinjoint::params::MIN_TEMPERATURE, 400.0);
+        p.lubricant.temperature = p.lubricant.reference_temperature.clamp(pinjoint::params::PAPER_MIN_TEMPERATURE, 400.0);
         p.lubricant.reference_temperature = p.lubricant.temperature;
         p
     })

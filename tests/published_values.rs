@@ -74,7 +74,7 @@ fn the_joint_feeds_the_fits_the_mean_velocity_and_the_fluid_share() {
     // Eq. (18.10) puts the MEAN surface velocity in U; the pin turns in a fixed bush, so
     // ũ = ωR/2 (the paper's eq. 12 uses the sum u = ωR). W' = P/(E'R'B), G = αE', and the
     // fluid's share 1/γ1 enters as eq. 13 does (E' → E'/γ1, P → P/γ1: U → γ1U, G → G/γ1).
-    let j = Joint::new(&Params::default()).unwrap();
+    let j = Joint::new(&Params::paper()).unwrap();
     let p = j.params();
     let (e, r) = (j.effective_modulus(), j.reduced_radius());
     let lub = j.lubricant();
@@ -366,7 +366,7 @@ fn starvation_exponent_sensitivity_over_the_quoted_range() {
     // contact, like this joint). Not verified at the source, so the default stays 2.8; this
     // measures what 2.8 → 15 does to the starvation figure's numbers at 20 kN.
     let with = |h_oil: Option<f64>, g: f64| {
-        let mut p = Params::default();
+        let mut p = Params::paper();
         p.starvation.inlet_layer_inverse = h_oil.map_or(0.0, |h| 1.0 / h);
         p.starvation.exponent = g;
         Joint::new(&p).unwrap()

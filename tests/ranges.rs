@@ -17,7 +17,7 @@ use fmi_layer::fmi2::api::cosim::*;
 use fmi_layer::fmi2::types::FMI2_CO_SIMULATION;
 use pinjoint::fidelity::{Envelope, Evaluator, Fidelity, FidelityError};
 use pinjoint::fmt::MESSAGE_CHARS;
-use pinjoint::params::{Range, GLASS_VISCOSITY, MAX_TEMPERATURE, MIN_TEMPERATURE, PARAMS};
+use pinjoint::params::{Range, GLASS_VISCOSITY, MAX_TEMPERATURE, PAPER_MIN_TEMPERATURE, PARAMS};
 use pinjoint::{Joint, ModelError, Params};
 use proptest::prelude::*;
 
@@ -39,7 +39,7 @@ fn corners(i: usize) -> Vec<f64> {
 fn params() -> impl Strategy<Value = Params> {
     let n = PARAMS.len();
     (prop::collection::vec(-0.3f64..0.3, n), prop::option::of((0..n, 0usize..4)), prop::bool::weighted(0.9)).prop_map(move |(scales, corner, fix_clearance)| {
-        let mut p = Params::default();
+        let mut p = Params::paper();
         for (s, k) in PARAMS.iter().zip(scales) {
             let v = s.default_value() * 10f64.powf(k);
             (s.set)(&mut p, if s.range.contains(v) { v } else { s.default_value() });
@@ -48,6 +48,9 @@ fn params() -> impl Strategy<Value = Params> {
             let c = corners(i);
             (PARAMS[i].set)(&mut p, c[k % c.len()]);
         }
+        // The paper's model (its refusal of the film beyond the clearance is what this file
+        // checks; the complete model's range is tests/complete.rs's).
+        p.model.paper = true;
         if fix_clearance && p.geometry.bush_radius <= p.geometry.pin_radius {
             p.geometry.bush_radius = p.geometry.pin_radius * (1.0 + 1e-3);
         }
@@ -72,7 +75,7 @@ fn speed() -> impl Strategy<Value = f64> {
 }
 
 fn temperature() -> impl Strategy<Value = f64> {
-    prop_oneof![4 => MIN_TEMPERATURE..=MAX_TEMPERATURE, 1 => prop::sample::select(vec![MIN_TEMPERATURE, MAX_TEMPERATURE, 238.2, 293.15])]
+    prop_oneof![4 => PAPER_MIN_TEMPERATURE..=MAX_TEMPERATURE, 1 => prop::sample::select(vec![PAPER_MIN_TEMPERATURE, MAX_TEMPERATURE, 238.2, 293.15])]
 }
 
 const LEVELS: [Fidelity; 4] = [Fidelity::Full, Fidelity::Table, Fidelity::Boundary, Fidelity::Auto];
@@ -219,11 +222,11 @@ proptest! {
 /// viscosity is refused naming the temperature.
 #[test]
 fn the_reported_cold_point_is_refused_or_bounded() {
-    let mut p = Params::default();
+    let mut p = Params::paper();
     p.lubricant.temperature = 145.0;
     let e = Joint::new(&p).unwrap_err().to_string();
     assert!(e.contains("lubricant.temperature = 145 K") && e.contains("[238.15, 673.15]"), "{e}");
-    p.lubricant.temperature = MIN_TEMPERATURE;
+    p.lubricant.temperature = PAPER_MIN_TEMPERATURE;
     let j = Joint::new(&p).unwrap();
     assert!(j.lubricant().viscosity <= GLASS_VISCOSITY);
     // At the lowest declared temperature the paper's 20 kN keeps its film inside the diametral
@@ -232,14 +235,14 @@ fn the_reported_cold_point_is_refused_or_bounded() {
     let op = j.evaluate(20e3, 8.0).unwrap();
     assert!(op.film_thickness <= j.max_film_thickness() && op.film_thickness > 0.8 * j.max_film_thickness(), "{}", op.film_thickness);
     // (5 K colder is outside the range: the same oil given as its values there, at T = T_ref.)
-    let colder = pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: MIN_TEMPERATURE - 5.0, ..p.lubricant });
-    let mut q = Params::default();
+    let colder = pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: PAPER_MIN_TEMPERATURE - 5.0, ..p.lubricant });
+    let mut q = Params::paper();
     q.lubricant.viscosity = colder.viscosity;
     q.lubricant.pressure_viscosity_coefficient = colder.pressure_viscosity_coefficient;
     let e = Joint::new(&q).unwrap().evaluate(20e3, 5.5).unwrap_err();
     assert!(matches!(e, ModelError::FilmBeyondClearance { .. }), "{e}");
     // A far more temperature-sensitive oil (S0 = 10) turns to glass inside the declared range.
-    p.lubricant.temperature = MIN_TEMPERATURE;
+    p.lubricant.temperature = PAPER_MIN_TEMPERATURE;
     p.lubricant.roelands_temperature_index = 10.0;
     let e = Joint::new(&p).unwrap_err().to_string();
     assert!(e.contains("lubricant.temperature = 238.15 K") && e.contains("eta_0(T) <= 1e12 Pa.s"), "{e}");
@@ -257,8 +260,8 @@ fn the_reported_cold_point_is_refused_or_bounded() {
 /// The closed temperature range: both ends are accepted by the library and the FMU.
 #[test]
 fn both_ends_of_the_temperature_range_are_accepted() {
-    for t in [MIN_TEMPERATURE, MAX_TEMPERATURE] {
-        let mut p = Params::default();
+    for t in [PAPER_MIN_TEMPERATURE, MAX_TEMPERATURE] {
+        let mut p = Params::paper();
         p.lubricant.temperature = t;
         Joint::new(&p).unwrap();
         let h = Host::new();

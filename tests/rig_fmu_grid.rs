@@ -28,7 +28,7 @@ fn expected(s: &Sample, joint: &pinjoint::Joint, cfg: &RigConfig) -> Vec<f64> {
         h_min / joint.composite_roughness(),
         // validity: the sample's operating point and the sine stroke (pinjoint::validity).
         f64::from(
-            pinjoint::validity::of_point(s.load, s.angular_velocity.abs() * cfg.model.geometry.pin_radius, cfg.model.lubricant.temperature)
+            pinjoint::validity::of_point(s.load, s.angular_velocity.abs() * cfg.model.geometry.pin_radius, cfg.model.lubricant.temperature, cfg.model.model.paper)
                 .max(pinjoint::validity::of_stroke(cfg.rig.frequency, cfg.rig.amplitude))
                 .code(),
         ),

@@ -61,7 +61,7 @@ fn step_to(h: &Host, c: fmi_layer::fmi2::types::Fmi2Component, t: &mut f64, dt: 
 /// The validity of a sample, from its outputs, as the documentation defines it.
 fn expected(c: fmi_layer::fmi2::types::Fmi2Component, temp: f64, frequency: f64, amplitude: f64) -> Validity {
     let (load, w) = (get(c, "load"), get(c, "angular_velocity"));
-    validity::of_point(load, w.abs() * 0.028, temp).max(validity::of_stroke(frequency, amplitude))
+    validity::of_point(load, w.abs() * 0.028, temp, false).max(validity::of_stroke(frequency, amplitude))
 }
 
 /// The stroke's boundaries (frequency and amplitude) and the temperature's, both sides,

@@ -7,7 +7,7 @@ use pinjoint::mixed::FilmGroups;
 use pinjoint::{Joint, Params, Regime};
 
 fn joint() -> Joint {
-    Joint::new(&Params::default()).unwrap()
+    Joint::new(&Params::paper()).unwrap()
 }
 
 /// Residual of eq. 13 = eq. 19 in the logit y, rebuilt here from the public pieces.
@@ -287,7 +287,7 @@ fn overflowing_viscosity_is_harmless_at_rest_and_named_elsewhere() {
     // Fuzz finding 7: with Z = 4× its default the Roelands viscosity at p_m overflows at
     // 2.3e8 N; at rest μ must still be μ_c exactly (no ∞·0), and a moving point gives a
     // finite μ (the Bair–Winer exponent is formed from ln η).
-    let mut p = Params::default();
+    let mut p = Params::paper();
     p.lubricant.roelands_index *= 4.0;
     let j = Joint::new(&p).unwrap();
     let load = 2.3e8_f64.min(0.9 * j.capacity());
@@ -305,7 +305,7 @@ fn degenerate_but_valid_parameters_never_give_nan() {
     // Fuzz finding 1: subnormal lengths and moduli pass `validate` (they are > 0); the
     // evaluation must then be an error that names a quantity, never a NaN.
     for (name, v) in [("geometry.pin_radius", 8.5e-322), ("materials.pin_elastic_modulus", 5e-324), ("geometry.bush_length", 1e-300)] {
-        let mut p = Params::default();
+        let mut p = Params::paper();
         p.set_by_name(name, v).unwrap();
         if name == "geometry.pin_radius" {
             p.geometry.bush_radius = 1e-3;

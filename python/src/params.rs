@@ -90,7 +90,8 @@ impl PyParams {
         self.inner.to_toml_string()
     }
 
-    /// Every parameter as a nested dict {section: {key: value}} (floats, SI units).
+    /// Every parameter as a nested dict {section: {key: value}} (floats, SI units; the switches
+    /// `model.paper` and `grease.enabled` as bools).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         for s in PARAMS.iter() {
@@ -102,7 +103,10 @@ impl PyParams {
                     x
                 }
             };
-            sec.set_item(s.key, (s.get)(&self.inner))?;
+            match s.kind {
+                pinjoint::params::Kind::Real => sec.set_item(s.key, (s.get)(&self.inner))?,
+                pinjoint::params::Kind::Boolean => sec.set_item(s.key, (s.get)(&self.inner) != 0.0)?,
+            }
         }
         Ok(d)
     }
@@ -120,7 +124,7 @@ impl PyParams {
         PARAMS.iter().map(|s| s.name()).collect()
     }
 
-    /// A value by its `section.key` name (SI units).
+    /// A value by its `section.key` name (SI units; a switch reads 1.0 for true, 0.0 for false).
     fn __getitem__(&self, name: &str) -> PyResult<f64> {
         spec_by_name(name)
             .map(|s| (s.get)(&self.inner))
@@ -149,7 +153,10 @@ impl PyParams {
         let changed: Vec<String> = PARAMS
             .iter()
             .filter(|s| (s.get)(&self.inner).to_bits() != (s.get)(&d).to_bits())
-            .map(|s| format!("'{}': {:?}", s.name(), (s.get)(&self.inner)))
+            .map(|s| match s.kind {
+                pinjoint::params::Kind::Real => format!("'{}': {:?}", s.name(), (s.get)(&self.inner)),
+                pinjoint::params::Kind::Boolean => format!("'{}': {}", s.name(), if (s.get)(&self.inner) != 0.0 { "True" } else { "False" }),
+            })
             .collect();
         if changed.is_empty() { "pinjoint.Params()".into() } else { format!("pinjoint.Params({{{}}})", changed.join(", ")) }
     }

@@ -6,11 +6,24 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt, PyMapping, PyString};
 
-/// One leaf value: a real number (int or float, not bool) or, for `rig.formulation` and
-/// `rig.method`, a string.
+/// Whether `name` (`section.key`) is a switch of the parameter table (`model.paper`,
+/// `grease.enabled`): a bool there, a number everywhere else.
+fn is_switch(name: &str) -> bool {
+    pinjoint::params::spec_by_name(name).is_some_and(|s| s.kind == pinjoint::params::Kind::Boolean)
+}
+
+/// One leaf value: a real number (int or float, not bool), a bool for the switches
+/// (`model.paper`, `grease.enabled`) or, for `rig.formulation` and `rig.method`, a string.
 fn leaf(name: &str, v: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
+    let switch = is_switch(name);
     let name = excerpt(name);
     let name = name.as_str();
+    if switch {
+        if v.is_instance_of::<PyBool>() {
+            return Ok(toml::Value::Boolean(v.extract::<bool>()?));
+        }
+        return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a bool (True or False)", excerpt(&v.repr()?.to_string()))));
+    }
     if v.is_instance_of::<PyBool>() {
         return Err(PyTypeError::new_err(format!("parameter {name} = {} must be a number, not a bool", excerpt(&v.repr()?.to_string()))));
     }

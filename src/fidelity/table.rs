@@ -116,10 +116,16 @@ pub struct StribeckTable {
     tolerance: f64,
 }
 
+/// The logit below which the table holds [`LOGIT_FLOOR`]: x1 = e^y < 4.3e-18 there, below any
+/// tolerance in the shares and in μ. A moving joint whose film is bounded (the complete
+/// model's cold supply in the journal's region, a starved inlet) can have its fluid carry
+/// nothing (logit −∞) at a finite speed; the floor keeps the tabulated asinh y finite there.
+pub const LOGIT_FLOOR: f64 = -40.0;
+
 /// The tabulated variables at one solution.
 #[inline]
 fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
-    [op.fluid_friction_coefficient, op.logit.asinh(), op.film_thickness]
+    [op.fluid_friction_coefficient, op.logit.max(LOGIT_FLOOR).asinh(), op.film_thickness]
 }
 
 /// Weights turning errors in the three tabulated variables into errors of the outputs:
@@ -127,7 +133,7 @@ fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
 #[inline]
 fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
     let mu = op.friction_coefficient;
-    let cosh_s = op.logit.hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
+    let cosh_s = op.logit.max(LOGIT_FLOOR).hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
     let share = op.fluid_load_fraction * op.asperity_load_fraction * cosh_s;
     (1.0 / mu, mu_c * share / mu, share, 1.0 / op.film_thickness)
 }

@@ -31,12 +31,12 @@ pub fn rig_peak_speed() -> f64 {
 
 /// A note for a figure's title when the lubricant temperature `t` (K) is outside the
 /// validity envelope's checked 15–25 °C (every point then is an extrapolation, or below 0 °C
-/// known to give too low a μ); empty inside.
-pub fn temperature_note(t: f64) -> String {
-    match pinjoint::validity::of_point(pinjoint::validity::LOAD.lo, 0.0, t) {
+/// with the paper's model, `paper`, known to give too low a μ); empty inside.
+pub fn temperature_note(t: f64, paper: bool) -> String {
+    match pinjoint::validity::of_point(pinjoint::validity::LOAD.lo, 0.0, t, paper) {
         pinjoint::Validity::Checked => String::new(),
         pinjoint::Validity::Extrapolation => format!("; T = {} K outside the checked 15-25 C: extrapolation everywhere", readable(t)),
-        pinjoint::Validity::KnownWrong => format!("; T = {} K below 0 C: μ known to be too LOW everywhere (no grease yield stress)", readable(t)),
+        pinjoint::Validity::KnownWrong => format!("; T = {} K below 0 C with the paper's model: μ known to be too LOW everywhere (no grease)", readable(t)),
     }
 }
 
@@ -153,7 +153,7 @@ pub fn lin_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 
 /// The model's outputs in CSV files, after the input columns (SI units). The h_min columns
 /// (an extension) and `validity` come last so that the earlier columns keep their positions.
-pub const RESULT_COLUMNS: [&str; 13] = pinjoint::record::NAMES;
+pub const RESULT_COLUMNS: [&str; pinjoint::record::NAMES.len()] = pinjoint::record::NAMES;
 
 /// A csv writer error as an io::Error that keeps its kind (so a closed pipe stays a
 /// `BrokenPipe`, which ends the program quietly).
@@ -170,7 +170,7 @@ pub fn exact(v: f64) -> String {
 }
 
 /// The values of [`RESULT_COLUMNS`] for one point, at full precision.
-pub fn result_fields(op: &OperatingPoint) -> [String; 13] {
+pub fn result_fields(op: &OperatingPoint) -> [String; pinjoint::record::NAMES.len()] {
     pinjoint::record::COLUMNS.map(|c| match c.value {
         pinjoint::record::Value::Number(f) => exact(f(op)),
         pinjoint::record::Value::Regime => op.regime.as_str().to_string(),

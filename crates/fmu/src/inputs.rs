@@ -15,7 +15,9 @@ pub const LOAD_RULE: Rule = Rule::Finite("is invalid: it must be a finite number
 pub const FINITE: Rule = Rule::Finite("is not a finite number");
 
 /// The `temperature` input (K, display degC) at value reference `vr`: the lubricant
-/// temperature, in [238.15, 673.15] K (the library's range, [`pinjoint::params::MIN_TEMPERATURE`]), start 293.15 K; `description` is the model's.
+/// temperature, in [218.15, 673.15] K (the library's range, [`pinjoint::params::MIN_TEMPERATURE`]; the
+/// paper's model, `model.paper = true`, refuses below [`pinjoint::params::PAPER_MIN_TEMPERATURE`]
+/// when the evaluator is built), start 293.15 K; `description` is the model's.
 pub fn temperature<S: 'static>(vr: u32, description: &str, get: fn(&S) -> f64, set: fn(&mut S, f64)) -> Row<S> {
     let mut v = declare("temperature", vr, Kind::Real, Causality::Input, Some("K"), Some("degC"), description);
     v.start = Some(DEFAULT_TEMPERATURE);

@@ -6,7 +6,7 @@
 use crate::declare::declare;
 use crate::table::{Row, Rule};
 use fmi_layer::fmi2::variables::{Causality, Kind, Variable};
-use pinjoint::params::{ParamSpec, Range, PARAMS};
+use pinjoint::params::{Kind as ParamKind, ParamSpec, Range, PARAMS};
 use pinjoint::Params;
 
 /// Display unit a user expects for a parameter.
@@ -42,10 +42,18 @@ fn declaration(s: &ParamSpec, vr: u32) -> Variable {
     if s.section == "lubricant" && s.key == "temperature" {
         description.push_str(". In this FMU the input `temperature` sets the lubricant temperature; this parameter is not used");
     }
-    let mut v = declare(&s.name(), vr, Kind::Real, Causality::Parameter, (s.unit != "1").then_some(s.unit), display_unit(s), description);
+    let kind = match s.kind {
+        ParamKind::Real => Kind::Real,
+        ParamKind::Boolean => Kind::Boolean,
+    };
+    let unit = (s.unit != "1" && kind == Kind::Real).then_some(s.unit);
+    let display = if kind == Kind::Real { display_unit(s) } else { None };
+    let mut v = declare(&s.name(), vr, kind, Causality::Parameter, unit, display, description);
     v.start = Some(s.default_value());
-    v.min = min;
-    v.max = max;
+    if kind == Kind::Real {
+        v.min = min;
+        v.max = max;
+    }
     v
 }
 

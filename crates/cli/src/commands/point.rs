@@ -70,14 +70,16 @@ impl SpeedArg {
 /// The rows of the table, in order: a label for people and the [`pinjoint::record::POINT`]
 /// quantity it shows (value and unit come from the record). `speed` is followed by its value
 /// in rpm.
-pub const TABLE: [(&str, &str); 20] = [
+pub const TABLE: [(&str, &str); 24] = [
     ("load P_T", "load"),
     ("angular velocity ω", "speed"),
     ("sliding speed u = |ω|R", "sliding_speed"),
     ("friction coefficient μ (eq. 10)", "friction_coefficient"),
-    ("  fluid part Q_H/P_T (eq. 3)", "fluid_friction_coefficient"),
+    ("  lubricant part (eq. 3, + clearance)", "fluid_friction_coefficient"),
     ("  asperity part μ_c/γ2 (eq. 8)", "asperity_friction_coefficient"),
     ("torque T = μRP_T (eq. 11)", "torque"),
+    ("  clearance torque (complete model)", "clearance_torque"),
+    ("  grease yield torque (part of it)", "grease_yield_torque"),
     ("central film thickness h_c", "film_thickness"),
     ("lambda ratio h_c/√(σ²+σ_b²) (eq. 21)", "lambda_ratio"),
     ("minimum film thickness h_min (Pan–Hamrock)", "min_film_thickness"),
@@ -89,6 +91,8 @@ pub const TABLE: [(&str, &str); 20] = [
     ("contact half-width a (eq. 6)", "contact_half_width"),
     ("viscosity at p_m (Roelands, eq. 5)", "contact_viscosity"),
     ("Sommerfeld number S (eq. 20)", "sommerfeld_number"),
+    ("journal bearing weight w (complete model)", "journal_weight"),
+    ("eccentricity ratio 1 - h_c/c", "eccentricity_ratio"),
     ("regime", "regime"),
     ("validity (checked, extrapolation, known-wrong)", "validity"),
 ];

@@ -4,16 +4,16 @@
 //!
 //! | value references | variables | state |
 //! |---|---|---|
-//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 27–29 |
-//! | 10–21 | outputs (`min_film_thickness`, `min_lambda_ratio` last; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 30 |
-//! | 100–125 | the 26 parameters of [`pinjoint::params::PARAMS`], `section.key` | 0–25 |
-//! | 200 | `zero_velocity.speed_band` | 26 |
-//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 31 |
-//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 32–36 |
-//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 37 |
-//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 38–41 |
-//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 42 |
-//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 43, 44 |
+//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 35–37 |
+//! | 10–21, 22–25 | outputs (`min_film_thickness`, `min_lambda_ratio` at 20, 21; then the complete model's `clearance_torque`, `journal_weight`, `eccentricity_ratio`, `grease_yield_torque`; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 38 |
+//! | 100–133 | the 34 parameters of [`pinjoint::params::PARAMS`], `section.key` (`model.paper` and `grease.enabled` Booleans) | 0–33 |
+//! | 200 | `zero_velocity.speed_band` | 34 |
+//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 39 |
+//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 40–44 |
+//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 45 |
+//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 46–49 |
+//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 50 |
+//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 51, 52 |
 //! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature | not stored |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
@@ -26,10 +26,12 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (5: version 4's values, then the zero-velocity
-/// model and presliding parameters and the presliding state). The state also carries its
-/// value count, so a layout with another number of values is refused whatever its version.
-pub const STATE_VERSION: u8 = 5;
+/// Version of the serialized state's layout (6: version 5's with the complete model's eight
+/// parameters, `model.paper` and `grease.*`, after the paper's; 5: version 4's values, then the
+/// zero-velocity model and presliding parameters and the presliding state). The state also
+/// carries its value count, so a layout with another number of values is refused whatever its
+/// version.
+pub const STATE_VERSION: u8 = 6;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -54,7 +56,7 @@ pub struct Outputs {
 /// Every value of a PinJoint instance a variable reads or writes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Values {
-    /// The 26 model parameters (`lubricant.temperature` is replaced by the input).
+    /// The 34 model parameters (`lubricant.temperature` is replaced by the input).
     pub params: Params,
     /// `zero_velocity.*`: the model, the band and the presliding parameters.
     pub zv: ZeroVelocitySettings,
@@ -192,6 +194,14 @@ fn rows() -> Vec<Row<Values>> {
             "Minimum film thickness h_min: h_c times Pan and Hamrock's (1989) line-contact ratio h_min/h_c under eq. 13's substitution (extension; an extrapolation for this joint, 0 at rest)"),
         recorded(21, "min_lambda_ratio", None, (zero, None), &SPEED_LOAD,
             "Lambda ratio from the minimum film, h_min/sqrt(sigma^2 + sigma_b^2) (eq. 21 as printed, with h_min)"),
+        recorded(22, "clearance_torque", None, (zero, None), &SPEED_LOAD,
+            "Complete model: torque magnitude of the lubricant (grease or base oil) in the clearance outside the contact arc, its yield part included (part of torque; 0 with model.paper = true)"),
+        recorded(23, "journal_weight", None, share, &SPEED_LOAD,
+            "Complete model: weight w of the journal bearing in the composite film (0 the paper's line contact, 1 the full-film journal bearing; 0 with model.paper = true)"),
+        recorded(24, "eccentricity_ratio", None, (zero, Some(1.0)), &SPEED_LOAD,
+            "Eccentricity ratio of the clearance around the film, 1 - h_c/(R_b - R), clamped to [0, 1)"),
+        recorded(25, "grease_yield_torque", None, (zero, None), &SPEED_LOAD,
+            "Complete model: the grease's yield torque tau_y(T)(2 pi - 2 theta_c) R^2 B, part of clearance_torque and of the torque at rest (breakaway); 0 without grease and with model.paper = true"),
     ];
     rows.extend(crate::parameters::rows(100, Some(0), |s: &Values| &s.params, |s| &mut s.params));
     let mut band = declare("zero_velocity.speed_band", 200, Kind::Real, Causality::Parameter, Some("rad/s"), Some("deg/s"),
@@ -203,7 +213,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(Row::new(band, |s: &Values| s.zv.band, |s, x| s.zv.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [238.15, 673.15] K (-35 to 400 C; below, the film at 20 kN passes the diametral clearance at rig speeds: see lubricant.temperature). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease)",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
     rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows.extend(zero_velocity::rows(201, p + 12, |s: &Values| &s.zv, |s| &mut s.zv));
@@ -246,7 +256,7 @@ const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperatu
 
 /// The validity of the held inputs ([`pinjoint::validity::of_point`]).
 pub fn validity(s: &Values) -> pinjoint::Validity {
-    pinjoint::validity::of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature)
+    pinjoint::validity::of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
 }
 
 #[cfg(test)]
@@ -287,7 +297,7 @@ mod tests {
         let msg = |n: &str, x: f64| TABLE.check(at(n), x).unwrap_err().to_string();
         assert_eq!(msg("angle", f64::NAN), "input angle = NaN rad is not a finite number");
         assert_eq!(msg("load", f64::INFINITY), "input load = inf N is invalid: it must be a finite number (a negative value is taken as its magnitude)");
-        assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in [238.15, 673.15] K");
+        assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in [218.15, 673.15] K");
         assert_eq!(msg("fidelity", 0.5), "parameter fidelity = 0.5 is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)");
         assert!(TABLE.check(at("load"), -1e308).is_ok());
     }

@@ -31,8 +31,9 @@ use std::sync::LazyLock;
 
 pub use super::settings::rig_spec;
 
-/// Version of the serialized state's layout (3: the `temperature` input is the last setting).
-pub const STATE_VERSION: u8 = 3;
+/// Version of the serialized state's layout (4: version 3's with the complete model's eight
+/// parameters, `model.paper` and `grease.*`; 3: the `temperature` input is the last setting).
+pub const STATE_VERSION: u8 = 4;
 
 /// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
 pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
@@ -255,7 +256,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.extend(crate::parameters::rows(300, None, |s: &Values| &s.settings.cfg.model, |s| &mut s.settings.cfg.model));
     rows.extend(fidelity::rows(400, None, DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.settings.fidelity, |s| &mut s.settings.fidelity));
     rows.push(crate::inputs::temperature(3,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [238.15, 673.15] K (-35 to 400 C; below, the film at 20 kN passes the diametral clearance at rig speeds: see lubricant.temperature). Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation, below 0 C known_wrong (mu too low)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease)",
         |s: &Values| s.settings.temperature, |s, x| s.settings.temperature = x));
     rows.push(crate::validity::output(24, &["load", "temperature"], VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows
@@ -274,7 +275,7 @@ fn sampled(s: &Values) -> (f64, f64) {
 /// stroke's frequency and amplitude unless the command input drives the rig.
 pub fn validity(s: &Values) -> pinjoint::Validity {
     let (load, omega) = sampled(s);
-    let point = pinjoint::validity::of_point(load, omega.abs() * s.settings.cfg.model.geometry.pin_radius, s.settings.temperature);
+    let point = pinjoint::validity::of_point(load, omega.abs() * s.settings.cfg.model.geometry.pin_radius, s.settings.temperature, s.settings.cfg.model.model.paper);
     let r = &s.settings.cfg.rig;
     let stroke = if s.settings.use_command_input { pinjoint::Validity::Checked } else { pinjoint::validity::of_stroke(r.frequency, r.amplitude) };
     point.max(stroke)
@@ -285,7 +286,7 @@ pub fn validity(s: &Values) -> pinjoint::Validity {
 pub fn excursion(s: &Values) -> Option<pinjoint::validity::Excursion> {
     let (load, omega) = sampled(s);
     let r = &s.settings.cfg.rig;
-    let point = pinjoint::validity::excursion(load, omega.abs() * s.settings.cfg.model.geometry.pin_radius, s.settings.temperature);
+    let point = pinjoint::validity::excursion(load, omega.abs() * s.settings.cfg.model.geometry.pin_radius, s.settings.temperature, s.settings.cfg.model.model.paper);
     point.or_else(|| (!s.settings.use_command_input).then(|| pinjoint::validity::stroke_excursion(r.frequency, r.amplitude)).flatten())
 }
 

@@ -150,7 +150,7 @@ mod tests {
     #[test]
     fn the_band_creeps_and_presliding_holds() {
         let dir = tempfile::tempdir().unwrap();
-        write(dir.path(), &Params::default()).unwrap();
+        write(dir.path(), &Params::paper()).unwrap();
         let text = std::fs::read_to_string(dir.path().join("at_rest_hold.csv")).unwrap();
         let rows: Vec<Vec<f64>> = text.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
         let last = rows.last().unwrap();

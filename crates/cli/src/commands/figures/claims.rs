@@ -593,7 +593,7 @@ mod tests {
     use crate::commands::figures::plots::CoreCurves;
 
     fn joint() -> Joint {
-        Joint::new(&Params::default()).unwrap()
+        Joint::new(&Params::paper()).unwrap()
     }
 
     /// Adaptive Simpson quadrature of `f` over [a, b] to `tol` (an independent rule: the

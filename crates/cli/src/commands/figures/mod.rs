@@ -54,6 +54,8 @@ The rig side is 15 simulations (loads 5, 10, 20, 40, 60 kN × 0.03, 0.3, 1 Hz, �
 each from rest, the first left out, run on every core. The x value of a run in Figures 8 and 9 is \
 the time-mean of |ω| over the averaged stroke. Progress is shown on standard error when it is a \
 terminal. A full run takes a few seconds in a release build; --quick is coarser still.\n\n\
+The figures run on the paper's model (model.paper = true, the comparison the captions make); \
+--complete runs them on the complete model.\n\n\
 Example:\n  pinjoint figures --output figures"
 )]
 /// Arguments of `pinjoint figures` (its `--help` text is the `#[command]` attribute's).
@@ -64,6 +66,11 @@ pub struct FiguresCmd {
     /// Coarser sweeps, fewer samples, looser tolerances: every file, a fraction of the time
     #[arg(long)]
     pub quick: bool,
+    /// Run the figures on the complete model (model.paper = false: journal bearing, grease in
+    /// the clearance, cold supply) instead of the paper's model, which the comparison with the
+    /// paper and the claims table are written for
+    #[arg(long)]
+    pub complete: bool,
 }
 
 /// Sizes of the core sweeps.
@@ -182,7 +189,9 @@ fn rig_figures(dir: &Path, results: &[RigResult], core: &CoreCurves, pin_radius:
 /// their data, README.md and index.html into the output directory.
 pub fn run(cmd: &FiguresCmd) -> Result<()> {
     let start = Instant::now();
-    let cfg = RigConfig::default();
+    let mut cfg = RigConfig::default();
+    // The paper's figures on the paper's model (model.paper = true) unless asked otherwise.
+    cfg.model.model.paper = !cmd.complete;
     let joint = Joint::new(&cfg.model)?;
     let pin_radius = cfg.model.geometry.pin_radius;
     let core_settings = CoreSettings::new(cmd.quick);

@@ -248,11 +248,11 @@ mod tests {
         let d = tempfile::tempdir().unwrap();
         // PINJOINT_FIGURES_OUT=DIR keeps a copy of the files (to look at them).
         let dir = std::env::var_os("PINJOINT_FIGURES_OUT").map_or_else(|| d.path().to_path_buf(), std::path::PathBuf::from);
-        let paths = write(&dir, &Params::default()).unwrap();
+        let paths = write(&dir, &Params::paper()).unwrap();
         for p in &paths {
             assert!(std::fs::metadata(p).unwrap().len() > 100, "{}", p.display());
         }
-        let sum = summary(&Params::default()).unwrap();
+        let sum = summary(&Params::paper()).unwrap();
         for r in &sum {
             eprintln!(
                 "{:>8} {:>6} N  mu<0.11 at {:?} rpm  1/g2<0.5 at {:?} rpm  mu(800)={:.4}  lambda 1rpm {:.3} 800rpm {:.3}  dip {:.3}",
