@@ -38,19 +38,22 @@ pub type Operating = (f64, f64, Option<f64>);
 /// Operating points solved in one sequence (warm-started from each other); the sequences are
 /// solved in parallel (rayon). A fixed length, so that the answers do not depend on the number
 /// of threads.
-pub const CHUNK: usize = 1024;
+pub const CHUNK: usize = 4096;
 
 /// The shape at every operating point, warm-starting each solve from the previous one within
 /// a [`CHUNK`] of points, the chunks in parallel. A point with a temperature is evaluated by
-/// the joint at that temperature ([`Joint::at_temperature`]: bit for bit the joint built with
-/// it, at the cost of a few logarithms), made again only where the temperature changes (once a
-/// chunk for a constant one). `ident` identifies the sample in an error.
+/// the joint at that temperature ([`Joint::at_temperature`], a few logarithms), made again
+/// only where the temperature changes (once a chunk for a constant one). Each chunk builds its
+/// own joint: the joints [`Joint::at_temperature`] makes share the solve's start table, whose
+/// rows are solved by whichever joint asks first, so shared between threads the last bits of
+/// the answers depended on the threads' timing (measured: the same Python fit gave different
+/// last digits from run to run); a chunk's own table is filled in its own fixed order.
+/// `ident` identifies the sample in an error.
 pub fn shapes(params: &Params, points: &[Operating], ident: &(dyn Fn(usize) -> (String, usize) + Sync)) -> Result<Vec<Shape>, CalibrationError> {
-    let joint = Joint::new(params)?;
     let chunks = points
         .par_chunks(CHUNK)
         .enumerate()
-        .map(|(c, pts)| chunk_shapes(&joint, params, pts, c * CHUNK, ident))
+        .map(|(c, pts)| chunk_shapes(&Joint::new(params)?, params, pts, c * CHUNK, ident))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(chunks.into_iter().flatten().collect())
 }
