@@ -179,7 +179,7 @@ pub fn worst(estimates: &[Estimate], independence: &[(String, f64)], screened: &
         .iter()
         .filter(|e| screened.contains(&e.key))
         .map(|e| (e, e.standard_error / e.value.abs()))
-        .filter(|(_, r)| !(*r <= 1.0))
+        .filter(|(_, r)| r.is_nan() || *r > 1.0)
         .max_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(e, r)| {
             (e.key.clone(), format!("its standard error {:.3e} {} is {:.2} times its value {:.6e}", e.standard_error, e.unit, r, e.value))

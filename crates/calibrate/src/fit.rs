@@ -299,7 +299,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
     // K·γ̇^n is a valley in (K, n), along which the fit crawls without end.
     if let Some(k) = extras.iter().position(|e| screened.contains(&e.key.name()) && e.key.name() == FLOW_INDEX) {
         let span = speed_span(&support);
-        if !(span >= MIN_SPEED_SPAN) {
+        if span.is_nan() || span < MIN_SPEED_SPAN {
             dropped_before.push((
                 FLOW_INDEX.to_string(),
                 format!(
@@ -319,7 +319,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
         let (jac, _) = trial.jacobian(&start(&trial)?, false)?;
         let d = independence(&jac, &which);
         let (i, &least) = d.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1)).expect("not empty");
-        if !(least < MIN_INDEPENDENCE) {
+        if least.is_nan() || least >= MIN_INDEPENDENCE {
             break;
         }
         let key = extras[which[i]].key.name();

@@ -45,7 +45,7 @@ fn rig_at(temperature: f64, noise: f64, seed: u64) -> Record {
 /// The options of these tests: the default set across temperature is S_0 (the grease keys are
 /// the library's default once the parameter table has them), J fitted.
 fn options(across: &[&str]) -> Options {
-    Options { across_temperature: across.iter().map(|k| k.to_string()).collect(), resamples: 200, ..Options::default() }
+    Options { across_temperature: across.iter().map(ToString::to_string).collect(), resamples: 200, ..Options::default() }
 }
 
 fn est<'a>(c: &'a pinjoint_calibrate::Calibration, key: &str) -> Option<&'a pinjoint_calibrate::Estimate> {
