@@ -45,9 +45,9 @@ pub const CHUNK: usize = 4096;
 /// the joint at that temperature ([`Joint::at_temperature`], a few logarithms), made again
 /// only where the temperature changes (once a chunk for a constant one). Each chunk builds its
 /// own joint: the joints [`Joint::at_temperature`] makes share the solve's start table, whose
-/// rows are solved by whichever joint asks first, so shared between threads the last bits of
-/// the answers depended on the threads' timing (measured: the same Python fit gave different
-/// last digits from run to run); a chunk's own table is filled in its own fixed order.
+/// rows are solved by whichever joint asks first, so that shared between threads the answers
+/// could depend on the threads' timing; a chunk's own table is filled in its own fixed order
+/// (one [`Joint::new`] a chunk, about 4 ms).
 /// `ident` identifies the sample in an error.
 pub fn shapes(params: &Params, points: &[Operating], ident: &(dyn Fn(usize) -> (String, usize) + Sync)) -> Result<Vec<Shape>, CalibrationError> {
     let chunks = points
