@@ -88,8 +88,9 @@ fn validity_output_at_every_boundary_and_one_log_per_excursion() {
         (20e3, 1.0, 298.15, Validity::Checked),
         (20e3, 1.0, 298.15f64.next_up(), Validity::Extrapolation),
         (20e3, 1.0, 273.15, Validity::Extrapolation),
-        (20e3, 1.0, 273.15f64.next_down(), Validity::KnownWrong),
-        (20e3, 0.21, 243.15, Validity::KnownWrong),
+        // The complete model (default): below 0 C an extrapolation, not known-wrong.
+        (20e3, 1.0, 273.15f64.next_down(), Validity::Extrapolation),
+        (20e3, 0.21, 243.15, Validity::Extrapolation),
         (0.0, 1.0, 293.15, Validity::Extrapolation),
     ];
     let h = Host::new();
@@ -120,11 +121,12 @@ fn validity_output_at_every_boundary_and_one_log_per_excursion() {
     free(c);
 }
 
-/// The cold soak through the FMU: the known-wrong flag and its message say μ is too low.
+/// The cold soak through the FMU with the paper's model: the known-wrong flag and its message
+/// say μ is too low.
 #[test]
 fn cold_soak_is_said_known_wrong() {
     let h = Host::new();
-    let c = logged(&h, &[("temperature", 243.15), ("angular_velocity", 0.21)]);
+    let c = logged(&h, &[("model.paper", 1.0), ("temperature", 243.15), ("angular_velocity", 0.21)]);
     h.step(c, 0.0, 0.01);
     assert_eq!(get(c, "validity"), 2.0);
     let m = h.messages().into_iter().find(|m| m.text.starts_with("validity")).expect("logged");

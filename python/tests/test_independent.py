@@ -27,7 +27,8 @@ def test_reference_f32_matches_model_notes(t, value):
 
 @pytest.mark.parametrize(
     "params",
-    [None, {"friction.boundary_friction_coefficient": 0.09, "lubricant.viscosity": 0.1, "surface.summit_height_std": 1.5e-6}],
+    # The paper's model: the independent implementation is of its equations.
+    [{"model.paper": True}, {"model.paper": True, "friction.boundary_friction_coefficient": 0.09, "lubricant.viscosity": 0.1, "surface.summit_height_std": 1.5e-6}],
 )
 def test_evaluate_agrees_with_the_independent_model_to_1e_9(params):
     rng = np.random.default_rng(2024)

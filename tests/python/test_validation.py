@@ -24,11 +24,11 @@ def test_interface(model_description):
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
     assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load", "temperature"]
-    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "validity"]
+    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "clearance_torque", "journal_weight", "eccentricity_ratio", "grease_yield_torque", "validity"]
     params = [n for n in v if v[n].causality == "parameter"]
     # The 26 parameter-file keys, the band, fidelity, tolerance, the 4 envelope bounds, the
     # zero-velocity model and the 3 presliding parameters.
-    assert len(params) == 37 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    assert len(params) == 45 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
     assert {"zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time"} <= set(params)
     assert v["zero_velocity.model"].type == "Enumeration" and int(v["zero_velocity.model"].start) == 1, "presliding by default"
     # One continuous state (Model Exchange) and directional derivatives in both interfaces.

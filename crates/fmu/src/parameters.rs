@@ -12,6 +12,9 @@ use pinjoint::Params;
 /// Display unit a user expects for a parameter.
 fn display_unit(s: &ParamSpec) -> Option<&'static str> {
     match (s.section, s.unit) {
+        // The grease's values in their SI units (an activation temperature is no temperature
+        // to show in degC; its stresses are Pa, not MPa).
+        ("grease", _) => None,
         ("geometry", "m") => Some("mm"),
         (_, "m") => Some("um"),
         (_, "Pa") if s.key.contains("modulus") => Some("GPa"),
@@ -46,8 +49,14 @@ fn declaration(s: &ParamSpec, vr: u32) -> Variable {
         ParamKind::Real => Kind::Real,
         ParamKind::Boolean => Kind::Boolean,
     };
-    let unit = (s.unit != "1" && kind == Kind::Real).then_some(s.unit);
-    let display = if kind == Kind::Real { display_unit(s) } else { None };
+    // A unit with a parameter's exponent (K in Pa.s^n) has no SI base-unit form for the
+    // modelDescription: said in the description instead.
+    let declarable = !s.unit.contains('^');
+    if !declarable {
+        description.push_str(&format!(" [{}]", s.unit));
+    }
+    let unit = (s.unit != "1" && kind == Kind::Real && declarable).then_some(s.unit);
+    let display = if kind == Kind::Real && declarable { display_unit(s) } else { None };
     let mut v = declare(&s.name(), vr, kind, Causality::Parameter, unit, display, description);
     v.start = Some(s.default_value());
     if kind == Kind::Real {
