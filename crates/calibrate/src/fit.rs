@@ -106,7 +106,20 @@ pub fn calibrate_core_with(records: &[Record], options: &Options, filter_given: 
         notes.push(dropped(key, why));
     };
     let first = loop {
-        let once = calibrate_once(records, &o, filter_given, &screened)?;
+        let once = match calibrate_once(records, &o, filter_given, &screened) {
+            Ok(x) => x,
+            // The default keys made the fit fail (no convergence, a step outside the model's
+            // domain, a singular problem): fitted without them, each named. An error of the
+            // records themselves comes back from the fit without them.
+            Err(e) if !screened.is_empty() => {
+                let why = format!("the fit with the default keys across temperature failed ({e})");
+                for key in screened.clone() {
+                    drop(&mut o, &mut screened, &key, &why);
+                }
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
         for (key, why) in &once.dropped {
             drop(&mut o, &mut screened, key, why);
         }

@@ -171,3 +171,39 @@ fn grease_intervals_cover_the_truth_over_seeds() {
         assert!(*fits >= 4 && *covered + 1 >= *fits, "{k}: {covered}/{fits}");
     }
 }
+
+#[test]
+fn strokes_a_decade_apart_in_speed_fit_the_flow_index_too() {
+    // Another truth (n = 0.6, K = 30 Pa·s^n, τ_y = 150 Pa, E_K/R = 3000 K), four temperatures
+    // from -40 C, one load, strokes at 0.2 and 2 Hz: the speeds span more than a decade, so
+    // every grease key is fitted, each interval holding the truth.
+    let mut truth = Params::default();
+    truth.friction.boundary_friction_coefficient = 0.11;
+    (truth.grease.yield_stress, truth.grease.consistency, truth.grease.flow_index, truth.grease.consistency_activation) = (150.0, 30.0, 0.6, 3000.0);
+    let mut recs = Vec::new();
+    for t in [233.15, 253.15, 273.15, 293.15] {
+        for f in [0.2, 2.0] {
+            let mut cfg = RigConfig { model: truth, ..RigConfig::default() };
+            cfg.model.lubricant.temperature = t;
+            cfg.rig.load = 20e3;
+            cfg.rig.frequency = f;
+            let s = run_cycles(&cfg, 3.0, 400).expect("rig runs");
+            let mut r = logged(&format!("rig {t} K {f} Hz"), &s, 0.2, 0.3, 77 + recs.len() as u64);
+            r.temperature = Some(vec![t; r.len()]);
+            recs.push(r);
+        }
+    }
+    let c = calibrate(&recs, &Options { resamples: 200, ..Options::default() }).unwrap();
+    for e in &c.estimates {
+        println!("{} = {:.6e} [{:.6e}, {:.6e}]", e.key, e.value, e.ci95.0, e.ci95.1);
+    }
+    println!("{:?}", c.warnings);
+    let keys: Vec<&str> = c.estimates.iter().map(|e| e.key.as_str()).collect();
+    let mut want = vec![MU_C];
+    want.extend(pinjoint_calibrate::across::GREASE_KEYS);
+    assert_eq!(keys, want, "{:?}", c.warnings);
+    for e in &c.estimates {
+        let x = if e.key == MU_C { 0.11 } else { get(&truth, &e.key) };
+        assert!(e.ci95.0 <= x && x <= e.ci95.1, "{} = {} [{}, {}], truth {x}", e.key, e.value, e.ci95.0, e.ci95.1);
+    }
+}
