@@ -184,3 +184,79 @@ fn inertia_fitted_or_given_and_long_records_averaged() {
     let e = fail(&["calibrate", "--input", s(&a), "--load", "20000", "--output", s(&out), "--max-samples", "10"]);
     assert!(e.contains("--max-samples = 10"), "{e}");
 }
+
+/// `pinjoint cycle` at 20 kN, 1 Hz, at `temperature` K, with μ_c = 0.105 and Roelands'
+/// temperature index S_0 = 1.3882 (10 % above its default).
+fn cycle_at(dir: &Path, temperature: &str) -> PathBuf {
+    let params = dir.join("truth_t.toml");
+    std::fs::write(&params, "[friction]\nboundary_friction_coefficient = 0.105\n[lubricant]\nroelands_temperature_index = 1.3882\n").unwrap();
+    let out = dir.join(format!("t{temperature}"));
+    ok(&["cycle", "--frequency", "1", "--load", "20000", "--cycles", "6", "--samples-per-cycle", "1000", "--temperature", temperature, "--params", s(&params), "--output", s(&out)]);
+    out.join("cycle.csv")
+}
+
+#[test]
+fn temperature_per_input_evaluates_each_record_at_its_temperature() {
+    let tmp = tempfile::tempdir().unwrap();
+    let temps = ["293.15", "313.15", "333.15"];
+    let files: Vec<PathBuf> = temps.iter().map(|t| cycle_at(tmp.path(), t)).collect();
+    let out = tmp.path().join("cal");
+    let mut args = vec!["calibrate", "--load", "20000", "--fit", "lubricant.roelands_temperature_index", "--output", s(&out), "--json"];
+    for (f, t) in files.iter().zip(temps) {
+        args.extend_from_slice(&["--input", s(f), "--temperature", t]);
+    }
+    let v: serde_json::Value = serde_json::from_str(ok(&args).stdout.trim()).expect("one JSON object");
+    println!("{v}");
+    assert_eq!(v["temperatures"], serde_json::json!([293.15, 313.15, 333.15]));
+    let e = &v["parameters"]["lubricant.roelands_temperature_index"];
+    let (value, lo, hi) = (e["value"].as_f64().unwrap(), e["ci95"][0].as_f64().unwrap(), e["ci95"][1].as_f64().unwrap());
+    assert!(lo <= 1.3882 && 1.3882 <= hi && (value - 1.3882).abs() < 2e-3, "{e}");
+    // The calibrated file predicts the torque between the records' temperatures: `point` at
+    // 303.15 K against the truth's.
+    let truth = tmp.path().join("truth_t.toml");
+    let mu = |params: &Path| -> f64 {
+        let p = ok(&["point", "--load", "20000", "--speed", "3", "--temperature", "303.15", "--json", "--params", s(params)]);
+        serde_json::from_str::<serde_json::Value>(p.stdout.trim()).unwrap()["friction_coefficient"].as_f64().unwrap()
+    };
+    let (want, got) = (mu(&truth), mu(&out.join("calibrated.toml")));
+    assert!((got / want - 1.0).abs() < 1e-3, "{got} vs {want}");
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(report.contains("Temperatures: the records are at 293.15, 313.15, 333.15 K"), "{report}");
+    // Without the temperatures every record is taken at 20 C (where S_0 does nothing): a far
+    // worse fit of mu_c alone.
+    let mut args0 = vec!["calibrate", "--load", "20000", "--output", s(&out), "--json"];
+    for f in &files {
+        args0.extend_from_slice(&["--input", s(f)]);
+    }
+    let v0: serde_json::Value = serde_json::from_str(ok(&args0).stdout.trim()).unwrap();
+    assert!(v0["rms_residual"].as_f64().unwrap() > 10.0 * v["rms_residual"].as_f64().unwrap(), "{v0}");
+    // A temperature column is read as the load column is; a --temperature beside it must agree.
+    let csv = std::fs::read_to_string(&files[1]).unwrap();
+    let mut lines = csv.lines();
+    let mut with = format!("{},temperature\n", lines.next().unwrap());
+    for l in lines {
+        with.push_str(&format!("{l},313.15\n"));
+    }
+    let col = tmp.path().join("col.csv");
+    std::fs::write(&col, with).unwrap();
+    let v1: serde_json::Value =
+        serde_json::from_str(ok(&["calibrate", "--load", "20000", "--input", s(&col), "--output", s(&out), "--json"]).stdout.trim()).unwrap();
+    assert_eq!(v1["temperatures"], serde_json::json!([313.15]));
+    let e = fail(&["calibrate", "--load", "20000", "--input", s(&col), "--temperature", "293.15", "--output", s(&out)]);
+    assert!(e.contains("col.csv, line 2") && e.contains("column temperature = 313.15 K disagrees with --temperature 293.15 K"), "{e}");
+    // Bad temperatures: the quantity, value, unit, and the hint for degrees Celsius.
+    let bad = |t: &str| fail(&["calibrate", "--load", "20000", "--input", s(&files[0]), "--temperature", t, "--output", s(&out)]);
+    let e = bad("20");
+    assert!(e.contains("--temperature = 20 K is invalid") && e.contains("kelvin?") && e.contains("293.15 K"), "{e}");
+    let e = bad("-5");
+    assert!(e.contains("--temperature = -5 K") && e.contains("> 0 K") && e.contains("kelvin?"), "{e}");
+    let e = bad("NaN");
+    assert!(e.contains("--temperature = NaN K") && e.contains("finite"), "{e}");
+    let e = bad("200");
+    assert!(e.contains("temperature = 200 K") && e.contains("lubricant.temperature"), "{e}");
+    let e = fail(&["calibrate", "--load", "20000", "--input", s(&files[0]), "--temperature", "293.15", "--temperature", "313.15", "--output", s(&out)]);
+    assert!(e.contains("2 --temperature values for 1 --input"), "{e}");
+    std::fs::write(&col, "time,angle,torque,temperature\n0,0,1,20\n0.1,0.1,1,20\n").unwrap();
+    let e = fail(&["calibrate", "--load", "20000", "--input", s(&col), "--output", s(&out)]);
+    assert!(e.contains("col.csv, line 2") && e.contains("column temperature = 20 K") && e.contains("kelvin?"), "{e}");
+}

@@ -21,12 +21,20 @@ JSON_KEYS = (
     "inertia",
     "inertia_fitted",
     "inertia_estimate",
+    "temperatures",
     "samples_read",
     "block_length",
     "warnings",
 )
 
-_COLUMNS = {"time": "s", "angle": "rad", "angular_velocity": "rad/s", "torque": "N.m", "load": "N"}
+_COLUMNS = {"time": "s", "angle": "rad", "angular_velocity": "rad/s", "torque": "N.m", "load": "N", "temperature": "K"}
+
+#: A temperature below this (K) is refused as degrees Celsius given as kelvin (the library's
+#: bound, pinjoint_calibrate::record::CELSIUS_SUSPECT).
+CELSIUS_SUSPECT = 150.0
+
+#: Largest difference (K) between a record's temperature column and ``temperature=`` beside it.
+TEMPERATURE_AGREEMENT = 1.0
 
 
 class Calibration(dict):
@@ -41,6 +49,7 @@ class Calibration(dict):
       inertia          the rotating inertia J used (kg*m^2): fitted, or given
       inertia_fitted   True when J was fitted (no ``inertia`` and no ``rig.inertia`` in params)
       inertia_estimate {"value", "standard_error", "ci95"} of J (kg*m^2), when fitted
+      temperatures     the records' distinct temperatures (K, ascending; empty when none given)
       samples_read     samples in the records; block_length: the block averaging of long
                        records to the sample budget (1: none)
       warnings         identifiability and interval warnings (list of str)
@@ -83,7 +92,7 @@ def _column(rec: Any, name: str) -> Any:
     return getattr(rec, name, None)
 
 
-def _record(i: int, rec: Any) -> tuple:
+def _record(i: int, rec: Any, given_temperature: Optional[float] = None) -> tuple:
     name = _column(rec, "name")
     name = str(i) if name is None else str(name)
     where = f"record {name}"
@@ -95,7 +104,7 @@ def _record(i: int, rec: Any) -> tuple:
                 raise ValueError(f"{where}: has no `{col}` ({_COLUMNS[col]}) column")
             return None
         a = as_float_array(f"{where}: {col}", _COLUMNS[col], v)
-        if col == "load" and a.ndim == 0:
+        if col in ("load", "temperature") and a.ndim == 0:
             return a
         if a.ndim != 1:
             raise ValueError(f"{where}: {col} ({_COLUMNS[col]}) must be one-dimensional, got shape {a.shape}")
@@ -110,7 +119,47 @@ def _record(i: int, rec: Any) -> tuple:
     load = array("load", True)
     if load.ndim == 0:
         load = np.full(time.shape, float(load))
-    return (name, time, angle, omega, torque, load)
+    temperature = array("temperature", False)
+    if temperature is not None and given_temperature is not None:
+        column = np.atleast_1d(temperature)
+        bad = np.nonzero(np.abs(column - given_temperature) > TEMPERATURE_AGREEMENT)[0]
+        if bad.size:
+            t = float(column[bad[0]])
+            raise ValueError(
+                f"{where}: temperature = {short(t)} K disagrees with temperature={short(given_temperature)} K given beside it: drop one"
+            )
+    if temperature is None and given_temperature is not None:
+        temperature = np.asarray(given_temperature, dtype=np.float64)
+    if temperature is not None and temperature.ndim == 0:
+        temperature = np.full(time.shape, float(temperature))
+    return (name, time, angle, omega, torque, load, temperature)
+
+
+def _temperatures(temperature: Any, n: int) -> List[Optional[float]]:
+    """``temperature=`` as one value per record (K), checked as ``--temperature`` is."""
+    if temperature is None:
+        return [None] * n
+    values = [temperature] if np.ndim(temperature) == 0 else list(temperature)
+    out = []
+    for v in values:
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
+            raise TypeError(f"temperature (K) must be a number or one number per record, got {short(v)}")
+        v = float(v)
+        if not np.isfinite(v):
+            raise ValueError(f"temperature = {short(v)} K is invalid: it must be a finite number of kelvin")
+        if v < CELSIUS_SUSPECT:
+            hint = (
+                f"a temperature must be > 0 K (kelvin? as degrees Celsius it would be {short(v + 273.15)} K)"
+                if v <= 0
+                else f"below {short(CELSIUS_SUSPECT)} K, colder than any pin joint runs: kelvin? (as degrees Celsius it would be {short(v + 273.15)} K)"
+            )
+            raise ValueError(f"temperature = {short(v)} K is invalid: {hint}")
+        out.append(v)
+    if len(out) == 1:
+        return out * n
+    if len(out) != n:
+        raise ValueError(f"{len(out)} temperature values for {n} records: give one temperature for all, or one per record in order")
+    return out
 
 
 def _count(name: str, value: Any, allow_none: bool = True) -> Optional[int]:
@@ -129,6 +178,7 @@ def calibrate(
     fit: Union[str, Sequence[str]] = (MU_C,),
     model: str = "core",
     *,
+    temperature: Any = None,
     inertia: Optional[float] = None,
     fit_offset: bool = True,
     speed_fraction: Optional[float] = None,
@@ -147,7 +197,9 @@ def calibrate(
                 ``torque`` (N*m, the recorded actuator torque, positive in the direction of
                 motion, as ``simulate_cycle``'s torque) and ``load`` (N, an array or one
                 number); optional ``name`` for messages. Other columns are ignored, so
-                ``dict(pinjoint.simulate_cycle(...), load=20e3)`` is a record.
+                ``dict(pinjoint.simulate_cycle(...), load=20e3)`` is a record. An optional
+                ``temperature`` (K, an array or one number) evaluates the record by the joint
+                at its lubricant temperature (``--temperature``).
     params      start values and fixed parameters: None (the paper's), a Params, a mapping
                 or a TOML file; a file's or mapping's ``rig.inertia`` is the given inertia
                 when ``inertia`` is None (as with ``--params``)
@@ -158,6 +210,11 @@ def calibrate(
     model       "core": the quasi-static model T = J*alpha + sign(w)*mu*R*P + T0 (the only
                 one the calibration library offers; fitting through the rig simulation is
                 not available)
+    temperature the lubricant temperature (K) of records without a ``temperature`` column: one
+                number for all, or one per record (``--temperature``); a column beside it must
+                agree within 1 K. With records at 3 or more temperatures and no key named
+                besides mu_c, the grease's parameters are fitted too (each dropped with a
+                warning when the records cannot determine it); fewer: mu_c (and the named keys)
     inertia     J, kg*m^2, given: J*alpha is subtracted (``--inertia``). Default: params'
                 rig.inertia if it has one, else J is fitted with mu_c and T0 (linear least
                 squares; result["inertia_estimate"] holds it with its interval)
@@ -184,7 +241,8 @@ def calibrate(
         records = [records]
     if len(records) == 0:
         raise ValueError("no records to fit")
-    recs = [_record(i, r) for i, r in enumerate(records)]
+    temps = _temperatures(temperature, len(records))
+    recs = [_record(i, r, t) for i, (r, t) in enumerate(zip(records, temps))]
     keys = [k.strip() for k in (fit.split(",") if isinstance(fit, str) else list(fit))]
     keys = [k for k in keys if k]
     if MU_C not in keys:

@@ -10,8 +10,8 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-/// One record as the Python half passes it: name, time, angle, angular_velocity, torque, load
-/// (float64, 1-D; load already broadcast to the length of time).
+/// One record as the Python half passes it: name, time, angle, angular_velocity, torque, load,
+/// temperature (float64, 1-D; load and temperature already broadcast to the length of time).
 pub type RecordArgs<'py> = (
     String,
     PyReadonlyArray1<'py, f64>,
@@ -19,6 +19,7 @@ pub type RecordArgs<'py> = (
     Option<PyReadonlyArray1<'py, f64>>,
     PyReadonlyArray1<'py, f64>,
     PyReadonlyArray1<'py, f64>,
+    Option<PyReadonlyArray1<'py, f64>>,
 );
 
 /// The library's message, with every value in its shortest round-trip form.
@@ -37,6 +38,9 @@ pub fn calibration_error(e: &CalibrationError) -> String {
         ),
         CalibrationError::Load { record, row, value } => {
             format!("record {record}: load = {} N at index {row} is invalid: it must be > 0 N", short(*value))
+        }
+        CalibrationError::Temperature { record, row, value, why } => {
+            format!("record {record}: temperature = {} K at index {row} is invalid: {why}", short(*value))
         }
         other => other.to_string(),
     }
@@ -81,6 +85,7 @@ fn to_dict<'py>(py: Python<'py>, c: &Calibration) -> PyResult<Bound<'py, PyDict>
     if let Some(j) = &c.inertia_estimate {
         d.set_item("inertia_estimate", estimate(py, j)?)?;
     }
+    d.set_item("temperatures", c.temperatures.clone())?;
     d.set_item("samples_read", c.samples_read)?;
     d.set_item("block_length", c.block_length)?;
     d.set_item("warnings", c.warnings.clone())?;
@@ -166,7 +171,7 @@ pub fn calibrate<'py>(
     }
     let records: Vec<Columns<'_>> = records
         .iter()
-        .map(|(name, t, a, w, q, p)| {
+        .map(|(name, t, a, w, q, p, temp)| {
             Ok(Columns {
                 name,
                 time: slice(name, t)?,
@@ -174,6 +179,7 @@ pub fn calibrate<'py>(
                 angular_velocity: w.as_ref().map(|w| slice(name, w)).transpose()?,
                 torque: slice(name, q)?,
                 load: slice(name, p)?,
+                temperature: temp.as_ref().map(|x| slice(name, x)).transpose()?,
             })
         })
         .collect::<PyResult<_>>()?;

@@ -177,3 +177,75 @@ def test_options_map_to_cli_flags(records, cli, tmp_path):
     # A changed option changes the fit (the comparison above can fail).
     other = pinjoint.calibrate([records[1]], params=toml, speed_fraction=0.4, settle_time=0.2, fit_offset=False, inertia=0.0)
     assert other["parameters"] != ours["parameters"]
+
+
+@pytest.fixture(scope="module")
+def cold_records():
+    """Rig records at 253.15 and 293.15 K (0.5 Hz, +-40 deg, 3 cycles, 20 kN) made with the
+    grease's yield activation temperature 25 % above its default, 0.05 N*m of torque noise;
+    each carries its temperature."""
+    truth = {pinjoint.MU_C: MU, "grease.yield_activation": 1.25 * pinjoint.Params()["grease.yield_activation"]}
+    rng = np.random.default_rng(2)
+    out = []
+    for t in (253.15, 293.15):
+        p = pinjoint.Params(dict(truth, **{"lubricant.temperature": t}))
+        c = pinjoint.simulate_cycle(0.5, np.radians(40.0), 20e3, cycles=3, samples_per_cycle=600, params=p)
+        torque = c["torque"] + 0.05 * rng.standard_normal(len(c["torque"]))
+        out.append({"name": f"T{t:g}", "time": c["time"], "angle": c["angle"], "torque": torque, "load": 20e3, "temperature": t})
+    return out
+
+
+def test_temperature_per_record_equals_cli(cold_records, cli, tmp_path):
+    """temperature= (one per record) is --temperature per --input: the same JSON, bit for bit;
+    a temperature column in the record gives the same fit; 2 temperatures fit what is named."""
+    keys = (pinjoint.MU_C, "grease.yield_activation")
+    bare = [{k: v for k, v in r.items() if k != "temperature"} for r in cold_records]
+    ours = pinjoint.calibrate(bare, fit=keys, temperature=[253.15, 293.15], resamples=0)
+    assert ours["temperatures"] == [253.15, 293.15]
+    assert "grease.yield_activation" in ours["parameters"]
+    column = pinjoint.calibrate(cold_records, fit=keys, resamples=0)
+    assert column.to_json() == ours.to_json()
+    args = [str(cli), "calibrate", "--fit", "grease.yield_activation", "--output", str(tmp_path / "out"), "--json"]
+    for r in cold_records:
+        p = tmp_path / f"{r['name']}.csv"
+        write_csv(p, r)
+        args += ["--input", str(p), "--temperature", repr(r["temperature"])]
+    run = subprocess.run(args, check=True, capture_output=True, text=True)
+    cli_json = json.loads(run.stdout)
+    # The CLI's bootstrap default differs from resamples=0: compare without it.
+    again = pinjoint.calibrate(bare, fit=keys, temperature=[253.15, 293.15])
+    assert json.loads(again.to_json()) == cli_json
+    assert pinjoint.Params.from_toml(tmp_path / "out" / "calibrated.toml") == again.params
+    # Without the temperatures the records are taken at the parameters' 20 C: another fit.
+    plain = pinjoint.calibrate(bare, resamples=0)
+    assert plain["temperatures"] == [] and plain["rms_residual"] > ours["rms_residual"]
+    # Two temperatures and nothing named: mu_c only, and the warning says why.
+    default = pinjoint.calibrate(cold_records, resamples=0)
+    assert list(default["parameters"]) == [pinjoint.MU_C]
+    assert any("2 temperatures" in w and "3 or more" in w for w in default["warnings"]), default["warnings"]
+
+
+@pytest.mark.parametrize(
+    "temperature, words",
+    [
+        (20.0, ["temperature = 20", "kelvin?", "293.15 K"]),
+        (-5.0, ["temperature = -5", "> 0 K", "kelvin?"]),
+        (float("nan"), ["temperature = nan", "finite"]),
+        ([293.15, 293.15, 293.15], ["3 temperature values for 2 records"]),
+        (200.0, ["temperature = 200", "lubricant.temperature"]),
+    ],
+)
+def test_bad_temperatures_are_value_errors(cold_records, temperature, words):
+    bare = [{k: v for k, v in r.items() if k != "temperature"} for r in cold_records]
+    with pytest.raises(ValueError) as e:
+        pinjoint.calibrate(bare, temperature=temperature, resamples=0)
+    text = str(e.value)
+    for w in words:
+        assert w.lower() in text.lower(), (w, text)
+
+
+def test_temperature_column_and_argument_must_agree(cold_records):
+    with pytest.raises(ValueError, match="disagrees with temperature=300"):
+        pinjoint.calibrate(cold_records, temperature=300.0, resamples=0)
+    with pytest.raises(ValueError, match="kelvin"):
+        pinjoint.calibrate([dict(cold_records[0], temperature=20.0)], resamples=0)

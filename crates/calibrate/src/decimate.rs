@@ -36,19 +36,19 @@ pub struct BlockMean {
     count: usize,
     /// Time of the block's first sample (the times are summed relative to it).
     t0: f64,
-    sums: [f64; 5],
+    sums: [f64; 6],
     out: Record,
 }
 
 impl BlockMean {
     /// Averages of blocks of `m` samples (m ≥ 1) for a record named `name`, with or without an
-    /// angle and an angular velocity column.
+    /// angle and an angular velocity column (and no temperature column: [`BlockMean::with_temperature`]).
     pub fn new(name: &str, m: usize, angle: bool, angular_velocity: bool) -> Self {
         Self {
             m: m.max(1),
             count: 0,
             t0: 0.0,
-            sums: [0.0; 5],
+            sums: [0.0; 6],
             out: Record {
                 name: name.to_string(),
                 angle: angle.then(Vec::new),
@@ -58,12 +58,23 @@ impl BlockMean {
         }
     }
 
+    /// With a temperature column (pass its values as [`BlockMean::push_temperature`]'s).
+    pub fn with_temperature(mut self) -> Self {
+        self.out.temperature = Some(Vec::new());
+        self
+    }
+
     /// Add one sample (an absent column's value is ignored).
     pub fn push(&mut self, time: f64, angle: f64, angular_velocity: f64, torque: f64, load: f64) {
+        self.push_temperature(time, angle, angular_velocity, torque, load, 0.0);
+    }
+
+    /// [`BlockMean::push`] with the sample's temperature (K; ignored without a temperature column).
+    pub fn push_temperature(&mut self, time: f64, angle: f64, angular_velocity: f64, torque: f64, load: f64, temperature: f64) {
         if self.count == 0 {
             self.t0 = time;
         }
-        for (s, v) in self.sums.iter_mut().zip([time - self.t0, angle, angular_velocity, torque, load]) {
+        for (s, v) in self.sums.iter_mut().zip([time - self.t0, angle, angular_velocity, torque, load, temperature]) {
             *s += v;
         }
         self.count += 1;
@@ -77,7 +88,7 @@ impl BlockMean {
             return;
         }
         let k = self.count as f64;
-        let [t, a, w, q, p] = self.sums.map(|s| s / k);
+        let [t, a, w, q, p, temp] = self.sums.map(|s| s / k);
         self.out.time.push(self.t0 + t);
         if let Some(v) = self.out.angle.as_mut() {
             v.push(a);
@@ -87,7 +98,10 @@ impl BlockMean {
         }
         self.out.torque.push(q);
         self.out.load.push(p);
-        self.sums = [0.0; 5];
+        if let Some(v) = self.out.temperature.as_mut() {
+            v.push(temp);
+        }
+        self.sums = [0.0; 6];
         self.count = 0;
     }
 
@@ -101,10 +115,14 @@ impl BlockMean {
 /// The record of block means of `c` (m = `m`); `c` should have been validated.
 pub fn block_mean(c: &Columns<'_>, m: usize) -> Record {
     let mut b = BlockMean::new(c.name, m, c.angle.is_some(), c.angular_velocity.is_some());
+    if c.temperature.is_some() {
+        b = b.with_temperature();
+    }
     for i in 0..c.len() {
         let a = c.angle.map_or(0.0, |a| a[i]);
         let w = c.angular_velocity.map_or(0.0, |w| w[i]);
-        b.push(c.time[i], a, w, c.torque[i], c.load[i]);
+        let temp = c.temperature.map_or(0.0, |t| t[i]);
+        b.push_temperature(c.time[i], a, w, c.torque[i], c.load[i], temp);
     }
     b.finish()
 }
@@ -129,6 +147,7 @@ pub fn reduce(records: &[Columns<'_>], max_samples: usize) -> Result<(Vec<Record
                     angular_velocity: c.angular_velocity.map(<[f64]>::to_vec),
                     torque: c.torque.to_vec(),
                     load: c.load.to_vec(),
+                    temperature: c.temperature.map(<[f64]>::to_vec),
                 }
             } else {
                 block_mean(c, m)
@@ -173,11 +192,12 @@ mod tests {
         // A linear signal averages to its value at the block's mean time, partial block included.
         let t: Vec<f64> = (0..10).map(f64::from).collect();
         let y: Vec<f64> = t.iter().map(|x| 2.0 * x + 1.0).collect();
-        let c = Columns { name: "r", time: &t, angle: Some(&y), angular_velocity: None, torque: &y, load: &y };
+        let c = Columns { name: "r", time: &t, angle: Some(&y), angular_velocity: None, torque: &y, load: &y, temperature: Some(&y) };
         let r = block_mean(&c, 4);
         assert_eq!(r.time, vec![1.5, 5.5, 8.5]);
         assert_eq!(r.angle.as_ref().unwrap(), &vec![4.0, 12.0, 18.0]);
         assert!(r.angular_velocity.is_none());
+        assert_eq!(r.temperature.as_ref().unwrap(), &vec![4.0, 12.0, 18.0]);
         assert_eq!(block_length(10, 4), 3);
         assert_eq!(block_length(8, 8), 1);
         assert_eq!(block_length(0, 8), 1);
@@ -189,7 +209,7 @@ mod tests {
         let n = 200_000;
         let x: Vec<f64> = (0..n).map(|_| rng.uniform() - 0.5).collect();
         let t: Vec<f64> = (0..n).map(f64::from).collect();
-        let c = Columns { name: "r", time: &t, angle: Some(&x), angular_velocity: None, torque: &x, load: &x };
+        let c = Columns { name: "r", time: &t, angle: Some(&x), angular_velocity: None, torque: &x, load: &x, temperature: None };
         let r = block_mean(&c, 10);
         let var = r.torque.iter().map(|v| v * v).sum::<f64>() / r.len() as f64;
         // Uniform noise of variance 1/12, averaged over 10: 1/120 (± a few % for 20000 blocks).

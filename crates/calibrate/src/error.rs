@@ -66,6 +66,18 @@ pub enum CalibrationError {
         /// The invalid load (N).
         value: f64,
     },
+    /// A temperature that is not a joint's temperature in kelvin, or outside the model's range.
+    #[error("record {record}: temperature = {value} K at sample {row} is invalid: {why}")]
+    Temperature {
+        /// Name of the offending record.
+        record: String,
+        /// 0-based index of the sample with the invalid temperature.
+        row: usize,
+        /// The invalid temperature (K).
+        value: f64,
+        /// What is wrong with it (with a hint when it looks like degrees Celsius).
+        why: String,
+    },
     /// Too few samples to differentiate and fit.
     #[error("record {record}: {samples} samples is too short: at least {needed} are needed ({why})")]
     TooShort {

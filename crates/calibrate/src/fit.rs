@@ -15,12 +15,13 @@
 //! and the condition number, and J is poorly determined only when J·α is small against the
 //! noise (slow strokes): then give it (`inertia`).
 
+use super::across::{dropped, independence, plan, worst, MIN_INDEPENDENCE};
 use super::coords::{resolve, Extra, Transform};
 use super::error::CalibrationError;
 use super::estimates::{check_options, estimate, keys_of, warnings, INERTIA, MIN_POINTS_PER_PARAMETER};
 use super::lm::{Adapter, Residuals};
 use super::derivative::matched_taps;
-use super::model::{shapes, Shape};
+use super::model::{shapes, Operating, Shape};
 use super::options::{Model, Options};
 use super::prepare::{prepare, Prepared, STICK_SLIP_IRREGULARITY};
 use super::record::Record;
@@ -39,6 +40,8 @@ struct Point {
     row: usize,
     load: f64,
     omega: f64,
+    /// Lubricant temperature (K), when the record gives it.
+    temperature: Option<f64>,
     /// α (rad/s²).
     alpha: f64,
     /// T at a used sample; at a fitted point the matched filter's mean of T, less J·α when J
@@ -47,6 +50,25 @@ struct Point {
     cluster: usize,
     /// Time since the sample's settling window began (s).
     since: f64,
+}
+
+/// The grease's flow index n (dropped from the default fit across temperature when the speeds
+/// span less than [`MIN_SPEED_SPAN`]).
+pub const FLOW_INDEX: &str = "grease.flow_index";
+
+/// The span of speeds (95th over 5th percentile of |ω| over the used samples) from which the
+/// flow index is fitted by default: a decade.
+pub const MIN_SPEED_SPAN: f64 = 10.0;
+
+/// 95th over 5th percentile of |ω| over `points`.
+fn speed_span(points: &[Point]) -> f64 {
+    let mut w: Vec<f64> = points.iter().map(|p| p.omega.abs()).collect();
+    if w.is_empty() {
+        return 1.0;
+    }
+    w.sort_by(f64::total_cmp);
+    let at = |f: f64| w[((w.len() - 1) as f64 * f).round() as usize];
+    at(0.95) / at(0.05)
 }
 
 /// Extensions of the settling window at most (each by half the stated settling time).
@@ -71,17 +93,51 @@ pub fn calibrate_core(records: &[Record], options: &Options) -> Result<Calibrati
 /// from that start is the one its tests validate (from the filtered fit's μ_c, 0.36 % away,
 /// it ended in another local minimum of k_b on short records).
 pub fn calibrate_core_with(records: &[Record], options: &Options, filter_given: bool) -> Result<Calibration, CalibrationError> {
+    let plan = plan(records, options, true)?;
     let mut o = options.clone();
+    o.fit = plan.keys.clone();
+    let mut notes = plan.warnings.clone();
+    // The default keys across temperature: fitted, and one the records do not determine
+    // dropped and the fit repeated (each round drops one, so this ends).
+    let mut screened = plan.screened.clone();
+    let mut drop = |o: &mut Options, screened: &mut Vec<String>, key: &str, why: &str| {
+        o.fit.retain(|k| k != key);
+        screened.retain(|k| k != key);
+        notes.push(dropped(key, why));
+    };
+    let first = loop {
+        let once = match calibrate_once(records, &o, filter_given, &screened) {
+            Ok(x) => x,
+            // The default keys made the fit fail (no convergence, a step outside the model's
+            // domain, a singular problem): fitted without them, each named. An error of the
+            // records themselves comes back from the fit without them.
+            Err(e) if !screened.is_empty() => {
+                let why = format!("the fit with the default keys across temperature failed ({e})");
+                for key in screened.clone() {
+                    drop(&mut o, &mut screened, &key, &why);
+                }
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
+        for (key, why) in &once.dropped {
+            drop(&mut o, &mut screened, key, why);
+        }
+        match worst(&once.calibration.estimates, &once.independence, &screened) {
+            Some((key, why)) => drop(&mut o, &mut screened, &key, &why),
+            None => break once,
+        }
+    };
     let step = 0.5 * options.exclusion.settle_time;
-    let (mut best, mut deviates) = calibrate_once(records, &o, filter_given)?;
-    let first_used = best.points_used;
+    let first_used = first.calibration.points_used;
+    let (mut best, mut deviates) = (first.calibration, first.deviation);
     let mut extended = 0;
     while deviates.is_some() && step > 0.0 && extended < MAX_SETTLE_EXTENSIONS {
         o.exclusion.settle_time += step;
-        match calibrate_once(records, &o, filter_given) {
-            Ok((c, d)) if 2 * c.points_used >= first_used => {
+        match calibrate_once(records, &o, filter_given, &[]) {
+            Ok(c) if 2 * c.calibration.points_used >= first_used => {
                 extended += 1;
-                (best, deviates) = (c, d);
+                (best, deviates) = (c.calibration, c.deviation);
             }
             _ => break,
         }
@@ -99,7 +155,21 @@ pub fn calibrate_core_with(records: &[Record], options: &Options, filter_given: 
         ));
     }
     best.settle_time = o.exclusion.settle_time;
+    best.temperatures = plan.temperatures;
+    notes.append(&mut best.warnings);
+    best.warnings = notes;
     Ok(best)
+}
+
+/// One fit: the calibration, the settling window's deviation ([`settle_deviation`]), the
+/// [`independence`] of each fitted extra at the optimum, and the screened keys dropped before
+/// the fit (their Jacobian column at the start nearly collinear with the others', or nearly
+/// zero), with why.
+struct Once {
+    calibration: Calibration,
+    deviation: Option<f64>,
+    independence: Vec<(String, f64)>,
+    dropped: Vec<(String, String)>,
 }
 
 /// The mean of sign(ω)·residual over used samples with `since` in [settle, 1.5·settle) against
@@ -132,14 +202,14 @@ fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64, inflation: 
     ((ma - mb).abs() > 3.0 * se).then_some(ma - mb)
 }
 
-fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> Result<(Calibration, Option<f64>), CalibrationError> {
+fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, screened: &[String]) -> Result<Once, CalibrationError> {
     if records.is_empty() {
         return Err(CalibrationError::NoRecords);
     }
     options.params.validate()?;
     check_options(options)?;
-    let extras = resolve(&options.fit, &options.params, &options.rig, false)?;
-    let prepared = records.iter().map(|r| prepare(r, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
+    let mut extras = resolve(&options.fit, &options.params, &options.rig, false)?;
+    let prepared = records.iter().map(|r| prepare(r, &options.params, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
     // J given: J·α subtracted; J fitted: α is a column of the linear problem.
     let j_given = options.inertia.unwrap_or(0.0);
     let fit_j = options.inertia.is_none();
@@ -162,6 +232,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
                     row,
                     load: p.load[row],
                     omega: p.omega[row],
+                    temperature: p.temperature.as_ref().map(|t| t[row]),
                     alpha: p.alpha[row],
                     y: p.torque[row],
                     cluster,
@@ -179,7 +250,9 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
         .iter()
         .map(|&(c, r)| Point { y: filter.apply(r, c, |i| support[i].y) - j_given * support[c].alpha, ..support[c] })
         .collect();
-    let np = 1 + usize::from(fit_j) + usize::from(options.fit_offset) + extras.len();
+    // μ_c, J (when fitted) and T_0 (when fitted): the linear quantities.
+    let nl = 1 + usize::from(fit_j) + usize::from(options.fit_offset);
+    let np = nl + extras.len();
     let total: usize = prepared.iter().map(|p| p.time.len()).sum();
     let needed = (MIN_POINTS_PER_PARAMETER * np).max(20);
     if points.len() < needed {
@@ -208,27 +281,73 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
     let ident = |i: usize| (prepared[support[i].rec].name.clone(), support[i].row);
     // The friction is evaluated at the smoothed velocity (a raw difference of a quantised angle
     // can be noisier than slow strokes are fast).
-    let load_speed: Vec<(f64, f64)> = support.iter().map(|p| (p.load, p.omega)).collect();
+    let load_speed: Vec<Operating> = support.iter().map(|p| (p.load, p.omega, p.temperature)).collect();
     let y = DVector::from_iterator(points.len(), points.iter().map(|p| p.y));
     let alpha: Vec<f64> = if fit_j { points.iter().map(|p| p.alpha).collect() } else { Vec::new() };
-    let problem = Problem {
+    let template = Problem {
         load_speed: &load_speed,
         alpha: fit_j.then_some(&alpha[..]),
         filter: &filter,
         y: &y,
         base: options.params,
-        extras: &extras,
+        extras: &[],
         offset: options.fit_offset,
         ident: &ident,
     };
-
     // Start: the extras at their start values, μ_c and T_0 by linear least squares.
-    let mut beta = DVector::zeros(np);
-    for (k, e) in extras.iter().enumerate() {
-        beta[k] = e.transform.forward(e.start).expect("checked by resolve");
+    let start = |problem: &Problem<'_>| -> Result<DVector<f64>, CalibrationError> {
+        let m = problem.extras.len();
+        let mut beta = DVector::zeros(nl + m);
+        for (k, e) in problem.extras.iter().enumerate() {
+            beta[k] = e.transform.forward(e.start).expect("checked by resolve");
+        }
+        let linear = problem.linear_solve(&beta)?;
+        beta.rows_mut(m, beta.len() - m).copy_from(&linear);
+        Ok(beta)
+    };
+    // The screened (default) keys whose column at the start the other columns explain (or
+    // that move nothing) are dropped before the fit, one at a time.
+    let mut dropped_before = Vec::new();
+    // The flow index shows only through the shear rate's spread: over a narrow span of speeds
+    // K·γ̇^n is a valley in (K, n), along which the fit crawls without end.
+    if let Some(k) = extras.iter().position(|e| screened.contains(&e.key.name()) && e.key.name() == FLOW_INDEX) {
+        let span = speed_span(&support);
+        if span.is_nan() || span < MIN_SPEED_SPAN {
+            dropped_before.push((
+                FLOW_INDEX.to_string(),
+                format!(
+                    "the used samples' speeds span a factor {span:.3} (5th to 95th percentile of |omega|), less than the {MIN_SPEED_SPAN} \
+                     needed to tell the flow index from the consistency: record strokes of frequencies a decade apart"
+                ),
+            ));
+            extras.remove(k);
+        }
     }
-    let linear = problem.linear_solve(&beta)?;
-    beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
+    loop {
+        let which: Vec<usize> = (0..extras.len()).filter(|&k| screened.contains(&extras[k].key.name())).collect();
+        if which.is_empty() {
+            break;
+        }
+        let trial = Problem { extras: &extras, ..template };
+        let (jac, _) = trial.jacobian(&start(&trial)?, false)?;
+        let d = independence(&jac, &which);
+        let (i, &least) = d.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1)).expect("not empty");
+        if least.is_nan() || least >= MIN_INDEPENDENCE {
+            break;
+        }
+        let key = extras[which[i]].key.name();
+        dropped_before.push((
+            key,
+            format!(
+                "at its start value its Jacobian column is nearly collinear with the other fitted quantities' or zero (the part they \
+                 do not explain is {least:.2e} of it)"
+            ),
+        ));
+        extras.remove(which[i]);
+    }
+    let np = nl + extras.len();
+    let problem = Problem { extras: &extras, ..template };
+    let mut beta = start(&problem)?;
     let mut evaluations = 0;
     if !extras.is_empty() {
         let lm = LmProblem { p: &problem, error: RefCell::new(None), evals: RefCell::new(0) };
@@ -245,7 +364,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
         let linear = problem.linear_solve(&beta)?;
         beta.rows_mut(extras.len(), np - extras.len()).copy_from(&linear);
     }
-    let (jac, model) = problem.jacobian(&beta)?;
+    let (jac, model) = problem.jacobian(&beta, true)?;
     let r = &y - &model;
     if !(beta.iter().all(|b| b.is_finite()) && r.norm_squared().is_finite()) {
         return Err(CalibrationError::Unidentifiable {
@@ -314,7 +433,9 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
     let points_used = support.len();
     let inflation: Vec<f64> = filter.taps.iter().map(|v| 1.0 / v.iter().map(|x| x * x).sum::<f64>()).collect();
     let deviation = settle_deviation(&points, &r, options.exclusion.settle_time, &inflation);
-    Ok((Calibration {
+    let which: Vec<usize> = (0..extras.len()).collect();
+    let independence = independence(&jac, &which).into_iter().zip(&extras).map(|(d, e)| (e.key.name(), d)).collect();
+    let calibration = Calibration {
         model: Model::Core,
         rig: None,
         simulations: 0,
@@ -334,6 +455,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
         half_widths: prepared.iter().map(|p| p.half_width).collect(),
         exclusions: prepared.into_iter().map(|p| p.exclusion).collect(),
         warnings,
+        temperatures: Vec::new(),
         inertia: j_used,
         inertia_estimate,
         samples_read: total,
@@ -341,7 +463,8 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool) -> 
         evaluations,
         settle_time: options.exclusion.settle_time,
         series,
-    }, deviation))
+    };
+    Ok(Once { calibration, deviation, independence, dropped: dropped_before })
 }
 
 /// The phase of each fitted point: its record, direction and place in its stroke in bins of
@@ -371,7 +494,8 @@ fn series(prepared: &[Prepared], params: &Params, beta: &DVector<f64>, inertia: 
     prepared
         .iter()
         .map(|p| {
-            let pts: Vec<(f64, f64)> = p.load.iter().copied().zip(p.omega.iter().copied()).collect();
+            let pts: Vec<Operating> =
+                (0..p.load.len()).map(|i| (p.load[i], p.omega[i], p.temperature.as_ref().map(|t| t[i]))).collect();
             let s = shapes(params, &pts, &|i| (p.name.clone(), i))?;
             let inertia_torque: Vec<f64> = p.alpha.iter().map(|a| inertia * a).collect();
             let fitted = s.iter().zip(&inertia_torque).map(|(s, ja)| ja + s.fluid + mu * s.boundary + off).collect();
@@ -444,9 +568,10 @@ impl Filter {
 }
 
 /// The model over the used samples, in the fit coordinates β = [extras…, μ_c, J?, T_0?].
+#[derive(Clone, Copy)]
 struct Problem<'a> {
-    /// Load and speed at the support (every used sample).
-    load_speed: &'a [(f64, f64)],
+    /// Load, speed and temperature at the support (every used sample).
+    load_speed: &'a [Operating],
     /// From the support to the fitted points.
     filter: &'a Filter,
     /// α at the used samples when J is fitted.
@@ -455,7 +580,7 @@ struct Problem<'a> {
     base: Params,
     extras: &'a [Extra],
     offset: bool,
-    ident: &'a dyn Fn(usize) -> (String, usize),
+    ident: &'a (dyn Fn(usize) -> (String, usize) + Sync),
 }
 
 impl Problem<'_> {
@@ -536,9 +661,10 @@ impl Problem<'_> {
             .ok_or_else(|| CalibrationError::Unidentifiable { what: "singular least-squares problem for mu_c".into() })
     }
 
-    /// Jacobian of the model with respect to β (central differences for the extras, exact for
-    /// μ_c, J and T_0), and the model.
-    fn jacobian(&self, beta: &DVector<f64>) -> Result<(DMatrix<f64>, DVector<f64>), CalibrationError> {
+    /// Jacobian of the model with respect to β (central differences for the extras when
+    /// `central`, else forward ones; exact for μ_c, J and T_0), and the model. LM's steps take
+    /// the forward one (half the model evaluations), the intervals the central one.
+    fn jacobian(&self, beta: &DVector<f64>, central: bool) -> Result<(DMatrix<f64>, DVector<f64>), CalibrationError> {
         let s = self.shapes(beta)?;
         let n = s.len();
         let model = self.model_of(&s, beta);
@@ -549,7 +675,7 @@ impl Problem<'_> {
             let (mut bp, mut bm) = (beta.clone(), beta.clone());
             bp[k] += h;
             bm[k] -= h;
-            let d = (self.model(&bp)? - self.model(&bm)?) / (2.0 * h);
+            let d = if central { (self.model(&bp)? - self.model(&bm)?) / (2.0 * h) } else { (self.model(&bp)? - &model) / h };
             j.set_column(k, &d);
         }
         for c in 0..beta.len() - m {
@@ -581,7 +707,7 @@ impl Residuals for LmProblem<'_, '_> {
         }
     }
     fn jacobian_at(&self, beta: &DVector<f64>) -> Option<DMatrix<f64>> {
-        match self.p.jacobian(beta) {
+        match self.p.jacobian(beta, false) {
             Ok((j, _)) => Some(j),
             Err(e) => {
                 self.error.borrow_mut().get_or_insert(e);

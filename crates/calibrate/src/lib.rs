@@ -17,6 +17,10 @@
 //! [`Options::fit`] adds any key of the parameter table, fitted by Levenberg–Marquardt (the
 //! `levenberg-marquardt` crate) in log / logit coordinates from the table's ranges.
 //!
+//! A record at a known lubricant temperature ([`Record::temperature`]) is evaluated by the joint
+//! at that temperature; records at three or more temperatures fit the grease's parameters by
+//! default, each kept only when the records determine it ([`across`]).
+//!
 //! Velocity comes from the angle by a Savitzky–Golay differentiator ([`derivative`]) when the
 //! record has none; the transients the quasi-static model does not describe are left out by a
 //! stated rule ([`exclusion`]) and reported; records longer than a sample budget are
@@ -39,6 +43,7 @@
 //!     angular_velocity: None,
 //!     torque: time.iter().map(|&t| -joint.evaluate(20e3, w(t)).unwrap().signed_torque()).collect(),
 //!     load: vec![20e3; time.len()],
+//!     temperature: None,
 //!     time,
 //! };
 //! let options = Options { inertia: Some(0.0), ..Options::default() };
@@ -59,6 +64,7 @@ pub mod command;
 pub mod lm;
 pub mod options;
 pub mod result;
+pub mod across;
 pub mod prepare;
 pub mod estimates;
 pub mod fit;

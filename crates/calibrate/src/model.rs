@@ -9,6 +9,7 @@
 
 use super::error::CalibrationError;
 use pinjoint::{Joint, Params};
+use rayon::prelude::*;
 
 /// sign(ω) with sign(0) = 0 (no friction direction at rest).
 pub fn sign(w: f64) -> f64 {
@@ -30,25 +31,70 @@ pub struct Shape {
     pub boundary: f64,
 }
 
-/// The shape at every (load, ω) pair, warm-starting each solve from the previous one.
-/// `names`/`rows` identify the sample in an error.
-pub fn shapes(params: &Params, points: &[(f64, f64)], ident: &dyn Fn(usize) -> (String, usize)) -> Result<Vec<Shape>, CalibrationError> {
-    let joint = Joint::new(params)?;
+/// One operating point of a record: load (N), angular velocity (rad/s) and the lubricant
+/// temperature (K) when the record gives it (None: the parameters' `lubricant.temperature`).
+pub type Operating = (f64, f64, Option<f64>);
+
+/// Operating points solved in one sequence (warm-started from each other); the sequences are
+/// solved in parallel (rayon). A fixed length, so that the answers do not depend on the number
+/// of threads.
+pub const CHUNK: usize = 4096;
+
+/// The shape at every operating point, warm-starting each solve from the previous one within
+/// a [`CHUNK`] of points, the chunks in parallel. A point with a temperature is evaluated by
+/// the joint at that temperature ([`Joint::at_temperature`], a few logarithms), made again
+/// only where the temperature changes (once a chunk for a constant one). Each chunk builds its
+/// own joint: the joints [`Joint::at_temperature`] makes share the solve's start table, whose
+/// rows are solved by whichever joint asks first, so that shared between threads the answers
+/// could depend on the threads' timing; a chunk's own table is filled in its own fixed order
+/// (one [`Joint::new`] a chunk, about 4 ms).
+/// `ident` identifies the sample in an error.
+pub fn shapes(params: &Params, points: &[Operating], ident: &(dyn Fn(usize) -> (String, usize) + Sync)) -> Result<Vec<Shape>, CalibrationError> {
+    let chunks = points
+        .par_chunks(CHUNK)
+        .enumerate()
+        .map(|(c, pts)| chunk_shapes(&Joint::new(params)?, params, pts, c * CHUNK, ident))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(chunks.into_iter().flatten().collect())
+}
+
+/// [`shapes`] of one chunk, its first point the `first`-th.
+fn chunk_shapes(
+    joint: &Joint,
+    params: &Params,
+    points: &[Operating],
+    first: usize,
+    ident: &(dyn Fn(usize) -> (String, usize) + Sync),
+) -> Result<Vec<Shape>, CalibrationError> {
     let r = params.geometry.pin_radius;
     let mut guess = None;
-    points
-        .iter()
-        .enumerate()
-        .map(|(i, &(load, w))| {
-            let op = joint.evaluate_from(load, w, guess).map_err(|source| {
-                let (record, row) = ident(i);
-                CalibrationError::Model { record, row, source }
-            })?;
-            guess = op.logit.is_finite().then_some(op.logit);
-            let s = sign(w) * r * load;
-            Ok(Shape { fluid: s * op.fluid_friction_coefficient, boundary: s * op.asperity_load_fraction })
-        })
-        .collect()
+    let mut at: Option<(u64, Joint)> = None;
+    let mut out = Vec::with_capacity(points.len());
+    for (k, &(load, w, temperature)) in points.iter().enumerate() {
+        let i = first + k;
+        let j = match temperature {
+            Some(t) if t.to_bits() != params.lubricant.temperature.to_bits() => {
+                if at.as_ref().is_none_or(|(bits, _)| *bits != t.to_bits()) {
+                    let made = joint.at_temperature(t).map_err(|e| {
+                        let (record, row) = ident(i);
+                        CalibrationError::Temperature { record, row, value: t, why: format!("the model refuses it: {e}") }
+                    })?;
+                    at = Some((t.to_bits(), made));
+                    guess = None;
+                }
+                &at.as_ref().expect("made above").1
+            }
+            _ => joint,
+        };
+        let op = j.evaluate_from(load, w, guess).map_err(|source| {
+            let (record, row) = ident(i);
+            CalibrationError::Model { record, row, source }
+        })?;
+        guess = op.logit.is_finite().then_some(op.logit);
+        let s = sign(w) * r * load;
+        out.push(Shape { fluid: s * op.fluid_friction_coefficient, boundary: s * op.asperity_load_fraction });
+    }
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -80,11 +126,17 @@ mod tests {
     fn shape_reproduces_the_signed_torque() {
         let p = Params::default();
         let j = Joint::new(&p).unwrap();
-        let pts = [(20e3, 2.0), (20e3, -2.0), (40e3, 0.0)];
+        let pts = [(20e3, 2.0, None), (20e3, -2.0, Some(273.15)), (40e3, 0.0, None)];
         let s = shapes(&p, &pts, &|i| ("t".into(), i)).unwrap();
-        for (k, &(load, w)) in pts.iter().enumerate() {
-            // Recorded torque is the actuator's: minus the friction torque on the pin.
-            let t = -j.evaluate(load, w).unwrap().signed_torque();
+        for (k, &(load, w, temp)) in pts.iter().enumerate() {
+            // Recorded torque is the actuator's: minus the friction torque on the pin, at the
+            // point's temperature (a joint built at it, not the shared one's `at_temperature`).
+            let jt = temp.map(|t| {
+                let mut q = p;
+                q.lubricant.temperature = t;
+                Joint::new(&q).unwrap()
+            });
+            let t = -jt.as_ref().unwrap_or(&j).evaluate(load, w).unwrap().signed_torque();
             let m = s[k].fluid + 0.12 * s[k].boundary;
             assert!((t - m).abs() <= 1e-12 * t.abs().max(1.0), "{t} {m}");
         }

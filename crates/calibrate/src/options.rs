@@ -2,7 +2,18 @@
 
 use super::exclusion::ExclusionRule;
 use pinjoint::rig::RigParams;
+use pinjoint::params::spec_by_name;
 use pinjoint::Params;
+
+/// The grease's keys fitted by default across temperature ([`crate::across`]), in the order
+/// they are kept: of two equally poorly determined, the later is dropped.
+pub const GREASE_KEYS: [&str; 5] =
+    ["grease.yield_stress", "grease.consistency", "grease.yield_activation", "grease.consistency_activation", "grease.flow_index"];
+
+/// The default [`Options::across_temperature`]: the [`GREASE_KEYS`] the parameter table has.
+pub fn default_across_temperature() -> Vec<String> {
+    GREASE_KEYS.iter().filter(|k| spec_by_name(k).is_some()).map(|k| (*k).to_string()).collect()
+}
 
 /// Default [`Options::max_simulations`] of the rig fit.
 pub const DEFAULT_MAX_SIMULATIONS: usize = 200;
@@ -30,6 +41,11 @@ pub struct Options {
     pub params: Params,
     /// Parameter keys fitted besides μ_c (`section.key`, as in the parameter file).
     pub fit: Vec<String>,
+    /// Keys fitted by default when `fit` names none besides μ_c and the records are at
+    /// [`crate::across::MIN_DEFAULT_TEMPERATURES`] or more temperatures (quasi-static fit only),
+    /// each dropped with a warning when the records cannot determine it ([`crate::across`]).
+    /// Default: [`default_across_temperature`], the grease's keys.
+    pub across_temperature: Vec<String>,
     /// Rotating inertia J (kg·m²). `None` (the default): J is fitted together with μ_c and the
     /// offset (the torque is linear in it: T = … + J·α), with its interval. `Some(j)`: J is
     /// given, and j·α is subtracted from the recorded torque (0 subtracts nothing).
@@ -66,6 +82,7 @@ impl Default for Options {
         Self {
             params: Params::default(),
             fit: Vec::new(),
+            across_temperature: default_across_temperature(),
             inertia: None,
             fit_offset: true,
             exclusion: ExclusionRule::default(),

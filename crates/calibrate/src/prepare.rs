@@ -6,6 +6,7 @@ use super::error::CalibrationError;
 use super::exclusion::{classify, ExclusionRule, RecordExclusion};
 use super::record::{range_of, Record, MAX_SPEED, MIN_MOTION_SPEED};
 use super::result::Series;
+use pinjoint::Params;
 
 /// The samples needed in a record at the least.
 pub const MIN_SAMPLES: usize = 20;
@@ -30,6 +31,8 @@ pub struct Prepared {
     pub torque: Vec<f64>,
     /// Radial load on the pin (N).
     pub load: Vec<f64>,
+    /// Lubricant temperature (K) at each sample, if the record gives it.
+    pub temperature: Option<Vec<f64>>,
     /// Stroke index of each used sample, None for an excluded one.
     pub stroke: Vec<Option<usize>>,
     /// Time since the sample's settling window began (s).
@@ -64,11 +67,13 @@ impl Prepared {
 /// Irregularity above which a record is reported as stick-slip.
 pub const STICK_SLIP_IRREGULARITY: f64 = 0.1;
 
-/// Check `record`, find its velocity and acceleration, and apply the exclusion rule.
+/// Check `record` (its temperatures inside the model's range for `params`), find its velocity
+/// and acceleration, and apply the exclusion rule.
 #[allow(clippy::neg_cmp_op_on_partial_ord)] // `!(a >= b)` also catches NaN; kept as written
-pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>) -> Result<Prepared, CalibrationError> {
+pub fn prepare(record: &Record, params: &Params, rule: &ExclusionRule, half_width: Option<usize>) -> Result<Prepared, CalibrationError> {
     let name = record.name.clone();
     record.validate()?;
+    check_temperatures(record, params)?;
     let n = record.len();
     if n < MIN_SAMPLES {
         return Err(CalibrationError::TooShort { record: name, samples: n, needed: MIN_SAMPLES, why: "a record must hold a few strokes" });
@@ -124,12 +129,32 @@ pub fn prepare(record: &Record, rule: &ExclusionRule, half_width: Option<usize>)
         alpha_from_angle: record.angular_velocity.is_none() && record.angle.is_some(),
         torque: record.torque.clone(),
         load: record.load.clone(),
+        temperature: record.temperature.clone(),
         stroke: c.stroke,
         since: c.since,
         exclusion: c.summary,
         half_width: k,
         irregularity,
     })
+}
+
+/// Every temperature of `record` must be one the model takes with `params` (its range, and
+/// η0(T) a liquid's): checked at each change of value, so a constant column costs one check.
+pub fn check_temperatures(record: &Record, params: &Params) -> Result<(), CalibrationError> {
+    let Some(t) = &record.temperature else { return Ok(()) };
+    let mut last = f64::NAN;
+    for (row, &x) in t.iter().enumerate() {
+        if x.to_bits() == last.to_bits() {
+            continue;
+        }
+        last = x;
+        let mut p = *params;
+        p.lubricant.temperature = x;
+        if let Err(e) = p.validate() {
+            return Err(CalibrationError::Temperature { record: record.name.clone(), row, value: x, why: format!("the model refuses it: {e}") });
+        }
+    }
+    Ok(())
 }
 
 /// The derivative of the angle must match the given velocity (least-squares ratio within 20 %).

@@ -10,6 +10,9 @@ pub const MAX_ANGLE_RANGE: f64 = std::f64::consts::TAU;
 pub const MAX_SPEED: f64 = 100.0;
 /// The smallest peak speed that counts as motion (rad/s).
 pub const MIN_MOTION_SPEED: f64 = 1e-4;
+/// A temperature below this (K) is taken for degrees Celsius given as kelvin: no pin joint runs
+/// at −123 °C, and every temperature a joint meets in °C (−60 to +150) is below it.
+pub const CELSIUS_SUSPECT: f64 = 150.0;
 
 /// One test record (SI units). `torque` is the recorded actuator torque, positive in the
 /// direction of motion (the convention of `pinjoint cycle`'s `torque` column: T = J·α + sign(ω)·μRP).
@@ -27,6 +30,9 @@ pub struct Record {
     pub torque: Vec<f64>,
     /// Radial load (N) at each sample.
     pub load: Vec<f64>,
+    /// Lubricant temperature (K) at each sample, if known; the model is evaluated at it
+    /// (`pinjoint::Joint::at_temperature`). None: the parameters' `lubricant.temperature`.
+    pub temperature: Option<Vec<f64>>,
 }
 
 impl Record {
@@ -53,6 +59,7 @@ impl Record {
             angular_velocity: self.angular_velocity.as_deref(),
             torque: &self.torque,
             load: &self.load,
+            temperature: self.temperature.as_deref(),
         }
     }
 }
@@ -73,6 +80,8 @@ pub struct Columns<'a> {
     pub torque: &'a [f64],
     /// Radial load (N) at each sample.
     pub load: &'a [f64],
+    /// Lubricant temperature (K) at each sample, if known.
+    pub temperature: Option<&'a [f64]>,
 }
 
 impl Columns<'_> {
@@ -98,6 +107,9 @@ impl Columns<'_> {
         if let Some(w) = self.angular_velocity {
             columns.push(("angular_velocity", "rad/s", w));
         }
+        if let Some(t) = self.temperature {
+            columns.push(("temperature", "K", t));
+        }
         if self.angle.is_none() && self.angular_velocity.is_none() {
             return Err(CalibrationError::NoKinematics { record: rec() });
         }
@@ -118,6 +130,11 @@ impl Columns<'_> {
         if let Some(row) = self.load.iter().position(|&p| p <= 0.0) {
             return Err(CalibrationError::Load { record: rec(), row, value: self.load[row] });
         }
+        if let Some(t) = self.temperature
+            && let Some(row) = t.iter().position(|&x| x < CELSIUS_SUSPECT)
+        {
+            return Err(CalibrationError::Temperature { record: rec(), row, value: t[row], why: celsius_hint(t[row]) });
+        }
         if let Some(a) = self.angle {
             let range = range_of(a);
             if range > MAX_ANGLE_RANGE {
@@ -137,6 +154,18 @@ impl Columns<'_> {
             }
         }
         Ok(())
+    }
+}
+
+/// Why a temperature below [`CELSIUS_SUSPECT`] is refused, with the hint.
+pub fn celsius_hint(value: f64) -> String {
+    if value <= 0.0 {
+        format!("a temperature must be > 0 K (kelvin? as degrees Celsius it would be {} K)", value + 273.15)
+    } else {
+        format!(
+            "below {CELSIUS_SUSPECT} K, colder than any pin joint runs: kelvin? (as degrees Celsius it would be {} K)",
+            value + 273.15
+        )
     }
 }
 

@@ -90,6 +90,8 @@ pub struct Calibration {
     pub exclusions: Vec<RecordExclusion>,
     /// Identifiability and interval warnings.
     pub warnings: Vec<String>,
+    /// Distinct temperatures of the records that give one (K, ascending; empty when none does).
+    pub temperatures: Vec<f64>,
     /// The inertia J used (kg·m²): the fitted one when [`Calibration::inertia_estimate`] is
     /// Some, else the given one (`Options::inertia`).
     pub inertia: f64,

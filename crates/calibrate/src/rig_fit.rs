@@ -28,6 +28,7 @@
 //! [`MAX_RIG_SAMPLES`] samples and [`MAX_RIG_DURATION`] of record time; beyond them the fit is
 //! refused, saying which limit and why.
 
+use super::across::plan;
 use super::command::{fit_sine, fit_sine_near, Command, COMMAND_TOLERANCE};
 use super::coords::{resolve, Extra, Transform};
 use super::error::CalibrationError;
@@ -68,6 +69,8 @@ struct RigRecord {
     tau: Arc<Vec<f64>>,
     /// Load at each sample (N).
     load: Arc<Vec<f64>>,
+    /// Lubricant temperature at each sample (K), when the record gives it.
+    temperature: Option<Arc<Vec<f64>>>,
     command: Command,
     /// Recorded angle (rad).
     angle: Vec<f64>,
@@ -88,17 +91,27 @@ fn interpolate(t: &[f64], v: &[f64], x: f64) -> f64 {
     v[k - 1] + w * (v[k] - v[k - 1])
 }
 
-/// Simulate one record's stroke with `cfg`, sampled at the record's times.
+/// Simulate one record's stroke with `cfg`, sampled at the record's times. With a temperature
+/// column the joint runs at the sample's temperature over the step up to it
+/// ([`RigSim::set_temperature`] where it changes: never for a constant one).
 fn simulate(cfg: &RigConfig, rec: &RigRecord) -> Result<Vec<Sample>, CalibrationError> {
     let cmd = rec.command;
     let (tau, load) = (rec.tau.clone(), rec.load.clone());
     let exc = FnExcitation { load: move |t: f64| interpolate(&tau, &load, t), command: move |t: f64| cmd.at(t), jumps: Vec::new() };
     let err = |source| CalibrationError::Simulation { record: rec.name.clone(), source };
-    let mut sim = RigSim::with_excitation(cfg, Arc::new(exc)).map_err(err)?;
+    let mut cfg = *cfg;
+    if let Some(t) = &rec.temperature {
+        cfg.model.lubricant.temperature = t[0];
+    }
+    let mut sim = RigSim::with_excitation(&cfg, Arc::new(exc)).map_err(err)?;
     let hold = Inputs::default();
     rec.tau
         .iter()
-        .map(|&t| {
+        .enumerate()
+        .map(|(i, &t)| {
+            if let Some(temp) = &rec.temperature {
+                sim.set_temperature(temp[i])?;
+            }
             sim.advance_to(t, &hold)?;
             sim.sample()
         })
@@ -312,7 +325,7 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     let records = &stripped[..];
     // Start: μ_c (and J when it is not given) from the quasi-static fit; the given μ_c and the
     // rig's J if that fails.
-    let core = Options { model: Model::Core, fit: Vec::new(), resamples: 0, ..options.clone() };
+    let core = Options { model: Model::Core, fit: Vec::new(), across_temperature: Vec::new(), resamples: 0, ..options.clone() };
     let core_fit = calibrate_core_with(records, &core, false).ok();
     let mu0 = core_fit.as_ref().map_or(options.params.friction.boundary_friction_coefficient, |c| c.estimates[0].value);
     let (lo_j, hi_j) = match pinjoint::rig::RIG_PARAMS.iter().find(|s| s.key == "inertia").map(|s| s.range) {
@@ -328,9 +341,10 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         (None, None) => options.rig.inertia,
     };
     base.validate()?;
-    let extras = resolve(&options.fit, &options.params, &base.rig, true)?;
+    let plan = plan(records, options, false)?;
+    let extras = resolve(&plan.keys, &options.params, &base.rig, true)?;
     let inertia_estimate = j_from_core.filter(|_| !extras.iter().any(|e| e.key.name() == INERTIA));
-    let prepared = records.iter().map(|r| prepare(r, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
+    let prepared = records.iter().map(|r| prepare(r, &options.params, &options.exclusion, options.half_width)).collect::<Result<Vec<_>, _>>()?;
     let samples: usize = records.iter().map(Record::len).sum();
     let duration: f64 = records.iter().map(|r| r.time[r.len() - 1] - r.time[0]).sum();
     if samples > MAX_RIG_SAMPLES || duration > MAX_RIG_DURATION {
@@ -390,7 +404,15 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         x.windows = vec![Window { start: r.time[0], end: r.time[n_start.max(1) - 1], reason: Reason::StartUp, samples: n_start }];
         (x.low_speed, x.settling, x.start_up, x.used) = (0, 0, n_start, r.len() - n_start);
         exclusions.push(x);
-        recs.push(RigRecord { name: r.name.clone(), tau: Arc::new(tau), load: Arc::new(r.load.clone()), command, angle: angle.clone(), used });
+        recs.push(RigRecord {
+            name: r.name.clone(),
+            tau: Arc::new(tau),
+            load: Arc::new(r.load.clone()),
+            temperature: r.temperature.clone().map(Arc::new),
+            command,
+            angle: angle.clone(),
+            used,
+        });
     }
     let y = DVector::from_iterator(
         clusters.len(),
@@ -502,7 +524,8 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
     let mu = estimates.pop().expect("mu_c follows the extras");
     estimates.insert(0, mu);
     let strokes = clusters.iter().collect::<std::collections::HashSet<_>>().len();
-    let mut warn = warnings(&extras, &jac_t, &model, &u, &estimates, &keys, strokes, options);
+    let mut warn = plan.warnings.clone();
+    warn.extend(warnings(&extras, &jac_t, &model, &u, &estimates, &keys, strokes, options));
     for (k, e) in extras.iter().enumerate() {
         let v = e.key.get(&cfg.model, &cfg.rig);
         if e.start != e.key.get(&options.params, &base.rig) {
@@ -557,6 +580,7 @@ pub fn calibrate_rig(records: &[Record], options: &Options) -> Result<Calibratio
         half_widths: prepared.iter().map(|p| p.half_width).collect(),
         exclusions,
         warnings: warn,
+        temperatures: plan.temperatures,
         inertia: cfg.rig.inertia,
         inertia_estimate,
         samples_read: samples,

@@ -208,7 +208,9 @@ pub fn widen_two_way(u: &mut Uncertainty, j: &DMatrix<f64>, r: &DVector<f64>, cl
     }
     // The meat Σ_g s_g s_gᵀ of the scores summed within each group of `key`.
     let meat = |key: &dyn Fn(usize) -> (usize, usize)| {
-        let mut g: std::collections::HashMap<(usize, usize), DVector<f64>> = std::collections::HashMap::new();
+        // Ordered: a hash map's iteration order (random per map) changed the sum's last bits
+        // from run to run, so the same fit gave different standard errors.
+        let mut g: std::collections::BTreeMap<(usize, usize), DVector<f64>> = std::collections::BTreeMap::new();
         for i in 0..n {
             let s = g.entry(key(i)).or_insert_with(|| DVector::zeros(p));
             for k in 0..p {

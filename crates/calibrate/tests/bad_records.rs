@@ -17,6 +17,7 @@ fn sine(f: f64, n: usize, cycles: usize) -> Record {
         angular_velocity: None,
         torque: w.iter().map(|&w| -joint.evaluate(20e3, w).unwrap().signed_torque()).collect(),
         load: vec![20e3; time.len()],
+        temperature: None,
         time,
     }
 }

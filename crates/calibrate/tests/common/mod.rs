@@ -42,6 +42,7 @@ pub fn record(name: &str, s: &[Sample], noise: f64, quantum: f64, offset: f64, s
         angular_velocity: None,
         torque: s.iter().map(|x| x.torque + offset + noise * normal(&mut rng)).collect(),
         load: s.iter().map(|x| x.load).collect(),
+        temperature: None,
     }
 }
 
@@ -71,7 +72,7 @@ pub fn direct_record(load: f64, f: f64, j: f64, mu_c: f64, noise: f64, offset: f
             j * alpha - joint.evaluate(load, omega).unwrap().signed_torque() + offset + noise * normal(&mut rng)
         })
         .collect();
-    Record { name: format!("direct {load} N {f} Hz J {j}"), angle: Some(angle), angular_velocity: None, torque, load: vec![load; n], time }
+    Record { name: format!("direct {load} N {f} Hz J {j}"), angle: Some(angle), angular_velocity: None, torque, load: vec![load; n], temperature: None, time }
 }
 
 /// A rig record (`pinjoint cycle`'s simulation, breakaway factor 1.3) with inertia `j`, μ_c =

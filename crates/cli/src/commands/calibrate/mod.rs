@@ -43,6 +43,12 @@ at most --fit-csv-rows rows (every k-th fitted sample; 0 for none).\n\n\
 Exclusion rule (reported): samples with |ω| below --speed-fraction × the record's peak speed (95th \
 percentile), and the first --settle-time seconds of each stroke above that speed (breakaway peak, servo \
 ringing) and of the record.\n\n\
+Temperature: --temperature (K; one for all inputs or one per input) or a `temperature` column evaluates each record \
+by the joint at its lubricant temperature. With records at 3 or more temperatures (more than 1 K apart) and no --fit, \
+the grease's parameters are fitted with μ_c (grease.yield_stress, grease.consistency, the activation temperatures \
+grease.yield_activation and grease.consistency_activation, grease.flow_index), each dropped with a warning when the \
+records cannot determine it (its Jacobian column nearly collinear with the others', or its standard error larger than \
+its value); calibrated.toml then predicts the torque at any temperature between them (pinjoint point --temperature).\n\n\
 Intervals: the larger of the iid and the cluster-robust (strokes as clusters) standard error with \
 Student-t quantiles, joined with a bootstrap over strokes when there are at least 20.\n\n\
 --model rig fits through the rig simulation instead (what `pinjoint cycle` runs: the position loop, \
@@ -63,6 +69,7 @@ DIR/residuals.svg.\n\n\
 Examples:\n  \
 pinjoint calibrate --input a.csv --load 20000 --input b.csv --load 40000 --output out/cal\n  \
 pinjoint calibrate --input rig.csv --load 20000 --fit lubricant.viscosity --output out/cal --json\n  \
+pinjoint calibrate --load 20000 --input a.csv --temperature 253.15 --input b.csv --temperature 273.15 --input c.csv --temperature 293.15 --output out/cal\n  \
 pinjoint calibrate --input a.csv --load 20000 --model rig --fit rig.breakaway_factor --output out/cal"
 )]
 /// Arguments of `pinjoint calibrate` (its `--help` text is the `#[command]` attribute's).
@@ -77,6 +84,11 @@ pub struct CalibrateCmd {
     /// one per --input in the same order (`pinjoint cycle` writes no load column)
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub load: Vec<f64>,
+    /// Lubricant temperature in K of inputs without a `temperature` column: one value for every
+    /// input, or one per --input in the same order; each record is evaluated at its temperature.
+    /// Records at 3 or more temperatures fit the grease's parameters by default (unless --fit names keys)
+    #[arg(long, value_name = "K", allow_negative_numbers = true)]
+    pub temperature: Vec<f64>,
     /// Parameter file (TOML): start values and fixed parameters; a [rig] inertia in it is the given J
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
@@ -133,6 +145,19 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
         )));
     }
     let load_of = |i: usize| if cmd.load.len() == 1 { Some(cmd.load[0]) } else { cmd.load.get(i).copied() };
+    if let Some(t) = cmd.temperature.iter().find(|t| !(t.is_finite() && **t >= cal::record::CELSIUS_SUSPECT)) {
+        let why = if t.is_finite() { cal::record::celsius_hint(*t) } else { "it must be a finite number of kelvin".into() };
+        return Err(CliError::Invalid(format!("--temperature = {t} K is invalid: {why}")));
+    }
+    if cmd.temperature.len() > 1 && cmd.temperature.len() != cmd.input.len() {
+        return Err(CliError::Invalid(format!(
+            "{} --temperature values for {} --input files: give one temperature for all, or one per input in order",
+            cmd.temperature.len(),
+            cmd.input.len()
+        )));
+    }
+    let temperature_of =
+        |i: usize| if cmd.temperature.len() == 1 { Some(cmd.temperature[0]) } else { cmd.temperature.get(i).copied() };
     let (config, file_inertia) = match &cmd.params {
         None => (RigConfig::default(), None),
         Some(path) => {
@@ -147,7 +172,7 @@ pub fn run(cmd: &CalibrateCmd) -> Result<()> {
     // Rows of every input (a cheap pass over the bytes), then the block length of the averaging.
     let rows = cmd.input.iter().map(|p| count_rows(p)).collect::<Result<Vec<usize>>>()?;
     let block = cal::decimate::block_length(rows.iter().sum(), cmd.max_samples);
-    let records = cmd.input.iter().enumerate().map(|(i, p)| read_record_blocks(p, load_of(i), block)).collect::<Result<Vec<_>>>()?;
+    let records = cmd.input.iter().enumerate().map(|(i, p)| read_record_blocks(p, load_of(i), temperature_of(i), block)).collect::<Result<Vec<_>>>()?;
     if block > 1 {
         cal::decimate::check_blocks(&records, block).map_err(|e| CliError::Invalid(format!("calibrate: {e}")))?;
     }
@@ -262,14 +287,18 @@ pub fn count_rows(path: &Path) -> Result<usize> {
 }
 
 /// Read one record: the header must name `time`, `torque`, `angle` and/or `angular_velocity`,
-/// and `load` unless `load` is given; every value must be a finite number.
-pub fn read_record(path: &Path, load: Option<f64>) -> Result<Record> {
-    read_record_blocks(path, load, 1)
+/// and `load` unless `load` is given; an optional `temperature` column (K) or `temperature`;
+/// every value must be a finite number.
+pub fn read_record(path: &Path, load: Option<f64>, temperature: Option<f64>) -> Result<Record> {
+    read_record_blocks(path, load, temperature, 1)
 }
+
+/// Largest difference (K) between a `temperature` column and a --temperature given beside it.
+pub const TEMPERATURE_AGREEMENT: f64 = 1.0;
 
 /// [`read_record`], streaming the file and averaging blocks of `block` consecutive rows
 /// ([`pinjoint_calibrate::decimate`]) as it reads: memory holds the averaged record only.
-pub fn read_record_blocks(path: &Path, load: Option<f64>, block: usize) -> Result<Record> {
+pub fn read_record_blocks(path: &Path, load: Option<f64>, temperature: Option<f64>, block: usize) -> Result<Record> {
     let file = path.display().to_string();
     let bad = |line: u64, message: String| CliError::Input { file: file.clone(), line, message };
     let handle = std::fs::File::open(path).map_err(|source| CliError::Read { path: path.to_path_buf(), source })?;
@@ -301,7 +330,11 @@ pub fn read_record_blocks(path: &Path, load: Option<f64>, block: usize) -> Resul
         Some(_) => find("load")?,
         None => Some(need("load", "N", " and no --load was given")?),
     };
+    let itemp = find("temperature")?;
     let mut out = BlockMean::new(&file, block, ia.is_some(), iw.is_some());
+    if itemp.is_some() || temperature.is_some() {
+        out = out.with_temperature();
+    }
     let (mut rows, mut previous) = (0usize, f64::NEG_INFINITY);
     let mut rec = csv::StringRecord::new();
     loop {
@@ -352,9 +385,26 @@ pub fn read_record_blocks(path: &Path, load: Option<f64>, block: usize) -> Resul
         if time <= previous {
             return Err(bad(line, format!("time = {time} s does not increase (the row before has {previous} s)")));
         }
+        let temp = match (itemp, temperature) {
+            (Some(i), given) => {
+                // The column is the record; a --temperature beside it must agree with it.
+                let t = num(i, "temperature", "K")?;
+                if t < cal::record::CELSIUS_SUSPECT {
+                    return Err(bad(line, format!("column temperature = {t} K is invalid: {}", cal::record::celsius_hint(t))));
+                }
+                if let Some(g) = given
+                    && (t - g).abs() > TEMPERATURE_AGREEMENT
+                {
+                    return Err(bad(line, format!("column temperature = {t} K disagrees with --temperature {g} K: drop one")));
+                }
+                t
+            }
+            (None, Some(t)) => t,
+            (None, None) => 0.0,
+        };
         previous = time;
         rows += 1;
-        out.push(time, angle, velocity, torque, p);
+        out.push_temperature(time, angle, velocity, torque, p, temp);
     }
     if rows == 0 {
         return Err(bad(header_line, "no data rows".into()));

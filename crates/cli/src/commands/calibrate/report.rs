@@ -25,6 +25,10 @@ pub fn toml_file(c: &Calibration, inputs: &[String]) -> String {
         head.push_str(&format!("# {} = {} (standard error {:.3e}, 95 % interval [{}, {}])\n", e.key, exact(e.value), e.standard_error, exact(e.ci95.0), exact(e.ci95.1)));
     }
     head.push_str(&format!("# {}\n", inertia_line(c)));
+    if !c.temperatures.is_empty() {
+        let t: Vec<String> = c.temperatures.iter().map(|t| exact(*t)).collect();
+        head.push_str(&format!("# Records at {} K; [lubricant] temperature below is the start file's, not a record's.\n", t.join(", ")));
+    }
     head.push_str(&format!("# rms residual {:.4} N.m over {} samples ({} excluded).\n", c.rms_residual, c.points_used, c.points_excluded));
     match c.rig {
         Some(rig) => head + &RigConfig { model: c.params, rig }.to_toml_string(),
@@ -52,6 +56,7 @@ pub fn report_json(c: &Calibration) -> String {
     if let Some(j) = &c.inertia_estimate {
         out.insert("inertia_estimate".into(), est(j));
     }
+    out.insert("temperatures".into(), json!(c.temperatures));
     out.insert("samples_read".into(), json!(c.samples_read));
     out.insert("block_length".into(), json!(c.block_length));
     out.insert("warnings".into(), json!(c.warnings));
@@ -204,6 +209,13 @@ fn blocks(c: &Calibration, inputs: &[String], csv_stride: Option<usize>) -> Vec<
     b.push(Para(format!("Inputs: {}.", inputs.join(", "))));
     b.push(Para(model_text(c)));
     b.push(Para(format!("Inertia: {}.", inertia_line(c))));
+    if !c.temperatures.is_empty() {
+        let t: Vec<String> = c.temperatures.iter().map(|t| exact(*t)).collect();
+        b.push(Para(format!(
+            "Temperatures: the records are at {} K (each evaluated by the joint at its lubricant temperature).",
+            t.join(", ")
+        )));
+    }
     if c.block_length > 1 {
         b.push(Para(format!(
             "Long records: {} samples were read; over the sample budget, every record was averaged in blocks of {} consecutive \
