@@ -186,7 +186,9 @@ impl Evaluator {
     ///
     /// * `Full`: nothing to build; the bound is [`FULL_ERROR_BOUND`].
     /// * `Table`: tabulated and refined until its bound is ≤ `tolerance`
-    ///   ([`FidelityError::TableTooLarge`] if that needs more than [`table::MAX_CELLS`]).
+    ///   (within [`table::MAX_CELLS`]: the cells a grid of that size does not resolve answer
+    ///   with the complete solve, [`FidelityError::TableTooLarge`] if they would be more than
+    ///   [`table::MAX_SOLVED_SHARE`] of the cells).
     /// * `Boundary`: built and measured; its bound is reported even when it exceeds
     ///   `tolerance` (the caller asked for this level: see [`Evaluator::within_tolerance`]).
     /// * `Auto`: boundary if its bound is ≤ `tolerance`, else table if it can meet it,

@@ -187,7 +187,8 @@ impl StribeckTable {
                 check_solves += RANDOM_CHECKS;
             }
             let mut measured = report.max();
-            let next = (!(SAFETY * measured <= tolerance)).then(|| next_grid(nx, nz, ex, ez, measured, target));
+            let met = SAFETY * measured <= tolerance; // false for NaN
+            let next = (!met).then(|| next_grid(nx, nz, ex, ez, measured, target));
             if let Some((mx, mz)) = next.filter(|&(mx, mz)| mx * mz > MAX_CELLS) {
                 // The budget is reached: the cells the grid does not resolve (a kink of the
                 // map along a curve), and their neighbours, answer with the complete solve;
@@ -524,7 +525,8 @@ fn unresolved(errors: &[f64], nx: usize, nz: usize, target: f64) -> Vec<bool> {
     let mut solve = vec![false; nx * nz];
     for i in 0..nx {
         for j in 0..nz {
-            if !(errors[i * nz + j] <= target) {
+            let resolved = errors[i * nz + j] <= target; // false for NaN
+            if !resolved {
                 for a in i.saturating_sub(1)..(i + 2).min(nx) {
                     for b in j.saturating_sub(1)..(j + 2).min(nz) {
                         solve[a * nz + b] = true;
