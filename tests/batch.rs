@@ -408,8 +408,10 @@ fn models_are_shared_and_released() {
 /// nothing.
 #[test]
 fn a_level_that_cannot_be_built_names_the_joint() {
-    let mut thick = Params::default();
-    thick.lubricant.viscosity *= 4.0; // its film passes the clearance at the table's ghost nodes
+    // The paper's model (no journal bearing to bound the film) with a thicker oil: its film
+    // passes the clearance at the table's ghost nodes, so no table can be built for it.
+    let mut thick = Params::paper();
+    thick.lubricant.viscosity *= 4.0;
     let s = Settings { fidelity: Fidelity::Table, tolerance: 1e-3, envelope: Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap() };
     let mut b = PreslidingBatch::new(3, BatchParams::PerJoint(vec![Params::default(), thick, thick]), Presliding::default(), s).unwrap();
     let (a, w, l) = (vec![0.0; 3], vec![0.5; 3], vec![2e4; 3]);

@@ -280,3 +280,42 @@ fn the_supplied_film_is_the_smaller_below_the_reference_temperature() {
         }
     }
 }
+
+/// The cold day's kinks (the supplied film taking the fluid's share to zero at a finite speed,
+/// the journal weight reaching one) are not resolved by a table of 65536 cells at 1e-3: the
+/// cells they cross answer with the complete solve, the rest meet the bound on fresh points.
+#[test]
+fn unresolved_table_cells_answer_with_the_complete_solve() {
+    use pinjoint::fidelity::{Level, Source};
+    let p = at(262.9);
+    let full = Joint::new(&p).unwrap();
+    let env = Envelope::new(10.0, 100.0, 0.0714, 7.14).unwrap();
+    let mut ev = Evaluator::new(&p, Fidelity::Table, 1e-3, env).unwrap();
+    assert_eq!(ev.chosen(), Level::Table);
+    let t = ev.table().unwrap().clone();
+    let n = t.stats().load_cells * t.stats().speed_cells;
+    assert!(t.solved_cells() > 0 && (t.solved_cells() as f64) <= 0.25 * n as f64, "{} of {n}", t.solved_cells());
+    let bound = ev.error_bound();
+    assert!(bound <= 1e-3);
+    let (mut solved, mut worst) = (0, 0.0f64);
+    for a in 0..=150 {
+        for b in 0..=150 {
+            // Off the check points' lattice (steps of 1/151 and 1/152).
+            let (load, omega) = env.at_log_fraction((f64::from(a) + 0.37) / 151.0, (f64::from(b) + 0.61) / 152.0);
+            let e = ev.evaluate(load, omega).unwrap();
+            let r = full.evaluate(load, omega).unwrap();
+            assert_ne!(e.source, Source::Fallback, "inside the envelope: {load} N, {omega} rad/s");
+            if t.solved_at(load, omega) {
+                solved += 1;
+                assert_eq!(e.source, Source::Full);
+                assert!((e.torque / r.torque - 1.0).abs() <= 1e-9, "{load} N {omega} rad/s");
+            } else {
+                assert_eq!(e.source, Source::Table);
+                worst = worst.max((e.torque / r.torque - 1.0).abs());
+            }
+        }
+    }
+    assert!(solved > 0);
+    assert!(worst <= bound, "interpolated cells: {worst} against bound {bound}");
+    assert_eq!(ev.fallbacks(), 0);
+}

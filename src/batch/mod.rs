@@ -57,6 +57,8 @@ use cache::Models;
 use step::{Action, JointState};
 
 /// The parameter sets of a batch.
+// One value per batch, built once: the size of the shared set costs nothing worth a Box.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub enum BatchParams {
     /// One set for every joint (the default).

@@ -12,9 +12,12 @@
 //! hold over a declared [`Envelope`] of loads and speed magnitudes; outside it they answer
 //! with the complete solve ([`Source::Fallback`]), flag the first such call
 //! ([`Evaluation::first_fallback`]) and count them ([`Evaluator::fallbacks`]), so the
-//! caller can say so once in its log (the library does no I/O). ω = 0 (a stuck joint) is
-//! answered by every level with μ = μ_c exactly and the rest film (1-D table in load for
-//! table and boundary).
+//! caller can say so once in its log (the library does no I/O). Inside the envelope, the
+//! few table cells the grid cannot resolve within its budget (a kink of the complete model's
+//! map along a curve) answer with the complete solve ([`Source::Full`],
+//! [`StribeckTable::solved_cells`]). ω = 0 (a stuck joint) is answered by every level with
+//! the rest state: μ = μ_c plus the grease's yield torque over R·P (μ_c exactly for the
+//! paper's model) and the rest film (1-D table in load for table and boundary).
 //!
 //! ```
 //! use pinjoint::Params;
@@ -25,7 +28,14 @@
 //! assert!(ev.error_bound() <= 1e-4);
 //! let e = ev.evaluate(20e3, 0.2).unwrap();
 //! assert!((e.friction_coefficient - 0.1183).abs() < 1e-3);
-//! assert_eq!(ev.evaluate(20e3, 0.0).unwrap().friction_coefficient, 0.12); // rest: μ_c exactly
+//! // Rest (ω = 0): the breakaway torque, μ_c·R·P plus the grease's yield torque.
+//! let joint = pinjoint::Joint::new(&Params::default()).unwrap();
+//! let rest = ev.evaluate(20e3, 0.0).unwrap();
+//! assert!((rest.torque / joint.boundary_torque(20e3) - 1.0).abs() < 1e-12);
+//! assert!(rest.friction_coefficient > 0.12);
+//! // The paper's model has no grease yield: μ = μ_c exactly at rest.
+//! let mut paper = Evaluator::new(&Params::paper(), Fidelity::Table, 1e-4, env).unwrap();
+//! assert_eq!(paper.evaluate(20e3, 0.0).unwrap().friction_coefficient, 0.12);
 //! ```
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
@@ -176,7 +186,9 @@ impl Evaluator {
     ///
     /// * `Full`: nothing to build; the bound is [`FULL_ERROR_BOUND`].
     /// * `Table`: tabulated and refined until its bound is ≤ `tolerance`
-    ///   ([`FidelityError::TableTooLarge`] if that needs more than [`table::MAX_CELLS`]).
+    ///   (within [`table::MAX_CELLS`]: the cells a grid of that size does not resolve answer
+    ///   with the complete solve, [`FidelityError::TableTooLarge`] if they would be more than
+    ///   [`table::MAX_SOLVED_SHARE`] of the cells).
     /// * `Boundary`: built and measured; its bound is reported even when it exceeds
     ///   `tolerance` (the caller asked for this level: see [`Evaluator::within_tolerance`]).
     /// * `Auto`: boundary if its bound is ≤ `tolerance`, else table if it can meet it,
@@ -277,6 +289,9 @@ impl Evaluator {
             None => {
                 // Also the path of invalid inputs (NaN fails every comparison): the solver rejects them.
                 let op = self.solver.evaluate(load, omega)?;
+                if self.solved_inside(load, omega) {
+                    return Ok(Evaluation::from_point(&op, Source::Full));
+                }
                 let mut e = Evaluation::from_point(&op, Source::Fallback);
                 e.first_fallback = self.fallbacks == 0;
                 self.fallbacks += 1;
@@ -285,9 +300,16 @@ impl Evaluator {
         }
     }
 
+    /// Whether (load, |ω|) lies in a table cell answered by the complete solve
+    /// ([`StribeckTable::solved_cells`]): inside the envelope, not a fallback.
+    fn solved_inside(&self, load: f64, omega: f64) -> bool {
+        matches!(&self.backend, Backend::Table(t) if t.solved_at(load.abs(), omega))
+    }
+
     /// The table or boundary level's answer when (`load`, `omega`) is inside the envelope (or
     /// `omega` = 0 inside the load range) and its film within [`Joint::max_film_thickness`];
-    /// `None` otherwise and always for `full`. Takes `&self`
+    /// `None` otherwise (also in a table's cells answered by the complete solve) and always
+    /// for `full`. Takes `&self`
     /// and keeps no history, so a caller with its own warm-started solve (the rig) can use the
     /// level and do the fallback itself.
     #[inline]
@@ -326,6 +348,9 @@ impl Evaluator {
             }
             None => {
                 let op = self.solver.evaluate(load, omega)?;
+                if self.solved_inside(load, omega) {
+                    return Ok((op, Source::Full, false));
+                }
                 let first = self.fallbacks == 0;
                 self.fallbacks += 1;
                 Ok((op, Source::Fallback, first))

@@ -122,11 +122,16 @@ impl<'a> Dynamics<'a> {
         if load == 0.0 {
             return None;
         }
+        // Inside the envelope, a table cell answered by the complete solve is no fallback.
+        let mut fallback = false;
         if let Some(level) = self.level {
             if let Some(e) = level.evaluate_inside(load, speed) {
                 return Some(e);
             }
-            self.fallbacks.set(self.fallbacks.get() + 1);
+            fallback = !level.table().is_some_and(|t| t.solved_at(load.abs(), speed));
+            if fallback {
+                self.fallbacks.set(self.fallbacks.get() + 1);
+            }
         }
         let g = self.guess.get();
         self.solves.set(self.solves.get() + 1);
@@ -143,7 +148,7 @@ impl<'a> Dynamics<'a> {
         if op.logit.is_finite() {
             self.guess.set(op.logit);
         }
-        let source = if self.level.is_some() { Source::Fallback } else { Source::Full };
+        let source = if fallback { Source::Fallback } else { Source::Full };
         Some(Evaluation::from_point(&op, source))
     }
 
