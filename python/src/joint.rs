@@ -12,8 +12,18 @@ use pyo3::types::PyDict;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// Numeric result columns of the one result record ([`pinjoint::record::COLUMNS`]).
-const NUMERIC: usize = 11;
+/// Numeric result columns of the one result record ([`pinjoint::record::COLUMNS`]), counted
+/// from it (a new column of the record cannot leave this count behind).
+const NUMERIC: usize = {
+    let (mut n, mut i) = (0, 0);
+    while i < COLUMNS.len() {
+        if matches!(COLUMNS[i].value, Value::Number(_)) {
+            n += 1;
+        }
+        i += 1;
+    }
+    n
+};
 
 /// The numeric result columns (every column of the record but `regime` and `validity`), in
 /// record order.
