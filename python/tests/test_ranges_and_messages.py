@@ -22,13 +22,18 @@ def invariants(p: pinjoint.Params, out: dict, load: float, slack: float) -> None
     lub = d["lubricant"]
     r, rb = d["geometry"]["pin_radius"], d["geometry"]["bush_radius"]
     mu, pm = float(out["friction_coefficient"]), float(out["mean_pressure"])
-    mu_max = mu_c + (lub["limiting_shear_stress"] + lub["limiting_shear_stress_slope"] * pm) / pm
+    # The complete model adds the lubricant's torque in the clearance (zero with model.paper):
+    # the contact's part of mu keeps the paper's bound.
+    clearance = float(out["clearance_torque"])
+    assert clearance >= 0.0
+    # The journal's pressure-flow torque adds at most (c/2)·P, i.e. c/(2R) to mu.
+    mu_max = mu_c + (lub["limiting_shear_stress"] + lub["limiting_shear_stress_slope"] * pm) / pm + (rb - r) / (2 * r)
     for k in pinjoint.RESULT_COLUMNS:
         if k not in ("regime", "validity"):  # the two named (string) columns
             assert np.isfinite(out[k]), (k, out)
     assert str(out["validity"]) in pinjoint.VALIDITIES, out["validity"]
-    assert 0 <= mu <= mu_max * (1 + slack), (mu, mu_max)
-    assert abs(float(out["torque"])) <= mu_max * (1 + slack) * r * abs(load) * (1 + 1e-12)
+    assert 0 <= mu <= (mu_max + clearance / (r * abs(load))) * (1 + slack) * (1 + 1e-12), (mu, mu_max, clearance)
+    assert abs(float(out["torque"])) <= (mu_max * r * abs(load) + clearance) * (1 + slack) * (1 + 1e-12)
     for k in ("fluid_load_fraction", "asperity_load_fraction"):
         assert -slack <= float(out[k]) <= 1 + slack, out[k]
     h = float(out["film_thickness"])
@@ -53,6 +58,9 @@ def ends(rng: str):
 def corner_sets():
     """Each parameter at each end of its declared range, one at a time."""
     for row in pinjoint.param_table():
+        if row["name"] in ("model.paper", "grease.enabled"):  # the two switches (bools)
+            yield from ((row["name"], b) for b in (False, True))
+            continue
         for v in ends(row["range"]):
             yield row["name"], v
 

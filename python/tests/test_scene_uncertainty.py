@@ -123,7 +123,8 @@ def test_the_study_is_reproducible_and_equal_on_a_local_cluster(tmp_path, monkey
         assert a == (tmp_path / "b" / name).read_bytes(), name
         assert a == (tmp_path / "dask" / name).read_bytes(), name
     rows = (tmp_path / "a" / "samples.csv").read_text().splitlines()
-    assert len(rows) == 201 and rows[0].startswith("index,friction.boundary_friction_coefficient,time_to_lock")
+    # The sampled keys (mu_c and the grease's scatter), then the scene's answers.
+    assert len(rows) == 201 and rows[0].startswith("index,friction.boundary_friction_coefficient,") and ",time_to_lock" in rows[0]
     assert (tmp_path / "a" / "scene_uncertainty.png").stat().st_size > 10_000
     summary = (tmp_path / "a" / "summary.txt").read_text()
     assert "Locked by the end time: 100.00 %" in summary
