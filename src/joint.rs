@@ -363,7 +363,7 @@ impl Joint {
                 None => Complete::new(params, lub.viscosity)?,
             };
             // τ_y(T) and K(T) by their Arrhenius laws: exp(E/R·(1/T − 1/T_ref)) overflows for an
-            // activation temperature far beyond a grease's (e.g. E_y/R = 1.1e6 K at 233 K from
+            // activation temperature far beyond a grease's (e.g. E_y/R = 1.13e6 K at 233 K from
             // 293 K: exp(993)); refused here, naming it, rather than as an infinite torque later.
             let (g, rh) = (&params.grease, &complete.rheology);
             for (name, activation, value) in

@@ -108,8 +108,8 @@ pub fn calibrate_core_with(records: &[Record], options: &Options, filter_given: 
     let first = loop {
         let once = match calibrate_once(records, &o, filter_given, &screened) {
             Ok(x) => x,
-            // The default keys made the fit fail (no convergence, a step outside the model's
-            // domain, a singular problem): fitted without them, each named. An error of the
+            // The default keys made the fit fail (no convergence, a Jacobian outside the model's
+            // domain, a singular problem; a trial step outside it is only a rejected step): fitted without them, each named. An error of the
             // records themselves comes back from the fit without them.
             Err(e) if !screened.is_empty() => {
                 let why = format!("the fit with the default keys across temperature failed ({e})");
