@@ -362,6 +362,25 @@ impl Joint {
                 Some(c) => c.at_temperature(params, lub.viscosity),
                 None => Complete::new(params, lub.viscosity)?,
             };
+            // τ_y(T) and K(T) by their Arrhenius laws: exp(E/R·(1/T − 1/T_ref)) overflows for an
+            // activation temperature far beyond a grease's (e.g. E_y/R = 1.13e6 K at 233 K from
+            // 293 K: exp(993)); refused here, naming it, rather than as an infinite torque later.
+            let (g, rh) = (&params.grease, &complete.rheology);
+            for (name, activation, value) in
+                [("grease.yield_activation", g.yield_activation, rh.yield_stress), ("grease.consistency_activation", g.consistency_activation, rh.consistency)]
+            {
+                if !value.is_finite() {
+                    return Err(ParamError::OutOfRange {
+                        name: name.into(),
+                        value: activation,
+                        unit: "K",
+                        range: format!(
+                            "such that the grease's Arrhenius law stays finite at T = {} K from T_ref = {} K (here {value:e})",
+                            params.lubricant.temperature, params.lubricant.reference_temperature
+                        ),
+                    });
+                }
+            }
             self.complete = Some(complete);
             // The cold supply: the reference film scaled by the replenishment ratio (below
             // T_ref only; crate::cold_supply). Its start is the reference's at the same speed.

@@ -108,8 +108,8 @@ pub fn calibrate_core_with(records: &[Record], options: &Options, filter_given: 
     let first = loop {
         let once = match calibrate_once(records, &o, filter_given, &screened) {
             Ok(x) => x,
-            // The default keys made the fit fail (no convergence, a step outside the model's
-            // domain, a singular problem): fitted without them, each named. An error of the
+            // The default keys made the fit fail (no convergence, a Jacobian outside the model's
+            // domain, a singular problem; a trial step outside it is only a rejected step): fitted without them, each named. An error of the
             // records themselves comes back from the fit without them.
             Err(e) if !screened.is_empty() => {
                 let why = format!("the fit with the default keys across temperature failed ({e})");
@@ -350,7 +350,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
     let mut beta = start(&problem)?;
     let mut evaluations = 0;
     if !extras.is_empty() {
-        let lm = LmProblem { p: &problem, error: RefCell::new(None), evals: RefCell::new(0) };
+        let lm = LmProblem { p: &problem, error: RefCell::new(None), evals: RefCell::new(0), outside: 1e3 * y.amax().max(1.0) };
         let (found, report) = LevenbergMarquardt::new().with_patience(200).minimize(Adapter { fit: &lm, beta: beta.clone() });
         if !report.termination.was_successful() {
             // A model error met on the way is the likelier cause; else LM's own reason.
@@ -692,6 +692,9 @@ struct LmProblem<'a, 'b> {
     p: &'a Problem<'b>,
     error: RefCell<Option<CalibrationError>>,
     evals: RefCell<usize>,
+    /// Residual given to a trial step outside the model's domain (1e3 × the largest |torque|,
+    /// as the rig fit's).
+    outside: f64,
 }
 
 impl Residuals for LmProblem<'_, '_> {
@@ -700,9 +703,12 @@ impl Residuals for LmProblem<'_, '_> {
         match self.p.model(beta) {
             Ok(m) => Some(m - self.p.y),
             Err(e) => {
-                // A step outside the model's domain ends LM; keep the first error to report.
+                // A trial step outside the model's domain (a wild step in ln or logit
+                // coordinates: exp overflow, a film past the clearance) is a rejected step, not
+                // a failed fit: a residual far above any the model gives makes LM shorten the
+                // step. The first such error is kept, reported if the fit still fails.
                 self.error.borrow_mut().get_or_insert(e);
-                None
+                Some(DVector::from_element(self.p.y.len(), self.outside))
             }
         }
     }
@@ -710,7 +716,8 @@ impl Residuals for LmProblem<'_, '_> {
         match self.p.jacobian(beta, false) {
             Ok((j, _)) => Some(j),
             Err(e) => {
-                self.error.borrow_mut().get_or_insert(e);
+                // This ends LM (an accepted point's neighbourhood): its error is the one to report.
+                *self.error.borrow_mut() = Some(e);
                 None
             }
         }

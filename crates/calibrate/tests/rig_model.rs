@@ -1,10 +1,14 @@
 //! The fit through the rig simulation (`Model::Rig`): synthetic rig records with known μ_c,
 //! breakaway factor and servo time constant, torque noise, an offset and a 17-bit encoder, are
-//! recovered within their 95 % intervals; bad uses give clear errors; the work is bounded.
+//! recovered within their 95 % intervals (all three on the paper's model; on the complete model
+//! μ_c with the rig's constants given: fitting them is not yet reliable there, see
+//! docs/calibration.md); bad uses give clear errors; the work is bounded.
 //! Records are kept short (3–4 cycles, 500 samples a cycle): each evaluation simulates them all.
 
 mod common;
 use common::*;
+use pinjoint::rig::{run_cycles, RigConfig};
+use pinjoint::Params;
 use pinjoint_calibrate::{calibrate, CalibrationError, Model, Options, Record, MU_C};
 
 const MU: f64 = 0.105;
@@ -19,16 +23,33 @@ fn within(e: &pinjoint_calibrate::Estimate, truth: f64) {
     assert!(e.ci95.0 <= truth && truth <= e.ci95.1, "{} = {} ci95 {:?}, truth {truth}", e.key, e.value, e.ci95);
 }
 
+/// Rig records at 20 and 40 kN, 1 Hz, 3 cycles of 500 samples, μ_c = [`MU`], breakaway factor
+/// `kb`, servo time constant `tau`, 0.5 N·m of noise, a 0.3 N·m offset, a 17-bit encoder; the
+/// joint's model `model` (the paper's or the complete one).
+fn servo_records(model: Params, kb: f64, tau: f64) -> Vec<Record> {
+    [20e3, 40e3]
+        .iter()
+        .enumerate()
+        .map(|(k, &p)| {
+            let mut cfg = RigConfig { model, ..RigConfig::default() };
+            cfg.model.friction.boundary_friction_coefficient = MU;
+            (cfg.rig.load, cfg.rig.frequency, cfg.rig.breakaway_factor, cfg.rig.servo_time_constant) = (p, 1.0, kb, tau);
+            record(&format!("{p} N"), &run_cycles(&cfg, 3.0, 500).expect("rig runs"), 0.5, ENCODER, 0.3, 21 + k as u64)
+        })
+        .collect()
+}
+
+/// The fitting machinery on the paper's model (`[model] paper = true`), where k_b and τ_s are
+/// found together from their defaults. On the complete model the same fit ends in a local
+/// minimum (k_b = 1.50, rms 29.4 N·m: docs/calibration.md, "The fit is local"); what it does
+/// there is checked by [`complete_model_recovers_mu_c_with_the_rig_constants_given`].
 #[test]
 fn recovers_mu_c_breakaway_and_servo_lag_with_noise_and_quantisation() {
     let (kb, tau) = (1.3, 0.004);
-    let records: Vec<Record> = [20e3, 40e3]
-        .iter()
-        .enumerate()
-        .map(|(k, &p)| record(&format!("{p} N"), &rig_run_servo(p, 1.0, MU, kb, tau, 3, 500), 0.5, ENCODER, 0.3, 21 + k as u64))
-        .collect();
+    let records = servo_records(Params::paper(), kb, tau);
     // k_b starts from its default 1 (the fit scans it), τ_s from its default 3 ms.
-    let c = calibrate(&records, &rig_options(&["rig.breakaway_factor", "rig.servo_time_constant"])).expect("fits");
+    let options = Options { params: Params::paper(), ..rig_options(&["rig.breakaway_factor", "rig.servo_time_constant"]) };
+    let c = calibrate(&records, &options).expect("fits");
     for e in c.estimates.iter().chain(c.offset.iter()) {
         println!("{} = {} (se {:.3e}, ci95 {:?}, start {})", e.key, e.value, e.standard_error, e.ci95, e.initial);
     }
@@ -53,6 +74,29 @@ fn recovers_mu_c_breakaway_and_servo_lag_with_noise_and_quantisation() {
     for m in &c.commands {
         assert!((m.frequency - 1.0).abs() < 1e-5 && (m.amplitude() - 40f64.to_radians()).abs() < 1e-3, "{m:?}");
     }
+}
+
+/// The rig fit on the complete model (the default), k_b and τ_s given (the truth): μ_c and
+/// the offset recovered, each interval holding the truth, the residual the noise (the rig fit's
+/// simulation reproduces the complete model's records). Fitting k_b too is not yet reliable on
+/// the complete model (docs/calibration.md, "Validation of the rig fit").
+#[test]
+fn complete_model_recovers_mu_c_with_the_rig_constants_given() {
+    let (kb, tau) = (1.3, 0.004);
+    let records = servo_records(Params::default(), kb, tau);
+    let mut options = rig_options(&[]);
+    (options.rig.breakaway_factor, options.rig.servo_time_constant) = (kb, tau);
+    let c = calibrate(&records, &options).expect("fits");
+    for e in c.estimates.iter().chain(c.offset.iter()) {
+        println!("{} = {} (se {:.3e}, ci95 {:?}, start {})", e.key, e.value, e.standard_error, e.ci95, e.initial);
+    }
+    println!("rms {:.4} N.m, {} simulations; {:?}", c.rms_residual, c.simulations, c.warnings);
+    let keys: Vec<&str> = c.estimates.iter().map(|e| e.key.as_str()).collect();
+    assert_eq!(keys, [MU_C]);
+    within(&c.estimates[0], MU);
+    assert!((c.estimates[0].value - MU).abs() < 1e-4);
+    within(c.offset.as_ref().unwrap(), 0.3);
+    assert!(c.rms_residual < 0.55, "{}", c.rms_residual);
 }
 
 #[test]
