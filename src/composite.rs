@@ -89,6 +89,37 @@ pub struct Complete {
     /// the line contact's, the reference temperature's scaled by the ratio.
     ln_supply: f64,
     ln_eta_shift: f64,
+    /// ln S (the η shift included) at and below which w = 0 for certain
+    /// ([`no_journal_below`]); −∞ if the table has no such range.
+    ln_s_no_journal: f64,
+    /// The Sommerfeld number at and below which [`Complete::weight_of_sommerfeld`] is 0:
+    /// e^(ln_s_no_journal − ln_eta_shift).
+    s_no_journal: f64,
+}
+
+/// The ln S below which the journal's weight is 0, with a margin: where ρ = 1 − ε(S) ≤ ρ_0
+/// ([`journal_weight`]), found by bisection on the table (ε falls monotonically as S grows,
+/// the table's spline is monotone and the logistic too), moved down by 0.05 in ln S so that
+/// rounding never decides; −∞ where even the table's low end has w > 0. Computing w there
+/// (a spline, a logistic, a logarithm) gives exactly 0, so a caller may answer 0 without it:
+/// the hot path of mixed and boundary lubrication, where the film is thin.
+fn no_journal_below(journal: &JournalTable) -> f64 {
+    let rho = |x: f64| 1.0 - journal.eccentricity(x).0;
+    // S from e^-60 (ε → 1) to e^20 (ε → 0): wider than any table (ln S of the finite bearing's
+    // solutions spans about −12 to 6), beyond it both ends extrapolate monotonically.
+    let (mut lo, mut hi) = (-60.0, 20.0);
+    if !(rho(lo) <= RHO_0) || rho(hi) <= RHO_0 {
+        return f64::NEG_INFINITY;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if rho(mid) <= RHO_0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo - 0.05
 }
 
 /// The grease's yield torque at rest as a function of the load alone, for the fidelity
@@ -182,7 +213,10 @@ impl Complete {
             rheology: rheology(params, base_viscosity),
             ln_supply: 0.0,
             ln_eta_shift: 0.0,
+            ln_s_no_journal: f64::NEG_INFINITY,
+            s_no_journal: 0.0,
         };
+        complete.ln_s_no_journal = no_journal_below(&complete.journal);
         complete.set_supply(params, base_viscosity);
         Ok(complete)
     }
@@ -194,6 +228,7 @@ impl Complete {
             Some(r) => (self.ln_supply, self.ln_eta_shift) = (r, ln_ref - ln_eta),
             None => (self.ln_supply, self.ln_eta_shift) = (0.0, 0.0),
         }
+        self.s_no_journal = (self.ln_s_no_journal - self.ln_eta_shift).exp();
     }
 
     /// These terms at another temperature: the same journal table, the clearance's lubricant
@@ -211,11 +246,21 @@ impl Complete {
     /// film is too (non-increasing as T falls, at every load share).
     #[inline]
     pub fn weight(&self, ln_sommerfeld: f64) -> f64 {
-        if ln_sommerfeld == f64::NEG_INFINITY {
+        if ln_sommerfeld == f64::NEG_INFINITY || ln_sommerfeld + self.ln_eta_shift <= self.ln_s_no_journal {
             return 0.0;
         }
         let (e, _) = self.journal.eccentricity(ln_sommerfeld + self.ln_eta_shift);
         journal_weight(1.0 - e)
+    }
+
+    /// [`Complete::weight`] at S = `sommerfeld` (> 0), bit for bit, without the logarithm where
+    /// S is below the journal's range (w = 0 there: the thin films of mixed lubrication).
+    #[inline]
+    pub fn weight_of_sommerfeld(&self, sommerfeld: f64) -> f64 {
+        if sommerfeld <= self.s_no_journal {
+            return 0.0;
+        }
+        self.weight(sommerfeld.ln())
     }
 
     /// The journal's film for the solve, `None` where w = 0 (the paper's film alone): with the
@@ -316,5 +361,40 @@ mod tests {
         assert_eq!(journal_weight(1.0), 1.0);
         let mid = journal_weight((RHO_0 * RHO_1).sqrt());
         assert!((mid - 0.5).abs() < 1e-12, "{mid}");
+    }
+
+    /// The weight without the shortcut: the spline, the logistic and ρ's smoothstep.
+    fn weight_by_the_table(c: &Complete, ln_s: f64) -> f64 {
+        if ln_s == f64::NEG_INFINITY {
+            return 0.0;
+        }
+        journal_weight(1.0 - c.journal.eccentricity(ln_s + c.ln_eta_shift).0)
+    }
+
+    /// The shortcut where w = 0 ([`no_journal_below`]) answers exactly what the table does, on
+    /// a fine sweep through the threshold and far below it, at temperatures above and below
+    /// T_ref (the cold supply's η shift), for two bush proportions; and it is no vacuous cut:
+    /// the weight turns positive within a few tenths of ln S above it.
+    #[test]
+    fn the_zero_weight_shortcut_is_the_table_bit_for_bit() {
+        for (length, t) in [(0.056, 293.15), (0.056, 233.15), (0.056, 373.15), (0.02, 250.0)] {
+            let mut p = Params::default();
+            p.geometry.bush_length = length;
+            p.lubricant.temperature = t;
+            let eta = crate::viscosity::at_temperature(&p.lubricant).viscosity;
+            let c = Complete::new(&p, eta).unwrap();
+            assert!(c.ln_s_no_journal.is_finite(), "{length} {t}");
+            let first_positive = (0..4000).map(|k| c.ln_s_no_journal - c.ln_eta_shift + f64::from(k) * 1e-3).find(|&x| c.weight(x) > 0.0).unwrap();
+            assert!(first_positive - (c.ln_s_no_journal - c.ln_eta_shift) < 0.5, "{length} {t}: {first_positive}");
+            for k in -20_000..20_000 {
+                let x = c.ln_s_no_journal - c.ln_eta_shift + f64::from(k) * 1e-4;
+                assert_eq!(c.weight(x).to_bits(), weight_by_the_table(&c, x).to_bits(), "{length} {t} ln S {x}");
+                let s = x.exp();
+                assert_eq!(c.weight_of_sommerfeld(s).to_bits(), c.weight(s.ln()).to_bits(), "{length} {t} S {s}");
+            }
+            for x in [-1e3, -60.0, -30.0, f64::NEG_INFINITY, f64::NAN, 50.0, f64::INFINITY] {
+                assert_eq!(c.weight(x).to_bits(), weight_by_the_table(&c, x).to_bits(), "{x}");
+            }
+        }
     }
 }

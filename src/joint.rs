@@ -466,7 +466,7 @@ impl Joint {
     /// point alone ([`crate::composite`]); 0 at rest and for the paper's model.
     pub fn journal_weight(&self, load: f64, omega: f64) -> f64 {
         match &self.complete {
-            Some(c) if omega != 0.0 && omega.is_finite() => c.weight(self.sommerfeld_at(load.abs() / self.projected_area, omega).ln()),
+            Some(c) if omega != 0.0 && omega.is_finite() => c.weight_of_sommerfeld(self.sommerfeld_at(load.abs() / self.projected_area, omega)),
             _ => 0.0,
         }
     }

@@ -11,6 +11,7 @@
 //! standard allows getters, `fmi2SetFMUstate`, `fmi2Reset` and `fmi2FreeInstance`.
 
 use super::logging::{Category, Logger};
+use super::lookup::Lookup;
 use crate::error::{CallError, NotSettable, OutputBound, VariableName};
 use super::model::Model;
 use super::snapshot::Snapshot;
@@ -51,6 +52,9 @@ pub struct Instance {
     /// The continuous states as (state index, derivative index), from
     /// [`ModelInfo::continuous_states`] (computed once: Model Exchange reads it every step).
     states: Vec<(usize, usize)>,
+    /// The variable of each value reference and the outputs (computed once: every get, set
+    /// and step reads them).
+    lookup: Lookup,
     /// Instantiated through the FMI 3.0 functions (type rules and messages of FMI 3.0).
     pub fmi3: bool,
 }
@@ -72,6 +76,7 @@ impl Instance {
             outputs_current: false,
             interface: Interface::CoSimulation,
             states: info.continuous_states(),
+            lookup: Lookup::new(info),
             fmi3: false,
         }
     }
@@ -104,7 +109,7 @@ impl Instance {
     }
 
     fn lookup(&self, vr: u32) -> Result<usize, CallError> {
-        self.info.index_of(vr).ok_or(CallError::UnknownValueReference { vr, model: self.info.model_name })
+        self.lookup.index_of(vr).ok_or_else(|| CallError::UnknownValueReference { vr, model: self.info.model_name })
     }
 
     fn describe(&self, i: usize) -> VariableName {
@@ -144,17 +149,28 @@ impl Instance {
     /// `fmi2SetReal`/`Integer`/`Boolean` (values as f64, Booleans as 0.0/1.0): all
     /// values are checked before any is stored.
     pub fn set_values(&mut self, kind: Kind, vrs: &[u32], values: &[f64]) -> CallResult {
-        let mut idx = Vec::with_capacity(vrs.len());
-        for (&vr, &value) in vrs.iter().zip(values) {
+        let n = vrs.len().min(values.len());
+        self.set_values_by(kind, &vrs[..n], |k| Ok(values[k]))
+    }
+
+    /// As [`Instance::set_values`], the k-th value given by `value(k)`, which may refuse it
+    /// (a C value the type cannot hold). Every value is converted, then every variable looked
+    /// up and checked, before any is stored; the values are converted again to be stored
+    /// (cheap), so that no call allocates.
+    pub fn set_values_by(&mut self, kind: Kind, vrs: &[u32], value: impl Fn(usize) -> Result<f64, CallError>) -> CallResult {
+        for k in 0..vrs.len() {
+            value(k)?;
+        }
+        for (k, &vr) in vrs.iter().enumerate() {
             let i = self.lookup_kind(vr, kind)?;
             self.check_settable(i)?;
-            self.model.check_real(i, value)?;
-            idx.push(i);
+            self.model.check_real(i, value(k)?)?;
         }
-        for (&i, &value) in idx.iter().zip(values) {
-            self.model.set_real(i, value);
+        for (k, &vr) in vrs.iter().enumerate() {
+            let i = self.lookup_kind(vr, kind)?;
+            self.model.set_real(i, value(k)?);
         }
-        if !idx.is_empty() {
+        if !vrs.is_empty() {
             self.outputs_current = false;
         }
         Ok(Status::Ok)
@@ -167,11 +183,20 @@ impl Instance {
 
     fn update_outputs(&mut self) -> Result<(), CallError> {
         if !self.outputs_current {
+            self.compute_outputs_unchecked()?;
+            self.check_outputs()?;
+            self.outputs_current = true;
+        }
+        Ok(())
+    }
+
+    /// The model's outputs at its current inputs, if they are not current, not yet checked
+    /// (the caller checks them, [`Instance::check_outputs`], and marks them current).
+    fn compute_outputs_unchecked(&mut self) -> Result<(), CallError> {
+        if !self.outputs_current {
             let r = self.model.compute_outputs();
             self.log_model_message();
             r?;
-            self.check_outputs()?;
-            self.outputs_current = true;
         }
         Ok(())
     }
@@ -182,19 +207,17 @@ impl Instance {
     /// fuzzing, fuzz/README.md) fails the call with a message naming the output,
     /// instead of handing the host a value the interface rules out.
     fn check_outputs(&self) -> Result<(), CallError> {
-        for (i, v) in self.info.variables.iter().enumerate() {
-            if v.causality != Causality::Output {
-                continue;
-            }
-            let x = self.model.get_real(i);
+        for o in self.lookup.outputs() {
+            let x = self.model.get_real(o.index);
             let bound = if !x.is_finite() {
                 Some(OutputBound::NotFinite)
-            } else if let Some(m) = v.min.filter(|m| x < *m) {
+            } else if let Some(m) = o.min.filter(|m| x < *m) {
                 Some(OutputBound::BelowMin(m))
             } else {
-                v.max.filter(|m| x > *m).map(OutputBound::AboveMax)
+                o.max.filter(|m| x > *m).map(OutputBound::AboveMax)
             };
             if let Some(bound) = bound {
+                let v = &self.info.variables[o.index];
                 return Err(CallError::OutputOutOfRange { name: v.name.clone(), value: x, unit: v.unit_text(), bound });
             }
         }
@@ -219,15 +242,24 @@ impl Instance {
     /// `fmi2GetReal`/`Integer`/`Boolean` (values as f64): outputs (and local variables, such
     /// as state derivatives) are brought up to date with the inputs first.
     pub fn get_values(&mut self, kind: Kind, vrs: &[u32], values: &mut [f64]) -> CallResult {
-        let mut idx = Vec::with_capacity(vrs.len());
+        let n = vrs.len().min(values.len());
+        self.get_values_by(kind, &vrs[..n], |k, x| values[k] = x)
+    }
+
+    /// As [`Instance::get_values`], the k-th value handed to `put(k, value)` (after every
+    /// value reference was found: on an error nothing is put). Allocates nothing.
+    pub fn get_values_by(&mut self, kind: Kind, vrs: &[u32], mut put: impl FnMut(usize, f64)) -> CallResult {
+        let mut computed = false;
         for &vr in vrs {
-            idx.push(self.lookup_kind(vr, kind)?);
+            let i = self.lookup_kind(vr, kind)?;
+            computed |= matches!(self.info.variables[i].causality, Causality::Output | Causality::Local);
         }
-        if idx.iter().any(|&i| matches!(self.info.variables[i].causality, Causality::Output | Causality::Local)) {
+        if computed {
             self.update_outputs()?;
         }
-        for (&i, out) in idx.iter().zip(values.iter_mut()) {
-            *out = self.model.get_real(i);
+        for (k, &vr) in vrs.iter().enumerate() {
+            let i = self.lookup_kind(vr, kind)?;
+            put(k, self.model.get_real(i));
         }
         Ok(Status::Ok)
     }
@@ -530,12 +562,19 @@ impl Instance {
         if (t - self.time).abs() > tol {
             return Err(CallError::Discontinuous { t, last: self.time, tol });
         }
-        let stepped = self.update_outputs().and_then(|()| self.model.do_step(t, h).map_err(CallError::Model)).and_then(|_| self.check_outputs());
+        // The outputs at the step's start (the inputs just set) are an intermediate the host
+        // never reads: they are checked once, with the step's end; when the model's step fails,
+        // outputs that were already out of range at the start are the cause named.
+        let stepped = self.compute_outputs_unchecked().and_then(|()| match self.model.do_step(t, h) {
+            Ok(()) => self.check_outputs(),
+            Err(e) => Err(self.check_outputs().err().unwrap_or(CallError::Model(e))),
+        });
         self.log_model_message();
         if let Err(e) = stepped {
             self.state = State::Error;
             return Err(CallError::StepFailed { t, h, source: Box::new(e) });
         }
+        self.outputs_current = true;
         self.time = t + h;
         Ok(Status::Ok)
     }

@@ -19,6 +19,7 @@ pub mod model;
 pub mod bytes;
 pub mod snapshot;
 pub mod variables;
+pub mod lookup;
 pub mod instance;
 pub mod api;
 pub mod xml;

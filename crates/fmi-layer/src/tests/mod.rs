@@ -6,4 +6,5 @@ mod fmi2_states;
 mod fmi3_states;
 mod host;
 mod linear;
+mod lookup;
 mod xml_states;

@@ -194,8 +194,10 @@ impl Model for PinJointModel {
     fn compute_outputs(&mut self) -> ModelResult<()> {
         let (load, omega) = (self.v.load, self.v.omega);
         let (model, delta) = (self.zero_velocity()?, self.delta());
-        let v = self.v;
-        let (out, first_fallback) = outputs(self.evaluator()?, &v, model, delta)?;
+        self.evaluator()?;
+        // Borrow the evaluator and the values apart (no copy of the values on the hot path).
+        let ev = self.evaluator.as_mut().expect("built above");
+        let (out, first_fallback) = outputs(ev, &self.v, model, delta)?;
         if first_fallback {
             let ev = self.evaluator.as_ref().expect("built above");
             self.message = Some(format!(

@@ -49,12 +49,7 @@ pub(crate) unsafe fn get_as<T>(
     check_n_values(nvr, n_values)?;
     // SAFETY: per the contract.
     let (vrs, out) = unsafe { (slice(vr, nvr, arrays.vr)?, slice_mut(values, n_values, arrays.values)?) };
-    let mut vals = vec![0.0; vrs.len()];
-    let status = inst.get_values(kind, vrs, &mut vals)?;
-    for (o, v) in out.iter_mut().zip(vals) {
-        *o = to(v);
-    }
-    Ok(status)
+    inst.get_values_by(kind, vrs, |k, v| out[k] = to(v))
 }
 
 /// Set the values of `kind` from the C array `values`, each converted with `from` (which
@@ -76,8 +71,7 @@ pub(crate) unsafe fn set_as<T: Copy>(
     check_n_values(nvr, n_values)?;
     // SAFETY: per the contract.
     let (vrs, vals) = unsafe { (slice(vr, nvr, arrays.vr)?, slice(values, n_values, arrays.values)?) };
-    let vals: Vec<f64> = vals.iter().map(|&v| from(v)).collect::<Result<_, _>>()?;
-    inst.set_values(kind, vrs, &vals)
+    inst.set_values_by(kind, vrs, |k| from(vals[k]))
 }
 
 /// A getter or setter of `type_name`, a type no model of this layer has: `fmi2OK` for no
