@@ -249,6 +249,23 @@ fn co_simulation_keeps_the_state_internal() {
     unsafe { fmi2FreeInstance(c) };
 }
 
+/// A step at inputs where the outputs are out of range from the start and the model's step
+/// fails names the outputs (the cause), not the model's failure; the instance is in the error
+/// state; a step that the model takes at good inputs checks the outputs at its end.
+#[test]
+fn a_failed_step_names_the_outputs_that_were_out_of_range() {
+    let h = Host::new();
+    let c = h.fmi2(&LINEAR, 1);
+    init(c);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.5, 1), OK);
+    assert_eq!(unsafe { fmi2SetReal(c, &VR_U, 1, &SINGULAR_U) }, OK);
+    assert_eq!(fmi2DoStep(c, 0.5, 0.5, 1), ERROR);
+    assert!(h.last().contains("der(x) = NaN") && !h.last().contains("cannot be taken"), "{}", h.last());
+    assert_eq!(fmi2DoStep(c, 0.5, 0.5, 1), ERROR);
+    assert!(h.last().contains("illegal call sequence"), "{}", h.last());
+    unsafe { fmi2FreeInstance(c) };
+}
+
 #[test]
 fn without_the_capability_directional_derivatives_are_refused() {
     let h = Host::new();

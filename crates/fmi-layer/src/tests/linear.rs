@@ -7,7 +7,8 @@
 //! constant matrix [[-a, b], [c, d]] (rows der(x), y; columns x, u), which the tests compare
 //! with what the layer's directional-derivative functions return. A state or input beyond
 //! ±1e6 is refused, so that a rejected `SetContinuousStates` can be tested; at u = 999 the
-//! derivative is NaN, so that the layer's check of the derivatives can be tested.
+//! derivative is NaN and a Co-Simulation step fails, so that the layer's check of the
+//! derivatives, and which error a failed step names, can be tested.
 
 use crate::fmi2::model::{Model, ModelError, ModelResult};
 use crate::fmi2::variables::{Causality, Initial, Kind, Legal, ModelInfo, Variability, Variable};
@@ -132,8 +133,12 @@ impl Model for Linear {
         Ok(())
     }
     fn do_step(&mut self, _time: f64, step: f64) -> ModelResult<()> {
-        // Exact solution over the step with u held.
+        // Exact solution over the step with u held; at u = 999 the step fails too (a model
+        // whose outputs were already out of range at the step's start).
         let [x, u, _, _, a, b, ..] = self.v;
+        if u == SINGULAR_U {
+            return Err(ModelError::NotFinite("the step cannot be taken at u = 999".into()));
+        }
         let e = (-a * step).exp();
         self.v[X] = x * e + b * u / a * (1.0 - e);
         self.compute_outputs()
