@@ -108,7 +108,8 @@ fn no_journal_below(journal: &JournalTable) -> f64 {
     // S from e^-60 (ε → 1) to e^20 (ε → 0): wider than any table (ln S of the finite bearing's
     // solutions spans about −12 to 6), beyond it both ends extrapolate monotonically.
     let (mut lo, mut hi) = (-60.0, 20.0);
-    if !(rho(lo) <= RHO_0) || rho(hi) <= RHO_0 {
+    let (rho_lo, rho_hi) = (rho(lo), rho(hi));
+    if rho_lo.is_nan() || rho_lo > RHO_0 || rho_hi <= RHO_0 {
         return f64::NEG_INFINITY;
     }
     for _ in 0..60 {

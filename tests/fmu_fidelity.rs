@@ -122,3 +122,75 @@ fn fidelity_parameters_are_checked_and_readable() {
     assert!(h.last().contains("tolerance = 0"), "{}", h.last());
     unsafe { fmi2FreeInstance(c) };
 }
+
+/// What a table or the boundary level leaves of the operating point (Hertz, Sommerfeld, h_min,
+/// the clearance's outputs) is computed when the host reads it: whichever outputs the host
+/// reads, in whatever order, before or after a step, every output is bit for bit what an
+/// instance reading all of them at once gives, and the derived ones are the library's
+/// evaluator's (`Evaluator::evaluate_complete` at the same level), at loads and speeds of
+/// both signs and temperatures from -54 C to +120 C (the journal weight and the clearance
+/// torque away from 0 at the light loads).
+#[test]
+fn outputs_read_one_at_a_time_are_those_read_all_at_once() {
+    let names: Vec<String> = {
+        let md = pinjoint_fmu::pin_joint::INFO.variables.iter();
+        md.filter(|v| v.causality == fmi_layer::fmi2::variables::Causality::Output && v.kind == fmi_layer::fmi2::variables::Kind::Real).map(|v| v.name.clone()).collect()
+    };
+    let derived = pinjoint::fidelity::evaluation::DERIVED_COLUMNS;
+    assert!(derived.iter().filter(|d| names.iter().any(|n| n == *d)).count() >= 8, "{names:?}");
+    let h = Host::new();
+    let mut light = false;
+    for code in [1, 2] {
+        for (k, temperature) in [219.15, 253.15, 293.15, 393.15].into_iter().enumerate() {
+            let sets = [("tolerance", 1e-3), ("temperature", temperature), ("envelope.load_min", 200.0), ("envelope.speed_max", 30.0)];
+            let (all, one) = (ready(&h, code, &sets), ready(&h, code, &sets));
+            let mut params = Params::default();
+            params.lubricant.temperature = temperature;
+            let joint = Joint::new(&params).unwrap();
+            let mut steps = 0u32;
+            for (i, (p, w)) in points().into_iter().enumerate().skip(k).step_by(9) {
+                let (p, w) = (p * 0.05 + 150.0 * (i % 3) as f64, w * 3.0);
+                for c in [all, one] {
+                    assert_eq!(set(c, "load", if i % 4 == 0 { -p } else { p }), OK);
+                    assert_eq!(set(c, "angular_velocity", w), OK);
+                }
+                for phase in 0..2 {
+                    let vrs: Vec<u32> = names.iter().map(|n| vr(n)).collect();
+                    let mut at_once = vec![f64::NAN; names.len()];
+                    assert_eq!(unsafe { fmi2GetReal(all, vrs.as_ptr(), vrs.len(), at_once.as_mut_ptr()) }, OK, "{}", h.last());
+                    // One at a time: the torque first (what a host reads), then the rest backwards.
+                    let mut order: Vec<usize> = (0..names.len()).rev().collect();
+                    order.rotate_left(i % names.len());
+                    let mut singly = vec![f64::NAN; names.len()];
+                    for j in order {
+                        singly[j] = get(one, &names[j]);
+                    }
+                    for (j, n) in names.iter().enumerate() {
+                        assert_eq!(singly[j].to_bits(), at_once[j].to_bits(), "{n} at {p} N, {w} rad/s, {temperature} K, level {code}, phase {phase}");
+                    }
+                    // The derived outputs are the library's functions of the FMU's own load,
+                    // speed, film and fluid share (what Evaluator::evaluate_complete computes).
+                    let g = |n: &str| at_once[names.iter().position(|m| m == n).unwrap()];
+                    let (film, fluid) = (g("film_thickness"), g("fluid_load_fraction"));
+                    let q = joint.load_speed(p, w);
+                    let h_min = joint.min_film(p, w, film, fluid);
+                    let (ct, jw, ecc, yt) = joint.clearance_outputs(p, w, film);
+                    let expect = [("mean_pressure", q.hertz.mean_pressure), ("sommerfeld_number", q.sommerfeld_number), ("min_film_thickness", h_min),
+                        ("min_lambda_ratio", h_min / joint.composite_roughness()), ("clearance_torque", ct), ("journal_weight", jw), ("eccentricity_ratio", ecc), ("grease_yield_torque", yt)];
+                    for (d, x) in expect {
+                        assert!(derived.contains(&d), "{d}");
+                        assert_eq!(g(d).to_bits(), x.to_bits(), "{d} at {p} N, {w} rad/s, {temperature} K, level {code}: {} vs {x}", g(d));
+                    }
+                    light |= jw > 0.0 && ct > 0.0;
+                    for c in [all, one] {
+                        assert_eq!(fmi2DoStep(c, 0.5e-3 * f64::from(steps), 0.5e-3, 1), OK, "{}", h.last());
+                    }
+                    steps += 1;
+                }
+            }
+            unsafe { fmi2FreeInstance(all) };
+            unsafe { fmi2FreeInstance(one) };
+        }
+    }
+    assert!(light, "some points in full film (journal weight and clearance torque > 0)");
+}

@@ -105,37 +105,81 @@ pub(crate) fn regime_from_shares(fluid: f64, asperity: f64) -> Regime {
 /// Complete an [`Evaluation`] into an [`OperatingPoint`]: the Hertz quantities (eq. 6),
 /// Roelands viscosity at p_m (eq. 5) and Sommerfeld number (eq. 20) depend on load and
 /// speed only and come from the core ([`Joint::load_speed`]); h_min from h_c and the fluid
-/// share ([`Joint::min_film`]).
+/// share ([`Joint::min_film`]); the complete model's clearance outputs
+/// ([`Joint::clearance_outputs`]). Exactly [`provisional`] then [`derive()`].
 pub(crate) fn complete(joint: &Joint, e: &Evaluation) -> OperatingPoint {
-    let q = joint.load_speed(e.load, e.angular_velocity);
-    // h_min from h_c and the fluid share exactly as the core does it (crate::min_film).
-    let h_min = joint.min_film(e.load, e.angular_velocity, e.film_thickness, e.fluid_load_fraction);
-    let (clearance_torque, journal_weight, eccentricity_ratio, grease_yield_torque) = joint.clearance_outputs(e.load, e.angular_velocity, e.film_thickness);
+    let mut op = provisional(joint, e);
+    derive(joint, &mut op);
+    op
+}
+
+/// The columns of an [`OperatingPoint`] (names of [`crate::record::COLUMNS`]) that
+/// [`provisional`] leaves NaN and [`derive()`] fills: the quantities that follow from the
+/// evaluation and cost more than it at a table level (a caller that reads only the torque
+/// and μ, such as an FMU stepping in a system simulation, never pays for them).
+pub const DERIVED_COLUMNS: [&str; 11] = [
+    "mean_pressure",
+    "peak_pressure",
+    "contact_half_width",
+    "sommerfeld_number",
+    "contact_viscosity",
+    "min_film_thickness",
+    "min_lambda_ratio",
+    "clearance_torque",
+    "journal_weight",
+    "eccentricity_ratio",
+    "grease_yield_torque",
+];
+
+/// The [`OperatingPoint`] of an [`Evaluation`] with what the evaluation holds (and the
+/// sliding speed and validity, which are immediate); the quantities of
+/// [`DERIVED_COLUMNS`] NaN until [`derive()`] computes them.
+pub fn provisional(joint: &Joint, e: &Evaluation) -> OperatingPoint {
     OperatingPoint {
         load: e.load,
         angular_velocity: e.angular_velocity,
-        sliding_speed: q.sliding_speed,
+        sliding_speed: e.angular_velocity.abs() * joint.params().geometry.pin_radius,
         friction_coefficient: e.friction_coefficient,
         torque: e.torque,
         film_thickness: e.film_thickness,
         lambda_ratio: e.lambda_ratio,
         fluid_load_fraction: e.fluid_load_fraction,
         asperity_load_fraction: e.asperity_load_fraction,
-        mean_pressure: q.hertz.mean_pressure,
-        peak_pressure: q.hertz.peak_pressure,
-        contact_half_width: q.hertz.half_width,
-        sommerfeld_number: q.sommerfeld_number,
-        contact_viscosity: q.contact_viscosity,
+        mean_pressure: f64::NAN,
+        peak_pressure: f64::NAN,
+        contact_half_width: f64::NAN,
+        sommerfeld_number: f64::NAN,
+        contact_viscosity: f64::NAN,
         fluid_friction_coefficient: e.fluid_friction_coefficient,
         asperity_friction_coefficient: e.asperity_friction_coefficient,
         logit: e.logit,
         regime: e.regime,
-        min_film_thickness: h_min,
-        min_lambda_ratio: h_min / joint.composite_roughness(),
+        min_film_thickness: f64::NAN,
+        min_lambda_ratio: f64::NAN,
         validity: joint.validity(e.load, e.angular_velocity),
-        clearance_torque,
-        journal_weight,
-        eccentricity_ratio,
-        grease_yield_torque,
+        clearance_torque: f64::NAN,
+        journal_weight: f64::NAN,
+        eccentricity_ratio: f64::NAN,
+        grease_yield_torque: f64::NAN,
     }
+}
+
+/// Fill the quantities of [`DERIVED_COLUMNS`] of a [`provisional`] operating point from its
+/// load, speed, film and fluid share (bit for bit what [`super::Evaluator::evaluate_complete`] gives).
+pub fn derive(joint: &Joint, op: &mut OperatingPoint) {
+    let q = joint.load_speed(op.load, op.angular_velocity);
+    // h_min from h_c and the fluid share exactly as the core does it (crate::min_film).
+    let h_min = joint.min_film(op.load, op.angular_velocity, op.film_thickness, op.fluid_load_fraction);
+    let (clearance_torque, journal_weight, eccentricity_ratio, grease_yield_torque) = joint.clearance_outputs(op.load, op.angular_velocity, op.film_thickness);
+    op.mean_pressure = q.hertz.mean_pressure;
+    op.peak_pressure = q.hertz.peak_pressure;
+    op.contact_half_width = q.hertz.half_width;
+    op.sommerfeld_number = q.sommerfeld_number;
+    op.contact_viscosity = q.contact_viscosity;
+    op.min_film_thickness = h_min;
+    op.min_lambda_ratio = h_min / joint.composite_roughness();
+    op.clearance_torque = clearance_torque;
+    op.journal_weight = journal_weight;
+    op.eccentricity_ratio = eccentricity_ratio;
+    op.grease_yield_torque = grease_yield_torque;
 }

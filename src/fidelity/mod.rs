@@ -336,26 +336,46 @@ impl Evaluator {
     /// rebuilt from an [`Evaluation`]: every quantity is computed once. Also says whether
     /// this was the first fallback. Same numbers as [`Evaluator::evaluate_point`].
     pub fn evaluate_complete(&mut self, load: f64, omega: f64) -> Result<(OperatingPoint, Source, bool), FidelityError> {
+        let (mut op, derived, source, first) = self.evaluate_deferred(load, omega)?;
+        if !derived {
+            self.derive(&mut op);
+        }
+        Ok((op, source, first))
+    }
+
+    /// As [`Evaluator::evaluate_complete`], but where a table or the boundary level answers,
+    /// the quantities of [`evaluation::DERIVED_COLUMNS`] are left NaN
+    /// ([`evaluation::provisional`]) for [`Evaluator::derive`] to fill when a caller reads them
+    /// (bit for bit what [`Evaluator::evaluate_complete`] gives). Returns (the operating point,
+    /// whether its derived quantities are filled, its source, whether this was the first
+    /// fallback).
+    pub fn evaluate_deferred(&mut self, load: f64, omega: f64) -> Result<(OperatingPoint, bool, Source, bool), FidelityError> {
         let hit = match &self.backend {
             Backend::Table(t) => t.evaluate(load, omega),
             Backend::Boundary(b) => b.evaluate(load, omega),
-            Backend::Full => return Ok((self.solver.evaluate(load, omega)?, Source::Full, false)),
+            Backend::Full => return Ok((self.solver.evaluate(load, omega)?, true, Source::Full, false)),
         };
         match hit {
             Some(e) => {
                 self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega)?;
-                Ok((self.operating_point(&e), e.source, false))
+                Ok((evaluation::provisional(self.solver.joint(), &e), false, e.source, false))
             }
             None => {
                 let op = self.solver.evaluate(load, omega)?;
                 if self.solved_inside(load, omega) {
-                    return Ok((op, Source::Full, false));
+                    return Ok((op, true, Source::Full, false));
                 }
                 let first = self.fallbacks == 0;
                 self.fallbacks += 1;
-                Ok((op, Source::Fallback, first))
+                Ok((op, true, Source::Fallback, first))
             }
         }
+    }
+
+    /// Fill the quantities of [`evaluation::DERIVED_COLUMNS`] of an operating point from
+    /// [`Evaluator::evaluate_deferred`] ([`evaluation::derive()`]).
+    pub fn derive(&self, op: &mut OperatingPoint) {
+        evaluation::derive(self.solver.joint(), op);
     }
 
     /// Complete an evaluation into an [`OperatingPoint`]: Hertz quantities, Roelands

@@ -11,7 +11,7 @@
 //! standard allows getters, `fmi2SetFMUstate`, `fmi2Reset` and `fmi2FreeInstance`.
 
 use super::logging::{Category, Logger};
-use super::lookup::Lookup;
+use super::lookup::{Lookup, OutputCheck};
 use crate::error::{CallError, NotSettable, OutputBound, VariableName};
 use super::model::Model;
 use super::snapshot::Snapshot;
@@ -184,14 +184,15 @@ impl Instance {
     fn update_outputs(&mut self) -> Result<(), CallError> {
         if !self.outputs_current {
             self.compute_outputs_unchecked()?;
-            self.check_outputs()?;
+            self.check_derivatives()?;
             self.outputs_current = true;
         }
         Ok(())
     }
 
     /// The model's outputs at its current inputs, if they are not current, not yet checked
-    /// (the caller checks them, [`Instance::check_outputs`], and marks them current).
+    /// (the caller checks the derivatives, [`Instance::check_derivatives`], and marks them
+    /// current; outputs are checked as they are read).
     fn compute_outputs_unchecked(&mut self) -> Result<(), CallError> {
         if !self.outputs_current {
             let r = self.model.compute_outputs();
@@ -201,27 +202,8 @@ impl Instance {
         Ok(())
     }
 
-    /// Every output is finite and within the min/max its modelDescription declares, and every
-    /// state derivative is finite: a
-    /// model that computes anything else (e.g. a negative film thickness, found by
-    /// fuzzing, fuzz/README.md) fails the call with a message naming the output,
-    /// instead of handing the host a value the interface rules out.
-    fn check_outputs(&self) -> Result<(), CallError> {
-        for o in self.lookup.outputs() {
-            let x = self.model.get_real(o.index);
-            let bound = if !x.is_finite() {
-                Some(OutputBound::NotFinite)
-            } else if let Some(m) = o.min.filter(|m| x < *m) {
-                Some(OutputBound::BelowMin(m))
-            } else {
-                o.max.filter(|m| x > *m).map(OutputBound::AboveMax)
-            };
-            if let Some(bound) = bound {
-                let v = &self.info.variables[o.index];
-                return Err(CallError::OutputOutOfRange { name: v.name.clone(), value: x, unit: v.unit_text(), bound });
-            }
-        }
-        // A state derivative the host's integrator would take must be a number too.
+    /// Every state derivative is finite: the host's integrator would take it.
+    fn check_derivatives(&self) -> Result<(), CallError> {
         for &(_, d) in &self.states {
             let x = self.model.get_real(d);
             if !x.is_finite() {
@@ -230,6 +212,42 @@ impl Instance {
             }
         }
         Ok(())
+    }
+
+    /// An output's value `x` is finite and within the min/max its modelDescription declares:
+    /// a model that computes anything else (e.g. a negative film thickness, found by fuzzing,
+    /// fuzz/README.md) fails the read with a message naming the output, instead of handing
+    /// the host a value the interface rules out. Outputs are checked as the host reads them
+    /// (every value handed over is checked; what is not read is not computed,
+    /// [`Model::prepare_read`]).
+    fn check_output(&self, o: &OutputCheck, x: f64) -> Result<(), CallError> {
+        let bound = if !x.is_finite() {
+            Some(OutputBound::NotFinite)
+        } else if let Some(m) = o.min.filter(|m| x < *m) {
+            Some(OutputBound::BelowMin(m))
+        } else {
+            o.max.filter(|m| x > *m).map(OutputBound::AboveMax)
+        };
+        match bound {
+            Some(bound) => {
+                let v = &self.info.variables[o.index];
+                Err(CallError::OutputOutOfRange { name: v.name.clone(), value: x, unit: v.unit_text(), bound })
+            }
+            None => Ok(()),
+        }
+    }
+
+    /// The first output (in table order) out of range, every output computed: what a failed
+    /// step names as its cause when the outputs already were.
+    fn first_output_out_of_range(&mut self) -> Option<CallError> {
+        for k in 0..self.lookup.outputs().len() {
+            let o = self.lookup.outputs()[k];
+            self.model.prepare_read(o.index);
+            if let Err(e) = self.check_output(&o, self.model.get_real(o.index)) {
+                return Some(e);
+            }
+        }
+        None
     }
 
     /// Log what the model has to say ([`Model::take_message`]) under logEvents.
@@ -256,6 +274,17 @@ impl Instance {
         }
         if computed {
             self.update_outputs()?;
+            // Outputs the model deferred are computed, and every output read is checked,
+            // before any value is put.
+            for &vr in vrs {
+                let i = self.lookup_kind(vr, kind)?;
+                if let Some(&o) = self.lookup.output(i) {
+                    self.model.prepare_read(i);
+                    self.check_output(&o, self.model.get_real(i))?;
+                } else if self.info.variables[i].causality == Causality::Local {
+                    self.model.prepare_read(i);
+                }
+            }
         }
         for (k, &vr) in vrs.iter().enumerate() {
             let i = self.lookup_kind(vr, kind)?;
@@ -563,11 +592,11 @@ impl Instance {
             return Err(CallError::Discontinuous { t, last: self.time, tol });
         }
         // The outputs at the step's start (the inputs just set) are an intermediate the host
-        // never reads: they are checked once, with the step's end; when the model's step fails,
-        // outputs that were already out of range at the start are the cause named.
+        // never reads; the outputs at its end are checked as the host reads them. When the
+        // model's step fails, outputs that were already out of range are the cause named.
         let stepped = self.compute_outputs_unchecked().and_then(|()| match self.model.do_step(t, h) {
-            Ok(()) => self.check_outputs(),
-            Err(e) => Err(self.check_outputs().err().unwrap_or(CallError::Model(e))),
+            Ok(()) => self.check_derivatives(),
+            Err(e) => Err(self.check_derivatives().err().or_else(|| self.first_output_out_of_range()).unwrap_or(CallError::Model(e))),
         });
         self.log_model_message();
         if let Err(e) = stepped {

@@ -1,8 +1,8 @@
 //! What an instance looks up on every call, computed once from the model's variable table
 //! at instantiation: the variable of a value reference (a direct index when the value
 //! references are compact, as they are in this project's models, else sorted pairs and a
-//! binary search; instead of a scan of the table) and the outputs with their bounds (the
-//! check after every step reads these few entries instead of every variable).
+//! binary search; instead of a scan of the table) and the bounds of each output (checked as
+//! the host reads it).
 //!
 //! Measured (callgrind, the PinJoint FMU at boundary fidelity, set 2 inputs, `fmi2DoStep`,
 //! get 2 outputs): the scans cost ~3 400 instructions a step of ~9 000 before this index.
@@ -34,6 +34,8 @@ pub struct Lookup {
     dense: Vec<u32>,
     /// The outputs in table order.
     outputs: Vec<OutputCheck>,
+    /// `output_at[i]`: the position in `outputs` of table index i, if it is an output.
+    output_at: Vec<Option<u32>>,
 }
 
 impl Lookup {
@@ -52,14 +54,18 @@ impl Lookup {
                 dense[vr as usize] = u32::try_from(i + 1).unwrap_or(0);
             }
         }
-        let outputs = info
+        let outputs: Vec<OutputCheck> = info
             .variables
             .iter()
             .enumerate()
             .filter(|(_, v)| v.causality == Causality::Output)
             .map(|(index, v)| OutputCheck { index, min: v.min, max: v.max })
             .collect();
-        Lookup { by_vr, dense, outputs }
+        let mut output_at = vec![None; info.variables.len()];
+        for (k, o) in outputs.iter().enumerate() {
+            output_at[o.index] = u32::try_from(k).ok();
+        }
+        Lookup { by_vr, dense, outputs, output_at }
     }
 
     /// The table index of the variable with value reference `vr`.
@@ -78,5 +84,11 @@ impl Lookup {
     #[inline]
     pub fn outputs(&self) -> &[OutputCheck] {
         &self.outputs
+    }
+
+    /// The output at table index `index`, if it is one.
+    #[inline]
+    pub fn output(&self, index: usize) -> Option<&OutputCheck> {
+        self.output_at.get(index).copied().flatten().map(|k| &self.outputs[k as usize])
     }
 }

@@ -106,8 +106,16 @@ pub trait Model {
 
     /// The current value of variable `index` (Integer and Boolean variables as f64,
     /// a Boolean as 0.0 or 1.0). Outputs are read after
-    /// [`Model::compute_outputs`] has run for the current inputs.
+    /// [`Model::compute_outputs`] has run for the current inputs, and after
+    /// [`Model::prepare_read`] for that output.
     fn get_real(&self, index: usize) -> f64;
+
+    /// The layer is about to read output (or local variable) `index` for the host: a model
+    /// whose [`Model::compute_outputs`] leaves some outputs to be computed when they are read
+    /// (what a host does not read, it does not pay for) computes them now. Default: nothing.
+    fn prepare_read(&mut self, index: usize) {
+        let _ = index;
+    }
 
     /// Check a value before it is stored; the layer calls this for every element of
     /// an `fmi2SetReal` array before storing any, so a rejected call changes nothing.

@@ -266,6 +266,32 @@ fn a_failed_step_names_the_outputs_that_were_out_of_range() {
     unsafe { fmi2FreeInstance(c) };
 }
 
+/// Outputs are checked as the host reads them: a step whose end has an output beyond its
+/// declared maximum succeeds, the read of that output is refused naming it (nothing written),
+/// the other variables read as ever, and the output reads again once it is back in range.
+#[test]
+fn an_output_out_of_range_is_refused_when_read() {
+    let h = Host::new();
+    let c = h.fmi2(&LINEAR_BOUNDED, 1);
+    init(c);
+    let big = 100.0;
+    assert_eq!(unsafe { fmi2SetReal(c, &VR_U, 1, &big) }, OK);
+    assert_eq!(fmi2DoStep(c, 0.0, 0.5, 1), OK);
+    let mut y = [-7.0];
+    assert_eq!(unsafe { fmi2GetReal(c, &VR_Y, 1, y.as_mut_ptr()) }, ERROR);
+    assert!(h.last().contains("output y = ") && h.last().contains(&format!("above its declared maximum {Y_MAX}")), "{}", h.last());
+    assert_eq!(y, [-7.0], "nothing written");
+    let mut both = [-7.0; 2];
+    assert_eq!(unsafe { fmi2GetReal(c, [VR_X, VR_Y].as_ptr(), 2, both.as_mut_ptr()) }, ERROR);
+    assert_eq!(both, [-7.0; 2], "nothing written");
+    let x = real(c, VR_X);
+    // y = c x + d u back within its maximum.
+    let u = (0.5 * Y_MAX - PC * x) / PD;
+    assert_eq!(unsafe { fmi2SetReal(c, &VR_U, 1, &u) }, OK);
+    assert!((real(c, VR_Y) - 0.5 * Y_MAX).abs() < 1e-9);
+    unsafe { fmi2FreeInstance(c) };
+}
+
 #[test]
 fn without_the_capability_directional_derivatives_are_refused() {
     let h = Host::new();

@@ -231,9 +231,18 @@ pub static LINEAR_NO_DD: LazyLock<ModelInfo> = LazyLock::new(|| info("LinearNoDD
 pub static LINEAR_DEFAULT_JACOBIAN: LazyLock<ModelInfo> =
     LazyLock::new(|| info("LinearDefaultJacobian", true, || Box::new(NoJacobian(Linear::new()))));
 
+/// The output y declared at most [`Y_MAX`]: reading it beyond is refused.
+pub static LINEAR_BOUNDED: LazyLock<ModelInfo> = LazyLock::new(|| {
+    let mut info = info("LinearBounded", true, || Box::new(Linear::new()));
+    info.variables[Y].max = Some(Y_MAX);
+    info
+});
+/// The declared maximum of y in [`LINEAR_BOUNDED`].
+pub const Y_MAX: f64 = 100.0;
+
 /// Every model of this file, as a registry.
 pub fn registry() -> Vec<&'static ModelInfo> {
-    vec![&*LINEAR, &*LINEAR_NO_DD, &*LINEAR_DEFAULT_JACOBIAN]
+    vec![&*LINEAR, &*LINEAR_NO_DD, &*LINEAR_DEFAULT_JACOBIAN, &*LINEAR_BOUNDED]
 }
 
 /// The Jacobian expected from the parameters alone: rows (der(x), y), columns (x, u).

@@ -16,6 +16,9 @@ fn agrees_with_a_scan(info: &ModelInfo) {
     for o in l.outputs() {
         assert_eq!((o.min, o.max), (info.variables[o.index].min, info.variables[o.index].max));
     }
+    for i in 0..info.variables.len() + 2 {
+        assert_eq!(l.output(i).map(|o| o.index), outputs.contains(&i).then_some(i), "index {i}");
+    }
 }
 
 #[test]

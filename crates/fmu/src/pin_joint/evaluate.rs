@@ -26,14 +26,24 @@ pub fn operating_point(ev: &mut Evaluator, load: f64, omega: f64) -> ModelResult
 /// `band`: outside it the library's torque exactly, inside it the band-edge torque ramped
 /// linearly. At zero load the joint is unloaded and every output is 0. Also says whether this
 /// call was the first to fall outside the envelope. Every quantity is computed once
-/// ([`Evaluator::evaluate_complete`]); the outputs are checked once, by the FMI layer (finite and
-/// within their declared min/max).
+/// ([`Evaluator::evaluate_complete`]); the FMI layer checks each output as the host reads it
+/// (finite and within its declared min/max).
 pub fn outputs(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta: f64) -> ModelResult<(Outputs, bool)> {
+    let (mut out, first) = outputs_deferred(ev, v, model, delta)?;
+    derive(ev, &mut out);
+    Ok((out, first))
+}
+
+/// As [`outputs`], but where a table or the boundary level answers, the operating point's
+/// derived quantities ([`pinjoint::fidelity::evaluation::DERIVED_COLUMNS`]) are left for
+/// [`derive()`] (`pending`): the torque, μ, film and load shares are there.
+pub fn outputs_deferred(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta: f64) -> ModelResult<(Outputs, bool)> {
     let (load, omega) = (v.load, v.omega);
     if load == 0.0 {
         return Ok((Outputs::default(), false));
     }
-    let (op, mut first) = operating_point(ev, load, omega)?;
+    ev.reset();
+    let (op, derived, _, mut first) = ev.evaluate_deferred(load, omega).map_err(|e| ModelError::failed("", e))?;
     let friction = match model {
         ZeroVelocityModel::Presliding => {
             let law = v.zv.law.at_step(v.step);
@@ -46,5 +56,16 @@ pub fn outputs(ev: &mut Evaluator, v: &Values, model: ZeroVelocityModel, delta: 
             Ok(edge.torque)
         })?,
     };
-    Ok((Outputs { point: Some(op), friction }, first))
+    Ok((Outputs { point: Some(op), pending: !derived, friction }, first))
+}
+
+/// Compute the derived quantities `out` left pending ([`outputs_deferred`]), bit for bit
+/// those of [`Evaluator::evaluate_complete`].
+pub fn derive(ev: &Evaluator, out: &mut Outputs) {
+    if out.pending {
+        if let Some(op) = out.point.as_mut() {
+            ev.derive(op);
+        }
+        out.pending = false;
+    }
 }

@@ -20,6 +20,12 @@ use pinjoint::zero_velocity::ZeroVelocityModel;
 use pinjoint::Joint;
 
 pub use super::evaluate::{operating_point, outputs};
+use super::evaluate::{derive, outputs_deferred};
+
+/// Whether each row of [`TABLE`] reads a quantity the evaluator may leave pending
+/// ([`pinjoint::fidelity::evaluation::DERIVED_COLUMNS`]).
+static DERIVED_ROWS: std::sync::LazyLock<Vec<bool>> =
+    std::sync::LazyLock::new(|| TABLE.rows().iter().map(|r| pinjoint::fidelity::evaluation::DERIVED_COLUMNS.contains(&r.var.name.as_str())).collect());
 
 /// A PinJoint instance: the values of its variables and the evaluator built from them; it
 /// implements the FMI layer's [`Model`].
@@ -129,6 +135,12 @@ impl Model for PinJointModel {
         TABLE.get(&self.v, i)
     }
 
+    fn prepare_read(&mut self, i: usize) {
+        if let Some(ev) = self.evaluator.as_ref().filter(|_| self.v.out.pending && DERIVED_ROWS.get(i).copied().unwrap_or(false)) {
+            derive(ev, &mut self.v.out);
+        }
+    }
+
     fn check_real(&self, i: usize, x: f64) -> ModelResult<()> {
         // Beyond the asperity model's capacity the load is refused here, leaving the
         // instance and its outputs as they were.
@@ -197,7 +209,9 @@ impl Model for PinJointModel {
         self.evaluator()?;
         // Borrow the evaluator and the values apart (no copy of the values on the hot path).
         let ev = self.evaluator.as_mut().expect("built above");
-        let (out, first_fallback) = outputs(ev, &self.v, model, delta)?;
+        // What a table or the boundary level leaves of the operating point (Hertz, Sommerfeld,
+        // h_min, the clearance's outputs) is computed when the host reads it (prepare_read).
+        let (out, first_fallback) = outputs_deferred(ev, &self.v, model, delta)?;
         if first_fallback {
             let ev = self.evaluator.as_ref().expect("built above");
             self.message = Some(format!(

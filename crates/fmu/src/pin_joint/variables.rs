@@ -52,6 +52,10 @@ pub struct Outputs {
     /// The library's operating point at the inputs; `None` at zero load (and before the
     /// first evaluation).
     pub point: Option<OperatingPoint>,
+    /// The quantities of [`pinjoint::fidelity::evaluation::DERIVED_COLUMNS`] in `point` are
+    /// not yet computed (NaN): a table or boundary level answered and no host read asked for
+    /// them yet ([`crate::pin_joint::model`]'s `prepare_read`).
+    pub pending: bool,
     /// The friction outputs: torque on the pin (N·m), the power dissipated (W), the presliding
     /// torque they use and its rate ([`zero_velocity::Friction`]).
     pub friction: Friction,
