@@ -27,6 +27,7 @@
 // Numerical helpers and the parameters (the starved-inlet relation's parameters are a section):
 pub mod fast_math;
 pub mod newton;
+pub mod table_cache;
 pub mod starvation;
 pub mod roelands_temperature;
 // The joint as a journal bearing and the grease in its clearance (issue 28; no parameters):

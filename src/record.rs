@@ -54,31 +54,11 @@ pub const COLUMNS: [Column; 17] = [
     Column { name: "regime", unit: "-", description: "boundary, mixed or full-film (1 % load-share thresholds)", value: Value::Regime },
     Column { name: "min_film_thickness", unit: "m", description: "minimum film h_min (Pan–Hamrock ratio; extension)", value: Value::Number(|o| o.min_film_thickness) },
     Column { name: "min_lambda_ratio", unit: "1", description: "λ from h_min (eq. 21 as printed; extension)", value: Value::Number(|o| o.min_lambda_ratio) },
-    Column {
-        name: "clearance_torque",
-        unit: "N.m",
-        description: "torque of the lubricant in the clearance outside the contact arc, yield part included (complete model; 0 for model.paper)",
-        value: Value::Number(|o| o.clearance_torque),
-    },
-    Column {
-        name: "journal_weight",
-        unit: "1",
-        description: "weight w of the journal bearing in the composite film (0 line contact, 1 full-film journal; complete model)",
-        value: Value::Number(|o| o.journal_weight),
-    },
+    Column { name: "clearance_torque", unit: "N.m", description: "torque of the lubricant in the clearance outside the contact arc, yield part included (complete model; 0 for model.paper)", value: Value::Number(|o| o.clearance_torque) },
+    Column { name: "journal_weight", unit: "1", description: "weight w of the journal bearing in the composite film (0 line contact, 1 full-film journal; complete model)", value: Value::Number(|o| o.journal_weight) },
     Column { name: "eccentricity_ratio", unit: "1", description: "eccentricity ratio of the clearance 1 - h_c/c (clamped to [0, 1))", value: Value::Number(|o| o.eccentricity_ratio) },
-    Column {
-        name: "grease_yield_torque",
-        unit: "N.m",
-        description: "the grease's yield torque, part of the clearance torque and of the torque at rest (complete model)",
-        value: Value::Number(|o| o.grease_yield_torque),
-    },
-    Column {
-        name: "validity",
-        unit: "-",
-        description: "checked, extrapolation or known-wrong: inside the paper's rig conditions or not (crate::validity)",
-        value: Value::Validity,
-    },
+    Column { name: "grease_yield_torque", unit: "N.m", description: "the grease's yield torque, part of the clearance torque and of the torque at rest (complete model)", value: Value::Number(|o| o.grease_yield_torque) },
+    Column { name: "validity", unit: "-", description: "checked, extrapolation or known-wrong: inside the paper's rig conditions or not (crate::validity)", value: Value::Validity },
 ];
 
 /// The inputs of an operating point: the load magnitude and the angular velocity as given.

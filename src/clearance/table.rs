@@ -11,11 +11,11 @@
 //! define C¹ cubic Hermite interpolants (bicubic for L). The nodes come from a composite
 //! rule (8 panels × 12 Gauss–Legendre nodes in χ).
 
-use std::collections::HashMap;
 use std::f64::consts::PI;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::Arc;
 
 use super::integrals::{GAUSS12, MAX_ECCENTRICITY, ln};
+use crate::table_cache::TableCache;
 
 /// Intervals in x.
 const NX: usize = 27;
@@ -25,8 +25,9 @@ const NW: usize = 120;
 const W_MARGIN: f64 = 6.0;
 /// Panels of the composite rule that computes the nodes.
 const PANELS: usize = 8;
-/// Most tables the cache keeps (emptied when full; tables in use live on).
-const CACHE_MAX: usize = 64;
+/// The process-wide cache of tables by flow index: at most 64 (emptied when full; tables in
+/// use live on).
+static CACHE: TableCache<PowerLawTable> = TableCache::new(64);
 
 /// The flow index is outside (0, 1].
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -109,25 +110,11 @@ pub struct PowerLawTable {
     nodes: Vec<[f64; 4]>,
 }
 
-fn cache() -> &'static Mutex<HashMap<u64, Arc<PowerLawTable>>> {
-    static CACHE: OnceLock<Mutex<HashMap<u64, Arc<PowerLawTable>>>> = OnceLock::new();
-    CACHE.get_or_init(|| Mutex::new(HashMap::new()))
-}
-
 impl PowerLawTable {
     /// The table of flow index `n` ∈ (0, 1] from the process-wide cache, built on first use
     /// (tens of milliseconds: `benches/journal.rs`).
     pub fn shared(n: f64) -> Result<Arc<PowerLawTable>, FlowIndexError> {
-        let key = n.to_bits();
-        if let Some(t) = cache().lock().unwrap_or_else(std::sync::PoisonError::into_inner).get(&key) {
-            return Ok(Arc::clone(t));
-        }
-        let table = Arc::new(Self::build(n)?);
-        let mut map = cache().lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        if map.len() >= CACHE_MAX {
-            map.clear();
-        }
-        Ok(Arc::clone(map.entry(key).or_insert(table)))
+        CACHE.get_or_build(n, Self::build)
     }
 
     /// Builds the table of flow index `n` ∈ (0, 1] (not cached; at n = 1 the torque uses the

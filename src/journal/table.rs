@@ -19,12 +19,12 @@
 //! ε = k/S exactly beyond the node ε = 0.004, joined C¹. S → 0: 1 − ε ≈ C·S^a, a the
 //! end slope at ε = 0.996 (between the long bearing's 1 and the short bearing's 1/2).
 
-use std::collections::HashMap;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::Arc;
 
 use super::error::JournalError;
 use super::interp::Monotone;
 use super::reynolds::{Grid, solve};
+use crate::table_cache::TableCache;
 
 /// Number of tabulated eccentricity ratios.
 pub const NODES: usize = 25;
@@ -37,8 +37,9 @@ pub const LD_MIN: f64 = 1.0 / 16.0;
 /// L/D above which the table of L/D = 16 stands for the longer bearing (S(ε) tends to the
 /// infinitely long bearing's as D/L → 0; at L/D = 16 the end effect is of order D/L).
 pub const LD_MAX: f64 = 16.0;
-/// Most tables the process-wide cache keeps (it is emptied when full; tables in use live on).
-const CACHE_MAX: usize = 64;
+/// The process-wide cache of tables by L/D: at most 64 (it is emptied when full; tables in
+/// use live on).
+static CACHE: TableCache<JournalTable> = TableCache::new(64);
 
 /// S(ε), φ(ε) and ε(S) of a finite 360° journal bearing of one L/D (Swift–Stieber cavitation).
 #[derive(Debug, Clone, PartialEq)]
@@ -50,27 +51,11 @@ pub struct JournalTable {
     attitude_of_logit: Monotone,
 }
 
-fn cache() -> &'static Mutex<HashMap<u64, Arc<JournalTable>>> {
-    static CACHE: OnceLock<Mutex<HashMap<u64, Arc<JournalTable>>>> = OnceLock::new();
-    CACHE.get_or_init(|| Mutex::new(HashMap::new()))
-}
-
 impl JournalTable {
     /// The table of `length_to_diameter` (L/D = B/(2R)) from the process-wide cache, built on
     /// first use (a few milliseconds; `benches/journal.rs`).
     pub fn shared(length_to_diameter: f64) -> Result<Arc<JournalTable>, JournalError> {
-        let key = length_to_diameter.to_bits();
-        if let Some(t) = cache().lock().unwrap_or_else(std::sync::PoisonError::into_inner).get(&key) {
-            return Ok(Arc::clone(t));
-        }
-        let table = Arc::new(Self::build(length_to_diameter)?);
-        // A poisoned lock only means another thread panicked while holding it: the map is
-        // still a valid map, so go on with it.
-        let mut map = cache().lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        if map.len() >= CACHE_MAX {
-            map.clear();
-        }
-        Ok(Arc::clone(map.entry(key).or_insert(table)))
+        CACHE.get_or_build(length_to_diameter, Self::build)
     }
 
     /// Builds the table of `length_to_diameter` (not cached): [`NODES`] Reynolds solves on

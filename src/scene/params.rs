@@ -105,6 +105,10 @@ impl FreeFallParams {
     /// at most [`MAX_JOINTS`] pins and 1 to [`MAX_JOINTS`] lock-link pivots; tolerance > 0.
     pub fn validate(&self) -> Result<(), SceneError> {
         let bad = |name: &'static str, value: f64, unit: &'static str, rule: &str| Err(SceneError::Invalid { name, value, unit, rule: rule.into() });
+        // The first of `fields` (name, value, unit) that is not finite or fails `ok`, refused with `rule`.
+        let each = |fields: &[(&'static str, f64, &'static str)], ok: fn(f64) -> bool, rule: &str| {
+            fields.iter().find(|&&(_, v, _)| !(v.is_finite() && ok(v))).map_or(Ok(()), |&(name, v, unit)| bad(name, v, unit, rule))
+        };
         let positive = [
             ("leg_mass", self.leg_mass, "kg"),
             ("cg_distance", self.cg_distance, "m"),
@@ -114,11 +118,7 @@ impl FreeFallParams {
             ("end_time", self.end_time, "s"),
             ("tolerance", self.tolerance, ""),
         ];
-        for (name, v, unit) in positive {
-            if !(v.is_finite() && v > 0.0) {
-                return bad(name, v, unit, "it must be a finite number > 0");
-            }
-        }
+        each(&positive, |v| v > 0.0, "it must be a finite number > 0")?;
         let non_negative = [
             ("gravity", self.gravity, "m/s2"),
             ("damper_linear", self.damper_linear, "N.m.s/rad"),
@@ -126,11 +126,7 @@ impl FreeFallParams {
             ("lock_spring_torque", self.lock_spring_torque, "N.m"),
             ("lock_link_torque", self.lock_link_torque, "N.m"),
         ];
-        for (name, v, unit) in non_negative {
-            if !(v.is_finite() && v >= 0.0) {
-                return bad(name, v, unit, "it must be a finite number >= 0");
-            }
-        }
+        each(&non_negative, |v| v >= 0.0, "it must be a finite number >= 0")?;
         let point_mass = self.leg_mass * self.cg_distance * self.cg_distance;
         if !(self.inertia.is_finite() && self.inertia >= point_mass) {
             return bad("inertia", self.inertia, "kg.m2", &format!("it must be a finite number >= leg_mass * cg_distance^2 = {} kg.m2", crate::fmt::Num(point_mass)));

@@ -154,6 +154,16 @@ class _Fmu:
     def get_reals(self, vrs):
         return (self.fmu.getFloat64 if self.fmi3 else self.fmu.getReal)(vrs)
 
+    def enter_initialization(self, start=0.0):
+        """Initialization mode from the instantiated (or reset) state, starting at `start` s:
+        enterInitializationMode(startTime) in FMI 3, setupExperiment(startTime) then
+        enterInitializationMode() in FMI 2."""
+        if self.fmi3:
+            self.fmu.enterInitializationMode(startTime=start)
+        else:
+            self.fmu.setupExperiment(startTime=start)
+            self.fmu.enterInitializationMode()
+
     def directional(self, unknowns, knowns, seed):
         if not self.provides_directional:
             raise MissingInterface(f"{self.path.name} (FMI {self.md.fmiVersion}) does not provide directional "
@@ -176,15 +186,9 @@ class CoSimJoint(_Fmu):
         from fmpy.fmi3 import FMU3Slave
         kw = dict(guid=self.md.guid, unzipDirectory=self.unzipped, modelIdentifier=self.iface.modelIdentifier,
                   instanceName=instance)
-        if self.fmi3:
-            self.fmu = FMU3Slave(**kw)
-            self.fmu.instantiate()
-            self.fmu.enterInitializationMode(startTime=0.0)
-        else:
-            self.fmu = FMU2Slave(**kw)
-            self.fmu.instantiate()
-            self.fmu.setupExperiment(startTime=0.0)
-            self.fmu.enterInitializationMode()
+        self.fmu = (FMU3Slave if self.fmi3 else FMU2Slave)(**kw)
+        self.fmu.instantiate()
+        self.enter_initialization()
         for name, value in self.start_values.items():
             self.set_value(name, value)
         self.set_reals([self.vr_load], [float(load)])
@@ -204,6 +208,14 @@ class CoSimJoint(_Fmu):
     def do_step(self, t, h):
         self.fmu.doStep(t, h)
 
+    def step(self, t, h, theta, omega, load):
+        """One step of a host that reads the torque before stepping: set the inputs (angle,
+        angular velocity, load), read the torque, doStep(t, h); returns the torque read."""
+        self.set_inputs(theta, omega, load)
+        torque = self.torque()
+        self.do_step(t, h)
+        return torque
+
     def partials(self):
         """(d torque/d angle, d torque/d angular_velocity) from the FMU's directional derivatives."""
         return (self.directional([self.vr_torque], [self.vr_angle], [1.0])[0],
@@ -222,11 +234,7 @@ class MEJoint(_Fmu):
                   instanceName=instance)
         self.fmu = (FMU3Model if self.fmi3 else FMU2Model)(**kw)
         self.fmu.instantiate()
-        if self.fmi3:
-            self.fmu.enterInitializationMode(startTime=0.0)
-        else:
-            self.fmu.setupExperiment(startTime=0.0)
-            self.fmu.enterInitializationMode()
+        self.enter_initialization()
         for name, value in self.start_values.items():
             self.set_value(name, value)
         self.set_reals([self.vr_load], [float(load)])

@@ -67,12 +67,8 @@ def test_an_angle_offset_by_whole_turns_changes_nothing(path):
     reset by whole turns) holds the joint as before: the torque of a held body is unchanged."""
     j = cosim(path)
     try:
-        j.set_inputs(0.0, 0.0, 20 * KN)
-        j.torque()
-        j.do_step(0.0, 1e-3)
-        j.set_inputs(1e-4, 0.0, 20 * KN)
-        t0 = j.torque()
-        j.do_step(1e-3, 1e-3)
+        j.step(0.0, 1e-3, 0.0, 0.0, 20 * KN)
+        t0 = j.step(1e-3, 1e-3, 1e-4, 0.0, 20 * KN)
         for k, t in ((1, 2e-3), (-3, 3e-3), (5, 4e-3)):
             j.set_inputs(1e-4 + 2 * math.pi * k, 0.0, 20 * KN)
             assert abs(j.torque() - t0) < 1e-9 * abs(t0), (k, j.torque(), t0)
@@ -113,16 +109,10 @@ def test_the_first_angle_set_after_initialization_is_the_reference(path):
 def test_reset_makes_the_first_angle_pending_again_and_a_restored_state_keeps_its_reference(path):
     j = cosim(path)
     try:
-        j.set_inputs(1.4, 0.0, 20 * KN)
-        j.torque()
-        j.do_step(0.0, 1e-3)
+        j.step(0.0, 1e-3, 1.4, 0.0, 20 * KN)
         saved = j.fmu.getFMUState() if not j.fmi3 else j.fmu.getFMUState()
         j.fmu.reset()
-        if j.fmi3:
-            j.fmu.enterInitializationMode(startTime=0.0)
-        else:
-            j.fmu.setupExperiment(startTime=0.0)
-            j.fmu.enterInitializationMode()
+        j.enter_initialization()
         j.fmu.exitInitializationMode()
         j.set_inputs(-2.0, 0.0, 20 * KN)
         assert j.torque() == 0.0, "after reset the first angle is the reference again"
@@ -359,9 +349,7 @@ def test_bad_inputs_and_steps_leave_the_presliding_state_as_it_was(path):
     a directional derivative: each refused with an error, the state and torque unchanged."""
     j = cosim(path)
     try:
-        j.set_inputs(0.0, 0.0, 20 * KN)
-        j.torque()
-        j.do_step(0.0, 1e-3)
+        j.step(0.0, 1e-3, 0.0, 0.0, 20 * KN)
         j.set_inputs(5e-4, 0.0, 20 * KN)
         before = j.torque()
         for bad in (math.nan, math.inf, -math.inf):
@@ -398,9 +386,7 @@ def test_temperature_and_load_changes_while_held_do_not_release_or_jerk(path):
             temperature = 293.15 if t < 2.0 else (313.15 if t < 3.5 else 263.15)
             load = 20 * KN if t < 4.5 else 30 * KN
             j.set_reals([vr_temp], [temperature])
-            j.set_inputs(theta, omega, load)
-            tq = j.torque()
-            j.do_step(t, h)
+            tq = j.step(t, h, theta, omega, load)
             angles.append(theta)
             torques.append(tq)
             omega += h * (0.5 * T_s + tq) / J

@@ -28,13 +28,7 @@ const STEP: f64 = 1e-3;
 /// (0.2–2 Hz, 0.05–0.5 rad) under a load of 5–50 kN varying by ±20 %; one joint in ten held at
 /// rest (ω = 0).
 fn frames(n: usize) -> Vec<[Vec<f64>; 3]> {
-    let mut s: u64 = 0x6261_7463_6821;
-    let mut u = move || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut u = crate::rng::uniform(0x6261_7463_6821);
     let joints: Vec<(f64, f64, f64, bool)> = (0..n).map(|_| (0.05 + 0.45 * u(), 0.2 + 1.8 * u(), 5e3 * 10f64.powf(u()), u() < 0.1)).collect();
     (0..FRAMES)
         .map(|k| {

@@ -59,13 +59,7 @@ fn write_record(path: &Path, rows: usize) -> std::io::Result<()> {
     let joint = Joint::new(&p).map_err(std::io::Error::other)?;
     let (a, w) = (40f64.to_radians(), TAU);
     let q = TAU / 131072.0;
-    let mut s: u64 = 0x6361_6c69_6272;
-    let mut uniform = move || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut uniform = crate::rng::uniform(0x6361_6c69_6272);
     let mut f = std::io::BufWriter::with_capacity(1 << 20, std::fs::File::create(path)?);
     writeln!(f, "time,angle,torque")?;
     let mut guess = None;

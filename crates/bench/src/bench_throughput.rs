@@ -55,13 +55,7 @@ pub struct Throughput {
 
 /// Deterministic rows over 5–60 kN and 1e-3–100 rad/s (both signs), log-uniform.
 fn points(n: usize) -> Vec<(f64, f64)> {
-    let mut s: u64 = 0x7377_6565_7031;
-    let mut next = || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = crate::rng::uniform(0x7377_6565_7031);
     (0..n)
         .map(|_| {
             let p = (5e3f64.ln() + (60e3f64 / 5e3).ln() * next()).exp();

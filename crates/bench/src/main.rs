@@ -4,6 +4,7 @@
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 mod alloc_count;
+mod rng;
 mod bench_error;
 mod bench_rig;
 mod bench_throughput;

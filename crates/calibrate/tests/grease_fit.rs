@@ -10,7 +10,7 @@
 mod common;
 use common::*;
 use pinjoint::rig::{run_cycles, RigConfig};
-use pinjoint::{Joint, Params};
+use pinjoint::Params;
 use pinjoint_calibrate::{calibrate, Calibration, Estimate, Options, Record, MU_C};
 
 const MU: f64 = 0.105;
@@ -57,13 +57,6 @@ fn get(p: &Params, key: &str) -> f64 {
 
 fn est<'a>(c: &'a Calibration, key: &str) -> Option<&'a Estimate> {
     c.estimates.iter().find(|e| e.key == key)
-}
-
-/// The recorded (actuator) torque of `p` at (P, ω, T).
-fn torque(p: &Params, load: f64, w: f64, t: f64) -> f64 {
-    let mut q = *p;
-    q.lubricant.temperature = t;
-    -Joint::new(&q).unwrap().evaluate(load, w).unwrap().signed_torque()
 }
 
 #[test]

@@ -11,7 +11,7 @@
 mod common;
 use common::*;
 use pinjoint::rig::{run_cycles, RigConfig};
-use pinjoint::{Joint, Params};
+use pinjoint::Params;
 use pinjoint_calibrate::{calibrate, CalibrationError, Options, Record};
 
 const S0: &str = "lubricant.roelands_temperature_index";
@@ -143,13 +143,6 @@ fn bad_temperatures_are_named_with_value_unit_and_a_hint() {
     r.temperature.as_mut().unwrap().pop();
     let e = calibrate(&[r], &Options::default()).unwrap_err();
     assert!(matches!(e, CalibrationError::Length { column: "temperature", .. }), "{e}");
-}
-
-/// Signed recorded torque of the truth at (P, ω, T): what a quasi-static record holds.
-fn torque(p: &Params, load: f64, w: f64, t: f64) -> f64 {
-    let mut q = *p;
-    q.lubricant.temperature = t;
-    -Joint::new(&q).unwrap().evaluate(load, w).unwrap().signed_torque()
 }
 
 #[test]

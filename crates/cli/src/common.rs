@@ -164,6 +164,25 @@ pub fn csv_io(e: csv::Error) -> std::io::Error {
     }
 }
 
+/// A CSV table into `w`: the `header` record, then one record per row (each field text:
+/// numbers through [`exact`]), with the csv crate's defaults. The one CSV writer of the
+/// commands' whole-file outputs (the figures, `stribeck`, `map`; [`crate::output::write_csv`]
+/// writes one to a file); `sweep` and `cycle` stream theirs record by record.
+pub fn csv_table<H, R>(w: &mut dyn std::io::Write, header: H, rows: impl IntoIterator<Item = R>) -> std::io::Result<()>
+where
+    H: IntoIterator,
+    H::Item: AsRef<[u8]>,
+    R: IntoIterator,
+    R::Item: AsRef<[u8]>,
+{
+    let mut wtr = csv::Writer::from_writer(w);
+    wtr.write_record(header).map_err(csv_io)?;
+    for row in rows {
+        wtr.write_record(row).map_err(csv_io)?;
+    }
+    wtr.flush()
+}
+
 /// A number in CSV: the shortest text that parses back to the same f64 (never rounded).
 pub fn exact(v: f64) -> String {
     super::exact::exact_string(v)

@@ -1,7 +1,7 @@
 //! Operating points along a speed sweep at one load, and their CSV: shared by `stribeck`
 //! (Figure 3) and `map` (Figure 4).
 
-use super::common::{csv_io, exact, result_fields, RAD_S_PER_RPM, RESULT_COLUMNS};
+use super::common::{csv_table, exact, result_fields, RAD_S_PER_RPM, RESULT_COLUMNS};
 use super::error::{CliError, Result};
 use pinjoint::{Joint, OperatingPoint};
 use rayon::prelude::*;
@@ -28,12 +28,6 @@ pub fn curve(joint: &Joint, load: f64, speeds: &[f64]) -> Result<Vec<OperatingPo
 
 /// CSV: load, speed, speed_rpm, then the result columns.
 pub fn points_csv(w: &mut dyn std::io::Write, ops: &[OperatingPoint]) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(["load", "speed", "speed_rpm"].into_iter().chain(RESULT_COLUMNS)).map_err(csv_io)?;
-    for op in ops {
-        let head = [exact(op.load), exact(op.angular_velocity), exact(op.angular_velocity / RAD_S_PER_RPM)];
-        wtr.write_record(head.into_iter().chain(result_fields(op))).map_err(csv_io)?;
-    }
-    wtr.flush()?;
-    Ok(())
+    let rows = ops.iter().map(|op| [op.load, op.angular_velocity, op.angular_velocity / RAD_S_PER_RPM].map(exact).into_iter().chain(result_fields(op)));
+    csv_table(w, ["load", "speed", "speed_rpm"].into_iter().chain(RESULT_COLUMNS), rows)
 }

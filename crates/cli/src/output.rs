@@ -13,6 +13,7 @@
 //!
 //! Standard output tolerates a closed pipe.
 
+use super::common::csv_table;
 use super::error::{CliError, Result};
 use std::fs;
 use std::io::{self, BufWriter, Write};
@@ -136,6 +137,18 @@ pub fn write_atomic(path: &Path, inputs: &[&Path], fill: impl FnOnce(&mut dyn Wr
 /// Write a whole text file by the rules of [`write_atomic`].
 pub fn write_text(path: &Path, inputs: &[&Path], text: &str) -> Result<()> {
     write_atomic(path, inputs, |w| w.write_all(text.as_bytes()))
+}
+
+/// Write a CSV table ([`crate::common::csv_table`]: `header`, then `rows`) to `path` by the
+/// rules of [`write_atomic`].
+pub fn write_csv<H, R>(path: &Path, inputs: &[&Path], header: H, rows: impl IntoIterator<Item = R>) -> Result<()>
+where
+    H: IntoIterator,
+    H::Item: AsRef<[u8]>,
+    R: IntoIterator,
+    R::Item: AsRef<[u8]>,
+{
+    write_atomic(path, inputs, |w| csv_table(w, header, rows))
 }
 
 /// Create the output directory (and its parents) if needed.

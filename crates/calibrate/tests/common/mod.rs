@@ -23,6 +23,14 @@ pub fn rig_run_servo(load: f64, frequency: f64, mu_c: f64, breakaway: f64, servo
     run_cycles(&cfg, cycles as f64, spc).expect("rig runs")
 }
 
+/// The signed recorded (actuator) torque of the joint with parameters `p` at load `load` N,
+/// angular velocity `w` rad/s and lubricant temperature `t` K: what a quasi-static record holds.
+pub fn torque(p: &pinjoint::Params, load: f64, w: f64, t: f64) -> f64 {
+    let mut q = *p;
+    q.lubricant.temperature = t;
+    -pinjoint::Joint::new(&q).unwrap().evaluate(load, w).unwrap().signed_torque()
+}
+
 /// Standard normal deviate (Box–Muller).
 pub fn normal(rng: &mut SplitMix) -> f64 {
     let u1 = rng.uniform() + 0.5 / (1u64 << 53) as f64;

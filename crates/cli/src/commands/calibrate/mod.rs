@@ -131,33 +131,32 @@ pub struct CalibrateCmd {
     pub json: bool,
 }
 
+/// The value of input `i` of a flag given once for every input or once per input in order
+/// (`values`, the flag's values; `inputs`, the number of --input files): `None` where the flag
+/// was not given. Refuses several values that are not one per input, naming the flag (`flag`)
+/// and the quantity (`what`).
+fn per_input<'a>(values: &'a [f64], flag: &str, what: &str, inputs: usize) -> Result<impl Fn(usize) -> Option<f64> + 'a> {
+    if values.len() > 1 && values.len() != inputs {
+        return Err(CliError::Invalid(format!(
+            "{} {flag} values for {inputs} --input files: give one {what} for all, or one per input in order",
+            values.len()
+        )));
+    }
+    Ok(move |i: usize| if values.len() == 1 { Some(values[0]) } else { values.get(i).copied() })
+}
+
 /// Runs `pinjoint calibrate`: reads the recorded cycles, fits μ_c (and any --fit key) and
 /// writes the report. Fails on invalid flags, unreadable records, or a fit that cannot be made.
 pub fn run(cmd: &CalibrateCmd) -> Result<()> {
     if let Some(p) = cmd.load.iter().find(|p| !(p.is_finite() && **p > 0.0)) {
         return Err(CliError::Invalid(format!("--load = {p} N is invalid: it must be a finite number > 0 N")));
     }
-    if cmd.load.len() > 1 && cmd.load.len() != cmd.input.len() {
-        return Err(CliError::Invalid(format!(
-            "{} --load values for {} --input files: give one load for all, or one per input in order",
-            cmd.load.len(),
-            cmd.input.len()
-        )));
-    }
-    let load_of = |i: usize| if cmd.load.len() == 1 { Some(cmd.load[0]) } else { cmd.load.get(i).copied() };
+    let load_of = per_input(&cmd.load, "--load", "load", cmd.input.len())?;
     if let Some(t) = cmd.temperature.iter().find(|t| !(t.is_finite() && **t >= cal::record::CELSIUS_SUSPECT)) {
         let why = if t.is_finite() { cal::record::celsius_hint(*t) } else { "it must be a finite number of kelvin".into() };
         return Err(CliError::Invalid(format!("--temperature = {t} K is invalid: {why}")));
     }
-    if cmd.temperature.len() > 1 && cmd.temperature.len() != cmd.input.len() {
-        return Err(CliError::Invalid(format!(
-            "{} --temperature values for {} --input files: give one temperature for all, or one per input in order",
-            cmd.temperature.len(),
-            cmd.input.len()
-        )));
-    }
-    let temperature_of =
-        |i: usize| if cmd.temperature.len() == 1 { Some(cmd.temperature[0]) } else { cmd.temperature.get(i).copied() };
+    let temperature_of = per_input(&cmd.temperature, "--temperature", "temperature", cmd.input.len())?;
     let (config, file_inertia) = match &cmd.params {
         None => (RigConfig::default(), None),
         Some(path) => {

@@ -12,9 +12,9 @@
 //!                             a function of ω (an ellipse through the origin); presliding gives
 //!                             the elastic line and, past breakaway, the elasto-plastic loop
 
-use crate::common::{csv_io, exact};
+use crate::common::exact;
 use crate::error::Result;
-use crate::output::{output_dir, write_atomic, write_text};
+use crate::output::{output_dir, write_csv, write_text};
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series};
 use pinjoint::zero_velocity::{band, Presliding, PreslidingJoint};
 use pinjoint::{Joint, Params};
@@ -120,24 +120,12 @@ pub fn write(dir: &Path, params: &Params) -> Result<Vec<PathBuf>> {
     let loop_svg = stacked_plot("Friction at rest: a small-amplitude loop of the angle", &[loop_chart], (900, 600))?;
 
     let paths: Vec<PathBuf> = ["at_rest_hold.svg", "at_rest_hold.csv", "at_rest_loop.svg", "at_rest_loop.csv"].iter().map(|f| dir.join(f)).collect();
+    let hold_rows = band_run.iter().zip(&presliding_run).map(|(b, p)| [b.0, b.1, b.2, p.1, p.2].map(exact));
+    let loop_rows = loop_rows.iter().map(|r| [r.0, r.1, r.2, r.3, r.4, r.5].map(exact));
     write_text(&paths[0], &[], &hold_svg)?;
-    write_atomic(&paths[1], &[], |w| {
-        let mut wtr = csv::Writer::from_writer(w);
-        wtr.write_record(["time", "angle_band_deg", "torque_band", "angle_presliding_deg", "torque_presliding"]).map_err(csv_io)?;
-        for (b, p) in band_run.iter().zip(&presliding_run) {
-            wtr.write_record([exact(b.0), exact(b.1), exact(b.2), exact(p.1), exact(p.2)]).map_err(csv_io)?;
-        }
-        wtr.flush()
-    })?;
+    write_csv(&paths[1], &[], ["time", "angle_band_deg", "torque_band", "angle_presliding_deg", "torque_presliding"], hold_rows)?;
     write_text(&paths[2], &[], &loop_svg)?;
-    write_atomic(&paths[3], &[], |w| {
-        let mut wtr = csv::Writer::from_writer(w);
-        wtr.write_record(["amplitude", "time", "angle", "angular_velocity", "torque_presliding", "torque_band"]).map_err(csv_io)?;
-        for r in &loop_rows {
-            wtr.write_record([exact(r.0), exact(r.1), exact(r.2), exact(r.3), exact(r.4), exact(r.5)]).map_err(csv_io)?;
-        }
-        wtr.flush()
-    })?;
+    write_csv(&paths[3], &[], ["amplitude", "time", "angle", "angular_velocity", "torque_presliding", "torque_band"], loop_rows)?;
     Ok(paths)
 }
 

@@ -18,7 +18,7 @@
 //! as not run, with the model's reason in the CSV and the caption: never an error of the command.
 
 use super::index::Entry;
-use crate::common::{csv_io, exact};
+use crate::common::{csv_table, exact};
 use crate::error::Result;
 use crate::numbers::sig;
 use crate::output::{output_dir, write_atomic, write_text};
@@ -78,8 +78,7 @@ fn status(o: &std::result::Result<FreeFallOutcome, String>) -> &'static str {
 
 /// `cold_day.csv`.
 fn summary_csv(w: &mut dyn std::io::Write, rows: &[Row]) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record([
+    let header = [
         "temperature_C",
         "temperature_K",
         "status",
@@ -91,43 +90,40 @@ fn summary_csv(w: &mut dyn std::io::Write, rows: &[Row]) -> std::io::Result<()> 
         "time_to_lock_without_friction",
         "speed_at_lock_without_friction",
         "reason",
-    ])
-    .map_err(csv_io)?;
-    for r in rows {
-        let num = |o: &std::result::Result<FreeFallOutcome, String>, f: fn(&FreeFallOutcome) -> Option<f64>| o.as_ref().ok().and_then(f).map_or_else(String::new, exact);
-        let time = |o: &FreeFallOutcome| Some(o.time_to_lock);
-        let speed = |o: &FreeFallOutcome| o.speed_at_lock;
-        let reason = r.run.as_ref().err().or(r.frictionless.as_ref().err()).cloned().unwrap_or_default();
-        wtr.write_record([
-            exact(r.celsius),
-            exact(kelvin(r.celsius)),
-            status(&r.run).to_string(),
-            num(&r.run, time),
-            num(&r.run, speed),
-            num(&r.run, |o| Some(o.lock_margin)),
-            num(&r.run, |o| Some(o.breakaway_torque)),
-            num(&r.run, |o| Some(o.friction_energy)),
-            num(&r.frictionless, time),
-            num(&r.frictionless, speed),
-            reason,
-        ])
-        .map_err(csv_io)?;
-    }
-    wtr.flush()
+    ];
+    let num = |o: &std::result::Result<FreeFallOutcome, String>, f: fn(&FreeFallOutcome) -> Option<f64>| o.as_ref().ok().and_then(f).map_or_else(String::new, exact);
+    let time = |o: &FreeFallOutcome| Some(o.time_to_lock);
+    let speed = |o: &FreeFallOutcome| o.speed_at_lock;
+    csv_table(
+        w,
+        header,
+        rows.iter().map(|r| {
+            let reason = r.run.as_ref().err().or(r.frictionless.as_ref().err()).cloned().unwrap_or_default();
+            [
+                exact(r.celsius),
+                exact(kelvin(r.celsius)),
+                status(&r.run).to_string(),
+                num(&r.run, time),
+                num(&r.run, speed),
+                num(&r.run, |o| Some(o.lock_margin)),
+                num(&r.run, |o| Some(o.breakaway_torque)),
+                num(&r.run, |o| Some(o.friction_energy)),
+                num(&r.frictionless, time),
+                num(&r.frictionless, speed),
+                reason,
+            ]
+        }),
+    )
 }
 
 /// `cold_day_series.csv`: every [`DECIMATE`]th step of each run with friction, and its last sample.
 fn series_csv(w: &mut dyn std::io::Write, rows: &[Row]) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(["temperature_C", "time", "angle", "angular_velocity", "load", "friction_torque"]).map_err(csv_io)?;
-    for r in rows {
-        if let Ok(o) = &r.run {
-            for s in decimated(o) {
-                wtr.write_record([exact(r.celsius), exact(s.time), exact(s.angle), exact(s.angular_velocity), exact(s.load), exact(s.friction_torque)]).map_err(csv_io)?;
-            }
-        }
-    }
-    wtr.flush()
+    let runs = rows.iter().filter_map(|r| r.run.as_ref().ok().map(|o| (r.celsius, o)));
+    csv_table(
+        w,
+        ["temperature_C", "time", "angle", "angular_velocity", "load", "friction_torque"],
+        runs.flat_map(|(celsius, o)| decimated(o).map(move |s| [celsius, s.time, s.angle, s.angular_velocity, s.load, s.friction_torque].map(exact))),
+    )
 }
 
 /// Every [`DECIMATE`]th sample and the last.

@@ -18,7 +18,7 @@ pub mod starvation;
 pub mod at_rest;
 pub mod cold_day;
 
-use crate::common::{csv_io, exact, lin_space, log_space, readable, PAPER_RPM_RANGE, RAD_S_PER_RPM};
+use crate::common::{csv_table, exact, lin_space, log_space, readable, PAPER_RPM_RANGE, RAD_S_PER_RPM};
 use crate::error::Result;
 use self::claims::claims;
 use self::index::{entries, html, markdown, RunInfo};
@@ -98,8 +98,7 @@ impl CoreSettings {
 /// the load sweep (`stroke_average_vs_load`), with both speed readings of a stroke: the paper's
 /// nominal ω = 2πf and the mean |ω| = 4Af.
 fn core_csv(w: &mut dyn std::io::Write, core: &CoreCurves, pin_radius: f64, amplitude: f64) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record([
+    let header = [
         "curve",
         "frequency",
         "load",
@@ -109,25 +108,19 @@ fn core_csv(w: &mut dyn std::io::Write, core: &CoreCurves, pin_radius: f64, ampl
         "sommerfeld_number_nominal",
         "sommerfeld_number_mean_speed",
         "friction_coefficient",
-    ])
-    .map_err(csv_io)?;
-    let row = |wtr: &mut csv::Writer<&mut dyn std::io::Write>, curve: &str, f: f64, p: f64, s_per: f64, mu: f64| {
+    ];
+    let row = move |curve: &str, f: f64, p: f64, s_per: f64, mu: f64| {
         let (nominal, mean) = (nominal_speed(f), 4.0 * amplitude * f);
         let vals = [f, p, nominal, mean, nominal * pin_radius, s_per * nominal, s_per * mean, mu];
-        wtr.write_record(std::iter::once(curve.to_string()).chain(vals.iter().map(|&v| exact(v)))).map_err(csv_io)
+        std::iter::once(curve.to_string()).chain(vals.map(exact))
     };
-    for ((&p, curve), &s_per) in PAPER_LOADS.iter().zip(&core.curves).zip(&core.s_per_rad_s) {
-        for &(f, mu) in curve {
-            row(&mut wtr, "stroke_average_vs_frequency", f, p, s_per, mu)?;
-        }
-    }
-    for (&f, averages) in PAPER_FREQUENCIES.iter().zip(&core.stroke_averages) {
-        for ((&p, &mu), &s_per) in core.loads.iter().zip(averages).zip(&core.load_s_per_rad_s) {
-            row(&mut wtr, "stroke_average_vs_load", f, p, s_per, mu)?;
-        }
-    }
-    wtr.flush()?;
-    Ok(())
+    let by_frequency = PAPER_LOADS.iter().zip(&core.curves).zip(&core.s_per_rad_s).flat_map(|((&p, curve), &s_per)| {
+        curve.iter().map(move |&(f, mu)| row("stroke_average_vs_frequency", f, p, s_per, mu))
+    });
+    let by_load = PAPER_FREQUENCIES.iter().zip(&core.stroke_averages).flat_map(|(&f, averages)| {
+        core.loads.iter().zip(averages).zip(&core.load_s_per_rad_s).map(move |((&p, &mu), &s_per)| row("stroke_average_vs_load", f, p, s_per, mu))
+    });
+    csv_table(w, header, by_frequency.chain(by_load))
 }
 
 fn progress(total: u64) -> ProgressBar {

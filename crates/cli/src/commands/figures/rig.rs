@@ -3,7 +3,7 @@
 //! average, characteristic speeds), and the measures the captions quote (flatness of the
 //! slow stroke, mid-stroke dip, servo oscillation).
 
-use crate::common::{csv_io, exact};
+use crate::common::{csv_table, exact};
 use crate::commands::cycle::simulation::{core_torque, CycleRun, CYCLE_COLUMNS};
 use crate::error::Result;
 use pinjoint::paper::LOADS as PAPER_LOADS;
@@ -201,11 +201,9 @@ pub const AVERAGE_COLUMNS: [&str; 18] = [
 
 /// One row per run: what Figures 8–10 plot and the captions quote.
 pub fn averages_csv(w: &mut dyn std::io::Write, results: &[RigResult]) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(AVERAGE_COLUMNS).map_err(csv_io)?;
-    for r in results {
+    let rows = results.iter().map(|r| {
         let (c, s) = (&r.run.config, &r.shape);
-        let row = [
+        [
             c.rig.frequency,
             c.rig.load,
             c.rig.amplitude,
@@ -224,25 +222,18 @@ pub fn averages_csv(w: &mut dyn std::io::Write, results: &[RigResult]) -> std::i
             s.settled,
             s.tracking_error_deg,
             s.stuck_fraction,
-        ];
-        wtr.write_record(row.iter().map(|&v| exact(v))).map_err(csv_io)?;
-    }
-    wtr.flush()?;
-    Ok(())
+        ]
+        .map(exact)
+    });
+    csv_table(w, AVERAGE_COLUMNS, rows)
 }
 
 /// The averaged stroke(s) of several runs in one CSV: load, time since the stroke began
 /// (cycle_time), then the columns of `cycle.csv`.
 pub fn traces_csv(w: &mut dyn std::io::Write, runs: &[&CycleRun]) -> std::io::Result<()> {
-    let mut wtr = csv::Writer::from_writer(w);
-    wtr.write_record(["load", "cycle_time"].into_iter().chain(CYCLE_COLUMNS)).map_err(csv_io)?;
-    for run in runs {
+    let rows = runs.iter().flat_map(|run| {
         let t0 = run.skip as f64 * run.period();
-        for s in run.window() {
-            let row = [exact(run.load()), exact(s.time - t0)].into_iter().chain(crate::commands::cycle::simulation::sample_fields(s));
-            wtr.write_record(row).map_err(csv_io)?;
-        }
-    }
-    wtr.flush()?;
-    Ok(())
+        run.window().iter().map(move |s| [exact(run.load()), exact(s.time - t0)].into_iter().chain(crate::commands::cycle::simulation::sample_fields(s)))
+    });
+    csv_table(w, ["load", "cycle_time"].into_iter().chain(CYCLE_COLUMNS), rows)
 }

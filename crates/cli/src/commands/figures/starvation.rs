@@ -13,9 +13,9 @@
 //! `pinjoint figures` ([`super::run`]) calls [`write()`] into its output directory.
 
 
-use crate::common::{csv_io, exact, log_space, RAD_S_PER_RPM, RIG_AMPLITUDE_DEG};
+use crate::common::{exact, log_space, RAD_S_PER_RPM, RIG_AMPLITUDE_DEG};
 use crate::error::{CliError, Result};
-use crate::output::{output_dir, write_atomic, write_text};
+use crate::output::{output_dir, write_csv, write_text};
 use crate::plot::{stacked_plot, Axis, Chart, Corner, Series};
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::PI;
@@ -188,54 +188,19 @@ pub fn write(dir: &Path, params: &Params) -> Result<Vec<PathBuf>> {
     .iter()
     .map(|f| dir.join(f))
     .collect();
+    let stribeck_rows = rows.iter().map(|(layer, o)| {
+        let numbers = [o.load, o.angular_velocity, o.angular_velocity / RAD_S_PER_RPM, o.friction_coefficient, o.asperity_load_fraction, o.film_thickness, o.lambda_ratio];
+        std::iter::once(layer_field(*layer)).chain(numbers.map(exact))
+    });
+    let cycle_rows = cycle_rows.iter().map(|&(layer, p, t, th, w, tq)| std::iter::once(layer_field(layer)).chain([p, t, th, w, tq].map(exact)));
+    let summary_rows = sum.iter().map(|r| {
+        [layer_field(r.layer), exact(r.load), opt(r.mu_crossing_rpm), opt(r.half_share_rpm), exact(r.mu_800), exact(r.lambda_1), exact(r.lambda_800), exact(r.dip_1hz)]
+    });
     write_text(&paths[0], &[], &stribeck)?;
-    write_atomic(&paths[1], &[], |w| {
-        let mut wtr = csv::Writer::from_writer(w);
-        wtr.write_record(["inlet_layer", "load", "speed", "speed_rpm", "friction_coefficient", "asperity_load_fraction", "film_thickness", "lambda_ratio"])
-            .map_err(csv_io)?;
-        for (layer, o) in &rows {
-            wtr.write_record([
-                layer_field(*layer),
-                exact(o.load),
-                exact(o.angular_velocity),
-                exact(o.angular_velocity / RAD_S_PER_RPM),
-                exact(o.friction_coefficient),
-                exact(o.asperity_load_fraction),
-                exact(o.film_thickness),
-                exact(o.lambda_ratio),
-            ])
-            .map_err(csv_io)?;
-        }
-        wtr.flush()
-    })?;
+    write_csv(&paths[1], &[], ["inlet_layer", "load", "speed", "speed_rpm", "friction_coefficient", "asperity_load_fraction", "film_thickness", "lambda_ratio"], stribeck_rows)?;
     write_text(&paths[2], &[], &cycle)?;
-    write_atomic(&paths[3], &[], |w| {
-        let mut wtr = csv::Writer::from_writer(w);
-        wtr.write_record(["inlet_layer", "load", "time", "angle", "speed", "torque"]).map_err(csv_io)?;
-        for (layer, p, t, th, w, tq) in &cycle_rows {
-            wtr.write_record([layer_field(*layer), exact(*p), exact(*t), exact(*th), exact(*w), exact(*tq)]).map_err(csv_io)?;
-        }
-        wtr.flush()
-    })?;
-    write_atomic(&paths[4], &[], |w| {
-        let mut wtr = csv::Writer::from_writer(w);
-        wtr.write_record(["inlet_layer", "load", "mu_0.11_crossing_rpm", "half_asperity_share_rpm", "mu_800rpm", "lambda_1rpm", "lambda_800rpm", "dip_1Hz"])
-            .map_err(csv_io)?;
-        for r in &sum {
-            wtr.write_record([
-                layer_field(r.layer),
-                exact(r.load),
-                opt(r.mu_crossing_rpm),
-                opt(r.half_share_rpm),
-                exact(r.mu_800),
-                exact(r.lambda_1),
-                exact(r.lambda_800),
-                exact(r.dip_1hz),
-            ])
-            .map_err(csv_io)?;
-        }
-        wtr.flush()
-    })?;
+    write_csv(&paths[3], &[], ["inlet_layer", "load", "time", "angle", "speed", "torque"], cycle_rows)?;
+    write_csv(&paths[4], &[], ["inlet_layer", "load", "mu_0.11_crossing_rpm", "half_asperity_share_rpm", "mu_800rpm", "lambda_1rpm", "lambda_800rpm", "dip_1Hz"], summary_rows)?;
     Ok(paths)
 }
 
