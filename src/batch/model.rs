@@ -83,8 +83,9 @@ impl Model {
         if load == 0.0 {
             return Ok(0.0);
         }
-        if let Some(e) = self.level.as_ref().and_then(|ev| ev.evaluate_inside(load, omega)) {
-            return Ok(e.torque);
+        // The level's torque alone (bit for bit its evaluation's torque: `Evaluator::torque_inside`).
+        if let Some(t) = self.level.as_ref().and_then(|ev| ev.torque_inside(load, omega)) {
+            return Ok(t);
         }
         self.joint.evaluate(load, omega).map(|op| op.torque)
     }

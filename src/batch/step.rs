@@ -48,28 +48,50 @@ pub fn check_step(index: usize, value: f64) -> Result<f64, BatchError> {
     if value.is_finite() && value >= 0.0 { Ok(value) } else { Err(BatchError::Step { index, value }) }
 }
 
+/// Joint `i`'s first bad input, checked in the order load, angular velocity, angle (when
+/// `angle`), host step: the error of a joint whose inputs are not all finite (or whose step
+/// is negative).
+#[cold]
+fn input_error(inp: &Inputs, steps: Option<&[f64]>, i: usize, angle: bool) -> BatchError {
+    let check = || -> Result<(), BatchError> {
+        finite("load", i, inp.load[i], "N")?;
+        finite("angular_velocity", i, inp.angular_velocity[i], "rad/s")?;
+        if angle {
+            finite("angle", i, inp.angle[i], "rad")?;
+        }
+        if let Some(h) = steps {
+            check_step(i, h[i])?;
+        }
+        Ok(())
+    };
+    check().expect_err("called for a joint with a bad input")
+}
+
 /// The first failing joint of a chunk starting at `offset`, if any.
 fn bounds_chunk(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
-    for (k, (j, &slot)) in joints.iter_mut().zip(slots).enumerate() {
+    let end = offset + joints.len();
+    let (loads, omegas) = (&inp.load[offset..end], &inp.angular_velocity[offset..end]);
+    // The model of the previous joint's slot (most joints share one): looked up once a run.
+    let mut current = (u32::MAX, None, 0);
+    for (k, ((j, &slot), (&load, &omega))) in joints.iter_mut().zip(slots).zip(loads.iter().zip(omegas)).enumerate() {
         let i = offset + k;
-        let res = (|| {
-            let load = finite("load", i, inp.load[i], "N")?;
-            let omega = finite("angular_velocity", i, inp.angular_velocity[i], "rad/s")?;
-            if angle {
-                finite("angle", i, inp.angle[i], "rad")?;
+        let good = load.is_finite() && omega.is_finite() && (!angle || inp.angle[i].is_finite()) && steps.is_none_or(|h| h[i].is_finite() && h[i] >= 0.0);
+        if !good {
+            return Some((i, input_error(inp, steps, i, angle)));
+        }
+        if slot != current.0 {
+            current = (slot, Some(models.get(slot)), models.key(slot).1);
+        }
+        let key = [load.to_bits(), omega.to_bits(), current.2];
+        if key != j.key {
+            let model = current.1.expect("set above");
+            match model.sliding_torque(load, omega) {
+                Ok(t) => {
+                    j.bound = t;
+                    j.key = key;
+                }
+                Err(source) => return Some((i, BatchError::Model { index: i, source })),
             }
-            if let Some(h) = steps {
-                check_step(i, h[i])?;
-            }
-            let key = [load.to_bits(), omega.to_bits(), models.key(slot).1];
-            if key != j.key {
-                j.bound = models.get(slot).sliding_torque(load, omega).map_err(|source| BatchError::Model { index: i, source })?;
-                j.key = key;
-            }
-            Ok(())
-        })();
-        if let Err(e) = res {
-            return Some((i, e));
         }
     }
     None
@@ -93,8 +115,17 @@ fn law_chunk(joints: &mut [JointState], out: &mut [f64], inp: &Inputs, steps: Op
             Action::Torque => out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound),
             Action::Commit => commit(j, inp, steps, i),
             Action::Step => {
-                out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound);
-                commit(j, inp, steps, i);
+                // `torque_at` then `commit` (or `commit_step`) at one angle and bound, the held
+                // torque computed once: `torque_at` is `law.torque(held_at(..), ..)`, and a
+                // commit stores `held_at(..)` at the angle (`set_state`), plus the host's step
+                // (`set_last_step`) for `commit_step`.
+                let (angle, omega) = (inp.angle[i], inp.angular_velocity[i]);
+                let held = j.state.held_at(angle, j.bound);
+                out[k] = j.state.law().torque(held, omega, j.bound);
+                j.state.set_state(held, angle);
+                if let Some(h) = steps {
+                    j.state.set_last_step(h[i], omega, false);
+                }
             }
             Action::Bound => out[k] = j.bound,
         }

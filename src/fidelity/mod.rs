@@ -324,6 +324,23 @@ impl Evaluator {
         self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega).ok().map(|()| e)
     }
 
+    /// The torque of [`Evaluator::evaluate_inside`] alone: bit for bit
+    /// `evaluate_inside(load, omega).map(|e| e.torque)`, computing only what the torque needs
+    /// (for the presliding law's bound, e.g. `pinjoint::batch`). The film is checked against
+    /// the clearance only where [`Evaluator::evaluate_inside`] can refuse it: the paper's
+    /// model inside a table's envelope (at rest and in the boundary level the fluid carries
+    /// nothing, and the complete model's film is never refused).
+    #[inline]
+    pub fn torque_inside(&self, load: f64, omega: f64) -> Option<f64> {
+        let load = load.abs();
+        match &self.backend {
+            Backend::Table(t) if !self.joint().is_paper() => t.torque(load, omega),
+            Backend::Table(_) => self.evaluate_inside(load, omega).map(|e| e.torque),
+            Backend::Boundary(b) => b.torque(load, omega),
+            Backend::Full => None,
+        }
+    }
+
     /// As [`Evaluator::evaluate`], completed into every output of the model
     /// ([`Evaluator::operating_point`]).
     pub fn evaluate_point(&mut self, load: f64, omega: f64) -> Result<(OperatingPoint, Source), FidelityError> {

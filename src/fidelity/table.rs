@@ -394,17 +394,16 @@ impl StribeckTable {
         Ok(r)
     }
 
-    /// Interpolate at (load, |ω|) inside the envelope (not checked here).
+    /// μ_f, the logit y and the shares (x1, x2) at the local coordinates (t, u) of the cell
+    /// `c`: the part of the interpolation every path shares ([`Self::interpolate`],
+    /// [`Self::torque`]), so that their μ agrees bit for bit.
     #[inline(always)]
-    fn interpolate(&self, load: f64, omega: f64) -> Evaluation {
-        let (k, t, u) = self.locate(load, omega);
-        let c = &self.cells[k].0;
+    fn friction_parts(c: &[[f64; 16]; 3], t: f64, u: f64) -> (f64, f64, f64, f64) {
         // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
         let mu_f = bicubic(&c[0], t, u).max(0.0);
         // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
         let es = bicubic(&c[1], t, u).exp();
         let y = 0.5 * (es - 1.0 / es);
-        let h = bicubic(&c[2], t, u);
         // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
         let (x1, x2) = if y <= 0.0 {
             let e = y.exp();
@@ -415,6 +414,16 @@ impl StribeckTable {
             let x1 = 1.0 / (1.0 + e);
             (x1, e * x1)
         };
+        (mu_f, y, x1, x2)
+    }
+
+    /// Interpolate at (load, |ω|) inside the envelope (not checked here).
+    #[inline(always)]
+    fn interpolate(&self, load: f64, omega: f64) -> Evaluation {
+        let (k, t, u) = self.locate(load, omega);
+        let c = &self.cells[k].0;
+        let (mu_f, y, x1, x2) = Self::friction_parts(c, t, u);
+        let h = bicubic(&c[2], t, u);
         let mu_a = self.mu_c * x2;
         let mu = mu_f + mu_a;
         Evaluation {
@@ -432,6 +441,29 @@ impl StribeckTable {
             regime: regime_from_shares(x1, x2),
             source: Source::Table,
             first_fallback: false,
+        }
+    }
+
+    /// The sliding torque T = μ·R·P (N·m) of [`Self::evaluate`] at (`load` > 0, `omega`),
+    /// bit for bit its `torque`, and nothing else: the film, the other outputs and the
+    /// regime are not computed (two of the three patches, no `Evaluation`). `None` where
+    /// [`Self::evaluate`] is. For a caller that needs only the torque (the presliding law's
+    /// bound) of a model whose film is not checked against the clearance (the complete
+    /// model: see `Evaluator::torque_inside`).
+    #[inline]
+    pub fn torque(&self, load: f64, omega: f64) -> Option<f64> {
+        if self.envelope.contains(load, omega) {
+            let (k, t, u) = self.locate(load, omega);
+            if self.solved(k) {
+                return None;
+            }
+            let (mu_f, _, _, x2) = Self::friction_parts(&self.cells[k].0, t, u);
+            let mu = mu_f + self.mu_c * x2;
+            Some(mu * self.radius * load)
+        } else if omega == 0.0 {
+            self.rest.contains(load).then(|| rest_torque(load, self.mu_c, self.radius, &self.rest_yield))
+        } else {
+            None
         }
     }
 
@@ -538,15 +570,30 @@ fn unresolved(errors: &[f64], nx: usize, nz: usize, target: f64) -> Vec<bool> {
     solve
 }
 
+/// μ_f (the grease's yield torque at rest over R·P; 0 for the paper's model) and μ = μ_f + μ_c
+/// of the rest state at `load` (N): the friction of [`rest_evaluation`], shared with
+/// [`rest_torque`] so that both agree bit for bit.
+#[inline(always)]
+fn rest_friction(load: f64, mu_c: f64, radius: f64, rest_yield: &RestYield) -> (f64, f64) {
+    // The grease's yield torque at rest (complete model; 0 for the paper's: μ = μ_c exactly),
+    // composed as the complete solve composes it at ω = 0.
+    let mu_f = rest_yield.at(load) / (radius * load);
+    (mu_f, mu_f + mu_c)
+}
+
+/// The torque μ·R·P (N·m) of [`rest_evaluation`] at `load` (N), bit for bit, without its
+/// film.
+#[inline(always)]
+pub(crate) fn rest_torque(load: f64, mu_c: f64, radius: f64, rest_yield: &RestYield) -> f64 {
+    rest_friction(load, mu_c, radius, rest_yield).1 * radius * load
+}
+
 /// The rest state (ω = 0): 1/γ1 = 0, 1/γ2 = 1, μ = μ_c plus the grease's yield torque over
 /// R·P (complete model), film `h`. Also the boundary level's
 /// answer at any speed (with `omega` as given).
 #[inline(always)]
 pub(crate) fn rest_evaluation(load: f64, h: f64, mu_c: f64, radius: f64, roughness: f64, rest_yield: &RestYield, source: Source) -> Evaluation {
-    // The grease's yield torque at rest (complete model; 0 for the paper's: μ = μ_c exactly),
-    // composed as the complete solve composes it at ω = 0.
-    let mu_f = rest_yield.at(load) / (radius * load);
-    let mu = mu_f + mu_c;
+    let (mu_f, mu) = rest_friction(load, mu_c, radius, rest_yield);
     Evaluation {
         load,
         angular_velocity: 0.0,
