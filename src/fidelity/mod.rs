@@ -55,7 +55,7 @@ pub use envelope::Envelope;
 pub use error::FidelityError;
 pub use evaluation::{Evaluation, Source};
 pub use full::{WarmSolver, FULL_ERROR_BOUND};
-pub use table::{StribeckTable, TableStats};
+pub use table::{Located, StribeckTable, TableStats};
 
 use crate::joint::{Joint, OperatingPoint};
 use crate::params::Params;
@@ -332,9 +332,29 @@ impl Evaluator {
     /// nothing, and the complete model's film is never refused).
     #[inline]
     pub fn torque_inside(&self, load: f64, omega: f64) -> Option<f64> {
+        self.torque_located(load, omega, self.locate_torque(load, omega))
+    }
+
+    /// [`Evaluator::torque_inside`] in two halves, for a caller with many points: locate
+    /// (`load` N, `omega` rad/s) now (at the table level its cell, brought into the cache
+    /// meanwhile: [`StribeckTable::locate_torque`]; [`Located::OUTSIDE`] at the other levels)
+    /// and answer with [`Evaluator::torque_located`] a little later, after locating a few
+    /// other points.
+    #[inline]
+    pub fn locate_torque(&self, load: f64, omega: f64) -> Located {
+        match &self.backend {
+            Backend::Table(t) if !self.joint().is_paper() => t.locate_torque(load.abs(), omega),
+            _ => Located::OUTSIDE,
+        }
+    }
+
+    /// The answer of [`Evaluator::torque_inside`] at (`load`, `omega`) located by
+    /// [`Evaluator::locate_torque`] as `at`, bit for bit.
+    #[inline]
+    pub fn torque_located(&self, load: f64, omega: f64, at: Located) -> Option<f64> {
         let load = load.abs();
         match &self.backend {
-            Backend::Table(t) if !self.joint().is_paper() => t.torque(load, omega),
+            Backend::Table(t) if !self.joint().is_paper() => t.torque_located(load, omega, at),
             Backend::Table(_) => self.evaluate_inside(load, omega).map(|e| e.torque),
             Backend::Boundary(b) => b.torque(load, omega),
             Backend::Full => None,
