@@ -59,8 +59,15 @@ fn frames(n: usize) -> Vec<[Vec<f64>; 3]> {
 }
 
 fn batch(n: usize, fidelity: Fidelity, envelope: Envelope) -> PreslidingBatch {
-    PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), Settings { fidelity, envelope, ..Settings::default() }).expect("valid settings")
+    batch_at(n, fidelity, envelope, Params::default())
 }
+
+fn batch_at(n: usize, fidelity: Fidelity, envelope: Envelope, params: Params) -> PreslidingBatch {
+    PreslidingBatch::new(n, BatchParams::Shared(params), Presliding::default(), Settings { fidelity, envelope, ..Settings::default() }).expect("valid settings")
+}
+
+/// The cold day's lubricant temperature (K): −54 °C, the grease in the clearance.
+pub const COLD: f64 = 219.15;
 
 /// The share of the moving joint-steps of `frames` outside `envelope` (answered by the
 /// complete solve at table fidelity).
@@ -115,6 +122,12 @@ pub struct BatchBench {
     pub peak_bytes_table: usize,
     /// See `peak_bytes_table`.
     pub peak_bytes_full: usize,
+    /// The cold day (−54 °C, [`COLD`]): ns per joint-step at full and at table fidelity
+    /// (fastest repeats, [`ENVELOPE`]), and the table cells answered by the complete solve out
+    /// of all.
+    pub cold_ns: (f64, f64),
+    /// See `cold_ns`.
+    pub cold_cells: (usize, usize),
     /// The Python measurements (JSON of `benches/batch_step.py`), or why not.
     pub python: Result<serde_json::Value, String>,
 }
@@ -170,6 +183,29 @@ pub fn measure(quick: bool, python: &Path, progress: &dyn Fn(&str)) -> BatchBenc
         }
     });
     let outside = (outside_share(&frames, &ENVELOPE), outside_share(&frames, &default_envelope));
+    progress("batch: the cold day (-54 °C), full against table per joint-step");
+    let mut cold = Params::default();
+    cold.lubricant.temperature = COLD;
+    let cold_short = short.div_ceil(4);
+    let (mut cold_full, mut cold_table, mut cold_cells) = (f64::INFINITY, f64::INFINITY, (0, 0));
+    pool.install(|| {
+        for _ in 0..reps {
+            for fid in [Fidelity::Full, Fidelity::Table] {
+                let mut b = batch_at(joints, fid, ENVELOPE, cold);
+                run(&mut b, &frames, 1, &mut out);
+                let ns = run(&mut b, &frames, cold_short, &mut out) * 1e9 / (joints * cold_short) as f64;
+                if fid == Fidelity::Full {
+                    cold_full = cold_full.min(ns);
+                } else {
+                    cold_table = cold_table.min(ns);
+                }
+            }
+        }
+    });
+    if let Ok(ev) = pinjoint::fidelity::Evaluator::new(&cold, Fidelity::Table, Settings::default().tolerance, ENVELOPE) {
+        let s = ev.table().map(|t| *t.stats());
+        cold_cells = s.map_or((0, 0), |s| (s.solved_cells, s.load_cells * s.speed_cells));
+    }
     progress(&format!("batch: {joints} joints x {steps} steps at table fidelity, {threads} threads"));
     let (table_seconds, table_build_seconds) = pool.install(|| {
         let t0 = Instant::now();
@@ -183,7 +219,7 @@ pub fn measure(quick: bool, python: &Path, progress: &dyn Fn(&str)) -> BatchBenc
     });
     progress("batch: Python (PreslidingBatch, Joint.evaluate, Presliding loop)");
     let python = python_part(python, quick);
-    BatchBench { joints, steps, threads, table_seconds, table_build_seconds, full_ns, table_ns, table_default_ns, outside, peak_bytes_table: peak_table, peak_bytes_full: peak_full, python }
+    BatchBench { joints, steps, threads, table_seconds, table_build_seconds, full_ns, table_ns, table_default_ns, outside, cold_ns: (cold_full, cold_table), cold_cells, peak_bytes_table: peak_table, peak_bytes_full: peak_full, python }
 }
 
 fn met(ok: bool) -> &'static str {
@@ -213,6 +249,11 @@ pub fn section(b: &BatchBench) -> (Vec<(String, String)>, String) {
             100.0 * b.outside.1,
             b.table_default_ns / b.full_ns
         ),
+    ));
+    let (cf, ct) = b.cold_ns;
+    t.push((
+        format!("the cold day ({} K, −54 °C, the grease in the clearance): table against full, per joint-step (Rust)", COLD),
+        format!("{:.3} × (table {:.0} ns, full {:.0} ns a joint-step; {} of the table's {} cells answered by the complete solve)", ct / cf, ct, cf, b.cold_cells.0, b.cold_cells.1),
     ));
     let mib = |x: usize| x as f64 / (1024.0 * 1024.0);
     let worst = b.peak_bytes_table.max(b.peak_bytes_full);
