@@ -345,4 +345,12 @@ fn the_torque_alone_is_the_evaluations_torque_bit_for_bit() {
     }
     // Both branches were exercised, and cells answered by the complete solve among them.
     assert!(answered > 10_000 && refused > 5_000 && solved_cells > 0, "{answered} {refused} {solved_cells}");
+    // A point located in a larger table and answered by a smaller one: no panic (a cell the
+    // table does not have is located again there).
+    let big = Evaluator::new(&Params::default(), Fidelity::Table, 1e-4, brief()).unwrap();
+    let small = Evaluator::new(&Params::default(), Fidelity::Table, 1e-2, brief()).unwrap();
+    let cells = |ev: &Evaluator| ev.table().map(|t| t.stats().load_cells * t.stats().speed_cells).unwrap();
+    assert!(cells(&big) > 4 * cells(&small), "{} {}", cells(&big), cells(&small));
+    let (load, omega) = (0.99 * brief().load_max, 0.99 * brief().speed_max); // the last cells
+    assert_eq!(small.torque_located(load, omega, big.locate_torque(load, omega)), small.torque_inside(load, omega));
 }

@@ -523,14 +523,18 @@ impl StribeckTable {
     }
 
     /// The torque of [`Self::torque`] at (`load` > 0, `omega`) located by
-    /// [`Self::locate_torque`] (at the same point), bit for bit.
+    /// [`Self::locate_torque`] (of this table, at the same point), bit for bit. (A cell this
+    /// table does not have is located again.)
     #[inline]
     pub fn torque_located(&self, load: f64, omega: f64, q: Located) -> Option<f64> {
         if q.cell != Located::OUTSIDE.cell {
+            let Some(cell) = self.cells.get(q.cell) else {
+                return self.torque_relocated(load, omega);
+            };
             if self.solved(q.cell) {
                 return None;
             }
-            let (mu_f, _, _, x2) = Self::friction_parts(&self.cells[q.cell].0, q.t, q.u);
+            let (mu_f, _, _, x2) = Self::friction_parts(&cell.0, q.t, q.u);
             let mu = mu_f + self.mu_c * x2;
             Some(mu * self.radius * load)
         } else if omega == 0.0 {
@@ -538,6 +542,13 @@ impl StribeckTable {
         } else {
             None
         }
+    }
+
+    /// [`Self::torque`], for a point located in another table.
+    #[cold]
+    #[inline(never)]
+    fn torque_relocated(&self, load: f64, omega: f64) -> Option<f64> {
+        self.torque(load, omega)
     }
 
     /// The interpolated point, or `None` outside the envelope and in the cells answered by
