@@ -501,8 +501,10 @@ fn the_lowest_failing_joint_is_named_and_nothing_changes() {
         let before = states(&b);
         assert!(before.iter().all(|&(t, _)| t != 0.0));
         let capacity = 1e12;
-        // (what to spoil at which joint, the error expected)
-        let cases: [(&[(usize, u8)], usize, bool); 5] = [
+        // (what to spoil at which joint: 0 a NaN load, 1 beyond capacity, 2 an infinite ω, 3 a NaN
+        // angle; the joint named; whether a model error)
+        type Case = (&'static [(usize, u8)], usize, bool);
+        let cases: [Case; 5] = [
             (&[(17, 0), (16, 1)], 16, true),   // beyond capacity before a NaN load, one block
             (&[(16, 0), (17, 1)], 16, false),  // a NaN load before beyond capacity
             (&[(1200, 2), (900, 1)], 900, true), // chunks 2 and 1

@@ -319,7 +319,7 @@ fn the_torque_alone_is_the_evaluations_torque_bit_for_bit() {
     let (mut answered, mut refused, mut solved_cells) = (0, 0, 0);
     for (k, (p, fid, tol, env)) in cases.into_iter().enumerate() {
         let ev = Evaluator::new(&p, fid, tol, env).unwrap();
-        solved_cells += ev.table().map_or(0, |t| t.solved_cells());
+        solved_cells += ev.table().map_or(0, pinjoint::fidelity::StribeckTable::solved_cells);
         let mut rng = CheckRng::new(0x70_7175 + k as u64);
         // Fractions of the envelope in ln P and ln |ω| from −0.1 to 1.1: inside and around it.
         let widen = |lo: f64, hi: f64, f: f64| (lo.ln() + (1.2 * f - 0.1) * (hi.ln() - lo.ln())).exp();
