@@ -47,20 +47,24 @@ fn copy_into(dst: &mut Vec<f64>, src: &PyReadonlyArray1<'_, f64>) {
     }
 }
 
+/// The arrays of one call, in the order angle, angular velocity, load, temperature, step
+/// (None where not given).
+type CallArrays<'py> = [Option<PyReadonlyArray1<'py, f64>>; 5];
+
 /// A call's positional arguments, each a float64 array of shape (n,) or None: `names`, the
-/// first `required` of them required. What the call gives, in order (None where not given).
-fn arrays<'py>(args: &Bound<'py, PyTuple>, names: &[&str], required: usize) -> PyResult<Vec<Option<PyReadonlyArray1<'py, f64>>>> {
+/// first `required` of them required, placed from position `first` of [`CallArrays`] on.
+fn arrays<'py>(args: &Bound<'py, PyTuple>, names: &[&str], required: usize, first: usize) -> PyResult<CallArrays<'py>> {
     if args.len() < required || args.len() > names.len() {
         return Err(PyTypeError::new_err(format!("expected the arrays ({}), the first {required} required; got {} arguments", names.join(", "), args.len())));
     }
-    names
-        .iter()
-        .enumerate()
-        .map(|(i, name)| match args.get_item(i) {
-            Ok(v) if !v.is_none() => v.extract().map(Some).map_err(|e| PyTypeError::new_err(format!("argument '{name}': {e}"))),
-            _ => Ok(None),
-        })
-        .collect()
+    let mut out = CallArrays::default();
+    for (i, name) in names.iter().enumerate() {
+        out[first + i] = match args.get_item(i) {
+            Ok(v) if !v.is_none() => Some(v.extract().map_err(|e| PyTypeError::new_err(format!("argument '{name}': {e}")))?),
+            _ => None,
+        };
+    }
+    Ok(out)
 }
 
 #[pymethods]
@@ -208,13 +212,13 @@ impl NativePreslidingBatch {
     fn call<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>, what: u8) -> PyResult<Option<Bound<'py, PyArray1<f64>>>> {
         let given = if what == 3 {
             // The sliding torque reads no angle: its load stands in for it.
-            let mut v = arrays(args, &["angular_velocity", "load", "temperature"], 2)?;
-            v.insert(0, v[1].clone());
+            let mut v = arrays(args, &["angular_velocity", "load", "temperature"], 2, 1)?;
+            v[0] = v[2].clone();
             v
         } else if what == 0 {
-            arrays(args, &["angle", "angular_velocity", "load", "temperature"], 3)?
+            arrays(args, &["angle", "angular_velocity", "load", "temperature"], 3, 0)?
         } else {
-            arrays(args, &["angle", "angular_velocity", "load", "temperature", "step"], 3)?
+            arrays(args, &["angle", "angular_velocity", "load", "temperature", "step"], 3, 0)?
         };
         let mut with = [false; 5];
         for (k, (buf, a)) in self.buf.iter_mut().zip(&given).enumerate() {
