@@ -482,3 +482,52 @@ fn a_wrapped_angle_reads_as_the_continuous_one() {
     let capped = law.at_step(1e-2).damping(k);
     assert!(capped < law.at_step(0.0).damping(k) && capped <= 0.9 * 1.0 / 1e-2, "{capped}");
 }
+
+/// The error of the lowest joint index is the one returned, whatever mixes of bad inputs and
+/// model errors the blocks and chunks of the passes hold (a load beyond capacity just before a
+/// NaN in one block, errors in several chunks), and a failed call changes no state, from
+/// states away from rest.
+#[test]
+fn the_lowest_failing_joint_is_named_and_nothing_changes() {
+    let n = 1500; // three rayon chunks
+    for fidelity in [Fidelity::Table, Fidelity::Full] {
+        let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), settings(fidelity)).unwrap();
+        let angle: Vec<f64> = (0..n).map(|i| 1e-4 * (1.0 + (i % 7) as f64)).collect();
+        let omega: Vec<f64> = (0..n).map(|i| 0.05 + 0.01 * (i % 11) as f64).collect();
+        let load: Vec<f64> = (0..n).map(|i| 8e3 + 10.0 * i as f64).collect();
+        let mut out = vec![0.0; n];
+        b.step(&Inputs { angle: &angle, angular_velocity: &omega, load: &load, temperature: None }, &mut out).unwrap();
+        let states = |b: &PreslidingBatch| (0..n).map(|i| b.state(i)).collect::<Vec<_>>();
+        let before = states(&b);
+        assert!(before.iter().all(|&(t, _)| t != 0.0));
+        let capacity = 1e12;
+        // (what to spoil at which joint: 0 a NaN load, 1 beyond capacity, 2 an infinite ω, 3 a NaN
+        // angle; the joint named; whether a model error)
+        type Case = (&'static [(usize, u8)], usize, bool);
+        let cases: [Case; 5] = [
+            (&[(17, 0), (16, 1)], 16, true),   // beyond capacity before a NaN load, one block
+            (&[(16, 0), (17, 1)], 16, false),  // a NaN load before beyond capacity
+            (&[(1200, 2), (900, 1)], 900, true), // chunks 2 and 1
+            (&[(1200, 1), (300, 3), (301, 1)], 300, false), // a NaN angle first
+            (&[(1499, 1)], 1499, true),
+        ];
+        for (spoil, index, model) in cases {
+            let (mut a, mut w, mut l) = (angle.clone(), omega.clone(), load.clone());
+            for &(i, how) in spoil {
+                match how {
+                    0 => l[i] = f64::NAN,
+                    1 => l[i] = capacity,
+                    2 => w[i] = f64::INFINITY,
+                    _ => a[i] = f64::NAN,
+                }
+            }
+            let e = b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None }, &mut out).unwrap_err();
+            if model {
+                assert!(matches!(e, BatchError::Model { index: i, source: ModelError::BeyondCapacity { .. } } if i == index), "{fidelity}: {e}");
+            } else {
+                assert!(matches!(e, BatchError::NotFinite { index: i, .. } if i == index), "{fidelity}: {e}");
+            }
+            assert_eq!(states(&b), before, "{fidelity}: a failed step changed a state");
+        }
+    }
+}

@@ -294,3 +294,63 @@ fn completed_operating_point_matches_the_full_one() {
         assert!(((mu_parts - op.friction_coefficient) / op.friction_coefficient).abs() < 1e-15);
     }
 }
+
+/// `Evaluator::torque_inside` (the torque alone, for the presliding law's bound) is bit for bit
+/// the torque of `Evaluator::evaluate_inside`, and `None` exactly where it is: at every level,
+/// for the paper's model (its film checked against the clearance) and the complete one (at the
+/// cold day's temperature, with table cells answered by the complete solve), on random points
+/// inside and around each envelope, at rest, with either sign of the load and of ω.
+#[test]
+fn the_torque_alone_is_the_evaluations_torque_bit_for_bit() {
+    let mut cold = Params::default();
+    cold.lubricant.temperature = 262.9;
+    let spanning = Envelope::new(2e3, 200e3, 1e-3, 3.0).unwrap();
+    let cold_env = Envelope::new(10.0, 100.0, 0.0714, 7.14).unwrap();
+    let cases = [
+        (Params::paper(), Fidelity::Table, 1e-4, brief()),
+        (Params::paper(), Fidelity::Table, 1e-3, spanning),
+        (Params::paper(), Fidelity::Boundary, 1e-4, brief()),
+        (Params::default(), Fidelity::Table, 1e-4, brief()),
+        (Params::default(), Fidelity::Boundary, 1e-4, brief()),
+        (Params::default(), Fidelity::Auto, 1e-4, brief()),
+        (Params::default(), Fidelity::Full, 1e-4, brief()),
+        (cold, Fidelity::Table, 1e-3, cold_env),
+    ];
+    let (mut answered, mut refused, mut solved_cells) = (0, 0, 0);
+    for (k, (p, fid, tol, env)) in cases.into_iter().enumerate() {
+        let ev = Evaluator::new(&p, fid, tol, env).unwrap();
+        solved_cells += ev.table().map_or(0, pinjoint::fidelity::StribeckTable::solved_cells);
+        let mut rng = CheckRng::new(0x70_7175 + k as u64);
+        // Fractions of the envelope in ln P and ln |ω| from −0.1 to 1.1: inside and around it.
+        let widen = |lo: f64, hi: f64, f: f64| (lo.ln() + (1.2 * f - 0.1) * (hi.ln() - lo.ln())).exp();
+        for i in 0..4000 {
+            let load = widen(env.load_min, env.load_max, rng.uniform()) * if i % 7 == 3 { -1.0 } else { 1.0 };
+            let speed = widen(env.speed_min, env.speed_max, rng.uniform());
+            let omega = match i % 5 {
+                0 => 0.0,
+                1 => -speed,
+                _ => speed,
+            };
+            let want = ev.evaluate_inside(load, omega).map(|e| e.torque.to_bits());
+            assert_eq!(ev.torque_inside(load, omega).map(f64::to_bits), want, "case {k} ({fid}) at load {load} N, ω {omega} rad/s");
+            if want.is_some() { answered += 1 } else { refused += 1 }
+        }
+        // The envelope's corners and edges exactly.
+        for load in [env.load_min, env.load_max] {
+            for omega in [0.0, env.speed_min, -env.speed_min, env.speed_max, -env.speed_max] {
+                let want = ev.evaluate_inside(load, omega).map(|e| e.torque.to_bits());
+                assert_eq!(ev.torque_inside(load, omega).map(f64::to_bits), want, "case {k} ({fid}) at load {load} N, ω {omega} rad/s");
+            }
+        }
+    }
+    // Both branches were exercised, and cells answered by the complete solve among them.
+    assert!(answered > 10_000 && refused > 5_000 && solved_cells > 0, "{answered} {refused} {solved_cells}");
+    // A point located in a larger table and answered by a smaller one: no panic (a cell the
+    // table does not have is located again there).
+    let big = Evaluator::new(&Params::default(), Fidelity::Table, 1e-4, brief()).unwrap();
+    let small = Evaluator::new(&Params::default(), Fidelity::Table, 1e-2, brief()).unwrap();
+    let cells = |ev: &Evaluator| ev.table().map(|t| t.stats().load_cells * t.stats().speed_cells).unwrap();
+    assert!(cells(&big) > 4 * cells(&small), "{} {}", cells(&big), cells(&small));
+    let (load, omega) = (0.99 * brief().load_max, 0.99 * brief().speed_max); // the last cells
+    assert_eq!(small.torque_located(load, omega, big.locate_torque(load, omega)), small.torque_inside(load, omega));
+}

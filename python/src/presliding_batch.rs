@@ -8,8 +8,9 @@ use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1, PyReadonlyArray2};
 use pinjoint::batch::{BatchError, BatchParams, Inputs, PreslidingBatch, Settings};
 use pinjoint::fidelity::{Envelope, Fidelity, FidelityError};
 use pinjoint::zero_velocity::Presliding;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
+use pyo3::types::PyTuple;
 
 /// A batch error as a ValueError with the library's message (a model error's numbers in
 /// their short form, as `Joint.evaluate` gives them).
@@ -38,36 +39,32 @@ pub struct NativePreslidingBatch {
 }
 
 /// Copy `src` into `dst` (kept between calls: no allocation once grown).
-fn copy_into(dst: &mut Vec<f64>, src: &PyReadonlyArray1<'_, f64>) -> PyResult<()> {
+fn copy_into(dst: &mut Vec<f64>, src: &PyReadonlyArray1<'_, f64>) {
     dst.clear();
     match src.as_slice() {
         Ok(s) => dst.extend_from_slice(s),
         Err(_) => dst.extend(src.as_array().iter().copied()),
     }
-    Ok(())
 }
 
-impl NativePreslidingBatch {
-    /// Copy the inputs; returns whether a temperature and a step were given.
-    fn take(
-        &mut self,
-        angle: &PyReadonlyArray1<'_, f64>,
-        omega: &PyReadonlyArray1<'_, f64>,
-        load: &PyReadonlyArray1<'_, f64>,
-        temperature: Option<&PyReadonlyArray1<'_, f64>>,
-        step: Option<&PyReadonlyArray1<'_, f64>>,
-    ) -> PyResult<(bool, bool)> {
-        copy_into(&mut self.buf[0], angle)?;
-        copy_into(&mut self.buf[1], omega)?;
-        copy_into(&mut self.buf[2], load)?;
-        if let Some(t) = temperature {
-            copy_into(&mut self.buf[3], t)?;
-        }
-        if let Some(h) = step {
-            copy_into(&mut self.buf[4], h)?;
-        }
-        Ok((temperature.is_some(), step.is_some()))
+/// The arrays of one call, in the order angle, angular velocity, load, temperature, step
+/// (None where not given).
+type CallArrays<'py> = [Option<PyReadonlyArray1<'py, f64>>; 5];
+
+/// A call's positional arguments, each a float64 array of shape (n,) or None: `names`, the
+/// first `required` of them required, placed from position `first` of [`CallArrays`] on.
+fn arrays<'py>(args: &Bound<'py, PyTuple>, names: &[&str], required: usize, first: usize) -> PyResult<CallArrays<'py>> {
+    if args.len() < required || args.len() > names.len() {
+        return Err(PyTypeError::new_err(format!("expected the arrays ({}), the first {required} required; got {} arguments", names.join(", "), args.len())));
     }
+    let mut out = CallArrays::default();
+    for (i, name) in names.iter().enumerate() {
+        out[first + i] = match args.get_item(i) {
+            Ok(v) if !v.is_none() => Some(v.extract().map_err(|e| PyTypeError::new_err(format!("argument '{name}': {e}")))?),
+            _ => None,
+        };
+    }
+    Ok(out)
 }
 
 #[pymethods]
@@ -110,58 +107,33 @@ impl NativePreslidingBatch {
         Ok(Self { batch, buf: Default::default() })
     }
 
-    /// The friction torque (N·m) of every joint at the inputs, the states unchanged.
-    #[pyo3(signature = (angle, angular_velocity, load, temperature=None))]
-    fn torque<'py>(
-        &mut self,
-        py: Python<'py>,
-        angle: PyReadonlyArray1<'py, f64>,
-        angular_velocity: PyReadonlyArray1<'py, f64>,
-        load: PyReadonlyArray1<'py, f64>,
-        temperature: Option<PyReadonlyArray1<'py, f64>>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        self.call(py, angle, angular_velocity, load, temperature, None, 0).map(|o| o.expect("an output"))
+    /// The friction torque (N·m) of every joint at the inputs, the states unchanged:
+    /// `torque(angle, angular_velocity, load, temperature=None)`.
+    #[pyo3(signature = (*args))]
+    fn torque<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.call(py, args, 0).map(|o| o.expect("an output"))
     }
 
     /// Commit every joint's state at its angle; `step` (s per joint, None: not known) the
-    /// host's step, as `_Presliding.commit`.
-    #[pyo3(signature = (angle, angular_velocity, load, temperature=None, step=None))]
-    fn commit<'py>(
-        &mut self,
-        py: Python<'py>,
-        angle: PyReadonlyArray1<'py, f64>,
-        angular_velocity: PyReadonlyArray1<'py, f64>,
-        load: PyReadonlyArray1<'py, f64>,
-        temperature: Option<PyReadonlyArray1<'py, f64>>,
-        step: Option<PyReadonlyArray1<'py, f64>>,
-    ) -> PyResult<()> {
-        self.call(py, angle, angular_velocity, load, temperature, step, 1).map(|_| ())
+    /// host's step, as `_Presliding.commit`:
+    /// `commit(angle, angular_velocity, load, temperature=None, step=None)`.
+    #[pyo3(signature = (*args))]
+    fn commit<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>) -> PyResult<()> {
+        self.call(py, args, 1).map(|_| ())
     }
 
-    /// The torque at the inputs, then commit (one solve per joint) with the host's `step`.
-    #[pyo3(signature = (angle, angular_velocity, load, temperature=None, step=None))]
-    fn step<'py>(
-        &mut self,
-        py: Python<'py>,
-        angle: PyReadonlyArray1<'py, f64>,
-        angular_velocity: PyReadonlyArray1<'py, f64>,
-        load: PyReadonlyArray1<'py, f64>,
-        temperature: Option<PyReadonlyArray1<'py, f64>>,
-        step: Option<PyReadonlyArray1<'py, f64>>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        self.call(py, angle, angular_velocity, load, temperature, step, 2).map(|o| o.expect("an output"))
+    /// The torque at the inputs, then commit (one solve per joint) with the host's `step`:
+    /// `step(angle, angular_velocity, load, temperature=None, step=None)`.
+    #[pyo3(signature = (*args))]
+    fn step<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.call(py, args, 2).map(|o| o.expect("an output"))
     }
 
-    /// Every joint's sliding torque T(P, |omega|) (N·m) at the inputs.
-    #[pyo3(signature = (angular_velocity, load, temperature=None))]
-    fn sliding_torque<'py>(
-        &mut self,
-        py: Python<'py>,
-        angular_velocity: PyReadonlyArray1<'py, f64>,
-        load: PyReadonlyArray1<'py, f64>,
-        temperature: Option<PyReadonlyArray1<'py, f64>>,
-    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        self.call(py, load.clone(), angular_velocity, load, temperature, None, 3).map(|o| o.expect("an output"))
+    /// Every joint's sliding torque T(P, |omega|) (N·m) at the inputs:
+    /// `sliding_torque(angular_velocity, load, temperature=None)`.
+    #[pyo3(signature = (*args))]
+    fn sliding_torque<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        self.call(py, args, 3).map(|o| o.expect("an output"))
     }
 
     /// (presliding torques N·m, reference angles rad), arrays of shape (n,).
@@ -235,19 +207,27 @@ impl NativePreslidingBatch {
 
 impl NativePreslidingBatch {
     /// One call: 0 torque, 1 commit, 2 step (with the host's `step` when given), 3 sliding
-    /// torque. The GIL is released while the joints are stepped.
-    #[allow(clippy::too_many_arguments)]
-    fn call<'py>(
-        &mut self,
-        py: Python<'py>,
-        angle: PyReadonlyArray1<'py, f64>,
-        omega: PyReadonlyArray1<'py, f64>,
-        load: PyReadonlyArray1<'py, f64>,
-        temperature: Option<PyReadonlyArray1<'py, f64>>,
-        step: Option<PyReadonlyArray1<'py, f64>>,
-        what: u8,
-    ) -> PyResult<Option<Bound<'py, PyArray1<f64>>>> {
-        let (with_t, with_h) = self.take(&angle, &omega, &load, temperature.as_ref(), step.as_ref())?;
+    /// torque, on its positional arguments ([`arrays`]). The inputs are copied (the caller's
+    /// arrays may change while the GIL is released), then the joints are stepped without it.
+    fn call<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>, what: u8) -> PyResult<Option<Bound<'py, PyArray1<f64>>>> {
+        let given = if what == 3 {
+            // The sliding torque reads no angle: its load stands in for it.
+            let mut v = arrays(args, &["angular_velocity", "load", "temperature"], 2, 1)?;
+            v[0] = v[2].clone();
+            v
+        } else if what == 0 {
+            arrays(args, &["angle", "angular_velocity", "load", "temperature"], 3, 0)?
+        } else {
+            arrays(args, &["angle", "angular_velocity", "load", "temperature", "step"], 3, 0)?
+        };
+        let mut with = [false; 5];
+        for (k, (buf, a)) in self.buf.iter_mut().zip(&given).enumerate() {
+            if let Some(a) = a {
+                copy_into(buf, a);
+                with[k] = true;
+            }
+        }
+        let (with_t, with_h) = (with[3], with[4]);
         let n = self.batch.len();
         let mut out = if what == 1 { Vec::new() } else { vec![0.0; n] };
         let Self { batch, buf } = self;

@@ -4,14 +4,26 @@ own CSV front end) and helpers to run `sweep` and `cycle` on it."""
 from __future__ import annotations
 
 import csv
+import importlib.util
 import os
 import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
+
+
+def load_example(name: str):
+    """examples/<name>.py imported as the module `name` (registered in sys.modules, so that
+    the worker processes of a Dask cluster find its functions by name)."""
+    spec = importlib.util.spec_from_file_location(name, ROOT / "examples" / f"{name}.py")
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod
+    spec.loader.exec_module(mod)
+    return mod
 
 
 @pytest.fixture(scope="session")

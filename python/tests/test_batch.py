@@ -307,3 +307,28 @@ def test_bad_steps_name_the_argument_and_the_index():
     with pytest.raises(ValueError, match=r"host_inertia = 2000000000 kg.m2 at index 2 is invalid"):
         pinjoint.PreslidingBatch(3, host_inertia=[1.0, 1.0, 2e9])
     assert np.array_equal(pinjoint.PreslidingBatch(2, host_inertia=0.0).host_inertia, [0.0, 0.0])
+
+
+def test_the_native_calls_check_their_arrays():
+    """The native half takes its arrays positionally: too few or too many, or an array of
+    another dtype, is a TypeError naming what it expected; sliding_torque's load stands in for
+    the angle it does not read."""
+    b = pinjoint.PreslidingBatch(3)
+    native = b._native
+    z = np.zeros(3)
+    with pytest.raises(TypeError, match=r"the first 3 required; got 2 arguments"):
+        native.torque(z, z)
+    with pytest.raises(TypeError, match=r"got 6 arguments"):
+        native.step(z, z, z, None, None, z)
+    with pytest.raises(TypeError, match=r"argument 'load'"):
+        native.step(z, z, np.zeros(3, dtype=np.int64))
+    load = np.array([1e4, 2e4, 3e4])
+    assert np.array_equal(native.sliding_torque(z + 0.1, load), b.sliding_torque(0.1, load))
+    assert np.array_equal(native.sliding_torque(z + 0.1, load, None), b.sliding_torque(0.1, load))
+    # A commit through the native half is the wrapper's commit.
+    other = pinjoint.PreslidingBatch(3)
+    native.commit(z + 1e-4, z, load, None, None)
+    other.commit(1e-4, 0.0, load)
+    for mine, theirs in zip(b.state, other.state):
+        assert np.array_equal(mine, theirs)
+    assert np.all(b.state[0] != 0.0) and np.all(b.state[1] == 1e-4)

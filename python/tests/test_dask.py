@@ -2,19 +2,11 @@
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 
+from conftest import load_example
+
 ROOT = Path(__file__).resolve().parents[2]
-
-
-def load_example():
-    spec = importlib.util.spec_from_file_location("monte_carlo_dask", ROOT / "examples" / "monte_carlo_dask.py")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod
-    spec.loader.exec_module(mod)
-    return mod
 
 
 def test_dask_local_cluster_equals_serial_run(tmp_path, monkeypatch):
@@ -22,7 +14,7 @@ def test_dask_local_cluster_equals_serial_run(tmp_path, monkeypatch):
     # example's task functions by name.
     monkeypatch.syspath_prepend(str(ROOT / "examples"))
     monkeypatch.setenv("PYTHONPATH", str(ROOT / "examples"))
-    ex = load_example()
+    ex = load_example("monte_carlo_dask")
     small = ["--samples", "6", "--cycles", "2", "--samples-per-cycle", "200", "--map-loads", "6",
              "--map-speeds", "20", "--map-tasks", "3"]
     assert ex.main([*small, "--workers", "2", "--output", str(tmp_path / "dask")]) == 0

@@ -5,9 +5,7 @@ a 2-worker LocalCluster and locally, file for file."""
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -16,16 +14,10 @@ import pytest
 import pinjoint
 from pinjoint import scenes
 
+from conftest import load_example
+
 ROOT = Path(__file__).resolve().parents[2]
 MU = pinjoint.MU_C
-
-
-def load_example():
-    spec = importlib.util.spec_from_file_location("scene_uncertainty", ROOT / "examples" / "scene_uncertainty.py")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod
-    spec.loader.exec_module(mod)
-    return mod
 
 
 def scalar_free_fall(scene, mu_c):
@@ -113,7 +105,7 @@ def test_a_calibrations_covariance_is_sampled():
 def test_the_study_is_reproducible_and_equal_on_a_local_cluster(tmp_path, monkeypatch):
     monkeypatch.syspath_prepend(str(ROOT / "examples"))
     monkeypatch.setenv("PYTHONPATH", str(ROOT / "examples"))
-    ex = load_example()
+    ex = load_example("scene_uncertainty")
     small = ["--samples", "200", "--chunk", "50", "--end-time", "2.5", "--temperature-c", "-20", "--seed", "7"]
     assert ex.main([*small, "--output", str(tmp_path / "a")]) == 0
     assert ex.main([*small, "--no-figure", "--output", str(tmp_path / "b")]) == 0
@@ -144,7 +136,7 @@ def test_a_real_fit_drives_the_example(tmp_path):
     assert s[MU].std() == pytest.approx(est["standard_error"], rel=0.05)
     path = tmp_path / "fit.json"
     path.write_text(fit.to_json())
-    ex = load_example()
+    ex = load_example("scene_uncertainty")
     assert ex.main(["--calibration", str(path), "--samples", "40", "--end-time", "2", "--temperature-c", "20", "--no-figure", "--output", str(tmp_path / "o")]) == 0
     rows = (tmp_path / "o" / "samples.csv").read_text().splitlines()
     mu = np.array([float(r.split(",")[1]) for r in rows[1:]])

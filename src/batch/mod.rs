@@ -54,7 +54,7 @@ use crate::joint::Joint;
 use crate::params::Params;
 use crate::zero_velocity::{Presliding, PreslidingJoint};
 use cache::Models;
-use step::{Action, JointState};
+use step::{Action, Bound};
 
 /// The parameter sets of a batch.
 // One value per batch, built once: the size of the shared set costs nothing worth a Box.
@@ -70,7 +70,11 @@ pub enum BatchParams {
 /// n presliding joints stepped together (see the [module documentation](self)).
 #[derive(Debug, Clone)]
 pub struct PreslidingBatch {
-    joints: Vec<JointState>,
+    /// Each joint's presliding state.
+    joints: Vec<PreslidingJoint>,
+    /// Each joint's last sliding torque and its inputs (apart from the states: the pass that
+    /// computes them reads no state).
+    bounds: Vec<Bound>,
     /// Each joint's model slot (u32::MAX before its first call).
     slots: Vec<u32>,
     models: Models,
@@ -80,6 +84,9 @@ pub struct PreslidingBatch {
     host_inertia: Option<Vec<f64>>,
     /// Each joint's model key in this call (a buffer kept between calls).
     keys: Vec<cache::Key>,
+    /// Every joint holds its parameter set's model at the set's own temperature (the last
+    /// call gave no temperatures).
+    own_temperatures: bool,
 }
 
 impl PreslidingBatch {
@@ -102,13 +109,15 @@ impl PreslidingBatch {
         };
         let bases = sets.iter().enumerate().map(|(index, p)| Joint::new(p).map_err(|source| BatchError::Params { index, source })).collect::<Result<Vec<_>, _>>()?;
         Ok(PreslidingBatch {
-            joints: vec![JointState::new(PreslidingJoint::new(law, 0.0)); n],
+            joints: vec![PreslidingJoint::new(law, 0.0); n],
+            bounds: vec![Bound::NONE; n],
             slots: vec![u32::MAX; n],
             models: Models::new(bases, settings),
             per_joint,
             law,
             host_inertia: None,
             keys: Vec::with_capacity(n),
+            own_temperatures: false,
         })
     }
 
@@ -168,11 +177,11 @@ impl PreslidingBatch {
             .map(|index| self.law.with_host_inertia(j(index)).map_err(|_| BatchError::HostInertia { index, value: j(index) }))
             .collect::<Result<Vec<_>, _>>()?;
         for (js, law) in self.joints.iter_mut().zip(laws) {
-            let s = &js.state;
+            let s = &*js;
             let ((step, omega), unreferenced) = (s.last_step(), s.is_unreferenced());
             let mut state = PreslidingJoint::at_state(law, s.presliding_torque(), s.reference_angle());
             state.set_last_step(step, omega, unreferenced);
-            js.state = state;
+            *js = state;
         }
         self.host_inertia = inertia.map(<[f64]>::to_vec);
         Ok(())
@@ -180,7 +189,7 @@ impl PreslidingBatch {
 
     /// Joint `i`'s law (its host inertia, and its `step` the host's step of the last commit).
     pub fn joint_law(&self, i: usize) -> &Presliding {
-        self.joints[i].state.law()
+        self.joints[i].law()
     }
 
     /// Every joint's step bookkeeping into `step` (s, the host's step of the last commit; 0
@@ -195,7 +204,7 @@ impl PreslidingBatch {
             return Err(BatchError::Shape { argument: "unreferenced", expected: n, got: unreferenced.len() });
         }
         for (((j, h), w), u) in self.joints.iter().zip(step).zip(omega).zip(unreferenced) {
-            ((*h, *w), *u) = (j.state.last_step(), j.state.is_unreferenced());
+            ((*h, *w), *u) = (j.last_step(), j.is_unreferenced());
         }
         Ok(())
     }
@@ -217,14 +226,14 @@ impl PreslidingBatch {
             inputs::finite("angular_velocity", i, w, "rad/s")?;
         }
         for (((j, &h), &w), &u) in self.joints.iter_mut().zip(step).zip(omega).zip(unreferenced) {
-            j.state.set_last_step(h, w, u);
+            j.set_last_step(h, w, u);
         }
         Ok(())
     }
 
     /// Joint `i`'s state: (presliding torque τ in N·m, reference angle in rad).
     pub fn state(&self, i: usize) -> (f64, f64) {
-        let s = &self.joints[i].state;
+        let s = &self.joints[i];
         (s.presliding_torque(), s.reference_angle())
     }
 
@@ -233,7 +242,7 @@ impl PreslidingBatch {
         inputs::check_length("torque", torque, self.len())?;
         inputs::check_length("angle", angle, self.len())?;
         for ((j, t), a) in self.joints.iter().zip(torque).zip(angle) {
-            (*t, *a) = (j.state.presliding_torque(), j.state.reference_angle());
+            (*t, *a) = (j.presliding_torque(), j.reference_angle());
         }
         Ok(())
     }
@@ -248,20 +257,27 @@ impl PreslidingBatch {
             inputs::finite("angle", i, a, "rad")?;
         }
         for ((j, &t), &a) in self.joints.iter_mut().zip(torque).zip(angle) {
-            j.state.set_state(t, a);
+            j.set_state(t, a);
         }
         Ok(())
     }
 
-    /// Point every joint at the model of its parameter set at its temperature.
+    /// Point every joint at the model of its parameter set at its temperature. Without
+    /// temperatures after a call without them, every joint already holds its set's model at
+    /// the set's own temperature: nothing to do (no pass over the joints).
     fn assign(&mut self, temperature: Option<&[f64]>) -> Result<(), BatchError> {
+        if temperature.is_none() && self.own_temperatures {
+            return Ok(());
+        }
         let PreslidingBatch { models, slots, keys, per_joint, .. } = self;
         let n = slots.len();
         keys.resize(n, (0, 0));
         for (i, k) in keys.iter_mut().enumerate() {
             *k = models.key_of(if *per_joint { i as u32 } else { 0 }, temperature.map(|t| t[i]));
         }
-        models.assign(slots, |i| keys[i])
+        models.assign(slots, |i| keys[i])?;
+        self.own_temperatures = temperature.is_none();
+        Ok(())
     }
 
     fn run(&mut self, inputs: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
@@ -273,7 +289,7 @@ impl PreslidingBatch {
             inputs::check_length("output", out, self.len())?;
         }
         self.assign(inputs.temperature)?;
-        step::run(&mut self.joints, &self.slots, &self.models, inputs, steps, action, out)
+        step::run(&mut self.joints, &mut self.bounds, &self.slots, &self.models, inputs, steps, action, out)
     }
 
     /// The friction torque on each pin (N·m) at the inputs into `out`, the states unchanged:

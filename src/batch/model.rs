@@ -10,7 +10,7 @@
 //! answers bit for bit as that scalar path, because it calls the same functions.
 
 use super::error::BatchError;
-use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
+use crate::fidelity::{Envelope, Evaluator, Fidelity, Level, Located};
 use crate::joint::{Joint, ModelError};
 
 /// The fidelity a batch runs at: the level, its tolerance and its envelope (as the scalar
@@ -76,6 +76,21 @@ impl Model {
     /// [`Joint::evaluate`]. The inputs must be finite (the batch checks them first).
     #[inline]
     pub fn sliding_torque(&self, load: f64, omega: f64) -> Result<f64, ModelError> {
+        self.sliding_torque_located(load, omega, self.locate(load, omega))
+    }
+
+    /// Locate (`load`, `omega`) in the level ([`Evaluator::locate_torque`]: at the table
+    /// level its cell, brought into the cache meanwhile), for
+    /// [`Model::sliding_torque_located`].
+    #[inline]
+    pub fn locate(&self, load: f64, omega: f64) -> Located {
+        self.level.as_ref().map_or(Located::OUTSIDE, |ev| ev.locate_torque(load, omega))
+    }
+
+    /// [`Model::sliding_torque`] at (`load`, `omega`) located by [`Model::locate`] as `at`,
+    /// bit for bit.
+    #[inline]
+    pub fn sliding_torque_located(&self, load: f64, omega: f64, at: Located) -> Result<f64, ModelError> {
         let capacity = self.joint.capacity();
         if load.abs() >= capacity {
             return Err(ModelError::BeyondCapacity { load: load.abs(), capacity });
@@ -83,8 +98,9 @@ impl Model {
         if load == 0.0 {
             return Ok(0.0);
         }
-        if let Some(e) = self.level.as_ref().and_then(|ev| ev.evaluate_inside(load, omega)) {
-            return Ok(e.torque);
+        // The level's torque alone (bit for bit its evaluation's torque: `Evaluator::torque_inside`).
+        if let Some(t) = self.level.as_ref().and_then(|ev| ev.torque_located(load, omega, at)) {
+            return Ok(t);
         }
         self.joint.evaluate(load, omega).map(|op| op.torque)
     }

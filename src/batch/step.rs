@@ -5,28 +5,27 @@
 use super::cache::Models;
 use super::error::BatchError;
 use super::inputs::{finite, Inputs};
+use super::model::Model;
+use crate::fidelity::Located;
 use crate::zero_velocity::PreslidingJoint;
 use rayon::prelude::*;
 
 /// Joints handed to one rayon task; below two chunks the work stays on the calling thread.
 pub const CHUNK: usize = 512;
 
-/// One joint: its presliding state and the last sliding torque computed for it.
+/// One joint's last sliding torque and the inputs it was computed at (kept apart from the
+/// joint's state: the first pass reads and writes these alone).
 #[derive(Debug, Clone, Copy)]
-pub struct JointState {
-    /// The scalar law's state.
-    pub state: PreslidingJoint,
-    /// Bits of the (load, angular velocity, temperature) of `bound`; load NaN: none yet.
+pub struct Bound {
+    /// Bits of the (load, angular velocity, temperature) of `value`; load NaN: none yet.
     key: [u64; 3],
     /// The sliding torque at `key` (N·m).
-    pub bound: f64,
+    pub value: f64,
 }
 
-impl JointState {
-    /// At `state`, no sliding torque computed yet.
-    pub fn new(state: PreslidingJoint) -> Self {
-        JointState { state, key: [f64::NAN.to_bits(), 0, 0], bound: f64::NAN }
-    }
+impl Bound {
+    /// No sliding torque computed yet.
+    pub const NONE: Bound = Bound { key: [0x7ff8_0000_0000_0000, 0, 0], value: f64::NAN };
 }
 
 /// What the second pass does with each joint's sliding torque.
@@ -48,55 +47,114 @@ pub fn check_step(index: usize, value: f64) -> Result<f64, BatchError> {
     if value.is_finite() && value >= 0.0 { Ok(value) } else { Err(BatchError::Step { index, value }) }
 }
 
-/// The first failing joint of a chunk starting at `offset`, if any.
-fn bounds_chunk(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
-    for (k, (j, &slot)) in joints.iter_mut().zip(slots).enumerate() {
-        let i = offset + k;
-        let res = (|| {
-            let load = finite("load", i, inp.load[i], "N")?;
-            let omega = finite("angular_velocity", i, inp.angular_velocity[i], "rad/s")?;
-            if angle {
-                finite("angle", i, inp.angle[i], "rad")?;
+/// Joint `i`'s first bad input, checked in the order load, angular velocity, angle (when
+/// `angle`), host step: the error of a joint whose inputs are not all finite (or whose step
+/// is negative).
+#[cold]
+fn input_error(inp: &Inputs, steps: Option<&[f64]>, i: usize, angle: bool) -> BatchError {
+    let check = || -> Result<(), BatchError> {
+        finite("load", i, inp.load[i], "N")?;
+        finite("angular_velocity", i, inp.angular_velocity[i], "rad/s")?;
+        if angle {
+            finite("angle", i, inp.angle[i], "rad")?;
+        }
+        if let Some(h) = steps {
+            check_step(i, h[i])?;
+        }
+        Ok(())
+    };
+    check().expect_err("called for a joint with a bad input")
+}
+
+/// Joints located ahead of their answers in the bounds pass: the table cells of a block are
+/// requested from memory together, then read (a table of thousands of cells does not fit a
+/// core's cache, and each joint's point falls in its own cell).
+pub const BLOCK: usize = 8;
+
+/// The first failing joint of a chunk starting at `offset`, if any. In blocks of [`BLOCK`]
+/// joints: the inputs are checked and each joint whose (load, ω, temperature) changed is
+/// located in its model ([`Model::locate`]), then those are answered in order
+/// ([`Model::sliding_torque_located`]); the error of the lowest joint index is the one
+/// returned, as when each joint is checked then answered in turn.
+fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+    let end = offset + bounds.len();
+    let (loads, omegas) = (&inp.load[offset..end], &inp.angular_velocity[offset..end]);
+    // The model of the previous joint's slot (most joints share one): looked up once a run.
+    let mut current: (u32, Option<&Model>, u64) = (u32::MAX, None, 0);
+    // The joints of a block to answer: index in the chunk, located point.
+    let mut todo = [(0, Located::OUTSIDE); BLOCK];
+    for first in (0..bounds.len()).step_by(BLOCK) {
+        let last = (first + BLOCK).min(bounds.len());
+        let (mut pending, mut bad) = (0, None);
+        for k in first..last {
+            let i = offset + k;
+            let (load, omega) = (loads[k], omegas[k]);
+            let good = load.is_finite() && omega.is_finite() && (!angle || inp.angle[i].is_finite()) && steps.is_none_or(|h| h[i].is_finite() && h[i] >= 0.0);
+            if !good {
+                bad = Some(i);
+                break;
             }
-            if let Some(h) = steps {
-                check_step(i, h[i])?;
+            let slot = slots[k];
+            if slot != current.0 {
+                current = (slot, Some(models.get(slot)), models.key(slot).1);
             }
-            let key = [load.to_bits(), omega.to_bits(), models.key(slot).1];
-            if key != j.key {
-                j.bound = models.get(slot).sliding_torque(load, omega).map_err(|source| BatchError::Model { index: i, source })?;
-                j.key = key;
+            // Compared word by word (an array built on the stack and compared whole is read back
+            // wider than it was written: a stalled load).
+            let old = &bounds[k].key;
+            if load.to_bits() != old[0] || omega.to_bits() != old[1] || current.2 != old[2] {
+                todo[pending] = (k, current.1.expect("set above").locate(load, omega));
+                pending += 1;
             }
-            Ok(())
-        })();
-        if let Err(e) = res {
-            return Some((i, e));
+        }
+        for &(k, at) in &todo[..pending] {
+            let (load, omega, slot) = (loads[k], omegas[k], slots[k]);
+            if slot != current.0 {
+                current = (slot, Some(models.get(slot)), models.key(slot).1);
+            }
+            match current.1.expect("set above").sliding_torque_located(load, omega, at) {
+                Ok(value) => bounds[k] = Bound { key: [load.to_bits(), omega.to_bits(), current.2], value },
+                Err(source) => return Some((offset + k, BatchError::Model { index: offset + k, source })),
+            }
+        }
+        if let Some(i) = bad {
+            return Some((i, input_error(inp, steps, i, angle)));
         }
     }
     None
 }
 
-/// Commit joint `i` at its input angle: `PreslidingJoint::commit`, or with the host's step
-/// `PreslidingJoint::commit_step` (ω·h the next increment is read against, the damping cap).
+/// Commit joint `i` at its input angle with the sliding torque `bound`:
+/// `PreslidingJoint::commit`, or with the host's step `PreslidingJoint::commit_step` (ω·h
+/// the next increment is read against, the damping cap).
 #[inline]
-fn commit(j: &mut JointState, inp: &Inputs, steps: Option<&[f64]>, i: usize) {
+fn commit(j: &mut PreslidingJoint, bound: f64, inp: &Inputs, steps: Option<&[f64]>, i: usize) {
     match steps {
-        Some(h) => j.state.commit_step(inp.angle[i], inp.angular_velocity[i], j.bound, h[i]),
-        None => j.state.commit(inp.angle[i], j.bound),
+        Some(h) => j.commit_step(inp.angle[i], inp.angular_velocity[i], bound, h[i]),
+        None => j.commit(inp.angle[i], bound),
     }
 }
 
 /// The law on a chunk (every bound computed).
-fn law_chunk(joints: &mut [JointState], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
-    for (k, j) in joints.iter_mut().enumerate() {
-        let i = offset + k;
+fn law_chunk(joints: &mut [PreslidingJoint], bounds: &[Bound], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
+    for (k, (j, b)) in joints.iter_mut().zip(bounds).enumerate() {
+        let (i, bound) = (offset + k, b.value);
         match action {
-            Action::Torque => out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound),
-            Action::Commit => commit(j, inp, steps, i),
+            Action::Torque => out[k] = j.torque_at(inp.angle[i], inp.angular_velocity[i], bound),
+            Action::Commit => commit(j, bound, inp, steps, i),
             Action::Step => {
-                out[k] = j.state.torque_at(inp.angle[i], inp.angular_velocity[i], j.bound);
-                commit(j, inp, steps, i);
+                // `torque_at` then `commit` (or `commit_step`) at one angle and bound, the held
+                // torque computed once: `torque_at` is `law.torque(held_at(..), ..)`, and a
+                // commit stores `held_at(..)` at the angle (`set_state`), plus the host's step
+                // (`set_last_step`) for `commit_step`.
+                let (angle, omega) = (inp.angle[i], inp.angular_velocity[i]);
+                let held = j.held_at(angle, bound);
+                out[k] = j.law().torque(held, omega, bound);
+                j.set_state(held, angle);
+                if let Some(h) = steps {
+                    j.set_last_step(h[i], omega, false);
+                }
             }
-            Action::Bound => out[k] = j.bound,
+            Action::Bound => out[k] = bound,
         }
     }
 }
@@ -106,30 +164,37 @@ fn law_chunk(joints: &mut [JointState], out: &mut [f64], inp: &Inputs, steps: Op
 /// each joint as `PreslidingJoint::commit_step`. On an error (the lowest joint index's) no
 /// state has changed. `out` has one value per joint (unused by [`Action::Commit`]: it may be
 /// empty then).
-pub fn run(joints: &mut [JointState], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
+#[allow(clippy::too_many_arguments)]
+pub fn run(joints: &mut [PreslidingJoint], bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
     let n = joints.len();
     let angle = action != Action::Bound;
     let err = if n < 2 * CHUNK {
-        bounds_chunk(joints, slots, models, inp, steps, 0, angle)
+        bounds_chunk(bounds, slots, models, inp, steps, 0, angle)
     } else {
-        joints
+        bounds
             .par_chunks_mut(CHUNK)
             .zip(slots.par_chunks(CHUNK))
             .enumerate()
-            .filter_map(|(c, (j, s))| bounds_chunk(j, s, models, inp, steps, c * CHUNK, angle))
+            .filter_map(|(c, (b, s))| bounds_chunk(b, s, models, inp, steps, c * CHUNK, angle))
             .min_by_key(|(i, _)| *i)
     };
     if let Some((_, e)) = err {
         return Err(e);
     }
+    let bounds = &*bounds;
     let out_len = if action == Action::Commit { 0 } else { n };
     let out = &mut out[..out_len];
     if n < 2 * CHUNK {
-        law_chunk(joints, out, inp, steps, 0, action);
+        law_chunk(joints, bounds, out, inp, steps, 0, action);
     } else if action == Action::Commit {
-        joints.par_chunks_mut(CHUNK).enumerate().for_each(|(c, j)| law_chunk(j, &mut [], inp, steps, c * CHUNK, action));
+        joints.par_chunks_mut(CHUNK).zip(bounds.par_chunks(CHUNK)).enumerate().for_each(|(c, (j, b))| law_chunk(j, b, &mut [], inp, steps, c * CHUNK, action));
     } else {
-        joints.par_chunks_mut(CHUNK).zip(out.par_chunks_mut(CHUNK)).enumerate().for_each(|(c, (j, o))| law_chunk(j, o, inp, steps, c * CHUNK, action));
+        joints
+            .par_chunks_mut(CHUNK)
+            .zip(bounds.par_chunks(CHUNK))
+            .zip(out.par_chunks_mut(CHUNK))
+            .enumerate()
+            .for_each(|(c, ((j, b), o))| law_chunk(j, b, o, inp, steps, c * CHUNK, action));
     }
     Ok(())
 }

@@ -20,7 +20,7 @@ use super::envelope::{lerp_log, solve_at, Envelope};
 use super::error::FidelityError;
 use super::evaluation::{Evaluation, Source};
 use super::rest::RestTable;
-use super::table::rest_evaluation;
+use super::table::{rest_evaluation, rest_torque};
 use crate::composite::RestYield;
 use crate::joint::Joint;
 
@@ -114,6 +114,14 @@ impl BoundaryLevel {
         } else {
             None
         }
+    }
+
+    /// The sliding torque (N·m) of [`Self::evaluate`] at (`load` > 0, `omega`), bit for bit its
+    /// `torque`, without the film; `None` where [`Self::evaluate`] is.
+    #[inline]
+    pub fn torque(&self, load: f64, omega: f64) -> Option<f64> {
+        let inside = self.envelope.contains(load, omega) || (omega == 0.0 && self.envelope.contains_load(load) && self.rest.contains(load));
+        inside.then(|| rest_torque(load, self.mu_c, self.radius, &self.rest_yield))
     }
 
     /// Largest errors measured against the complete solve over the envelope.

@@ -55,7 +55,7 @@ pub use envelope::Envelope;
 pub use error::FidelityError;
 pub use evaluation::{Evaluation, Source};
 pub use full::{WarmSolver, FULL_ERROR_BOUND};
-pub use table::{StribeckTable, TableStats};
+pub use table::{Located, StribeckTable, TableStats};
 
 use crate::joint::{Joint, OperatingPoint};
 use crate::params::Params;
@@ -322,6 +322,43 @@ impl Evaluator {
         }?;
         // A film beyond the clearance is the full solve's error to give.
         self.solver.joint().check_film(e.film_thickness, e.fluid_load_fraction, load, omega).ok().map(|()| e)
+    }
+
+    /// The torque of [`Evaluator::evaluate_inside`] alone: bit for bit
+    /// `evaluate_inside(load, omega).map(|e| e.torque)`, computing only what the torque needs
+    /// (for the presliding law's bound, e.g. `pinjoint::batch`). The film is checked against
+    /// the clearance only where [`Evaluator::evaluate_inside`] can refuse it: the paper's
+    /// model inside a table's envelope (at rest and in the boundary level the fluid carries
+    /// nothing, and the complete model's film is never refused).
+    #[inline]
+    pub fn torque_inside(&self, load: f64, omega: f64) -> Option<f64> {
+        self.torque_located(load, omega, self.locate_torque(load, omega))
+    }
+
+    /// [`Evaluator::torque_inside`] in two halves, for a caller with many points: locate
+    /// (`load` N, `omega` rad/s) now (at the table level its cell, brought into the cache
+    /// meanwhile: [`StribeckTable::locate_torque`]; [`Located::OUTSIDE`] at the other levels)
+    /// and answer with [`Evaluator::torque_located`] a little later, after locating a few
+    /// other points.
+    #[inline]
+    pub fn locate_torque(&self, load: f64, omega: f64) -> Located {
+        match &self.backend {
+            Backend::Table(t) if !self.joint().is_paper() => t.locate_torque(load.abs(), omega),
+            _ => Located::OUTSIDE,
+        }
+    }
+
+    /// The answer of [`Evaluator::torque_inside`] at (`load`, `omega`) located by
+    /// [`Evaluator::locate_torque`] as `at`, bit for bit.
+    #[inline]
+    pub fn torque_located(&self, load: f64, omega: f64, at: Located) -> Option<f64> {
+        let load = load.abs();
+        match &self.backend {
+            Backend::Table(t) if !self.joint().is_paper() => t.torque_located(load, omega, at),
+            Backend::Table(_) => self.evaluate_inside(load, omega).map(|e| e.torque),
+            Backend::Boundary(b) => b.torque(load, omega),
+            Backend::Full => None,
+        }
     }
 
     /// As [`Evaluator::evaluate`], completed into every output of the model

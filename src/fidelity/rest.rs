@@ -85,7 +85,13 @@ impl RestTable {
     /// h_c at rest (m), or `None` outside the load range.
     #[inline]
     pub fn film(&self, load: f64) -> Option<f64> {
-        (load >= self.load_min && load <= self.load_max).then(|| self.film_unchecked(load))
+        self.contains(load).then(|| self.film_unchecked(load))
+    }
+
+    /// Whether `load` (N) is inside the load range (where [`RestTable::film`] answers).
+    #[inline]
+    pub fn contains(&self, load: f64) -> bool {
+        load >= self.load_min && load <= self.load_max
     }
 
     /// h_c at rest (m) at the load clamped into the load range.

@@ -122,6 +122,9 @@ pub struct StribeckTable {
     z0: f64,
     inv_hz: f64,
     nz: usize,
+    /// nx − 1 and nz − 1, the last cell's indices, as floats.
+    last_x: f64,
+    last_z: f64,
     cells: Vec<Cell>,
     /// Per cell: answered by the complete solve (empty when no cell is).
     solve: Vec<bool>,
@@ -157,6 +160,40 @@ fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
     let cosh_s = op.logit.max(LOGIT_FLOOR).hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
     let share = op.fluid_load_fraction * op.asperity_load_fraction * cosh_s;
     (1.0 / mu, mu_c * share / mu, share, 1.0 / op.film_thickness)
+}
+
+/// A point located in a [`StribeckTable`] ([`StribeckTable::locate_torque`]): its cell and the
+/// local coordinates (t, u) ∈ [0, 1]² there, or outside the envelope.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Located {
+    cell: usize,
+    t: f64,
+    u: f64,
+}
+
+impl Located {
+    /// Outside the envelope (no cell).
+    pub const OUTSIDE: Located = Located { cell: usize::MAX, t: 0.0, u: 0.0 };
+}
+
+/// Ask the processor to bring the coefficients [`StribeckTable::torque_located`] reads (the
+/// first two patches of `cell`, 256 bytes: four cache lines, the cell being aligned to one)
+/// into its caches: a hint, no effect on any value; nothing on targets other than x86_64.
+#[inline(always)]
+fn prefetch_torque_patches(cell: &Cell) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        let p = std::ptr::from_ref(&cell.0[..2]).cast::<i8>();
+        for line in [0, 64, 128, 192] {
+            // SAFETY: a prefetch reads nothing the program sees and cannot fault (it is a
+            // hint, dropped for an unmapped address); the address is inside `cell`. SSE, its
+            // target feature, is part of every x86_64 target.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(p.wrapping_add(line)) };
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = cell;
 }
 
 impl StribeckTable {
@@ -316,6 +353,8 @@ impl StribeckTable {
             z0,
             inv_hz: 1.0 / hz,
             nz,
+            last_x: (nx - 1) as f64,
+            last_z: (nz - 1) as f64,
             cells,
             solve: Vec::new(),
             envelope: *env,
@@ -374,10 +413,11 @@ impl StribeckTable {
     fn locate(&self, load: f64, omega: f64) -> (usize, f64, f64) {
         let fx = (load.ln() - self.x0) * self.inv_hx;
         let fz = (omega.abs().ln() - self.z0) * self.inv_hz;
-        // `as usize` saturates, so a rounding to just below 0 gives cell 0.
-        let i = (fx as usize).min(self.nx - 1);
-        let j = (fz as usize).min(self.nz - 1);
-        (i * self.nz + j, fx - i as f64, fz - j as f64)
+        // The cell index ⌊f⌋ within 0 ..= n − 1 (a rounding to just below 0 gives cell 0, NaN
+        // too): clamped as a float first, so that the integer conversions are the short ones.
+        let i = fx.clamp(0.0, self.last_x) as i64;
+        let j = fz.clamp(0.0, self.last_z) as i64;
+        (i as usize * self.nz + j as usize, fx - i as f64, fz - j as f64)
     }
 
     /// Errors at `n` random points of the envelope, uniform in (ln P, ln |ω|).
@@ -394,17 +434,16 @@ impl StribeckTable {
         Ok(r)
     }
 
-    /// Interpolate at (load, |ω|) inside the envelope (not checked here).
+    /// μ_f, the logit y and the shares (x1, x2) at the local coordinates (t, u) of the cell
+    /// `c`: the part of the interpolation every path shares ([`Self::interpolate`],
+    /// [`Self::torque`]), so that their μ agrees bit for bit.
     #[inline(always)]
-    fn interpolate(&self, load: f64, omega: f64) -> Evaluation {
-        let (k, t, u) = self.locate(load, omega);
-        let c = &self.cells[k].0;
+    fn friction_parts(c: &[[f64; 16]; 3], t: f64, u: f64) -> (f64, f64, f64, f64) {
         // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
         let mu_f = bicubic(&c[0], t, u).max(0.0);
         // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
         let es = bicubic(&c[1], t, u).exp();
         let y = 0.5 * (es - 1.0 / es);
-        let h = bicubic(&c[2], t, u);
         // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
         let (x1, x2) = if y <= 0.0 {
             let e = y.exp();
@@ -415,6 +454,16 @@ impl StribeckTable {
             let x1 = 1.0 / (1.0 + e);
             (x1, e * x1)
         };
+        (mu_f, y, x1, x2)
+    }
+
+    /// Interpolate at (load, |ω|) inside the envelope (not checked here).
+    #[inline(always)]
+    fn interpolate(&self, load: f64, omega: f64) -> Evaluation {
+        let (k, t, u) = self.locate(load, omega);
+        let c = &self.cells[k].0;
+        let (mu_f, y, x1, x2) = Self::friction_parts(c, t, u);
+        let h = bicubic(&c[2], t, u);
         let mu_a = self.mu_c * x2;
         let mu = mu_f + mu_a;
         Evaluation {
@@ -433,6 +482,73 @@ impl StribeckTable {
             source: Source::Table,
             first_fallback: false,
         }
+    }
+
+    /// The sliding torque T = μ·R·P (N·m) of [`Self::evaluate`] at (`load` > 0, `omega`),
+    /// bit for bit its `torque`, and nothing else: the film, the other outputs and the
+    /// regime are not computed (two of the three patches, no `Evaluation`). `None` where
+    /// [`Self::evaluate`] is. For a caller that needs only the torque (the presliding law's
+    /// bound) of a model whose film is not checked against the clearance (the complete
+    /// model: see `Evaluator::torque_inside`).
+    #[inline]
+    pub fn torque(&self, load: f64, omega: f64) -> Option<f64> {
+        self.torque_located(load, omega, self.located(load, omega))
+    }
+
+    /// Where (`load`, `omega`) falls: its cell and the local coordinates there inside the
+    /// envelope, [`Located::OUTSIDE`] elsewhere.
+    #[inline(always)]
+    fn located(&self, load: f64, omega: f64) -> Located {
+        if self.envelope.contains(load, omega) {
+            let (cell, t, u) = self.locate(load, omega);
+            Located { cell, t, u }
+        } else {
+            Located::OUTSIDE
+        }
+    }
+
+    /// [`Self::torque`] in two halves, for a caller with many points: `locate_torque` finds
+    /// the cell and asks the processor to bring the coefficients the torque reads (its first
+    /// two patches, 256 bytes) into the cache; [`Self::torque_located`] answers. A caller that
+    /// locates a few points before answering them lets those loads overlap (a table of
+    /// thousands of cells is larger than a core's cache, and points of different joints fall
+    /// in unrelated cells).
+    #[inline]
+    pub fn locate_torque(&self, load: f64, omega: f64) -> Located {
+        let q = self.located(load, omega);
+        if let Some(cell) = self.cells.get(q.cell) {
+            prefetch_torque_patches(cell);
+        }
+        q
+    }
+
+    /// The torque of [`Self::torque`] at (`load` > 0, `omega`) located by
+    /// [`Self::locate_torque`] (of this table, at the same point), bit for bit. (A cell this
+    /// table does not have is located again.)
+    #[inline]
+    pub fn torque_located(&self, load: f64, omega: f64, q: Located) -> Option<f64> {
+        if q.cell != Located::OUTSIDE.cell {
+            let Some(cell) = self.cells.get(q.cell) else {
+                return self.torque_relocated(load, omega);
+            };
+            if self.solved(q.cell) {
+                return None;
+            }
+            let (mu_f, _, _, x2) = Self::friction_parts(&cell.0, q.t, q.u);
+            let mu = mu_f + self.mu_c * x2;
+            Some(mu * self.radius * load)
+        } else if omega == 0.0 {
+            self.rest.contains(load).then(|| rest_torque(load, self.mu_c, self.radius, &self.rest_yield))
+        } else {
+            None
+        }
+    }
+
+    /// [`Self::torque`], for a point located in another table.
+    #[cold]
+    #[inline(never)]
+    fn torque_relocated(&self, load: f64, omega: f64) -> Option<f64> {
+        self.torque(load, omega)
     }
 
     /// The interpolated point, or `None` outside the envelope and in the cells answered by
@@ -538,15 +654,30 @@ fn unresolved(errors: &[f64], nx: usize, nz: usize, target: f64) -> Vec<bool> {
     solve
 }
 
+/// μ_f (the grease's yield torque at rest over R·P; 0 for the paper's model) and μ = μ_f + μ_c
+/// of the rest state at `load` (N): the friction of [`rest_evaluation`], shared with
+/// [`rest_torque`] so that both agree bit for bit.
+#[inline(always)]
+fn rest_friction(load: f64, mu_c: f64, radius: f64, rest_yield: &RestYield) -> (f64, f64) {
+    // The grease's yield torque at rest (complete model; 0 for the paper's: μ = μ_c exactly),
+    // composed as the complete solve composes it at ω = 0.
+    let mu_f = rest_yield.at(load) / (radius * load);
+    (mu_f, mu_f + mu_c)
+}
+
+/// The torque μ·R·P (N·m) of [`rest_evaluation`] at `load` (N), bit for bit, without its
+/// film.
+#[inline(always)]
+pub(crate) fn rest_torque(load: f64, mu_c: f64, radius: f64, rest_yield: &RestYield) -> f64 {
+    rest_friction(load, mu_c, radius, rest_yield).1 * radius * load
+}
+
 /// The rest state (ω = 0): 1/γ1 = 0, 1/γ2 = 1, μ = μ_c plus the grease's yield torque over
 /// R·P (complete model), film `h`. Also the boundary level's
 /// answer at any speed (with `omega` as given).
 #[inline(always)]
 pub(crate) fn rest_evaluation(load: f64, h: f64, mu_c: f64, radius: f64, roughness: f64, rest_yield: &RestYield, source: Source) -> Evaluation {
-    // The grease's yield torque at rest (complete model; 0 for the paper's: μ = μ_c exactly),
-    // composed as the complete solve composes it at ω = 0.
-    let mu_f = rest_yield.at(load) / (radius * load);
-    let mu = mu_f + mu_c;
+    let (mu_f, mu) = rest_friction(load, mu_c, radius, rest_yield);
     Evaluation {
         load,
         angular_velocity: 0.0,
