@@ -71,45 +71,6 @@ pub fn ln_1p_unit(e: f64) -> f64 {
     base + 2.0 * f * series
 }
 
-/// ln 2 in two parts (fdlibm's): `LN2_HI` has trailing zero bits, so e·`LN2_HI` is exact for
-/// every binary exponent e of a double.
-#[allow(clippy::excessive_precision, clippy::unreadable_literal)]
-const LN2_HI: f64 = 6.93147180369123816490e-01;
-#[allow(clippy::excessive_precision, clippy::unreadable_literal)]
-const LN2_LO: f64 = 1.90821492927058770002e-10;
-
-/// ln x for a positive normal x, within a couple of units in the last place of `f64::ln`
-/// (`f64::ln` itself for 0, subnormals, negatives, ±∞ and NaN), inlined: the table levels'
-/// cell location takes ln P and ln |ω| at every evaluation (glibc's `log` with its wrapper
-/// was about a quarter of a table joint-step's instructions; callgrind, the batch).
-///
-/// Method: x = 2^e·m with m in [√½, √2); ln m = 2 atanh f, f = (m − 1)/(m + 1), |f| ≤
-/// 3 − 2√2, by the series of [`ln_1p_unit`] (remainder below 3e-17 relative); ln x =
-/// e·ln2_hi + (2f + (2f·s·(…) + e·ln2_lo)).
-#[inline]
-pub fn ln(x: f64) -> f64 {
-    if !(f64::MIN_POSITIVE..=f64::MAX).contains(&x) {
-        return x.ln();
-    }
-    let bits = x.to_bits();
-    let mut e = ((bits >> 52) as i64) - 1023;
-    let mut m = f64::from_bits((bits & 0x000f_ffff_ffff_ffff) | 0x3ff0_0000_0000_0000);
-    if m > std::f64::consts::SQRT_2 {
-        m *= 0.5;
-        e += 1;
-    }
-    let f = (m - 1.0) / (m + 1.0);
-    let s = f * f;
-    // 2 atanh f = 2f + 2f·s·(1/3 + s/5 + … + s⁸/19): the leading 2f exact, the rest a small
-    // correction (its rounding errors scaled down by s ≤ 0.03).
-    let (s2, p13, p57, p911, p1315, p1719) = (s * s, 1.0 / 3.0 + s * (1.0 / 5.0), 1.0 / 7.0 + s * (1.0 / 9.0), 1.0 / 11.0 + s * (1.0 / 13.0), 1.0 / 15.0 + s * (1.0 / 17.0), 1.0 / 19.0);
-    let s4 = s2 * s2;
-    let tail = (p13 + s2 * p57) + s4 * ((p911 + s2 * p1315) + s4 * p1719);
-    let two_f = 2.0 * f;
-    let ef = e as f64;
-    ef * LN2_HI + (two_f + (two_f * s * tail + ef * LN2_LO))
-}
-
 /// π/2 in three parts for the argument reduction of [`sin_cos`] (Cody and Waite, as in
 /// fdlibm): `PIO2_1` and `PIO2_2` carry 33 significant bits each, so k·`PIO2_1` and
 /// k·`PIO2_2` are exact for |k| < 2^20, and `PIO2_3` is the rest.
@@ -265,31 +226,6 @@ mod tests {
         assert!(worst <= 1.0, "worst {worst} ε");
         assert_eq!(ln_1p_unit(0.0), 0.0);
         assert!((ln_1p_unit(1.0) - std::f64::consts::LN_2).abs() <= f64::EPSILON);
-    }
-
-    #[test]
-    fn ln_agrees_with_the_library_to_two_ulps() {
-        let mut worst = 0;
-        // Every binade of the normal doubles, at irregular mantissas, and around 1.
-        let mut x = f64::MIN_POSITIVE;
-        while x < 1e308 {
-            for d in [1.0, 1.0 + 1e-15, 1.234_567_9, std::f64::consts::SQRT_2 * (1.0 - 1e-16), std::f64::consts::SQRT_2 * (1.0 + 2e-16), 1.732_05, 1.999_999_999_999_999_8] {
-                let v = x * d;
-                worst = worst.max(ulps(ln(v), v.ln()));
-            }
-            x *= 1.9;
-        }
-        for i in -2000..2000 {
-            let v = 1.0 + f64::from(i) * 3.3e-7;
-            worst = worst.max(ulps(ln(v), v.ln()));
-        }
-        assert!(worst <= 2, "worst {worst} ulp");
-        for v in [0.0, -0.0, -1.0, 1e-310, f64::INFINITY, f64::NEG_INFINITY, f64::NAN, f64::MAX, f64::MIN_POSITIVE] {
-            let (a, b) = (ln(v), v.ln());
-            assert!(a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()) || ulps(a, b) <= 2, "{v}: {a} vs {b}");
-        }
-        assert_eq!(ln(1.0), 0.0);
-        assert_eq!(ln(2.0), std::f64::consts::LN_2);
     }
 
     #[test]

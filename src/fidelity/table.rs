@@ -411,10 +411,8 @@ impl StribeckTable {
     /// The cell holding (load, |ω|) and the local coordinates in it.
     #[inline(always)]
     fn locate(&self, load: f64, omega: f64) -> (usize, f64, f64) {
-        // ln by crate::fast_math (within 2 ulp of the library's, inlined: every evaluation
-        // locates its cell).
-        let fx = (crate::fast_math::ln(load) - self.x0) * self.inv_hx;
-        let fz = (crate::fast_math::ln(omega.abs()) - self.z0) * self.inv_hz;
+        let fx = (load.ln() - self.x0) * self.inv_hx;
+        let fz = (omega.abs().ln() - self.z0) * self.inv_hz;
         // The cell index ⌊f⌋ within 0 ..= n − 1 (a rounding to just below 0 gives cell 0, NaN
         // too): clamped as a float first, so that the integer conversions are the short ones.
         let i = fx.clamp(0.0, self.last_x) as i64;
@@ -444,15 +442,15 @@ impl StribeckTable {
         // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
         let mu_f = bicubic(&c[0], t, u).max(0.0);
         // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
-        let es = crate::fast_math::exp(bicubic(&c[1], t, u));
+        let es = bicubic(&c[1], t, u).exp();
         let y = 0.5 * (es - 1.0 / es);
         // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
         let (x1, x2) = if y <= 0.0 {
-            let e = crate::fast_math::exp(y);
+            let e = y.exp();
             let x2 = 1.0 / (1.0 + e);
             (e * x2, x2)
         } else {
-            let e = crate::fast_math::exp(-y);
+            let e = (-y).exp();
             let x1 = 1.0 / (1.0 + e);
             (x1, e * x1)
         };
@@ -463,6 +461,13 @@ impl StribeckTable {
     #[inline(always)]
     fn interpolate(&self, load: f64, omega: f64) -> Evaluation {
         let (k, t, u) = self.locate(load, omega);
+        self.interpolate_at(load, omega, k, t, u)
+    }
+
+    /// [`Self::interpolate`] in the cell `k` at its local coordinates (t, u), as
+    /// [`Self::locate`] gives them.
+    #[inline(always)]
+    fn interpolate_at(&self, load: f64, omega: f64, k: usize, t: f64, u: f64) -> Evaluation {
         let c = &self.cells[k].0;
         let (mu_f, y, x1, x2) = Self::friction_parts(c, t, u);
         let h = bicubic(&c[2], t, u);
@@ -560,10 +565,12 @@ impl StribeckTable {
     #[inline]
     pub fn evaluate(&self, load: f64, omega: f64) -> Option<Evaluation> {
         if self.envelope.contains(load, omega) {
-            if self.solved(self.locate(load, omega).0) {
+            // Located once: the cell decides whether the table answers, then interpolates.
+            let (k, t, u) = self.locate(load, omega);
+            if self.solved(k) {
                 return None;
             }
-            Some(self.interpolate(load, omega))
+            Some(self.interpolate_at(load, omega, k, t, u))
         } else if omega == 0.0 {
             self.rest(load)
         } else {

@@ -22,6 +22,8 @@ fn errors(ev: &mut Evaluator, j: &Joint, pts: &[(f64, f64)], random: usize) -> E
 /// What one fidelity level (or cold/warm full solve) measured along the benchmark path of one envelope.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EvalResult {
+    /// The model: [`COMPLETE`] (the default parameters) or [`PAPER`] (`model.paper = true`).
+    pub model: &'static str,
     /// Name of the envelope (load and speed range) the path runs through, e.g. "rig: 5-60 kN, 0.01-10 rad/s".
     pub envelope: &'static str,
     /// The configuration measured: fidelity level, tolerance, cold or warm.
@@ -53,17 +55,31 @@ pub fn envelopes() -> [(&'static str, Envelope); 2] {
     ]
 }
 
-/// Measure every level over both envelopes. `quick`: fewer points and repetitions.
+/// The default parameters' model (the journal bearing, the grease in the clearance, the cold supply).
+pub const COMPLETE: &str = "complete";
+/// The paper's model (`[model] paper = true`), on which the earlier targets were set.
+pub const PAPER: &str = "model.paper";
+
+/// Measure every level over both envelopes, for the complete model and the paper's.
+/// `quick`: fewer points and repetitions.
 pub fn measure(quick: bool, progress: &dyn Fn(&str)) -> Vec<EvalResult> {
-    let params = Params::default();
+    let mut paper = Params::default();
+    paper.model.paper = true;
+    let mut out = measure_model(COMPLETE, Params::default(), quick, progress);
+    out.extend(measure_model(PAPER, paper, quick, progress));
+    out
+}
+
+fn measure_model(model: &'static str, params: Params, quick: bool, progress: &dyn Fn(&str)) -> Vec<EvalResult> {
     let j = Joint::new(&params).expect("default parameters are valid");
     let (n, reps, random) = if quick { (256, 3, 500) } else { (1024, 21, 20_000) };
     let tolerances: &[f64] = if quick { &[1e-3] } else { &[1e-2, 1e-3, 1e-4, 1e-5] };
     let mut out = Vec::new();
     for (name, env) in envelopes() {
         let pts = path(&env, n);
-        progress(&format!("per evaluation, {name}"));
+        progress(&format!("per evaluation, {model}, {name}"));
         let row = |label: String, ns: f64, r: &ErrorReport, bound: Option<f64>, build: f64, cells| EvalResult {
+            model,
             envelope: name,
             label,
             ns,

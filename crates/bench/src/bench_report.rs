@@ -57,16 +57,17 @@ fn floor(v: f64) -> f64 {
 
 fn eval_svg(r: &Report) -> Result<String> {
     let mut charts = Vec::new();
-    let mut envs: Vec<&str> = r.eval.iter().map(|x| x.envelope).collect();
+    // The complete model's (the default); the paper model's rows are in the table.
+    let mut envs: Vec<&str> = r.eval.iter().filter(|x| x.model == crate::bench_eval::COMPLETE).map(|x| x.envelope).collect();
     envs.dedup();
     for env in envs {
         let mut c = Chart::new(
-            format!("Per evaluation, {env}: time against largest relative error in μ (errors < 1e-10 drawn at 1e-10)"),
+            format!("Per evaluation, complete model, {env}: time against largest relative error in μ (errors < 1e-10 drawn at 1e-10)"),
             Axis::log("largest relative error in μ over the envelope [-]"),
             Axis::log("time per evaluation [ns]"),
         )
         .legend(Corner::UpperRight);
-        let rows: Vec<&EvalResult> = r.eval.iter().filter(|x| x.envelope == env).collect();
+        let rows: Vec<&EvalResult> = r.eval.iter().filter(|x| x.envelope == env && x.model == crate::bench_eval::COMPLETE).collect();
         let tables: Vec<(f64, f64)> = rows.iter().filter(|x| x.label.starts_with("table")).map(|x| (floor(x.mu_error), x.ns)).collect();
         if !tables.is_empty() {
             c = c.series(Series::line("table (tolerances 1e-2 .. 1e-5)", tables).styled(Style::LinePoints).coloured(1));
@@ -99,27 +100,31 @@ fn rig_svg(r: &Report) -> Result<String> {
     Ok(line_plot(&c, (1000, 650))?)
 }
 
-fn eval_section(r: &Report, md: &mut String) -> (String, String) {
+fn eval_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
     writeln!(md, "## Per evaluation\n\n![work-precision per evaluation](bench_evaluation.svg)\n").unwrap();
-    writeln!(md, "| envelope | level | ns / evaluation (median) | max rel. error μ | max rel. error torque | advertised bound | table cells (P × ω), size, build |").unwrap();
-    writeln!(md, "|---|---|---:|---:|---:|---:|---|").unwrap();
+    writeln!(md, "| model | envelope | level | ns / evaluation (median) | max rel. error μ | max rel. error torque | advertised bound | table cells (P × ω), size, build |").unwrap();
+    writeln!(md, "|---|---|---|---:|---:|---:|---:|---|").unwrap();
     for x in &r.eval {
         let cells = x.cells.map_or(String::new(), |(a, b, s)| format!("{a} × {b}, {} KiB, {:.0} ms", s / 1024, 1e3 * x.build_seconds));
         let bound = x.bound.map_or("1e-10 (solver)".into(), e);
-        writeln!(md, "| {} | {} | {:.0} | {} | {} | {} | {} |", x.envelope, x.label, x.ns, e(x.mu_error), e(x.torque_error), bound, cells).unwrap();
+        writeln!(md, "| {} | {} | {} | {:.0} | {} | {} | {} | {} |", x.model, x.envelope, x.label, x.ns, e(x.mu_error), e(x.torque_error), bound, cells).unwrap();
     }
     writeln!(
         md,
         "\nErrors are measured against the cold full solve on the timed path and on random points of the envelope \
          (warm and cold full agree to the solver's accuracy). Times are the median of repeated passes over a \
-         1024-point path through the envelope whose consecutive points are close, as in a time-stepping host.\n"
+         1024-point path through the envelope whose consecutive points are close, as in a time-stepping host. \
+         The complete model (the default) adds the journal weight, the clearance's grease and the cold supply to \
+         every solve; its table cells that the table's budget leaves unresolved are answered by the complete solve. \
+         The earlier targets were set on the paper's model (`model.paper`): both are measured.\n"
     )
     .unwrap();
     for x in r.eval.iter().filter(|x| x.bound.is_some_and(|b| x.mu_error.max(x.torque_error) > b)) {
         writeln!(
             md,
-            "**Finding:** {}, {}: the measured error {} on these points exceeds the level's advertised bound {} \
+            "**Finding:** {}, {}, {}: the measured error {} on these points exceeds the level's advertised bound {} \
              (measured by the level on its own check points){}.\n",
+            x.model,
             x.envelope,
             x.label,
             e(x.mu_error.max(x.torque_error)),
@@ -129,15 +134,23 @@ fn eval_section(r: &Report, md: &mut String) -> (String, String) {
         .unwrap();
     }
     let rig_env = r.eval.first().map_or("", |x| x.envelope);
-    let find = |l: &str| r.eval.iter().find(|x| x.envelope == rig_env && x.label == l);
-    let warm = find("full, warm").map_or("not measured".into(), |x| {
-        format!("{} — {:.0} ns per warm evaluation = {:.2} × the 1 µs target (cold: {:.0} ns)", met(x.ns < 1000.0), x.ns, x.ns / 1000.0, find("full, cold").map_or(f64::NAN, |c| c.ns))
-    });
-    let table = find("table 1e-4").map_or("not measured (--quick)".into(), |x| {
-        let ok = x.ns < 50.0 && x.mu_error <= 1e-4;
-        format!("{} — {:.0} ns = {:.2} × the 50 ns target, measured μ error {} (≤ 1e-4: {})", met(ok), x.ns, x.ns / 50.0, e(x.mu_error), x.mu_error <= 1e-4)
-    });
-    (warm, table)
+    let mut rows = Vec::new();
+    for model in [crate::bench_eval::COMPLETE, crate::bench_eval::PAPER] {
+        let find = |l: &str| r.eval.iter().find(|x| x.model == model && x.envelope == rig_env && x.label == l);
+        let warm = find("full, warm").map_or("not measured".into(), |x| {
+            format!("{} — {:.0} ns per warm evaluation = {:.2} × the 1 µs target (cold: {:.0} ns)", met(x.ns < 1000.0), x.ns, x.ns / 1000.0, find("full, cold").map_or(f64::NAN, |c| c.ns))
+        });
+        rows.push((format!("`full` warm-started < 1 µs per evaluation ({model})"), warm));
+    }
+    for model in [crate::bench_eval::COMPLETE, crate::bench_eval::PAPER] {
+        let find = |l: &str| r.eval.iter().find(|x| x.model == model && x.envelope == rig_env && x.label == l);
+        let table = find("table 1e-4").map_or("not measured (--quick)".into(), |x| {
+            let ok = x.ns < 50.0 && x.mu_error <= 1e-4;
+            format!("{} — {:.0} ns = {:.2} × the 50 ns target, measured μ error {} (≤ 1e-4: {})", met(ok), x.ns, x.ns / 50.0, e(x.mu_error), x.mu_error <= 1e-4)
+        });
+        rows.push((format!("`table` < 50 ns at 1e-4 relative error in μ ({model})"), table));
+    }
+    rows
 }
 
 fn rig_section(r: &Report, md: &mut String) -> String {
@@ -400,10 +413,12 @@ fn throughput_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
         "A whole `pinjoint sweep --input IN.csv --output OUT.csv` process (default full fidelity, {} rayon threads) over \
          {} rows log-uniform over 5–60 kN and 1e-3–100 rad/s (both signs), fastest of the repeats; peak resident memory \
          from the child's rusage. The model alone: the library's cold `Joint::evaluate` on one thread over the first \
-         rows of the same input.\n",
+         rows of the same input. The complete model (the default) and the paper's (`--params` with \
+         `[model] paper = true`, the model the SciPy reference implements) run the same rows, repeat by repeat.\n",
         t.threads, t.sweep.rows
     )
     .unwrap();
+    let paper_per_point = t.paper_sweep.seconds / t.paper_sweep.rows as f64;
     writeln!(md, "| measurement | value |\n|---|---:|").unwrap();
     writeln!(md, "| sweep, {} rows: wall time, whole process | {:.3} s |", t.sweep.rows, t.sweep.seconds).unwrap();
     writeln!(md, "| sweep, per row | {:.0} ns |", per_point * 1e9).unwrap();
@@ -411,10 +426,18 @@ fn throughput_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
     writeln!(md, "| sweep, {} rows: wall time; peak RSS | {:.3} s; {:.1} MiB |", t.small.rows, t.small.seconds, t.small.peak_rss_mib).unwrap();
     writeln!(md, "| library cold evaluation, one thread, per point on these rows | {:.0} ns |", t.model_ns).unwrap();
     writeln!(md, "| library cold evaluation, mixed regime (20 kN, 6 rad/s), median | {:.0} ns |", t.mixed_cold_ns).unwrap();
+    writeln!(md, "| model.paper: sweep, {} rows, whole process; per row | {:.3} s; {:.0} ns |", t.paper_sweep.rows, t.paper_sweep.seconds, paper_per_point * 1e9).unwrap();
+    writeln!(md, "| model.paper: library cold evaluation per point on these rows; mixed regime, median | {:.0} ns; {:.0} ns |", t.paper_model_ns, t.paper_mixed_cold_ns).unwrap();
     let mut rows = Vec::new();
     rows.push((
         format!("`pinjoint sweep` over {} rows at full fidelity ≤ 1.5 s whole-process", t.sweep.rows),
         format!("{} — {:.3} s = {:.2} × the target", met(t.sweep.seconds <= 1.5), t.sweep.seconds, t.sweep.seconds / 1.5),
+    ));
+    let floor = t.sweep.seconds / t.boundary_sweep.seconds;
+    writeln!(md, "| sweep at boundary fidelity (μ = μ_c, the floor), {} rows, whole process | {:.3} s |", t.boundary_sweep.rows, t.boundary_sweep.seconds).unwrap();
+    rows.push((
+        "`pinjoint sweep` at full fidelity ≤ 1.25 × the same sweep at boundary fidelity (its floor; complete model)".into(),
+        format!("{} — {floor:.3} × (full {:.3} s, boundary {:.3} s, fastest repeats)", met(floor <= 1.25), t.sweep.seconds, t.boundary_sweep.seconds),
     ));
     let rss = t.sweep.peak_rss_mib.max(t.small.peak_rss_mib);
     rows.push((
@@ -436,26 +459,37 @@ fn throughput_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
         Ok(s) => {
             writeln!(md, "| SciPy reference (benches/scipy_reference.py), per point over {} points | {:.3} ms |", s.points, 1e3 * s.seconds_per_point)
                 .unwrap();
-            writeln!(md, "| SciPy reference / library cold evaluation (model alone, one thread) | {:.0} × |", s.seconds_per_point * 1e9 / t.model_ns).unwrap();
-            writeln!(md, "| SciPy reference / whole sweep process, per point | {:.0} × |", s.seconds_per_point / per_point).unwrap();
+            writeln!(md, "| SciPy reference / library cold evaluation of model.paper (model alone, one thread) | {:.0} × |", s.seconds_per_point * 1e9 / t.paper_model_ns).unwrap();
+            writeln!(md, "| SciPy reference / whole sweep process of model.paper, per point | {:.0} × |", s.seconds_per_point / paper_per_point).unwrap();
             writeln!(
                 md,
                 "\nThe SciPy implementation ({}) is written from the paper's equations (F_3/2 by quadrature, \
                  Moes' film, eq. 19, brentq on the logit of the shares), independently of the Rust code; its largest \
-                 difference from the library over those points: {}.\n",
+                 difference from the library's model.paper sweep over those points: {}.\n",
                 s.versions, s.max_difference
             )
             .unwrap();
-            let ratio = s.seconds_per_point / per_point;
+            let ratio = s.seconds_per_point / paper_per_point;
             rows.push((
-                "sweep ≥ 2000 × the SciPy reference per point (same run)".into(),
-                format!("{} — {ratio:.0} × (SciPy {:.3} ms per point, sweep {:.0} ns per row)", met(ratio >= 2000.0), 1e3 * s.seconds_per_point, per_point * 1e9),
+                "sweep ≥ 2000 × the SciPy reference per point (same run; model.paper, the model SciPy implements)".into(),
+                format!(
+                    "{} — {ratio:.0} × (SciPy {:.3} ms per point, sweep {:.0} ns per row; the complete model's sweep {:.0} ns per row: {:.0} ×)",
+                    met(ratio >= 2000.0),
+                    1e3 * s.seconds_per_point,
+                    paper_per_point * 1e9,
+                    per_point * 1e9,
+                    s.seconds_per_point / per_point
+                ),
             ));
         }
     }
     rows.push((
-        "library cold evaluation ≤ 0.7 µs in the mixed regime".into(),
+        "library cold evaluation ≤ 0.7 µs in the mixed regime (complete)".into(),
         format!("{} — {:.0} ns = {:.2} × the target", met(t.mixed_cold_ns <= 700.0), t.mixed_cold_ns, t.mixed_cold_ns / 700.0),
+    ));
+    rows.push((
+        "library cold evaluation ≤ 0.7 µs in the mixed regime (model.paper)".into(),
+        format!("{} — {:.0} ns = {:.2} × the target", met(t.paper_mixed_cold_ns <= 700.0), t.paper_mixed_cold_ns, t.paper_mixed_cold_ns / 700.0),
     ));
     writeln!(md).unwrap();
     rows
@@ -475,7 +509,7 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     )
     .unwrap();
     let mut body = String::new();
-    let (warm, table) = eval_section(r, &mut body);
+    let eval_targets = eval_section(r, &mut body);
     let rig = rig_section(r, &mut body);
     let fmu = fmu_section(r, &mut body);
     let throughput = throughput_section(r, &mut body);
@@ -501,8 +535,9 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     };
     writeln!(md, "## Targets\n").unwrap();
     writeln!(md, "| target | result |\n|---|---|").unwrap();
-    writeln!(md, "| `full` warm-started < 1 µs per evaluation | {warm} |").unwrap();
-    writeln!(md, "| `table` < 50 ns at 1e-4 relative error in μ | {table} |").unwrap();
+    for (target, result) in &eval_targets {
+        writeln!(md, "| {target} | {result} |").unwrap();
+    }
     writeln!(md, "| one PinJoint FMU step through fmpy within 1.1 × the pass-through FMU's | {fmu} |").unwrap();
     writeln!(md, "| 10 strokes of the 1 Hz rig at 20 kN, torque error < 1e-4, in < 10 ms | {rig} |").unwrap();
     writeln!(md, "| a full-fidelity PinJoint step through fmpy within 1.10 × the same loop at boundary fidelity | {full_vs_boundary} |").unwrap();

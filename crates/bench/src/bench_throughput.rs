@@ -49,7 +49,16 @@ pub struct Throughput {
     pub mixed_cold_ns: f64,
     /// Worker threads of the rayon pool (the sweep's parallelism).
     pub threads: usize,
-    /// The SciPy reference, or why it could not run.
+    /// The same sweep at `--fidelity boundary` (μ = μ_c: the sweep's floor), fastest of the repeats.
+    pub boundary_sweep: SweepRun,
+    /// The same sweep with `[model] paper = true` (the model the SciPy reference implements),
+    /// fastest of the repeats.
+    pub paper_sweep: SweepRun,
+    /// Library cold evaluation of the paper's model, one thread, ns per point on the rows.
+    pub paper_model_ns: f64,
+    /// Library cold evaluation of the paper's model in the mixed regime, ns, median.
+    pub paper_mixed_cold_ns: f64,
+    /// The SciPy reference on the paper model's sweep output, or why it could not run.
     pub scipy: Result<Scipy, ThroughputError>,
 }
 
@@ -75,13 +84,11 @@ fn write_points(path: &Path, pts: &[(f64, f64)]) -> std::io::Result<()> {
 }
 
 /// Run `exe sweep` on `input` into `output`; its wall time and peak RSS (wait4's rusage).
-fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize) -> Result<SweepRun, ThroughputError> {
+fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize, extra: &[&std::ffi::OsStr]) -> Result<SweepRun, ThroughputError> {
     let t0 = Instant::now();
-    let child = Command::new(exe)
-        .args(["sweep", "--input"])
-        .arg(input)
-        .arg("--output")
-        .arg(output)
+    let mut cmd = Command::new(exe);
+    cmd.args(["sweep", "--input"]).arg(input).arg("--output").arg(output).args(extra);
+    let child = cmd
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
         .spawn()
@@ -156,15 +163,39 @@ pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str))
     write_points(&big_in, &pts).map_err(|source| ThroughputError::Write { path: big_in.clone(), source })?;
     write_points(&small_in, &pts[..rows / 10]).map_err(|source| ThroughputError::Write { path: small_in.clone(), source })?;
     progress(&format!("throughput: pinjoint sweep over {} and {} rows", rows / 10, rows));
-    let small = sweep_child(&exe, &small_in, &out, rows / 10)?;
-    let mut runs = Vec::new();
+    let small = sweep_child(&exe, &small_in, &out, rows / 10, &[])?;
+    let paper_toml = work.join("paper_model.toml");
+    std::fs::write(&paper_toml, "[model]\npaper = true\n").map_err(|source| ThroughputError::Write { path: paper_toml.clone(), source })?;
+    // Interleaved: the complete model's sweep, at boundary fidelity (its floor), and the
+    // paper's, repeat by repeat.
+    let (mut runs, mut boundary_runs, mut paper_runs) = (Vec::new(), Vec::new(), Vec::new());
+    let boundary: [&std::ffi::OsStr; 2] = ["--fidelity".as_ref(), "boundary".as_ref()];
+    let paper_args: [&std::ffi::OsStr; 2] = ["--params".as_ref(), paper_toml.as_os_str()];
     for _ in 0..reps {
-        runs.push(sweep_child(&exe, &big_in, &out, rows)?);
+        runs.push(sweep_child(&exe, &big_in, &out, rows, &[])?);
+        boundary_runs.push(sweep_child(&exe, &big_in, &out, rows, &boundary)?);
+        paper_runs.push(sweep_child(&exe, &big_in, &out, rows, &paper_args)?);
     }
-    let sweep = *runs.iter().min_by(|a, b| a.seconds.total_cmp(&b.seconds)).expect("at least one run");
-    let sweep = SweepRun { peak_rss_mib: runs.iter().map(|r| r.peak_rss_mib).fold(0.0, f64::max), ..sweep };
+    let fastest = |runs: &[SweepRun]| {
+        let f = *runs.iter().min_by(|a, b| a.seconds.total_cmp(&b.seconds)).expect("at least one run");
+        SweepRun { peak_rss_mib: runs.iter().map(|r| r.peak_rss_mib).fold(0.0, f64::max), ..f }
+    };
+    let (sweep, boundary_sweep, paper_sweep) = (fastest(&runs), fastest(&boundary_runs), fastest(&paper_runs));
     progress("throughput: library cold evaluation per point");
-    let j = Joint::new(&Params::default())?;
+    let mut paper = Params::default();
+    paper.model.paper = true;
+    let (model_ns, mixed_cold_ns) = cold_evaluation(&Joint::new(&Params::default())?, &pts, reps);
+    let (paper_model_ns, paper_mixed_cold_ns) = cold_evaluation(&Joint::new(&paper)?, &pts, reps);
+    progress("throughput: SciPy reference (model.paper)");
+    // The last sweep written was the paper model's: its output is what SciPy checks.
+    let scipy = scipy(python, &out, if quick { 20 } else { 300 });
+    let _ = [big_in, small_in, out, paper_toml].iter().try_for_each(std::fs::remove_file);
+    Ok(Throughput { sweep, small, model_ns, mixed_cold_ns, threads: rayon::current_num_threads(), boundary_sweep, paper_sweep, paper_model_ns, paper_mixed_cold_ns, scipy })
+}
+
+/// The library's cold evaluation of `j`, one thread: (ns per point over the first rows of
+/// `pts`, median of `reps`; ns in the mixed regime, 20 kN and 6 rad/s, median of 21).
+fn cold_evaluation(j: &Joint, pts: &[(f64, f64)], reps: usize) -> (f64, f64) {
     let n = pts.len().min(100_000);
     let model_ns = median(
         (0..reps.max(3))
@@ -190,8 +221,5 @@ pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str))
             })
             .collect(),
     );
-    progress("throughput: SciPy reference");
-    let scipy = scipy(python, &out, if quick { 20 } else { 300 });
-    let _ = [big_in, small_in, out].iter().try_for_each(std::fs::remove_file);
-    Ok(Throughput { sweep, small, model_ns, mixed_cold_ns, threads: rayon::current_num_threads(), scipy })
+    (model_ns, mixed_cold_ns)
 }
