@@ -10,7 +10,8 @@ does not set the angle, so angular_velocity * step drives the state) at every fi
 at full fidelity with the band ("full-band"), the stateless law. The inputs follow a 1 Hz, +-40 deg sine stroke at 20 kN +- 10 %, so the
 joint sweeps the speeds of the rig. The configurations are interleaved over the repeats
 (round-robin) so that drifts of a busy machine touch all alike; the fastest repeat of each is
-kept (the least disturbed), the median too. Prints one JSON object on standard output.
+kept (the least disturbed), the median too, and the paired ratios: the median over the repeats
+of two configurations' ratio within one repeat. Prints one JSON object on standard output.
 
 Two more PinJoint configurations at full fidelity set the `temperature` input too, at every
 step: "full-fixed-T" to the same 318.15 K each time (the fixed-temperature step), and
@@ -87,8 +88,18 @@ def main(argv):
                 times[name].append(s_per_step)
     out = {"steps": steps, "repeats": repeats, "step_size": h, "tolerance": tolerance,
            "fmpy": __import__("fmpy").__version__, "python": sys.version.split()[0], "results": {}}
+    # Paired ratios: in each repeat every configuration ran within a few seconds of the others
+    # (round-robin), so the ratio of two of them in one repeat cancels the machine's slow
+    # drifts; the median over the repeats is the estimate (the fastest of each configuration
+    # over independent repeats can pair a calm moment of one with a busy moment of another).
+    def paired(a, b):
+        r = sorted(x / y for x, y in zip(times[a], times[b]))
+        return r[len(r) // 2]
+    out["paired"] = {name: paired(name, "passthrough") for name in times}
+    out["paired_pairs"] = {f"{a}/{b}": paired(a, b) for a, b in
+                           [("full", "boundary"), ("full", "full-band"), ("full-warming", "full-fixed-T")]}
     for name, ts in times.items():
-        ts.sort()
+        ts = sorted(ts)
         out["results"][name] = {"min_ns": ts[0] * 1e9, "median_ns": ts[len(ts) // 2] * 1e9,
                                 "init_s": configs[name][3] if len(configs[name]) > 3 else None}
     for c in configs.values():

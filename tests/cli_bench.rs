@@ -39,9 +39,12 @@ fn bench_quick_writes_the_report_and_plots() {
     }
     // Measured numbers, not placeholders: the boundary level's μ error over the rig envelope is
     // large (the envelope reaches mixed lubrication) and the table's is within its tolerance.
-    let row = md.lines().find(|l| l.contains("| rig: 5-60 kN, 0.01-10 rad/s | table 1e-3 |")).expect("table row");
-    let mu: f64 = row.split('|').nth(4).unwrap().trim().parse().unwrap();
-    assert!(mu > 0.0 && mu <= 1e-3, "{row}");
+    // Both models: the complete one (the default) and the paper's (the earlier targets').
+    for model in ["complete", "model.paper"] {
+        let row = md.lines().find(|l| l.contains(&format!("| {model} | rig: 5-60 kN, 0.01-10 rad/s | table 1e-3 |"))).expect("table row");
+        let mu: f64 = row.split('|').nth(5).unwrap().trim().parse().unwrap();
+        assert!(mu > 0.0 && mu <= 1e-3, "{row}");
+    }
     for svg in ["bench_evaluation.svg", "bench_rig.svg"] {
         let s = std::fs::read_to_string(dir.path().join(svg)).unwrap();
         assert!(s.starts_with("<svg") && s.contains("</svg>") && s.len() > 2000, "{svg}");

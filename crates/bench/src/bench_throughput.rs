@@ -157,7 +157,9 @@ pub fn pinjoint_exe() -> Result<PathBuf, ThroughputError> {
 pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, ThroughputError> {
     let exe = pinjoint_exe()?;
     let rows = if quick { 10_000 } else { 1_000_000 };
-    let reps = if quick { 1 } else { 3 };
+    // Five interleaved repeats: the sweep against its floor is a ratio of two ~1 s processes on
+    // a noisy machine (three gave 1.07× and 1.27× within the hour).
+    let reps = if quick { 1 } else { 5 };
     let pts = points(rows);
     let (big_in, small_in, out) = (work.join("sweep_in.csv"), work.join("sweep_in_small.csv"), work.join("sweep_out.csv"));
     write_points(&big_in, &pts).map_err(|source| ThroughputError::Write { path: big_in.clone(), source })?;
