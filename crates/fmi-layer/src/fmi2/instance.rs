@@ -12,6 +12,7 @@
 
 use super::logging::{Category, Logger};
 use super::lookup::{Lookup, OutputCheck};
+use smallvec::SmallVec;
 use crate::error::{CallError, NotSettable, OutputBound, VariableName};
 use super::model::Model;
 use super::snapshot::Snapshot;
@@ -20,6 +21,9 @@ use super::types::Status;
 use super::variables::{Causality, Kind, ModelInfo, Variability};
 
 const TAG: u64 = 0x504a_464d_4932_4f4b;
+
+/// Value references a get or set call holds inline (more spill to the heap).
+const INLINE: usize = 8;
 
 /// The outcome of an instance method: the status to return, or the error that the caller
 /// logs and returns as `fmi2Error`.
@@ -155,22 +159,21 @@ impl Instance {
 
     /// As [`Instance::set_values`], the k-th value given by `value(k)`, which may refuse it
     /// (a C value the type cannot hold). Every value is converted, then every variable looked
-    /// up and checked, before any is stored; the values are converted again to be stored
-    /// (cheap), so that no call allocates.
+    /// up and checked, before any is stored. A host's few values are held inline: no call
+    /// allocates.
     pub fn set_values_by(&mut self, kind: Kind, vrs: &[u32], value: impl Fn(usize) -> Result<f64, CallError>) -> CallResult {
-        for k in 0..vrs.len() {
-            value(k)?;
-        }
-        for (k, &vr) in vrs.iter().enumerate() {
+        let vals = (0..vrs.len()).map(&value).collect::<Result<SmallVec<[f64; INLINE]>, _>>()?;
+        let mut idx: SmallVec<[usize; INLINE]> = SmallVec::with_capacity(vrs.len());
+        for (&vr, &x) in vrs.iter().zip(&vals) {
             let i = self.lookup_kind(vr, kind)?;
             self.check_settable(i)?;
-            self.model.check_real(i, value(k)?)?;
+            self.model.check_real(i, x)?;
+            idx.push(i);
         }
-        for (k, &vr) in vrs.iter().enumerate() {
-            let i = self.lookup_kind(vr, kind)?;
-            self.model.set_real(i, value(k)?);
+        for (&i, &x) in idx.iter().zip(&vals) {
+            self.model.set_real(i, x);
         }
-        if !vrs.is_empty() {
+        if !idx.is_empty() {
             self.outputs_current = false;
         }
         Ok(Status::Ok)
@@ -240,10 +243,10 @@ impl Instance {
     /// The first output (in table order) out of range, every output computed: what a failed
     /// step names as its cause when the outputs already were.
     fn first_output_out_of_range(&mut self) -> Option<CallError> {
-        for k in 0..self.lookup.outputs().len() {
-            let o = self.lookup.outputs()[k];
+        let lookup = &self.lookup;
+        for o in lookup.outputs() {
             self.model.prepare_read(o.index);
-            if let Err(e) = self.check_output(&o, self.model.get_real(o.index)) {
+            if let Err(e) = self.check_output(o, self.model.get_real(o.index)) {
                 return Some(e);
             }
         }
@@ -265,30 +268,33 @@ impl Instance {
     }
 
     /// As [`Instance::get_values`], the k-th value handed to `put(k, value)` (after every
-    /// value reference was found: on an error nothing is put). Allocates nothing.
+    /// value reference was found and every output read checked: on an error nothing is put).
+    /// A host's few values are held inline: no call allocates.
     pub fn get_values_by(&mut self, kind: Kind, vrs: &[u32], mut put: impl FnMut(usize, f64)) -> CallResult {
-        let mut computed = false;
+        // Each variable's index, and whether the model computes it (output or local).
+        let mut idx: SmallVec<[(usize, bool); INLINE]> = SmallVec::with_capacity(vrs.len());
         for &vr in vrs {
             let i = self.lookup_kind(vr, kind)?;
-            computed |= matches!(self.info.variables[i].causality, Causality::Output | Causality::Local);
+            idx.push((i, matches!(self.info.variables[i].causality, Causality::Output | Causality::Local)));
         }
-        if computed {
+        if idx.iter().any(|&(_, computed)| computed) {
             self.update_outputs()?;
-            // Outputs the model deferred are computed, and every output read is checked,
-            // before any value is put.
-            for &vr in vrs {
-                let i = self.lookup_kind(vr, kind)?;
-                if let Some(&o) = self.lookup.output(i) {
-                    self.model.prepare_read(i);
-                    self.check_output(&o, self.model.get_real(i))?;
-                } else if self.info.variables[i].causality == Causality::Local {
-                    self.model.prepare_read(i);
-                }
-            }
         }
-        for (k, &vr) in vrs.iter().enumerate() {
-            let i = self.lookup_kind(vr, kind)?;
-            put(k, self.model.get_real(i));
+        // Outputs the model deferred are computed, and every output read is checked, before
+        // any value is put.
+        let mut vals: SmallVec<[f64; INLINE]> = SmallVec::with_capacity(idx.len());
+        for &(i, computed) in &idx {
+            if computed {
+                self.model.prepare_read(i);
+            }
+            let x = self.model.get_real(i);
+            if let Some(o) = self.lookup.output(i) {
+                self.check_output(o, x)?;
+            }
+            vals.push(x);
+        }
+        for (k, x) in vals.into_iter().enumerate() {
+            put(k, x);
         }
         Ok(Status::Ok)
     }

@@ -24,18 +24,22 @@ pub struct OutputCheck {
     pub max: Option<f64>,
 }
 
-/// The index of a model's variable table by value reference, and its outputs.
-#[derive(Debug, Clone, Default)]
-pub struct Lookup {
+/// How value references map to table indices.
+#[derive(Debug, Clone)]
+enum Index {
+    /// `dense[vr]` = table index + 1 (0: no such variable): the largest value reference is
+    /// small against the table ([`DENSE_SLACK`]).
+    Dense(Vec<u32>),
     /// (value reference, table index), sorted by value reference.
-    by_vr: Vec<(u32, usize)>,
-    /// `dense[vr]` = table index + 1 (0: no such variable), when the largest value reference
-    /// is small against the table ([`DENSE_SLACK`]); empty otherwise.
-    dense: Vec<u32>,
-    /// The outputs in table order.
-    outputs: Vec<OutputCheck>,
-    /// `output_at[i]`: the position in `outputs` of table index i, if it is an output.
-    output_at: Vec<Option<u32>>,
+    Sorted(Vec<(u32, usize)>),
+}
+
+/// The index of a model's variable table by value reference, and its outputs.
+#[derive(Debug, Clone)]
+pub struct Lookup {
+    index: Index,
+    /// By table index: the output's check, `None` for a variable that is not an output.
+    outputs: Vec<Option<OutputCheck>>,
 }
 
 impl Lookup {
@@ -47,48 +51,44 @@ impl Lookup {
         by_vr.sort_by_key(|&(vr, _)| vr);
         by_vr.dedup_by_key(|&mut (vr, _)| vr);
         let top = by_vr.last().map_or(0, |&(vr, _)| vr as usize);
-        let mut dense = Vec::new();
-        if top < DENSE_SLACK * (by_vr.len() + 1) {
-            dense = vec![0u32; top + 1];
+        let index = if top < DENSE_SLACK * (by_vr.len() + 1) {
+            let mut dense = vec![0u32; top + 1];
             for &(vr, i) in &by_vr {
                 dense[vr as usize] = u32::try_from(i + 1).unwrap_or(0);
             }
-        }
-        let outputs: Vec<OutputCheck> = info
+            Index::Dense(dense)
+        } else {
+            Index::Sorted(by_vr)
+        };
+        let outputs = info
             .variables
             .iter()
             .enumerate()
-            .filter(|(_, v)| v.causality == Causality::Output)
-            .map(|(index, v)| OutputCheck { index, min: v.min, max: v.max })
+            .map(|(index, v)| (v.causality == Causality::Output).then_some(OutputCheck { index, min: v.min, max: v.max }))
             .collect();
-        let mut output_at = vec![None; info.variables.len()];
-        for (k, o) in outputs.iter().enumerate() {
-            output_at[o.index] = u32::try_from(k).ok();
-        }
-        Lookup { by_vr, dense, outputs, output_at }
+        Lookup { index, outputs }
     }
 
     /// The table index of the variable with value reference `vr`.
     #[inline]
     pub fn index_of(&self, vr: u32) -> Option<usize> {
-        if !self.dense.is_empty() {
-            return match self.dense.get(vr as usize) {
+        match &self.index {
+            Index::Dense(dense) => match dense.get(vr as usize) {
                 Some(&i) if i > 0 => Some(i as usize - 1),
                 _ => None,
-            };
+            },
+            Index::Sorted(by_vr) => by_vr.binary_search_by_key(&vr, |&(r, _)| r).ok().map(|k| by_vr[k].1),
         }
-        self.by_vr.binary_search_by_key(&vr, |&(r, _)| r).ok().map(|k| self.by_vr[k].1)
     }
 
     /// The outputs, in table order.
-    #[inline]
-    pub fn outputs(&self) -> &[OutputCheck] {
-        &self.outputs
+    pub fn outputs(&self) -> impl Iterator<Item = &OutputCheck> {
+        self.outputs.iter().flatten()
     }
 
     /// The output at table index `index`, if it is one.
     #[inline]
     pub fn output(&self, index: usize) -> Option<&OutputCheck> {
-        self.output_at.get(index).copied().flatten().map(|k| &self.outputs[k as usize])
+        self.outputs.get(index).and_then(Option::as_ref)
     }
 }

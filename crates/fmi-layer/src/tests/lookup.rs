@@ -12,7 +12,7 @@ fn agrees_with_a_scan(info: &ModelInfo) {
         assert_eq!(l.index_of(vr), info.index_of(vr), "vr {vr}");
     }
     let outputs: Vec<usize> = info.variables.iter().enumerate().filter(|(_, v)| v.causality == Causality::Output).map(|(i, _)| i).collect();
-    assert_eq!(l.outputs().iter().map(|o| o.index).collect::<Vec<_>>(), outputs);
+    assert_eq!(l.outputs().map(|o| o.index).collect::<Vec<_>>(), outputs);
     for o in l.outputs() {
         assert_eq!((o.min, o.max), (info.variables[o.index].min, info.variables[o.index].max));
     }
