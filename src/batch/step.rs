@@ -7,25 +7,30 @@ use super::error::BatchError;
 use super::inputs::{finite, Inputs};
 use super::model::Model;
 use crate::fidelity::Located;
-use crate::zero_velocity::PreslidingJoint;
+use super::joints::{self, Joints, State};
+use crate::zero_velocity::{Presliding, PreslidingJoint};
 use rayon::prelude::*;
 
 /// Joints handed to one rayon task; below two chunks the work stays on the calling thread.
 pub const CHUNK: usize = 512;
 
-/// One joint's last sliding torque and the inputs it was computed at (kept apart from the
-/// joint's state: the first pass reads and writes these alone).
-#[derive(Debug, Clone, Copy)]
-pub struct Bound {
-    /// Bits of the (load, angular velocity, temperature) of `value`; load NaN: none yet.
-    key: [u64; 3],
-    /// The sliding torque at `key` (N·m).
-    pub value: f64,
+/// Each joint's last sliding torque and the inputs it was computed at, apart from the joints'
+/// states (the first pass reads and writes these alone) and in two arrays (the second pass
+/// reads the torques alone).
+#[derive(Debug, Clone)]
+pub struct Bounds {
+    /// Per joint, the bits of the (load, angular velocity, temperature) of its `values` entry;
+    /// load NaN: none yet.
+    keys: Vec<[u64; 3]>,
+    /// Per joint, the sliding torque at its key (N·m).
+    values: Vec<f64>,
 }
 
-impl Bound {
-    /// No sliding torque computed yet.
-    pub const NONE: Bound = Bound { key: [0x7ff8_0000_0000_0000, 0, 0], value: f64::NAN };
+impl Bounds {
+    /// No sliding torque computed yet, for `n` joints.
+    pub fn new(n: usize) -> Self {
+        Bounds { keys: vec![[0x7ff8_0000_0000_0000, 0, 0]; n], values: vec![f64::NAN; n] }
+    }
 }
 
 /// What the second pass does with each joint's sliding torque.
@@ -76,15 +81,15 @@ pub const BLOCK: usize = 8;
 /// located in its model ([`Model::locate`]), then those are answered in order
 /// ([`Model::sliding_torque_located`]); the error of the lowest joint index is the one
 /// returned, as when each joint is checked then answered in turn.
-fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
-    let end = offset + bounds.len();
+fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+    let end = offset + keys.len();
     let (loads, omegas) = (&inp.load[offset..end], &inp.angular_velocity[offset..end]);
     // The model of the previous joint's slot (most joints share one): looked up once a run.
     let mut current: (u32, Option<&Model>, u64) = (u32::MAX, None, 0);
     // The joints of a block to answer: index in the chunk, located point.
     let mut todo = [(0, Located::OUTSIDE); BLOCK];
-    for first in (0..bounds.len()).step_by(BLOCK) {
-        let last = (first + BLOCK).min(bounds.len());
+    for first in (0..keys.len()).step_by(BLOCK) {
+        let last = (first + BLOCK).min(keys.len());
         let (mut pending, mut bad) = (0, None);
         for k in first..last {
             let i = offset + k;
@@ -100,7 +105,7 @@ fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inpu
             }
             // Compared word by word (an array built on the stack and compared whole is read back
             // wider than it was written: a stalled load).
-            let old = &bounds[k].key;
+            let old = &keys[k];
             if load.to_bits() != old[0] || omega.to_bits() != old[1] || current.2 != old[2] {
                 todo[pending] = (k, current.1.expect("set above").locate(load, omega));
                 pending += 1;
@@ -112,7 +117,7 @@ fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inpu
                 current = (slot, Some(models.get(slot)), models.key(slot).1);
             }
             match current.1.expect("set above").sliding_torque_located(load, omega, at) {
-                Ok(value) => bounds[k] = Bound { key: [load.to_bits(), omega.to_bits(), current.2], value },
+                Ok(value) => (keys[k], values[k]) = ([load.to_bits(), omega.to_bits(), current.2], value),
                 Err(source) => return Some((offset + k, BatchError::Model { index: offset + k, source })),
             }
         }
@@ -126,7 +131,7 @@ fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inpu
 /// Commit joint `i` at its input angle with the sliding torque `bound`:
 /// `PreslidingJoint::commit`, or with the host's step `PreslidingJoint::commit_step` (ω·h
 /// the next increment is read against, the damping cap).
-#[inline]
+#[inline(always)]
 fn commit(j: &mut PreslidingJoint, bound: f64, inp: &Inputs, steps: Option<&[f64]>, i: usize) {
     match steps {
         Some(h) => j.commit_step(inp.angle[i], inp.angular_velocity[i], bound, h[i]),
@@ -134,27 +139,28 @@ fn commit(j: &mut PreslidingJoint, bound: f64, inp: &Inputs, steps: Option<&[f64
     }
 }
 
+/// The joints of a chunk: the law, their states and waiting flags, their host inertia when
+/// set per joint.
+struct Chunk<'a> {
+    law: &'a Presliding,
+    states: &'a mut [State],
+    unreferenced: &'a mut [bool],
+    inertia: Option<&'a [f64]>,
+}
+
 /// The law on a chunk (every bound computed).
-fn law_chunk(joints: &mut [PreslidingJoint], bounds: &[Bound], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
-    for (k, (j, b)) in joints.iter_mut().zip(bounds).enumerate() {
-        let (i, bound) = (offset + k, b.value);
+fn law_chunk(c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
+    for (k, ((s, u), &bound)) in c.states.iter_mut().zip(c.unreferenced.iter_mut()).zip(bounds).enumerate() {
+        let i = offset + k;
+        let mut j = joints::joint(c.law, s, *u, c.inertia.map(|v| v[k]));
         match action {
             Action::Torque => out[k] = j.torque_at(inp.angle[i], inp.angular_velocity[i], bound),
-            Action::Commit => commit(j, bound, inp, steps, i),
-            Action::Step => {
-                // `torque_at` then `commit` (or `commit_step`) at one angle and bound, the held
-                // torque computed once: `torque_at` is `law.torque(held_at(..), ..)`, and a
-                // commit stores `held_at(..)` at the angle (`set_state`), plus the host's step
-                // (`set_last_step`) for `commit_step`.
-                let (angle, omega) = (inp.angle[i], inp.angular_velocity[i]);
-                let held = j.held_at(angle, bound);
-                out[k] = j.law().torque(held, omega, bound);
-                j.set_state(held, angle);
-                if let Some(h) = steps {
-                    j.set_last_step(h[i], omega, false);
-                }
-            }
+            Action::Commit => commit(&mut j, bound, inp, steps, i),
+            Action::Step => out[k] = j.step(inp.angle[i], inp.angular_velocity[i], bound, steps.map(|h| h[i])),
             Action::Bound => out[k] = bound,
+        }
+        if matches!(action, Action::Commit | Action::Step) {
+            joints::store(&j, s, u);
         }
     }
 }
@@ -165,36 +171,40 @@ fn law_chunk(joints: &mut [PreslidingJoint], bounds: &[Bound], out: &mut [f64], 
 /// state has changed. `out` has one value per joint (unused by [`Action::Commit`]: it may be
 /// empty then).
 #[allow(clippy::too_many_arguments)]
-pub fn run(joints: &mut [PreslidingJoint], bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
+pub fn run(joints: &mut Joints, bounds: &mut Bounds, slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
     let n = joints.len();
     let angle = action != Action::Bound;
     let err = if n < 2 * CHUNK {
-        bounds_chunk(bounds, slots, models, inp, steps, 0, angle)
+        bounds_chunk(&mut bounds.keys, &mut bounds.values, slots, models, inp, steps, 0, angle)
     } else {
         bounds
+            .keys
             .par_chunks_mut(CHUNK)
+            .zip(bounds.values.par_chunks_mut(CHUNK))
             .zip(slots.par_chunks(CHUNK))
             .enumerate()
-            .filter_map(|(c, (b, s))| bounds_chunk(b, s, models, inp, steps, c * CHUNK, angle))
+            .filter_map(|(c, ((k, v), s))| bounds_chunk(k, v, s, models, inp, steps, c * CHUNK, angle))
             .min_by_key(|(i, _)| *i)
     };
     if let Some((_, e)) = err {
         return Err(e);
     }
-    let bounds = &*bounds;
+    let bounds = &bounds.values[..];
     let out_len = if action == Action::Commit { 0 } else { n };
     let out = &mut out[..out_len];
+    let (law, states, unreferenced, inertia) = joints.parts_mut();
     if n < 2 * CHUNK {
-        law_chunk(joints, bounds, out, inp, steps, 0, action);
-    } else if action == Action::Commit {
-        joints.par_chunks_mut(CHUNK).zip(bounds.par_chunks(CHUNK)).enumerate().for_each(|(c, (j, b))| law_chunk(j, b, &mut [], inp, steps, c * CHUNK, action));
+        law_chunk(Chunk { law, states, unreferenced, inertia }, bounds, out, inp, steps, 0, action);
     } else {
-        joints
-            .par_chunks_mut(CHUNK)
-            .zip(bounds.par_chunks(CHUNK))
-            .zip(out.par_chunks_mut(CHUNK))
-            .enumerate()
-            .for_each(|(c, ((j, b), o))| law_chunk(j, b, o, inp, steps, c * CHUNK, action));
+        let inertia_of = |c: usize| inertia.map(|v| &v[c * CHUNK..((c + 1) * CHUNK).min(n)]);
+        let chunks = states.par_chunks_mut(CHUNK).zip(unreferenced.par_chunks_mut(CHUNK)).zip(bounds.par_chunks(CHUNK)).enumerate();
+        if action == Action::Commit {
+            chunks.for_each(|(c, ((states, unreferenced), b))| law_chunk(Chunk { law, states, unreferenced, inertia: inertia_of(c) }, b, &mut [], inp, steps, c * CHUNK, action));
+        } else {
+            chunks.zip(out.par_chunks_mut(CHUNK)).for_each(|((c, ((states, unreferenced), b)), o)| {
+                law_chunk(Chunk { law, states, unreferenced, inertia: inertia_of(c) }, b, o, inp, steps, c * CHUNK, action);
+            });
+        }
     }
     Ok(())
 }

@@ -62,7 +62,7 @@ use super::check::{CheckRng, ErrorReport};
 use super::envelope::{solve_at, Envelope};
 use super::error::FidelityError;
 use super::evaluation::{regime_from_shares, Evaluation, Source};
-use super::hermite::{bicubic, bicubic_coefficients, central_slope, fourth_difference};
+use super::hermite::{bicubic, bicubic_coefficients, bicubic_pair, central_slope, fourth_difference};
 use super::rest::RestTable;
 use crate::composite::RestYield;
 use crate::joint::Joint;
@@ -86,10 +86,22 @@ pub const MAX_SOLVED_SHARE: f64 = 0.25;
 /// Initial grid step in ln P and ln |ω|.
 const INITIAL_STEP: f64 = 0.5;
 
-/// One cell: the bicubic coefficients of μ_f, asinh y and h_c.
+/// One cell: the bicubic coefficients of μ_f and asinh y interleaved (`friction[i]` is
+/// coefficient i of each: evaluated together, a pair per operation, [`bicubic_pair`]), then
+/// those of h_c.
 #[derive(Debug, Clone, Copy)]
-#[repr(align(64))]
-struct Cell([[f64; 16]; 3]);
+#[repr(C, align(64))]
+struct Cell {
+    friction: [[f64; 2]; 16],
+    film: [f64; 16],
+}
+
+impl Cell {
+    /// The cell of the patches of μ_f, asinh y and h_c (power coefficients, [`bicubic_coefficients`]).
+    fn new([mu_f, s, film]: [[f64; 16]; 3]) -> Self {
+        Cell { friction: std::array::from_fn(|i| [mu_f[i], s[i]]), film }
+    }
+}
 
 /// What a table build cost and produced.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -184,7 +196,7 @@ fn prefetch_torque_patches(cell: &Cell) {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        let p = std::ptr::from_ref(&cell.0[..2]).cast::<i8>();
+        let p = std::ptr::from_ref(&cell.friction).cast::<i8>();
         for line in [0, 64, 128, 192] {
             // SAFETY: a prefetch reads nothing the program sees and cannot fault (it is a
             // hint, dropped for an unmapped address); the address is inside `cell`. SSE, its
@@ -341,7 +353,7 @@ impl StribeckTable {
                 let corner = |s: &[[f64; 3]], v: usize| {
                     [[s[idx(a, b)][v], s[idx(a, b + 1)][v]], [s[idx(a + 1, b)][v], s[idx(a + 1, b + 1)][v]]]
                 };
-                cells.push(Cell(std::array::from_fn(|v| {
+                cells.push(Cell::new(std::array::from_fn(|v| {
                     bicubic_coefficients(corner(&q, v), corner(&sx, v), corner(&sz, v), corner(&sxz, v))
                 })));
             }
@@ -411,13 +423,16 @@ impl StribeckTable {
     /// The cell holding (load, |ω|) and the local coordinates in it.
     #[inline(always)]
     fn locate(&self, load: f64, omega: f64) -> (usize, f64, f64) {
-        let fx = (load.ln() - self.x0) * self.inv_hx;
-        let fz = (omega.abs().ln() - self.z0) * self.inv_hz;
+        let fx = (crate::fast_ln::ln(load) - self.x0) * self.inv_hx;
+        let fz = (crate::fast_ln::ln(omega.abs()) - self.z0) * self.inv_hz;
         // The cell index ⌊f⌋ within 0 ..= n − 1 (a rounding to just below 0 gives cell 0, NaN
-        // too): clamped as a float first, so that the integer conversions are the short ones.
-        let i = fx.clamp(0.0, self.last_x) as i64;
-        let j = fz.clamp(0.0, self.last_z) as i64;
-        (i as usize * self.nz + j as usize, fx - i as f64, fz - j as f64)
+        // too: `max` answers 0 for NaN), bounded as a float first.
+        let (i, j) = (fx.max(0.0).min(self.last_x), fz.max(0.0).min(self.last_z));
+        // SAFETY: i and j are numbers (never NaN, above) in [0, n − 1] with n ≤ MAX_CELLS < 2^32:
+        // truncating them to u32 is defined (the checked `as` conversion adds a saturation the
+        // values never need).
+        let (i, j) = unsafe { (i.to_int_unchecked::<u32>(), j.to_int_unchecked::<u32>()) };
+        (i as usize * self.nz + j as usize, fx - f64::from(i), fz - f64::from(j))
     }
 
     /// Errors at `n` random points of the envelope, uniform in (ln P, ln |ω|).
@@ -438,11 +453,12 @@ impl StribeckTable {
     /// `c`: the part of the interpolation every path shares ([`Self::interpolate`],
     /// [`Self::torque`]), so that their μ agrees bit for bit.
     #[inline(always)]
-    fn friction_parts(c: &[[f64; 16]; 3], t: f64, u: f64) -> (f64, f64, f64, f64) {
+    fn friction_parts(c: &Cell, t: f64, u: f64) -> (f64, f64, f64, f64) {
+        let [mu_f, s] = bicubic_pair(&c.friction, t, u);
         // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
-        let mu_f = bicubic(&c[0], t, u).max(0.0);
+        let mu_f = mu_f.max(0.0);
         // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
-        let es = bicubic(&c[1], t, u).exp();
+        let es = s.exp();
         let y = 0.5 * (es - 1.0 / es);
         // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
         let (x1, x2) = if y <= 0.0 {
@@ -468,9 +484,9 @@ impl StribeckTable {
     /// [`Self::locate`] gives them.
     #[inline(always)]
     fn interpolate_at(&self, load: f64, omega: f64, k: usize, t: f64, u: f64) -> Evaluation {
-        let c = &self.cells[k].0;
+        let c = &self.cells[k];
         let (mu_f, y, x1, x2) = Self::friction_parts(c, t, u);
-        let h = bicubic(&c[2], t, u);
+        let h = bicubic(&c.film, t, u);
         let mu_a = self.mu_c * x2;
         let mu = mu_f + mu_a;
         Evaluation {
@@ -541,7 +557,7 @@ impl StribeckTable {
             if self.solved(q.cell) {
                 return None;
             }
-            let (mu_f, _, _, x2) = Self::friction_parts(&cell.0, q.t, q.u);
+            let (mu_f, _, _, x2) = Self::friction_parts(cell, q.t, q.u);
             let mu = mu_f + self.mu_c * x2;
             Some(mu * self.radius * load)
         } else if omega == 0.0 {
