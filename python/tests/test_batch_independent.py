@@ -381,3 +381,50 @@ def test_n_zero_and_n_one():
         o.commit(ang, w, p, step=1e-3)
         got = b.step(ang, w, p, step=1e-3)
         assert got.shape == (1,) and bits(got[0]) == bits(want)
+
+
+def test_scene_uncertainty_cold_day_reproducible_local_and_on_a_local_cluster(tmp_path, monkeypatch):
+    """examples/scene_uncertainty.py at the cold day (-54 C) with distributions given by the
+    user: the same seed gives the same files, on a 2-worker LocalCluster too; the summary's
+    percentiles are the samples' (recomputed here by sorting); each sample's results are
+    those of its scene run alone (a function of its own parameters: chunking changes
+    nothing); another chunking gives the same files."""
+    from conftest import ROOT, load_example
+
+    monkeypatch.syspath_prepend(str(ROOT / "examples"))
+    monkeypatch.setenv("PYTHONPATH", str(ROOT / "examples"))
+    ex = load_example("scene_uncertainty")
+    common = ["--samples", "90", "--end-time", "2.2", "--seed", "5", "--no-figure",
+              "--param", f"{MU}=normal:0.12,0.008", "--param", "grease.yield_stress=lognormal:default,0.4"]
+    runs = {"a": ["--chunk", "25"], "b": ["--chunk", "25"], "c": ["--chunk", "90"], "dask": ["--chunk", "25", "--workers", "2"]}
+    for name, extra in runs.items():
+        assert ex.main([*common, *extra, "--output", str(tmp_path / name)]) == 0
+    for f in ("samples.csv", "summary.txt"):
+        a = (tmp_path / "a" / f).read_bytes()
+        for other in ("b", "c", "dask"):
+            assert a == (tmp_path / other / f).read_bytes(), (f, other)
+    rows = [r.split(",") for r in (tmp_path / "a" / "samples.csv").read_text().splitlines()]
+    head, body = rows[0], rows[1:]
+    assert head[:3] == ["index", MU, "grease.yield_stress"] and len(body) == 90
+    col = {h: np.array([float(r[i]) for r in body]) for i, h in enumerate(head)}
+    # The draws follow the distributions given (5 standard errors).
+    assert abs(col[MU].mean() - 0.12) < 5 * 0.008 / np.sqrt(90)
+    y0 = pinjoint.Params()["grease.yield_stress"]
+    assert abs(np.log(col["grease.yield_stress"] / y0).mean()) < 5 * 0.4 / np.sqrt(90)
+    # The summary's percentiles: observed values (inverted CDF), recomputed by sorting.
+    summary = (tmp_path / "a" / "summary.txt").read_text().splitlines()
+    assert "-54 C" in summary[0]
+    table = {float(line.split()[0]): (float(line.split()[1]), float(line.split()[2])) for line in summary if re.match(r"^\s+\d+\s", line)}
+    assert sorted(table) == [1, 5, 25, 50, 75, 95, 99]
+    for q, (t, m) in table.items():
+        k = int(np.ceil(q / 100 * 90)) - 1
+        assert t == np.sort(col["time_to_lock"])[k] and m == np.sort(col["lock_margin"])[k], q
+    # Each sample alone: its scene run by itself gives its row bit for bit.
+    scene = pinjoint.scenes.FreeFall(end_time=2.2, step=1e-3)
+    for i in (0, 31, 89):
+        one = pinjoint.scenes.free_fall(1, scene, per_joint={MU: [col[MU][i]], "grease.yield_stress": [col["grease.yield_stress"][i]]}, temperature=273.15 - 54)
+        for c in ("time_to_lock", "lock_margin", "friction_energy", "breakaway_torque", "speed_at_lock"):
+            assert repr(float(one[c][0])) == body[i][head.index(c)], (i, c)
+    # The cold day is colder than +20 C: a larger breakaway (the grease stiffens), a smaller margin.
+    warm = pinjoint.scenes.free_fall(1, scene, per_joint={MU: [col[MU][0]], "grease.yield_stress": [col["grease.yield_stress"][0]]}, temperature=293.15)
+    assert warm["breakaway_torque"][0] < col["breakaway_torque"][0] and warm["lock_margin"][0] > col["lock_margin"][0]
