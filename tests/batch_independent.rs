@@ -22,8 +22,50 @@ use pinjoint::batch::{BatchError, BatchParams, Inputs, PreslidingBatch, Settings
 use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
 use pinjoint::zero_velocity::{Presliding, PreslidingJoint};
 use pinjoint::{Joint, ModelError, Params};
+use std::alloc::{GlobalAlloc, Layout, System};
 use std::collections::HashMap;
 use std::f64::consts::TAU;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// Counts the allocations of every thread while `COUNTING` is set (the issue's "no
+/// allocation per step", measured). The tests of this file take `SERIAL` so that no other
+/// test allocates meanwhile.
+struct Counting;
+
+static COUNTING: AtomicBool = AtomicBool::new(false);
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+static SERIAL: Mutex<()> = Mutex::new(());
+
+// SAFETY: forwards to the system allocator; only counts.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        if COUNTING.load(Ordering::Relaxed) {
+            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        // SAFETY: the caller's contract is the system allocator's.
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: as above.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        if COUNTING.load(Ordering::Relaxed) {
+            ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        }
+        // SAFETY: as above.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
+
+/// This file's tests one at a time (the allocation count sees every thread).
+fn serial() -> std::sync::MutexGuard<'static, ()> {
+    SERIAL.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+}
 
 /// SplitMix64: a small fixed-seed generator (the scenes are reproducible from the seed).
 struct Rng(u64);
@@ -232,7 +274,7 @@ fn run_scene(seed: u64, sc: &Scene) -> Stats {
     let n = sc.n;
     let s = settings(sc.fidelity);
     let law = Presliding::new(r.range(5e-4, 3e-3), r.range(0.8, 0.97), r.range(1e-3, 3e-2)).unwrap();
-    let mut draw = |r: &mut Rng| if sc.paper && r.chance(0.5) { draw_params_from(r, Params::paper()) } else { draw_params(r) };
+    let draw = |r: &mut Rng| if sc.paper && r.chance(0.5) { draw_params_from(r, Params::paper()) } else { draw_params(r) };
     let sets: Vec<Params> = if sc.per_joint { (0..n).map(|_| draw(&mut r)).collect() } else { vec![draw(&mut r)] };
     let bp = if sc.per_joint { BatchParams::PerJoint(sets.clone()) } else { BatchParams::Shared(sets[0]) };
     let mut a = PreslidingBatch::new(n, bp.clone(), law, s).unwrap();
@@ -460,6 +502,7 @@ fn run_scene(seed: u64, sc: &Scene) -> Stats {
 
 #[test]
 fn full_fidelity_random_scenes() {
+    let _serial = serial();
     let mut st = Stats::default();
     for seed in 0..40 {
         let sc = Scene { n: 1 + (seed as usize % 9), fidelity: Fidelity::Full, per_joint: seed % 2 == 0, steps: 40, cold: (seed % 4 != 3).then_some(COLDEST), host: seed % 3 != 0, unreferenced: seed % 5 == 0, paper: false };
@@ -471,6 +514,7 @@ fn full_fidelity_random_scenes() {
 
 #[test]
 fn boundary_fidelity_random_scenes() {
+    let _serial = serial();
     let mut st = Stats::default();
     for seed in 0..24 {
         let sc = Scene { n: 1 + (seed as usize % 6), fidelity: Fidelity::Boundary, per_joint: seed % 2 == 1, steps: 30, cold: (seed % 3 != 2).then_some(COLDEST), host: seed % 2 == 0, unreferenced: seed % 4 == 1, paper: false };
@@ -482,6 +526,7 @@ fn boundary_fidelity_random_scenes() {
 
 #[test]
 fn table_fidelity_random_scenes() {
+    let _serial = serial();
     let mut st = Stats::default();
     // A table build costs milliseconds: few joints, a few temperatures (the cold ones too:
     // where a table cannot be built the batch must refuse naming the joint, as the reference).
@@ -495,6 +540,7 @@ fn table_fidelity_random_scenes() {
 
 #[test]
 fn auto_fidelity_random_scenes() {
+    let _serial = serial();
     let mut st = Stats::default();
     for seed in 0..6 {
         let sc = Scene { n: 1 + (seed as usize % 3), fidelity: Fidelity::Auto, per_joint: seed % 2 == 0, steps: 12, cold: (seed % 3 != 1).then_some(COLDEST), host: seed % 2 == 1, unreferenced: seed == 3, paper: false };
@@ -507,6 +553,7 @@ fn auto_fidelity_random_scenes() {
 /// Around the chunking threshold (2·512) and beyond: the parallel path gives the scalar numbers.
 #[test]
 fn joint_counts_around_the_chunking_threshold() {
+    let _serial = serial();
     for (k, n) in [1usize, 2, 511, 512, 513, 1023, 1024, 1025, 1536, 5000].into_iter().enumerate() {
         let sc = Scene { n, fidelity: Fidelity::Full, per_joint: k % 2 == 1, steps: if n > 2000 { 4 } else { 6 }, cold: Some(COLDEST), host: true, unreferenced: k % 3 == 0, paper: false };
         let st = run_scene(5000 + k as u64, &sc);
@@ -521,6 +568,7 @@ fn joint_counts_around_the_chunking_threshold() {
 /// naming the joint, and so are table levels that cannot be built; the rest bit for bit.
 #[test]
 fn paper_model_joints_every_fidelity() {
+    let _serial = serial();
     let mut st = Stats::default();
     for (k, fidelity) in [Fidelity::Full, Fidelity::Boundary, Fidelity::Table, Fidelity::Auto, Fidelity::Full, Fidelity::Boundary].into_iter().enumerate() {
         let sc = Scene { n: 2 + k % 3, fidelity, per_joint: true, steps: if fidelity == Fidelity::Full || fidelity == Fidelity::Boundary { 40 } else { 10 }, cold: Some(COLDEST), host: true, unreferenced: k == 2, paper: true };
@@ -532,6 +580,7 @@ fn paper_model_joints_every_fidelity() {
 
 #[test]
 fn no_joints_is_an_error() {
+    let _serial = serial();
     for f in [Fidelity::Full, Fidelity::Table] {
         let e = PreslidingBatch::new(0, BatchParams::Shared(Params::default()), Presliding::default(), settings(f)).unwrap_err();
         assert_eq!(e, BatchError::Empty);
@@ -554,6 +603,7 @@ fn snapshot(b: &PreslidingBatch) -> Snapshot {
 /// changes, the lowest index is named, and the next good call is the scalar law's.
 #[test]
 fn errors_mid_chunk_change_nothing_and_the_batch_steps_on() {
+    let _serial = serial();
     for n in [700usize, 1025, 5000] {
         for per_joint in [false, true] {
             let mut r = Rng(n as u64 * 7 + per_joint as u64);
@@ -675,6 +725,7 @@ fn errors_mid_chunk_change_nothing_and_the_batch_steps_on() {
 /// temperatures and failed calls must not answer from a stale entry.
 #[test]
 fn alternating_temperatures_and_identical_inputs() {
+    let _serial = serial();
     let n = 6;
     let mut r = Rng(77);
     let sets: Vec<Params> = (0..n).map(|_| draw_params(&mut r)).collect();
@@ -709,5 +760,122 @@ fn alternating_temperatures_and_identical_inputs() {
                 assert!(matches!(e, Err(BatchError::NotFinite { index: 4, .. }) | Err(BatchError::Level { .. })), "{e:?}");
             }
         }
+    }
+}
+
+/// The allocations of `rounds` rounds of the six calls (torque, commit_step, step_with, step,
+/// commit, sliding_torque) on `b`, with inputs that change every round; `temperature(k)`
+/// gives round k's temperatures. The rounds run twice and the second time is counted: the
+/// first solves the rows of the solver's start table the loads visit (`solve_start`: rows
+/// solved once, on first use, then kept) and builds the models.
+fn allocations_of(b: &mut PreslidingBatch, rounds: usize, temperature: &dyn Fn(usize) -> Option<Vec<f64>>) -> usize {
+    let n = b.len();
+    let steps = vec![1e-3; n];
+    let mut out = vec![0.0; n];
+    let temps: Vec<Option<Vec<f64>>> = (0..rounds).map(temperature).collect();
+    let mut ok = true;
+    for pass in 0..2 {
+        let mut angle: Vec<f64> = (0..n).map(|i| 1e-4 * (i % 7) as f64).collect();
+        let mut omega: Vec<f64> = (0..n).map(|i| 0.5 - (i % 9) as f64 * 0.1).collect();
+        let mut load: Vec<f64> = (0..n).map(|i| 4e3 + 9.0 * i as f64).collect();
+        ALLOCATIONS.store(0, Ordering::SeqCst);
+        COUNTING.store(pass == 1, Ordering::SeqCst);
+        for t in &temps {
+            for x in angle.iter_mut() {
+                *x += 1e-5;
+            }
+            for w in omega.iter_mut() {
+                *w *= -1.01;
+            }
+            for l in load.iter_mut() {
+                *l += 3.0;
+            }
+            let t = t.as_deref();
+            let inputs = Inputs { angle: &angle, angular_velocity: &omega, load: &load, temperature: t };
+            ok &= b.torque(&inputs, &mut out).is_ok();
+            ok &= b.commit_step(&inputs, &steps).is_ok();
+            ok &= b.step_with(&inputs, &steps, &mut out).is_ok();
+            ok &= b.step(&inputs, &mut out).is_ok();
+            ok &= b.commit(&inputs).is_ok();
+            ok &= b.sliding_torque(&load, &omega, t, &mut out).is_ok();
+        }
+        COUNTING.store(false, Ordering::SeqCst);
+    }
+    assert!(ok, "a call failed");
+    ALLOCATIONS.load(Ordering::SeqCst)
+}
+
+/// The allocations of rayon alone over `passes` parallel passes from this thread (jobs
+/// injected from outside its pool go through crossbeam's `Injector`, a list of blocks of
+/// 63 jobs: a block is allocated now and then).
+fn rayon_allocations(passes: usize) -> usize {
+    use rayon::prelude::*;
+    let mut v = vec![0.0f64; 3000];
+    v.par_chunks_mut(512).for_each(|c| c[0] += 1.0);
+    ALLOCATIONS.store(0, Ordering::SeqCst);
+    COUNTING.store(true, Ordering::SeqCst);
+    for _ in 0..passes {
+        v.par_chunks_mut(512).enumerate().for_each(|(k, c)| c[0] += k as f64);
+    }
+    COUNTING.store(false, Ordering::SeqCst);
+    std::hint::black_box(&v);
+    ALLOCATIONS.load(Ordering::SeqCst)
+}
+
+/// "No allocation per step" (issue 30), measured: once a batch has its models (the same
+/// temperatures as before, or none given) and its joints' loads have been seen, torque,
+/// commit, step, step_with, commit_step and sliding_torque allocate nothing on the calling
+/// thread (n < 2·512), at every level, shared or per-joint sets, with inputs that change
+/// every call (new solves). On rayon's threads (n ≥ 2·512) the batch's code allocates
+/// nothing either: the count is at most rayon's own over as many parallel passes (two a
+/// call) and one more.
+#[test]
+fn no_allocation_per_step_once_the_temperatures_settle() {
+    let _serial = serial();
+    let rounds = 40;
+    let calls = 6 * rounds;
+    let rayon_alone = rayon_allocations(2 * calls);
+    eprintln!("rayon alone: {rayon_alone} allocations in {} parallel passes", 2 * calls);
+    for fidelity in [Fidelity::Full, Fidelity::Boundary, Fidelity::Table, Fidelity::Auto] {
+        for (n, per_joint) in [(100usize, true), (100, false), (3000, false)] {
+            let mut r = Rng(n as u64);
+            let sets: Vec<Params> = (0..4).map(|_| draw_params(&mut r)).collect();
+            let bp = if per_joint { BatchParams::PerJoint((0..n).map(|i| sets[i % 4]).collect()) } else { BatchParams::Shared(sets[0]) };
+            let temps: Vec<f64> = (0..n).map(|i| [COLD_DAY, 293.15, 343.15][i % 3]).collect();
+            for given in [true, false] {
+                let mut b = PreslidingBatch::new(n, bp.clone(), Presliding::default(), settings(fidelity)).unwrap();
+                b.set_host_inertia(Some(&vec![20.0; n])).unwrap();
+                let count = allocations_of(&mut b, rounds, &|_| given.then(|| temps.clone()));
+                eprintln!("{fidelity}, n = {n}, per joint {per_joint}, temperatures given {given}: {count} allocations in {calls} calls");
+                if n < 1024 {
+                    assert_eq!(count, 0, "{fidelity}, n = {n}, per joint {per_joint}, temperatures given {given}: {count} allocations in {calls} calls");
+                } else {
+                    assert!(count <= rayon_alone + 1, "{fidelity}, n = {n}, temperatures given {given}: {count} allocations in {calls} calls (rayon alone: {rayon_alone})");
+                }
+            }
+        }
+    }
+}
+
+/// The model cache's claim (`batch::cache`): a host that alternates between temperatures, or
+/// calls with temperatures and then without, does not rebuild a model each call, as long as
+/// the models released in a call fit among the retained ones (joints sharing a parameter
+/// set: one model per temperature). Measured by the allocations a rebuild makes (a level
+/// built again allocates its table; a joint moved to a temperature clones its parts).
+#[test]
+fn alternating_temperatures_rebuild_nothing_with_a_shared_set() {
+    let _serial = serial();
+    for fidelity in [Fidelity::Full, Fidelity::Boundary, Fidelity::Table] {
+        let n = 100;
+        let temps: Vec<f64> = (0..n).map(|i| [COLD_DAY, 343.15][i % 2]).collect();
+        let hot = vec![320.0; n];
+        let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), settings(fidelity)).unwrap();
+        let count = allocations_of(&mut b, 30, &|k| match k % 3 {
+            0 => Some(temps.clone()),
+            1 => None,
+            _ => Some(hot.clone()),
+        });
+        assert_eq!(count, 0, "{fidelity}: {count} allocations: a model was built again");
+        assert!(b.models_held() <= 1 + pinjoint::batch::cache::RETAINED, "{}", b.models_held());
     }
 }
