@@ -428,3 +428,26 @@ def test_scene_uncertainty_cold_day_reproducible_local_and_on_a_local_cluster(tm
     # The cold day is colder than +20 C: a larger breakaway (the grease stiffens), a smaller margin.
     warm = pinjoint.scenes.free_fall(1, scene, per_joint={MU: [col[MU][0]], "grease.yield_stress": [col["grease.yield_stress"][0]]}, temperature=293.15)
     assert warm["breakaway_torque"][0] < col["breakaway_torque"][0] and warm["lock_margin"][0] > col["lock_margin"][0]
+
+
+def test_per_joint_switches_take_bools_and_refuse_other_numbers():
+    """A switch (model.paper, grease.enabled) set per joint: True/False (or 0/1) as
+    ``Params`` takes them, each joint equal to its own Presliding; any other number is a
+    ValueError naming per_joint[key], the value and the index (it was taken as True)."""
+    n = 4
+    flags = [False, True, False, True]
+    objs = [pinjoint.Presliding({"grease.enabled": f}) for f in flags]
+    a, w, p = np.full(n, 1e-4), np.array([0.3, 0.3, -1.0, 0.0]), np.full(n, 2e4)
+    want = np.array([o.torque(a[i], w[i], p[i]) for i, o in enumerate(objs)])
+    for given in (np.array(flags), flags, np.array(flags, dtype=np.int8), [0.0, 1.0, 0.0, 1.0]):
+        b = pinjoint.PreslidingBatch(n, per_joint={"grease.enabled": given})
+        assert np.array_equal(bits(b.torque(a, w, p)), bits(want)), given
+        c = pickle.loads(pickle.dumps(b))
+        assert np.array_equal(bits(c.torque(a, w, p)), bits(want))
+    for key in ("grease.enabled", "model.paper"):
+        for bad, k in (([0.0, 1.0, 0.5, 1.0], 2), ([2.0, 1.0, 0.0, 0.0], 0), ([1.0, 1.0, 0.0, -1.0], 3)):
+            with pytest.raises(ValueError, match=rf"per_joint\['{re.escape(key)}'\] = .* at index {k} .*True or False"):
+                pinjoint.PreslidingBatch(n, per_joint={key: bad})
+    # Booleans stay refused for a number.
+    with pytest.raises(TypeError, match="booleans"):
+        pinjoint.PreslidingBatch(n, per_joint={MU: np.array(flags)})
