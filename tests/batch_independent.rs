@@ -489,12 +489,12 @@ fn run_scene(seed: u64, sc: &Scene) -> Stats {
             refs.iter().map(|j| j.reference_angle().to_bits()).collect::<Vec<_>>(),
             refs.iter().map(|j| j.last_step().0.to_bits()).collect::<Vec<_>>(),
             refs.iter().map(|j| j.last_step().1.to_bits()).collect::<Vec<_>>(),
-            refs.iter().map(|j| j.is_unreferenced()).collect::<Vec<_>>(),
+            refs.iter().map(PreslidingJoint::is_unreferenced).collect::<Vec<_>>(),
         );
         assert_eq!(states_of(&a), want_states, "seed {seed}: batch a's states");
         assert_eq!(states_of(&b), want_states, "seed {seed}: batch b's states");
-        for i in 0..n {
-            assert_eq!(a.joint_law(i), refs[i].law(), "seed {seed} joint {i} law");
+        for (i, r) in refs.iter().enumerate() {
+            assert_eq!(a.joint_law(i), r.law(), "seed {seed} joint {i} law");
         }
     }
     stats
@@ -606,7 +606,7 @@ fn errors_mid_chunk_change_nothing_and_the_batch_steps_on() {
     let _serial = serial();
     for n in [700usize, 1025, 5000] {
         for per_joint in [false, true] {
-            let mut r = Rng(n as u64 * 7 + per_joint as u64);
+            let mut r = Rng(n as u64 * 7 + u64::from(per_joint));
             let sets: Vec<Params> = if per_joint { (0..n).map(|_| draw_params(&mut r)).collect() } else { vec![Params::default()] };
             let bp = if per_joint { BatchParams::PerJoint(sets.clone()) } else { BatchParams::Shared(sets[0]) };
             let law = Presliding::default();
