@@ -451,3 +451,23 @@ def test_per_joint_switches_take_bools_and_refuse_other_numbers():
     # Booleans stay refused for a number.
     with pytest.raises(TypeError, match="booleans"):
         pinjoint.PreslidingBatch(n, per_joint={MU: np.array(flags)})
+
+
+def test_scene_uncertainty_names_the_sample_a_distribution_spoils(tmp_path, monkeypatch):
+    """A user's distribution that draws a value the model does not take (a negative mu_c from
+    a normal): the example refuses before running any scene, naming the sample's index in
+    the study (not its index within a task) and the parameter."""
+    from conftest import ROOT, load_example
+
+    monkeypatch.syspath_prepend(str(ROOT / "examples"))
+    ex = load_example("scene_uncertainty")
+    spec = f"{MU}=normal:0.12,0.04"
+    n = 400
+    s = pinjoint.scenes.sample_parameters(n, 4, distributions=dict([pinjoint.scenes.parse_distribution(spec)]))
+    bad = np.flatnonzero(s[MU] < 0)
+    assert bad.size and bad[0] >= 50, bad  # beyond the first task of 50 scenes
+    with pytest.raises(ValueError) as e:
+        ex.main(["--samples", str(n), "--chunk", "50", "--seed", "4", "--param", spec, "--no-figure", "--output", str(tmp_path / "o")])
+    msg = str(e.value)
+    assert f"sample {bad[0]}" in msg and MU in msg and "out of range" in msg, msg
+    assert not (tmp_path / "o" / "samples.csv").exists()
