@@ -63,6 +63,19 @@ def draw(args) -> dict:
     return scenes.sample_parameters(args.samples, args.seed, calibration=calibration, distributions=dists)
 
 
+def check_samples(values: dict) -> None:
+    """Every sample's parameter set is one the model takes, else a ValueError naming the
+    sample's index in the study and the parameter (before any scene runs: a task's error
+    would name the joint's index within its task)."""
+    base = pinjoint.Params()
+    n = len(next(iter(values.values()))) if values else 0
+    for i in range(n):
+        try:
+            base.with_values({k: float(v[i]) for k, v in values.items()})
+        except ValueError as e:
+            raise ValueError(f"sample {i} of the study: {e} (the distributions drew a value the model does not take)") from None
+
+
 def chunks(values: dict, size: int) -> list:
     n = len(next(iter(values.values())))
     return [{k: v[a : a + size] for k, v in values.items()} for a in range(0, n, size)]
@@ -73,6 +86,7 @@ def compute(args, client=None) -> tuple:
     scene = scenes.FreeFall(end_time=args.end_time, step=args.step)
     temperature = args.temperature_c + 273.15
     values = draw(args)
+    check_samples(values)
     parts = chunks(values, args.chunk)
     if client is None:
         results = []

@@ -13,6 +13,16 @@ from ._native import Params, _PreslidingBatch
 from ._presliding import DEFAULT_PRESLIDING
 
 
+def _is_switch(key: str) -> bool:
+    """Whether parameter ``key`` is a switch (``model.paper``, ``grease.enabled``): a bool for
+    ``Params``, 0 or 1 as a number."""
+    try:
+        Params({key: True})
+    except Exception:  # noqa: BLE001 - a number (TypeError), or not a key (the library names it)
+        return False
+    return True
+
+
 def _is_params_like(x: Any) -> bool:
     import os
 
@@ -34,6 +44,7 @@ class PreslidingBatch:
     per_joint   {parameter key: array of shape (n,)}: per-joint values of any parameter
                 file key (e.g. ``{"friction.boundary_friction_coefficient": mu}``) applied
                 over ``params``; each joint's set is validated (an error names the joint).
+                A switch (``model.paper``, ``grease.enabled``) takes True/False or 1/0.
     presliding_angle, elastic_limit, damping_time   the law, as ``Presliding``.
     host_inertia  the host's inertia on each pin (kg*m^2, 0 = not given), a number or an
                 array (n,), as ``Presliding(host_inertia=...)``: damps each joint's
@@ -121,12 +132,18 @@ class PreslidingBatch:
             keys = [str(k) for k in per_joint]
             cols = []
             for k in keys:
-                col = as_float_array(f"per_joint[{k!r}]", "", per_joint[k])
+                raw, switch = per_joint[k], _is_switch(k)
+                if switch and np.asarray(raw).dtype.kind == "b":
+                    raw = np.asarray(raw).astype(np.float64)  # a switch's values: True/False
+                col = as_float_array(f"per_joint[{k!r}]", "", raw)
                 if col.shape != (n,):
                     raise ValueError(f"per_joint[{k!r}] has shape {col.shape}, the batch has n = {n} joints: give an array of shape ({n},)")
                 bad = np.flatnonzero(~np.isfinite(col))
                 if bad.size:
                     raise ValueError(f"per_joint[{k!r}] = {col[bad[0]]!r} at index {bad[0]} is not a finite number")
+                bad = np.flatnonzero((col != 0.0) & (col != 1.0)) if switch else bad
+                if bad.size:
+                    raise ValueError(f"per_joint[{k!r}] = {col[bad[0]]!r} at index {bad[0]} is not a switch's value: it must be True or False (1 or 0)")
                 cols.append(col)
             values = np.ascontiguousarray(np.stack(cols, axis=1))
         law = (float(presliding_angle), float(elastic_limit), float(damping_time))
