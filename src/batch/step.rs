@@ -6,7 +6,7 @@ use super::cache::Models;
 use super::error::BatchError;
 use super::inputs::{finite, Inputs};
 use super::model::Model;
-use crate::fidelity::Located;
+use crate::fidelity::{Located, StribeckTable};
 use super::joints::{self, Joints, State};
 use crate::zero_velocity::{Presliding, PreslidingJoint};
 use rayon::prelude::*;
@@ -82,6 +82,15 @@ pub const BLOCK: usize = 8;
 /// ([`Model::sliding_torque_located`]); the error of the lowest joint index is the one
 /// returned, as when each joint is checked then answered in turn.
 fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+    // One model for the whole chunk (the common case) at the table level: the table directly.
+    if let Some(&slot) = slots.first()
+        && slots.iter().all(|&s| s == slot)
+    {
+        let model = models.get(slot);
+        if let Some(table) = model.torque_table() {
+            return bounds_chunk_table(keys, values, model, table, models.key(slot).1, inp, steps, offset, angle);
+        }
+    }
     let end = offset + keys.len();
     let (loads, omegas) = (&inp.load[offset..end], &inp.angular_velocity[offset..end]);
     // The model of the previous joint's slot (most joints share one): looked up once a run.
@@ -128,15 +137,52 @@ fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models
     None
 }
 
-/// Commit joint `i` at its input angle with the sliding torque `bound`:
-/// `PreslidingJoint::commit`, or with the host's step `PreslidingJoint::commit_step` (ω·h
-/// the next increment is read against, the damping cap).
-#[inline(always)]
-fn commit(j: &mut PreslidingJoint, bound: f64, inp: &Inputs, steps: Option<&[f64]>, i: usize) {
-    match steps {
-        Some(h) => j.commit_step(inp.angle[i], inp.angular_velocity[i], bound, h[i]),
-        None => j.commit(inp.angle[i], bound),
+/// [`bounds_chunk`] for a chunk whose joints all use `model`, at the table level
+/// ([`Model::torque_table`]: `table`), key temperature bits `tkey`: the same answers and
+/// errors, the table asked directly (the model's layers, which every joint would go through
+/// in turn, only where the table gives no answer).
+#[allow(clippy::too_many_arguments)]
+fn bounds_chunk_table(keys: &mut [[u64; 3]], values: &mut [f64], model: &Model, table: &StribeckTable, tkey: u64, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+    let end = offset + keys.len();
+    let (loads, omegas, angles) = (&inp.load[offset..end], &inp.angular_velocity[offset..end], &inp.angle[offset..end]);
+    let hs = steps.map(|h| &h[offset..end]);
+    let capacity = model.joint().capacity();
+    let mut todo = [(0, Located::OUTSIDE); BLOCK];
+    for first in (0..keys.len()).step_by(BLOCK) {
+        let last = (first + BLOCK).min(keys.len());
+        let (mut pending, mut bad) = (0, None);
+        for k in first..last {
+            let (load, omega) = (loads[k], omegas[k]);
+            let good = load.is_finite() && omega.is_finite() && (!angle || angles[k].is_finite()) && hs.is_none_or(|h| h[k].is_finite() && h[k] >= 0.0);
+            if !good {
+                bad = Some(offset + k);
+                break;
+            }
+            let old = &keys[k];
+            if load.to_bits() != old[0] || omega.to_bits() != old[1] || tkey != old[2] {
+                todo[pending] = (k, table.locate_torque(load.abs(), omega));
+                pending += 1;
+            }
+        }
+        for &(k, at) in &todo[..pending] {
+            let (load, omega) = (loads[k], omegas[k]);
+            let a = load.abs();
+            // The table's answer where the model would give it (Model::torque_table), else the
+            // model's own (its errors included).
+            let value = match (a < capacity && load != 0.0).then(|| table.torque_located(a, omega, at)).flatten() {
+                Some(t) => t,
+                None => match model.sliding_torque(load, omega) {
+                    Ok(t) => t,
+                    Err(source) => return Some((offset + k, BatchError::Model { index: offset + k, source })),
+                },
+            };
+            (keys[k], values[k]) = ([load.to_bits(), omega.to_bits(), tkey], value);
+        }
+        if let Some(i) = bad {
+            return Some((i, input_error(inp, steps, i, angle)));
+        }
     }
+    None
 }
 
 /// The joints of a chunk: the law, their states and waiting flags, their host inertia when
@@ -148,20 +194,47 @@ struct Chunk<'a> {
     inertia: Option<&'a [f64]>,
 }
 
-/// The law on a chunk (every bound computed).
-fn law_chunk(c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
+/// `f` on each joint of a chunk as the scalar object (its index in the chunk, the joint, its
+/// bound), the joint stored back when `commits`. Generic over `f` and `inertia`, so that each
+/// action's loop is compiled on its own (no choice made per joint).
+#[inline(always)]
+fn each(c: Chunk, bounds: &[f64], commits: bool, inertia: impl Fn(usize) -> Option<f64>, mut f: impl FnMut(usize, &mut PreslidingJoint, f64)) {
     for (k, ((s, u), &bound)) in c.states.iter_mut().zip(c.unreferenced.iter_mut()).zip(bounds).enumerate() {
-        let i = offset + k;
-        let mut j = joints::joint(c.law, s, *u, c.inertia.map(|v| v[k]));
-        match action {
-            Action::Torque => out[k] = j.torque_at(inp.angle[i], inp.angular_velocity[i], bound),
-            Action::Commit => commit(&mut j, bound, inp, steps, i),
-            Action::Step => out[k] = j.step(inp.angle[i], inp.angular_velocity[i], bound, steps.map(|h| h[i])),
-            Action::Bound => out[k] = bound,
-        }
-        if matches!(action, Action::Commit | Action::Step) {
+        let mut j = joints::joint(c.law, s, *u, inertia(k));
+        f(k, &mut j, bound);
+        if commits {
             joints::store(&j, s, u);
         }
+    }
+}
+
+/// The law on a chunk (every bound computed).
+fn law_chunk(c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
+    match c.inertia {
+        None => law_with(c, bounds, out, inp, steps, offset, action, |_| None),
+        Some(v) => law_with(c, bounds, out, inp, steps, offset, action, |k| Some(v[k])),
+    }
+}
+
+/// [`law_chunk`] with the host inertia of the chunk's joint k given by `inertia`.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn law_with(c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action, inertia: impl Fn(usize) -> Option<f64>) {
+    let end = offset + bounds.len();
+    let (angles, omegas) = (&inp.angle[offset..end], &inp.angular_velocity[offset..end]);
+    match (action, steps) {
+        (Action::Torque, _) => each(c, bounds, false, inertia, |k, j, b| out[k] = j.torque_at(angles[k], omegas[k], b)),
+        (Action::Commit, None) => each(c, bounds, true, inertia, |k, j, b| j.commit(angles[k], b)),
+        (Action::Commit, Some(h)) => {
+            let h = &h[offset..end];
+            each(c, bounds, true, inertia, |k, j, b| j.commit_step(angles[k], omegas[k], b, h[k]));
+        }
+        (Action::Step, None) => each(c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, None)),
+        (Action::Step, Some(h)) => {
+            let h = &h[offset..end];
+            each(c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, Some(h[k])));
+        }
+        (Action::Bound, _) => out.copy_from_slice(bounds),
     }
 }
 
