@@ -71,6 +71,14 @@ pub fn ln(x: f64) -> f64 {
     if !(x >= f64::MIN_POSITIVE && x <= f64::MAX) {
         return x.ln();
     }
+    ln_normal(x)
+}
+
+/// [`ln`] of a positive normal finite `x` (anything else gives a meaningless number, never
+/// undefined behaviour): for a caller that has already bounded `x`, e.g. inside an envelope.
+#[inline(always)]
+pub fn ln_normal(x: f64) -> f64 {
+    debug_assert!(x >= f64::MIN_POSITIVE && x <= f64::MAX, "{x}");
     let bits = x.to_bits();
     let k = (bits >> 52) as i64 - 1023;
     let i = ((bits >> 45) & 127) as usize;

@@ -83,11 +83,15 @@ pub const BLOCK: usize = 8;
 /// returned, as when each joint is checked then answered in turn.
 fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
     // One model for the whole chunk (the common case) at the table level: the table directly.
+    // (All the slots equal to the first: a fold without an early exit, which vectorises.)
     if let Some(&slot) = slots.first()
-        && slots.iter().all(|&s| s == slot)
+        && slots.iter().fold(0, |differ, &s| differ | (s ^ slot)) == 0
     {
         let model = models.get(slot);
-        if let Some(table) = model.torque_table() {
+        // The table answers for loads inside its range alone: where that is within
+        // (0, capacity) (always: a table is built by solving beyond its range's ends), the
+        // model's checks of the load pass wherever the table answers.
+        if let Some(table) = model.torque_table().filter(|t| t.envelope().load_min > 0.0 && t.envelope().load_max < model.joint().capacity()) {
             return bounds_chunk_table(keys, values, model, table, models.key(slot).1, inp, steps, offset, angle);
         }
     }
@@ -146,7 +150,6 @@ fn bounds_chunk_table(keys: &mut [[u64; 3]], values: &mut [f64], model: &Model, 
     let end = offset + keys.len();
     let (loads, omegas, angles) = (&inp.load[offset..end], &inp.angular_velocity[offset..end], &inp.angle[offset..end]);
     let hs = steps.map(|h| &h[offset..end]);
-    let capacity = model.joint().capacity();
     let mut todo = [(0, Located::OUTSIDE); BLOCK];
     for first in (0..keys.len()).step_by(BLOCK) {
         let last = (first + BLOCK).min(keys.len());
@@ -166,10 +169,10 @@ fn bounds_chunk_table(keys: &mut [[u64; 3]], values: &mut [f64], model: &Model, 
         }
         for &(k, at) in &todo[..pending] {
             let (load, omega) = (loads[k], omegas[k]);
-            let a = load.abs();
-            // The table's answer where the model would give it (Model::torque_table), else the
-            // model's own (its errors included).
-            let value = match (a < capacity && load != 0.0).then(|| table.torque_located(a, omega, at)).flatten() {
+            // The table's answer where the model would give it (Model::torque_table: it gives
+            // one for loads inside its range alone, within (0, capacity): checked above), else
+            // the model's own (its errors included).
+            let value = match table.torque_located(load.abs(), omega, at) {
                 Some(t) => t,
                 None => match model.sliding_torque(load, omega) {
                     Ok(t) => t,
