@@ -67,8 +67,7 @@ const LN2_LO: f64 = std::f64::consts::LN_2 - LN2_HI;
 pub fn ln(x: f64) -> f64 {
     // Positive normal finite numbers only; everything else (and NaN, by the negated test) to
     // the library.
-    #[allow(clippy::neg_cmp_op_on_partial_ord)]
-    if !(x >= f64::MIN_POSITIVE && x <= f64::MAX) {
+    if !(f64::MIN_POSITIVE..=f64::MAX).contains(&x) {
         return x.ln();
     }
     ln_normal(x)
@@ -78,7 +77,7 @@ pub fn ln(x: f64) -> f64 {
 /// undefined behaviour): for a caller that has already bounded `x`, e.g. inside an envelope.
 #[inline(always)]
 pub fn ln_normal(x: f64) -> f64 {
-    debug_assert!(x >= f64::MIN_POSITIVE && x <= f64::MAX, "{x}");
+    debug_assert!((f64::MIN_POSITIVE..=f64::MAX).contains(&x), "{x}");
     let bits = x.to_bits();
     let k = (bits >> 52) as i64 - 1023;
     let i = ((bits >> 45) & 127) as usize;
@@ -115,7 +114,7 @@ mod tests {
         for decade in -307..308 {
             for _ in 0..2_000 {
                 let x = 10f64.powf(f64::from(decade) + u());
-                if !(x >= f64::MIN_POSITIVE && x <= f64::MAX) {
+                if !(f64::MIN_POSITIVE..=f64::MAX).contains(&x) {
                     continue;
                 }
                 let (got, want) = (ln(x), x.ln());

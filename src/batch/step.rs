@@ -81,6 +81,7 @@ pub const BLOCK: usize = 8;
 /// located in its model ([`Model::locate`]), then those are answered in order
 /// ([`Model::sliding_torque_located`]); the error of the lowest joint index is the one
 /// returned, as when each joint is checked then answered in turn.
+#[allow(clippy::too_many_arguments)]
 fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
     // One model for the whole chunk (the common case) at the table level: the table directly.
     // (All the slots equal to the first: a fold without an early exit, which vectorises.)
@@ -201,7 +202,7 @@ struct Chunk<'a> {
 /// bound), the joint stored back when `commits`. Generic over `f` and `inertia`, so that each
 /// action's loop is compiled on its own (no choice made per joint).
 #[inline(always)]
-fn each(c: Chunk, bounds: &[f64], commits: bool, inertia: impl Fn(usize) -> Option<f64>, mut f: impl FnMut(usize, &mut PreslidingJoint, f64)) {
+fn each(c: &mut Chunk, bounds: &[f64], commits: bool, inertia: impl Fn(usize) -> Option<f64>, mut f: impl FnMut(usize, &mut PreslidingJoint, f64)) {
     for (k, ((s, u), &bound)) in c.states.iter_mut().zip(c.unreferenced.iter_mut()).zip(bounds).enumerate() {
         let mut j = joints::joint(c.law, s, *u, inertia(k));
         f(k, &mut j, bound);
@@ -222,20 +223,20 @@ fn law_chunk(c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Opt
 /// [`law_chunk`] with the host inertia of the chunk's joint k given by `inertia`.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn law_with(c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action, inertia: impl Fn(usize) -> Option<f64>) {
+fn law_with(mut c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action, inertia: impl Fn(usize) -> Option<f64>) {
     let end = offset + bounds.len();
     let (angles, omegas) = (&inp.angle[offset..end], &inp.angular_velocity[offset..end]);
     match (action, steps) {
-        (Action::Torque, _) => each(c, bounds, false, inertia, |k, j, b| out[k] = j.torque_at(angles[k], omegas[k], b)),
-        (Action::Commit, None) => each(c, bounds, true, inertia, |k, j, b| j.commit(angles[k], b)),
+        (Action::Torque, _) => each(&mut c, bounds, false, inertia, |k, j, b| out[k] = j.torque_at(angles[k], omegas[k], b)),
+        (Action::Commit, None) => each(&mut c, bounds, true, inertia, |k, j, b| j.commit(angles[k], b)),
         (Action::Commit, Some(h)) => {
             let h = &h[offset..end];
-            each(c, bounds, true, inertia, |k, j, b| j.commit_step(angles[k], omegas[k], b, h[k]));
+            each(&mut c, bounds, true, inertia, |k, j, b| j.commit_step(angles[k], omegas[k], b, h[k]));
         }
-        (Action::Step, None) => each(c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, None)),
+        (Action::Step, None) => each(&mut c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, None)),
         (Action::Step, Some(h)) => {
             let h = &h[offset..end];
-            each(c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, Some(h[k])));
+            each(&mut c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, Some(h[k])));
         }
         (Action::Bound, _) => out.copy_from_slice(bounds),
     }

@@ -79,12 +79,14 @@ impl PreslidingJoint {
     /// last commit (rad/s) and whether it waits for its first angle. For a store that keeps
     /// many joints compactly (`pinjoint::batch`): parts taken from a joint give it back
     /// exactly.
+    #[cfg(feature = "batch")]
     #[inline]
     pub(crate) fn from_parts(law: Presliding, torque: f64, angle: f64, omega: f64, unreferenced: bool) -> Self {
         PreslidingJoint { law, torque, angle, omega, unreferenced }
     }
 
     /// The joint's parts (see [`PreslidingJoint::from_parts`]).
+    #[cfg(feature = "batch")]
     #[inline]
     pub(crate) fn parts(&self) -> (Presliding, f64, f64, f64, bool) {
         (self.law, self.torque, self.angle, self.omega, self.unreferenced)
