@@ -10,17 +10,25 @@
 //!
 //! * `μ_f`, the fluid (Bair–Winer) part of μ — smooth (∝ ω in boundary, saturating in
 //!   full film);
-//! * `s = asinh y`, the load sharing: ≈ y near the transition, ≈ ±ln 2|y| far from it,
-//!   so it stays of order ten where y runs from −20 (boundary) to 10⁶ (deep full film);
+//! * `y`, the load sharing's logit (floored at [`LOGIT_FLOOR`]) — smooth: ≈ constant in deep
+//!   boundary, growing like ω² through the transition and in full film, where it reaches
+//!   10⁶; a cubic follows it to a relative error ~h⁴ (a tenth of a decade per cell changes it by
+//!   a few per cent), and where it is large its error does not matter (below);
 //! * `h_c`.
 //!
-//! and then `y = sinh s`, `x1 = 1/(1 + e^{−y})`, `x2 = 1/(1 + e^{y})` (the smaller one as
-//! e^{−|y|} times the larger, without cancellation), `μ = μ_f + μ_c·x2`, `T = μ·R·P`,
-//! `λ = h_c/σ`. The sigmoid, evaluated exactly, carries the corner; an error δs moves μ by
-//! `μ_c·x1·x2·cosh(s)·δs`, which vanishes both in boundary and in full film. (Tabulating
-//! ln μ_f and ln h_c instead gave the same grid sizes on the envelopes tried, but costs two more
-//! exponentials per call; μ_f and h_c vary by less than a few decades over an envelope and
-//! their relative error is what the refinement measures.)
+//! and then `x1 = 1/(1 + e^{−y})`, `x2 = 1/(1 + e^{y})` (the smaller one as e^{−|y|} times the
+//! larger, without cancellation), `μ = μ_f + μ_c·x2`, `T = μ·R·P`, `λ = h_c/σ`. The sigmoid,
+//! evaluated exactly, carries the corner; an error δy moves μ by `μ_c·x1·x2·δy`, which
+//! vanishes both in boundary and in full film (where y is large, so its absolute error is:
+//! x1·x2 ≈ e^{−y} more than makes up for it). Tabulating s = asinh y instead (of order ten
+//! everywhere) took one exponential and a division more per evaluation (y = sinh s). Its grids,
+//! against these: 66 × 169 against 62 × 161 for the batch benchmark's envelope (1e-4),
+//! 232 × 197 against 80 × 160 at 262.9 K over 10–100 N (1e-3), 66 × 211 against 80 × 224 for
+//! the paper's model at 1e-5; and at 343 K over 5–60 kN (1e-4) a 5 × 14 table whose error on
+//! fresh points, 2.0e-4, exceeded its bound (a 6 × 17 table now, 2.0e-5 within 3.5e-5). (Tabulating ln μ_f and ln h_c instead
+//! gave the same grid sizes on the envelopes tried, but costs two more exponentials per call;
+//! μ_f and h_c vary by less than a few decades over an envelope and their relative error is
+//! what the refinement measures.)
 //!
 //! # Interpolation
 //! A uniform grid in x = ln P and z = ln |ω| covers the envelope exactly (the envelope
@@ -29,7 +37,7 @@
 //! ∂/∂z and ∂²/∂x∂z come from fourth-order central differences of the node values; each
 //! cell stores the 3 × 16 power coefficients of its bicubic Hermite patches
 //! (the private `hermite` module), so that an evaluation is two logarithms, an index computation,
-//! three Horner evaluations and two exponentials (sinh s, the sigmoid). The patches share
+//! three Horner evaluations and an exponential (the sigmoid's). The patches share
 //! values and slopes at the nodes, so the interpolant is C¹ across cells (no jumps for an
 //! adaptive integrator to trip on).
 //!
@@ -86,7 +94,7 @@ pub const MAX_SOLVED_SHARE: f64 = 0.25;
 /// Initial grid step in ln P and ln |ω|.
 const INITIAL_STEP: f64 = 0.5;
 
-/// One cell: the bicubic coefficients of μ_f and asinh y interleaved (`friction[i]` is
+/// One cell: the bicubic coefficients of μ_f and the logit y interleaved (`friction[i]` is
 /// coefficient i of each: evaluated together, a pair per operation, [`bicubic_pair`]), then
 /// those of h_c.
 #[derive(Debug, Clone, Copy)]
@@ -97,7 +105,7 @@ struct Cell {
 }
 
 impl Cell {
-    /// The cell of the patches of μ_f, asinh y and h_c (power coefficients, [`bicubic_coefficients`]).
+    /// The cell of the patches of μ_f, y and h_c (power coefficients, [`bicubic_coefficients`]).
     fn new([mu_f, s, film]: [[f64; 16]; 3]) -> Self {
         Cell { friction: std::array::from_fn(|i| [mu_f[i], s[i]]), film }
     }
@@ -155,22 +163,21 @@ pub struct StribeckTable {
 /// The logit below which the table holds [`LOGIT_FLOOR`]: x1 = e^y < 4.3e-18 there, below any
 /// tolerance in the shares and in μ. A moving joint whose film is bounded (the complete
 /// model's cold supply in the journal's region, a starved inlet) can have its fluid carry
-/// nothing (logit −∞) at a finite speed; the floor keeps the tabulated asinh y finite there.
+/// nothing (logit −∞) at a finite speed; the floor keeps the tabulated y finite there.
 pub const LOGIT_FLOOR: f64 = -40.0;
 
 /// The tabulated variables at one solution.
 #[inline]
 fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
-    [op.fluid_friction_coefficient, op.logit.max(LOGIT_FLOOR).asinh(), op.film_thickness]
+    [op.fluid_friction_coefficient, op.logit.max(LOGIT_FLOOR), op.film_thickness]
 }
 
 /// Weights turning errors in the three tabulated variables into errors of the outputs:
-/// (1/μ for μ_f, μ_c·x1·x2·cosh s/μ and x1·x2·cosh s for s, 1/h_c for h_c).
+/// (1/μ for μ_f, μ_c·x1·x2/μ and x1·x2 for y (dx2/dy = −x1·x2), 1/h_c for h_c).
 #[inline]
 fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
     let mu = op.friction_coefficient;
-    let cosh_s = op.logit.max(LOGIT_FLOOR).hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
-    let share = op.fluid_load_fraction * op.asperity_load_fraction * cosh_s;
+    let share = op.fluid_load_fraction * op.asperity_load_fraction;
     (1.0 / mu, mu_c * share / mu, share, 1.0 / op.film_thickness)
 }
 
@@ -454,12 +461,9 @@ impl StribeckTable {
     /// [`Self::torque`]), so that their μ agrees bit for bit.
     #[inline(always)]
     fn friction_parts(c: &Cell, t: f64, u: f64) -> (f64, f64, f64, f64) {
-        let [mu_f, s] = bicubic_pair(&c.friction, t, u);
+        let [mu_f, y] = bicubic_pair(&c.friction, t, u);
         // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
         let mu_f = mu_f.max(0.0);
-        // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
-        let es = s.exp();
-        let y = 0.5 * (es - 1.0 / es);
         // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
         let (x1, x2) = if y <= 0.0 {
             let e = y.exp();
