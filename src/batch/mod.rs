@@ -290,7 +290,14 @@ impl PreslidingBatch {
             inputs::check_length("output", out, self.len())?;
         }
         self.assign(inputs.temperature)?;
-        step::run(&mut self.joints, &mut self.bounds, &self.slots, &self.models, inputs, steps, action, out)
+        let PreslidingBatch { joints, bounds, slots, models, .. } = self;
+        if joints.len() < 2 * step::CHUNK {
+            // On the calling thread (no pool).
+            return step::run(joints, bounds, slots, models, inputs, steps, action, out);
+        }
+        // Both passes on one of the pool's threads: a caller outside the pool (a Python
+        // thread) hands the call over once, not once a pass (each hand-over wakes threads).
+        rayon::scope(|_| step::run(joints, bounds, slots, models, inputs, steps, action, out))
     }
 
     /// The friction torque on each pin (N·m) at the inputs into `out`, the states unchanged:
