@@ -26,6 +26,7 @@
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 // Numerical helpers and the parameters (the starved-inlet relation's parameters are a section):
 pub mod fast_math;
+pub mod fast_ln;
 pub mod newton;
 pub mod table_cache;
 pub mod starvation;

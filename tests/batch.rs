@@ -245,7 +245,7 @@ fn check_host(params: &[Params], per_joint: bool, fidelity: Fidelity, scene: &[S
             prop_assert_eq!(a.to_bits(), states[i].reference_angle().to_bits());
             let (sh, sw) = states[i].last_step();
             prop_assert_eq!((h[i].to_bits(), w[i].to_bits(), u[i]), (sh.to_bits(), sw.to_bits(), states[i].is_unreferenced()));
-            prop_assert_eq!(batch.joint_law(i), states[i].law());
+            prop_assert_eq!(&batch.joint_law(i), states[i].law());
         }
     }
     Ok(())
@@ -477,7 +477,7 @@ fn a_wrapped_angle_reads_as_the_continuous_one() {
     assert!(max_diff < 1e-6, "{max_diff}");
     assert!(cont.joint_law(1).step == h && cont.joint_law(3).host_inertia == 1e3);
     // The damping cap: J = 1 kg·m² at h = 10 ms is capped (0.9·J/h·min(1, 2 − h²k/J)).
-    let law = *cont.joint_law(1);
+    let law = cont.joint_law(1);
     let k = 100.0 / law.angle;
     let capped = law.at_step(1e-2).damping(k);
     assert!(capped < law.at_step(0.0).damping(k) && capped <= 0.9 * 1.0 / 1e-2, "{capped}");

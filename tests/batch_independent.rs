@@ -494,7 +494,7 @@ fn run_scene(seed: u64, sc: &Scene) -> Stats {
         assert_eq!(states_of(&a), want_states, "seed {seed}: batch a's states");
         assert_eq!(states_of(&b), want_states, "seed {seed}: batch b's states");
         for (i, r) in refs.iter().enumerate() {
-            assert_eq!(a.joint_law(i), r.law(), "seed {seed} joint {i} law");
+            assert_eq!(&a.joint_law(i), r.law(), "seed {seed} joint {i} law");
         }
     }
     stats

@@ -44,6 +44,7 @@ pub mod error;
 pub mod inputs;
 pub mod model;
 pub mod cache;
+pub mod joints;
 pub mod step;
 
 pub use error::BatchError;
@@ -52,9 +53,10 @@ pub use model::{Model, Settings};
 
 use crate::joint::Joint;
 use crate::params::Params;
-use crate::zero_velocity::{Presliding, PreslidingJoint};
+use crate::zero_velocity::Presliding;
 use cache::Models;
-use step::{Action, Bound};
+use joints::Joints;
+use step::{Action, Bounds};
 
 /// The parameter sets of a batch.
 // One value per batch, built once: the size of the shared set costs nothing worth a Box.
@@ -71,10 +73,10 @@ pub enum BatchParams {
 #[derive(Debug, Clone)]
 pub struct PreslidingBatch {
     /// Each joint's presliding state.
-    joints: Vec<PreslidingJoint>,
+    joints: Joints,
     /// Each joint's last sliding torque and its inputs (apart from the states: the pass that
     /// computes them reads no state).
-    bounds: Vec<Bound>,
+    bounds: Bounds,
     /// Each joint's model slot (u32::MAX before its first call).
     slots: Vec<u32>,
     models: Models,
@@ -109,8 +111,8 @@ impl PreslidingBatch {
         };
         let bases = sets.iter().enumerate().map(|(index, p)| Joint::new(p).map_err(|source| BatchError::Params { index, source })).collect::<Result<Vec<_>, _>>()?;
         Ok(PreslidingBatch {
-            joints: vec![PreslidingJoint::new(law, 0.0); n],
-            bounds: vec![Bound::NONE; n],
+            joints: Joints::new(law, n),
+            bounds: Bounds::new(n),
             slots: vec![u32::MAX; n],
             models: Models::new(bases, settings),
             per_joint,
@@ -173,23 +175,17 @@ impl PreslidingBatch {
             inputs::check_length("host_inertia", v, n)?;
         }
         let j = |i: usize| inertia.map_or(0.0, |v| v[i]);
-        let laws = (0..n)
-            .map(|index| self.law.with_host_inertia(j(index)).map_err(|_| BatchError::HostInertia { index, value: j(index) }))
-            .collect::<Result<Vec<_>, _>>()?;
-        for (js, law) in self.joints.iter_mut().zip(laws) {
-            let s = &*js;
-            let ((step, omega), unreferenced) = (s.last_step(), s.is_unreferenced());
-            let mut state = PreslidingJoint::at_state(law, s.presliding_torque(), s.reference_angle());
-            state.set_last_step(step, omega, unreferenced);
-            *js = state;
+        for index in 0..n {
+            self.law.with_host_inertia(j(index)).map_err(|_| BatchError::HostInertia { index, value: j(index) })?;
         }
+        self.joints.set_inertia(inertia.map(<[f64]>::to_vec), 0.0);
         self.host_inertia = inertia.map(<[f64]>::to_vec);
         Ok(())
     }
 
     /// Joint `i`'s law (its host inertia, and its `step` the host's step of the last commit).
-    pub fn joint_law(&self, i: usize) -> &Presliding {
-        self.joints[i].law()
+    pub fn joint_law(&self, i: usize) -> Presliding {
+        *self.joints.get(i).law()
     }
 
     /// Every joint's step bookkeeping into `step` (s, the host's step of the last commit; 0
@@ -203,7 +199,8 @@ impl PreslidingBatch {
         if unreferenced.len() != n {
             return Err(BatchError::Shape { argument: "unreferenced", expected: n, got: unreferenced.len() });
         }
-        for (((j, h), w), u) in self.joints.iter().zip(step).zip(omega).zip(unreferenced) {
+        for (i, ((h, w), u)) in step.iter_mut().zip(omega).zip(unreferenced).enumerate() {
+            let j = self.joints.get(i);
             ((*h, *w), *u) = (j.last_step(), j.is_unreferenced());
         }
         Ok(())
@@ -225,15 +222,17 @@ impl PreslidingBatch {
             step::check_step(i, h)?;
             inputs::finite("angular_velocity", i, w, "rad/s")?;
         }
-        for (((j, &h), &w), &u) in self.joints.iter_mut().zip(step).zip(omega).zip(unreferenced) {
+        for (i, ((&h, &w), &u)) in step.iter().zip(omega).zip(unreferenced).enumerate() {
+            let mut j = self.joints.get(i);
             j.set_last_step(h, w, u);
+            self.joints.set(i, &j);
         }
         Ok(())
     }
 
     /// Joint `i`'s state: (presliding torque τ in N·m, reference angle in rad).
     pub fn state(&self, i: usize) -> (f64, f64) {
-        let s = &self.joints[i];
+        let s = self.joints.get(i);
         (s.presliding_torque(), s.reference_angle())
     }
 
@@ -241,8 +240,8 @@ impl PreslidingBatch {
     pub fn states(&self, torque: &mut [f64], angle: &mut [f64]) -> Result<(), BatchError> {
         inputs::check_length("torque", torque, self.len())?;
         inputs::check_length("angle", angle, self.len())?;
-        for ((j, t), a) in self.joints.iter().zip(torque).zip(angle) {
-            (*t, *a) = (j.presliding_torque(), j.reference_angle());
+        for (i, (t, a)) in torque.iter_mut().zip(angle).enumerate() {
+            (*t, *a) = self.state(i);
         }
         Ok(())
     }
@@ -256,8 +255,10 @@ impl PreslidingBatch {
             inputs::finite("presliding_torque", i, t, "N.m")?;
             inputs::finite("angle", i, a, "rad")?;
         }
-        for ((j, &t), &a) in self.joints.iter_mut().zip(torque).zip(angle) {
+        for (i, (&t, &a)) in torque.iter().zip(angle).enumerate() {
+            let mut j = self.joints.get(i);
             j.set_state(t, a);
+            self.joints.set(i, &j);
         }
         Ok(())
     }
@@ -289,7 +290,14 @@ impl PreslidingBatch {
             inputs::check_length("output", out, self.len())?;
         }
         self.assign(inputs.temperature)?;
-        step::run(&mut self.joints, &mut self.bounds, &self.slots, &self.models, inputs, steps, action, out)
+        let PreslidingBatch { joints, bounds, slots, models, .. } = self;
+        if joints.len() < 2 * step::CHUNK {
+            // On the calling thread (no pool).
+            return step::run(joints, bounds, slots, models, inputs, steps, action, out);
+        }
+        // Both passes on one of the pool's threads: a caller outside the pool (a Python
+        // thread) hands the call over once, not once a pass (each hand-over wakes threads).
+        rayon::scope(|_| step::run(joints, bounds, slots, models, inputs, steps, action, out))
     }
 
     /// The friction torque on each pin (N·m) at the inputs into `out`, the states unchanged:

@@ -10,7 +10,7 @@
 //! answers bit for bit as that scalar path, because it calls the same functions.
 
 use super::error::BatchError;
-use crate::fidelity::{Envelope, Evaluator, Fidelity, Level, Located};
+use crate::fidelity::{Envelope, Evaluator, Fidelity, Level, Located, StribeckTable};
 use crate::joint::{Joint, ModelError};
 
 /// The fidelity a batch runs at: the level, its tolerance and its envelope (as the scalar
@@ -85,6 +85,17 @@ impl Model {
     #[inline]
     pub fn locate(&self, load: f64, omega: f64) -> Located {
         self.level.as_ref().map_or(Located::OUTSIDE, |ev| ev.locate_torque(load, omega))
+    }
+
+    /// The table whose answers are this model's sliding torque wherever it gives one: at the
+    /// table level of the complete model (whose film is not checked against the clearance:
+    /// `Evaluator::torque_inside`), for a load 0 < |P| < [`Joint::capacity`]. Then
+    /// `table.torque_located(|P|, ω, table.locate_torque(|P|, ω))`, when it is `Some`, is
+    /// [`Model::sliding_torque`] bit for bit (what the level answers), and elsewhere
+    /// [`Model::sliding_torque`] answers.
+    #[inline]
+    pub fn torque_table(&self) -> Option<&StribeckTable> {
+        if self.joint.is_paper() { None } else { self.level.as_ref().and_then(Evaluator::table) }
     }
 
     /// [`Model::sliding_torque`] at (`load`, `omega`) located by [`Model::locate`] as `at`,

@@ -6,26 +6,31 @@ use super::cache::Models;
 use super::error::BatchError;
 use super::inputs::{finite, Inputs};
 use super::model::Model;
-use crate::fidelity::Located;
-use crate::zero_velocity::PreslidingJoint;
+use crate::fidelity::{Located, StribeckTable};
+use super::joints::{self, Joints, State};
+use crate::zero_velocity::{Presliding, PreslidingJoint};
 use rayon::prelude::*;
 
 /// Joints handed to one rayon task; below two chunks the work stays on the calling thread.
 pub const CHUNK: usize = 512;
 
-/// One joint's last sliding torque and the inputs it was computed at (kept apart from the
-/// joint's state: the first pass reads and writes these alone).
-#[derive(Debug, Clone, Copy)]
-pub struct Bound {
-    /// Bits of the (load, angular velocity, temperature) of `value`; load NaN: none yet.
-    key: [u64; 3],
-    /// The sliding torque at `key` (N·m).
-    pub value: f64,
+/// Each joint's last sliding torque and the inputs it was computed at, apart from the joints'
+/// states (the first pass reads and writes these alone) and in two arrays (the second pass
+/// reads the torques alone).
+#[derive(Debug, Clone)]
+pub struct Bounds {
+    /// Per joint, the bits of the (load, angular velocity, temperature) of its `values` entry;
+    /// load NaN: none yet.
+    keys: Vec<[u64; 3]>,
+    /// Per joint, the sliding torque at its key (N·m).
+    values: Vec<f64>,
 }
 
-impl Bound {
-    /// No sliding torque computed yet.
-    pub const NONE: Bound = Bound { key: [0x7ff8_0000_0000_0000, 0, 0], value: f64::NAN };
+impl Bounds {
+    /// No sliding torque computed yet, for `n` joints.
+    pub fn new(n: usize) -> Self {
+        Bounds { keys: vec![[0x7ff8_0000_0000_0000, 0, 0]; n], values: vec![f64::NAN; n] }
+    }
 }
 
 /// What the second pass does with each joint's sliding torque.
@@ -76,15 +81,29 @@ pub const BLOCK: usize = 8;
 /// located in its model ([`Model::locate`]), then those are answered in order
 /// ([`Model::sliding_torque_located`]); the error of the lowest joint index is the one
 /// returned, as when each joint is checked then answered in turn.
-fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
-    let end = offset + bounds.len();
+#[allow(clippy::too_many_arguments)]
+fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+    // One model for the whole chunk (the common case) at the table level: the table directly.
+    // (All the slots equal to the first: a fold without an early exit, which vectorises.)
+    if let Some(&slot) = slots.first()
+        && slots.iter().fold(0, |differ, &s| differ | (s ^ slot)) == 0
+    {
+        let model = models.get(slot);
+        // The table answers for loads inside its range alone: where that is within
+        // (0, capacity) (always: a table is built by solving beyond its range's ends), the
+        // model's checks of the load pass wherever the table answers.
+        if let Some(table) = model.torque_table().filter(|t| t.envelope().load_min > 0.0 && t.envelope().load_max < model.joint().capacity()) {
+            return bounds_chunk_table(keys, values, model, table, models.key(slot).1, inp, steps, offset, angle);
+        }
+    }
+    let end = offset + keys.len();
     let (loads, omegas) = (&inp.load[offset..end], &inp.angular_velocity[offset..end]);
     // The model of the previous joint's slot (most joints share one): looked up once a run.
     let mut current: (u32, Option<&Model>, u64) = (u32::MAX, None, 0);
     // The joints of a block to answer: index in the chunk, located point.
     let mut todo = [(0, Located::OUTSIDE); BLOCK];
-    for first in (0..bounds.len()).step_by(BLOCK) {
-        let last = (first + BLOCK).min(bounds.len());
+    for first in (0..keys.len()).step_by(BLOCK) {
+        let last = (first + BLOCK).min(keys.len());
         let (mut pending, mut bad) = (0, None);
         for k in first..last {
             let i = offset + k;
@@ -100,7 +119,7 @@ fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inpu
             }
             // Compared word by word (an array built on the stack and compared whole is read back
             // wider than it was written: a stalled load).
-            let old = &bounds[k].key;
+            let old = &keys[k];
             if load.to_bits() != old[0] || omega.to_bits() != old[1] || current.2 != old[2] {
                 todo[pending] = (k, current.1.expect("set above").locate(load, omega));
                 pending += 1;
@@ -112,7 +131,7 @@ fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inpu
                 current = (slot, Some(models.get(slot)), models.key(slot).1);
             }
             match current.1.expect("set above").sliding_torque_located(load, omega, at) {
-                Ok(value) => bounds[k] = Bound { key: [load.to_bits(), omega.to_bits(), current.2], value },
+                Ok(value) => (keys[k], values[k]) = ([load.to_bits(), omega.to_bits(), current.2], value),
                 Err(source) => return Some((offset + k, BatchError::Model { index: offset + k, source })),
             }
         }
@@ -123,39 +142,103 @@ fn bounds_chunk(bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inpu
     None
 }
 
-/// Commit joint `i` at its input angle with the sliding torque `bound`:
-/// `PreslidingJoint::commit`, or with the host's step `PreslidingJoint::commit_step` (ω·h
-/// the next increment is read against, the damping cap).
-#[inline]
-fn commit(j: &mut PreslidingJoint, bound: f64, inp: &Inputs, steps: Option<&[f64]>, i: usize) {
-    match steps {
-        Some(h) => j.commit_step(inp.angle[i], inp.angular_velocity[i], bound, h[i]),
-        None => j.commit(inp.angle[i], bound),
+/// [`bounds_chunk`] for a chunk whose joints all use `model`, at the table level
+/// ([`Model::torque_table`]: `table`), key temperature bits `tkey`: the same answers and
+/// errors, the table asked directly (the model's layers, which every joint would go through
+/// in turn, only where the table gives no answer).
+#[allow(clippy::too_many_arguments)]
+fn bounds_chunk_table(keys: &mut [[u64; 3]], values: &mut [f64], model: &Model, table: &StribeckTable, tkey: u64, inp: &Inputs, steps: Option<&[f64]>, offset: usize, angle: bool) -> Option<(usize, BatchError)> {
+    let end = offset + keys.len();
+    let (loads, omegas, angles) = (&inp.load[offset..end], &inp.angular_velocity[offset..end], &inp.angle[offset..end]);
+    let hs = steps.map(|h| &h[offset..end]);
+    let mut todo = [(0, Located::OUTSIDE); BLOCK];
+    for first in (0..keys.len()).step_by(BLOCK) {
+        let last = (first + BLOCK).min(keys.len());
+        let (mut pending, mut bad) = (0, None);
+        for k in first..last {
+            let (load, omega) = (loads[k], omegas[k]);
+            let good = load.is_finite() && omega.is_finite() && (!angle || angles[k].is_finite()) && hs.is_none_or(|h| h[k].is_finite() && h[k] >= 0.0);
+            if !good {
+                bad = Some(offset + k);
+                break;
+            }
+            let old = &keys[k];
+            if load.to_bits() != old[0] || omega.to_bits() != old[1] || tkey != old[2] {
+                todo[pending] = (k, table.locate_torque(load.abs(), omega));
+                pending += 1;
+            }
+        }
+        for &(k, at) in &todo[..pending] {
+            let (load, omega) = (loads[k], omegas[k]);
+            // The table's answer where the model would give it (Model::torque_table: it gives
+            // one for loads inside its range alone, within (0, capacity): checked above), else
+            // the model's own (its errors included).
+            let value = match table.torque_located(load.abs(), omega, at) {
+                Some(t) => t,
+                None => match model.sliding_torque(load, omega) {
+                    Ok(t) => t,
+                    Err(source) => return Some((offset + k, BatchError::Model { index: offset + k, source })),
+                },
+            };
+            (keys[k], values[k]) = ([load.to_bits(), omega.to_bits(), tkey], value);
+        }
+        if let Some(i) = bad {
+            return Some((i, input_error(inp, steps, i, angle)));
+        }
+    }
+    None
+}
+
+/// The joints of a chunk: the law, their states and waiting flags, their host inertia when
+/// set per joint.
+struct Chunk<'a> {
+    law: &'a Presliding,
+    states: &'a mut [State],
+    unreferenced: &'a mut [bool],
+    inertia: Option<&'a [f64]>,
+}
+
+/// `f` on each joint of a chunk as the scalar object (its index in the chunk, the joint, its
+/// bound), the joint stored back when `commits`. Generic over `f` and `inertia`, so that each
+/// action's loop is compiled on its own (no choice made per joint).
+#[inline(always)]
+fn each(c: &mut Chunk, bounds: &[f64], commits: bool, inertia: impl Fn(usize) -> Option<f64>, mut f: impl FnMut(usize, &mut PreslidingJoint, f64)) {
+    for (k, ((s, u), &bound)) in c.states.iter_mut().zip(c.unreferenced.iter_mut()).zip(bounds).enumerate() {
+        let mut j = joints::joint(c.law, s, *u, inertia(k));
+        f(k, &mut j, bound);
+        if commits {
+            joints::store(&j, s, u);
+        }
     }
 }
 
 /// The law on a chunk (every bound computed).
-fn law_chunk(joints: &mut [PreslidingJoint], bounds: &[Bound], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
-    for (k, (j, b)) in joints.iter_mut().zip(bounds).enumerate() {
-        let (i, bound) = (offset + k, b.value);
-        match action {
-            Action::Torque => out[k] = j.torque_at(inp.angle[i], inp.angular_velocity[i], bound),
-            Action::Commit => commit(j, bound, inp, steps, i),
-            Action::Step => {
-                // `torque_at` then `commit` (or `commit_step`) at one angle and bound, the held
-                // torque computed once: `torque_at` is `law.torque(held_at(..), ..)`, and a
-                // commit stores `held_at(..)` at the angle (`set_state`), plus the host's step
-                // (`set_last_step`) for `commit_step`.
-                let (angle, omega) = (inp.angle[i], inp.angular_velocity[i]);
-                let held = j.held_at(angle, bound);
-                out[k] = j.law().torque(held, omega, bound);
-                j.set_state(held, angle);
-                if let Some(h) = steps {
-                    j.set_last_step(h[i], omega, false);
-                }
-            }
-            Action::Bound => out[k] = bound,
+fn law_chunk(c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action) {
+    match c.inertia {
+        None => law_with(c, bounds, out, inp, steps, offset, action, |_| None),
+        Some(v) => law_with(c, bounds, out, inp, steps, offset, action, |k| Some(v[k])),
+    }
+}
+
+/// [`law_chunk`] with the host inertia of the chunk's joint k given by `inertia`.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn law_with(mut c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: Option<&[f64]>, offset: usize, action: Action, inertia: impl Fn(usize) -> Option<f64>) {
+    let end = offset + bounds.len();
+    let (angles, omegas) = (&inp.angle[offset..end], &inp.angular_velocity[offset..end]);
+    match (action, steps) {
+        (Action::Torque, _) => each(&mut c, bounds, false, inertia, |k, j, b| out[k] = j.torque_at(angles[k], omegas[k], b)),
+        (Action::Commit, None) => each(&mut c, bounds, true, inertia, |k, j, b| j.commit(angles[k], b)),
+        (Action::Commit, Some(h)) => {
+            let h = &h[offset..end];
+            each(&mut c, bounds, true, inertia, |k, j, b| j.commit_step(angles[k], omegas[k], b, h[k]));
         }
+        (Action::Step, None) => each(&mut c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, None)),
+        (Action::Step, Some(h)) => {
+            let h = &h[offset..end];
+            each(&mut c, bounds, true, inertia, |k, j, b| out[k] = j.step(angles[k], omegas[k], b, Some(h[k])));
+        }
+        (Action::Bound, _) => out.copy_from_slice(bounds),
     }
 }
 
@@ -165,36 +248,40 @@ fn law_chunk(joints: &mut [PreslidingJoint], bounds: &[Bound], out: &mut [f64], 
 /// state has changed. `out` has one value per joint (unused by [`Action::Commit`]: it may be
 /// empty then).
 #[allow(clippy::too_many_arguments)]
-pub fn run(joints: &mut [PreslidingJoint], bounds: &mut [Bound], slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
+pub fn run(joints: &mut Joints, bounds: &mut Bounds, slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
     let n = joints.len();
     let angle = action != Action::Bound;
     let err = if n < 2 * CHUNK {
-        bounds_chunk(bounds, slots, models, inp, steps, 0, angle)
+        bounds_chunk(&mut bounds.keys, &mut bounds.values, slots, models, inp, steps, 0, angle)
     } else {
         bounds
+            .keys
             .par_chunks_mut(CHUNK)
+            .zip(bounds.values.par_chunks_mut(CHUNK))
             .zip(slots.par_chunks(CHUNK))
             .enumerate()
-            .filter_map(|(c, (b, s))| bounds_chunk(b, s, models, inp, steps, c * CHUNK, angle))
+            .filter_map(|(c, ((k, v), s))| bounds_chunk(k, v, s, models, inp, steps, c * CHUNK, angle))
             .min_by_key(|(i, _)| *i)
     };
     if let Some((_, e)) = err {
         return Err(e);
     }
-    let bounds = &*bounds;
+    let bounds = &bounds.values[..];
     let out_len = if action == Action::Commit { 0 } else { n };
     let out = &mut out[..out_len];
+    let (law, states, unreferenced, inertia) = joints.parts_mut();
     if n < 2 * CHUNK {
-        law_chunk(joints, bounds, out, inp, steps, 0, action);
-    } else if action == Action::Commit {
-        joints.par_chunks_mut(CHUNK).zip(bounds.par_chunks(CHUNK)).enumerate().for_each(|(c, (j, b))| law_chunk(j, b, &mut [], inp, steps, c * CHUNK, action));
+        law_chunk(Chunk { law, states, unreferenced, inertia }, bounds, out, inp, steps, 0, action);
     } else {
-        joints
-            .par_chunks_mut(CHUNK)
-            .zip(bounds.par_chunks(CHUNK))
-            .zip(out.par_chunks_mut(CHUNK))
-            .enumerate()
-            .for_each(|(c, ((j, b), o))| law_chunk(j, b, o, inp, steps, c * CHUNK, action));
+        let inertia_of = |c: usize| inertia.map(|v| &v[c * CHUNK..((c + 1) * CHUNK).min(n)]);
+        let chunks = states.par_chunks_mut(CHUNK).zip(unreferenced.par_chunks_mut(CHUNK)).zip(bounds.par_chunks(CHUNK)).enumerate();
+        if action == Action::Commit {
+            chunks.for_each(|(c, ((states, unreferenced), b))| law_chunk(Chunk { law, states, unreferenced, inertia: inertia_of(c) }, b, &mut [], inp, steps, c * CHUNK, action));
+        } else {
+            chunks.zip(out.par_chunks_mut(CHUNK)).for_each(|((c, ((states, unreferenced), b)), o)| {
+                law_chunk(Chunk { law, states, unreferenced, inertia: inertia_of(c) }, b, o, inp, steps, c * CHUNK, action);
+            });
+        }
     }
     Ok(())
 }

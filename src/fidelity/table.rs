@@ -10,17 +10,25 @@
 //!
 //! * `μ_f`, the fluid (Bair–Winer) part of μ — smooth (∝ ω in boundary, saturating in
 //!   full film);
-//! * `s = asinh y`, the load sharing: ≈ y near the transition, ≈ ±ln 2|y| far from it,
-//!   so it stays of order ten where y runs from −20 (boundary) to 10⁶ (deep full film);
+//! * `y`, the load sharing's logit (floored at [`LOGIT_FLOOR`]) — smooth: ≈ constant in deep
+//!   boundary, growing like ω² through the transition and in full film, where it reaches
+//!   10⁶; a cubic follows it to a relative error ~h⁴ (a tenth of a decade per cell changes it by
+//!   a few per cent), and where it is large its error does not matter (below);
 //! * `h_c`.
 //!
-//! and then `y = sinh s`, `x1 = 1/(1 + e^{−y})`, `x2 = 1/(1 + e^{y})` (the smaller one as
-//! e^{−|y|} times the larger, without cancellation), `μ = μ_f + μ_c·x2`, `T = μ·R·P`,
-//! `λ = h_c/σ`. The sigmoid, evaluated exactly, carries the corner; an error δs moves μ by
-//! `μ_c·x1·x2·cosh(s)·δs`, which vanishes both in boundary and in full film. (Tabulating
-//! ln μ_f and ln h_c instead gave the same grid sizes on the envelopes tried, but costs two more
-//! exponentials per call; μ_f and h_c vary by less than a few decades over an envelope and
-//! their relative error is what the refinement measures.)
+//! and then `x1 = 1/(1 + e^{−y})`, `x2 = 1/(1 + e^{y})` (the smaller one as e^{−|y|} times the
+//! larger, without cancellation), `μ = μ_f + μ_c·x2`, `T = μ·R·P`, `λ = h_c/σ`. The sigmoid,
+//! evaluated exactly, carries the corner; an error δy moves μ by `μ_c·x1·x2·δy`, which
+//! vanishes both in boundary and in full film (where y is large, so its absolute error is:
+//! x1·x2 ≈ e^{−y} more than makes up for it). Tabulating s = asinh y instead (of order ten
+//! everywhere) took one exponential and a division more per evaluation (y = sinh s). Its grids,
+//! against these: 66 × 169 against 62 × 161 for the batch benchmark's envelope (1e-4),
+//! 232 × 197 against 80 × 160 at 262.9 K over 10–100 N (1e-3), 66 × 211 against 80 × 224 for
+//! the paper's model at 1e-5; and at 343 K over 5–60 kN (1e-4) a 5 × 14 table whose error on
+//! fresh points, 2.0e-4, exceeded its bound (a 6 × 17 table now, 2.0e-5 within 3.5e-5). (Tabulating ln μ_f and ln h_c instead
+//! gave the same grid sizes on the envelopes tried, but costs two more exponentials per call;
+//! μ_f and h_c vary by less than a few decades over an envelope and their relative error is
+//! what the refinement measures.)
 //!
 //! # Interpolation
 //! A uniform grid in x = ln P and z = ln |ω| covers the envelope exactly (the envelope
@@ -29,7 +37,7 @@
 //! ∂/∂z and ∂²/∂x∂z come from fourth-order central differences of the node values; each
 //! cell stores the 3 × 16 power coefficients of its bicubic Hermite patches
 //! (the private `hermite` module), so that an evaluation is two logarithms, an index computation,
-//! three Horner evaluations and two exponentials (sinh s, the sigmoid). The patches share
+//! three Horner evaluations and an exponential (the sigmoid's). The patches share
 //! values and slopes at the nodes, so the interpolant is C¹ across cells (no jumps for an
 //! adaptive integrator to trip on).
 //!
@@ -62,7 +70,7 @@ use super::check::{CheckRng, ErrorReport};
 use super::envelope::{solve_at, Envelope};
 use super::error::FidelityError;
 use super::evaluation::{regime_from_shares, Evaluation, Source};
-use super::hermite::{bicubic, bicubic_coefficients, central_slope, fourth_difference};
+use super::hermite::{bicubic, bicubic_coefficients, bicubic_pair, central_slope, fourth_difference};
 use super::rest::RestTable;
 use crate::composite::RestYield;
 use crate::joint::Joint;
@@ -86,10 +94,22 @@ pub const MAX_SOLVED_SHARE: f64 = 0.25;
 /// Initial grid step in ln P and ln |ω|.
 const INITIAL_STEP: f64 = 0.5;
 
-/// One cell: the bicubic coefficients of μ_f, asinh y and h_c.
+/// One cell: the bicubic coefficients of μ_f and the logit y interleaved (`friction[i]` is
+/// coefficient i of each: evaluated together, a pair per operation, [`bicubic_pair`]), then
+/// those of h_c.
 #[derive(Debug, Clone, Copy)]
-#[repr(align(64))]
-struct Cell([[f64; 16]; 3]);
+#[repr(C, align(64))]
+struct Cell {
+    friction: [[f64; 2]; 16],
+    film: [f64; 16],
+}
+
+impl Cell {
+    /// The cell of the patches of μ_f, y and h_c (power coefficients, [`bicubic_coefficients`]).
+    fn new([mu_f, s, film]: [[f64; 16]; 3]) -> Self {
+        Cell { friction: std::array::from_fn(|i| [mu_f[i], s[i]]), film }
+    }
+}
 
 /// What a table build cost and produced.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -143,22 +163,21 @@ pub struct StribeckTable {
 /// The logit below which the table holds [`LOGIT_FLOOR`]: x1 = e^y < 4.3e-18 there, below any
 /// tolerance in the shares and in μ. A moving joint whose film is bounded (the complete
 /// model's cold supply in the journal's region, a starved inlet) can have its fluid carry
-/// nothing (logit −∞) at a finite speed; the floor keeps the tabulated asinh y finite there.
+/// nothing (logit −∞) at a finite speed; the floor keeps the tabulated y finite there.
 pub const LOGIT_FLOOR: f64 = -40.0;
 
 /// The tabulated variables at one solution.
 #[inline]
 fn variables(op: &crate::OperatingPoint) -> [f64; 3] {
-    [op.fluid_friction_coefficient, op.logit.max(LOGIT_FLOOR).asinh(), op.film_thickness]
+    [op.fluid_friction_coefficient, op.logit.max(LOGIT_FLOOR), op.film_thickness]
 }
 
 /// Weights turning errors in the three tabulated variables into errors of the outputs:
-/// (1/μ for μ_f, μ_c·x1·x2·cosh s/μ and x1·x2·cosh s for s, 1/h_c for h_c).
+/// (1/μ for μ_f, μ_c·x1·x2/μ and x1·x2 for y (dx2/dy = −x1·x2), 1/h_c for h_c).
 #[inline]
 fn weights(op: &crate::OperatingPoint, mu_c: f64) -> (f64, f64, f64, f64) {
     let mu = op.friction_coefficient;
-    let cosh_s = op.logit.max(LOGIT_FLOOR).hypot(1.0); // dy/ds = cosh(asinh y) = √(1 + y²)
-    let share = op.fluid_load_fraction * op.asperity_load_fraction * cosh_s;
+    let share = op.fluid_load_fraction * op.asperity_load_fraction;
     (1.0 / mu, mu_c * share / mu, share, 1.0 / op.film_thickness)
 }
 
@@ -184,7 +203,7 @@ fn prefetch_torque_patches(cell: &Cell) {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        let p = std::ptr::from_ref(&cell.0[..2]).cast::<i8>();
+        let p = std::ptr::from_ref(&cell.friction).cast::<i8>();
         for line in [0, 64, 128, 192] {
             // SAFETY: a prefetch reads nothing the program sees and cannot fault (it is a
             // hint, dropped for an unmapped address); the address is inside `cell`. SSE, its
@@ -341,7 +360,7 @@ impl StribeckTable {
                 let corner = |s: &[[f64; 3]], v: usize| {
                     [[s[idx(a, b)][v], s[idx(a, b + 1)][v]], [s[idx(a + 1, b)][v], s[idx(a + 1, b + 1)][v]]]
                 };
-                cells.push(Cell(std::array::from_fn(|v| {
+                cells.push(Cell::new(std::array::from_fn(|v| {
                     bicubic_coefficients(corner(&q, v), corner(&sx, v), corner(&sz, v), corner(&sxz, v))
                 })));
             }
@@ -411,13 +430,16 @@ impl StribeckTable {
     /// The cell holding (load, |ω|) and the local coordinates in it.
     #[inline(always)]
     fn locate(&self, load: f64, omega: f64) -> (usize, f64, f64) {
-        let fx = (load.ln() - self.x0) * self.inv_hx;
-        let fz = (omega.abs().ln() - self.z0) * self.inv_hz;
+        let fx = (crate::fast_ln::ln_normal(load) - self.x0) * self.inv_hx;
+        let fz = (crate::fast_ln::ln_normal(omega.abs()) - self.z0) * self.inv_hz;
         // The cell index ⌊f⌋ within 0 ..= n − 1 (a rounding to just below 0 gives cell 0, NaN
-        // too): clamped as a float first, so that the integer conversions are the short ones.
-        let i = fx.clamp(0.0, self.last_x) as i64;
-        let j = fz.clamp(0.0, self.last_z) as i64;
-        (i as usize * self.nz + j as usize, fx - i as f64, fz - j as f64)
+        // too: `max` answers 0 for NaN), bounded as a float first.
+        let (i, j) = (fx.max(0.0).min(self.last_x), fz.max(0.0).min(self.last_z));
+        // SAFETY: i and j are numbers (never NaN, above) in [0, n − 1] with n ≤ MAX_CELLS < 2^32:
+        // truncating them to u32 is defined (the checked `as` conversion adds a saturation the
+        // values never need).
+        let (i, j) = unsafe { (i.to_int_unchecked::<u32>(), j.to_int_unchecked::<u32>()) };
+        (i as usize * self.nz + j as usize, fx - f64::from(i), fz - f64::from(j))
     }
 
     /// Errors at `n` random points of the envelope, uniform in (ln P, ln |ω|).
@@ -438,12 +460,10 @@ impl StribeckTable {
     /// `c`: the part of the interpolation every path shares ([`Self::interpolate`],
     /// [`Self::torque`]), so that their μ agrees bit for bit.
     #[inline(always)]
-    fn friction_parts(c: &[[f64; 16]; 3], t: f64, u: f64) -> (f64, f64, f64, f64) {
+    fn friction_parts(c: &Cell, t: f64, u: f64) -> (f64, f64, f64, f64) {
+        let [mu_f, y] = bicubic_pair(&c.friction, t, u);
         // μ_f ≥ 0 always; an interpolated value can only dip below 0 where μ_f ≪ μ.
-        let mu_f = bicubic(&c[0], t, u).max(0.0);
-        // sinh as (e^s − e^−s)/2: its absolute error (~1e-16) is what matters for the shares.
-        let es = bicubic(&c[1], t, u).exp();
-        let y = 0.5 * (es - 1.0 / es);
+        let mu_f = mu_f.max(0.0);
         // x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), the small one as e^{−|y|}·(the large one).
         let (x1, x2) = if y <= 0.0 {
             let e = y.exp();
@@ -468,9 +488,9 @@ impl StribeckTable {
     /// [`Self::locate`] gives them.
     #[inline(always)]
     fn interpolate_at(&self, load: f64, omega: f64, k: usize, t: f64, u: f64) -> Evaluation {
-        let c = &self.cells[k].0;
+        let c = &self.cells[k];
         let (mu_f, y, x1, x2) = Self::friction_parts(c, t, u);
-        let h = bicubic(&c[2], t, u);
+        let h = bicubic(&c.film, t, u);
         let mu_a = self.mu_c * x2;
         let mu = mu_f + mu_a;
         Evaluation {
@@ -532,7 +552,7 @@ impl StribeckTable {
     /// The torque of [`Self::torque`] at (`load` > 0, `omega`) located by
     /// [`Self::locate_torque`] (of this table, at the same point), bit for bit. (A cell this
     /// table does not have is located again.)
-    #[inline]
+    #[inline(always)]
     pub fn torque_located(&self, load: f64, omega: f64, q: Located) -> Option<f64> {
         if q.cell != Located::OUTSIDE.cell {
             let Some(cell) = self.cells.get(q.cell) else {
@@ -541,7 +561,7 @@ impl StribeckTable {
             if self.solved(q.cell) {
                 return None;
             }
-            let (mu_f, _, _, x2) = Self::friction_parts(&cell.0, q.t, q.u);
+            let (mu_f, _, _, x2) = Self::friction_parts(cell, q.t, q.u);
             let mu = mu_f + self.mu_c * x2;
             Some(mu * self.radius * load)
         } else if omega == 0.0 {

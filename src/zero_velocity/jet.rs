@@ -13,6 +13,9 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 /// What the law needs of a number: arithmetic, `exp`, its real part (for branching) and
 /// constants. Implemented by `f64` and [`Jet`].
 pub trait Scalar: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self> {
+    /// Whether the type carries a value alone (no derivatives): then an expression whose value
+    /// is known may be answered without evaluating it (e.g. `b − 0·e^x` is b whatever x).
+    const VALUE_ONLY: bool;
     /// A constant (zero derivatives).
     fn c(x: f64) -> Self;
     /// The value (the real part).
@@ -24,6 +27,7 @@ pub trait Scalar: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = 
 }
 
 impl Scalar for f64 {
+    const VALUE_ONLY: bool = true;
     #[inline]
     fn c(x: f64) -> Self {
         x
@@ -107,6 +111,7 @@ impl Neg for Jet {
 }
 
 impl Scalar for Jet {
+    const VALUE_ONLY: bool = false;
     fn c(x: f64) -> Self {
         Jet { v: x, d: [0.0; 3] }
     }

@@ -74,7 +74,26 @@ impl PreslidingJoint {
         PreslidingJoint { law, torque, angle, omega: 0.0, unreferenced: false }
     }
 
+    /// The joint from its parts, as [`PreslidingJoint::parts`] gives them: the law (its host
+    /// inertia, its `step` the host's step of the last commit), τ (N·m), θ_ref (rad), ω at the
+    /// last commit (rad/s) and whether it waits for its first angle. For a store that keeps
+    /// many joints compactly (`pinjoint::batch`): parts taken from a joint give it back
+    /// exactly.
+    #[cfg(feature = "batch")]
+    #[inline]
+    pub(crate) fn from_parts(law: Presliding, torque: f64, angle: f64, omega: f64, unreferenced: bool) -> Self {
+        PreslidingJoint { law, torque, angle, omega, unreferenced }
+    }
+
+    /// The joint's parts (see [`PreslidingJoint::from_parts`]).
+    #[cfg(feature = "batch")]
+    #[inline]
+    pub(crate) fn parts(&self) -> (Presliding, f64, f64, f64, bool) {
+        (self.law, self.torque, self.angle, self.omega, self.unreferenced)
+    }
+
     /// The law (its `step` the host's step of the last commit).
+    #[inline]
     pub fn law(&self) -> &Presliding {
         &self.law
     }
@@ -91,6 +110,7 @@ impl PreslidingJoint {
 
     /// Restore the step bookkeeping ([`PreslidingJoint::last_step`]) and whether the joint
     /// waits for its first angle (e.g. from a stored state).
+    #[inline(always)]
     pub fn set_last_step(&mut self, step: f64, omega: f64, unreferenced: bool) {
         self.law = self.law.at_step(step);
         self.omega = if omega.is_finite() { omega } else { 0.0 };
@@ -99,6 +119,7 @@ impl PreslidingJoint {
 
     /// The increment from the reference to `angle` (rad): modulo 2π, the equivalent closest to
     /// ω·h of the last commit ([`super::wrap::increment`]); 0 while unreferenced.
+    #[inline(always)]
     pub fn increment(&self, angle: f64) -> f64 {
         if self.unreferenced {
             return 0.0;
@@ -118,6 +139,7 @@ impl PreslidingJoint {
 
     /// Replace the state (e.g. from a stored FMU state, or a Model Exchange host's τ); the
     /// joint has a reference from then on.
+    #[inline(always)]
     pub fn set_state(&mut self, torque: f64, angle: f64) {
         self.torque = torque;
         self.angle = angle;
@@ -126,17 +148,20 @@ impl PreslidingJoint {
 
     /// The presliding torque τ at `angle` (rad) with the sliding torque `bound` (N·m): the
     /// exact update over the increment θ − θ_ref ([`PreslidingJoint::increment`]).
+    #[inline(always)]
     pub fn held_at(&self, angle: f64, bound: f64) -> f64 {
         self.law.deflect(self.torque, self.increment(angle), bound)
     }
 
     /// The friction torque on the pin (N·m) at `angle` (rad) and `omega` (rad/s) with the
     /// sliding torque `bound` = T(P, |ω|) (N·m), without changing the state.
+    #[inline(always)]
     pub fn torque_at(&self, angle: f64, omega: f64, bound: f64) -> f64 {
         self.law.torque(self.held_at(angle, bound), omega, bound)
     }
 
     /// Commit the state at `angle`: τ ← τ at `angle`, θ_ref ← `angle`.
+    #[inline(always)]
     pub fn commit(&mut self, angle: f64, bound: f64) {
         self.torque = self.held_at(angle, bound);
         self.angle = angle;
@@ -146,9 +171,27 @@ impl PreslidingJoint {
     /// Commit at `angle` as a host step of `step` s at `omega` rad/s: as
     /// [`PreslidingJoint::commit`], and ω·h becomes the increment the next angle is read
     /// against (`step` 0 or not a finite number > 0: not known, the nearest equivalent to 0).
+    #[inline(always)]
     pub fn commit_step(&mut self, angle: f64, omega: f64, bound: f64, step: f64) {
         self.commit(angle, bound);
         self.set_last_step(step, omega, false);
+    }
+
+    /// [`PreslidingJoint::torque_at`] then [`PreslidingJoint::commit`] (`step` None) or
+    /// [`PreslidingJoint::commit_step`] (the host's step `step`, s) at one angle and bound,
+    /// the held torque computed once: the friction torque at (`angle`, `omega`) with the
+    /// sliding torque `bound`, the state committed there. Bit for bit the two calls.
+    #[inline(always)]
+    pub fn step(&mut self, angle: f64, omega: f64, bound: f64, step: Option<f64>) -> f64 {
+        // `torque_at` is `law.torque(held_at(..), ..)`; a commit stores `held_at(..)` at the
+        // angle (what `set_state` does), `commit_step` then `set_last_step`.
+        let held = self.held_at(angle, bound);
+        let torque = self.law.torque(held, omega, bound);
+        self.set_state(held, angle);
+        if let Some(h) = step {
+            self.set_last_step(h, omega, false);
+        }
+        torque
     }
 
     /// Drive the state by ω·h (for a host that does not set the angle): τ ← the update over

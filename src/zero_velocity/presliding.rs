@@ -217,6 +217,10 @@ impl Presliding {
         let u = if u0.re() < limit.re() {
             let elastic = u0 + k * a;
             if elastic.re() <= limit.re() { elastic } else { bound - span * (-(elastic - limit) / span).exp() }
+        } else if S::VALUE_ONLY && u0.re() == bound.re() {
+            // At the bound already (a state the bound fell below, projected onto it): T − 0·e^x
+            // is T for the x ≤ 0 here, bit for bit, without the exponential.
+            bound
         } else {
             bound - (bound - u0) * (-(k * a) / span).exp()
         };
