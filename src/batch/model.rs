@@ -89,13 +89,20 @@ impl Model {
 
     /// The table whose answers are this model's sliding torque wherever it gives one: at the
     /// table level of the complete model (whose film is not checked against the clearance:
-    /// `Evaluator::torque_inside`), for a load 0 < |P| < [`Joint::capacity`]. Then
+    /// `Evaluator::torque_inside`), and only where the table's load range lies inside
+    /// (0, [`Joint::capacity`]) (always: a table is built by solving beyond its range's ends),
+    /// so that the model's own checks of the load pass wherever the table answers. Then
     /// `table.torque_located(|P|, ω, table.locate_torque(|P|, ω))`, when it is `Some`, is
     /// [`Model::sliding_torque`] bit for bit (what the level answers), and elsewhere
     /// [`Model::sliding_torque`] answers.
     #[inline]
     pub fn torque_table(&self) -> Option<&StribeckTable> {
-        if self.joint.is_paper() { None } else { self.level.as_ref().and_then(Evaluator::table) }
+        if self.joint.is_paper() {
+            return None;
+        }
+        let table = self.level.as_ref().and_then(Evaluator::table)?;
+        let range = table.envelope();
+        (range.load_min > 0.0 && range.load_max < self.joint.capacity()).then_some(table)
     }
 
     /// [`Model::sliding_torque`] at (`load`, `omega`) located by [`Model::locate`] as `at`,

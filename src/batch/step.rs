@@ -71,6 +71,14 @@ fn input_error(inp: &Inputs, steps: Option<&[f64]>, i: usize, angle: bool) -> Ba
     check().expect_err("called for a joint with a bad input")
 }
 
+/// Whether a joint's inputs are all good: load, angular velocity and angle (when read)
+/// finite, the host's step (when given) a finite number ≥ 0; [`input_error`] names the first
+/// that is not.
+#[inline(always)]
+fn inputs_good(load: f64, omega: f64, angle: impl FnOnce() -> Option<f64>, step: impl FnOnce() -> Option<f64>) -> bool {
+    load.is_finite() && omega.is_finite() && angle().is_none_or(f64::is_finite) && step().is_none_or(|h| h.is_finite() && h >= 0.0)
+}
+
 /// Joints located ahead of their answers in the bounds pass: the table cells of a block are
 /// requested from memory together, then read (a table of thousands of cells does not fit a
 /// core's cache, and each joint's point falls in its own cell).
@@ -89,10 +97,7 @@ fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models
         && slots.iter().fold(0, |differ, &s| differ | (s ^ slot)) == 0
     {
         let model = models.get(slot);
-        // The table answers for loads inside its range alone: where that is within
-        // (0, capacity) (always: a table is built by solving beyond its range's ends), the
-        // model's checks of the load pass wherever the table answers.
-        if let Some(table) = model.torque_table().filter(|t| t.envelope().load_min > 0.0 && t.envelope().load_max < model.joint().capacity()) {
+        if let Some(table) = model.torque_table() {
             return bounds_chunk_table(keys, values, model, table, models.key(slot).1, inp, steps, offset, angle);
         }
     }
@@ -108,7 +113,7 @@ fn bounds_chunk(keys: &mut [[u64; 3]], values: &mut [f64], slots: &[u32], models
         for k in first..last {
             let i = offset + k;
             let (load, omega) = (loads[k], omegas[k]);
-            let good = load.is_finite() && omega.is_finite() && (!angle || inp.angle[i].is_finite()) && steps.is_none_or(|h| h[i].is_finite() && h[i] >= 0.0);
+            let good = inputs_good(load, omega, || angle.then(|| inp.angle[i]), || steps.map(|h| h[i]));
             if !good {
                 bad = Some(i);
                 break;
@@ -157,7 +162,7 @@ fn bounds_chunk_table(keys: &mut [[u64; 3]], values: &mut [f64], model: &Model, 
         let (mut pending, mut bad) = (0, None);
         for k in first..last {
             let (load, omega) = (loads[k], omegas[k]);
-            let good = load.is_finite() && omega.is_finite() && (!angle || angles[k].is_finite()) && hs.is_none_or(|h| h[k].is_finite() && h[k] >= 0.0);
+            let good = inputs_good(load, omega, || angle.then(|| angles[k]), || hs.map(|h| h[k]));
             if !good {
                 bad = Some(offset + k);
                 break;
@@ -170,9 +175,8 @@ fn bounds_chunk_table(keys: &mut [[u64; 3]], values: &mut [f64], model: &Model, 
         }
         for &(k, at) in &todo[..pending] {
             let (load, omega) = (loads[k], omegas[k]);
-            // The table's answer where the model would give it (Model::torque_table: it gives
-            // one for loads inside its range alone, within (0, capacity): checked above), else
-            // the model's own (its errors included).
+            // The table's answer where the model would give it (Model::torque_table), else the
+            // model's own (its errors included).
             let value = match table.torque_located(load.abs(), omega, at) {
                 Some(t) => t,
                 None => match model.sliding_torque(load, omega) {
