@@ -106,8 +106,8 @@ struct Cell {
 
 impl Cell {
     /// The cell of the patches of μ_f, y and h_c (power coefficients, [`bicubic_coefficients`]).
-    fn new([mu_f, s, film]: [[f64; 16]; 3]) -> Self {
-        Cell { friction: std::array::from_fn(|i| [mu_f[i], s[i]]), film }
+    fn new([mu_f, y, film]: [[f64; 16]; 3]) -> Self {
+        Cell { friction: std::array::from_fn(|i| [mu_f[i], y[i]]), film }
     }
 }
 
