@@ -54,8 +54,8 @@ impl Trunnion {
         let Some(ev) = self.evaluator.as_mut() else { return Ok(0.0) };
         // An unloaded pin (P = 0) holds nothing and slides without friction.
         let bound = if load == 0.0 { 0.0 } else { ev.evaluate(load, omega)?.torque };
-        let torque = self.state.torque_at(angle, omega, bound);
-        self.state.commit_step(angle, omega, bound, self.step);
+        // `torque_at` then `commit_step`, the held torque computed once.
+        let torque = self.state.step(angle, omega, bound, Some(self.step));
         // + 0.0: no −0 at rest.
         Ok(self.pins * torque + 0.0)
     }
