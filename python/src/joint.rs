@@ -40,6 +40,9 @@ fn point_code(op: &OperatingPoint) -> u8 {
     regime_code(op.regime) + 4 * op.validity.code()
 }
 
+/// Every point's numeric outputs and regime code.
+pub type Rows = (Vec<[f64; NUMERIC]>, Vec<u8>);
+
 /// Points handed to one rayon task; below two chunks the work stays on the calling thread.
 const CHUNK: usize = 2048;
 
@@ -96,7 +99,7 @@ impl NativeJoint {
 
     /// Evaluate every point; on the cores when there are many. The error is the one at the
     /// lowest index, whatever the scheduling.
-    pub fn run(&self, loads: &[f64], speeds: &[f64]) -> Result<(Vec<[f64; NUMERIC]>, Vec<u8>), (usize, ModelError)> {
+    pub fn run(&self, loads: &[f64], speeds: &[f64]) -> Result<Rows, (usize, ModelError)> {
         let n = loads.len();
         let mut out = vec![[0.0f64; NUMERIC]; n];
         let mut codes = vec![0u8; n];
@@ -177,7 +180,7 @@ impl NativeJoint {
         if loads.len() != speeds.len() {
             return Err(PyValueError::new_err(format!("load has {} points, speed {}", loads.len(), speeds.len())));
         }
-        let res = py.detach(|| self.run(&loads, &speeds));
+        let res = py.detach(|| if loads.len() < 2 * CHUNK { self.run(&loads, &speeds) } else { crate::pool::install(|| self.run(&loads, &speeds)) });
         let (rows, codes) = res.map_err(|(i, e)| {
             let at = index_text(i, &shape);
             let sep = if at.is_empty() { "" } else { ": " };

@@ -12,12 +12,14 @@
 //! - [`cycle`]: `_simulate_cycle`, whole rig strokes (the columns of `cycle.csv`).
 //! - [`calibrate`]: `_calibrate`, the fit of `pinjoint calibrate` (`pinjoint-calibrate`).
 //! - [`messages`]: error texts with values in their shortest round-trip form.
+//! - [`pool`]: the threads a large call runs on (the calling thread among them).
 
 use pyo3::prelude::*;
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 pub mod messages;
 pub mod values;
+pub mod pool;
 pub mod params;
 pub mod joint;
 pub mod presliding;
