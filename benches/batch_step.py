@@ -48,7 +48,7 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--quick", action="store_true")
     a = ap.parse_args()
-    n, steps, repeats, loop_n = (2000, 5, 1, 200) if a.quick else (10_000, 20, 5, 2000)
+    n, steps, repeats, loop_n = (2000, 5, 1, 200) if a.quick else (10_000, 50, 7, 2000)
     frames = inputs(n, steps)
     joint = pinjoint.Joint()
     full = pinjoint.PreslidingBatch(n)
