@@ -4,7 +4,7 @@
 
 use crate::messages::{model_error, short};
 use crate::params::PyParams;
-use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{IntoPyArray, PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use pinjoint::batch::{BatchError, BatchParams, Inputs, PreslidingBatch, Settings};
 use pinjoint::fidelity::{Envelope, Fidelity, FidelityError};
 use pinjoint::zero_velocity::Presliding;
@@ -39,53 +39,56 @@ pub struct NativePreslidingBatch {
     buf: [Vec<f64>; 5],
 }
 
-/// Copy `src` into `dst` (kept between calls: no allocation once grown).
-fn copy_into(dst: &mut Vec<f64>, src: &PyReadonlyArray1<'_, f64>) {
-    dst.clear();
-    match src.as_slice() {
-        Ok(s) => dst.extend_from_slice(s),
-        Err(_) => dst.extend(src.as_array().iter().copied()),
-    }
-}
-
-/// The data of a caller's contiguous float64 array, copied into the call's buffer after the
-/// GIL is released ([`Source::copy_to`]), on the pool's threads for a large batch: the copy
-/// then costs the calling thread nothing and leaves the values in the cores that step them
+/// The data of a caller's float64 array, copied into the call's buffer after the GIL is
+/// released ([`Source::copy_to`]), on the pool's threads for a large batch: the copy then
+/// costs the calling thread nothing and leaves the values in the cores that step them
 /// (measured against a copy on the calling thread before the hand-over: the median
 /// table-level step of 10⁴ joints 1.1–3.6 ns a joint-step lower, in three paired runs, of
-/// about 33). As NumPy's own operations that release the GIL, this
-/// reads the array while other threads may run: each value is read once, into the buffer,
-/// before it is checked or used, so an array another thread writes during the call gives
-/// some mix of its old and new values (the caller's race), never a value checked as one
-/// number and used as another. The array is kept alive by the call's reference to it.
+/// about 33). As NumPy's own operations that release the GIL, this reads the array while
+/// other threads may run: each value is read once, into the buffer, before it is checked or
+/// used, so an array another thread writes during the call gives some mix of its old and new
+/// values (the caller's race), never a value checked as one number and used as another. The
+/// array is read by address and stride, whatever its alignment and layout (no reference to
+/// its data is made), and kept alive by the call's reference to it.
 #[derive(Clone, Copy)]
 struct Source {
+    /// The address of element 0.
     ptr: *const u8,
     len: usize,
+    /// Bytes from one element to the next (negative for a reversed view).
+    stride: isize,
 }
 
-// SAFETY: a `Source` is an address and a length, read only by `copy_to` while the call
-// that made it holds a reference to the array (see the type's documentation).
+// SAFETY: a `Source` is an address, a length and a stride, read only by `copy_to` while the
+// call that made it holds a reference to the array (see the type's documentation).
 unsafe impl Send for Source {}
 unsafe impl Sync for Source {}
 
 impl Source {
-    /// The data of `a` when it is contiguous (None: copy it under the GIL).
-    fn of(a: &PyReadonlyArray1<'_, f64>) -> Option<Source> {
-        a.as_slice().ok().map(|s| Source { ptr: s.as_ptr().cast::<u8>(), len: s.len() })
+    /// The data of `a`.
+    fn of(a: &PyReadonlyArray1<'_, f64>) -> Source {
+        Source { ptr: a.data().cast_const().cast::<u8>(), len: a.len(), stride: a.strides()[0] }
     }
 
-    /// Copy the array's values from index `start` on into `dst` (as many as it holds),
-    /// bytewise (the array's data need not be aligned).
+    /// Copy the array's values from index `start` on into `dst` (as many as it holds).
     fn copy_to(&self, start: usize, dst: &mut [f64]) {
         assert!(start.checked_add(dst.len()).is_some_and(|end| end <= self.len), "a copy within the array");
         if dst.is_empty() {
             return;
         }
-        // SAFETY: the source bytes are inside the array's data (checked above), which the call
-        // keeps alive; the destination is our own buffer of as many values; the two never
-        // overlap (the buffer is the batch's own allocation).
-        unsafe { std::ptr::copy_nonoverlapping(self.ptr.add(8 * start), dst.as_mut_ptr().cast::<u8>(), 8 * dst.len()) }
+        if self.stride == 8 {
+            // SAFETY: the source bytes are inside the array's data (checked above; contiguous),
+            // which the call keeps alive; the destination is our own buffer of as many values;
+            // the two never overlap (the buffer is the batch's own allocation). Bytewise: the
+            // data need not be aligned.
+            unsafe { std::ptr::copy_nonoverlapping(self.ptr.add(8 * start), dst.as_mut_ptr().cast::<u8>(), 8 * dst.len()) }
+        } else {
+            for (k, d) in dst.iter_mut().enumerate() {
+                // SAFETY: element start + k < len of the array, at its address (NumPy's
+                // address + index × stride); read unaligned, the array kept alive by the call.
+                *d = unsafe { self.ptr.offset((start + k) as isize * self.stride).cast::<f64>().read_unaligned() };
+            }
+        }
     }
 }
 
@@ -253,8 +256,7 @@ impl NativePreslidingBatch {
 impl NativePreslidingBatch {
     /// One call: 0 torque, 1 commit, 2 step (with the host's `step` when given), 3 sliding
     /// torque, on its positional arguments ([`arrays`]). The GIL is released, the inputs are
-    /// copied into the call's buffers ([`Source`]; a non-contiguous array is copied first,
-    /// under the GIL), then the joints are stepped from the buffers.
+    /// copied into the call's buffers ([`Source`]), then the joints are stepped from them.
     fn call<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>, what: u8) -> PyResult<Option<Bound<'py, PyArray1<f64>>>> {
         let given = if what == 3 {
             // The sliding torque reads no angle: its load stands in for it.
@@ -267,21 +269,15 @@ impl NativePreslidingBatch {
             arrays(args, &["angle", "angular_velocity", "load", "temperature", "step"], 3, 0)?
         };
         let n = self.batch.len();
-        // Per input: given, and its data to copy once the GIL is released (None: copied now).
-        let mut with = [false; 5];
-        let mut sources: [Option<Source>; 5] = [None; 5];
-        for (k, (buf, a)) in self.buf.iter_mut().zip(&given).enumerate() {
-            if let Some(a) = a {
-                with[k] = true;
-                sources[k] = Source::of(a);
-                match sources[k] {
-                    // The length is checked by the batch (its error names the argument).
-                    Some(src) => buf.resize(src.len, 0.0),
-                    None => copy_into(buf, a),
-                }
+        // Per input given: its data, to copy once the GIL is released, into a buffer of its
+        // length (checked by the batch, whose error names the argument).
+        let sources: [Option<Source>; 5] = std::array::from_fn(|k| given[k].as_ref().map(Source::of));
+        for (buf, src) in self.buf.iter_mut().zip(&sources) {
+            if let Some(src) = src {
+                buf.resize(src.len, 0.0);
             }
         }
-        let (with_t, with_h) = (with[3], with[4]);
+        let (with_t, with_h) = (sources[3].is_some(), sources[4].is_some());
         let mut out = if what == 1 { Vec::new() } else { vec![0.0; n] };
         let Self { batch, buf } = self;
         let mut work = |parallel: bool| {

@@ -94,10 +94,12 @@ def test_strided_unaligned_and_readonly_inputs_give_the_same_bits():
     ref = run(frames)
     layouts = {
         "strided": lambda x: np.repeat(x, 2)[::2],
+        "reversed": lambda x: x[::-1].copy()[::-1],
         "unaligned": unaligned,
         "readonly": lambda x: np.frombuffer(x.tobytes(), dtype=np.float64),
     }
     for name, f in layouts.items():
+        assert np.array_equal(bits(f(frames[0][0])), bits(frames[0][0])), name
         got = run([tuple(f(x) for x in fr) for fr in frames])
         assert np.array_equal(bits(ref[0]), bits(got[0])), name
         # The native call itself (the wrapper's coercion bypassed): the same.
