@@ -200,6 +200,6 @@ pub fn calibrate<'py>(
         seed: seed.unwrap_or(def.seed),
         ..def
     };
-    let cal = py.detach(|| fit(&records, &options)).map_err(|e| PyValueError::new_err(calibration_error(&e)))?;
+    let cal = py.detach(|| crate::pool::install(|| fit(&records, &options))).map_err(|e| PyValueError::new_err(calibration_error(&e)))?;
     Ok((to_dict(py, &cal)?, PyParams { inner: cal.params }))
 }

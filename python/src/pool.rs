@@ -12,26 +12,64 @@
 //! the same whichever pool runs a call (each joint's or point's answer depends on its own
 //! inputs alone, whatever the threads or chunking).
 //!
-//! Both pools are the process's own: a child forked from it (Python's `multiprocessing` on
-//! Linux) has none of their threads, so its first large call builds its pools afresh instead
-//! of handing work to threads that do not exist (rayon's global pool, which this module never
-//! uses, would wait for them forever). The pools last as long as the process (rayon keeps a
-//! pool whose worker 0 is a thread of the caller's; at most two per process, asleep between
-//! calls).
+//! Both pools are the process's own, and found without a lock: a child forked from it
+//! (Python's `multiprocessing` on Linux) has none of their threads, so its first large call
+//! builds its pools afresh instead of handing work to threads that do not exist (rayon's
+//! global pool, which the package never uses, would wait for them forever), and no lock
+//! another thread held at the fork can stop it. A small call (a batch below the library's
+//! two chunks, a `Joint.evaluate` below two of its chunks) stays on the calling thread and
+//! uses no pool. The pools last as long as the process (rayon keeps a pool whose worker 0 is a
+//! thread of the caller's; at most two per process, asleep between calls).
 
-use std::sync::{Mutex, PoisonError};
+use std::sync::atomic::{AtomicPtr, AtomicU32, Ordering};
 use std::thread::ThreadId;
 
-/// A process's pools: its id, the first large caller's thread and pool (None when that thread
-/// could not join one: it works in a pool already, e.g. the parent's after a fork), and the
-/// pool of the others.
-struct Pools {
+/// A pool of a process: the process, the thread it belongs to (the owner's pool: None for
+/// the others' pool), the pool (None when it could not be built).
+struct Entry {
     process: u32,
-    owner: Option<(ThreadId, &'static rayon::ThreadPool)>,
-    others: Option<&'static rayon::ThreadPool>,
+    thread: Option<ThreadId>,
+    pool: Option<&'static rayon::ThreadPool>,
 }
 
-static POOLS: Mutex<Option<Pools>> = Mutex::new(None);
+/// One of a process's two pools, without a lock (a child forked while another thread held a
+/// lock would wait for it forever): the process that claimed the right to build it, and the
+/// entry published once built. A claim or an entry of another process (the parent of a fork)
+/// counts as none.
+struct Slot {
+    claim: AtomicU32,
+    entry: AtomicPtr<Entry>,
+}
+
+impl Slot {
+    const fn new() -> Self {
+        Slot { claim: AtomicU32::new(0), entry: AtomicPtr::new(std::ptr::null_mut()) }
+    }
+
+    /// The entry built in `process`, if published.
+    fn entry(&self, process: u32) -> Option<&'static Entry> {
+        // SAFETY: a non-null pointer here is a leaked `Box<Entry>` (`publish`), never freed.
+        let e = unsafe { self.entry.load(Ordering::Acquire).as_ref() }?;
+        (e.process == process).then_some(e)
+    }
+
+    /// Claim the right to build this process's entry: true for one caller in `process`.
+    fn claim(&self, process: u32) -> bool {
+        let seen = self.claim.load(Ordering::Acquire);
+        seen != process && self.claim.compare_exchange(seen, process, Ordering::AcqRel, Ordering::Acquire).is_ok()
+    }
+
+    /// Publish the claimer's entry (kept for the process's life).
+    fn publish(&self, e: Entry) -> &'static Entry {
+        let e: &'static Entry = Box::leak(Box::new(e));
+        self.entry.store(std::ptr::from_ref(e).cast_mut(), Ordering::Release);
+        e
+    }
+}
+
+/// The first large caller's pool, and the others'.
+static OWNER: Slot = Slot::new();
+static OTHERS: Slot = Slot::new();
 
 /// A pool kept for the process's life (None when its threads cannot be started).
 fn build(builder: rayon::ThreadPoolBuilder) -> Option<&'static rayon::ThreadPool> {
@@ -41,24 +79,29 @@ fn build(builder: rayon::ThreadPoolBuilder) -> Option<&'static rayon::ThreadPool
 /// The pool for a large call from the calling thread (None: no pool could be built).
 fn pool() -> Option<&'static rayon::ThreadPool> {
     let (process, me) = (std::process::id(), std::thread::current().id());
-    let mut guard = POOLS.lock().unwrap_or_else(PoisonError::into_inner);
-    let pools = match &mut *guard {
-        Some(p) if p.process == process => p,
-        // The first large call of this process (or of a forked child: its parent's pools have
-        // no threads here).
-        slot => {
-            let owner = build(rayon::ThreadPoolBuilder::new().use_current_thread()).map(|pool| (me, pool));
-            slot.insert(Pools { process, owner, others: None })
-        }
-    };
-    match pools.owner {
-        Some((owner, pool)) if owner == me => Some(pool),
-        _ => {
-            if pools.others.is_none() {
-                pools.others = build(rayon::ThreadPoolBuilder::new());
+    match OWNER.entry(process) {
+        Some(e) if e.thread == Some(me) && e.pool.is_some() => return e.pool,
+        Some(_) => {}
+        // The process's first large call (or a forked child's: its parent's pools have no
+        // threads here). A thread already in a pool (the parent's owner, after a fork) cannot
+        // join another: it uses the others' pool.
+        None if OWNER.claim(process) => {
+            let pool = build(rayon::ThreadPoolBuilder::new().use_current_thread());
+            if OWNER.publish(Entry { process, thread: Some(me), pool }).pool.is_some() {
+                return pool;
             }
-            pools.others
         }
+        None => {}
+    }
+    loop {
+        if let Some(e) = OTHERS.entry(process) {
+            return e.pool;
+        }
+        if OTHERS.claim(process) {
+            return OTHERS.publish(Entry { process, thread: None, pool: build(rayon::ThreadPoolBuilder::new()) }).pool;
+        }
+        // Another thread of this process is building it (a few hundred microseconds).
+        std::thread::yield_now();
     }
 }
 

@@ -92,6 +92,9 @@ impl Source {
     }
 }
 
+/// The inputs of a call, in the order of [`CallArrays`].
+const INPUTS: [&str; 5] = ["angle", "angular_velocity", "load", "temperature", "step"];
+
 /// Values a task of the parallel copy takes.
 const COPY_CHUNK: usize = 2048;
 
@@ -259,22 +262,27 @@ impl NativePreslidingBatch {
     /// copied into the call's buffers ([`Source`]), then the joints are stepped from them.
     fn call<'py>(&mut self, py: Python<'py>, args: &Bound<'py, PyTuple>, what: u8) -> PyResult<Option<Bound<'py, PyArray1<f64>>>> {
         let given = if what == 3 {
-            // The sliding torque reads no angle: its load stands in for it.
-            let mut v = arrays(args, &["angular_velocity", "load", "temperature"], 2, 1)?;
-            v[0] = v[2].clone();
-            v
+            // The sliding torque reads no angle.
+            arrays(args, &["angular_velocity", "load", "temperature"], 2, 1)?
         } else if what == 0 {
             arrays(args, &["angle", "angular_velocity", "load", "temperature"], 3, 0)?
         } else {
             arrays(args, &["angle", "angular_velocity", "load", "temperature", "step"], 3, 0)?
         };
         let n = self.batch.len();
-        // Per input given: its data, to copy once the GIL is released, into a buffer of its
-        // length (checked by the batch, whose error names the argument).
+        // Per input given: its data, to copy once the GIL is released. Each has n values (the
+        // first that has not named, in the order the library checks them), before anything
+        // is allocated for it.
         let sources: [Option<Source>; 5] = std::array::from_fn(|k| given[k].as_ref().map(Source::of));
+        let order: &[usize] = if what == 3 { &[2, 1, 3] } else { &[0, 1, 2, 3, 4] };
+        for &k in order {
+            if let Some(src) = sources[k].filter(|s| s.len != n) {
+                return Err(batch_err(BatchError::Shape { argument: INPUTS[k], expected: n, got: src.len }));
+            }
+        }
         for (buf, src) in self.buf.iter_mut().zip(&sources) {
-            if let Some(src) = src {
-                buf.resize(src.len, 0.0);
+            if src.is_some() {
+                buf.resize(n, 0.0);
             }
         }
         let (with_t, with_h) = (sources[3].is_some(), sources[4].is_some());

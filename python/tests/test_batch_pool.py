@@ -1,8 +1,9 @@
-"""Where a large call runs and what it reads: the first thread to make one works as one of
-its own pool's threads, every other thread's calls go to rayon's global pool, and the answers
-are the same bits whichever runs them (PreslidingBatch and Joint.evaluate); the inputs are
-read once each, after the GIL is released, from any float64 layout (strided, unaligned); a
-forked child steps on after its parent did."""
+"""Where a call runs and what it reads: the first thread to make a large one works as one of
+its own pool's threads, every other thread's large calls go to a second pool, small calls stay
+on the calling thread, and the answers are the same bits whichever runs them (PreslidingBatch
+and Joint.evaluate); the inputs are read once each, after the GIL is released, from any
+float64 layout (strided, unaligned, reversed), their lengths checked before anything is
+allocated for them; a forked child steps on after its parent did, large batches and small."""
 
 from __future__ import annotations
 
@@ -46,8 +47,8 @@ def run(frames, fidelity="full"):
 def test_every_thread_gives_the_same_bits(fidelity):
     frames = scene(1)
     main = run(frames, fidelity)
-    # A plain thread and an executor's threads: rayon's global pool (the main thread made
-    # the process's first large call above, or earlier in the session).
+    # A plain thread and an executor's threads: the second pool (the main thread made the
+    # process's first large call above, or earlier in the session).
     got = {}
     th = threading.Thread(target=lambda: got.setdefault("thread", run(frames, fidelity)))
     th.start()
@@ -108,6 +109,21 @@ def test_strided_unaligned_and_readonly_inputs_give_the_same_bits():
         assert np.array_equal(bits(ref[0]), bits(np.array(out))), name
 
 
+def test_a_wrong_length_is_named_before_anything_is_allocated_for_it():
+    b = pinjoint.PreslidingBatch(N)
+    z, p = np.zeros(N), np.full(N, 1e4)
+    huge = np.broadcast_to(0.0, (2**40,))  # 8 TiB as a copy
+    for args, name in [((huge, z, p, None, None), "angle"), ((z, z, huge, None, None), "load"), ((z, z, p, None, huge), "step")]:
+        with pytest.raises(ValueError, match=f"{name}.*{2**40}"):
+            b._native.step(*args)
+    with pytest.raises(ValueError, match="load"):
+        b._native.sliding_torque(z, huge, None)
+    with pytest.raises(ValueError, match="angular_velocity"):
+        b._native.torque(z, z[:-1], huge, None)
+    # Nothing changed: the batch steps on as a fresh one.
+    assert np.array_equal(bits(b.step(z, z, p)), bits(pinjoint.PreslidingBatch(N).step(z, z, p)))
+
+
 def test_inputs_written_during_a_call_leave_every_state_finite():
     # Another thread rewrites the input arrays (finite values) while the batch steps: each
     # joint reads some mix of old and new values, never a number checked as one value and
@@ -145,19 +161,39 @@ import multiprocessing, sys, threading
 import numpy as np
 import pinjoint
 
-n = 5000
+mode = sys.argv[1]
 rng = np.random.default_rng(6)
+n = 5000
 a, w, p = rng.uniform(-1e-2, 1e-2, n), rng.uniform(-3, 3, n), rng.uniform(5e3, 5e4, n)
 
-def run():
+def large():
     return pinjoint.PreslidingBatch(n).step(a, w, p)
 
-if sys.argv[1] == "thread-first":
-    # Another thread makes the process's first large call (it owns the pool); the main
-    # thread's calls then go to the others' pool.
-    t = threading.Thread(target=run)
+def small(temperatures):
+    # A small batch that builds two models a call (two temperatures).
+    m = 100
+    return pinjoint.PreslidingBatch(m).step(np.zeros(m), np.full(m, 0.1), np.full(m, 1e4), np.resize(np.array(temperatures), m))
+
+def in_thread(f):
+    out = []
+    t = threading.Thread(target=lambda: out.append(f()))
     t.start()
     t.join()
+    return out[0]
+
+if mode == "main-first":
+    run = large
+elif mode == "thread-first":
+    # Another thread makes the process's first large call (it owns the pool); the main
+    # thread's calls then go to the others' pool.
+    in_thread(large)
+    run = large
+elif mode == "small":
+    run = lambda: small([300.0, 310.0])
+elif mode == "small-in-threads":
+    large()  # the main thread owns a pool
+    in_thread(lambda: small([300.0, 310.0]))
+    run = lambda: in_thread(lambda: small([320.0, 330.0]))
 ref = run()
 
 def child(q):
@@ -170,17 +206,18 @@ proc.start()
 got = q.get(timeout=60)
 proc.join(timeout=30)
 assert proc.exitcode == 0, proc.exitcode
-assert np.array_equal(ref.view(np.int64), got.view(np.int64))
+if mode != "small-in-threads":
+    assert np.array_equal(ref.view(np.int64), got.view(np.int64))
 print("ok")
 """
 
 
 @pytest.mark.skipif(sys.platform != "linux", reason="fork is the Linux default start method")
-@pytest.mark.parametrize("first", ["main-first", "thread-first"])
+@pytest.mark.parametrize("first", ["main-first", "thread-first", "small", "small-in-threads"])
 def test_a_forked_child_steps_after_its_parent(first):
     # A child forked after its parent stepped has none of the parent's pool threads: its
-    # first large call builds its own pools (rayon's global pool would wait for threads the
-    # child does not have). In a fresh interpreter, so that the first large call is the
-    # script's.
+    # first large call builds its own pools, and a small call (here one that builds two
+    # models) uses none (rayon's global pool would wait for threads the child does not have).
+    # In a fresh interpreter, so that the first call is the script's.
     r = subprocess.run([sys.executable, "-c", FORK_SCRIPT, first], capture_output=True, text=True, timeout=180)
     assert r.returncode == 0 and r.stdout.strip() == "ok", (r.returncode, r.stdout, r.stderr[-2000:])

@@ -90,10 +90,11 @@ impl Models {
     }
 
     /// Make every joint's slot hold the model of its key: `wanted(i)` is joint i's key,
-    /// `slot[i]` its current slot (u32::MAX: none yet). Builds the missing models in
-    /// parallel first; on an error (a temperature the model cannot take) nothing is changed
-    /// and the error names the lowest joint index asking for it.
-    pub fn assign(&mut self, slots: &mut [u32], wanted: impl Fn(usize) -> Key) -> Result<(), BatchError> {
+    /// `slot[i]` its current slot (u32::MAX: none yet). Builds the missing models first, in
+    /// parallel on rayon's threads when `parallel` (else on the calling thread); on an error
+    /// (a temperature the model cannot take) nothing is changed and the error names the lowest
+    /// joint index asking for it.
+    pub fn assign(&mut self, slots: &mut [u32], wanted: impl Fn(usize) -> Key, parallel: bool) -> Result<(), BatchError> {
         self.pending.clear();
         let mut changed = false;
         for (i, &s) in slots.iter().enumerate() {
@@ -113,7 +114,8 @@ impl Models {
             return Ok(());
         }
         if !self.pending.is_empty() {
-            let built: Vec<Result<Model, BatchError>> = self.pending.par_iter().map(|&(k, _)| self.build(k)).collect();
+            let built: Vec<Result<Model, BatchError>> =
+                if parallel { self.pending.par_iter().map(|&(k, _)| self.build(k)).collect() } else { self.pending.iter().map(|&(k, _)| self.build(k)).collect() };
             // Every build first, so that an error leaves the batch as it was.
             if let Some((pos, e)) = built.iter().enumerate().filter_map(|(p, r)| r.as_ref().err().map(|e| (p, e))).min_by_key(|(p, _)| self.pending[*p].1) {
                 let index = self.pending[pos].1;

@@ -276,7 +276,12 @@ impl PreslidingBatch {
         for (i, k) in keys.iter_mut().enumerate() {
             *k = models.key_of(if *per_joint { i as u32 } else { 0 }, temperature.map(|t| t[i]));
         }
-        models.assign(slots, |i| keys[i])?;
+        // In parallel for a batch stepped in parallel, or from a thread already in a rayon
+        // pool; a small batch's call from any other thread stays on it (no pool is woken,
+        // and none is used: a process forked from one that used a pool has none of its
+        // threads).
+        let parallel = n >= 2 * step::CHUNK || rayon::current_thread_index().is_some();
+        models.assign(slots, |i| keys[i], parallel)?;
         self.own_temperatures = temperature.is_none();
         Ok(())
     }
