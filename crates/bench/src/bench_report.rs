@@ -382,24 +382,42 @@ pub fn write_calibration_only(
 
 /// `--only-batch`: the batch section measured alone, put into DIR/BENCHMARKS.md in place of
 /// the one there (between [`crate::bench_batch::BEGIN`] and [`crate::bench_batch::END`]), or
-/// appended; the rest of the file is unchanged.
+/// appended, and its rows of the Targets table replaced; the rest of the file is unchanged.
 pub fn write_batch_only(dir: &Path, b: &crate::bench_batch::BatchBench, quick: bool, seconds: f64) -> Result<PathBuf> {
     use crate::bench_batch::{section, BEGIN, END};
-    let (_, body) = section(b);
+    let (rows, body) = section(b);
     let note = format!(
         "Measured by `pinjoint-bench --only-batch --output DIR`{} in {seconds:.0} s on this machine (shared with other work: \
-         times are noisy; the ratios are what to quote), separately from the rest of this file.\n\n",
+         times are noisy; the ratios are what to quote), separately from the rest of this file (its rows in the Targets \
+         table with it).\n\n",
         if quick { " --quick" } else { "" }
     );
     let note = if quick { format!("{note}With --quick: few joints and steps, NOT meaningful figures.\n\n") } else { note };
     let path = dir.join("BENCHMARKS.md");
-    let old = std::fs::read_to_string(&path).unwrap_or_default();
+    let old = replace_target_rows(&std::fs::read_to_string(&path).unwrap_or_default(), &rows);
     let text = match (old.find(BEGIN), old.find(END)) {
         (Some(a), Some(z)) if z > a => format!("{}{BEGIN}\n{body}{note}{END}{}", &old[..a], &old[z + END.len()..]),
         _ => format!("{old}{}{BEGIN}\n{body}{note}{END}\n", if old.is_empty() || old.ends_with("\n\n") { "" } else { "\n" }),
     };
     write_text(&path, &[], &text)?;
     Ok(path)
+}
+
+/// `text` with each target's row of the Targets table (`| target | result |`, the first line
+/// starting with the target's cell) given its new result; targets without a row are left out.
+fn replace_target_rows(text: &str, rows: &[(String, String)]) -> String {
+    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+    for (target, result) in rows {
+        let cell = format!("| {target} |");
+        if let Some(line) = lines.iter_mut().find(|l| l.starts_with(&cell)) {
+            *line = format!("{cell} {result} |");
+        }
+    }
+    let mut out = lines.join("\n");
+    if text.ends_with('\n') {
+        out.push('\n');
+    }
+    out
 }
 
 /// The cost of a temperature change through fmpy: the warming step against the
@@ -582,4 +600,18 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     write_text(&paths[2], &[], &rig_svg(r)?)?;
     write_text(&paths[0], &[], &md)?;
     Ok(paths)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::replace_target_rows;
+
+    #[test]
+    fn only_the_targets_row_of_a_target_is_replaced() {
+        let text = "# B\n\n| target | result |\n|---|---|\n| a ≤ 1 | **missed** — 2 |\n| b | 3 |\n\n## Batch\n| a ≤ 1 | **missed** — 2 |\n";
+        let rows = vec![("a ≤ 1".to_string(), "**met** — 0.5".to_string()), ("c".to_string(), "x".to_string())];
+        let out = replace_target_rows(text, &rows);
+        assert_eq!(out, "# B\n\n| target | result |\n|---|---|\n| a ≤ 1 | **met** — 0.5 |\n| b | 3 |\n\n## Batch\n| a ≤ 1 | **missed** — 2 |\n");
+        assert_eq!(replace_target_rows("| b | 3 |", &rows), "| b | 3 |");
+    }
 }
