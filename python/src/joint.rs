@@ -180,7 +180,7 @@ impl NativeJoint {
         if loads.len() != speeds.len() {
             return Err(PyValueError::new_err(format!("load has {} points, speed {}", loads.len(), speeds.len())));
         }
-        let res = py.detach(|| if loads.len() < 2 * CHUNK { self.run(&loads, &speeds) } else { crate::pool::install(|| self.run(&loads, &speeds)) });
+        let res = py.detach(|| crate::pool::run(loads.len() >= 2 * CHUNK, || self.run(&loads, &speeds)));
         let (rows, codes) = res.map_err(|(i, e)| {
             let at = index_text(i, &shape);
             let sep = if at.is_empty() { "" } else { ": " };

@@ -105,6 +105,12 @@ fn pool() -> Option<&'static rayon::ThreadPool> {
     }
 }
 
+/// Run `f`, a call's work (the GIL released): on the calling thread when it is not `large`
+/// (it then uses no pool), else as [`install`].
+pub fn run<R: Send>(large: bool, f: impl FnOnce() -> R + Send) -> R {
+    if large { install(f) } else { f() }
+}
+
 /// Run `f`, a call's parallel work (the GIL released): on the calling thread's pool
 /// ([`pool`]), the calling thread working in it when it owns it, else handed over once (`f`'s
 /// parallel passes all run inside that one hand-over). Where no pool can be built (no thread

@@ -311,7 +311,8 @@ impl NativePreslidingBatch {
         };
         // A batch the library steps in parallel (two chunks or more): the copy and the step on
         // the pool ([`crate::pool::install`]); a smaller one on this thread, as the library does.
-        let res = if n >= 2 * pinjoint::batch::step::CHUNK { py.detach(|| crate::pool::install(|| work(true))) } else { py.detach(|| work(false)) };
+        let large = pinjoint::batch::step::parallel(n);
+        let res = py.detach(|| crate::pool::run(large, || work(large)));
         res.map_err(batch_err)?;
         Ok((what != 1).then(|| out.into_pyarray(py)))
     }

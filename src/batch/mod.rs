@@ -280,7 +280,7 @@ impl PreslidingBatch {
         // pool; a small batch's call from any other thread stays on it (no pool is woken,
         // and none is used: a process forked from one that used a pool has none of its
         // threads).
-        let parallel = n >= 2 * step::CHUNK || rayon::current_thread_index().is_some();
+        let parallel = step::parallel(n) || rayon::current_thread_index().is_some();
         models.assign(slots, |i| keys[i], parallel)?;
         self.own_temperatures = temperature.is_none();
         Ok(())
@@ -296,7 +296,7 @@ impl PreslidingBatch {
         }
         self.assign(inputs.temperature)?;
         let PreslidingBatch { joints, bounds, slots, models, .. } = self;
-        if joints.len() < 2 * step::CHUNK {
+        if !step::parallel(joints.len()) {
             // On the calling thread (no pool).
             return step::run(joints, bounds, slots, models, inputs, steps, action, out);
         }

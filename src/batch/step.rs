@@ -19,6 +19,13 @@ use rayon::prelude::*;
 /// three runs of four, equal in the fourth).
 pub const CHUNK: usize = 512;
 
+/// Whether a batch of `n` joints is stepped in parallel (two chunks or more), else on the
+/// calling thread.
+#[inline]
+pub fn parallel(n: usize) -> bool {
+    n >= 2 * CHUNK
+}
+
 /// Each joint's last sliding torque and the inputs it was computed at, apart from the joints'
 /// states (the first pass reads and writes these alone) and in two arrays (the second pass
 /// reads the torques alone).
@@ -260,7 +267,7 @@ fn law_with(mut c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: 
 pub fn run(joints: &mut Joints, bounds: &mut Bounds, slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
     let n = joints.len();
     let angle = action != Action::Bound;
-    let err = if n < 2 * CHUNK {
+    let err = if !parallel(n) {
         bounds_chunk(&mut bounds.keys, &mut bounds.values, slots, models, inp, steps, 0, angle)
     } else {
         bounds
@@ -280,7 +287,7 @@ pub fn run(joints: &mut Joints, bounds: &mut Bounds, slots: &[u32], models: &Mod
     let out_len = if action == Action::Commit { 0 } else { n };
     let out = &mut out[..out_len];
     let (law, states, unreferenced, inertia) = joints.parts_mut();
-    if n < 2 * CHUNK {
+    if !parallel(n) {
         law_chunk(Chunk { law, states, unreferenced, inertia }, bounds, out, inp, steps, 0, action);
     } else {
         let inertia_of = |c: usize| inertia.map(|v| &v[c * CHUNK..((c + 1) * CHUNK).min(n)]);

@@ -25,10 +25,10 @@
 //! against these: 66 × 169 against 62 × 161 for the batch benchmark's envelope (1e-4),
 //! 232 × 197 against 80 × 160 at 262.9 K over 10–100 N (1e-3), 66 × 211 against 80 × 224 for
 //! the paper's model at 1e-5; and at 343 K over 5–60 kN (1e-4) a 5 × 14 table whose error on
-//! fresh points, 2.0e-4, exceeded its bound (a 6 × 17 table now, 2.0e-5 within 3.5e-5). (Tabulating ln μ_f and ln h_c instead
-//! gave the same grid sizes on the envelopes tried, but costs two more exponentials per call;
-//! μ_f and h_c vary by less than a few decades over an envelope and their relative error is
-//! what the refinement measures.)
+//! fresh points, 2.0e-4, exceeded its bound (a 6 × 17 table now, 2.0e-5 within 3.5e-5).
+//! (Tabulating ln μ_f and ln h_c instead gave the same grid sizes on the envelopes tried, but
+//! costs two more exponentials per call; μ_f and h_c vary by less than a few decades over an
+//! envelope and their relative error is what the refinement measures.)
 //!
 //! # Interpolation
 //! A uniform grid in x = ln P and z = ln |ω| covers the envelope exactly (the envelope
