@@ -1,47 +1,58 @@
-//! The cold supply (complete model, grease enabled): below the reference temperature the
-//! grease feeds the contact less oil. Not in the paper; docs/cold-day.md.
+//! The grease's oil supply to the contact (complete model, grease enabled): a starved inlet
+//! fed by the oil layer that the grease's bleed leaves on the track between passes. Not in
+//! the paper; docs/cold-day.md.
 //!
 //! A grease lubricates the contact through the oil its thickener releases (bleed) and the
 //! oil that flows back into the track between passes: Darcy flow of the base oil through the
-//! thickener (Baart, van der Vorst, Lugt & van Ostayen, 2010, Tribol. Trans. 53, 340–348) and
-//! capillary replenishment of the track (Gershuni, Larson & Lugt, 2008, Tribol. Trans. 51,
-//! 643–651), both viscous flows driven by surface tension, so their rate scales like 1/η_b
-//! (the exponent m = 1, [`crate::grease::DEFAULT_SUPPLY_EXPONENT`]; the papers' findings as
-//! the journal-bearing work recalled them, not checked against their text here). The film the
-//! supply allows is the film the flooded contact had at the
-//! reference temperature, scaled by the replenishment ratio:
+//! thickener (Baart, van der Vorst, Lugt & van Ostayen, 2010, Tribol. Trans. 53, 340–348;
+//! Akchurin, van den Ende & Lugt, 2022, Tribol. Int. 170, 107507) and capillary
+//! replenishment of the track (Gershuni, Larson & Lugt, 2008, Tribol. Trans. 51, 643–651),
+//! both viscous flows driven by a capillary pressure that hardly depends on temperature, so
+//! the layer rebuilt in a given time scales like 1/η_b(T):
 //!
-//! `h_13,supplied(x1; T) = min(h_13(x1; T), h_13(x1; T_ref)·(η_b(T_ref)/η_b(T))^m)` for
-//! T < T_ref, unchanged for T ≥ T_ref (the contact flooded there: T_ref is where this
-//! assumption puts the boundary between a flooded and a supply-limited contact).
+//! `h_oil(T) = h_oil(T_ref)·(η_b(T_ref)/η_b(T))^m`, m = `grease.supply_exponent` (1 for
+//! Darcy/capillary flow), h_oil(T_ref) = 1/`grease.supply_layer_inverse`.
 //!
-//! The minimum is always its second argument: eq. 12's film grows with η0·u and with α
-//! (Moes' H in M and L), and below T_ref both η_b and α (Roelands' temperature relation,
-//! [`crate::viscosity::at_temperature`]) are at least their reference values, so
-//! h_13(x1; T) ≥ h_13(x1; T_ref) ≥ h_13(x1; T_ref)·(η_b(T_ref)/η_b(T))^m for m ≥ 0
-//! (`tests/complete.rs` checks it on the film groups). The supplied film is therefore the
-//! reference film groups (η0 and α at T_ref) with ln(R'U^½) shifted by
-//! m·ln(η_b(T_ref)/η_b(T)) ≤ 0 ([`supplied`]): one shift, no extra work per solve. The film
-//! is non-increasing as T falls, so the contact's torque stiffens as it cools.
+//! The contact is fed by that layer as any starved EHL contact is (Chevalier, Lubrecht, Cann,
+//! Colin & Dalmaz, 1998, ASME J. Tribol. 120, 126–133; [`crate::starvation`]):
+//! `h^−γs = h_ff^−γs + h_oil^−γs`, with h_ff the flooded film and γs `starvation.exponent`.
+//! Where the user's own starved inlet (`starvation.inlet_layer_inverse`) is on as well, the
+//! two layers add as reciprocals to the power γs: `q^γs = q_user^γs + q_grease^γs`, q = 1/h.
 //!
-//! m (`grease.supply_exponent`, default 1) is the uncertain part: no published measurement
-//! of the replenishment of a landing-gear grease against temperature was found; docs/cold-day.md
-//! shows the sensitivity to m over 0.5–2. The same ratio scales the journal bearing's film
-//! below T_ref ([`crate::composite`]).
+//! This is one physical law at every temperature: T_ref only says where the layer is quoted,
+//! as it says where η0, α, τ_y and K are. Re-quoting the layer at T' by the same law
+//! (`h_oil(T') = h_oil(T_ref)·(η_b(T_ref)/η_b(T'))^m`, what `pinjoint params
+//! --reference-temperature` writes) leaves h_oil(T) unchanged at every T, so every answer is
+//! unchanged ([`requote`]). It is smooth in T (η_b(T) is), with no kink anywhere. The default
+//! layer is thick against the flooded film at room temperature (the paper's rig is flooded)
+//! and thin against it on the cold day, where η_b is a thousand times the room's.
+//!
+//! `grease.supply_layer_inverse = 0` turns the supply limit off (a flooded contact at every
+//! temperature).
 
-use crate::mixed::FilmGroups;
-
-/// ln of the replenishment ratio (η_b(T_ref)/η_b(T))^m, i.e. m·(ln η_b(T_ref) − ln η_b(T)),
-/// when the supply limits the film (grease enabled, T < T_ref); `None` when the contact is
-/// flooded (T ≥ T_ref or grease disabled).
-pub fn ln_supply_ratio(enabled: bool, exponent: f64, temperature: f64, reference_temperature: f64, ln_eta_ref: f64, ln_eta: f64) -> Option<f64> {
-    (enabled && temperature < reference_temperature).then_some(exponent * (ln_eta_ref - ln_eta))
+/// ln(1/h_oil(T)) (1/m) of the grease's supply layer at the temperature where the base oil's
+/// viscosity is e^`ln_eta` (Pa·s), from its value `layer_inverse` (1/m) where the viscosity is
+/// e^`ln_eta_ref`, with the exponent m; `None` when the supply limit is off (grease disabled or
+/// `layer_inverse` = 0).
+pub fn ln_layer_inverse(enabled: bool, layer_inverse: f64, exponent: f64, ln_eta_ref: f64, ln_eta: f64) -> Option<f64> {
+    (enabled && layer_inverse > 0.0).then(|| layer_inverse.ln() + exponent * (ln_eta - ln_eta_ref))
 }
 
-/// The film groups of the supplied film: `reference` (eq. 12's groups with η0 and α at
-/// T_ref) with the film scaled by the replenishment ratio e^`ln_ratio`.
-pub fn supplied(reference: &FilmGroups, ln_ratio: f64) -> FilmGroups {
-    FilmGroups { ln_scale: reference.ln_scale + ln_ratio, ..*reference }
+/// q = 1/h of two starving layers together: (q_a^γ + q_b^γ)^(1/γ), in logarithms (either may be
+/// absent).
+pub fn ln_combined(ln_a: Option<f64>, ln_b: Option<f64>, gamma: f64) -> Option<f64> {
+    match (ln_a, ln_b) {
+        (Some(a), Some(b)) => Some(crate::film::log_add_exp(gamma * a, gamma * b) / gamma),
+        (a, None) => a,
+        (None, b) => b,
+    }
+}
+
+/// The supply layer's inverse re-quoted at another temperature: `layer_inverse` (1/m) quoted
+/// where the base oil's viscosity is `eta_ref`, quoted where it is `eta_new` instead (the same
+/// layer at every temperature).
+pub fn requote(layer_inverse: f64, exponent: f64, eta_ref: f64, eta_new: f64) -> f64 {
+    if layer_inverse == 0.0 { 0.0 } else { layer_inverse * (eta_new / eta_ref).powf(exponent) }
 }
 
 #[cfg(test)]
@@ -49,23 +60,37 @@ mod tests {
     use super::*;
 
     #[test]
-    fn ratio_is_one_at_the_reference_and_absent_above_or_without_grease() {
-        assert_eq!(ln_supply_ratio(true, 1.0, 293.15, 293.15, -4.0, -4.0), None);
-        assert_eq!(ln_supply_ratio(true, 1.0, 300.0, 293.15, -4.0, -5.0), None);
-        assert_eq!(ln_supply_ratio(false, 1.0, 250.0, 293.15, -4.0, -2.0), None);
-        let r = ln_supply_ratio(true, 2.0, 250.0, 293.15, -4.0, -2.0).unwrap();
-        assert_eq!(r, -4.0);
-        // Just below the reference the ratio tends to 1 (continuity in temperature).
-        let r = ln_supply_ratio(true, 1.0, 293.15 - 1e-9, 293.15, -4.0, -4.0 + 1e-11).unwrap();
-        assert!(r.abs() < 1e-10);
+    fn off_without_grease_or_layer_and_exact_at_the_reference() {
+        assert_eq!(ln_layer_inverse(false, 2e4, 1.0, -4.0, -2.0), None);
+        assert_eq!(ln_layer_inverse(true, 0.0, 1.0, -4.0, -2.0), None);
+        assert_eq!(ln_layer_inverse(true, 2e4, 1.0, -4.0, -4.0), Some(2e4f64.ln()));
+        // Ten times the viscosity, m = 1: a ten times thinner layer.
+        let q = ln_layer_inverse(true, 2e4, 1.0, -4.0, -4.0 + 10f64.ln()).unwrap();
+        assert!((q.exp() / 2e5 - 1.0).abs() < 1e-14);
     }
 
     #[test]
-    fn supplied_film_scales_the_reference_film() {
-        let g = FilmGroups::new(0.1, 31.4, 1.66e11, 0.0594, 20e3, 0.01245, 1.69e-8);
-        let s = supplied(&g, -1.5);
-        for ln_x1 in [-20.0, -3.0, -0.1] {
-            assert!((s.ln_film(ln_x1) - g.ln_film(ln_x1) + 1.5).abs() < 1e-12);
+    fn requoting_leaves_the_layer_at_every_temperature() {
+        // Quoted at viscosity 0.0125, or re-quoted at 0.0061 (a warmer quote): the same layer
+        // at every viscosity.
+        let (q, m, e_ref, e_new) = (2e4, 1.3, 0.0125, 0.0061);
+        let q_new = requote(q, m, e_ref, e_new);
+        for eta in [1e-4, 0.0061, 0.0125, 3.0, 1e4] {
+            let a = ln_layer_inverse(true, q, m, e_ref.ln(), eta.ln()).unwrap();
+            let b = ln_layer_inverse(true, q_new, m, e_new.ln(), eta.ln()).unwrap();
+            assert!((a - b).abs() < 1e-12 * a.abs().max(1.0), "{eta}: {a} vs {b}");
         }
+        assert_eq!(requote(0.0, 1.0, 1.0, 2.0), 0.0);
+    }
+
+    #[test]
+    fn layers_combine_as_a_smooth_maximum_of_inverses() {
+        let (a, b) = (1e4f64.ln(), 3e4f64.ln());
+        let c = ln_combined(Some(a), Some(b), 2.8).unwrap().exp();
+        assert!((c - (1e4f64.powf(2.8) + 3e4f64.powf(2.8)).powf(1.0 / 2.8)).abs() < 1e-9 * c);
+        assert!(c > 3e4 && c < 4e4);
+        assert_eq!(ln_combined(Some(a), None, 2.8), Some(a));
+        assert_eq!(ln_combined(None, Some(b), 2.8), Some(b));
+        assert_eq!(ln_combined(None, None, 2.8), None);
     }
 }

@@ -1,14 +1,24 @@
 //! The complete model's composition (issue 28; not in the paper; docs/cold-day.md): the
 //! journal bearing's weight, the composite film, and the torque of the whole clearance.
 //!
-//! * **Journal weight** w: a function of the operating point only (so the load-sharing
-//!   residual stays monotone in its unknown): the quintic smoothstep (C²) of ln ρ_J,
-//!   ρ_J = 1 − ε(S) the journal's minimum film over the clearance at the full load, exactly 0
-//!   for ρ_J ≤ [`RHO_0`] and exactly 1 for ρ_J ≥ [`RHO_1`] (ε ≤ 0.8, where Raimondi & Boyd's
-//!   full-film tables hold in full). Over the paper's rig conditions at 20 °C ρ_J < 0.06, so
-//!   w = 0 and the paper's load sharing is untouched there.
+//! * **Journal weight** w: which film theory the joint obeys, decided by elasticity, as in the
+//!   analyses of soft (conformal) EHL: the ratio ξ = δ/h_J of the Hertz flattening of the
+//!   contact δ = a²/(2R') = 4P/(π B E') (eq. 6; Johnson, *Contact Mechanics*, 1985, §4.3: the
+//!   approach of the surfaces that elastic deformation takes up over the half-width a) to the
+//!   rigid journal's minimum film h_J = c·(1 − ε(S)) at the whole load (Raimondi & Boyd's
+//!   finite bearing, [`crate::journal`]). Where ξ is small the bush is effectively rigid and
+//!   rigid journal theory holds (w = 1); where ξ is large the deflection shapes the gap and
+//!   the line-contact (Moes) film of eqs. 12–13 holds (w = 0). For the line contact's own
+//!   rigid film (Moes' H_RI = 3/M) the same ratio is δ/h_RI = (4/3π)·M², Moes' elasticity
+//!   parameter, whose rigid–elastic crossing (H_RI = H_EI) is at M = 1.18, ξ = 0.59: the
+//!   journal's weight falls to 0 by [`XI_1`] = 0.3, below that crossing, and is 1 up to
+//!   [`XI_0`] = 0.01 (a flattening of 1 % of the film). In between: the quintic smoothstep (C²)
+//!   of ln ξ. w is a function of the operating point only (so the load-sharing residual stays
+//!   monotone in its unknown); over the paper's rig conditions (5–60 kN, up to 4.39 rad/s,
+//!   15–25 °C) ξ ≥ 0.48, so w = 0 and the paper's load sharing is untouched there.
 //! * **Composite film** in the solve ([`crate::mixed::solve_composite`]):
-//!   ln h(x1) = (1 − w)·ln h_13(x1) + w·ln h_J(x1), h_J(x1) = c·(1 − ε(S/x1)).
+//!   ln h(x1) = (1 − w)·ln h_13(x1) + w·ln h_J(x1), h_J(x1) = c·(1 − ε(S/x1)); the grease's
+//!   supply layer ([`crate::cold_supply`]) starves the composite film.
 //! * **Torque** (magnitude): T = T_asp + (1 − w)·T_contact,fluid + T_clearance + w·T_poiseuille,
 //!   T_asp = μ_c·x2·R·P (eq. 8), T_contact,fluid = Q_H·R (eq. 3) with the composite film,
 //!   T_clearance the shear of the lubricant in the clearance outside the contact arc
@@ -21,14 +31,14 @@
 use crate::clearance::{clearance_torque_tabulated, yield_torque, ClearanceGeometry, PowerLawTable};
 use crate::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
-use crate::mixed::{JournalFilm, LoadSharing};
+use crate::mixed::{JournalFilm, LoadSharing, StarvedInlet};
 use crate::params::{ParamError, Params};
 use std::sync::Arc;
 
-/// ρ_J at and below which the journal's weight is 0 (ε ≥ 0.94).
-pub const RHO_0: f64 = 0.06;
-/// ρ_J at and above which the journal's weight is 1 (ε ≤ 0.8).
-pub const RHO_1: f64 = 0.2;
+/// ξ = δ/h_J at and below which the journal's weight is 1 (the bush effectively rigid).
+pub const XI_0: f64 = 0.01;
+/// ξ = δ/h_J at and above which the journal's weight is 0 (the deflection shapes the gap).
+pub const XI_1: f64 = 0.3;
 
 /// The quintic smoothstep t³(10 − 15t + 6t²) on [0, 1], 0 below, 1 above: C², monotone.
 pub fn smoothstep(t: f64) -> f64 {
@@ -41,12 +51,14 @@ pub fn smoothstep(t: f64) -> f64 {
     }
 }
 
-/// w(ρ_J): the smoothstep of ln ρ_J between ln [`RHO_0`] and ln [`RHO_1`].
-pub fn journal_weight(rho: f64) -> f64 {
-    if rho <= RHO_0 {
-        return 0.0;
+/// w(ln ξ): 1 at and below ln [`XI_0`], 0 at and above ln [`XI_1`], the smoothstep of ln ξ
+/// between (NaN gives NaN).
+pub fn journal_weight(ln_xi: f64) -> f64 {
+    if ln_xi.is_nan() {
+        return f64::NAN;
     }
-    smoothstep((rho / RHO_0).ln() / (RHO_1 / RHO_0).ln())
+    let (a, b) = (XI_0.ln(), XI_1.ln());
+    smoothstep((b - ln_xi) / (b - a))
 }
 
 /// The lubricant of the clearance at the joint's temperature: the grease's Herschel–Bulkley
@@ -84,43 +96,8 @@ pub struct Complete {
     /// J_n of the grease's flow index, tabulated once per n (process-wide; the clearance
     /// torque's power-law part by a lookup instead of the 12-node rule).
     power_law: Arc<PowerLawTable>,
-    /// The cold supply ([`crate::cold_supply`]): ln of the replenishment ratio (0 where the
-    /// contact is flooded), and ln(η_b(T_ref)/η_b(T)) (0 there too): the journal's film is, as
-    /// the line contact's, the reference temperature's scaled by the ratio.
-    ln_supply: f64,
-    ln_eta_shift: f64,
-    /// ln S (the η shift included) at and below which w = 0 for certain
-    /// ([`no_journal_below`]); −∞ if the table has no such range.
-    ln_s_no_journal: f64,
-    /// The Sommerfeld number at and below which [`Complete::weight_of_sommerfeld`] is 0:
-    /// e^(ln_s_no_journal − ln_eta_shift).
-    s_no_journal: f64,
-}
-
-/// The ln S below which the journal's weight is 0, with a margin: where ρ = 1 − ε(S) ≤ ρ_0
-/// ([`journal_weight`]), found by bisection on the table (ε falls monotonically as S grows,
-/// the table's spline is monotone and the logistic too), moved down by 0.05 in ln S so that
-/// rounding never decides; −∞ where even the table's low end has w > 0. Computing w there
-/// (a spline, a logistic, a logarithm) gives exactly 0, so a caller may answer 0 without it:
-/// the hot path of mixed and boundary lubrication, where the film is thin.
-fn no_journal_below(journal: &JournalTable) -> f64 {
-    let rho = |x: f64| 1.0 - journal.eccentricity(x).0;
-    // S from e^-60 (ε → 1) to e^20 (ε → 0): wider than any table (ln S of the finite bearing's
-    // solutions spans about −12 to 6), beyond it both ends extrapolate monotonically.
-    let (mut lo, mut hi) = (-60.0, 20.0);
-    let (rho_lo, rho_hi) = (rho(lo), rho(hi));
-    if rho_lo.is_nan() || rho_lo > RHO_0 || rho_hi <= RHO_0 {
-        return f64::NEG_INFINITY;
-    }
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        if rho(mid) <= RHO_0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    lo - 0.05
+    /// ln(4/(π B E')): ln δ at P = 1 N (δ = 4P/(π B E'), the Hertz flattening).
+    ln_flattening_unit: f64,
 }
 
 /// The grease's yield torque at rest as a function of the load alone, for the fidelity
@@ -186,6 +163,7 @@ impl Complete {
     /// temperature.
     pub fn new(params: &Params, base_viscosity: f64) -> Result<Self, ParamError> {
         let g = &params.geometry;
+        let e_eff = crate::contact::effective_modulus(&params.materials);
         let l_over_d = g.bush_length / (2.0 * g.pin_radius);
         let journal = JournalTable::shared(l_over_d).map_err(|e| ParamError::OutOfRange {
             name: "geometry.bush_length".into(),
@@ -204,7 +182,7 @@ impl Complete {
             unit: "(dimensionless)",
             range: format!("in (0, 1] ({e})"),
         })?;
-        let mut complete = Self {
+        Ok(Self {
             power_law,
             journal,
             clearance: c,
@@ -212,76 +190,43 @@ impl Complete {
             radius: g.pin_radius,
             length: g.bush_length,
             rheology: rheology(params, base_viscosity),
-            ln_supply: 0.0,
-            ln_eta_shift: 0.0,
-            ln_s_no_journal: f64::NEG_INFINITY,
-            s_no_journal: 0.0,
-        };
-        complete.ln_s_no_journal = no_journal_below(&complete.journal);
-        complete.set_supply(params, base_viscosity);
-        Ok(complete)
-    }
-
-    fn set_supply(&mut self, params: &Params, base_viscosity: f64) {
-        let (g, l) = (&params.grease, &params.lubricant);
-        let (ln_ref, ln_eta) = (l.viscosity.ln(), base_viscosity.ln());
-        match crate::cold_supply::ln_supply_ratio(g.enabled, g.supply_exponent, l.temperature, l.reference_temperature, ln_ref, ln_eta) {
-            Some(r) => (self.ln_supply, self.ln_eta_shift) = (r, ln_ref - ln_eta),
-            None => (self.ln_supply, self.ln_eta_shift) = (0.0, 0.0),
-        }
-        self.s_no_journal = (self.ln_s_no_journal - self.ln_eta_shift).exp();
+            ln_flattening_unit: (4.0 / (std::f64::consts::PI * g.bush_length * e_eff)).ln(),
+        })
     }
 
     /// These terms at another temperature: the same journal table, the clearance's lubricant
     /// for `params` (at its temperature) with the base oil's viscosity `base_viscosity`.
     pub fn at_temperature(&self, params: &Params, base_viscosity: f64) -> Self {
-        let mut c = Self { rheology: rheology(params, base_viscosity), ..self.clone() };
-        c.set_supply(params, base_viscosity);
-        c
+        Self { rheology: rheology(params, base_viscosity), ..self.clone() }
     }
 
-    /// The journal's weight w at ln S (eq. 20 at the whole load with η_b(T); −∞ at rest: w = 0):
-    /// w(ρ_J), ρ_J = 1 − ε(S); below T_ref (cold supply) ε(S_ref), S_ref the Sommerfeld number
-    /// with η_b(T_ref): the weights of the two films stay those of the flooded joint at T_ref,
-    /// and both films are the reference's scaled by the replenishment ratio, so the composite
-    /// film is too (non-increasing as T falls, at every load share).
+    /// ln ξ = ln(δ/h_J) at ln S (eq. 20 at the whole load with η_b(T)) and ln P: the Hertz
+    /// flattening δ = 4P/(π B E') over the rigid journal's minimum film h_J = c·(1 − ε(S)),
+    /// starved by the inlet's layer if `inlet` is given (the film the journal can form).
     #[inline]
-    pub fn weight(&self, ln_sommerfeld: f64) -> f64 {
-        if ln_sommerfeld == f64::NEG_INFINITY || ln_sommerfeld + self.ln_eta_shift <= self.ln_s_no_journal {
+    pub fn ln_elasticity_ratio(&self, ln_sommerfeld: f64, ln_load: f64, inlet: Option<StarvedInlet>) -> f64 {
+        let (rho, _) = self.journal.film_ratio(ln_sommerfeld);
+        let ln_h = self.ln_clearance + rho.ln();
+        let ln_h = match inlet {
+            Some(st) => crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma).0,
+            None => ln_h,
+        };
+        self.ln_flattening_unit + ln_load - ln_h
+    }
+
+    /// The journal's weight w at ln S and ln P with the inlet `inlet` ([`journal_weight`] of
+    /// ln ξ); 0 at rest (ln S = −∞).
+    #[inline]
+    pub fn weight(&self, ln_sommerfeld: f64, ln_load: f64, inlet: Option<StarvedInlet>) -> f64 {
+        if ln_sommerfeld == f64::NEG_INFINITY {
             return 0.0;
         }
-        let (e, _) = self.journal.eccentricity(ln_sommerfeld + self.ln_eta_shift);
-        journal_weight(1.0 - e)
+        journal_weight(self.ln_elasticity_ratio(ln_sommerfeld, ln_load, inlet))
     }
 
-    /// [`Complete::weight`] at S = `sommerfeld` (> 0), bit for bit, without the logarithm where
-    /// S is below the journal's range (w = 0 there: the thin films of mixed lubrication).
-    #[inline]
-    pub fn weight_of_sommerfeld(&self, sommerfeld: f64) -> f64 {
-        if sommerfeld <= self.s_no_journal {
-            return 0.0;
-        }
-        self.weight(sommerfeld.ln())
-    }
-
-    /// The journal's film for the solve, `None` where w = 0 (the paper's film alone): with the
-    /// cold supply, h_J(x1) = c·(1 − ε(S_ref/x1))·ratio.
+    /// The journal's film for the solve, `None` where w = 0 (the paper's film alone).
     #[inline]
     pub fn journal_film(&self, weight: f64, ln_sommerfeld: f64) -> Option<JournalFilm<'_>> {
-        (weight > 0.0).then_some(JournalFilm {
-            weight,
-            ln_sommerfeld: ln_sommerfeld + self.ln_eta_shift,
-            ln_clearance: self.ln_clearance + self.ln_supply,
-            table: &self.journal,
-        })
-    }
-
-    /// The journal's film of the flooded joint at ln S (no cold supply), with its weight:
-    /// what the start table's nodes are solved with (they hold the reference temperature's
-    /// roots). `None` where w = 0.
-    pub fn reference_journal_film(&self, ln_sommerfeld: f64) -> Option<JournalFilm<'_>> {
-        let (e, _) = self.journal.eccentricity(ln_sommerfeld);
-        let weight = journal_weight(1.0 - e);
         (weight > 0.0).then_some(JournalFilm { weight, ln_sommerfeld, ln_clearance: self.ln_clearance, table: &self.journal })
     }
 
@@ -314,9 +259,7 @@ impl Complete {
     /// half-width a (m), load P (N) and sliding speed u (m/s).
     pub fn parts(&self, weight: f64, ln_sommerfeld: f64, ls: &LoadSharing, half_width: f64, load: f64, u: f64) -> Parts {
         let poiseuille_torque = if weight > 0.0 && ls.fluid_fraction > 0.0 {
-            let (e, _) = self.journal.eccentricity(ln_sommerfeld + self.ln_eta_shift - ls.fluid_fraction.ln());
-            // The journal's eccentricity: 1 − h_J/c (the supplied film below T_ref).
-            let e = if self.ln_supply == 0.0 { e } else { 1.0 - (1.0 - e) * self.ln_supply.exp() };
+            let (e, _) = self.journal.eccentricity(ln_sommerfeld - ls.fluid_fraction.ln());
             0.5 * self.clearance * e * ls.fluid_fraction * load * self.journal.attitude_angle(e).sin()
         } else {
             0.0
@@ -355,47 +298,34 @@ mod tests {
     }
 
     #[test]
-    fn weight_is_zero_and_one_at_its_ends() {
-        assert_eq!(journal_weight(0.0), 0.0);
-        assert_eq!(journal_weight(RHO_0), 0.0);
-        assert_eq!(journal_weight(RHO_1), 1.0);
-        assert_eq!(journal_weight(1.0), 1.0);
-        let mid = journal_weight((RHO_0 * RHO_1).sqrt());
+    fn weight_is_one_and_zero_at_its_ends_and_falls_with_the_ratio() {
+        assert_eq!(journal_weight(f64::NEG_INFINITY), 1.0);
+        assert_eq!(journal_weight(XI_0.ln()), 1.0);
+        assert_eq!(journal_weight(XI_1.ln()), 0.0);
+        assert_eq!(journal_weight(10f64.ln()), 0.0);
+        let mid = journal_weight(0.5 * (XI_0.ln() + XI_1.ln()));
         assert!((mid - 0.5).abs() < 1e-12, "{mid}");
-    }
-
-    /// The weight without the shortcut: the spline, the logistic and ρ's smoothstep.
-    fn weight_by_the_table(c: &Complete, ln_s: f64) -> f64 {
-        if ln_s == f64::NEG_INFINITY {
-            return 0.0;
+        let mut prev = 1.0;
+        for k in 0..=400 {
+            let w = journal_weight(XI_0.ln() - 1.0 + f64::from(k) * 0.02);
+            assert!(w <= prev);
+            prev = w;
         }
-        journal_weight(1.0 - c.journal.eccentricity(ln_s + c.ln_eta_shift).0)
     }
 
-    /// The shortcut where w = 0 ([`no_journal_below`]) answers exactly what the table does, on
-    /// a fine sweep through the threshold and far below it, at temperatures above and below
-    /// T_ref (the cold supply's η shift), for two bush proportions; and it is no vacuous cut:
-    /// the weight turns positive within a few tenths of ln S above it.
+    /// ξ from its definition: the Hertz flattening a²/(2R') over c(1 − ε(S)).
     #[test]
-    fn the_zero_weight_shortcut_is_the_table_bit_for_bit() {
-        for (length, t) in [(0.056, 293.15), (0.056, 233.15), (0.056, 373.15), (0.02, 250.0)] {
-            let mut p = Params::default();
-            p.geometry.bush_length = length;
-            p.lubricant.temperature = t;
-            let eta = crate::viscosity::at_temperature(&p.lubricant).viscosity;
-            let c = Complete::new(&p, eta).unwrap();
-            assert!(c.ln_s_no_journal.is_finite(), "{length} {t}");
-            let first_positive = (0..4000).map(|k| c.ln_s_no_journal - c.ln_eta_shift + f64::from(k) * 1e-3).find(|&x| c.weight(x) > 0.0).unwrap();
-            assert!(first_positive - (c.ln_s_no_journal - c.ln_eta_shift) < 0.5, "{length} {t}: {first_positive}");
-            for k in -20_000..20_000 {
-                let x = c.ln_s_no_journal - c.ln_eta_shift + f64::from(k) * 1e-4;
-                assert_eq!(c.weight(x).to_bits(), weight_by_the_table(&c, x).to_bits(), "{length} {t} ln S {x}");
-                let s = x.exp();
-                assert_eq!(c.weight_of_sommerfeld(s).to_bits(), c.weight(s.ln()).to_bits(), "{length} {t} S {s}");
-            }
-            for x in [-1e3, -60.0, -30.0, f64::NEG_INFINITY, f64::NAN, 50.0, f64::INFINITY] {
-                assert_eq!(c.weight(x).to_bits(), weight_by_the_table(&c, x).to_bits(), "{x}");
-            }
+    fn the_elasticity_ratio_is_the_flattening_over_the_rigid_film() {
+        let p = Params::default();
+        let eta = crate::viscosity::at_temperature(&p.lubricant).viscosity;
+        let c = Complete::new(&p, eta).unwrap();
+        let (r_red, e_eff) = (crate::contact::reduced_radius(&p.geometry), crate::contact::effective_modulus(&p.materials));
+        for (load, ln_s) in [(50.0, 0.5), (2e3, -3.0), (20e3, -8.0)] {
+            let a = crate::contact::hertz(load, r_red, e_eff, p.geometry.bush_length).half_width;
+            let delta = a * a / (2.0 * r_red);
+            let h_j = p.radial_clearance() * (1.0 - c.journal.eccentricity(ln_s).0);
+            let xi = c.ln_elasticity_ratio(ln_s, f64::ln(load), None).exp();
+            assert!((xi / (delta / h_j) - 1.0).abs() < 1e-9, "{load} {ln_s}: {xi} vs {}", delta / h_j);
         }
     }
 }

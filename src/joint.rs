@@ -259,8 +259,12 @@ pub struct Joint {
     ln_w_unit: f64,
     ln_u_mean_unit: f64,
     ln_g: f64,
-    /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`).
+    /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`): what the
+    /// start table's nodes are solved with (it does not depend on the temperature).
     starved: Option<crate::mixed::StarvedInlet>,
+    /// The inlet at the temperature: the user's starved inlet and the grease's supply layer
+    /// ([`crate::cold_supply`]) together; `starved` itself for the paper's model.
+    inlet: Option<crate::mixed::StarvedInlet>,
     /// ln S (eq. 20) at P = 1 N, u = 1 m/s with η0(T_ref): ln η0(T_ref) + ln(B (R/c)²/π).
     ln_sommerfeld_reference: f64,
     /// The complete model's terms at the temperature; `None` for the paper's model
@@ -307,6 +311,7 @@ impl Joint {
             ln_u_mean_unit: f64::NAN,
             ln_g: f64::NAN,
             starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
+            inlet: None,
             start: Arc::new(StartTable::empty()),
             start_film: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, reference.viscosity, reference.pressure_viscosity_coefficient),
             start_shift: f64::NAN,
@@ -357,6 +362,7 @@ impl Joint {
         self.ln_u_mean_unit = (0.5 * lub.viscosity / (e_eff * r_red)).ln();
         self.ln_g = (lub.pressure_viscosity_coefficient * e_eff).ln();
         self.start_shift = if lub.viscosity == params.lubricant.viscosity { 0.0 } else { self.ln_eta0 - params.lubricant.viscosity.ln() };
+        self.inlet = self.starved;
         if !params.model.paper {
             let complete = match &self.complete {
                 Some(c) => c.at_temperature(params, lub.viscosity),
@@ -382,14 +388,12 @@ impl Joint {
                 }
             }
             self.complete = Some(complete);
-            // The cold supply: the reference film scaled by the replenishment ratio (below
-            // T_ref only; crate::cold_supply). Its start is the reference's at the same speed.
-            let g = &params.grease;
-            let reference = &params.lubricant;
-            if let Some(r) = crate::cold_supply::ln_supply_ratio(g.enabled, g.supply_exponent, reference.temperature, reference.reference_temperature, reference.viscosity.ln(), self.ln_eta0) {
-                self.film_unit = crate::cold_supply::supplied(&self.start_film, r);
-                self.start_shift = 0.0;
-            }
+            // The grease's supply layer at the temperature (crate::cold_supply), starving the
+            // inlet together with the user's own layer, if any.
+            let (g, st) = (&params.grease, &params.starvation);
+            let grease = crate::cold_supply::ln_layer_inverse(g.enabled, g.supply_layer_inverse, g.supply_exponent, params.lubricant.viscosity.ln(), self.ln_eta0);
+            let user = self.starved.map(|s| s.ln_q);
+            self.inlet = crate::cold_supply::ln_combined(user, grease, st.exponent).map(|ln_q| crate::mixed::StarvedInlet { ln_q, gamma: st.exponent });
         }
         self.lub = lub;
         Ok(())
@@ -402,7 +406,10 @@ impl Joint {
         let film = self.start_film.at_ratio(ln_p, ln_u);
         // The complete model: the composite film of the flooded joint at the reference
         // temperature (S with η0(T_ref)), so that the table starts the journal's region too.
-        let journal = self.complete.as_ref().and_then(|c| c.reference_journal_film(self.ln_sommerfeld_reference + ln_u - ln_p));
+        let journal = self.complete.as_ref().and_then(|c| {
+            let ln_s = self.ln_sommerfeld_reference + ln_u - ln_p;
+            c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s)
+        });
         let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.starved, journal.as_ref(), true);
         crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
     }
@@ -466,7 +473,7 @@ impl Joint {
     /// point alone ([`crate::composite`]); 0 at rest and for the paper's model.
     pub fn journal_weight(&self, load: f64, omega: f64) -> f64 {
         match &self.complete {
-            Some(c) if omega != 0.0 && omega.is_finite() => c.weight_of_sommerfeld(self.sommerfeld_at(load.abs() / self.projected_area, omega)),
+            Some(c) if omega != 0.0 && omega.is_finite() => c.weight(self.sommerfeld_at(load.abs() / self.projected_area, omega).ln(), load.abs().ln(), self.inlet),
             _ => 0.0,
         }
     }
@@ -676,7 +683,7 @@ impl Joint {
         let (weight, ln_s) = match &self.complete {
             Some(c) if u > 0.0 => {
                 let ln_s = self.sommerfeld(lt, omega).ln();
-                (c.weight(ln_s), ln_s)
+                (c.weight(ln_s, lt.ln_load, self.inlet), ln_s)
             }
             _ => (0.0, f64::NEG_INFINITY),
         };
@@ -692,7 +699,7 @@ impl Joint {
             }),
             Start::Cut(_) => None,
         };
-        let ls = solve_composite(film.as_ref(), &lt.asperity, &p.surface, guess, self.starved, journal.as_ref(), sensitivities);
+        let ls = solve_composite(film.as_ref(), &lt.asperity, &p.surface, guess, self.inlet, journal.as_ref(), sensitivities);
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (docs/model.md, limits), whatever η.
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.

@@ -163,18 +163,17 @@ pub fn solve_composite(
             dlogit_dln_speed: 0.0,
         }
     };
-    if let (Some(_), Some(st), None) = (film, starved, journal) {
-        // r(−∞): film = h_oil, asperities carry everything (ln x2 = 0).
-        let h_oil = (-st.ln_q).exp();
-        let (ln_f, _) = ln_f32_slope((h_oil - s.summit_mean_plane_offset) / s.summit_height_std);
-        if ln_f - asp.required_ln_f32(0.0) >= 0.0 {
-            return rest(asp);
-        }
-    }
-    if let (Some(_), Some(j)) = (film, journal) {
-        // r(−∞): h_13 → h_oil (starved) or ∞, h_J → c; bounded only if one of them is.
-        let ln_h13 = starved.map_or(f64::INFINITY, |st| -st.ln_q);
-        let ln_h = if j.weight >= 1.0 { j.ln_clearance } else { (1.0 - j.weight) * ln_h13 + j.weight * j.ln_clearance };
+    if film.is_some() {
+        // r(−∞): h_13 → ∞, h_J → c; the composite film is bounded only with w = 1, the
+        // starved one by h_oil (the asperities carry everything there: ln x2 = 0).
+        let ln_h = match journal {
+            Some(j) if j.weight >= 1.0 => j.ln_clearance,
+            _ => f64::INFINITY,
+        };
+        let ln_h = match starved {
+            Some(st) => crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma).0,
+            None => ln_h,
+        };
         if ln_h.is_finite() {
             let (ln_f, _) = ln_f32_slope((exp(ln_h) - s.summit_mean_plane_offset) / s.summit_height_std);
             if ln_f - asp.required_ln_f32(0.0) >= 0.0 {
@@ -331,21 +330,23 @@ impl Point {
         let mut dln_h = sh.x2 * q1; // d ln x1/dy = x2
         let mut d2ln_h = sh.x2 * sh.x2 * d2m - sh.x1 * sh.x2 * q1; // d² ln x1/dy² = −x1·x2
         let mut w = 1.0;
-        if let Some(st) = starved {
-            let (l, ws) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
-            ln_h = l;
-            dln_h *= ws;
-            w = ws;
-            d2ln_h = f64::NAN;
-        }
         let mut jp = 0.0; // the journal's ∂ln h/∂ln P_T at fixed y
         if let Some(j) = journal {
             let (ln_hj, dj) = j.ln_film(sh.ln_x1);
             ln_h = (1.0 - j.weight) * ln_h + j.weight * ln_hj;
             dln_h = (1.0 - j.weight) * dln_h + j.weight * sh.x2 * dj;
-            w *= 1.0 - j.weight;
+            w = 1.0 - j.weight;
             d2ln_h = f64::NAN;
             jp = j.weight * dj; // ln S − ln x1: ∂/∂ln P = ∂/∂ln x1
+        }
+        // The starved inlet starves the (composite) film.
+        if let Some(st) = starved {
+            let (l, ws) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
+            ln_h = l;
+            dln_h *= ws;
+            w *= ws;
+            jp *= ws;
+            d2ln_h = f64::NAN;
         }
         let h = exp(ln_h);
         let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;

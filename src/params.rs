@@ -136,8 +136,11 @@ pub struct Grease {
     pub yield_activation: f64,
     /// E_K/R_gas (K): K(T) = K_ref·exp(E_K/R (1/T − 1/T_ref)).
     pub consistency_activation: f64,
-    /// m, exponent of the cold supply's replenishment ratio (η_b(T_ref)/η_b(T))^m (-).
+    /// m, exponent of the supply layer's temperature law h_oil(T) = h_oil(T_ref)·(η_b(T_ref)/η_b(T))^m (-).
     pub supply_exponent: f64,
+    /// 1/h_oil(T_ref), reciprocal of the oil layer the grease's bleed leaves on the track at
+    /// the reference temperature (1/m); 0 = no supply limit ([`crate::cold_supply`]).
+    pub supply_layer_inverse: f64,
 }
 
 /// The full parameter set. `Params::default()` is the paper's rig with the complete model;
@@ -222,6 +225,7 @@ impl Default for Grease {
             yield_activation: c::DEFAULT_YIELD_ACTIVATION,
             consistency_activation: c::DEFAULT_CONSISTENCY_ACTIVATION,
             supply_exponent: c::DEFAULT_SUPPLY_EXPONENT,
+            supply_layer_inverse: c::DEFAULT_SUPPLY_LAYER_INVERSE,
         }
     }
 }
@@ -359,7 +363,7 @@ macro_rules! switch {
 }
 
 /// Every parameter, in file order.
-pub static PARAMS: [ParamSpec; 34] = [
+pub static PARAMS: [ParamSpec; 35] = [
     spec!(geometry.pin_radius, "R", "m", Range::Positive, "Table 1", "Outer radius of the pin"),
     spec!(geometry.bush_radius, "R_b", "m", Range::Positive, "Table 1", "Inner radius of the bush (must exceed the pin radius; the radial clearance is R_b - R)"),
     spec!(geometry.bush_length, "B", "m", Range::Positive, "Table 1", "Length of the bush (contact length)"),
@@ -394,7 +398,8 @@ pub static PARAMS: [ParamSpec; 34] = [
     spec!(grease.flow_index, "n", "1", Range::OpenClosed(0.0, 1.0), GREASE_SOURCE, "Flow index of the grease (Herschel-Bulkley)"),
     spec!(grease.yield_activation, "E_y/R", "K", Range::NonNegative, GREASE_SOURCE, "Activation temperature of the yield stress: tau_y(T) = tau_y exp(E_y/R (1/T - 1/T_ref))"),
     spec!(grease.consistency_activation, "E_K/R", "K", Range::NonNegative, GREASE_SOURCE, "Activation temperature of the consistency: K(T) = K exp(E_K/R (1/T - 1/T_ref))"),
-    spec!(grease.supply_exponent, "m", "1", Range::Closed(0.0, 10.0), "Complete model: cold supply (docs/cold-day.md), default 1", "Exponent of the cold supply: below T_ref the contact film is at most the reference film times (eta_b(T_ref)/eta_b(T))^m; 0 = no supply limit"),
+    spec!(grease.supply_exponent, "m", "1", Range::Closed(0.0, 10.0), "Complete model: the grease's oil supply (docs/cold-day.md), default 1 (Darcy/capillary flow)", "Exponent of the supply layer's temperature law h_oil(T) = h_oil(T_ref) (eta_b(T_ref)/eta_b(T))^m"),
+    spec!(grease.supply_layer_inverse, "1/h_oil", "1/m", Range::NonNegative, "Complete model: the grease's oil supply (docs/cold-day.md)", "Reciprocal of the oil layer the grease's bleed leaves on the track at the reference temperature; the contact is a starved inlet fed by it (h^-g = h_ff^-g + h_oil^-g, g = starvation.exponent); 0 = no supply limit"),
 ];
 
 /// Where the grease's defaults come from ([`crate::grease`]: chosen for the paper's grease class
