@@ -22,8 +22,8 @@
 //! This is one physical law at every temperature: T_ref only says where the layer is quoted,
 //! as it says where η0, α, τ_y and K are. Re-quoting the layer at T' by the same law
 //! (`h_oil(T') = h_oil(T_ref)·(η_b(T_ref)/η_b(T'))^m`, what `pinjoint params
-//! --reference-temperature` writes) leaves h_oil(T) unchanged at every T, so every answer is
-//! unchanged ([`requote`]). It is smooth in T (η_b(T) is), with no kink anywhere. The default
+//! --reference-temperature` writes, [`crate::params::Params::requoted_at`]) leaves h_oil(T)
+//! unchanged at every T, so every answer is unchanged. It is smooth in T (η_b(T) is), with no kink anywhere. The default
 //! layer is thick against the flooded film at room temperature (the paper's rig is flooded)
 //! and thin against it on the cold day, where η_b is a thousand times the room's.
 //!
@@ -48,13 +48,6 @@ pub fn ln_combined(ln_a: Option<f64>, ln_b: Option<f64>, gamma: f64) -> Option<f
     }
 }
 
-/// The supply layer's inverse re-quoted at another temperature: `layer_inverse` (1/m) quoted
-/// where the base oil's viscosity is `eta_ref`, quoted where it is `eta_new` instead (the same
-/// layer at every temperature).
-pub fn requote(layer_inverse: f64, exponent: f64, eta_ref: f64, eta_new: f64) -> f64 {
-    if layer_inverse == 0.0 { 0.0 } else { layer_inverse * (eta_new / eta_ref).powf(exponent) }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -67,20 +60,6 @@ mod tests {
         // Ten times the viscosity, m = 1: a ten times thinner layer.
         let q = ln_layer_inverse(true, 2e4, 1.0, -4.0, -4.0 + 10f64.ln()).unwrap();
         assert!((q.exp() / 2e5 - 1.0).abs() < 1e-14);
-    }
-
-    #[test]
-    fn requoting_leaves_the_layer_at_every_temperature() {
-        // Quoted at viscosity 0.0125, or re-quoted at 0.0061 (a warmer quote): the same layer
-        // at every viscosity.
-        let (q, m, e_ref, e_new) = (2e4, 1.3, 0.0125, 0.0061);
-        let q_new = requote(q, m, e_ref, e_new);
-        for eta in [1e-4, 0.0061, 0.0125, 3.0, 1e4] {
-            let a = ln_layer_inverse(true, q, m, e_ref.ln(), eta.ln()).unwrap();
-            let b = ln_layer_inverse(true, q_new, m, e_new.ln(), eta.ln()).unwrap();
-            assert!((a - b).abs() < 1e-12 * a.abs().max(1.0), "{eta}: {a} vs {b}");
-        }
-        assert_eq!(requote(0.0, 1.0, 1.0, 2.0), 0.0);
     }
 
     #[test]

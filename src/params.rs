@@ -562,6 +562,35 @@ impl Params {
         Ok(())
     }
 
+    /// The same joint quoted at another reference temperature `reference` (K): every
+    /// temperature-quoted parameter moved there by its own law, so that every property, at
+    /// every temperature, is unchanged (to rounding) and so is every answer. η0 by Roelands'
+    /// temperature relation and α by its factor ([`crate::viscosity::at_temperature`]), τ_y and
+    /// K by their Arrhenius laws ([`crate::grease::arrhenius`]), the grease's supply layer by its
+    /// law h_oil ∝ η_b^−m ([`crate::cold_supply`]); `lubricant.reference_temperature` set to
+    /// `reference`. The operating temperature `lubricant.temperature` is kept. Errors as
+    /// [`Params::validate`]'s for the result (for example a reference outside the admissible
+    /// temperatures, or η0 beyond a glass's viscosity there).
+    pub fn requoted_at(&self, reference: f64) -> Result<Self, ParamError> {
+        self.validate()?;
+        let mut q = *self;
+        q.lubricant.reference_temperature = reference;
+        let l = &self.lubricant;
+        let at = Lubricant { temperature: reference, ..*l };
+        let moved = crate::viscosity::at_temperature(&at);
+        q.lubricant.viscosity = moved.viscosity;
+        q.lubricant.pressure_viscosity_coefficient = moved.pressure_viscosity_coefficient;
+        let g = &self.grease;
+        q.grease.yield_stress = crate::grease::arrhenius(g.yield_stress, g.yield_activation, reference, l.reference_temperature);
+        q.grease.consistency = crate::grease::arrhenius(g.consistency, g.consistency_activation, reference, l.reference_temperature);
+        if g.supply_layer_inverse > 0.0 {
+            q.grease.supply_layer_inverse = g.supply_layer_inverse * (moved.viscosity / l.viscosity).powf(g.supply_exponent);
+        }
+        q.validate()?;
+        Ok(q)
+    }
+
+
     /// The paper's rig with the paper's model (`model.paper = true`): today's numbers, bit for bit.
     pub fn paper() -> Self {
         Self { model: Model { paper: true }, ..Self::default() }

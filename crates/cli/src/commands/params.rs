@@ -17,7 +17,8 @@ missing key filled in by its default. With --rig, adds the [rig] section of the 
 Examples:\n  \
 pinjoint params > my-joint.toml        # start a parameter file, then edit it\n  \
 pinjoint point --load 20000 --rpm 10 --params my-joint.toml\n  \
-pinjoint params --rig > rig.toml       # model and rig, for `pinjoint cycle --params rig.toml`"
+pinjoint params --rig > rig.toml       # model and rig, for `pinjoint cycle --params rig.toml`\n  \
+pinjoint params --reference-temperature 313.15 > at40C.toml   # the same joint quoted at 40 C"
 )]
 /// Arguments of `pinjoint params` (its `--help` text is the `#[command]` attribute's).
 // The field docs are the --help text, where `[rig]`/`[lubricant]` name TOML sections, not
@@ -30,11 +31,27 @@ pub struct ParamsCmd {
     /// Also print the [rig] section (the file then suits `pinjoint cycle --params`)
     #[arg(long)]
     pub rig: bool,
+    /// Quote the joint at this reference temperature, in K (a data sheet's 40 °C = 313.15 K):
+    /// η0 and α by Roelands' temperature relation, the grease's yield stress and consistency
+    /// by their Arrhenius laws and its supply layer by its viscosity law are moved there, so
+    /// every property at every temperature, and every answer, stays the same
+    #[arg(long, value_name = "K", allow_negative_numbers = true)]
+    pub reference_temperature: Option<f64>,
 }
 
 /// Runs `pinjoint params`: prints the parameter file (with --rig, the rig section too) to
 /// standard output. Fails if --params cannot be read or holds invalid values.
 pub fn run(cmd: &ParamsCmd) -> Result<()> {
-    let text = if cmd.rig { load_rig_config(cmd.params.params.as_ref())?.to_toml_string() } else { cmd.params.load()?.to_toml_string() };
+    let requote = |p: &pinjoint::Params| match cmd.reference_temperature {
+        Some(t) => p.requoted_at(t).map_err(crate::error::CliError::Params),
+        None => Ok(*p),
+    };
+    let text = if cmd.rig {
+        let mut config = load_rig_config(cmd.params.params.as_ref())?;
+        config.model = requote(&config.model)?;
+        config.to_toml_string()
+    } else {
+        requote(&cmd.params.load()?)?.to_toml_string()
+    };
     to_stdout(|w| w.write_all(text.as_bytes()))
 }

@@ -1,0 +1,142 @@
+//! One joint, one answer (issue 37): the complete model's invariances and check values.
+//!
+//! * Re-quoting: the same oil and grease quoted at another reference temperature
+//!   ([`Params::requoted_at`]: η0 and α by Roelands' temperature relation, τ_y and K by their
+//!   Arrhenius laws, the supply layer by its viscosity law) give the same answer at every
+//!   operating point and temperature (≤ 1e-9 relative).
+//! * The paper's room: 5–60 kN × 0–4.386 rad/s × 15–25 °C, the default within 3 % of
+//!   `model.paper = true` everywhere in the box.
+//! * Monotone in load: at fixed speed and temperature the torque never falls and the film
+//!   never thickens as the load rises (50 N to 200 kN, −55 to +120 °C, 0.01–100 rad/s, grease
+//!   on and off).
+//! * Raimondi & Boyd (1958, L/D = 1) at ε 0.8 and 0.9 on a rigid, wide-clearance bearing
+//!   (c = 100 µm) where the asperities are apart (λ ≥ 3) and the bush is rigid (w = 1):
+//!   within 5 %.
+//! * The grease's switches: with τ_y = K = 0 and the supply limit off, the answer is that of
+//!   `grease.enabled = false` at every temperature.
+
+use pinjoint::{Joint, Params};
+use proptest::prelude::*;
+use std::f64::consts::PI;
+
+fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    (lo.ln()..hi.ln()).prop_map(f64::exp)
+}
+
+fn at(mut p: Params, t: f64) -> Params {
+    p.lubricant.temperature = t;
+    p
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    if a == b { 0.0 } else { ((a - b) / b.abs().max(1e-300)).abs() }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// Every answer is the same whichever temperature the data are quoted at.
+    #[test]
+    fn requoting_changes_no_answer(load in log_uniform(50.0, 2e5), omega in log_uniform(1e-3, 100.0), t in 218.15f64..393.15, t_quote in 238.15f64..373.15, grease in prop::bool::ANY, paper in prop::bool::ANY) {
+        let mut p = Params::default();
+        p.grease.enabled = grease;
+        if paper {
+            p = Params::paper();
+        }
+        let t = if paper { t.max(238.15) } else { t };
+        let p = at(p, t);
+        let q = p.requoted_at(t_quote).unwrap();
+        prop_assert_eq!(q.lubricant.reference_temperature, t_quote);
+        let (a, b) = (Joint::new(&p).unwrap().evaluate(load, omega), Joint::new(&q).unwrap().evaluate(load, omega));
+        match (a, b) {
+            (Ok(a), Ok(b)) => {
+                for (name, x, y) in [("torque", a.torque, b.torque), ("film", a.film_thickness, b.film_thickness), ("fluid share", a.fluid_load_fraction.max(1e-12), b.fluid_load_fraction.max(1e-12)), ("clearance torque", a.clearance_torque.max(1e-12), b.clearance_torque.max(1e-12))] {
+                    prop_assert!(rel(y, x) <= 1e-9, "{} at {} N, {} rad/s, {} K (quoted at {} K): {} vs {}", name, load, omega, t, t_quote, x, y);
+                }
+            }
+            (Err(_), Err(_)) => {}
+            (a, b) => prop_assert!(false, "{load} N {omega} rad/s {t} K: {a:?} vs {b:?}"),
+        }
+    }
+
+    /// The paper's room: within 3 % of the paper's model.
+    #[test]
+    fn the_papers_room_stays_the_papers(load in log_uniform(5e3, 60e3), omega in 0.0f64..4.386, t in 288.15f64..298.15) {
+        let (c, p) = (Joint::new(&at(Params::default(), t)).unwrap(), Joint::new(&at(Params::paper(), t)).unwrap());
+        let (a, b) = (c.evaluate(load, omega).unwrap(), p.evaluate(load, omega).unwrap());
+        prop_assert!(rel(a.torque, b.torque) <= 0.03, "{load} N {omega} rad/s {t} K: {} against the paper's {}", a.torque, b.torque);
+    }
+
+    /// Torque non-decreasing and film non-increasing as the load rises.
+    #[test]
+    fn monotone_in_load(omega in log_uniform(0.01, 100.0), t in 218.15f64..393.15, grease in prop::bool::ANY) {
+        let mut p = at(Params::default(), t);
+        p.grease.enabled = grease;
+        let j = Joint::new(&p).unwrap();
+        let (mut t_prev, mut h_prev, mut p_prev) = (0.0, f64::INFINITY, 0.0);
+        for k in 0..=160 {
+            let load = 50.0 * 4000f64.powf(f64::from(k) / 160.0);
+            let op = j.evaluate(load, omega).unwrap();
+            prop_assert!(op.torque >= t_prev * (1.0 - 1e-9), "{omega} rad/s {t} K grease {grease}: torque {} at {load} N below {t_prev} at {p_prev} N", op.torque);
+            prop_assert!(op.film_thickness <= h_prev * (1.0 + 1e-9), "{omega} rad/s {t} K grease {grease}: film {} at {load} N above {h_prev} at {p_prev} N", op.film_thickness);
+            (t_prev, h_prev, p_prev) = (op.torque, op.film_thickness, load);
+        }
+    }
+
+    /// Zero yield stress and consistency, the supply limit off: the base oil alone.
+    #[test]
+    fn a_grease_of_nothing_is_no_grease(load in log_uniform(50.0, 2e5), omega in log_uniform(1e-4, 100.0), t in 218.15f64..393.15) {
+        let mut g = at(Params::default(), t);
+        g.grease.yield_stress = 0.0;
+        g.grease.consistency = 0.0;
+        g.grease.supply_layer_inverse = 0.0;
+        let mut off = at(Params::default(), t);
+        off.grease.enabled = false;
+        let (a, b) = (Joint::new(&g).unwrap().evaluate(load, omega).unwrap(), Joint::new(&off).unwrap().evaluate(load, omega).unwrap());
+        for (name, x, y) in [("torque", a.torque, b.torque), ("film", a.film_thickness, b.film_thickness), ("clearance torque", a.clearance_torque, b.clearance_torque)] {
+            prop_assert!(rel(x, y) <= 1e-12 || (x - y).abs() <= 1e-15, "{}: {} vs {} at {} N {} rad/s {} K", name, x, y, load, omega, t);
+        }
+    }
+}
+
+/// Raimondi & Boyd (1958), L/D = 1, as reproduced in Shigley's *Mechanical Engineering
+/// Design*: (ε, S, (R/c)f).
+const RAIMONDI_BOYD_HIGH: [(f64, f64, f64); 2] = [(0.8, 0.0446, 1.70), (0.9, 0.0188, 1.05)];
+
+#[test]
+fn raimondi_and_boyd_at_high_eccentricity_on_a_rigid_bush() {
+    // A rigid, wide-clearance bearing: c = 100 µm, L/D = 1, the base oil alone.
+    let mut p = Params::default();
+    p.grease.enabled = false;
+    p.geometry.bush_radius = p.geometry.pin_radius + 100e-6;
+    p.geometry.bush_length = 2.0 * p.geometry.pin_radius;
+    let j = Joint::new(&p).unwrap();
+    let (r, c, b) = (p.geometry.pin_radius, p.radial_clearance(), p.geometry.bush_length);
+    let eta = p.lubricant.viscosity;
+    for (eps, s, f) in RAIMONDI_BOYD_HIGH {
+        let mut checked = 0;
+        for omega in [0.3, 1.0, 3.0, 10.0, 30.0, 100.0] {
+            let load = eta * omega / (2.0 * PI * s) * (r / c).powi(2) * 2.0 * r * b;
+            let op = j.evaluate(load, omega).unwrap();
+            if op.journal_weight < 1.0 || op.lambda_ratio < 3.0 {
+                continue;
+            }
+            checked += 1;
+            let fv = op.friction_coefficient * r / c;
+            assert!(rel(fv, f) <= 0.05, "eps {eps}, S {s}, {omega} rad/s, {load} N: (R/c)f = {fv} against {f}");
+            assert!((op.eccentricity_ratio - eps).abs() < 0.02, "eps {eps}: {}", op.eccentricity_ratio);
+        }
+        assert!(checked > 0, "eps {eps}: no rigid full-film point");
+    }
+}
+
+/// The issue's first example: 40 °C instead of 20 °C as the quoting temperature.
+#[test]
+fn the_issues_requoted_examples() {
+    let p = Params::default();
+    let q = p.requoted_at(313.15).unwrap();
+    for (load, omega) in [(20e3, 30.0), (5e3, 4.386), (70.6e3, 0.78)] {
+        let (a, b) = (Joint::new(&p).unwrap().evaluate(load, omega).unwrap(), Joint::new(&q).unwrap().evaluate(load, omega).unwrap());
+        assert!(rel(b.torque, a.torque) <= 1e-9, "{load} N {omega} rad/s: {} vs {}", a.torque, b.torque);
+    }
+}
