@@ -11,14 +11,23 @@
 //!   the line-contact (Moes) film of eqs. 12–13 holds (w = 0). For the line contact's own
 //!   rigid film (Moes' H_RI = 3/M) the same ratio is δ/h_RI = (4/3π)·M², Moes' elasticity
 //!   parameter, whose rigid–elastic crossing (H_RI = H_EI) is at M = 1.18, ξ = 0.59: the
-//!   journal's weight falls to 0 by [`XI_1`] = 0.3, below that crossing, and is 1 up to
-//!   [`XI_0`] = 0.01 (a flattening of 1 % of the film). In between: the quintic smoothstep (C²)
-//!   of ln ξ. w is a function of the operating point only (so the load-sharing residual stays
+//!   journal's weight falls to 0 by [`XI_1`] = 0.45, below that crossing, and is 1 up to
+//!   [`XI_0`] = 2.5e-3, the transition as wide in ξ as Moes' own blend of his rigid and elastic
+//!   asymptotes is in M² (M from 0.3 to 4). In between: the quintic smoothstep (C²) of ln ξ.
+//!   A narrower transition lets the film thicken and the torque fall as the load rises where
+//!   the line contact's film exceeds the journal's (both fall with load, the weight moves from
+//!   the thinner to the thicker): over −55 to +120 °C, 0.01–100 rad/s and 50 N–200 kN the
+//!   torque falls by at most 5e-4 and the film rises by at most 4e-3 (relative) between
+//!   neighbouring loads 4.2 % apart inside the transition, and never outside it
+//!   (`tests/one_answer.rs`). w is a function of the operating point only (so the load-sharing residual stays
 //!   monotone in its unknown); over the paper's rig conditions (5–60 kN, up to 4.39 rad/s,
 //!   15–25 °C) ξ ≥ 0.48, so w = 0 and the paper's load sharing is untouched there.
 //! * **Composite film** in the solve ([`crate::mixed::solve_composite`]):
-//!   ln h(x1) = (1 − w)·ln h_13(x1) + w·ln h_J(x1), h_J(x1) = c·(1 − ε(S/x1)); the grease's
-//!   supply layer ([`crate::cold_supply`]) starves the composite film.
+//!   ln h(x1) = (1 − w)·ln h_c13(x1) + w·ln h_J(x1), h_J(x1) = c·(1 − ε(S/x1)), where the line
+//!   contact's film is held inside the clearance, h_c13^−4 = h_13^−4 + c^−4 (eq. 12's
+//!   parabolic gap is a conformal contact's only while the film is small against c; in the
+//!   paper's rig conditions, h_13 ≤ 4 µm against c = 25 µm, this moves the film by less than
+//!   2e-4); the grease's supply layer ([`crate::cold_supply`]) starves the composite film.
 //! * **Torque** (magnitude): T = T_asp + (1 − w)·T_contact,fluid + T_clearance + w·T_poiseuille,
 //!   T_asp = μ_c·x2·R·P (eq. 8), T_contact,fluid = Q_H·R (eq. 3) with the composite film,
 //!   T_clearance the shear of the lubricant in the clearance outside the contact arc
@@ -28,17 +37,20 @@
 //!   friction variable (R/c)f = 2π²S/√(1 − ε²) + (ε/2) sin φ is the two terms at w = 1).
 //!   At rest T = μ_c·R·P + τ_y(T)·(2π − 2a/R)·R²·B: the grease's yield torque adds to breakaway.
 
-use crate::clearance::{clearance_torque_tabulated, yield_torque, ClearanceGeometry, PowerLawTable};
+use crate::clearance::{clearance_and_arc_torque, clearance_torque_tabulated, yield_torque, ClearanceGeometry, PowerLawTable};
 use crate::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
 use crate::mixed::{JournalFilm, LoadSharing, StarvedInlet};
 use crate::params::{ParamError, Params};
 use std::sync::Arc;
 
-/// ξ = δ/h_J at and below which the journal's weight is 1 (the bush effectively rigid).
-pub const XI_0: f64 = 0.01;
-/// ξ = δ/h_J at and above which the journal's weight is 0 (the deflection shapes the gap).
-pub const XI_1: f64 = 0.3;
+/// ξ = δ/h_J at and below which the journal's weight is 1 (the bush effectively rigid):
+/// [`XI_1`]/180, so that the transition spans the range of the elasticity parameter over which
+/// Moes' own rigid–elastic blend moves (M from 0.3 to 4, i.e. M² over 2.25 decades).
+pub const XI_0: f64 = 2.5e-3;
+/// ξ = δ/h_J at and above which the journal's weight is 0 (the deflection shapes the gap):
+/// 0.45, below the paper's rig conditions (ξ ≥ 0.48 there) and Moes' crossing (ξ = 0.59).
+pub const XI_1: f64 = 0.45;
 
 /// The quintic smoothstep t³(10 − 15t + 6t²) on [0, 1], 0 below, 1 above: C², monotone.
 pub fn smoothstep(t: f64) -> f64 {
@@ -156,6 +168,9 @@ pub struct Parts {
     pub yield_torque: f64,
     /// T_poiseuille, N·m (not yet weighted by w).
     pub poiseuille_torque: f64,
+    /// The torque the clearance's lubricant would transmit over the contact arc |θ| ≤ θ_c
+    /// (N·m): the least the contact's lubricant transmits there ([`Complete::contact_torque`]).
+    pub arc_torque: f64,
 }
 
 impl Complete {
@@ -224,10 +239,11 @@ impl Complete {
         journal_weight(self.ln_elasticity_ratio(ln_sommerfeld, ln_load, inlet))
     }
 
-    /// The journal's film for the solve, `None` where w = 0 (the paper's film alone).
+    /// The journal's film for the solve, with its weight (0: the line contact's film alone, capped
+    /// by the clearance; `None` only at rest).
     #[inline]
     pub fn journal_film(&self, weight: f64, ln_sommerfeld: f64) -> Option<JournalFilm<'_>> {
-        (weight > 0.0).then_some(JournalFilm { weight, ln_sommerfeld, ln_clearance: self.ln_clearance, table: &self.journal })
+        (ln_sommerfeld > f64::NEG_INFINITY).then_some(JournalFilm { weight, ln_sommerfeld, ln_clearance: self.ln_clearance, table: &self.journal })
     }
 
     /// ε_g = 1 − h/c for the film `film` (m), clamped to [0, 1).
@@ -264,13 +280,21 @@ impl Complete {
         } else {
             0.0
         };
-        Parts {
-            weight,
-            eccentricity: self.eccentricity(ls.film_thickness),
-            clearance_torque: self.clearance_torque(weight, half_width, u, ls.film_thickness),
-            yield_torque: self.yield_torque(weight, half_width),
-            poiseuille_torque,
-        }
+        let geometry = ClearanceGeometry { radius: self.radius, length: self.length, clearance: self.clearance };
+        let eps = self.eccentricity(ls.film_thickness);
+        let (outside, arc_torque) = clearance_and_arc_torque(&self.power_law, &self.rheology, &geometry, u, eps, self.contact_angle(weight, half_width));
+        Parts { weight, eccentricity: eps, clearance_torque: outside.total(), yield_torque: self.yield_torque(weight, half_width), poiseuille_torque, arc_torque }
+    }
+
+    /// The contact arc's fluid torque (N·m) from the line contact's (1 − w)·Q_H·R (eq. 3,
+    /// `line_contact`): at least what the clearance's lubricant would transmit over the same
+    /// arc (`parts.arc_torque`). Where the contact's film is limited by the base oil's limiting
+    /// shear (eq. 4) and the grease beside it is not (the cold day, fast), the arc that the
+    /// contact takes from the clearance as the load grows would otherwise carry less than the
+    /// grease it replaces, and the torque would fall as the load rises.
+    #[inline]
+    pub fn contact_torque(line_contact: f64, parts: &Parts) -> f64 {
+        line_contact.max(parts.arc_torque)
     }
 }
 

@@ -716,7 +716,8 @@ impl Joint {
             Some(c) => {
                 let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u);
                 let rp = p.geometry.pin_radius * lt.load;
-                let mu_fluid = (1.0 - weight) * mu_contact + (parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
+                let contact = Complete::contact_torque((1.0 - weight) * mu_contact * rp, &parts);
+                let mu_fluid = (contact + parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
                 (ln_u, ls, mu_fluid, mu_asperity, parts)
             }
         }

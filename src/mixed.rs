@@ -168,7 +168,9 @@ pub fn solve_composite(
         // starved one by h_oil (the asperities carry everything there: ln x2 = 0).
         let ln_h = match journal {
             Some(j) if j.weight >= 1.0 => j.ln_clearance,
-            _ => f64::INFINITY,
+            // h_13 → ∞ capped at c, blended with h_J → c: c (to rounding).
+            Some(j) => (1.0 - j.weight) * j.ln_clearance + j.weight * j.ln_clearance,
+            None => f64::INFINITY,
         };
         let ln_h = match starved {
             Some(st) => crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma).0,
@@ -280,6 +282,10 @@ struct Point {
     kj: f64,
 }
 
+/// The exponent k of the cap that holds the complete model's line-contact film inside the
+/// clearance, h^−k = h_13^−k + c^−k ([`crate::composite`]).
+pub const CLEARANCE_CAP_EXPONENT: f64 = 4.0;
+
 /// The journal bearing's film in the load-sharing solve (the complete model,
 /// [`crate::composite`]): its weight w in (0, 1], ln S at the full load and ln c.
 #[derive(Clone, Copy)]
@@ -332,12 +338,19 @@ impl Point {
         let mut w = 1.0;
         let mut jp = 0.0; // the journal's ∂ln h/∂ln P_T at fixed y
         if let Some(j) = journal {
-            let (ln_hj, dj) = j.ln_film(sh.ln_x1);
-            ln_h = (1.0 - j.weight) * ln_h + j.weight * ln_hj;
-            dln_h = (1.0 - j.weight) * dln_h + j.weight * sh.x2 * dj;
-            w = 1.0 - j.weight;
+            // The line contact's film held inside the clearance (crate::composite).
+            let (l, wc) = crate::starvation::ln_starved(ln_h, -j.ln_clearance, CLEARANCE_CAP_EXPONENT);
+            ln_h = l;
+            dln_h *= wc;
+            w = wc;
             d2ln_h = f64::NAN;
-            jp = j.weight * dj; // ln S − ln x1: ∂/∂ln P = ∂/∂ln x1
+            if j.weight > 0.0 {
+                let (ln_hj, dj) = j.ln_film(sh.ln_x1);
+                ln_h = (1.0 - j.weight) * ln_h + j.weight * ln_hj;
+                dln_h = (1.0 - j.weight) * dln_h + j.weight * sh.x2 * dj;
+                w *= 1.0 - j.weight;
+                jp = j.weight * dj; // ln S − ln x1: ∂/∂ln P = ∂/∂ln x1
+            }
         }
         // The starved inlet starves the (composite) film.
         if let Some(st) = starved {

@@ -322,9 +322,10 @@ fn completed_operating_point_matches_the_full_one() {
 #[test]
 fn the_torque_alone_is_the_evaluations_torque_bit_for_bit() {
     let mut cold = Params::default();
-    cold.lubricant.temperature = 262.9;
+    cold.lubricant.temperature = 253.15;
     let spanning = Envelope::new(2e3, 200e3, 1e-3, 3.0).unwrap();
-    let cold_env = Envelope::new(10.0, 100.0, 0.0714, 7.14).unwrap();
+    // Where the grease's supply layer takes the fluid's share to zero at a finite speed.
+    let cold_env = Envelope::new(200.0, 20e3, 0.1, 30.0).unwrap();
     let cases = [
         (Params::paper(), Fidelity::Table, 1e-4, brief()),
         (Params::paper(), Fidelity::Table, 1e-3, spanning),

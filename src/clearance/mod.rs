@@ -39,7 +39,7 @@ pub mod torque;
 
 pub use integrals::{MAX_ECCENTRICITY, newtonian_integral, power_law_integral};
 pub use table::{FlowIndexError, PowerLawTable};
-pub use torque::{ClearanceGeometry, ClearanceTorque, clearance_torque, clearance_torque_parts, clearance_torque_tabulated, yield_torque};
+pub use torque::{ClearanceGeometry, ClearanceTorque, clearance_and_arc_torque, clearance_torque, clearance_torque_parts, clearance_torque_tabulated, yield_torque};
 
 #[cfg(test)]
 mod tests {
