@@ -83,7 +83,8 @@ pub fn clearance_torque_tabulated(table: &PowerLawTable, rheology: &GreaseRheolo
 }
 
 /// [`clearance_torque_tabulated`] outside the arc |θ| ≤ `theta_c`, and the torque the same
-/// lubricant would transmit over that arc (the whole clearance's minus the outside's, ≥ 0):
+/// lubricant's flow (its power-law and Newtonian parts; the yield part is the rest torque's)
+/// would transmit over that arc (the whole clearance's minus the outside's, ≥ 0):
 /// (outside, arc), N·m.
 pub fn clearance_and_arc_torque(table: &PowerLawTable, rheology: &GreaseRheology, geometry: &ClearanceGeometry, sliding_speed: f64, eps_g: f64, theta_c: f64) -> (ClearanceTorque, f64) {
     let outside = clearance_torque_tabulated(table, rheology, geometry, sliding_speed, eps_g, theta_c);
@@ -91,7 +92,8 @@ pub fn clearance_and_arc_torque(table: &PowerLawTable, rheology: &GreaseRheology
         return (outside, 0.0);
     }
     let whole = clearance_torque_tabulated(table, rheology, geometry, sliding_speed, eps_g, 0.0);
-    (outside, (whole.total() - outside.total()).max(0.0))
+    let flow = |t: &ClearanceTorque| t.power_law_part + t.newtonian_part;
+    (outside, (flow(&whole) - flow(&outside)).max(0.0))
 }
 
 /// The clearance torque (N·m): the sum of [`clearance_torque_parts`].
