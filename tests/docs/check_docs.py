@@ -301,6 +301,32 @@ def check_api_docs(root):
     return problems
 
 
+def check_tied_numbers(root, run=False, update=False):
+    """The pages of numbers_spec.PAGES: every number tied, an input or marked (tied_numbers.py);
+    with `run`, every tied number against the built binary; with `update`, rewritten from it.
+    Returns (problems, {page: count of tied numbers})."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import numbers_spec
+    import tied_numbers
+    problems, counts = [], {}
+    binary = tied_numbers.Binary(root) if (run or update) else None
+    if binary is not None:
+        if not binary.exe.exists():
+            return [f"{binary.exe.relative_to(root)} is missing: cargo build --release -p pinjoint-cli"], counts
+        extra = numbers_spec.ns_extra(binary)
+        binary.namespace = (lambda ns=binary.namespace: (lambda: ns(extra)))()
+    for rel, spec in numbers_spec.PAGES.items():
+        if not (root / rel).exists():
+            problems.append(f"{rel}: a page of tests/docs/numbers_spec.py that does not exist")
+            continue
+        got, n, new_text = tied_numbers.check_page(root, rel, spec, binary, update)
+        problems += got
+        counts[rel] = n
+        if update and new_text is not None:
+            (root / rel).write_text(new_text, encoding="utf-8")
+    return problems, counts
+
+
 def self_test():
     """Each check must be able to fail: a broken page set must give each expected problem."""
     with tempfile.TemporaryDirectory() as tmp:
@@ -336,10 +362,17 @@ def main(argv):
     else:
         files = pages(ROOT)
         problems = check_links(ROOT, files) + check_quoted_numbers(ROOT, files) + check_fmu_page(ROOT)
+        tied, counts = check_tied_numbers(ROOT, run="--run" in argv or "--numbers" in argv,
+                                          update="--update-numbers" in argv)
+        problems += tied
+        print("check_docs: tied numbers " + ", ".join(f"{p} {n}" for p, n in counts.items())
+              + ("" if {"--run", "--numbers", "--update-numbers"} & set(argv) else " (not computed)"))
         blocks, marker_problems = runnable_blocks(ROOT, files)
         problems += marker_problems
         if "--run" in argv:
             problems += run_blocks(ROOT, blocks)
+        if "--update-numbers" in argv:
+            problems = [p for p in problems if " quoted, " not in p]
         print(f"check_docs: {len(files)} pages, {len(blocks)} runnable examples{'' if '--run' in argv else ' (not run)'}")
     for p in problems:
         print(p)

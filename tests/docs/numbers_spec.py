@@ -1,0 +1,213 @@
+"""What each tied number of the manual is: page → {ID: Python expression} (tied_numbers.py).
+
+The expressions run against the built project (check_docs.py --run; --update-numbers
+rewrites the pages from them):
+
+- point(N=|kN=, w=|rpm=, C=20, paper=False, p={dotted key: value}) → the JSON object of
+  `pinjoint point --json` (keys: torque, friction_coefficient, film_thickness, journal_weight,
+  clearance_torque, grease_yield_torque, inlet_viscosity, ...), at C °C, with the parameter
+  overrides `p` in a parameter file;
+- sweep([(load N, speed rad/s, C °C), ...], p=...) → the rows of `pinjoint sweep`;
+- param("grease.yield_stress") → a default of `pinjoint params`;
+- lib("journal.ld1.S.0.1") → a number of `target/release/examples/doc_numbers`;
+- code(path, regex) → a constant of the source (group 1, a Rust literal expression);
+- column(path, name) → a column of a CSV file of the repository (a test fixture);
+- the functions of HELPERS below, and math's.
+
+A value is a string (the quoted number must equal it to the rounding of its quoted digits)
+or Spec(expr, rel=...) for an explicit relative tolerance. Inputs of an operating point are
+written as the page writes them (kN=20, w=3, C=-20): the page's untagged numbers of the same
+paragraph that are literals of these expressions are its inputs.
+"""
+from tied_numbers import Spec
+
+C0 = "273.15"  # K at 0 °C, for the code's kelvin constants
+
+
+def warming_steps(b):
+    """Over 12 loads (10 N–1 MN) × 12 speeds (1e-3–200 rad/s), log-spaced, from 20 to 120 °C
+    in steps of 2.5 K: how many steps raise the torque, and the steepest rise (ratio, load,
+    speed)."""
+    geo = lambda lo, hi, n: [lo * (hi / lo) ** (i / (n - 1)) for i in range(n)]
+    loads, speeds = geo(10.0, 1e6, 12), geo(1e-3, 200.0, 12)
+    temps = [20.0 + 2.5 * k for k in range(41)]
+    out = b.sweep([(load, w, c) for load in loads for w in speeds for c in temps])
+    up, worst = 0, (0.0, 0.0, 0.0)
+    for i in range(len(loads) * len(speeds)):
+        seq = out[41 * i: 41 * (i + 1)]
+        for a, c in zip(seq, seq[1:]):
+            if c["torque"] > a["torque"]:
+                up += 1
+                worst = max(worst, (c["torque"] / a["torque"], a["load"], a["speed"]))
+    return {"grid": len(loads) * len(speeds), "steps": len(loads) * len(speeds) * 40, "up": up,
+            "ratio": worst[0], "load": worst[1], "speed": worst[2], "from": temps[0], "to": temps[-1], "step": 2.5}
+
+
+def rig_worst(b):
+    """The largest relative torque difference complete/paper over the rig's conditions at the
+    reference temperature (tests/complete.rs's grid: 25 loads 5–60 kN × 41 speeds up to the
+    stroke's peak): (difference, load, speed, paper's torque, clearance torque)."""
+    peak = b.const("src/validity.rs", "MAX_RIG_ANGULAR_SPEED")
+    rows = []
+    for k in range(25):
+        load = 5e3 * 12.0 ** (k / 24.0)
+        for m in range(41):
+            rows.append((load, 0.0 if m == 0 else peak * 1e-4 ** (1.0 - m / 40.0), 20.0))
+    full, paper = b.sweep(rows), b.sweep(rows, p={"model.paper": True})
+    worst = max((abs(a["torque"] / p["torque"] - 1.0), a["load"], a["speed"]) for a, p in zip(full, paper))
+    return worst
+
+
+def ns_extra(b):
+    return {"warming_steps": lambda: warming_steps(b), "rig_worst": lambda: rig_worst(b)}
+
+
+def _sensitivity():
+    out = {}
+    for m, mk in [(0, "0"), (0.5, "05"), (1, "1"), (2, "2")]:
+        for c in [20, 0, -20, -40, -55]:
+            for side, (load, w) in {"hi": ("kN=20", 3), "lo": ("N=200", 1)}.items():
+                out[f"sens.m{mk}.{c}.{side}"] = (
+                    f"point({load}, w={w}, C={c}, p={{'grease.supply_exponent': {m}}})['friction_coefficient']")
+    return out
+
+
+def _petroff(load, w, c=20):
+    # Petroff's torque 2π η_b |ω| R³ B / c of the default joint at `load`, `w`, `c` °C.
+    return (f"2*pi*point({load}, w={w}, C={c})['inlet_viscosity']*{w}*param('geometry.pin_radius')**3"
+            f"*param('geometry.bush_length')/(param('geometry.bush_radius')-param('geometry.pin_radius'))")
+
+
+T_REF = f"param('lubricant.reference_temperature') - {C0}"
+BREAKAWAY_20KN = "param('friction.boundary_friction_coefficient')*param('geometry.pin_radius')*20e3"
+
+COLD_DAY = {
+    "cold_soak": f"const('src/validity.rs', 'COLD_SOAK') - {C0}",
+    "t_ref": T_REF,
+    "ld": "param('geometry.bush_length')/(2*param('geometry.pin_radius'))",
+    "rho0": "const('src/composite.rs', 'RHO_0')",
+    "rho1": "const('src/composite.rs', 'RHO_1')",
+    "eps_rho0": "1 - const('src/composite.rs', 'RHO_0')",
+    "eps_rho1": "1 - const('src/composite.rs', 'RHO_1')",
+    "rig_w": "max(point(kN=k, w=4.386)['journal_weight'] for k in (5, 20, 60))",
+    "supply_exponent": "param('grease.supply_exponent')",
+    "yield_stress": "param('grease.yield_stress')",
+    "consistency": "param('grease.consistency')",
+    "flow_index": "param('grease.flow_index')",
+    "yield_activation": "param('grease.yield_activation')",
+    "consistency_activation": "param('grease.consistency_activation')",
+    "app_visc_m54": "lib('grease.apparent_viscosity_25.-54C')",
+    **_sensitivity(),
+    # how far m moves μ at 20 kN, against the default m = 1
+    "m_spread": "100*max((max(mu) - min(mu))/mu[2] for mu in [[point(kN=20, w=3, C=c, "
+                "p={'grease.supply_exponent': m})['friction_coefficient'] for m in (0, 0.5, 1, 2)] for c in (0, -20, -40)])",
+    "eta_b_m55": "point(kN=20, w=3, C=-55)['inlet_viscosity']",
+    # What it gives
+    "g200w1.T": "point(N=200, w=1)['torque']",
+    "g200w1.mu": "point(N=200, w=1)['friction_coefficient']",
+    "g200w1.w": "point(N=200, w=1)['journal_weight']",
+    "g200w1.h": "1e6*point(N=200, w=1)['film_thickness']",
+    "g200w1.pT": "point(N=200, w=1, paper=True)['torque']",
+    "g200w1.pmu": "point(N=200, w=1, paper=True)['friction_coefficient']",
+    "g200w3.T": "point(N=200, w=3)['torque']",
+    "g200w3.mu": "point(N=200, w=3)['friction_coefficient']",
+    "g200w3.pT": "point(N=200, w=3, paper=True)['torque']",
+    "g100w1.T": "point(N=100, w=1)['torque']",
+    "g100w1.pT": "point(N=100, w=1, paper=True)['torque']",
+    "g23k.T": "point(kN=23, w=173)['torque']",
+    "g23k.petroff": _petroff("kN=23", 173),
+    "g23k.pT": "point(kN=23, w=173, paper=True)['torque']",
+    "g20k.T": "point(kN=20, w=3)['torque']",
+    "g20k.mu": "point(kN=20, w=3)['friction_coefficient']",
+    "g20k.pT": "point(kN=20, w=3, paper=True)['torque']",
+    "g20k.pmu": "point(kN=20, w=3, paper=True)['friction_coefficient']",
+    "g20km20.T": "point(kN=20, w=3, C=-20)['torque']",
+    "g20km20.mu": "point(kN=20, w=3, C=-20)['friction_coefficient']",
+    "g20km20.pT": "point(kN=20, w=3, C=-20, paper=True)['torque']",
+    "g20km20.pmu": "point(kN=20, w=3, C=-20, paper=True)['friction_coefficient']",
+    "g20km55.T": "point(kN=20, w=3, C=-55)['torque']",
+    "g20km55.mu": "point(kN=20, w=3, C=-55)['friction_coefficient']",
+    "paper_min": f"const('src/params.rs', 'PAPER_MIN_TEMPERATURE') - {C0}",
+    "g200m20.T": "point(N=200, w=1, C=-20)['torque']",
+    "g200m20.mu": "point(N=200, w=1, C=-20)['friction_coefficient']",
+    # The grease's yield torque at rest, 20 kN
+    "yield.20": "point(kN=20, w=0, C=20)['grease_yield_torque']",
+    "yield.m20": "point(kN=20, w=0, C=-20)['grease_yield_torque']",
+    "yield.m54": "point(kN=20, w=0, C=-54)['grease_yield_torque']",
+    "yield.20.pc": f"100*point(kN=20, w=0, C=20)['grease_yield_torque']/({BREAKAWAY_20KN})",
+    "yield.m20.pc": f"100*point(kN=20, w=0, C=-20)['grease_yield_torque']/({BREAKAWAY_20KN})",
+    "yield.m54.pc": f"100*point(kN=20, w=0, C=-54)['grease_yield_torque']/({BREAKAWAY_20KN})",
+    "breakaway": BREAKAWAY_20KN,
+    # Properties checked
+    "service_load_min": "const('src/validity.rs', 'SERVICE_LOAD_MIN')",
+    "service_load_max_MN": "code('tests/complete.rs', r'log_uniform\\(SERVICE_LOAD_MIN, ([\\de.]+)\\)')/1e6",
+    "service_speed_max": "const('src/validity.rs', 'SERVICE_SPEED_MAX')",
+    "service_t_min": f"const('src/validity.rs', 'SERVICE_TEMPERATURE_MIN') - {C0}",
+    "service_t_max": f"const('src/validity.rs', 'SERVICE_TEMPERATURE_MAX') - {C0}",
+    "warm.grid": "warming_steps()['grid']",
+    "warm.from": "warming_steps()['from']",
+    "warm.to": "warming_steps()['to']",
+    "warm.up": "warming_steps()['up']",
+    "warm.steps": "warming_steps()['steps']",
+    "warm.step": "warming_steps()['step']",
+    "warm.ratio": "warming_steps()['ratio']",
+    "warm.load_kN": "warming_steps()['load']/1e3",
+    "warm.speed": "warming_steps()['speed']",
+    "rig.load_lo_kN": "code('src/validity.rs', r'pub const LOAD: Range = Range \\{.*?lo: ([^,]+),')/1e3",
+    "rig.load_hi_kN": "code('src/validity.rs', r'pub const LOAD: Range = Range \\{.*?hi: ([^,]+),')/1e3",
+    "rig.u_max": "code('src/validity.rs', r'pub const SLIDING_SPEED: Range = Range \\{.*?hi: ([^,]+),')",
+    "rig.tolerance_pc": "100*code('tests/complete.rs', r'assert!\\(worst.0 <= ([\\d.]+)')",
+    "rig.worst_pc": "100*rig_worst()[0]",
+    "rig.worst_load_kN": "rig_worst()[1]/1e3",
+    "rig.worst_speed": "rig_worst()[2]",
+    "rig.worst_paper_T": "point(N=rig_worst()[1], w=rig_worst()[2], paper=True)['torque']",
+    "rig.worst_clearance": "point(N=rig_worst()[1], w=rig_worst()[2])['clearance_torque']",
+    "rig.k20_pc": "100*(point(kN=5, w=4.386, p={'grease.consistency': 20})['torque']/point(kN=5, w=4.386, paper=True)['torque'] - 1)",
+    # The paper's model
+    "fixture.rows": "len(column('tests/fixtures/paper_model_main.csv', 'load'))",
+    "fixture.load_lo": "min(column('tests/fixtures/paper_model_main.csv', 'load'))",
+    "fixture.load_hi_MN": "max(column('tests/fixtures/paper_model_main.csv', 'load'))/1e6",
+    "fixture.speed_hi": "max(column('tests/fixtures/paper_model_main.csv', 'speed'))",
+    "fixture.t_lo": f"min(column('tests/fixtures/paper_model_main.csv', 'temperature')) - {C0}",
+    "fixture.t_hi": f"max(column('tests/fixtures/paper_model_main.csv', 'temperature')) - {C0}",
+}
+
+def _range(name, end):
+    return f"code('src/validity.rs', r'pub const {name}: Range = Range \\{{.*?{end}: ([^,]+),')"
+
+
+VALIDITY = {
+    "load_lo_kN": _range("LOAD", "lo") + "/1e3",
+    "load_hi_kN": _range("LOAD", "hi") + "/1e3",
+    "u_lo": _range("SLIDING_SPEED", "lo"),
+    "u_hi": _range("SLIDING_SPEED", "hi"),
+    "w_max": "const('src/validity.rs', 'MAX_RIG_ANGULAR_SPEED')",
+    "pin_mm": "1e3*const('src/validity.rs', 'PAPER_PIN_RADIUS')",
+    "t_lo_K": _range("TEMPERATURE", "lo"),
+    "t_hi_K": _range("TEMPERATURE", "hi"),
+    "t_lo": _range("TEMPERATURE", "lo") + f" - {C0}",
+    "t_hi": _range("TEMPERATURE", "hi") + f" - {C0}",
+    "t_mid": f"({_range('TEMPERATURE', 'lo')} + {_range('TEMPERATURE', 'hi')})/2 - {C0}",
+    "t_half": f"({_range('TEMPERATURE', 'hi')} - {_range('TEMPERATURE', 'lo')})/2",
+    "f_lo": _range("FREQUENCY", "lo"),
+    "f_hi": _range("FREQUENCY", "hi"),
+    "amp_deg": f"degrees(({_range('STROKE_AMPLITUDE', 'lo')} + {_range('STROKE_AMPLITUDE', 'hi')})/2)",
+    "amp_tol": f"({_range('STROKE_AMPLITUDE', 'hi')} - {_range('STROKE_AMPLITUDE', 'lo')})/({_range('STROKE_AMPLITUDE', 'hi')} + {_range('STROKE_AMPLITUDE', 'lo')})",
+    "cold_soak": COLD_DAY["cold_soak"],
+    "cold_soak_K": "const('src/validity.rs', 'COLD_SOAK')",
+    "w12": "radians(12)",
+    "mu12.20": "point(kN=20, w=radians(12), C=20, paper=True)['friction_coefficient']",
+    "paper_min": COLD_DAY["paper_min"],
+    "paper_min_K": "const('src/params.rs', 'PAPER_MIN_TEMPERATURE')",
+    "t_min_K": "const('src/params.rs', 'MIN_TEMPERATURE')",
+    "t_max_K": "const('src/params.rs', 'MAX_TEMPERATURE')",
+    "vr_pinjoint": "code('modelDescription/PinJoint.xml', r'name=\"validity\" valueReference=\"(\\d+)\"')",
+    "vr_rig": "code('modelDescription/PinJointRig.xml', r'name=\"validity\" valueReference=\"(\\d+)\"')",
+    "rpm_max": "const('src/validity.rs', 'MAX_RIG_ANGULAR_SPEED')*60/(2*pi)",
+    "max_temperatures": "code('crates/cli/src/commands/sweep/mod.rs', r'const MAX_TEMPERATURES: usize = (\\d+);')",
+}
+
+PAGES = {
+    "docs/cold-day.md": COLD_DAY,
+    "docs/validity.md": VALIDITY,
+}
