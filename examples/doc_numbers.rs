@@ -113,21 +113,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // The base oil (Roelands' temperature relation with the default lubricant).
     for c in [40.0, 100.0, -54.0, -55.0, -73.0] {
-        out.insert(format!("base_oil.viscosity.{c}C"), base_viscosity(c));
+        out.insert(format!("base_oil.viscosity.{c}"), base_viscosity(c));
     }
 
     // The grease's rheology (the model's law) at the default parameters.
     let keep = |_: &mut Params| {};
     for c in [20.0, 25.0, -54.0] {
-        out.insert(format!("grease.apparent_viscosity_25.{c}C"), rheology(c, &keep).apparent_viscosity(25.0));
+        out.insert(format!("grease.apparent_viscosity.25.{c}"), rheology(c, &keep).apparent_viscosity(25.0));
     }
-    out.insert("grease.yield_stress_ratio.-54C".into(), rheology(-54.0, &keep).yield_stress / rheology(20.0, &keep).yield_stress);
+    out.insert("grease.yield_stress_ratio.-54".into(), rheology(-54.0, &keep).yield_stress / rheology(20.0, &keep).yield_stress);
     // ASTM D1478 translated: the stress at 0.2 and 2 s⁻¹ on the 6204 bearing's pitch radius
     // r = 16.75 mm and width w = 14 mm, T = τ·2π r² w.
     let (r, w) = (16.75e-3, 14e-3);
     for c in [-54.0, -73.0] {
         for rate in [0.2, 2.0] {
-            out.insert(format!("grease.d1478_torque.{c}C.{rate}"), rheology(c, &keep).stress(rate) * 2.0 * PI * r * r * w);
+            out.insert(format!("grease.d1478_torque.{c}/{rate}"), rheology(c, &keep).stress(rate) * 2.0 * PI * r * r * w);
         }
     }
 
@@ -138,16 +138,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         clearance_torque_parts(&rheology(c, edit), 0.1, g.pin_radius, g.bush_length, clearance, 0.98, 0.1)
     };
     for e in [2000.0, 3000.0, 4000.0] {
-        out.insert(format!("clearance.yield.-54C.Ey{e}"), parts(-54.0, &|p: &mut Params| p.grease.yield_activation = e).yield_part);
+        out.insert(format!("clearance.yield.-54.Ey.{e}"), parts(-54.0, &|p: &mut Params| p.grease.yield_activation = e).yield_part);
     }
     for e in [3000.0, 4000.0, 5000.0] {
-        out.insert(format!("clearance.power.-54C.EK{e}"), parts(-54.0, &|p: &mut Params| p.grease.consistency_activation = e).power_law_part);
+        out.insert(format!("clearance.power.-54.EK.{e}"), parts(-54.0, &|p: &mut Params| p.grease.consistency_activation = e).power_law_part);
     }
-    out.insert("clearance.base.-54C".into(), parts(-54.0, &keep).newtonian_part);
+    out.insert("clearance.base.-54".into(), parts(-54.0, &keep).newtonian_part);
     let warm = parts(20.0, &keep);
-    out.insert("clearance.yield.20C".into(), warm.yield_part);
-    out.insert("clearance.power.20C".into(), warm.power_law_part);
-    out.insert("clearance.base.20C".into(), warm.newtonian_part);
+    out.insert("clearance.yield.20".into(), warm.yield_part);
+    out.insert("clearance.power.20".into(), warm.power_law_part);
+    out.insert("clearance.base.20".into(), warm.newtonian_part);
 
     // The 12-point rule for Jₙ against the 600-panel reference: the worst relative error over
     // flow indices and contact arcs, at each ε.

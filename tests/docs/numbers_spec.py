@@ -19,6 +19,8 @@ or Spec(expr, rel=...) for an explicit relative tolerance. Inputs of an operatin
 written as the page writes them (kN=20, w=3, C=-20): the page's untagged numbers of the same
 paragraph that are literals of these expressions are its inputs.
 """
+import re
+
 from tied_numbers import Spec
 
 C0 = "273.15"  # K at 0 °C, for the code's kelvin constants
@@ -96,7 +98,7 @@ COLD_DAY = {
     "flow_index": "param('grease.flow_index')",
     "yield_activation": "param('grease.yield_activation')",
     "consistency_activation": "param('grease.consistency_activation')",
-    "app_visc_m54": "lib('grease.apparent_viscosity_25.-54C')",
+    "app_visc_m54": "lib('grease.apparent_viscosity.25.-54')",
     **_sensitivity(),
     # how far m moves μ at 20 kN, against the default m = 1
     "m_spread": "100*max((max(mu) - min(mu))/mu[2] for mu in [[point(kN=20, w=3, C=c, "
@@ -207,7 +209,96 @@ VALIDITY = {
     "max_temperatures": "code('crates/cli/src/commands/sweep/mod.rs', r'const MAX_TEMPERATURES: usize = (\\d+);')",
 }
 
+RB_EPS = ["0.1", "0.2", "0.4", "0.6", "0.8", "0.9", "0.97"]
+
+
+def _rb(table, eps, col):
+    """Raimondi & Boyd's value in the tests of src/journal/table.rs (col 1 S, 2 φ°, 3 (R/c)f)."""
+    cols = r",\\s*".join(["([\\d.]+)" if i == col else "[\\d.]+" for i in (1, 2, 3)])
+    return f"code('src/journal/table.rs', r'const {table}:.*?\\({re.escape(eps)},\\s*{cols}\\)')"
+
+
+def _rb_worst(table, name, rows, col):
+    """The largest deviation of the model from Raimondi & Boyd over `rows` (S, (R/c)f: %; φ: °)."""
+    key = {1: "S", 2: "phi_deg", 3: "f"}[col]
+    terms = [f"lib('journal.{name}.{key}.{e}')" for e in rows]
+    refs = [_rb(table, e, col) for e in rows]
+    if col == 2:
+        return "max(" + ", ".join(f"abs({t} - {r})" for t, r in zip(terms, refs)) + ")"
+    return "100*max(" + ", ".join(f"abs({t}/{r} - 1)" for t, r in zip(terms, refs)) + ")"
+
+
+GCM_PER_NM = "1e7/9.80665"  # g·cm per N·m (1 gf = 9.80665e-3 N)
+
+JOURNAL_BEARING = {
+    "nodes": "code('src/journal/table.rs', r'pub const NODES: usize = (\\d+);')",
+    "eps_first": "1/(1 + exp(const('src/journal/table.rs', 'LOGIT_END')))",
+    "eps_last": "1/(1 + exp(-const('src/journal/table.rs', 'LOGIT_END')))",
+    "grid_theta": "code('src/journal/reynolds.rs', r'const TABLE: Grid = Grid \\{ n_theta: (\\d+)')",
+    "grid_zeta": "code('src/journal/reynolds.rs', r'const TABLE: Grid = Grid \\{[^}]*n_zeta: (\\d+)')",
+    "ld_min_inv": "1/const('src/journal/table.rs', 'LD_MIN')",
+    "ld_max": "const('src/journal/table.rs', 'LD_MAX')",
+    "ld_max_gap": "100*abs(lib('journal.ld_max.S.0.1')/lib('journal.long.S.0.1') - 1)",
+    **{f"rb.{k}.{e}": _rb("RB_LD1", e, c) for e in RB_EPS for k, c in (("S", 1), ("phi", 2), ("f", 3))},
+    **{f"m.S.{e}": f"lib('journal.ld1.S.{e}')" for e in RB_EPS},
+    **{f"m.phi.{e}": f"lib('journal.ld1.phi_deg.{e}')" for e in RB_EPS},
+    **{f"m.f.{e}": f"lib('journal.ld1.f.{e}')" for e in RB_EPS},
+    "rb1.S": _rb_worst("RB_LD1", "ld1", RB_EPS, 1),
+    "rb1.phi": _rb_worst("RB_LD1", "ld1", RB_EPS, 2),
+    "rb1.f": _rb_worst("RB_LD1", "ld1", RB_EPS, 3),
+    "rb24.S": f"max({_rb_worst('RB_LD_HALF', 'ld_half', RB_EPS[:6], 1)}, {_rb_worst('RB_LD_QUARTER', 'ld_quarter', RB_EPS[:6], 1)})",
+    "rb24.phi": f"max({_rb_worst('RB_LD_HALF', 'ld_half', RB_EPS[:6], 2)}, {_rb_worst('RB_LD_QUARTER', 'ld_quarter', RB_EPS[:6], 2)})",
+    "rb24.f": f"max({_rb_worst('RB_LD_HALF', 'ld_half', RB_EPS[:6], 3)}, {_rb_worst('RB_LD_QUARTER', 'ld_quarter', RB_EPS[:6], 3)})",
+    "long.S": "lib('journal.long.S.0.1')",
+    "long.phi": "lib('journal.long.phi_deg.0.1')",
+    "grid_conv": "100*code('src/journal/table.rs', r'assert!\\(\\(s1.sommerfeld / s4.sommerfeld - 1.0\\).abs\\(\\) < ([\\d.]+)')",
+    "gauss_nodes": "code('src/clearance/integrals.rs', r'const GAUSS12: \\[\\(f64, f64\\); (\\d+)\\]')",
+    "rule.0.9": Spec("max(lib('clearance.rule_error.0.3'), lib('clearance.rule_error.0.9'))", upper=True),
+    "rule.0.99": Spec("lib('clearance.rule_error.0.99')", upper=True),
+    "rule.0.999": Spec("lib('clearance.rule_error.0.999')", upper=True),
+    "rule.0.9999": Spec("lib('clearance.rule_error.0.9999')", upper=True),
+    "t_ref": T_REF,
+    "yield_stress": COLD_DAY["yield_stress"],
+    "consistency": COLD_DAY["consistency"],
+    "flow_index": COLD_DAY["flow_index"],
+    "yield_activation": COLD_DAY["yield_activation"],
+    "consistency_activation": COLD_DAY["consistency_activation"],
+    "supply_exponent": COLD_DAY["supply_exponent"],
+    "app_visc_20": Spec("lib('grease.apparent_viscosity.25.20')", rel=0.1),
+    "app_visc_m54": COLD_DAY["app_visc_m54"],
+    "rig.tolerance_pc": COLD_DAY["rig.tolerance_pc"],
+    "rig.k20_pc": COLD_DAY["rig.k20_pc"],
+    "ty_ratio": "lib('grease.yield_stress_ratio.-54')",
+    "d1478.54.lo": "lib('grease.d1478_torque.-54/0.2')",
+    "d1478.54.hi": "lib('grease.d1478_torque.-54/2')",
+    "d1478.73.lo": "lib('grease.d1478_torque.-73/0.2')",
+    "d1478.73.hi": "lib('grease.d1478_torque.-73/2')",
+    "d1478.54.lo.gcm": Spec(f"lib('grease.d1478_torque.-54/0.2')*{GCM_PER_NM}", sig=2),
+    "d1478.54.hi.gcm": Spec(f"lib('grease.d1478_torque.-54/2')*{GCM_PER_NM}", sig=2),
+    "d1478.73.lo.gcm": Spec(f"lib('grease.d1478_torque.-73/0.2')*{GCM_PER_NM}", sig=2),
+    "d1478.73.hi.gcm": Spec(f"lib('grease.d1478_torque.-73/2')*{GCM_PER_NM}", sig=3),
+    "eta.40": "1e3*lib('base_oil.viscosity.40')",
+    "eta.100": "1e3*lib('base_oil.viscosity.100')",
+    "eta.m54": "lib('base_oil.viscosity.-54')",
+    "eta.m73": "1e-3*lib('base_oil.viscosity.-73')",
+    **{f"cl.y.{e}": f"lib('clearance.yield.-54.Ey.{e}')" for e in (2000, 3000, 4000)},
+    **{f"cl.p.{e}": f"lib('clearance.power.-54.EK.{e}')" for e in (3000, 4000, 5000)},
+    "cl.b.m54": "lib('clearance.base.-54')",
+    "cl.y.20": "lib('clearance.yield.20')",
+    "cl.p.20": "lib('clearance.power.20')",
+    "cl.b.20": "lib('clearance.base.20')",
+    "joint_T_20kN": "point(kN=20, w=0.1/param('geometry.pin_radius'))['torque']",
+    "cl.share.20": Spec("100*(lib('clearance.yield.20') + lib('clearance.power.20') + lib('clearance.base.20'))"
+                        "/point(kN=20, w=0.1/param('geometry.pin_radius'))['torque']", upper=True),
+    "tab.near": "lib('clearance.table_error.near')",
+    "tab.mid": "lib('clearance.table_error.to_0.99999')",
+    "tab.beyond": "lib('clearance.table_error.beyond')",
+    "tab.gap": "(1 - 0.99999)*1e6*(param('geometry.bush_radius') - param('geometry.pin_radius'))",
+    "clearance_um": "1e6*(param('geometry.bush_radius') - param('geometry.pin_radius'))",
+}
+
 PAGES = {
     "docs/cold-day.md": COLD_DAY,
     "docs/validity.md": VALIDITY,
+    "docs/journal-bearing.md": JOURNAL_BEARING,
 }

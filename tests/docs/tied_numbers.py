@@ -45,8 +45,8 @@ CITATION = re.compile(
     r"|\((?:1[89]|20)\d\d[,)]"
     r"|,\s*(?:1[89]|20)\d\d\)"
     r"|\bFMI \d\.\d(?:\s*(?:and|or|/)\s*\d\.\d)?"
-    # formula constants: 1 − x, 1/T, x/2
-    r"|(?<![\w.])1(?=\s*[−-]\s*[^\s\d])|(?<![\w.])1(?=/[^\d\s])|(?<=[^\s\d(]/)\d+(?![\w.])"
+    # formula constants: 1 − x, 1 + x, 1/T, 2/x, x/2
+    r"|(?<![\w.])1(?=\s*[−+-]\s*[^\s\d])|(?<![\w.])\d(?=/[^\d\s])|(?<=[^\s\d(]/)\d+(?![\w.])"
 )
 
 
@@ -68,9 +68,21 @@ def significant(text):
     return max(1, len(digits))
 
 
-def formatted(value, quoted):
-    """`value` written as `quoted` is: the same significant digits, notation and minus sign."""
+def formatted(value, quoted, spec=None):
+    """`value` written as `quoted` is: the same significant digits, notation and minus sign
+    (an upper bound rounded up, a `sig` number to its significant digits)."""
     minus = "−" if "−" in quoted else "-"
+    if spec is not None and spec.upper:
+        # the next 1, 2 or 5 times a power of ten above value, in the quoted notation
+        e = math.floor(math.log10(value)) if value > 0 else 0
+        m = next(k for k in (1, 2, 5, 10) if k * 10.0 ** e >= value)
+        bound = m * 10.0 ** e
+        if "e" in quoted or bound < 1e-3:
+            return f"{bound:.0e}".replace("e-0", "e-").replace("e+0", "e").replace("e+", "e")
+        return f"{bound:g}"
+    if spec is not None and spec.sig is not None and "e" not in quoted and abs(value) >= 10 ** (spec.sig - 1):
+        step = 10.0 ** (math.floor(math.log10(abs(value))) - spec.sig + 1)
+        return f"{round(value / step) * step:.0f}".replace("-", minus)
     if "e" in quoted:
         decimals = len(quoted.partition("e")[0].partition(".")[2])
         m, _, e = f"{value:.{decimals}e}".partition("e")
@@ -226,8 +238,10 @@ def rust_value(expr, text):
 class Spec:
     """One tied number's definition: an expression and, optionally, a relative tolerance."""
 
-    def __init__(self, expr, rel=None):
-        self.expr, self.rel = expr, rel
+    def __init__(self, expr, rel=None, sig=None, upper=False):
+        """`rel`: a relative tolerance; `sig`: the quoted number carries `sig` significant
+        digits (1900 as 2: ±50); `upper`: the quoted number is an upper bound ("below 1e-9")."""
+        self.expr, self.rel, self.sig, self.upper = expr, rel, sig, upper
 
 
 def spec_of(value):
@@ -235,7 +249,7 @@ def spec_of(value):
 
 
 def literals(expr):
-    return {to_float(m.group(0)) for m in re.finditer(r"(?<![\w.\"'])-?\d+(?:\.\d+)?(?:e-?\d+)?(?![\w\"'])", expr)}
+    return {to_float(m.group(0)) for m in re.finditer(r"(?<![\w])-?\d+(?:\.\d+)?(?:e-?\d+)?(?![\w])", expr)}
 
 
 def paragraphs(lines):
@@ -287,7 +301,7 @@ def shown(commands, most=3):
     return "; ".join(unique[:most]) + more
 
 
-def check_page(root, rel, spec, binary=None, update=False):
+def check_page(root, rel, spec, binary=None, update=False, log=print):
     """Problems of one page; with `binary`, every tied number compared with (or, `update`,
     rewritten from) its computed value. Returns (problems, count of tied numbers, new text)."""
     page = Path(root) / rel
@@ -337,14 +351,23 @@ def check_page(root, rel, spec, binary=None, update=False):
             continue
         value, commands, s = values[tid]
         q = to_float(quoted)
-        tol = abs(value) * s.rel if s.rel is not None else quoted_step(quoted) * (1 + 1e-9) + 1e-300
-        if abs(q - value) <= tol:
+        if s.upper:
+            ok = value <= q * (1 + 1e-12)
+        else:
+            if s.rel is not None:
+                tol = abs(value) * s.rel
+            elif s.sig is not None:
+                tol = 0.5 * 10.0 ** (math.floor(math.log10(abs(q))) - s.sig + 1) if q else 0.0
+            else:
+                tol = quoted_step(quoted)
+            ok = abs(q - value) <= tol * (1 + 1e-9) + 1e-300
+        if ok:
             continue
         if update:
-            new = formatted(value, quoted)
+            new = formatted(value, quoted, s)
             line = new_lines[n]
             new_lines[n] = line[:col] + new + line[col + len(quoted):]
-            print(f"{rel}:{n + 1}: {quoted} -> {new} ({tid})")
+            log(f"{rel}:{n + 1}: {quoted} -> {new} ({tid})")
         else:
             problems.append(f"{rel}:{n + 1}: {quoted} quoted, {value:.6g} computed ({tid} = {s.expr}; "
                             f"from {shown(commands)})")
