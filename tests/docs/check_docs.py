@@ -4,6 +4,8 @@
     python3 tests/docs/check_docs.py            links, anchors, quoted numbers (no build needed)
     python3 tests/docs/check_docs.py --run      the same, and every example marked runnable
     python3 tests/docs/check_docs.py --api-docs every crate's API front page in target/doc
+    python3 tests/docs/check_docs.py --numbers  the tied numbers against the built binary
+    python3 tests/docs/check_docs.py --update-numbers  rewrite the tied numbers from it
 
 Checks:
 - every relative link and image (`[text](path#anchor)`) resolves to a file or folder of the
@@ -18,7 +20,12 @@ Checks:
   harness's (`.venv` or $PINJOINT_VENV, as tests/python/run.sh) when they import `fmpy`;
 - every number in a block between `<!-- numbers from FILE: ... -->` and
   `<!-- end of numbers from FILE -->` is a number that FILE (a generated file, e.g.
-  BENCHMARKS.md) contains.
+  BENCHMARKS.md) contains;
+- every number of the pages of numbers_spec.PAGES (docs/cold-day.md, journal-bearing.md,
+  validity.md) is tied to the built binary by a tag `<!--=ID-->`, an input of a tied one,
+  a citation or marked as not a model output (tied_numbers.py); with --run or --numbers each
+  tied number is computed (`target/release/pinjoint`, `target/release/examples/doc_numbers`)
+  and compared to the rounding of its quoted digits; --update-numbers rewrites them in place.
 
 The self-test (always run first) feeds each check a broken page and requires it to fail.
 Exit status 1 with one line per problem.

@@ -214,7 +214,7 @@ RB_EPS = ["0.1", "0.2", "0.4", "0.6", "0.8", "0.9", "0.97"]
 
 def _rb(table, eps, col):
     """Raimondi & Boyd's value in the tests of src/journal/table.rs (col 1 S, 2 φ°, 3 (R/c)f)."""
-    cols = r",\\s*".join(["([\\d.]+)" if i == col else "[\\d.]+" for i in (1, 2, 3)])
+    cols = ",\\s*".join(["([\\d.]+)" if i == col else "[\\d.]+" for i in (1, 2, 3)])
     return f"code('src/journal/table.rs', r'const {table}:.*?\\({re.escape(eps)},\\s*{cols}\\)')"
 
 
@@ -228,7 +228,7 @@ def _rb_worst(table, name, rows, col):
     return "100*max(" + ", ".join(f"abs({t}/{r} - 1)" for t, r in zip(terms, refs)) + ")"
 
 
-GCM_PER_NM = "1e7/9.80665"  # g·cm per N·m (1 gf = 9.80665e-3 N)
+GCM_PER_NM = "1e5/9.80665"  # g·cm per N·m (1 gf·cm = 9.80665e-5 N·m)
 
 JOURNAL_BEARING = {
     "nodes": "code('src/journal/table.rs', r'pub const NODES: usize = (\\d+);')",
@@ -288,8 +288,8 @@ JOURNAL_BEARING = {
     "cl.p.20": "lib('clearance.power.20')",
     "cl.b.20": "lib('clearance.base.20')",
     "joint_T_20kN": "point(kN=20, w=0.1/param('geometry.pin_radius'))['torque']",
-    "cl.share.20": Spec("100*(lib('clearance.yield.20') + lib('clearance.power.20') + lib('clearance.base.20'))"
-                        "/point(kN=20, w=0.1/param('geometry.pin_radius'))['torque']", upper=True),
+    "cl.share.20": "100*(lib('clearance.yield.20') + lib('clearance.power.20') + lib('clearance.base.20'))"
+                   "/point(kN=20, w=0.1/param('geometry.pin_radius'))['torque']",
     "tab.near": "lib('clearance.table_error.near')",
     "tab.mid": "lib('clearance.table_error.to_0.99999')",
     "tab.beyond": "lib('clearance.table_error.beyond')",
