@@ -352,7 +352,8 @@ def self_test_tied_numbers():
     page = ("# P\n\nAt 200 N, 1 rad/s: 0.231<!--=t--> N·m, μ = 0.039<!--=mu-->, 5.0e-4<!--=small-->.\n\n"
             "A stray 7.5 here, and an unknown 3<!--=nowhere-->; eq. 12, section 4.4, Smith (1999), 1 − ε.\n\n"
             "<!-- unchecked: literature -->\nRaimondi & Boyd give 1.33.\n<!-- end unchecked -->\n"
-            "Bound: below 1e-3<!--=bound-->; 20<!--~def--> °C.\n")
+            "Bound: below 1e-3<!--=bound-->; 20<!--~def--> °C.\n\n"
+            "<!-- numbers from GEN.md: checked there -->\n| 9.9 |\n<!-- end of numbers from GEN.md -->\n")
     spec = {"t": "point(N=200, w=1)['torque']", "mu": "point(N=200, w=1)['mu']", "unused": "1",
             "small": "point(N=200, w=1)['mu']/78.4", "bound": tn.Spec("point(N=200, w=1)['mu']/10", upper=True)}
     with tempfile.TemporaryDirectory() as tmp:

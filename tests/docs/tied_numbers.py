@@ -14,8 +14,13 @@ A page listed in numbers_spec.PAGES quotes every number in one of three ways:
 - **an input**: the number is a literal of a tied expression of the same paragraph or
   table (`point(kN=20, w=3, C=-20)` makes 20, 3 and −20 inputs there);
 - **unchecked**, with a reason: between `<!-- unchecked: REASON -->` and
-  `<!-- end unchecked -->` (literature values, standards' limits, measured times), or a
-  citation (`eq. 12`, `section 4.4`, `Figure 9`, `Table 1`, a year, a standard's name).
+  `<!-- end unchecked -->` (literature values, standards' limits, measured times), marked
+  right after it (`<!--~lit-->` literature, `<!--~std-->` a standard, `<!--~def-->` a
+  definition, `<!--~measured-->`, `<!--~was-->` a past release's output), a citation (`eq. 12`,
+  `section 4.4`, `Figure 9`, `Table 1`, a year, a standard's name) or a formula's constant
+  (`1 − ε`, `1/T`, `ε/2`);
+- **quoted from a file**: between check_docs.py's `<!-- numbers from FILE -->` markers
+  (checked there against FILE).
 
 Any other number on such a page is a problem (`page:line: N is neither tied nor marked`).
 """
@@ -35,6 +40,9 @@ MARKED = re.compile(r"(?<![\w.])[-−]?\d+(?:\.\d+)?(?:e[-−+]?\d+)?<!--~(\w+)-
 TIED = re.compile(r"((?<![\w.])[-−]?\d+(?:\.\d+)?(?:e[-−+]?\d+)?)<!--=([A-Za-z0-9_.-]+)-->")
 UNCHECKED_BEGIN = re.compile(r"<!-- unchecked: ([^>]+?) -->")
 UNCHECKED_END = "<!-- end unchecked -->"
+# check_docs.py's own quoted blocks: their numbers are checked against FILE there
+QUOTED_BEGIN = re.compile(r"<!-- numbers from [^\s:]+")
+QUOTED_END = "<!-- end of numbers from "
 COMMENT = re.compile(r"<!--.*?-->")
 # Citations: their numbers are names, not quantities.
 CITATION = re.compile(
@@ -279,10 +287,10 @@ def scan(page_text):
             continue
         for m in TIED.finditer(line):
             tags.append((n, m.start(1), m.group(1), m.group(2)))
-        if UNCHECKED_BEGIN.search(line):
+        if UNCHECKED_BEGIN.search(line) or QUOTED_BEGIN.search(line):
             unchecked = True
         if unchecked:
-            if UNCHECKED_END in line:
+            if UNCHECKED_END in line or QUOTED_END in line:
                 unchecked = False
             continue
         bare = MARKED.sub(" ", TIED.sub(" ", line))
