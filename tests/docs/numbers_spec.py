@@ -10,7 +10,8 @@ rewrites the pages from them):
 - sweep([(load N, speed rad/s, C °C), ...], p=...) → the rows of `pinjoint sweep`;
 - param("grease.yield_stress") → a default of `pinjoint params`;
 - lib("journal.ld1.S.0.1") → a number of `target/release/examples/doc_numbers`;
-- code(path, regex) → a constant of the source (group 1, a Rust literal expression);
+- code(path, regex) → a constant of the source (group 1, a Rust constant expression: literals,
+  arithmetic, PI and the file's other `const NAME: f64`); const(path, NAME) → `const NAME: f64`;
 - column(path, name) → a column of a CSV file of the repository (a test fixture);
 - the functions of HELPERS below, and math's.
 

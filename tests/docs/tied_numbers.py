@@ -190,6 +190,8 @@ class Binary:
                                "cargo build --release -p pinjoint --example doc_numbers")
         out = json.loads(self._run([str(exe)], "target/release/examples/doc_numbers"))
         self.commands[-1] = f"target/release/examples/doc_numbers: {key}"
+        if key not in out:
+            raise RuntimeError(f"target/release/examples/doc_numbers prints no {key!r} (examples/doc_numbers.rs)")
         return out[key]
 
     def code(self, path, pattern):
