@@ -61,8 +61,30 @@ def rig_worst(b):
     return worst
 
 
+def rb_through_joint(b):
+    """Raimondi & Boyd's L/D = 1 rows (tests/complete.rs's table) through the whole joint: the
+    base oil alone, B = 2R, the load that gives their S at 3, 30 and 150 rad/s; the largest
+    relative deviation of μ·R/c from their (R/c)f (%) where the joint is in full film (w = 1,
+    λ ≥ 3), and the smallest and largest ε of the rows."""
+    text = (b.root / "tests/complete.rs").read_text(encoding="utf-8")
+    m = re.search(r"const RAIMONDI_BOYD_LD1: \[\(f64, f64, f64\); \d+\] = \[(.*?)\];", text, re.S)
+    rows = [tuple(float(x) for x in r) for r in re.findall(r"\(([\d.]+), ([\d.]+), ([\d.]+)\)", m.group(1))]
+    r, rb = b.param("geometry.pin_radius"), b.param("geometry.bush_radius")
+    c, eta, length = rb - r, b.param("lubricant.viscosity"), 2 * b.param("geometry.pin_radius")
+    p = {"grease.enabled": False, "geometry.bush_length": length}
+    worst = 0.0
+    for eps, s, f in rows:
+        for w in (3.0, 30.0, 150.0):
+            load = eta * w / (2 * 3.141592653589793 * s) * (r / c) ** 2 * 2 * r * length
+            op = b.point(N=load, w=w, p=p)
+            if op["journal_weight"] >= 1.0 and op["lambda_ratio"] >= 3.0:
+                worst = max(worst, abs(op["friction_coefficient"] * r / c / f - 1))
+    return {"worst_pc": 100 * worst, "eps_lo": min(e for e, _, _ in rows), "eps_hi": max(e for e, _, _ in rows)}
+
+
 def ns_extra(b):
-    return {"warming_steps": lambda: warming_steps(b), "rig_worst": lambda: rig_worst(b)}
+    return {"warming_steps": lambda: warming_steps(b), "rig_worst": lambda: rig_worst(b),
+            "rb_through_joint": lambda: rb_through_joint(b)}
 
 
 def _sensitivity():
@@ -100,6 +122,9 @@ COLD_DAY = {
     "yield_activation": "param('grease.yield_activation')",
     "consistency_activation": "param('grease.consistency_activation')",
     "app_visc_m54": "lib('grease.apparent_viscosity.25.-54')",
+    "rb_joint.eps_lo": "rb_through_joint()['eps_lo']",
+    "rb_joint.eps_hi": "rb_through_joint()['eps_hi']",
+    "rb_joint.worst": Spec("rb_through_joint()['worst_pc']", upper=True),
     **_sensitivity(),
     # how far m moves μ at 20 kN, against the default m = 1
     "m_spread": "100*max((max(mu) - min(mu))/mu[2] for mu in [[point(kN=20, w=3, C=c, "

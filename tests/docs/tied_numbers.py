@@ -112,7 +112,7 @@ class Binary:
     """The built project's answers, each command run once per check."""
 
     def __init__(self, root):
-        self.root = Path(root)
+        self.root = Path(root).resolve()
         self.exe = self.root / "target/release/pinjoint"
         self.cache = {}
         self.commands = []  # the commands the expression being evaluated ran
