@@ -7,7 +7,7 @@
 //! ```
 //!
 //! Every number comes from the library's own functions at the default parameters (the paper's
-//! joint): the finite journal bearing's table (Raimondi & Boyd's L/D = 1 comparison), the
+//! joint): the joint's load capacity, the finite journal bearing's table (Raimondi & Boyd's L/D = 1 comparison), the
 //! infinitely long bearing, the grease's rheology (`pinjoint::composite::rheology`, the model's
 //! own law) with the base oil of Roelands' temperature relation, the clearance's torque and
 //! its quadrature against a high-order reference.
@@ -90,6 +90,9 @@ fn reference_integral(eps: f64, theta_c: f64, n: f64, rule: &(Vec<f64>, Vec<f64>
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut out = BTreeMap::<String, f64>::new();
     let defaults = Params::default();
+
+    // The asperity model's limit: the load at which eq. 19's rest film reaches zero.
+    out.insert("joint.capacity".into(), pinjoint::Joint::new(&defaults)?.capacity());
 
     // The finite journal bearing at L/D = 1 against Raimondi & Boyd's rows.
     let ld1 = JournalTable::build(1.0)?;
