@@ -46,7 +46,7 @@ QUOTED_END = "<!-- end of numbers from "
 COMMENT = re.compile(r"<!--.*?-->")
 # Citations: their numbers are names, not quantities.
 CITATION = re.compile(
-    r"\beqs?\.\s*\d+(?:(?:,\s*|\s*(?:and|–|-)\s*)\d+)*"
+    r"\b[Ee]qs?\.\s*\d+(?:(?:,\s*|\s*(?:and|–|-)\s*)\d+)*"
     r"|\b(?:[Ss]ections?|Figures?|Fig\.|Tables?|[Ii]ssues?)\s+\d+(?:\.\d+)*(?:(?:,\s*|\s*(?:and|–|-)\s*)\d+(?:\.\d+)*)*"
     r"|\b(?:MIL-PRF|FED-STD|ASTM D|ISO VG|NLGI|Method|Type)[- ]?\d+[A-Z]?(?:[–-]\d+)?"
     r"|\b[A-Z][\w'’-]+(?:,? (?:et al\.|& [A-Z][\w'’-]+|and [A-Z][\w'’-]+))?,? \(?(?:1[89]|20)\d\d\b"
