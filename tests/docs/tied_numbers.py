@@ -29,8 +29,27 @@ import math
 import re
 import subprocess
 import tempfile
-import tomllib
 from pathlib import Path
+
+try:
+    import tomllib
+except ImportError:  # Python < 3.11: `pinjoint params` is flat enough to read by hand
+    tomllib = None
+
+
+def read_params(text):
+    """The sections of a `pinjoint params` file as nested dicts (numbers, booleans)."""
+    if tomllib is not None:
+        return tomllib.loads(text)
+    out, section = {}, {}
+    for line in text.splitlines():
+        line = line.split("#", 1)[0].strip()
+        if line.startswith("[") and line.endswith("]"):
+            section = out.setdefault(line[1:-1], {})
+        elif "=" in line:
+            key, value = (x.strip() for x in line.split("=", 1))
+            section[key] = {"true": True, "false": False}.get(value) if value in ("true", "false") else float(value)
+    return out
 
 TAG = re.compile(r"<!--=([A-Za-z0-9_.-]+)-->")
 # A number as the pages write it: a minus (ASCII or U+2212), digits, a decimal part, an
@@ -177,7 +196,7 @@ class Binary:
 
     def param(self, key):
         """A value of `pinjoint params` (the defaults), by its dotted key."""
-        node = tomllib.loads(self._run([str(self.exe), "params"], "pinjoint params"))
+        node = read_params(self._run([str(self.exe), "params"], "pinjoint params"))
         for part in key.split("."):
             node = node[part]
         return float(node)
