@@ -352,21 +352,23 @@ def self_test_tied_numbers():
     page = ("# P\n\nAt 200 N, 1 rad/s: 0.231<!--=t--> N·m, μ = 0.039<!--=mu-->, 5.0e-4<!--=small-->.\n\n"
             "A stray 7.5 here, and an unknown 3<!--=nowhere-->; eq. 12, section 4.4, Smith (1999), 1 − ε.\n\n"
             "<!-- unchecked: literature -->\nRaimondi & Boyd give 1.33.\n<!-- end unchecked -->\n"
-            "Bound: below 1e-3<!--=bound-->; 20<!--~def--> °C.\n\n"
+            "Bound: below 1e-3<!--=bound-->; 20<!--~def--> °C; w = 0<!--=w-->.\n\n"
             "<!-- numbers from GEN.md: checked there -->\n| 9.9 |\n<!-- end of numbers from GEN.md -->\n")
     spec = {"t": "point(N=200, w=1)['torque']", "mu": "point(N=200, w=1)['mu']", "unused": "1",
-            "small": "point(N=200, w=1)['mu']/78.4", "bound": tn.Spec("point(N=200, w=1)['mu']/10", upper=True)}
+            "small": "point(N=200, w=1)['mu']/78.4", "bound": tn.Spec("point(N=200, w=1)['mu']/10", upper=True),
+            "w": tn.Spec("point(N=200, w=1)['mu']/100", exact=True)}
     with tempfile.TemporaryDirectory() as tmp:
         root = Path(tmp)
         (root / "p.md").write_text(page, encoding="utf-8")
         got, n, _ = tn.check_page(root, "p.md", spec, Stub())
         expected = ["p.md:3: 0.231 quoted, 0.21966 computed (t = point(N=200, w=1)['torque']; from pinjoint point --load 200 --speed 1)",
                     "p.md:5: 7.5 is neither tied", "p.md:5: 3<!--=nowhere--> has no definition",
-                    "p.md: tests/docs/numbers_spec.py defines unused", "p.md:10: 1e-3 quoted, 0.00392262 computed"]
+                    "p.md: tests/docs/numbers_spec.py defines unused", "p.md:10: 1e-3 quoted, 0.00392262 computed",
+                    "p.md:10: 0 quoted, 0.000392262 computed"]
         missing = [e for e in expected if not any(g.startswith(e) for g in got)]
-        assert not missing and len(got) == len(expected) and n == 5, f"self-test (tied numbers): missing {missing}, got {got}"
+        assert not missing and len(got) == len(expected) and n == 6, f"self-test (tied numbers): missing {missing}, got {got}"
         _, _, new = tn.check_page(root, "p.md", spec, Stub(), update=True, log=lambda _: None)
-        assert "0.220<!--=t-->" in new and "0.039<!--=mu-->" in new and "5.0e-4<!--=small-->" in new and "5e-3<!--=bound-->" in new, new
+        assert "0.220<!--=t-->" in new and "0.039<!--=mu-->" in new and "5.0e-4<!--=small-->" in new and "5e-3<!--=bound-->" in new and "0.000392262<!--=w-->" in new, new
         (root / "p.md").write_text(new, encoding="utf-8")
         got, _, _ = tn.check_page(root, "p.md", spec, Stub())
         assert all(("7.5" in g or "nowhere" in g or "unused" in g) for g in got), f"self-test (tied numbers) after update: {got}"

@@ -99,6 +99,8 @@ def formatted(value, quoted, spec=None):
     """`value` written as `quoted` is: the same significant digits, notation and minus sign
     (an upper bound rounded up, a `sig` number to its significant digits)."""
     minus = "−" if "−" in quoted else "-"
+    if spec is not None and spec.exact:
+        return f"{value:.12g}".replace("-", minus)
     if spec is not None and spec.upper:
         # the next 1, 2 or 5 times a power of ten above value, in the quoted notation
         e = math.floor(math.log10(value)) if value > 0 else 0
@@ -267,10 +269,12 @@ def rust_value(expr, text):
 class Spec:
     """One tied number's definition: an expression and, optionally, a relative tolerance."""
 
-    def __init__(self, expr, rel=None, sig=None, upper=False):
+    def __init__(self, expr, rel=None, sig=None, upper=False, exact=False):
         """`rel`: a relative tolerance; `sig`: the quoted number carries `sig` significant
-        digits (1900 as 2: ±50); `upper`: the quoted number is an upper bound ("below 1e-9")."""
-        self.expr, self.rel, self.sig, self.upper = expr, rel, sig, upper
+        digits (1900 as 2: ±50); `upper`: the quoted number is an upper bound ("below 1e-9");
+        `exact`: the quoted number is the value itself (a parameter's default, a constant of
+        the code, a claim such as w = 0), to 1e-12 relative."""
+        self.expr, self.rel, self.sig, self.upper, self.exact = expr, rel, sig, upper, exact
 
 
 def spec_of(value):
@@ -382,6 +386,8 @@ def check_page(root, rel, spec, binary=None, update=False, log=print):
         q = to_float(quoted)
         if s.upper:
             ok = value <= q * (1 + 1e-12)
+        elif s.exact:
+            ok = abs(q - value) <= 1e-12 * max(abs(q), abs(value), 1e-300)
         else:
             if s.rel is not None:
                 tol = abs(value) * s.rel
