@@ -1,6 +1,6 @@
 """Numbers of the manual tied to the built binary (check_docs.py's tied-number check).
 
-A page listed in numbers_spec.PAGES quotes every number in one of three ways:
+A page listed in numbers_spec.PAGES quotes every number in one of these ways:
 
 - **tied**: the number is followed at once by a tag `<!--=ID-->` (invisible when rendered),
   and numbers_spec.PAGES[page][ID] is a Python expression that computes it from the built
@@ -11,8 +11,9 @@ A page listed in numbers_spec.PAGES quotes every number in one of three ways:
   quoted digits (half a unit of its last digit), or to the spec's own tolerance.
   `--update-numbers` rewrites every tied number in place from the binary, keeping its
   number of significant digits (or its notation: `1.5e-4`, `−20`) and the prose around it.
-- **an input**: the number is a literal of a tied expression of the same paragraph or
-  table (`point(kN=20, w=3, C=-20)` makes 20, 3 and −20 inputs there);
+- **an input**: the number is a literal of a tied expression of the same paragraph (or
+  table) or of the paragraphs just before and after it (`point(kN=20, w=3, C=-20)` makes 20,
+  3 and −20 inputs there);
 - **unchecked**, with a reason: between `<!-- unchecked: REASON -->` and
   `<!-- end unchecked -->` (literature values, standards' limits, measured times), marked
   right after it (`<!--~lit-->` literature, `<!--~std-->` a standard, `<!--~def-->` a
@@ -51,7 +52,7 @@ def read_params(text):
             section[key] = {"true": True, "false": False}.get(value) if value in ("true", "false") else float(value)
     return out
 
-TAG = re.compile(r"<!--=([A-Za-z0-9_.-]+)-->")
+
 # A number as the pages write it: a minus (ASCII or U+2212), digits, a decimal part, an
 # exponent. Not inside a word (x1, h_13, D1478), not after a decimal point.
 NUMBER = re.compile(r"(?<![\w.])[-−]?\d+(?:\.\d+)?(?:e[-−+]?\d+)?(?![\w])")
