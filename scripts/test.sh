@@ -49,8 +49,11 @@ step "fmpy harness"
 PINJOINT_KEEP_FMUS=1 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
 
 # --- the docs: every relative link and anchor of README.md and docs/*.md resolves, every
-# example marked <!-- runnable --> runs on what the steps above built, quoted numbers match
+# example marked <!-- runnable --> runs on what the steps above built, quoted numbers match;
+# the numbers of docs/cold-day.md, journal-bearing.md and validity.md against the built
+# `pinjoint` and examples/doc_numbers (tests/docs/numbers_spec.py)
 step "docs"
+cargo build --locked --release -p pinjoint --example doc_numbers
 python3 tests/docs/check_docs.py --run
 
 # --- the SciPy reference of `pinjoint bench` against the check values of docs/model.md, and

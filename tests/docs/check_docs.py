@@ -4,6 +4,8 @@
     python3 tests/docs/check_docs.py            links, anchors, quoted numbers (no build needed)
     python3 tests/docs/check_docs.py --run      the same, and every example marked runnable
     python3 tests/docs/check_docs.py --api-docs every crate's API front page in target/doc
+    python3 tests/docs/check_docs.py --numbers  the tied numbers against the built binary
+    python3 tests/docs/check_docs.py --update-numbers  rewrite the tied numbers from it
 
 Checks:
 - every relative link and image (`[text](path#anchor)`) resolves to a file or folder of the
@@ -18,7 +20,12 @@ Checks:
   harness's (`.venv` or $PINJOINT_VENV, as tests/python/run.sh) when they import `fmpy`;
 - every number in a block between `<!-- numbers from FILE: ... -->` and
   `<!-- end of numbers from FILE -->` is a number that FILE (a generated file, e.g.
-  BENCHMARKS.md) contains.
+  BENCHMARKS.md) contains;
+- every number of the pages of numbers_spec.PAGES (docs/cold-day.md, journal-bearing.md,
+  validity.md) is tied to the built binary by a tag `<!--=ID-->`, an input of a tied one,
+  a citation or marked as not a model output (tied_numbers.py); with --run or --numbers each
+  tied number is computed (`target/release/pinjoint`, `target/release/examples/doc_numbers`)
+  and compared to the rounding of its quoted digits; --update-numbers rewrites them in place.
 
 The self-test (always run first) feeds each check a broken page and requires it to fail.
 Exit status 1 with one line per problem.
@@ -301,6 +308,76 @@ def check_api_docs(root):
     return problems
 
 
+def check_tied_numbers(root, run=False, update=False):
+    """The pages of numbers_spec.PAGES: every number tied, an input or marked (tied_numbers.py);
+    with `run`, every tied number against the built binary; with `update`, rewritten from it.
+    Returns (problems, {page: count of tied numbers})."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import numbers_spec
+    import tied_numbers
+    problems, counts = [], {}
+    binary = tied_numbers.Binary(root) if (run or update) else None
+    if binary is not None:
+        if not binary.exe.exists():
+            return [f"{binary.exe.relative_to(root)} is missing: cargo build --release -p pinjoint-cli"], counts
+        extra = numbers_spec.ns_extra(binary)
+        binary.namespace = (lambda ns=binary.namespace: (lambda: ns(extra)))()
+    for rel, spec in numbers_spec.PAGES.items():
+        if not (root / rel).exists():
+            problems.append(f"{rel}: a page of tests/docs/numbers_spec.py that does not exist")
+            continue
+        got, n, new_text = tied_numbers.check_page(root, rel, spec, binary, update)
+        problems += got
+        counts[rel] = n
+        if update and new_text is not None:
+            (root / rel).write_text(new_text, encoding="utf-8")
+    return problems, counts
+
+
+def self_test_tied_numbers():
+    """The tied-number check on a page with one of each problem, against a stand-in binary;
+    then the update rewrites the page and the check passes."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import tied_numbers as tn
+
+    class Stub:
+        commands = []
+
+        def namespace(self):
+            def point(N=None, kN=None, w=None, C=20):
+                self.commands.append(f"pinjoint point --load {N or kN * 1e3} --speed {w}")
+                return {"torque": 0.21966 * (N or kN * 1e3) / 200, "mu": 0.0392262}
+            return {"point": point, "abs": abs}
+
+    page = ("# P\n\nAt 200 N, 1 rad/s: 0.231<!--=t--> N·m, μ = 0.039<!--=mu-->, 5.0e-4<!--=small-->.\n\n"
+            "A stray 7.5 here, and an unknown 3<!--=nowhere-->; eq. 12, section 4.4, Smith (1999), 1 − ε.\n\n"
+            "<!-- unchecked: literature -->\nRaimondi & Boyd give 1.33.\n<!-- end unchecked -->\n"
+            "Bound: below 1e-3<!--=bound-->; 20<!--~def--> °C; w = 0<!--=w-->.\n\n"
+            "<!-- numbers from GEN.md: checked there -->\n| 9.9 |\n<!-- end of numbers from GEN.md -->\n")
+    spec = {"t": "point(N=200, w=1)['torque']", "mu": "point(N=200, w=1)['mu']", "unused": "1",
+            "small": "point(N=200, w=1)['mu']/78.4", "bound": tn.Spec("point(N=200, w=1)['mu']/10", upper=True),
+            "w": tn.Spec("point(N=200, w=1)['mu']/100", exact=True)}
+    with tempfile.TemporaryDirectory() as tmp:
+        root = Path(tmp)
+        (root / "p.md").write_text(page, encoding="utf-8")
+        got, n, _ = tn.check_page(root, "p.md", spec, Stub())
+        expected = ["p.md:3: 0.231 quoted, 0.21966 computed (t = point(N=200, w=1)['torque']; from pinjoint point --load 200 --speed 1)",
+                    "p.md:5: 7.5 is neither tied", "p.md:5: 3<!--=nowhere--> has no definition",
+                    "p.md: tests/docs/numbers_spec.py defines unused", "p.md:10: 1e-3 quoted, 0.00392262 computed",
+                    "p.md:10: 0 quoted, 0.000392262 computed"]
+        missing = [e for e in expected if not any(g.startswith(e) for g in got)]
+        assert not missing and len(got) == len(expected) and n == 6, f"self-test (tied numbers): missing {missing}, got {got}"
+        _, _, new = tn.check_page(root, "p.md", spec, Stub(), update=True, log=lambda _: None)
+        assert "0.220<!--=t-->" in new and "0.039<!--=mu-->" in new and "5.0e-4<!--=small-->" in new and "5e-3<!--=bound-->" in new and "0.000392262<!--=w-->" in new, new
+        (root / "p.md").write_text(new, encoding="utf-8")
+        got, _, _ = tn.check_page(root, "p.md", spec, Stub())
+        assert all(("7.5" in g or "nowhere" in g or "unused" in g) for g in got), f"self-test (tied numbers) after update: {got}"
+    for value, quoted, want in [(0.0999, "0.100", "0.0999"), (2.0, "2.08", "2.00"), (-20.4, "−20", "−20"),
+                                (1.5e-4, "1.5e-4", "1.5e-4"), (123456.0, "117", "123456"), (0.001234, "0.0412", "0.00123")]:
+        assert tn.formatted(value, quoted) == want, (value, quoted, tn.formatted(value, quoted), want)
+    assert tn.formatted(10183.0, "10200", tn.Spec("x", sig=3)) == "10200"
+
+
 def self_test():
     """Each check must be able to fail: a broken page set must give each expected problem."""
     with tempfile.TemporaryDirectory() as tmp:
@@ -325,6 +402,7 @@ def self_test():
         missing = [e for e in expected if not any(e in g for g in got)]
         extra = [g for g in got if not any(e in g for e in expected)]
         assert not missing and len(got) == len(expected), f"self-test: missing {missing}, unexpected {extra}"
+    self_test_tied_numbers()
     assert anchor_of("Through the rig simulation: `--model rig`") == "through-the-rig-simulation---model-rig"
     assert anchor_of("The FMU Compliance Checker and Reference-FMUs' fmusim") == "the-fmu-compliance-checker-and-reference-fmus-fmusim"
 
@@ -336,6 +414,11 @@ def main(argv):
     else:
         files = pages(ROOT)
         problems = check_links(ROOT, files) + check_quoted_numbers(ROOT, files) + check_fmu_page(ROOT)
+        tied, counts = check_tied_numbers(ROOT, run="--run" in argv or "--numbers" in argv,
+                                          update="--update-numbers" in argv)
+        problems += tied
+        print("check_docs: tied numbers " + ", ".join(f"{p} {n}" for p, n in counts.items())
+              + ("" if {"--run", "--numbers", "--update-numbers"} & set(argv) else " (not computed)"))
         blocks, marker_problems = runnable_blocks(ROOT, files)
         problems += marker_problems
         if "--run" in argv:

@@ -1,0 +1,335 @@
+"""What each tied number of the manual is: page → {ID: Python expression} (tied_numbers.py).
+
+The expressions run against the built project (check_docs.py --run; --update-numbers
+rewrites the pages from them):
+
+- point(N=|kN=, w=|rpm=, C=20, paper=False, p={dotted key: value}) → the JSON object of
+  `pinjoint point --json` (keys: torque, friction_coefficient, film_thickness, journal_weight,
+  clearance_torque, grease_yield_torque, inlet_viscosity, ...), at C °C, with the parameter
+  overrides `p` in a parameter file;
+- sweep([(load N, speed rad/s, C °C), ...], p=...) → the rows of `pinjoint sweep`;
+- param("grease.yield_stress") → a default of `pinjoint params`;
+- lib("journal.ld1.S.0.1") → a number of `target/release/examples/doc_numbers`;
+- code(path, regex) → a constant of the source (group 1, a Rust constant expression: literals,
+  arithmetic, PI and the file's other `const NAME: f64`); const(path, NAME) → `const NAME: f64`;
+- column(path, name) → a column of a CSV file of the repository (a test fixture);
+- the functions of HELPERS below, and math's.
+
+A value is a string (the quoted number must equal it to the rounding of its quoted digits)
+or Spec(expr, rel=...) for an explicit relative tolerance. Inputs of an operating point are
+written as the page writes them (kN=20, w=3, C=-20): the page's untagged numbers of the same
+paragraph that are literals of these expressions are its inputs.
+"""
+import re
+
+from tied_numbers import Spec
+
+C0 = "273.15"  # K at 0 °C, for the code's kelvin constants
+
+
+def X(expr):
+    """A number quoted as the value itself: a parameter's default, a constant of the code."""
+    return Spec(expr, exact=True)
+
+
+def warming_steps(b):
+    """Over 12 loads (10 N–1 MN) × 12 speeds (1e-3–200 rad/s), log-spaced, from 20 to 120 °C
+    in steps of 2.5 K: how many steps raise the torque, and the steepest rise (ratio, load,
+    speed)."""
+    geo = lambda lo, hi, n: [lo * (hi / lo) ** (i / (n - 1)) for i in range(n)]
+    loads, speeds = geo(10.0, 1e6, 12), geo(1e-3, 200.0, 12)
+    temps = [20.0 + 2.5 * k for k in range(41)]
+    out = b.sweep([(load, w, c) for load in loads for w in speeds for c in temps])
+    up, worst = 0, (0.0, 0.0, 0.0)
+    for i in range(len(loads) * len(speeds)):
+        seq = out[41 * i: 41 * (i + 1)]
+        for a, c in zip(seq, seq[1:]):
+            if c["torque"] > a["torque"]:
+                up += 1
+                worst = max(worst, (c["torque"] / a["torque"], a["load"], a["speed"]))
+    return {"grid": len(loads) * len(speeds), "steps": len(loads) * len(speeds) * 40, "up": up,
+            "ratio": worst[0], "load": worst[1], "speed": worst[2], "from": temps[0], "to": temps[-1], "step": 2.5}
+
+
+def rig_worst(b):
+    """The largest relative torque difference complete/paper over the rig's conditions at the
+    reference temperature (tests/complete.rs's grid: 25 loads 5–60 kN × 41 speeds up to the
+    stroke's peak): (difference, load, speed, paper's torque, clearance torque)."""
+    peak = b.const("src/validity.rs", "MAX_RIG_ANGULAR_SPEED")
+    rows = []
+    for k in range(25):
+        load = 5e3 * 12.0 ** (k / 24.0)
+        for m in range(41):
+            rows.append((load, 0.0 if m == 0 else peak * 1e-4 ** (1.0 - m / 40.0), 20.0))
+    full, paper = b.sweep(rows), b.sweep(rows, p={"model.paper": True})
+    worst = max((abs(a["torque"] / p["torque"] - 1.0), a["load"], a["speed"]) for a, p in zip(full, paper))
+    return worst
+
+
+def rb_through_joint(b):
+    """Raimondi & Boyd's L/D = 1 rows (tests/complete.rs's table) through the whole joint: the
+    base oil alone, B = 2R, the load that gives their S at 3, 30 and 150 rad/s; the largest
+    relative deviation of μ·R/c from their (R/c)f (%) where the joint is in full film (w = 1,
+    λ ≥ 3), and the smallest and largest ε of the rows."""
+    text = (b.root / "tests/complete.rs").read_text(encoding="utf-8")
+    m = re.search(r"const RAIMONDI_BOYD_LD1: \[\(f64, f64, f64\); \d+\] = \[(.*?)\];", text, re.S)
+    rows = [tuple(float(x) for x in r) for r in re.findall(r"\(([\d.]+), ([\d.]+), ([\d.]+)\)", m.group(1))]
+    r, rb = b.param("geometry.pin_radius"), b.param("geometry.bush_radius")
+    c, eta, length = rb - r, b.param("lubricant.viscosity"), 2 * b.param("geometry.pin_radius")
+    p = {"grease.enabled": False, "geometry.bush_length": length}
+    worst = 0.0
+    for eps, s, f in rows:
+        for w in (3.0, 30.0, 150.0):
+            load = eta * w / (2 * 3.141592653589793 * s) * (r / c) ** 2 * 2 * r * length
+            op = b.point(N=load, w=w, p=p)
+            if op["journal_weight"] >= 1.0 and op["lambda_ratio"] >= 3.0:
+                worst = max(worst, abs(op["friction_coefficient"] * r / c / f - 1))
+    return {"worst_pc": 100 * worst, "eps_lo": min(e for e, _, _ in rows), "eps_hi": max(e for e, _, _ in rows)}
+
+
+def ns_extra(b):
+    return {"warming_steps": lambda: warming_steps(b), "rig_worst": lambda: rig_worst(b),
+            "rb_through_joint": lambda: rb_through_joint(b)}
+
+
+def _sensitivity():
+    out = {}
+    for m, mk in [(0, "0"), (0.5, "05"), (1, "1"), (2, "2")]:
+        for c in [20, 0, -20, -40, -55]:
+            for side, (load, w) in {"hi": ("kN=20", 3), "lo": ("N=200", 1)}.items():
+                out[f"sens.m{mk}.{c}.{side}"] = (
+                    f"point({load}, w={w}, C={c}, p={{'grease.supply_exponent': {m}}})['friction_coefficient']")
+    return out
+
+
+def _petroff(load, w, c=20):
+    # Petroff's torque 2π η_b |ω| R³ B / c of the default joint at `load`, `w`, `c` °C.
+    return (f"2*pi*point({load}, w={w}, C={c})['inlet_viscosity']*{w}*param('geometry.pin_radius')**3"
+            f"*param('geometry.bush_length')/(param('geometry.bush_radius')-param('geometry.pin_radius'))")
+
+
+T_REF = f"param('lubricant.reference_temperature') - {C0}"
+BREAKAWAY_20KN = "param('friction.boundary_friction_coefficient')*param('geometry.pin_radius')*20e3"
+
+COLD_DAY = {
+    "cold_soak": X(f"const('src/validity.rs', 'COLD_SOAK') - {C0}"),
+    "t_ref": X(T_REF),
+    "ld": "param('geometry.bush_length')/(2*param('geometry.pin_radius'))",
+    "rho0": X("const('src/composite.rs', 'RHO_0')"),
+    "rho1": X("const('src/composite.rs', 'RHO_1')"),
+    "eps_rho0": X("1 - const('src/composite.rs', 'RHO_0')"),
+    "eps_rho1": X("1 - const('src/composite.rs', 'RHO_1')"),
+    "rig_w": X("max(point(kN=k, w=4.386)['journal_weight'] for k in (5, 20, 60))"),
+    "supply_exponent": X("param('grease.supply_exponent')"),
+    "yield_stress": X("param('grease.yield_stress')"),
+    "consistency": X("param('grease.consistency')"),
+    "flow_index": X("param('grease.flow_index')"),
+    "yield_activation": X("param('grease.yield_activation')"),
+    "consistency_activation": X("param('grease.consistency_activation')"),
+    "app_visc_m54": "lib('grease.apparent_viscosity.25.-54')",
+    "rb_joint.eps_lo": X("rb_through_joint()['eps_lo']"),
+    "rb_joint.eps_hi": X("rb_through_joint()['eps_hi']"),
+    "rb_joint.worst": Spec("rb_through_joint()['worst_pc']", upper=True),
+    **_sensitivity(),
+    # how far m moves μ at 20 kN, against the default m = 1
+    "m_spread": "100*max((max(mu) - min(mu))/mu[2] for mu in [[point(kN=20, w=3, C=c, "
+                "p={'grease.supply_exponent': m})['friction_coefficient'] for m in (0, 0.5, 1, 2)] for c in (0, -20, -40)])",
+    "eta_b_m55": "point(kN=20, w=3, C=-55)['inlet_viscosity']",
+    # What it gives
+    "g200w1.T": "point(N=200, w=1)['torque']",
+    "g200w1.mu": "point(N=200, w=1)['friction_coefficient']",
+    "g200w1.w": "point(N=200, w=1)['journal_weight']",
+    "g200w1.h": "1e6*point(N=200, w=1)['film_thickness']",
+    "g200w1.pT": "point(N=200, w=1, paper=True)['torque']",
+    "g200w1.pmu": "point(N=200, w=1, paper=True)['friction_coefficient']",
+    "g200w3.T": "point(N=200, w=3)['torque']",
+    "g200w3.mu": "point(N=200, w=3)['friction_coefficient']",
+    "g200w3.pT": "point(N=200, w=3, paper=True)['torque']",
+    "g100w1.T": "point(N=100, w=1)['torque']",
+    "g100w1.pT": "point(N=100, w=1, paper=True)['torque']",
+    "g23k.T": "point(kN=23, w=173)['torque']",
+    "g23k.petroff": _petroff("kN=23", 173),
+    "g23k.pT": "point(kN=23, w=173, paper=True)['torque']",
+    "g20k.T": "point(kN=20, w=3)['torque']",
+    "g20k.mu": "point(kN=20, w=3)['friction_coefficient']",
+    "g20k.pT": "point(kN=20, w=3, paper=True)['torque']",
+    "g20k.pmu": "point(kN=20, w=3, paper=True)['friction_coefficient']",
+    "g20km20.T": "point(kN=20, w=3, C=-20)['torque']",
+    "g20km20.mu": "point(kN=20, w=3, C=-20)['friction_coefficient']",
+    "g20km20.pT": "point(kN=20, w=3, C=-20, paper=True)['torque']",
+    "g20km20.pmu": "point(kN=20, w=3, C=-20, paper=True)['friction_coefficient']",
+    "g20km55.T": "point(kN=20, w=3, C=-55)['torque']",
+    "g20km55.mu": "point(kN=20, w=3, C=-55)['friction_coefficient']",
+    "paper_min": X(f"const('src/params.rs', 'PAPER_MIN_TEMPERATURE') - {C0}"),
+    "g200m20.T": "point(N=200, w=1, C=-20)['torque']",
+    "g200m20.mu": "point(N=200, w=1, C=-20)['friction_coefficient']",
+    # The grease's yield torque at rest, 20 kN
+    "yield.20": "point(kN=20, w=0, C=20)['grease_yield_torque']",
+    "yield.m20": "point(kN=20, w=0, C=-20)['grease_yield_torque']",
+    "yield.m54": "point(kN=20, w=0, C=-54)['grease_yield_torque']",
+    "yield.20.pc": f"100*point(kN=20, w=0, C=20)['grease_yield_torque']/({BREAKAWAY_20KN})",
+    "yield.m20.pc": f"100*point(kN=20, w=0, C=-20)['grease_yield_torque']/({BREAKAWAY_20KN})",
+    "yield.m54.pc": f"100*point(kN=20, w=0, C=-54)['grease_yield_torque']/({BREAKAWAY_20KN})",
+    "breakaway": BREAKAWAY_20KN,
+    # Properties checked
+    "service_load_min": X("const('src/validity.rs', 'SERVICE_LOAD_MIN')"),
+    "service_load_max_MN": X("code('tests/complete.rs', r'log_uniform\\(SERVICE_LOAD_MIN, ([\\de.]+)\\)')/1e6"),
+    "service_speed_max": X("const('src/validity.rs', 'SERVICE_SPEED_MAX')"),
+    "service_t_min": X(f"const('src/validity.rs', 'SERVICE_TEMPERATURE_MIN') - {C0}"),
+    "service_t_max": X(f"const('src/validity.rs', 'SERVICE_TEMPERATURE_MAX') - {C0}"),
+    "warm.grid": X("warming_steps()['grid']"),
+    "warm.from": X("warming_steps()['from']"),
+    "warm.to": X("warming_steps()['to']"),
+    "warm.up": X("warming_steps()['up']"),
+    "warm.steps": X("warming_steps()['steps']"),
+    "warm.step": X("warming_steps()['step']"),
+    "warm.ratio": "warming_steps()['ratio']",
+    "warm.load_kN": "warming_steps()['load']/1e3",
+    "warm.speed": "warming_steps()['speed']",
+    "rig.load_lo_kN": X("code('src/validity.rs', r'pub const LOAD: Range = Range \\{.*?lo: ([^,]+),')/1e3"),
+    "rig.load_hi_kN": X("code('src/validity.rs', r'pub const LOAD: Range = Range \\{.*?hi: ([^,]+),')/1e3"),
+    "rig.u_max": "code('src/validity.rs', r'pub const SLIDING_SPEED: Range = Range \\{.*?hi: ([^,]+),')",
+    "rig.tolerance_pc": X("100*code('tests/complete.rs', r'assert!\\(worst.0 <= ([\\d.]+)')"),
+    "rig.worst_pc": "100*rig_worst()[0]",
+    "rig.worst_load_kN": "rig_worst()[1]/1e3",
+    "rig.worst_speed": "rig_worst()[2]",
+    "rig.worst_paper_T": "point(N=rig_worst()[1], w=rig_worst()[2], paper=True)['torque']",
+    "rig.worst_clearance": "point(N=rig_worst()[1], w=rig_worst()[2])['clearance_torque']",
+    "rig.k20_pc": "100*(point(kN=5, w=4.386, p={'grease.consistency': 20})['torque']/point(kN=5, w=4.386, paper=True)['torque'] - 1)",
+    # The paper's model
+    "fixture.rows": X("len(column('tests/fixtures/paper_model_main.csv', 'load'))"),
+    "fixture.load_lo": X("min(column('tests/fixtures/paper_model_main.csv', 'load'))"),
+    "fixture.load_hi_MN": X("max(column('tests/fixtures/paper_model_main.csv', 'load'))/1e6"),
+    "fixture.speed_hi": X("max(column('tests/fixtures/paper_model_main.csv', 'speed'))"),
+    "fixture.t_lo": X(f"min(column('tests/fixtures/paper_model_main.csv', 'temperature')) - {C0}"),
+    "fixture.t_hi": X(f"max(column('tests/fixtures/paper_model_main.csv', 'temperature')) - {C0}"),
+}
+
+def _range(name, end):
+    return f"code('src/validity.rs', r'pub const {name}: Range = Range \\{{.*?{end}: ([^,]+),')"
+
+
+VALIDITY = {
+    "load_lo_kN": X(_range("LOAD", "lo") + "/1e3"),
+    "load_hi_kN": X(_range("LOAD", "hi") + "/1e3"),
+    "u_lo": X(_range("SLIDING_SPEED", "lo")),
+    "u_hi": _range("SLIDING_SPEED", "hi"),
+    "w_max": "const('src/validity.rs', 'MAX_RIG_ANGULAR_SPEED')",
+    "pin_mm": X("1e3*const('src/validity.rs', 'PAPER_PIN_RADIUS')"),
+    "t_lo_K": X(_range("TEMPERATURE", "lo")),
+    "t_hi_K": X(_range("TEMPERATURE", "hi")),
+    "t_lo": X(_range("TEMPERATURE", "lo") + f" - {C0}"),
+    "t_hi": X(_range("TEMPERATURE", "hi") + f" - {C0}"),
+    "t_mid": X(f"({_range('TEMPERATURE', 'lo')} + {_range('TEMPERATURE', 'hi')})/2 - {C0}"),
+    "t_half": X(f"({_range('TEMPERATURE', 'hi')} - {_range('TEMPERATURE', 'lo')})/2"),
+    "f_lo": X(_range("FREQUENCY", "lo")),
+    "f_hi": X(_range("FREQUENCY", "hi")),
+    "amp_deg": f"degrees(({_range('STROKE_AMPLITUDE', 'lo')} + {_range('STROKE_AMPLITUDE', 'hi')})/2)",
+    "amp_tol": f"({_range('STROKE_AMPLITUDE', 'hi')} - {_range('STROKE_AMPLITUDE', 'lo')})/({_range('STROKE_AMPLITUDE', 'hi')} + {_range('STROKE_AMPLITUDE', 'lo')})",
+    "cold_soak": COLD_DAY["cold_soak"],
+    "cold_soak_K": X("const('src/validity.rs', 'COLD_SOAK')"),
+    "w12": "radians(12)",
+    "mu12.20": "point(kN=20, w=radians(12), C=20, paper=True)['friction_coefficient']",
+    "paper_min": COLD_DAY["paper_min"],
+    "paper_min_K": X("const('src/params.rs', 'PAPER_MIN_TEMPERATURE')"),
+    "t_min_K": X("const('src/params.rs', 'MIN_TEMPERATURE')"),
+    "t_max_K": X("const('src/params.rs', 'MAX_TEMPERATURE')"),
+    "vr_pinjoint": X("code('modelDescription/PinJoint.xml', r'name=\"validity\" valueReference=\"(\\d+)\"')"),
+    "vr_rig": X("code('modelDescription/PinJointRig.xml', r'name=\"validity\" valueReference=\"(\\d+)\"')"),
+    "rpm_max": "const('src/validity.rs', 'MAX_RIG_ANGULAR_SPEED')*60/(2*pi)",
+    "max_temperatures": X("code('crates/cli/src/commands/sweep/mod.rs', r'const MAX_TEMPERATURES: usize = (\\d+);')"),
+}
+
+RB_EPS = ["0.1", "0.2", "0.4", "0.6", "0.8", "0.9", "0.97"]
+
+
+def _rb(table, eps, col):
+    """Raimondi & Boyd's value in the tests of src/journal/table.rs (col 1 S, 2 φ°, 3 (R/c)f)."""
+    cols = ",\\s*".join(["([\\d.]+)" if i == col else "[\\d.]+" for i in (1, 2, 3)])
+    return f"code('src/journal/table.rs', r'const {table}:.*?\\({re.escape(eps)},\\s*{cols}\\)')"
+
+
+def _rb_worst(table, name, rows, col):
+    """The largest deviation of the model from Raimondi & Boyd over `rows` (S, (R/c)f: %; φ: °)."""
+    key = {1: "S", 2: "phi_deg", 3: "f"}[col]
+    terms = [f"lib('journal.{name}.{key}.{e}')" for e in rows]
+    refs = [_rb(table, e, col) for e in rows]
+    if col == 2:
+        return "max(" + ", ".join(f"abs({t} - {r})" for t, r in zip(terms, refs)) + ")"
+    return "100*max(" + ", ".join(f"abs({t}/{r} - 1)" for t, r in zip(terms, refs)) + ")"
+
+
+GCM_PER_NM = "1e5/9.80665"  # g·cm per N·m (1 gf·cm = 9.80665e-5 N·m)
+
+JOURNAL_BEARING = {
+    "nodes": X("code('src/journal/table.rs', r'pub const NODES: usize = (\\d+);')"),
+    "eps_first": "1/(1 + exp(const('src/journal/table.rs', 'LOGIT_END')))",
+    "eps_last": "1/(1 + exp(-const('src/journal/table.rs', 'LOGIT_END')))",
+    "grid_theta": X("code('src/journal/reynolds.rs', r'const TABLE: Grid = Grid \\{ n_theta: (\\d+)')"),
+    "grid_zeta": X("code('src/journal/reynolds.rs', r'const TABLE: Grid = Grid \\{[^}]*n_zeta: (\\d+)')"),
+    "ld_min_inv": X("1/const('src/journal/table.rs', 'LD_MIN')"),
+    "ld_max": X("const('src/journal/table.rs', 'LD_MAX')"),
+    "ld_max_gap": "100*abs(lib('journal.ld_max.S.0.1')/lib('journal.long.S.0.1') - 1)",
+    **{f"rb.{k}.{e}": _rb("RB_LD1", e, c) for e in RB_EPS for k, c in (("S", 1), ("phi", 2), ("f", 3))},
+    **{f"m.S.{e}": f"lib('journal.ld1.S.{e}')" for e in RB_EPS},
+    **{f"m.phi.{e}": f"lib('journal.ld1.phi_deg.{e}')" for e in RB_EPS},
+    **{f"m.f.{e}": f"lib('journal.ld1.f.{e}')" for e in RB_EPS},
+    "rb1.S": _rb_worst("RB_LD1", "ld1", RB_EPS, 1),
+    "rb1.phi": _rb_worst("RB_LD1", "ld1", RB_EPS, 2),
+    "rb1.f": _rb_worst("RB_LD1", "ld1", RB_EPS, 3),
+    "rb24.S": f"max({_rb_worst('RB_LD_HALF', 'ld_half', RB_EPS[:6], 1)}, {_rb_worst('RB_LD_QUARTER', 'ld_quarter', RB_EPS[:6], 1)})",
+    "rb24.phi": f"max({_rb_worst('RB_LD_HALF', 'ld_half', RB_EPS[:6], 2)}, {_rb_worst('RB_LD_QUARTER', 'ld_quarter', RB_EPS[:6], 2)})",
+    "rb24.f": f"max({_rb_worst('RB_LD_HALF', 'ld_half', RB_EPS[:6], 3)}, {_rb_worst('RB_LD_QUARTER', 'ld_quarter', RB_EPS[:6], 3)})",
+    "long.S": "lib('journal.long.S.0.1')",
+    "long.phi": "lib('journal.long.phi_deg.0.1')",
+    "grid_conv": X("100*code('src/journal/table.rs', r'assert!\\(\\(s1.sommerfeld / s4.sommerfeld - 1.0\\).abs\\(\\) < ([\\d.]+)')"),
+    "gauss_nodes": X("code('src/clearance/integrals.rs', r'const GAUSS12: \\[\\(f64, f64\\); (\\d+)\\]')"),
+    "rule.0.9": Spec("max(lib('clearance.rule_error.0.3'), lib('clearance.rule_error.0.9'))", upper=True),
+    "rule.0.99": Spec("lib('clearance.rule_error.0.99')", upper=True),
+    "rule.0.999": Spec("lib('clearance.rule_error.0.999')", upper=True),
+    "rule.0.9999": Spec("lib('clearance.rule_error.0.9999')", upper=True),
+    "t_ref": X(T_REF),
+    "yield_stress": COLD_DAY["yield_stress"],
+    "consistency": COLD_DAY["consistency"],
+    "flow_index": COLD_DAY["flow_index"],
+    "yield_activation": COLD_DAY["yield_activation"],
+    "consistency_activation": COLD_DAY["consistency_activation"],
+    "supply_exponent": COLD_DAY["supply_exponent"],
+    "app_visc_20": Spec("lib('grease.apparent_viscosity.25.20')", rel=0.1),
+    "app_visc_m54": COLD_DAY["app_visc_m54"],
+    "rig.tolerance_pc": COLD_DAY["rig.tolerance_pc"],
+    "rig.k20_pc": COLD_DAY["rig.k20_pc"],
+    "ty_ratio": "lib('grease.yield_stress_ratio.-54')",
+    "d1478.54.lo": "lib('grease.d1478_torque.-54/0.2')",
+    "d1478.54.hi": "lib('grease.d1478_torque.-54/2')",
+    "d1478.73.lo": "lib('grease.d1478_torque.-73/0.2')",
+    "d1478.73.hi": "lib('grease.d1478_torque.-73/2')",
+    "d1478.54.lo.gcm": Spec(f"lib('grease.d1478_torque.-54/0.2')*{GCM_PER_NM}", sig=2),
+    "d1478.54.hi.gcm": Spec(f"lib('grease.d1478_torque.-54/2')*{GCM_PER_NM}", sig=2),
+    "d1478.73.lo.gcm": Spec(f"lib('grease.d1478_torque.-73/0.2')*{GCM_PER_NM}", sig=2),
+    "d1478.73.hi.gcm": Spec(f"lib('grease.d1478_torque.-73/2')*{GCM_PER_NM}", sig=3),
+    "eta.40": "1e3*lib('base_oil.viscosity.40')",
+    "eta.100": "1e3*lib('base_oil.viscosity.100')",
+    "eta.m54": "lib('base_oil.viscosity.-54')",
+    "eta.m73": "1e-3*lib('base_oil.viscosity.-73')",
+    **{f"cl.y.{e}": f"lib('clearance.yield.-54.Ey.{e}')" for e in (2000, 3000, 4000)},
+    **{f"cl.p.{e}": f"lib('clearance.power.-54.EK.{e}')" for e in (3000, 4000, 5000)},
+    "cl.b.m54": "lib('clearance.base.-54')",
+    "cl.y.20": "lib('clearance.yield.20')",
+    "cl.p.20": "lib('clearance.power.20')",
+    "cl.b.20": "lib('clearance.base.20')",
+    "joint_T_20kN": "point(kN=20, w=0.1/param('geometry.pin_radius'))['torque']",
+    "cl.share.20": "100*(lib('clearance.yield.20') + lib('clearance.power.20') + lib('clearance.base.20'))"
+                   "/point(kN=20, w=0.1/param('geometry.pin_radius'))['torque']",
+    "tab.near": "lib('clearance.table_error.near')",
+    "tab.mid": "lib('clearance.table_error.to_0.99999')",
+    "tab.beyond": "lib('clearance.table_error.beyond')",
+    "tab.gap": "(1 - 0.99999)*1e6*(param('geometry.bush_radius') - param('geometry.pin_radius'))",
+    "clearance_um": X("1e6*(param('geometry.bush_radius') - param('geometry.pin_radius'))"),
+}
+
+PAGES = {
+    "docs/cold-day.md": COLD_DAY,
+    "docs/validity.md": VALIDITY,
+    "docs/journal-bearing.md": JOURNAL_BEARING,
+}
