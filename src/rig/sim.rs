@@ -615,11 +615,18 @@ impl RigSim {
         d.linear.set(self.linear);
         let y0 = to_state(&node.state, t0);
         let breakaway = |t: f64| d.load(t).map_or(0.0, |p| d.breakaway_torque(p));
+        let rest = |t: f64| d.load(t).map_or(0.0, |p| d.joint.boundary_torque(p));
         let event = |t: f64, y: &State| -> (f64, bool) {
             match phase {
                 Phase::Slip(s) => {
-                    let g = -f64::from(s) * y[SPEED];
-                    (g, g >= 0.0)
+                    let s = f64::from(s);
+                    let g = -s * y[SPEED];
+                    // The speed's zero ends the slip only where the friction law's one-sided
+                    // limit at rest lets the joint stop: s·T_a ≤ T_f(0⁺) (Filippov). Where the
+                    // drive exceeds the running torque at rest the slip accelerates away from
+                    // ω = 0, and a zero crossing is the integrator's error within its
+                    // tolerance (a creep speed below atol): no event.
+                    (g, g >= 0.0 && s * y[TORQUE] <= rest(t))
                 }
                 Phase::Stick => {
                     let g = y[TORQUE].abs() - breakaway(t);
