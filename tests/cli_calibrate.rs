@@ -268,8 +268,8 @@ fn cycle_mu(stdout: &str) -> f64 {
 }
 
 /// The rig on the cold day (issue 37, item 6): records made by `pinjoint cycle` at −40, −20, 0
-/// and 20 °C of a joint with μ_c = 0.11 and a grease 1.5× stiffer than the default (at −40 °C
-/// such a grease made the rig's event logic refuse before), 0.5 N·m of torque noise added to
+/// and 20 °C (5 and 40 kN, 0.3 and 1 Hz) of a joint with μ_c = 0.11 and a grease 1.5× stiffer
+/// than the default (at −40 °C and 0.3 Hz such a grease made the rig's event logic refuse before), 0.5 N·m of torque noise added to
 /// the CSV, fitted by `pinjoint calibrate` with one `--temperature` per input; the calibrated
 /// file run by `pinjoint cycle` at −30 °C gives the truth's stroke torque within 5 %.
 #[test]
@@ -287,9 +287,9 @@ fn cold_rig_records_predict_minus_30_celsius_within_5_percent() {
     args.push(s(&tmp.path().join("cal")).into());
     let mut seed = 0x9e37_79b9_7f4a_7c15u64;
     for t in temps {
-        for load in ["5000", "40000"] {
-            let out = tmp.path().join(format!("c{t}-{load}"));
-            ok(&["cycle", "--frequency", "1", "--load", load, "--cycles", "4", "--samples-per-cycle", "400", "--temperature", t, "--params", s(&truth), "--output", s(&out)]);
+        for (load, f) in [("5000", "0.3"), ("5000", "1"), ("40000", "0.3"), ("40000", "1")] {
+            let out = tmp.path().join(format!("c{t}-{load}-{f}"));
+            ok(&["cycle", "--frequency", f, "--load", load, "--cycles", "4", "--samples-per-cycle", "400", "--temperature", t, "--params", s(&truth), "--output", s(&out)]);
             // 0.5 N·m of Gaussian noise on the torque column (a 64-bit LCG, Box–Muller).
             let csv = std::fs::read_to_string(out.join("cycle.csv")).unwrap();
             let mut lines = csv.lines();
@@ -307,7 +307,7 @@ fn cold_rig_records_predict_minus_30_celsius_within_5_percent() {
                 noisy.push_str(&f.join(","));
                 noisy.push('\n');
             }
-            let rec = tmp.path().join(format!("r{t}-{load}.csv"));
+            let rec = tmp.path().join(format!("r{t}-{load}-{f}.csv"));
             std::fs::write(&rec, noisy).unwrap();
             args.extend(["--input".to_string(), s(&rec).to_string(), "--load".into(), load.into(), "--temperature".into(), t.into()]);
         }
