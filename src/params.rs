@@ -138,6 +138,10 @@ pub struct Grease {
     pub consistency_activation: f64,
     /// m, exponent of the cold supply's replenishment ratio (η_b(T_ref)/η_b(T))^m (-).
     pub supply_exponent: f64,
+    /// T_max, the grease's upper service temperature (K, absolute: not quoted at the
+    /// reference temperature). Above it every answer is `outside` the model's assumptions
+    /// ([`crate::validity::Edges`]), with either model.
+    pub upper_service_temperature: f64,
 }
 
 /// The full parameter set. `Params::default()` is the paper's rig with the complete model;
@@ -222,6 +226,7 @@ impl Default for Grease {
             yield_activation: c::DEFAULT_YIELD_ACTIVATION,
             consistency_activation: c::DEFAULT_CONSISTENCY_ACTIVATION,
             supply_exponent: c::DEFAULT_SUPPLY_EXPONENT,
+            upper_service_temperature: crate::validity::DEFAULT_UPPER_SERVICE_TEMPERATURE,
         }
     }
 }
@@ -359,7 +364,7 @@ macro_rules! switch {
 }
 
 /// Every parameter, in file order.
-pub static PARAMS: [ParamSpec; 34] = [
+pub static PARAMS: [ParamSpec; 35] = [
     spec!(geometry.pin_radius, "R", "m", Range::Positive, "Table 1", "Outer radius of the pin"),
     spec!(geometry.bush_radius, "R_b", "m", Range::Positive, "Table 1", "Inner radius of the bush (must exceed the pin radius; the radial clearance is R_b - R)"),
     spec!(geometry.bush_length, "B", "m", Range::Positive, "Table 1", "Length of the bush (contact length)"),
@@ -395,6 +400,7 @@ pub static PARAMS: [ParamSpec; 34] = [
     spec!(grease.yield_activation, "E_y/R", "K", Range::NonNegative, GREASE_SOURCE, "Activation temperature of the yield stress: tau_y(T) = tau_y exp(E_y/R (1/T - 1/T_ref))"),
     spec!(grease.consistency_activation, "E_K/R", "K", Range::NonNegative, GREASE_SOURCE, "Activation temperature of the consistency: K(T) = K exp(E_K/R (1/T - 1/T_ref))"),
     spec!(grease.supply_exponent, "m", "1", Range::Closed(0.0, 10.0), "Complete model: cold supply (docs/cold-day.md), default 1", "Exponent of the cold supply: below T_ref the contact film is at most the reference film times (eta_b(T_ref)/eta_b(T))^m; 0 = no supply limit"),
+    spec!(grease.upper_service_temperature, "T_max", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Grease class: MIL-PRF-23827 Type I, -73 to +121 C (default 394.15 K); MIL-PRF-81322 would be 450.15 K (+177 C)", "Upper service temperature of the grease (absolute, not re-quoted): above it every answer, of either model, has validity outside (code 3: beyond the model's assumptions) instead of extrapolation; the answer itself is unchanged"),
 ];
 
 /// Where the grease's defaults come from ([`crate::grease`]: chosen for the paper's grease class

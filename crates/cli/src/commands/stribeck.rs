@@ -100,7 +100,7 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
         readable(load / 1e3),
         readable((p_m / 1e6 * 100.0).round() / 100.0),
         readable(s_per_rad_s),
-        crate::common::temperature_note(joint.params().lubricant.temperature, joint.params().model.paper)
+        crate::common::temperature_note(joint.params())
     );
     Ok(stacked_plot(&title, &[mu, shares, lambda], (900, 1200))?)
 }

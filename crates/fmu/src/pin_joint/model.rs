@@ -226,7 +226,7 @@ impl Model for PinJointModel {
         self.v.out = out;
         let v = super::variables::validity(&self.v);
         let s = &self.v;
-        let excursion = || pinjoint::validity::excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper);
+        let excursion = || super::variables::excursion(s);
         crate::validity::note(&mut self.validity, v, excursion, "", &mut self.message);
         Ok(())
     }

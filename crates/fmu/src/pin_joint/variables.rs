@@ -14,7 +14,7 @@
 //! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 46–49 |
 //! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 50 |
 //! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 51, 52 |
-//! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature | not stored |
+//! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong, 3 outside; [`pinjoint::validity`]), after the temperature | not stored |
 //! | 205 | `zero_velocity.host_inertia` | 53 |
 //! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 54–57 |
 
@@ -236,7 +236,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(Row::new(band, |s: &Values| s.zv.band, |s, x| s.zv.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease); above grease.upper_service_temperature (121 C by default) outside",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
     rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows.extend(zero_velocity::rows(201, p + 12, |s: &Values| &s.zv, |s| &mut s.zv));
@@ -304,11 +304,17 @@ fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
 }
 
 /// The `validity` output's description.
-const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
+const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW), 3 outside (beyond the model's assumptions: load above the one at which the Hertz half-width of eq. 6 reaches the pin radius, pi E' B R^2/(8 R') = 96.7 kN with the default parameters, or temperature above grease.upper_service_temperature, 121 C by default; still answered, continuous across the edge). Logged once per excursion, and again when it goes outside. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
 
-/// The validity of the held inputs ([`pinjoint::validity::of_point`]).
+/// The validity of the held inputs ([`pinjoint::validity::Edges::of_point`] with the
+/// parameters' edges).
 pub fn validity(s: &Values) -> pinjoint::Validity {
-    pinjoint::validity::of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
+    pinjoint::validity::Edges::new(&s.params).of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
+}
+
+/// The first excursion of the held inputs (as [`validity`]), for the log.
+pub fn excursion(s: &Values) -> Option<pinjoint::validity::Excursion> {
+    pinjoint::validity::Edges::new(&s.params).excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
 }
 
 #[cfg(test)]
