@@ -408,6 +408,43 @@ mod tests {
         assert!(Validity::Checked < Validity::Extrapolation && Validity::Extrapolation < Validity::KnownWrong && Validity::KnownWrong < Validity::Outside);
     }
 
+    /// The numbers docs/validity.md quotes in "Past the model's assumptions", each checked
+    /// against the code here (the docs checker requires every number of those tables to be
+    /// one of this file's).
+    #[test]
+    fn the_numbers_docs_validity_md_quotes() {
+        use crate::contact::{effective_modulus, hertz, reduced_radius};
+        let p = Params::default();
+        let (g, r_red, e_eff) = (&p.geometry, reduced_radius(&p.geometry), effective_modulus(&p.materials));
+        let a = |load: f64| hertz(load, r_red, e_eff, g.bush_length).half_width;
+        let round = |x: f64, digits: i32| (x * 10f64.powi(digits)).round() / 10f64.powi(digits);
+        let edge = load_edge(&p);
+        // | R' | E' (GPa) | P_edge (N) | P_edge (kN) | a/R at 60 kN | a at 5.05e8 N (m) | p_m at P_edge (MPa) |
+        let quoted = [31.388, 165.91, 96667.0, 96.7, 0.788, 2.02, 29.06];
+        let computed = [
+            round(r_red, 3),
+            round(e_eff / 1e9, 2),
+            round(edge, 0),
+            round(edge / 1e3, 1),
+            round(a(60.0 * 1e3) / g.pin_radius, 3),
+            round(a(5.05e8), 2),
+            round(hertz(edge, r_red, e_eff, g.bush_length).mean_pressure / 1e6, 2),
+        ];
+        assert_eq!(quoted, computed);
+        // At the edge the mean pressure is P/(2RB): the strip is the pin's diameter wide.
+        assert!((hertz(edge, r_red, e_eff, g.bush_length).mean_pressure * 2.0 * g.pin_radius * g.bush_length / edge - 1.0).abs() < 1e-12);
+        // The asperity limit quoted with it (Joint::capacity), to three digits.
+        let cap = crate::Joint::new(&p).unwrap().capacity();
+        assert_eq!(round(cap / 1e8, 2), 5.05, "{cap}");
+        // The grease classes: (class, lower and upper service limit in C, the parameter in K).
+        let classes = [("MIL-PRF-23827 Type I", -73.0, 121.0, 394.15), ("MIL-PRF-81322", -54.0, 177.0, 450.15)];
+        for (class, lo, hi, kelvin) in classes {
+            assert!((hi + 273.15 - kelvin).abs() < 1e-9 && lo < hi, "{class}");
+        }
+        assert_eq!(classes[0].3, DEFAULT_UPPER_SERVICE_TEMPERATURE);
+        assert_eq!(p.grease.upper_service_temperature, DEFAULT_UPPER_SERVICE_TEMPERATURE);
+    }
+
     #[test]
     fn the_paper_joints_edges() {
         // a(P) = R at P = pi E' B R^2/(8 R'): 96.7 kN (the "about 97 kN").

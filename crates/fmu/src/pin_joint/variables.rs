@@ -4,19 +4,19 @@
 //!
 //! | value references | variables | state |
 //! |---|---|---|
-//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 35–37 |
-//! | 10–21, 22–25 | outputs (`min_film_thickness`, `min_lambda_ratio` at 20, 21; then the complete model's `clearance_torque`, `journal_weight`, `eccentricity_ratio`, `grease_yield_torque`; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 38 |
-//! | 100–133 | the 34 parameters of [`pinjoint::params::PARAMS`], `section.key` (`model.paper` and `grease.enabled` Booleans) | 0–33 |
-//! | 200 | `zero_velocity.speed_band` | 34 |
-//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 39 |
-//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 40–44 |
-//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 45 |
-//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 46–49 |
-//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 50 |
-//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 51, 52 |
+//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 36–38 |
+//! | 10–21, 22–25 | outputs (`min_film_thickness`, `min_lambda_ratio` at 20, 21; then the complete model's `clearance_torque`, `journal_weight`, `eccentricity_ratio`, `grease_yield_torque`; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 39 |
+//! | 100–134 | the 35 parameters of [`pinjoint::params::PARAMS`], `section.key` (`model.paper` and `grease.enabled` Booleans) | 0–34 |
+//! | 200 | `zero_velocity.speed_band` | 35 |
+//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 40 |
+//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 41–45 |
+//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 46 |
+//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 47–50 |
+//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 51 |
+//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 52, 53 |
 //! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong, 3 outside; [`pinjoint::validity`]), after the temperature | not stored |
-//! | 205 | `zero_velocity.host_inertia` | 53 |
-//! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 54–57 |
+//! | 205 | `zero_velocity.host_inertia` | 54 |
+//! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 55–58 |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
@@ -28,14 +28,15 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (7: version 5's values with the complete model's
+/// Version of the serialized state's layout (8: version 7's with the parameter
+/// `grease.upper_service_temperature` after the other parameters; 7: version 5's values with the complete model's
 /// eight parameters, `model.paper` and `grease.*`, after the paper's, then the host inertia,
 /// the Model Exchange mode, the last step, ω there and whether the first angle is pending;
 /// 6 was each of those two changes alone on its branch; 5: version 4's values, then the
 /// zero-velocity model and presliding parameters and the presliding state). The state also
 /// carries its value count, so a layout with another number of values is refused whatever its
 /// version.
-pub const STATE_VERSION: u8 = 7;
+pub const STATE_VERSION: u8 = 8;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -64,7 +65,7 @@ pub struct Outputs {
 /// Every value of a PinJoint instance a variable reads or writes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Values {
-    /// The 34 model parameters (`lubricant.temperature` is replaced by the input).
+    /// The 35 model parameters (`lubricant.temperature` is replaced by the input).
     pub params: Params,
     /// `zero_velocity.*`: the model, the band and the presliding parameters.
     pub zv: ZeroVelocitySettings,
@@ -321,12 +322,12 @@ pub fn excursion(s: &Values) -> Option<pinjoint::validity::Excursion> {
 mod tests {
     use super::*;
 
-    /// The state order of version 7: the parameters (the complete model's among them), then
+    /// The state order of version 8 (7's, with one more parameter): the parameters (the complete model's among them), then
     /// version 5's values, then the host inertia and the host-convention bookkeeping. Version 5: version 4's (parameters, band, angle, speed, load,
     /// energy, fidelity code, tolerance, envelope, temperature), then the zero-velocity
     /// parameters and the presliding state.
     #[test]
-    fn the_state_order_is_that_of_version_7() {
+    fn the_state_order_is_that_of_version_8() {
         let names: Vec<&str> = TABLE.stored().iter().map(|&i| TABLE.rows()[i].var.name.as_str()).collect();
         let p = PARAMS.len();
         assert_eq!(names[..p], PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect::<Vec<_>>()[..]);

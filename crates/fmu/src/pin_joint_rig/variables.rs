@@ -31,9 +31,10 @@ use std::sync::LazyLock;
 
 pub use super::settings::rig_spec;
 
-/// Version of the serialized state's layout (4: version 3's with the complete model's eight
+/// Version of the serialized state's layout (5: version 4's with the parameter
+/// `grease.upper_service_temperature` after the other model parameters; 4: version 3's with the complete model's eight
 /// parameters, `model.paper` and `grease.*`; 3: the `temperature` input is the last setting).
-pub const STATE_VERSION: u8 = 4;
+pub const STATE_VERSION: u8 = 5;
 
 /// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
 pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
