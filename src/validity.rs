@@ -437,7 +437,7 @@ mod tests {
         let cap = crate::Joint::new(&p).unwrap().capacity();
         assert_eq!(round(cap / 1e8, 2), 5.05, "{cap}");
         // The grease classes: (class, lower and upper service limit in C, the parameter in K).
-        let classes = [("MIL-PRF-23827 Type I", -73.0, 121.0, 394.15), ("MIL-PRF-81322", -54.0, 177.0, 450.15)];
+        let classes: [(&str, f64, f64, f64); 2] = [("MIL-PRF-23827 Type I", -73.0, 121.0, 394.15), ("MIL-PRF-81322", -54.0, 177.0, 450.15)];
         for (class, lo, hi, kelvin) in classes {
             assert!((hi + 273.15 - kelvin).abs() < 1e-9 && lo < hi, "{class}");
         }

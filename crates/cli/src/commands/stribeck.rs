@@ -78,6 +78,8 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
     let inside_load = (RIG_LOAD_RANGE_N.0..=RIG_LOAD_RANGE_N.1).contains(&load);
     let band_label = if inside_load {
         "rig experiments, up to 41.9 rpm (validity: checked; beyond it extrapolation)"
+    } else if load.abs() > joint.load_edge() {
+        "rig experiments' speeds, up to 41.9 rpm (this load is past the Hertz contact's edge, a > R: outside)"
     } else {
         "rig experiments' speeds, up to 41.9 rpm (this load is outside 5-60 kN: extrapolation)"
     };
