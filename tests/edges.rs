@@ -79,7 +79,7 @@ fn outside_or_named(r: &Result<pinjoint::OperatingPoint, ModelError>) -> Result<
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(128))]
 
     /// Past either edge: `outside` or a named refusal, never `extrapolation`; inside both:
     /// the envelope's level, exactly as before the edges existed.
@@ -87,12 +87,17 @@ proptest! {
     fn past_an_edge_is_outside_and_inside_is_the_envelopes_level(
         p in joint_params(),
         x in 0.0f64..=1.0,
-        load_exp in -2.0f64..8.0,
+        near_t_max in prop_oneof![1 => Just(None), 2 => (-2.0f64..2.0).prop_map(Some)],
+        load_exp in prop_oneof![-2.0f64..8.0, -0.3f64..0.3],
         w in prop_oneof![Just(0.0), log_uniform(1e-3, 100.0), log_uniform(1e-3, 100.0).prop_map(|w| -w)],
         sign in prop::sample::select(vec![1.0, -1.0]),
     ) {
         let mut p = p;
         p.lubricant.temperature = temperature_for(&p, x);
+        if let Some(dt) = near_t_max {
+            let lo = if p.model.paper { PAPER_MIN_TEMPERATURE } else { MIN_TEMPERATURE };
+            p.lubricant.temperature = (p.grease.upper_service_temperature + dt).clamp(lo, MAX_TEMPERATURE);
+        }
         let joint = match Joint::new(&p) {
             Ok(j) => j,
             // Roelands' relation with these parameters (eta_0(T) beyond a glass) names the key.
