@@ -107,3 +107,24 @@ fn the_parameter_file_takes_the_key() {
     let (_d, pf) = temp_file("bad.toml", "[grease]\nupper_service_temperature = 100.0\n");
     fails(&["point", "--load", "20000", "--speed", "1", "--params", s(&pf)], None, 1, &["grease.upper_service_temperature = 100 K", "[218.15, 673.15]"]);
 }
+
+/// `pinjoint ranges`: the library's edges, checked envelope and refusal limits, for the
+/// joint of a parameter file; the table says the same numbers.
+#[test]
+fn ranges_reports_the_edges() {
+    let text = "[geometry]\npin_radius = 0.03\nbush_radius = 0.03003\n[grease]\nupper_service_temperature = 450.15\n";
+    let (_d, pf) = temp_file("p.toml", text);
+    let j = Joint::new(&Params::from_toml_str(text).unwrap()).unwrap();
+    let o = ok(&["ranges", "--params", s(&pf), "--json"]);
+    let m: serde_json::Value = serde_json::from_str(&o.stdout).unwrap();
+    // serde_json's default float parsing may be 1 ulp off the shortest round-trip text.
+    let same = |v: &serde_json::Value, x: f64| (v.as_f64().unwrap() / x - 1.0).abs() <= 1e-15;
+    assert!(same(&m["edges"]["load"]["value"], j.load_edge()), "{}", o.stdout);
+    assert_eq!(m["edges"]["temperature"]["value"].as_f64(), Some(450.15));
+    assert!(same(&m["refused"]["load"]["at_or_beyond"], j.capacity()), "{}", o.stdout);
+    assert_eq!(m["checked"][0]["hi"].as_f64(), Some(60e3));
+    assert_ne!(j.load_edge(), Joint::new(&Params::default()).unwrap().load_edge());
+    let o = ok(&["ranges"]);
+    assert!(o.stdout.contains("above 96666.6 N") && o.stdout.contains("above 394.15 K"), "{}", o.stdout);
+    assert!(o.stdout.contains("at or beyond 5.04677e8 N") && o.stdout.contains("outside 218.15 .. 673.15 K"), "{}", o.stdout);
+}
