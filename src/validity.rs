@@ -186,7 +186,10 @@ pub const RANGES: [Range; 5] = [LOAD, SLIDING_SPEED, TEMPERATURE, FREQUENCY, STR
 /// The declared service range of the complete model (issue 28): every operating point with
 /// a load in [[`SERVICE_LOAD_MIN`], the capacity), |ω| ≤ [`SERVICE_SPEED_MAX`] and a temperature
 /// in [[`SERVICE_TEMPERATURE_MIN`], [`SERVICE_TEMPERATURE_MAX`]] is answered at every fidelity
-/// level (no refusal; `tests/complete.rs`).
+/// level (no refusal; `tests/complete.rs`). Within the model's assumptions up to the declared
+/// load capacity [`load_edge`] (96.7 kN for the paper's joint) and the grease's upper service
+/// temperature (394.15 K by default, above [`SERVICE_TEMPERATURE_MAX`]); above the load edge
+/// the answers are flagged [`Validity::Outside`].
 pub const SERVICE_LOAD_MIN: f64 = 10.0;
 /// Largest speed |ω| of the declared service range (rad/s): above the paper's simulated
 /// 800 rpm (83.8 rad/s) and the issue's 173 rad/s.

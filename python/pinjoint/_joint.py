@@ -144,7 +144,8 @@ class Joint:
 
     @property
     def capacity(self) -> float:
-        """The largest load (N) the asperity model can take for these parameters."""
+        """The largest load (N) the asperity model can take for these parameters: refused at and
+        beyond it. The declared load capacity is `load_edge` (answers above it are "outside")."""
         return self._native.capacity
 
     def evaluate(self, load: Any, speed: Any, errors: str = "raise") -> Dict[str, np.ndarray]:

@@ -224,8 +224,10 @@ impl Model for PinJointModel {
             ));
         }
         self.v.out = out;
-        let v = super::variables::validity(&self.v);
+        // The evaluator's joint has the parameters' edges already (no recomputation per step).
+        let edges = self.evaluator.as_ref().expect("built above").joint().edges();
         let s = &self.v;
+        let v = super::variables::validity_within(s, &edges);
         let excursion = || super::variables::excursion(s);
         crate::validity::note(&mut self.validity, v, excursion, "", &mut self.message);
         Ok(())

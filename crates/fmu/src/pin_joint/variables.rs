@@ -310,7 +310,12 @@ const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperatu
 /// The validity of the held inputs ([`pinjoint::validity::Edges::of_point`] with the
 /// parameters' edges).
 pub fn validity(s: &Values) -> pinjoint::Validity {
-    pinjoint::validity::Edges::new(&s.params).of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
+    validity_within(s, &pinjoint::validity::Edges::new(&s.params))
+}
+
+/// [`validity`] with the parameters' `edges` given (the evaluator's joint holds them).
+pub fn validity_within(s: &Values, edges: &pinjoint::validity::Edges) -> pinjoint::Validity {
+    edges.of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
 }
 
 /// The first excursion of the held inputs (as [`validity`]), for the log.
