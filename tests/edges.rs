@@ -151,15 +151,15 @@ proptest! {
             }
             Ok(())
         };
-        if edge < joint.capacity() * 0.5 {
-            if let (Ok(a), Ok(b)) = (joint.evaluate(edge * (1.0 - 1e-9), w), joint.evaluate(edge * (1.0 + 1e-9), w)) {
-                // Inside the temperature edge only the load decides.
-                if p.lubricant.temperature <= p.grease.upper_service_temperature {
-                    prop_assert_ne!(a.validity, Validity::Outside);
-                }
-                prop_assert_eq!(b.validity, Validity::Outside);
-                close(&a, &b)?;
+        if edge < joint.capacity() * 0.5
+            && let (Ok(a), Ok(b)) = (joint.evaluate(edge * (1.0 - 1e-9), w), joint.evaluate(edge * (1.0 + 1e-9), w))
+        {
+            // Inside the temperature edge only the load decides.
+            if p.lubricant.temperature <= p.grease.upper_service_temperature {
+                prop_assert_ne!(a.validity, Validity::Outside);
             }
+            prop_assert_eq!(b.validity, Validity::Outside);
+            close(&a, &b)?;
         }
         let t_max = p.grease.upper_service_temperature;
         let lo = if p.model.paper { PAPER_MIN_TEMPERATURE } else { MIN_TEMPERATURE };

@@ -159,7 +159,7 @@ fn the_rig_says_outside_above_the_upper_service_temperature() {
         assert_eq!(status, OK, "{}", h.last());
         for k in 0..5 {
             h.step(c, f64::from(k) * 0.05, f64::from(k + 1) * 0.05);
-            let v = try_get_in(&h.info, c, "validity").unwrap();
+            let v = try_get_in(h.info, c, "validity").unwrap();
             // Before the first stroke's load is carried the sample may be outside 5-60 kN.
             assert!(v == code || (code < 3.0 && v == 1.0), "{temp} K, T_max {t_max:?}: {v}");
             if code == 3.0 {
