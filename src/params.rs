@@ -87,6 +87,14 @@ pub const DEFAULT_TEMPERATURE: f64 = 293.15;
 /// mineral oils of Stachowiak & Batchelor's Table 2.3 (`tests/published_values.rs`).
 pub const DEFAULT_ROELANDS_TEMPERATURE_INDEX: f64 = 1.262;
 
+/// Default upper service temperature of the grease (K), +121 °C: the upper limit of
+/// MIL-PRF-23827 Type I (−73 °C to +121 °C), the class of the default grease (a lithium-soap
+/// grease on a diester base oil; [`crate::grease`], docs/cold-day.md). Above it a grease of
+/// this class is outside its specification (it bleeds, softens and oxidises; its dropping
+/// point is not far above): the model's grease and its supply of oil to the contact are not
+/// this joint's any more. A MIL-PRF-81322 grease (−54 °C to +177 °C) would set 450.15 K.
+pub const DEFAULT_UPPER_SERVICE_TEMPERATURE: f64 = 394.15;
+
 /// Starved-inlet correction of the central film (an extension, off by default; see
 /// [`crate::starvation`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -140,7 +148,7 @@ pub struct Grease {
     pub supply_exponent: f64,
     /// T_max, the grease's upper service temperature (K, absolute: not quoted at the
     /// reference temperature). Above it every answer is `outside` the model's assumptions
-    /// ([`crate::validity::Edges`]), with either model.
+    /// (the validity module's `Edges`; docs/validity.md), with either model.
     pub upper_service_temperature: f64,
 }
 
@@ -226,7 +234,7 @@ impl Default for Grease {
             yield_activation: c::DEFAULT_YIELD_ACTIVATION,
             consistency_activation: c::DEFAULT_CONSISTENCY_ACTIVATION,
             supply_exponent: c::DEFAULT_SUPPLY_EXPONENT,
-            upper_service_temperature: crate::validity::DEFAULT_UPPER_SERVICE_TEMPERATURE,
+            upper_service_temperature: DEFAULT_UPPER_SERVICE_TEMPERATURE,
         }
     }
 }

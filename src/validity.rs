@@ -249,13 +249,9 @@ pub fn excursion(load: f64, sliding_speed: f64, temperature: f64, paper: bool) -
     Edges::paper().excursion(load, sliding_speed, temperature, paper)
 }
 
-/// Default upper service temperature of the grease (K), +121 °C: the upper limit of
-/// MIL-PRF-23827 Type I (−73 °C to +121 °C), the class of the default grease (a lithium-soap
-/// grease on a diester base oil; [`crate::grease`], docs/cold-day.md). Above it a grease of
-/// this class is outside its specification (it bleeds, softens and oxidises; its dropping
-/// point is not far above): the model's grease and its supply of oil to the contact are not
-/// this joint's any more. A MIL-PRF-81322 grease (−54 °C to +177 °C) would set 450.15 K.
-pub const DEFAULT_UPPER_SERVICE_TEMPERATURE: f64 = 394.15;
+/// Default upper service temperature of the grease (K), +121 °C (MIL-PRF-23827 Type I, the
+/// default grease's class): [`crate::params::DEFAULT_UPPER_SERVICE_TEMPERATURE`].
+pub use crate::params::DEFAULT_UPPER_SERVICE_TEMPERATURE;
 
 /// What the upper service temperature rests on, for messages.
 pub const UPPER_SERVICE_SOURCE: &str =
