@@ -4,19 +4,19 @@
 //!
 //! | value references | variables | state |
 //! |---|---|---|
-//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 35–37 |
-//! | 10–21, 22–25 | outputs (`min_film_thickness`, `min_lambda_ratio` at 20, 21; then the complete model's `clearance_torque`, `journal_weight`, `eccentricity_ratio`, `grease_yield_torque`; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 38 |
-//! | 100–133 | the 34 parameters of [`pinjoint::params::PARAMS`], `section.key` (`model.paper` and `grease.enabled` Booleans) | 0–33 |
-//! | 200 | `zero_velocity.speed_band` | 34 |
-//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 39 |
-//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 40–44 |
-//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 45 |
-//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 46–49 |
-//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 50 |
-//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 51, 52 |
-//! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature | not stored |
-//! | 205 | `zero_velocity.host_inertia` | 53 |
-//! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 54–57 |
+//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 36–38 |
+//! | 10–21, 22–25 | outputs (`min_film_thickness`, `min_lambda_ratio` at 20, 21; then the complete model's `clearance_torque`, `journal_weight`, `eccentricity_ratio`, `grease_yield_torque`; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 39 |
+//! | 100–134 | the 35 parameters of [`pinjoint::params::PARAMS`], `section.key` (`model.paper` and `grease.enabled` Booleans) | 0–34 |
+//! | 200 | `zero_velocity.speed_band` | 35 |
+//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 40 |
+//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 41–45 |
+//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 46 |
+//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 47–50 |
+//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 51 |
+//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 52, 53 |
+//! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong, 3 outside; [`pinjoint::validity`]), after the temperature | not stored |
+//! | 205 | `zero_velocity.host_inertia` | 54 |
+//! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 55–58 |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
@@ -28,14 +28,15 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (7: version 5's values with the complete model's
+/// Version of the serialized state's layout (8: version 7's with the parameter
+/// `grease.upper_service_temperature` after the other parameters; 7: version 5's values with the complete model's
 /// eight parameters, `model.paper` and `grease.*`, after the paper's, then the host inertia,
 /// the Model Exchange mode, the last step, ω there and whether the first angle is pending;
 /// 6 was each of those two changes alone on its branch; 5: version 4's values, then the
 /// zero-velocity model and presliding parameters and the presliding state). The state also
 /// carries its value count, so a layout with another number of values is refused whatever its
 /// version.
-pub const STATE_VERSION: u8 = 7;
+pub const STATE_VERSION: u8 = 8;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -64,7 +65,7 @@ pub struct Outputs {
 /// Every value of a PinJoint instance a variable reads or writes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Values {
-    /// The 34 model parameters (`lubricant.temperature` is replaced by the input).
+    /// The 35 model parameters (`lubricant.temperature` is replaced by the input).
     pub params: Params,
     /// `zero_velocity.*`: the model, the band and the presliding parameters.
     pub zv: ZeroVelocitySettings,
@@ -236,7 +237,7 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(Row::new(band, |s: &Values| s.zv.band, |s, x| s.zv.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease); above grease.upper_service_temperature (121 C by default) outside",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
     rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows.extend(zero_velocity::rows(201, p + 12, |s: &Values| &s.zv, |s| &mut s.zv));
@@ -304,23 +305,34 @@ fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
 }
 
 /// The `validity` output's description.
-const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
+const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW), 3 outside (beyond the model's assumptions: load above the one at which the Hertz half-width of eq. 6 reaches the pin radius, pi E' B R^2/(8 R') = 96.7 kN with the default parameters, or temperature above grease.upper_service_temperature, 121 C by default; still answered, continuous across the edge). Logged once per excursion, and again when it goes outside. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
 
-/// The validity of the held inputs ([`pinjoint::validity::of_point`]).
+/// The validity of the held inputs ([`pinjoint::validity::Edges::of_point`] with the
+/// parameters' edges).
 pub fn validity(s: &Values) -> pinjoint::Validity {
-    pinjoint::validity::of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
+    validity_within(s, &pinjoint::validity::Edges::new(&s.params))
+}
+
+/// [`validity`] with the parameters' `edges` given (the evaluator's joint holds them).
+pub fn validity_within(s: &Values, edges: &pinjoint::validity::Edges) -> pinjoint::Validity {
+    edges.of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
+}
+
+/// The first excursion of the held inputs (as [`validity`]), for the log.
+pub fn excursion(s: &Values) -> Option<pinjoint::validity::Excursion> {
+    pinjoint::validity::Edges::new(&s.params).excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// The state order of version 7: the parameters (the complete model's among them), then
+    /// The state order of version 8 (7's, with one more parameter): the parameters (the complete model's among them), then
     /// version 5's values, then the host inertia and the host-convention bookkeeping. Version 5: version 4's (parameters, band, angle, speed, load,
     /// energy, fidelity code, tolerance, envelope, temperature), then the zero-velocity
     /// parameters and the presliding state.
     #[test]
-    fn the_state_order_is_that_of_version_7() {
+    fn the_state_order_is_that_of_version_8() {
         let names: Vec<&str> = TABLE.stored().iter().map(|&i| TABLE.rows()[i].var.name.as_str()).collect();
         let p = PARAMS.len();
         assert_eq!(names[..p], PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect::<Vec<_>>()[..]);
