@@ -360,7 +360,7 @@ mod tests {
         bytes[0] = 9;
         let e = m.deserialize(&bytes).unwrap_err();
         assert!(matches!(e, ModelError::RejectedState(_)));
-        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 7");
+        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 8");
         bytes[0] = STATE_VERSION;
         m.deserialize(&bytes).unwrap();
     }

@@ -17,6 +17,8 @@
 //! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature | not stored |
 //! | 205 | `zero_velocity.host_inertia` | 53 |
 //! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 54–57 |
+//! | 206 | `zero_velocity.host_coupling` (Integer: 0 sequential, 1 parallel) | 58 |
+//! | 310, 207, 31 | Integer mirrors `fidelity_code`, `zero_velocity.model_code`, `validity_code` of the three enumerations ([`crate::table::integer_mirrors`]) | not stored |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
@@ -28,14 +30,15 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (7: version 5's values with the complete model's
+/// Version of the serialized state's layout (8: version 7's values, then
+/// `zero_velocity.host_coupling`; 7: version 5's values with the complete model's
 /// eight parameters, `model.paper` and `grease.*`, after the paper's, then the host inertia,
 /// the Model Exchange mode, the last step, ω there and whether the first angle is pending;
 /// 6 was each of those two changes alone on its branch; 5: version 4's values, then the
 /// zero-velocity model and presliding parameters and the presliding state). The state also
 /// carries its value count, so a layout with another number of values is refused whatever its
 /// version.
-pub const STATE_VERSION: u8 = 7;
+pub const STATE_VERSION: u8 = 8;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -243,8 +246,13 @@ fn rows() -> Vec<Row<Values>> {
     rows.extend(presliding_rows(p + 16));
     rows.push(zero_velocity::host_inertia_row(205, p + 19, |s: &Values| &s.zv, |s| &mut s.zv));
     rows.extend(host_rows(p + 20));
-    rows
+    rows.push(zero_velocity::host_coupling_row(206, p + 24, |s: &Values| &s.zv, |s| &mut s.zv));
+    crate::table::integer_mirrors(rows, &MIRRORS)
 }
+
+/// The Integer mirrors of PinJoint's enumerations: (enumeration, mirror, value reference).
+pub const MIRRORS: [(&str, &str, u32); 3] =
+    [("fidelity", "fidelity_code", 310), ("zero_velocity.model", "zero_velocity.model_code", 207), ("validity", "validity_code", 31)];
 
 /// The host-convention bookkeeping of the presliding state (version 7): the Model Exchange
 /// mode, the last step and ω there, the pending first angle; slots from `slot`.
@@ -315,12 +323,13 @@ pub fn validity(s: &Values) -> pinjoint::Validity {
 mod tests {
     use super::*;
 
-    /// The state order of version 7: the parameters (the complete model's among them), then
-    /// version 5's values, then the host inertia and the host-convention bookkeeping. Version 5: version 4's (parameters, band, angle, speed, load,
+    /// The state order of version 8: the parameters (the complete model's among them), then
+    /// version 5's values, then the host inertia and the host-convention bookkeeping, then the
+    /// host coupling. Version 5: version 4's (parameters, band, angle, speed, load,
     /// energy, fidelity code, tolerance, envelope, temperature), then the zero-velocity
     /// parameters and the presliding state.
     #[test]
-    fn the_state_order_is_that_of_version_7() {
+    fn the_state_order_is_that_of_version_8() {
         let names: Vec<&str> = TABLE.stored().iter().map(|&i| TABLE.rows()[i].var.name.as_str()).collect();
         let p = PARAMS.len();
         assert_eq!(names[..p], PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect::<Vec<_>>()[..]);
@@ -331,7 +340,8 @@ mod tests {
                 "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max", "temperature",
                 "zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time",
                 "presliding_torque", "presliding_reference_angle", "presliding_angle_driven", "zero_velocity.host_inertia",
-                "presliding_mode", "presliding_step", "presliding_reference_speed", "presliding_angle_pending"
+                "presliding_mode", "presliding_step", "presliding_reference_speed", "presliding_angle_pending",
+                "zero_velocity.host_coupling"
             ]
         );
     }
@@ -354,5 +364,37 @@ mod tests {
         assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in [218.15, 673.15] K");
         assert_eq!(msg("fidelity", 0.5), "parameter fidelity = 0.5 is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)");
         assert!(TABLE.check(at("load"), -1e308).is_ok());
+        assert_eq!(msg("zero_velocity.model_code", 2.0), "parameter zero_velocity.model_code = 2 is out of range: it must be 0 (band) or 1 (presliding)");
+        assert_eq!(msg("zero_velocity.host_coupling", 2.0), "parameter zero_velocity.host_coupling = 2 is out of range: it must be in [0, 1]");
+    }
+
+    /// Each Integer mirror reads and sets its enumeration's value, with the enumeration's
+    /// codes as its range, and is not stored.
+    #[test]
+    fn the_integer_mirrors_are_their_enumerations() {
+        for (of, name, _) in MIRRORS {
+            let (e, m) = (TABLE.index(of).unwrap(), TABLE.index(name).unwrap());
+            let (ev, mv) = (&TABLE.rows()[e].var, &TABLE.rows()[m].var);
+            let Kind::Enumeration(t) = ev.kind else { panic!("{of} is an Enumeration") };
+            assert_eq!(mv.kind, Kind::Integer);
+            assert_eq!((mv.causality, mv.variability, mv.start), (ev.causality, ev.variability, ev.start));
+            assert_eq!(mv.min, Some(t.items.iter().map(|i| i.1).min().unwrap() as f64));
+            assert_eq!(mv.max, Some(t.items.iter().map(|i| i.1).max().unwrap() as f64));
+            for (item, code, _) in t.items {
+                assert!(mv.description.contains(&format!("{code} = {item}")), "{name}: {}", mv.description);
+            }
+            assert!(!TABLE.stored().contains(&m), "{name} is not stored");
+            let mut v = Values::default();
+            if ev.causality == Causality::Parameter {
+                let last = t.items.last().unwrap().1 as f64;
+                assert_eq!(TABLE.set(&mut v, m, last).name, of, "a set of {name} reports {of}");
+                assert_eq!((TABLE.get(&v, e), TABLE.get(&v, m)), (last, last));
+                TABLE.set(&mut v, e, 0.0);
+                assert_eq!(TABLE.get(&v, m), 0.0);
+            } else {
+                v.load = 0.0;
+                assert_eq!(TABLE.get(&v, m), TABLE.get(&v, e));
+            }
+        }
     }
 }

@@ -14,6 +14,7 @@
 //! | 401–405 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
 //! | 3 | input `temperature` (K, display degC), last in the table so earlier entries keep their places |
 //! | 24 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature; not stored |
+//! | 232, 233, 410, 25 | Integer mirrors `rig.formulation_code`, `rig.method_code`, `fidelity_code`, `validity_code` of the four enumerations ([`crate::table::integer_mirrors`]); not stored |
 //!
 //! The `[rig]` file keys `frequency` and `amplitude` are the stroke parameters
 //! `frequency` and `amplitude`; the key `load` is the `load` input.
@@ -259,8 +260,16 @@ fn rows() -> Vec<Row<Values>> {
         "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease)",
         |s: &Values| s.settings.temperature, |s, x| s.settings.temperature = x));
     rows.push(crate::validity::output(24, &["load", "temperature"], VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
-    rows
+    crate::table::integer_mirrors(rows, &MIRRORS)
 }
+
+/// The Integer mirrors of PinJointRig's enumerations: (enumeration, mirror, value reference).
+pub const MIRRORS: [(&str, &str, u32); 4] = [
+    ("rig.formulation", "rig.formulation_code", 232),
+    ("rig.method", "rig.method_code", 233),
+    ("fidelity", "fidelity_code", 410),
+    ("validity", "validity_code", 25),
+];
 
 /// The `validity` output's description.
 const VALIDITY_TEXT: &str = "Whether the sample's load, sliding speed |omega| R and temperature, and (with the internal sine stroke) its frequency and amplitude, are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C, 0.03-1 Hz, 40 deg): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion";
