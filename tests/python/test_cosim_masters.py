@@ -126,18 +126,22 @@ def test_the_switches_are_reachable_as_integers(fmu_path, master):
     full = run(fmu_path, {"fidelity_code": 0, "zero_velocity.model_code": 0}, {"angular_velocity": 1.0, "load": 20e3})
     boundary = run(fmu_path, {"fidelity_code": 2, "zero_velocity.model_code": 0}, {"angular_velocity": 1.0, "load": 20e3})
     assert (full["fidelity_code"], boundary["fidelity_code"]) == (0, 2)
-    # fidelity boundary is mu = mu_c (0.12 by default); the full solve at 1 rad/s is not.
-    assert boundary["friction_coefficient"] == pytest.approx(0.12, rel=1e-12)
-    assert abs(full["friction_coefficient"] - 0.12) > 1e-6
+    # fidelity boundary is the boundary friction, the same at every speed (mu_c and the grease's
+    # share at this load); the full solve's mu moves with the speed (the film builds).
+    fast = {"angular_velocity": 3.0, "load": 20e3}
+    assert run(fmu_path, {"fidelity_code": 2}, fast)["friction_coefficient"] == boundary["friction_coefficient"]
+    assert boundary["friction_coefficient"] == pytest.approx(0.12, rel=1e-3)
+    assert abs(run(fmu_path, {"fidelity_code": 0}, fast)["friction_coefficient"] - full["friction_coefficient"]) > 1e-5
     # zero_velocity.model_code = 0 (band): inside the band (0.01 rad/s) the torque is the ramp,
-    # about -T_s/2 at half the band; presliding (1) with no angle set and 3 steps of 5 mrad/s
-    # holds a small elastic torque only.
+    # about -T_s/2 at half the band; presliding (1) with no angle set is deflected by w h per
+    # step: after 3 steps the elastic k 3 w h plus the damping t_d k w (k = T_s/phi_s).
     band = run(fmu_path, {"zero_velocity.model_code": 0}, slow)
     presliding = run(fmu_path, {"zero_velocity.model_code": 1}, slow)
     assert band["zero_velocity.model_code"] == 0 and presliding["zero_velocity.model_code"] == 1
     t_s = 0.12 * 0.028 * 20e3
     assert band["torque"] == pytest.approx(-0.5 * t_s, rel=0.02)
-    assert abs(presliding["torque"]) < 0.1 * t_s
+    k = t_s / 1.5e-3
+    assert presliding["torque"] == pytest.approx(-(k * 3 * 0.005 * 1e-2 + 0.01 * k * 0.005), rel=0.02)
     # validity_code: 0 checked at 20 kN, 1 extrapolation at 100 kN (outside 5-60 kN).
     assert full["validity_code"] == 0
     assert run(fmu_path, {}, {"angular_velocity": 1.0, "load": 100e3})["validity_code"] == 1
