@@ -107,7 +107,7 @@ pub fn host_inertia_row<S: 'static>(vr: u32, slot: usize, at: fn(&S) -> &ZeroVel
 /// value reference `vr`, state slot `slot`.
 pub fn host_coupling_row<S: 'static>(vr: u32, slot: usize, at: fn(&S) -> &ZeroVelocitySettings, at_mut: fn(&mut S) -> &mut ZeroVelocitySettings) -> Row<S> {
     let mut v = declare(presliding::HOST_COUPLING_NAME, vr, Kind::Integer, Causality::Parameter, None, None,
-        "How the host couples the torque to its body: 0 = sequential (the default: the host sets angle and angular_velocity, steps the FMU and integrates          its body with the torque of the same step, as fmpy loops and Simulink do), 1 = parallel (the master steps every FMU and then exchanges the values,          so the body integrates the torque of the previous communication point, as libcosim/OSP and Ecos do). With 1 and zero_velocity.host_inertia = J          given, the presliding stiffness is capped at J/(27 h^2) for that delayed loop (h the communication step), so a hold stays stable and free of chatter");
+        "How the host couples the torque to its body: 0 = sequential (the default: the host sets angle and angular_velocity, steps the FMU and integrates its body with the torque of the same step, as fmpy loops and Simulink do), 1 = parallel (the master steps every FMU and then exchanges the values, so the body integrates the torque of the previous communication point, as libcosim/OSP and Ecos do). With 1 and zero_velocity.host_inertia = J given, the presliding stiffness is capped at J/(27 h^2) for that delayed loop (h the communication step), so a hold stays stable and free of chatter");
     v.start = Some(0.0);
     v.min = Some(0.0);
     v.max = Some(1.0);
