@@ -117,6 +117,26 @@ def _libcosim_pin(fmu_path, integers, reals, steps=3, h=1e-2):
     return out
 
 
+def _fmpy_validity(fmu_path, reals, steps=3, h=1e-2):
+    """The Enumeration `validity` after `steps` steps at `reals`, read by fmpy."""
+    from fmpy import extract, read_model_description
+    from fmpy.fmi2 import FMU2Slave
+    md = read_model_description(str(fmu_path))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    fmu = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(fmu_path)), modelIdentifier=md.coSimulation.modelIdentifier)
+    fmu.instantiate()
+    fmu.setupExperiment(startTime=0.0)
+    fmu.enterInitializationMode()
+    fmu.exitInitializationMode()
+    fmu.setReal([vr[k] for k in reals], list(reals.values()))
+    for k in range(steps):
+        fmu.doStep(currentCommunicationPoint=k * h, communicationStepSize=h)
+    (code,) = fmu.getInteger([vr["validity"]])
+    fmu.terminate()
+    fmu.freeInstance()
+    return code
+
+
 @pytest.mark.parametrize("master", ["libcosim", "ecos"])
 def test_the_switches_are_reachable_as_integers(fmu_path, master):
     """fidelity_code, zero_velocity.model_code set, read back and in effect; validity_code read,
@@ -142,9 +162,12 @@ def test_the_switches_are_reachable_as_integers(fmu_path, master):
     assert band["torque"] == pytest.approx(-0.5 * t_s, rel=0.02)
     k = t_s / 1.5e-3
     assert presliding["torque"] == pytest.approx(-(k * 3 * 0.005 * 1e-2 + 0.01 * k * 0.005), rel=0.02)
-    # validity_code: 0 checked at 20 kN, 1 extrapolation at 100 kN (outside 5-60 kN).
+    # validity_code: 0 checked at 20 kN; at 100 kN (outside 5-60 kN) the code fmpy reads from
+    # the Enumeration `validity` at the same inputs (1, extrapolation, today).
     assert full["validity_code"] == 0
-    assert run(fmu_path, {}, {"angular_velocity": 1.0, "load": 100e3})["validity_code"] == 1
+    high = {"angular_velocity": 1.0, "load": 100e3}
+    code = run(fmu_path, {}, high)["validity_code"]
+    assert code == _fmpy_validity(fmu_path, high) and code != 0
 
 
 def test_the_integer_codes_are_the_library_codes(model_description):
@@ -181,7 +204,6 @@ def test_a_container_of_pinjoint_and_the_leg_runs_in_fmpy(fmu_path, leg_fmu, tmp
     """fmucontainer packs PinJoint and the leg into one FMU (its default schedule is parallel:
     host_coupling = 1); fmpy runs it; the scene holds, breaks away and rests; the container
     passes the checker."""
-    from fmpy import simulate_fmu
     shutil.copy(fmu_path, tmp_path / "PinJoint.fmu")
     shutil.copy(leg_fmu, tmp_path / "Leg.fmu")
     sc = cs.Scene(20.0, 1e-2)
@@ -201,9 +223,19 @@ def test_a_container_of_pinjoint_and_the_leg_runs_in_fmpy(fmu_path, leg_fmu, tmp
     container = tmp_path / "GearLegScene.fmu"
     assert container.exists(), out.stdout + out.stderr
     _fmutool_check(container)
-    res = simulate_fmu(str(container), stop_time=sc.t_end, step_size=sc.step, output_interval=sc.step,
-                       output=["angle", "angular_velocity", "torque", "validity_code"])
-    r = np.column_stack([res["time"], res["angle"], res["angular_velocity"], res["torque"], res["validity_code"]])
+    # In a process of its own: the container loads the pythonfmu leg, whose embedded Python
+    # crashed fmi2Instantiate in a pytest process that had run many other FMUs before (a
+    # segmentation fault, not seen in a fresh process).
+    script = (
+        "import sys, numpy as np\n"
+        "from fmpy import simulate_fmu\n"
+        f"res = simulate_fmu({str(container)!r}, stop_time={sc.t_end!r}, step_size={sc.step!r}, output_interval={sc.step!r},\n"
+        "                   output=['angle', 'angular_velocity', 'torque', 'validity_code'])\n"
+        "np.save(sys.argv[1], np.column_stack([res['time'], res['angle'], res['angular_velocity'], res['torque'], res['validity_code']]))\n")
+    result = tmp_path / "result.npy"
+    out = subprocess.run([sys.executable, "-c", script, str(result)], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stdout[-2000:] + out.stderr[-2000:]
+    r = np.load(result)
     check_scene(r[1:], sc)
 
 
