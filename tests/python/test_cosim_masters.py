@@ -255,3 +255,14 @@ def test_the_gear_leg_system_descriptions_run_in_libcosim(kind):
     m = check_scene(r, sc)
     # Held at 0.5 T_s by the stiffness J/(27 h^2) the parameters host_inertia and host_coupling select.
     assert m["hold_angle"] == pytest.approx(0.5 * cs.T_S / (mod.J / 27 / mod.STEP**2), rel=1e-3)
+
+
+def test_ecos_sets_and_reads_the_int32_switches_of_the_fmi3_fmu():
+    """FMI 3.0: the mirrors are Int32 variables; Ecos (which skips Enumerations there too) sets
+    fidelity_code and host_coupling through a parameter set and reads them and validity_code."""
+    from conftest import TARGET
+    fmi3 = TARGET / "fmu" / "fmi3" / "PinJoint.fmu"
+    out = _ecos_pin(fmi3, {"fidelity_code": 2, "zero_velocity.host_coupling": 1}, {"angular_velocity": 1.0, "load": 20e3})
+    assert out["fidelity_code"] == 2 and out["zero_velocity.host_coupling"] == 1 and out["validity_code"] == 0
+    fast = _ecos_pin(fmi3, {"fidelity_code": 2}, {"angular_velocity": 3.0, "load": 20e3})
+    assert fast["friction_coefficient"] == out["friction_coefficient"]  # boundary: the same at every speed
