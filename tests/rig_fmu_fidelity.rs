@@ -218,7 +218,7 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     let crc = fmi_layer::fmi2::bytes::crc32(&old[..n - 4]);
     old[n - 4..].copy_from_slice(&crc.to_le_bytes());
     assert!(deserialize(d, &old).is_err());
-    assert!(h.last().contains("PinJointRig state version 2; this FMU reads version 5"), "{}", h.last());
+    assert!(h.last().contains("PinJointRig state version 2; this FMU reads version 6"), "{}", h.last());
     let mut s = s;
     assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
     assert_eq!(unsafe { fmi2FreeFMUstate(d, &mut sd) }, OK);

@@ -11,6 +11,11 @@ fn expected(s: &Sample, joint: &pinjoint::Joint, cfg: &RigConfig) -> Vec<f64> {
     let contact = s.load > 0.0;
     // h_min and λ_min from the library's joint at the sample's state (0 without contact).
     let h_min = if contact { joint.min_film(s.load, s.angular_velocity, s.film_thickness, s.fluid_load_fraction) } else { 0.0 };
+    let validity = f64::from(
+        pinjoint::validity::of_point(s.load, s.angular_velocity.abs() * cfg.model.geometry.pin_radius, cfg.model.lubricant.temperature, cfg.model.model.paper)
+            .max(pinjoint::validity::of_stroke(cfg.rig.frequency, cfg.rig.amplitude))
+            .code(),
+    );
     vec![
         s.angle,
         s.angular_velocity,
@@ -26,12 +31,10 @@ fn expected(s: &Sample, joint: &pinjoint::Joint, cfg: &RigConfig) -> Vec<f64> {
         s.kinetic_energy,
         h_min,
         h_min / joint.composite_roughness(),
-        // validity: the sample's operating point and the sine stroke (pinjoint::validity).
-        f64::from(
-            pinjoint::validity::of_point(s.load, s.angular_velocity.abs() * cfg.model.geometry.pin_radius, cfg.model.lubricant.temperature, cfg.model.model.paper)
-                .max(pinjoint::validity::of_stroke(cfg.rig.frequency, cfg.rig.amplitude))
-                .code(),
-        ),
+        // validity and its Integer mirror validity_code: the sample's operating point and the
+        // sine stroke (pinjoint::validity).
+        validity,
+        validity,
     ]
 }
 

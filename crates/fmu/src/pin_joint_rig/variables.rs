@@ -14,6 +14,7 @@
 //! | 401–405 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
 //! | 3 | input `temperature` (K, display degC), last in the table so earlier entries keep their places |
 //! | 24 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong, 3 outside; [`pinjoint::validity`]), after the temperature; not stored |
+//! | 232, 233, 410, 25 | Integer mirrors `rig.formulation_code`, `rig.method_code`, `fidelity_code`, `validity_code` of the four enumerations ([`crate::table::integer_mirrors`]); not stored |
 //!
 //! The `[rig]` file keys `frequency` and `amplitude` are the stroke parameters
 //! `frequency` and `amplitude`; the key `load` is the `load` input.
@@ -34,7 +35,7 @@ pub use super::settings::rig_spec;
 /// Version of the serialized state's layout (5: version 4's with the parameter
 /// `grease.upper_service_temperature` after the other model parameters; 4: version 3's with the complete model's eight
 /// parameters, `model.paper` and `grease.*`; 3: the `temperature` input is the last setting).
-pub const STATE_VERSION: u8 = 5;
+pub const STATE_VERSION: u8 = 6;
 
 /// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
 pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
@@ -260,8 +261,16 @@ fn rows() -> Vec<Row<Values>> {
         "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease); above grease.upper_service_temperature (121 C by default) outside",
         |s: &Values| s.settings.temperature, |s, x| s.settings.temperature = x));
     rows.push(crate::validity::output(24, &["load", "temperature"], VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
-    rows
+    crate::table::integer_mirrors(rows, &MIRRORS)
 }
+
+/// The Integer mirrors of PinJointRig's enumerations: (enumeration, mirror, value reference).
+pub const MIRRORS: [(&str, &str, u32); 4] = [
+    ("rig.formulation", "rig.formulation_code", 232),
+    ("rig.method", "rig.method_code", 233),
+    ("fidelity", "fidelity_code", 410),
+    ("validity", "validity_code", 25),
+];
 
 /// The `validity` output's description.
 const VALIDITY_TEXT: &str = "Whether the sample's load, sliding speed |omega| R and temperature, and (with the internal sine stroke) its frequency and amplitude, are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C, 0.03-1 Hz, 40 deg): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW), 3 outside (beyond the model's assumptions: load above the one at which the Hertz half-width of eq. 6 reaches the pin radius, 96.7 kN with the default parameters, or temperature above grease.upper_service_temperature, 121 C by default). Logged once per excursion, and again when it goes outside";
