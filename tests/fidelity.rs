@@ -230,7 +230,7 @@ fn outside_the_envelope_table_and_boundary_fall_back_to_full_and_say_so_once() {
         let slow = (20e3, 1e-4);
         if f == Fidelity::Table {
             let e = ev.evaluate(slow.0, slow.1).unwrap();
-            assert_eq!(e.source, Source::Table, "below the envelope's speeds the table answers");
+            assert!(matches!(e.source, Source::Table | Source::Rest), "below the envelope's speeds the table answers: {:?}", e.source);
         }
         let below: &[(f64, f64)] = if f == Fidelity::Table { &[(20e3, 50.0)] } else { &[slow] };
         let outside = [(20e3, 50.0), (1e3, 1.0), (100e3, -3.0), below[0], (1e3, 0.0), (20e3, -10.0001)];
