@@ -81,7 +81,7 @@ def scene(name: str, n: int, fidelity: str, warm: int, steps: int, seed: int = 3
 
 
 def scenes(quick: bool) -> dict:
-    n, warm, steps, repeats = (1000, 100, 50, 1) if quick else (4000, 1000, 200, 3)
+    n, warm, steps, repeats = (1000, 100, 50, 1) if quick else (2000, 300, 100, 3)
     out = {}
     for name in SCENES:
         full, table, ratios = float("inf"), float("inf"), []

@@ -168,7 +168,7 @@ pub struct SceneBench {
 
 /// Every scene of [`SCENES`], table against full, paired within each repeat.
 fn scenes(quick: bool) -> Vec<SceneBench> {
-    let (n, warm, steps, reps) = if quick { (1_000, 100, 50, 1) } else { (4_000, 1_000, 200, 3) };
+    let (n, warm, steps, reps) = if quick { (1_000, 100, 50, 1) } else { (2_000, 300, 100, 3) };
     SCENES
         .iter()
         .enumerate()
@@ -401,7 +401,7 @@ pub fn section(b: &BatchBench) -> (Vec<(String, String)>, String) {
     ));
     for sc in &b.scenes {
         t.push((
-            format!("a `{}` scene at table ≤ 0.1 × full, per joint-step (Rust, {} joints)", sc.name, if b.joints >= 10_000 { 4_000 } else { 1_000 }),
+            format!("a `{}` scene at table ≤ 0.1 × full, per joint-step (Rust, {} joints)", sc.name, if b.joints >= 10_000 { 2_000 } else { 1_000 }),
             format!("{} — {:.3} × (fastest repeats: table {:.1} ns, full {:.0} ns a joint-step; {:.1} % of the joint-steps moving below 1e-3 rad/s)", met(sc.ratio <= 0.1), sc.ratio, sc.table_ns, sc.full_ns, 100.0 * sc.slow),
         ));
     }
@@ -482,7 +482,7 @@ pub fn section(b: &BatchBench) -> (Vec<(String, String)>, String) {
         body,
         "The host-driven scenes: n joints of 5–50 kN, each under a drive torque r·T_s (T_s its sliding torque at rest), \
          J = {SCENE_INERTIA} kg·m² and a host damping T_s/{SCENE_SPEED} rad/s, integrated explicitly at 1 ms with `step_with` \
-         (the batch knows the host's inertia and step); only the batch's calls are timed, after 1000 untimed steps. \
+         (the batch knows the host's inertia and step); only the batch's calls are timed (100 steps), after 300 untimed steps (the held joints settle). \
          At table fidelity the table covers the speeds below its envelope down to rest (the rest state below a measured floor, \
          a second table above it), so a held or creeping joint needs no complete solve. The scenes:\n"
     )

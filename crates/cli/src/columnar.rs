@@ -10,7 +10,8 @@
 //! the sweep's floor is the evaluation). Rows are written in row groups of at most
 //! [`ROW_GROUP_ROWS`], so memory stays bounded whatever the number of rows.
 
-use arrow_array::{ArrayRef, Float64Array, RecordBatch, StringArray};
+use arrow_array::builder::StringBuilder;
+use arrow_array::{ArrayRef, Float64Array, RecordBatch};
 use arrow_schema::{DataType, Field, Schema, SchemaRef};
 use parquet::arrow::ArrowWriter;
 use parquet::file::properties::{EnabledStatistics, WriterProperties};
@@ -130,7 +131,15 @@ impl<W: Write + Send> ParquetSink<W> {
                     }
                     Arc::new(Float64Array::from(v))
                 }
-                _ => Arc::new(StringArray::from_iter_values(blocks.iter().flat_map(|b| text_of(&b[c])))),
+                _ => {
+                    let mut t = StringBuilder::with_capacity(rows, rows * 8);
+                    for b in blocks {
+                        for v in text_of(&b[c]) {
+                            t.append_value(v);
+                        }
+                    }
+                    Arc::new(t.finish())
+                }
             };
             arrays.push(array);
         }
