@@ -202,6 +202,9 @@ fn block_kinds(numbers: usize) -> Vec<Values> {
     v
 }
 
+/// One batch of a Parquet input: load (N), speed (rad/s) and temperature (K) per row.
+pub type Rows = (Vec<f64>, Vec<f64>, Option<Vec<f64>>);
+
 /// Reads `load`, `speed` and (when present) `temperature` from a Parquet file in batches.
 pub struct ParquetRows {
     reader: parquet::arrow::arrow_reader::ParquetRecordBatchReader,
@@ -251,7 +254,7 @@ impl ParquetRows {
 
     /// The next batch: (load, speed, temperature) per row, or None at the end. A missing
     /// (null) value is an error naming its row (1-based, in the file's order).
-    pub fn next_batch(&mut self) -> Result<Option<(Vec<f64>, Vec<f64>, Option<Vec<f64>>)>, String> {
+    pub fn next_batch(&mut self) -> Result<Option<Rows>, String> {
         let Some(batch) = self.reader.next() else { return Ok(None) };
         let batch = batch.map_err(|e| format!("{}: {e}", self.file))?;
         let column = |name: &str| -> Result<Option<Vec<f64>>, String> {
@@ -278,9 +281,14 @@ fn numbers(a: &dyn arrow_array::Array) -> Result<Vec<f64>, (usize, &'static str)
     if let Some(i) = (0..a.len()).find(|&i| a.is_null(i)) {
         return Err((i, "is missing (null)"));
     }
+    // `as`: exact for every float and small integer; 64-bit integers round to the nearest double.
+    #[allow(clippy::cast_lossless)]
+    fn cast<T: Copy + num_cast::ToDouble>(v: &[T]) -> Vec<f64> {
+        v.iter().map(|&x| x.to_double()).collect()
+    }
     macro_rules! conv {
         ($t:ty) => {
-            a.as_primitive::<$t>().values().iter().map(|&x| x as f64).collect()
+            cast(a.as_primitive::<$t>().values())
         };
     }
     Ok(match a.data_type() {
@@ -296,4 +304,24 @@ fn numbers(a: &dyn arrow_array::Array) -> Result<Vec<f64>, (usize, &'static str)
         DataType::UInt64 => conv!(UInt64Type),
         _ => return Err((0, "is not numbers")),
     })
+}
+
+/// `as f64` for the numeric types of an Arrow column.
+mod num_cast {
+    /// The value as a double (Rust's `as`).
+    pub trait ToDouble {
+        /// See the trait.
+        fn to_double(self) -> f64;
+    }
+    macro_rules! impl_as {
+        ($($t:ty),*) => {
+            $(impl ToDouble for $t {
+                #[allow(clippy::cast_lossless, clippy::cast_precision_loss)]
+                fn to_double(self) -> f64 {
+                    self as f64
+                }
+            })*
+        };
+    }
+    impl_as!(f32, i8, i16, i32, i64, u8, u16, u32, u64);
 }
