@@ -38,6 +38,10 @@ magnitude μRP_T), film_thickness (m, central h_c), lambda_ratio (-), fluid_load
 asperity_load_fraction (1/γ2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-) \
 regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c), min_lambda_ratio (-, eq. 21 with h_min) and validity (checked | extrapolation | known-wrong: whether load, sliding speed and temperature are inside the paper's rig conditions, outside them, or below 0 C where μ is known to be too low; see docs/validity.md). Numbers are printed in full (shortest text that \
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
+PARQUET: --output FILE.parquet (or --format parquet) writes the same columns as Apache Parquet: \
+numbers as DOUBLE columns bit for bit, regime and validity as text, other input columns as text, \
+in row groups of 65536 rows. --input FILE.parquet reads the numeric columns load, speed and \
+optionally temperature (other columns are not copied).\n\n\
 A malformed row (missing field, non-numeric, non-finite, load = 0; a negative load is taken as its magnitude) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
 name beside it and renamed only on success). The input is read, evaluated and written in \
