@@ -44,6 +44,56 @@ def inputs(n: int, steps: int, seed: int = 30):
     return frames
 
 
+#: The host-driven scenes (as the Rust part's, crates/bench/src/bench_batch.rs): joints of
+#: 5-50 kN under a drive r*T_s (T_s the sliding torque at rest), J = 20 kg.m^2, a host damping
+#: T_s/2.5 rad/s, integrated explicitly at 1 ms; (name, r range, share reversing, frequency).
+SCENES = {
+    "held": ((0.3, 0.8), 0.0),
+    "creeping": ((0.8, 0.99), 0.0),
+    "reversing": ((1.2, 3.0), 1.0),
+    "sliding": ((1.6, 3.0), 0.0),
+    "mixed": ((0.3, 3.0), 0.5),
+}
+INERTIA, SPEED, H = 20.0, 2.5, 1e-3
+
+
+def scene(name: str, n: int, fidelity: str, warm: int, steps: int, seed: int = 39) -> float:
+    """ns a joint-step of PreslidingBatch.step (its calls alone) in scene `name`."""
+    (r0, r1), reversing = SCENES[name]
+    rng = np.random.default_rng(seed)
+    p = 5e3 * 10 ** rng.uniform(0.0, 1.0, n)
+    r = r0 * (r1 / r0) ** rng.uniform(size=n) if name == "mixed" else rng.uniform(r0, r1, n)
+    f = np.where(rng.uniform(size=n) < reversing, rng.uniform(0.5, 2.0, n), 0.0)
+    b = pinjoint.PreslidingBatch(n, host_inertia=np.full(n, INERTIA), fidelity=fidelity, envelope=ENVELOPE)
+    ts = b.sliding_torque(np.zeros(n), p)
+    theta, omega = np.zeros(n), np.zeros(n)
+    h = np.full(n, H)
+    spent = 0.0
+    for k in range(warm + steps):
+        t0 = time.perf_counter()
+        torque = b.step(theta, omega, p, None, h)
+        if k >= warm:
+            spent += time.perf_counter() - t0
+        shape = np.where(f == 0.0, 1.0, np.sin(2 * np.pi * f * k * H))
+        omega = omega + H * (r * ts * shape + torque - ts / SPEED * omega) / INERTIA
+        theta = theta + H * omega
+    return spent * 1e9 / (n * steps)
+
+
+def scenes(quick: bool) -> dict:
+    n, warm, steps, repeats = (1000, 100, 50, 1) if quick else (2000, 300, 100, 3)
+    out = {}
+    for name in SCENES:
+        full, table, ratios = float("inf"), float("inf"), []
+        for _ in range(repeats):
+            a = scene(name, n, "full", warm, steps)
+            b = scene(name, n, "table", warm, steps)
+            full, table = min(full, a), min(table, b)
+            ratios.append(b / a)
+        out[name] = dict(full_ns=full, table_ns=table, ratio=float(np.median(ratios)), n=n)
+    return out
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--quick", action="store_true")
@@ -108,6 +158,7 @@ def main() -> int:
     out = {f"{k}_ns": v for k, v in best.items()}
     out.update(table_ratio=float(np.median(ratios)), table_default_ratio=float(np.median(ratios_default)))
     out.update(n=n, steps=steps, repeats=repeats, loop_joints=loop_n, numpy=np.__version__, python=platform.python_version())
+    out["scenes"] = scenes(a.quick)
     json.dump(out, sys.stdout)
     return 0
 

@@ -661,6 +661,18 @@ impl Joint {
         Ok(op)
     }
 
+    /// As [`Joint::evaluate_from`] with the load's terms `lt` already computed by
+    /// [`Joint::load_terms`] of this joint (at its temperature), bit for bit: a caller whose
+    /// load does not change between calls (the FMU's step) computes them once.
+    pub fn evaluate_from_terms(&self, lt: &LoadTerms, omega: f64, guess: Option<f64>) -> Result<OperatingPoint, ModelError> {
+        if !omega.is_finite() {
+            return Err(ModelError::Speed(omega));
+        }
+        let (op, _) = self.evaluate_at(lt, omega, guess)?;
+        self.check_film(op.film_thickness, op.fluid_load_fraction, lt.load, omega)?;
+        Ok(op)
+    }
+
     /// The model's equations at (`load`, `omega`) as [`Joint::evaluate`] solves them, without
     /// the geometric bound on the film ([`ModelError::FilmBeyondClearance`]): the answer the
     /// equations give where the film of eq. 12 is thicker than the clearance allows. For

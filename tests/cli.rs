@@ -567,3 +567,53 @@ fn sweep_into_a_closed_pipe_ends_quietly() {
     assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
     assert_eq!(String::from_utf8_lossy(&o.stderr), "");
 }
+
+/// `sweep --output X.parquet` and back: a Parquet sweep read as the input of another sweep
+/// answers the same rows as the CSV sweep (load, speed and temperature as doubles, the
+/// results bit for bit: the CSV prints the shortest text of each double); the file is
+/// Parquet (PAR1 at both ends); `map --format parquet` too; a bad format or Parquet to
+/// standard output is refused by name.
+#[test]
+fn sweep_and_map_write_and_read_parquet() {
+    let mut csv = String::from("load,speed,temperature\n");
+    for i in 0..300 {
+        let w = if i % 7 == 0 { 0.0 } else { (if i % 2 == 0 { 1.0 } else { -1.0 }) * 1e-5 * 1.07f64.powi(i) };
+        csv.push_str(&format!("{:?},{:?},{:?}\n", 4e3 + 190.0 * f64::from(i), w, 253.15 + f64::from(i % 3) * 30.0));
+    }
+    let (dir, input) = temp_file("pts.csv", &csv);
+    let d = |n: &str| dir.path().join(n).to_str().unwrap().to_string();
+    let (a, pq, b) = (d("a.csv"), d("a.parquet"), d("b.csv"));
+    for fidelity in ["full", "boundary", "table"] {
+        ok(&["sweep", "--input", input.to_str().unwrap(), "--output", &a, "--fidelity", fidelity]);
+        ok(&["sweep", "--input", input.to_str().unwrap(), "--output", &pq, "--fidelity", fidelity]);
+        let bytes = std::fs::read(&pq).unwrap();
+        assert!(bytes.starts_with(b"PAR1") && bytes.ends_with(b"PAR1"), "{fidelity}");
+        // The Parquet file's numbers through a second sweep (at full, whatever the first's
+        // fidelity) equal the CSV's input columns; the results of a full sweep are the CSV's.
+        ok(&["sweep", "--input", &pq, "--output", &b]);
+        let (ta, tb) = (std::fs::read_to_string(&a).unwrap(), std::fs::read_to_string(&b).unwrap());
+        let (la, lb): (Vec<&str>, Vec<&str>) = (ta.lines().collect(), tb.lines().collect());
+        assert_eq!(la.len(), 301);
+        assert_eq!(la[0], lb[0]);
+        for (x, y) in la.iter().zip(&lb).skip(1) {
+            let (x, y): (Vec<&str>, Vec<&str>) = (x.split(',').collect(), y.split(',').collect());
+            for k in 0..3 {
+                assert_eq!(x[k].parse::<f64>().unwrap().to_bits(), y[k].parse::<f64>().unwrap().to_bits(), "{fidelity}");
+            }
+            if fidelity == "full" {
+                assert_eq!(x[3..], y[3..]);
+            }
+        }
+    }
+    fails(&["sweep", "--input", input.to_str().unwrap(), "--format", "xml"], None, 1, &["--format xml", "csv or parquet"]);
+    fails(&["sweep", "--input", input.to_str().unwrap(), "--format", "parquet"], None, 1, &["Parquet output needs a file"]);
+    fails(&["sweep", "--input", &a, "--output", &d("x.parquet")], None, 1, &["output column"]);
+    std::fs::write(d("bad.parquet"), "load,speed\n1,2\n").unwrap();
+    fails(&["sweep", "--input", &d("bad.parquet")], None, 1, &["bad.parquet", "Parquet"]);
+    let m = d("map");
+    ok(&["map", "--loads", "3", "--speeds", "4", "--format", "parquet", "--output", &m]);
+    let bytes = std::fs::read(dir.path().join("map").join("map.parquet")).unwrap();
+    assert!(bytes.starts_with(b"PAR1") && bytes.ends_with(b"PAR1"));
+    assert!(!dir.path().join("map").join("map.csv").exists());
+    fails(&["map", "--format", "json", "--output", &m], None, 1, &["--format json"]);
+}

@@ -225,7 +225,15 @@ fn outside_the_envelope_table_and_boundary_fall_back_to_full_and_say_so_once() {
         let mut ev = Evaluator::new(&p, f, 1e-2, env).unwrap();
         let inside = ev.evaluate(20e3, 1.0).unwrap();
         assert!(matches!(inside.source, Source::Table | Source::Boundary) && !inside.first_fallback);
-        let outside = [(20e3, 50.0), (1e3, 1.0), (100e3, -3.0), (20e3, 1e-4), (1e3, 0.0), (20e3, -10.0001)];
+        // Below the envelope's speeds the table answers down to rest (its low speeds, the
+        // rest state under its floor: tests/fidelity_low_speed.rs); the boundary level does not.
+        let slow = (20e3, 1e-4);
+        if f == Fidelity::Table {
+            let e = ev.evaluate(slow.0, slow.1).unwrap();
+            assert!(matches!(e.source, Source::Table | Source::Rest), "below the envelope's speeds the table answers: {:?}", e.source);
+        }
+        let below: &[(f64, f64)] = if f == Fidelity::Table { &[(20e3, 50.0)] } else { &[slow] };
+        let outside = [(20e3, 50.0), (1e3, 1.0), (100e3, -3.0), below[0], (1e3, 0.0), (20e3, -10.0001)];
         for (k, (load, omega)) in outside.into_iter().enumerate() {
             let e = ev.evaluate(load, omega).unwrap();
             let full = j.evaluate(load, omega).unwrap();

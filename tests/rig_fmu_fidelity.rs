@@ -126,11 +126,11 @@ fn auto_logs_its_pick_and_the_first_fallback_once() {
     let text: Vec<String> = h.messages().into_iter().map(|m| m.text).collect();
     let pick = format!("fidelity auto -> table: measured error bound {:e} (tolerance 1e-4)", ev.error_bound());
     assert!(text.iter().any(|m| m.contains(&pick)), "{pick} not in {text:?}");
-    // Reversals pass below envelope.speed_min = 1e-3 rad/s: fallbacks, said once.
+    // Reversals pass below envelope.speed_min = 1e-3 rad/s, where the table's low speeds
+    // answer, down to rest: no fallback.
     run(&h, c, 0.0, 2500);
     let falls: Vec<String> = h.messages().into_iter().map(|m| m.text).filter(|m| m.contains("outside the envelope")).collect();
-    assert_eq!(falls.len(), 1, "{falls:?}");
-    assert!(falls[0].contains("fidelity table") && falls[0].contains("|omega| 0.001..10 rad/s"), "{}", falls[0]);
+    assert!(falls.is_empty(), "{falls:?}");
     free(c);
     // A full run says nothing about fidelity.
     let h = new_host();

@@ -1,6 +1,6 @@
 //! The `full` level: the complete solve at every call, warm-started from the previous one.
 
-use crate::joint::{Joint, ModelError, OperatingPoint};
+use crate::joint::{Joint, LoadTerms, ModelError, OperatingPoint};
 
 /// Accuracy of the complete solve itself, relative in μ and h_c: the bracket test of
 /// `tests/solver.rs` (the root is bracketed to ±1e-11 in the logit and μ, h_c move by
@@ -11,22 +11,37 @@ pub const FULL_ERROR_BOUND: f64 = 1e-10;
 ///
 /// The warm start changes only the iteration count, not the answer (same root to the
 /// solver's step tolerance, ~1e-12); a rest point (logit −∞) leaves the next call cold.
+/// The terms that depend on the load alone (Hertz, Roelands, Bair–Winer, the asperity
+/// model's load ratio: [`Joint::load_terms`]) are kept from the last call and computed again
+/// only when the load changes (bit for bit: the same function of the same load; a new
+/// temperature is a new solver, [`crate::fidelity::Evaluator::set_temperature`]).
 #[derive(Debug, Clone)]
 pub struct WarmSolver {
     joint: Joint,
     last: Option<f64>,
+    terms: Option<LoadTerms>,
 }
 
 impl WarmSolver {
     /// A solver of `joint` whose first call starts cold.
     pub fn new(joint: Joint) -> Self {
-        Self { joint, last: None }
+        Self { joint, last: None, terms: None }
     }
 
     /// The complete operating point at `load` (N) and `omega` (rad/s).
     #[inline]
     pub fn evaluate(&mut self, load: f64, omega: f64) -> Result<OperatingPoint, ModelError> {
-        let op = self.joint.evaluate_from(load, omega, self.last)?;
+        let magnitude = load.abs();
+        let cached = self.terms.as_ref().is_some_and(|t| t.load.to_bits() == magnitude.to_bits());
+        if !cached {
+            if !(magnitude.is_finite() && magnitude > 0.0 && omega.is_finite()) {
+                // The joint's own checks and errors, in its order.
+                return self.joint.evaluate_from(load, omega, self.last);
+            }
+            self.terms = Some(self.joint.load_terms(magnitude)?);
+        }
+        let lt = self.terms.as_ref().expect("set above");
+        let op = self.joint.evaluate_from_terms(lt, omega, self.last)?;
         self.last = op.logit.is_finite().then_some(op.logit);
         Ok(op)
     }

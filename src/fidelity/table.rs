@@ -65,6 +65,21 @@
 //! must meet the same rule, so the advertised bound holds for the interpolated cells as before
 //! and the solved cells are the complete solve itself. (At 262.9 K over 10–100 N ×
 //! 0.0714–7.14 rad/s and tolerance 10⁻³: 294 of 45 704 cells.)
+//!
+//! # Slow joints: the speeds below the envelope, down to rest
+//! A held or creeping joint moves at speeds far below any envelope's lowest (10⁻⁶ rad/s and
+//! less), where the model has a known limit: as ω → 0 the film carries nothing (the logit
+//! falls like ln ω, the fluid share like ω) and the torque tends to the rest state's, μ_c·R·P
+//! plus the grease's yield torque (the complete model; eq. 11 with μ = μ_c for the paper's),
+//! as a power of ω (the default joint: ΔT/T ≈ 2.7·10⁻⁵ at 10⁻⁶ rad/s, 2.7·10⁻⁷ at 10⁻¹¹ rad/s,
+//! ∝ ω^0.2). So the table also covers (0, speed_min): below a floor where the rest state is
+//! within half the refinement target of the complete solve at every decade down to three below
+//! it (measured at 17 loads), the rest state answers; between the floor and speed_min a second
+//! table, built and measured as this one (in ln |ω| the approach to the limit is an
+//! exponential, smooth and cheap to tabulate). Both errors join the table's measured report,
+//! so the advertised bound covers them (`StribeckTable::speed_floor`,
+//! `TableStats::low_speed_cells`). Where no floor is found within [`LOW_SPEED_DECADES`]
+//! decades, or the low table cannot be built, the complete solve answers there, as before.
 
 use super::check::{CheckRng, ErrorReport};
 use super::envelope::{solve_at, Envelope};
@@ -129,8 +144,16 @@ pub struct TableStats {
     /// Cells the grid could not resolve within [`MAX_CELLS`] and that answer with the
     /// complete solve instead (0 when the whole envelope is interpolated).
     pub solved_cells: usize,
-    /// Wall time of the build, s (measured with `std::time::Instant`).
+    /// Wall time of the build, s (measured with `std::time::Instant`), the low speeds' included.
     pub build_seconds: f64,
+    /// Cells (along ln P times along ln |ω|) of the table of the speeds below the envelope's,
+    /// from [`TableStats::speed_floor`] up ([`StribeckTable`]'s section on slow joints; 0 when
+    /// it was not built).
+    pub low_speed_cells: usize,
+    /// The speed |ω| (rad/s) below which a moving joint is answered by the rest state (the
+    /// model's ω → 0 limit, within the measured error there); 0 when the low speeds are not
+    /// covered.
+    pub speed_floor: f64,
 }
 
 /// The Stribeck map over an envelope, interpolated bicubically in (ln P, ln |ω|).
@@ -158,7 +181,24 @@ pub struct StribeckTable {
     stats: TableStats,
     /// The tolerance the table was built for (caps the advertised bound).
     tolerance: f64,
+    /// The speeds below the envelope's, down to rest (None: not covered, the complete solve
+    /// answers there).
+    low: Option<Box<LowSpeeds>>,
 }
+
+/// The speeds between rest and the envelope's lowest (see "Slow joints" in the module doc): a
+/// table over [floor, speed_min] and, below the floor, the rest state.
+#[derive(Debug, Clone)]
+struct LowSpeeds {
+    table: StribeckTable,
+    floor: f64,
+}
+
+/// Decades below the envelope's lowest speed searched for the floor of the rest state.
+pub const LOW_SPEED_DECADES: i32 = 14;
+/// Loads (uniform in ln P, the ends included) at which the rest state is measured against
+/// the complete solve at each candidate floor and below it.
+const FLOOR_LOADS: usize = 17;
 
 /// The logit below which the table holds [`LOGIT_FLOOR`]: x1 = e^y < 4.3e-18 there, below any
 /// tolerance in the shares and in μ. A moving joint whose film is bounded (the complete
@@ -219,6 +259,12 @@ impl StribeckTable {
     /// Tabulate the map of `joint` over `envelope`, refined until the error measured against
     /// the complete solve, times [`SAFETY`], is at most `tolerance`.
     pub fn build(joint: &Joint, envelope: &Envelope, tolerance: f64) -> Result<Self, FidelityError> {
+        Self::build_with(joint, envelope, tolerance, true)
+    }
+
+    /// [`Self::build`], covering the speeds below the envelope's down to rest when
+    /// `low_speeds` (and when the model allows it within the tolerance: [`Self::cover_low_speeds`]).
+    fn build_with(joint: &Joint, envelope: &Envelope, tolerance: f64, low_speeds: bool) -> Result<Self, FidelityError> {
         envelope.validate()?;
         if !(tolerance.is_finite() && tolerance > 0.0) {
             return Err(FidelityError::Tolerance(tolerance));
@@ -279,13 +325,67 @@ impl StribeckTable {
                     check_solves,
                     rest_cells: table.rest.cells(),
                     solved_cells: table.solve.iter().filter(|&&b| b).count(),
-                    build_seconds: start.elapsed().as_secs_f64(),
+                    build_seconds: 0.0,
+                    low_speed_cells: 0,
+                    speed_floor: 0.0,
                 };
+                if low_speeds {
+                    table.cover_low_speeds(joint, tolerance);
+                }
+                table.stats.build_seconds = start.elapsed().as_secs_f64();
                 return Ok(table);
             }
             // Not met and within the budget: refine.
             (nx, nz) = next.unwrap_or_else(|| next_grid(nx, nz, ex, ez, measured, target));
         }
+    }
+
+    /// Cover the speeds below the envelope's, down to rest, when the model allows it within
+    /// the tolerance: the floor is the highest speed speed_min·10⁻ᵏ (k = 1 ..=
+    /// [`LOW_SPEED_DECADES`]) at and below which the rest state (μ_c and the grease's yield
+    /// torque, the rest table's film) is within half the refinement target of the complete
+    /// solve at every one of [`FLOOR_LOADS`] loads, checked at every decade down to three
+    /// below the floor; a table over [floor, speed_min] built to the same tolerance answers
+    /// above it. The errors measured on both join the table's report (its advertised bound).
+    /// When no floor is found, or the low table cannot be built, nothing changes: the
+    /// complete solve answers there as before.
+    fn cover_low_speeds(&mut self, joint: &Joint, tolerance: f64) {
+        let env = self.envelope;
+        let half_target = 0.5 * tolerance / SAFETY;
+        let (x0, x1) = (env.load_min.ln(), env.load_max.ln());
+        let loads: Vec<f64> = (0..FLOOR_LOADS).map(|i| (x0 + (x1 - x0) * i as f64 / (FLOOR_LOADS - 1) as f64).exp().clamp(env.load_min, env.load_max)).collect();
+        // The rest state's error at each decade below speed_min (k = 1 ..= DECADES + 3).
+        let mut errors = Vec::new();
+        let mut reports = Vec::new();
+        for k in 1..=LOW_SPEED_DECADES + 3 {
+            let omega = env.speed_min * 10f64.powi(-k);
+            let mut r = ErrorReport::default();
+            for &p in &loads {
+                let Ok(op) = solve_at(joint, p, omega, None) else { return };
+                let Some(mut e) = self.rest(p) else { return };
+                e.angular_velocity = omega;
+                r.add(&e, &op);
+            }
+            self.stats.check_solves += loads.len();
+            errors.push(r.max());
+            reports.push(r);
+        }
+        // The highest decade from which every error below (NaN fails) is within half the target.
+        let Some(first) = (0..LOW_SPEED_DECADES as usize).find(|&i| errors[i..].iter().all(|&e| e <= half_target)) else { return };
+        let floor = env.speed_min * 10f64.powi(-(first as i32 + 1));
+        let low_env = Envelope { speed_min: floor, speed_max: env.speed_min, ..env };
+        let Ok(table) = Self::build_with(joint, &low_env, tolerance, false) else { return };
+        for r in &reports[first..] {
+            self.report.merge(r);
+        }
+        self.report.merge(table.measured());
+        let st = *table.stats();
+        self.stats.node_solves += st.node_solves;
+        self.stats.check_solves += st.check_solves;
+        self.stats.passes += st.passes;
+        self.stats.low_speed_cells = st.load_cells * st.speed_cells;
+        self.stats.speed_floor = floor;
+        self.low = Some(Box::new(LowSpeeds { table, floor }));
     }
 
     /// Solve at the nodes, build the cells; returns the table and the fourth-difference
@@ -393,7 +493,10 @@ impl StribeckTable {
                 rest_cells: 0,
                 solved_cells: 0,
                 build_seconds: 0.0,
+                low_speed_cells: 0,
+                speed_floor: 0.0,
             },
+            low: None,
         };
         Ok((table, ex / 384.0, ez / 384.0))
     }
@@ -567,7 +670,34 @@ impl StribeckTable {
         } else if omega == 0.0 {
             self.rest.contains(load).then(|| rest_torque(load, self.mu_c, self.radius, &self.rest_yield))
         } else {
-            None
+            self.torque_low(load, omega)
+        }
+    }
+
+    /// [`Self::torque`] below the envelope's speeds: the rest state's torque under the floor,
+    /// the low table's above it ([`Self::cover_low_speeds`]); `None` elsewhere.
+    #[inline]
+    fn torque_low(&self, load: f64, omega: f64) -> Option<f64> {
+        let low = self.low.as_deref()?;
+        let w = omega.abs();
+        if w < low.floor {
+            (w > 0.0 && self.rest.contains(load)).then(|| rest_torque(load, self.mu_c, self.radius, &self.rest_yield))
+        } else {
+            low.table.torque(load, omega)
+        }
+    }
+
+    /// [`Self::evaluate`] below the envelope's speeds ([`Self::torque_low`]'s answer, whole).
+    #[inline]
+    fn evaluate_low(&self, load: f64, omega: f64) -> Option<Evaluation> {
+        let low = self.low.as_deref()?;
+        let w = omega.abs();
+        if w < low.floor {
+            let mut e = if w > 0.0 { self.rest(load)? } else { return None };
+            e.angular_velocity = omega;
+            Some(e)
+        } else {
+            low.table.evaluate(load, omega)
         }
     }
 
@@ -594,7 +724,7 @@ impl StribeckTable {
         } else if omega == 0.0 {
             self.rest(load)
         } else {
-            None
+            self.evaluate_low(load, omega)
         }
     }
 
@@ -620,7 +750,14 @@ impl StribeckTable {
 
     /// Whether (load, |ω|) inside the envelope lies in a cell answered by the complete solve.
     pub fn solved_at(&self, load: f64, omega: f64) -> bool {
-        self.envelope.contains(load, omega) && self.solved(self.locate(load, omega).0)
+        (self.envelope.contains(load, omega) && self.solved(self.locate(load, omega).0)) || self.low.as_ref().is_some_and(|l| l.table.solved_at(load, omega))
+    }
+
+    /// The speed |ω| (rad/s) below which a moving joint is answered by the rest state, and
+    /// the low speeds' table above it up to the envelope's (None: the speeds below the
+    /// envelope's are not covered; the complete solve answers there).
+    pub fn speed_floor(&self) -> Option<f64> {
+        self.low.as_ref().map(|l| l.floor)
     }
 
     /// Cells answered by the complete solve: those the grid did not resolve within
@@ -641,7 +778,7 @@ impl StribeckTable {
 
     /// Memory held by the cells, bytes.
     pub fn size_bytes(&self) -> usize {
-        self.cells.len() * std::mem::size_of::<Cell>()
+        self.cells.len() * std::mem::size_of::<Cell>() + self.low.as_ref().map_or(0, |l| l.table.size_bytes())
     }
 }
 

@@ -132,7 +132,7 @@ pub fn run(cmd: &BenchCmd) -> Result<()> {
     let rig: Vec<RigResult> = bench_rig::measure(&bench_rig::cases(cmd.quick), &reference, reps, &|l| progress(&format!("rig: {l}")));
     // The sweep and calibrate children run before any Python child: their peak memory is read
     // per child.
-    let throughput = bench_throughput::measure(cmd.quick, &cmd.python, work.path(), &progress);
+    let throughput = bench_throughput::measure(cmd.quick, &cmd.python, &cmd.package_python, work.path(), &progress);
     let calibration = bench_calibrate::measure(cmd.quick, work.path(), &progress);
     let fmu = fmu_section(cmd);
     let batch = bench_batch::measure(cmd.quick, &cmd.package_python, &progress);

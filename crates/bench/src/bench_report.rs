@@ -478,6 +478,22 @@ fn throughput_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
         "`pinjoint sweep` at full fidelity ≤ 1.25 × the same sweep at boundary fidelity (its floor; complete model)".into(),
         format!("{} — {floor:.3} × (full {:.3} s, boundary {:.3} s, fastest repeats)", met(floor <= 1.25), t.sweep.seconds, t.boundary_sweep.seconds),
     ));
+    writeln!(md, "| the boundary sweep written as Parquet (`--output X.parquet`), {} rows, whole process; peak RSS | {:.3} s; {:.1} MiB |", t.parquet_sweep.rows, t.parquet_sweep.seconds, t.parquet_sweep.peak_rss_mib).unwrap();
+    rows.push((
+        format!("`pinjoint sweep` to Parquet ≤ 0.35 × the same sweep to CSV, {} rows at boundary fidelity, whole process", t.parquet_sweep.rows),
+        format!(
+            "{} — {:.3} × (the median of the repeats' ratios; fastest repeats: Parquet {:.3} s, CSV {:.3} s; peak RSS {:.1} MiB; pyarrow reads the file in {})",
+            met(t.parquet_ratio <= 0.35),
+            t.parquet_ratio,
+            t.parquet_sweep.seconds,
+            t.boundary_sweep.seconds,
+            t.parquet_sweep.peak_rss_mib,
+            match &t.pyarrow_read {
+                Ok(s) => format!("{s:.3} s"),
+                Err(e) => format!("(not measured: {e})"),
+            }
+        ),
+    ));
     let rss = t.sweep.peak_rss_mib.max(t.small.peak_rss_mib);
     rows.push((
         "peak memory of the sweep ≤ 64 MiB whatever the row count".into(),

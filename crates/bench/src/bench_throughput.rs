@@ -51,6 +51,13 @@ pub struct Throughput {
     pub threads: usize,
     /// The same sweep at `--fidelity boundary` (μ = μ_c: the sweep's floor), fastest of the repeats.
     pub boundary_sweep: SweepRun,
+    /// The boundary sweep written as Parquet (`--output X.parquet`), fastest of the repeats,
+    /// interleaved with the CSV one.
+    pub parquet_sweep: SweepRun,
+    /// Each repeat's Parquet / CSV wall time ratio at boundary fidelity, their median.
+    pub parquet_ratio: f64,
+    /// pyarrow's `read_table` of that Parquet file (s, best of 3), or why not.
+    pub pyarrow_read: Result<f64, String>,
     /// The same sweep with `[model] paper = true` (the model the SciPy reference implements),
     /// fastest of the repeats.
     pub paper_sweep: SweepRun,
@@ -154,7 +161,20 @@ pub fn pinjoint_exe() -> Result<PathBuf, ThroughputError> {
 }
 
 /// Measure. `quick`: 1e4 rows, few SciPy points. `work` is a scratch directory.
-pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, ThroughputError> {
+/// pyarrow's `read_table` of `path` in the package's Python (s, best of 3), or why not.
+fn pyarrow_read(python: &Path, path: &Path) -> Result<f64, String> {
+    if !python.is_file() {
+        return Err(format!("no Python at {}", python.display()));
+    }
+    let code = "import sys, time, pyarrow.parquet as pq\nb = 1e9\nfor _ in range(3):\n    t = time.perf_counter(); pq.read_table(sys.argv[1]); b = min(b, time.perf_counter() - t)\nprint(b)";
+    let o = Command::new(python).args(["-c", code]).arg(path).output().map_err(|e| e.to_string())?;
+    if !o.status.success() {
+        return Err(String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("pyarrow failed").to_string());
+    }
+    String::from_utf8_lossy(&o.stdout).trim().parse().map_err(|e| format!("{e}"))
+}
+
+pub fn measure(quick: bool, python: &Path, package_python: &Path, work: &Path, progress: &dyn Fn(&str)) -> Result<Throughput, ThroughputError> {
     let exe = pinjoint_exe()?;
     let rows = if quick { 10_000 } else { 1_000_000 };
     // Five interleaved repeats: the sweep against its floor is a ratio of two ~1 s processes on
@@ -170,12 +190,16 @@ pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str))
     std::fs::write(&paper_toml, "[model]\npaper = true\n").map_err(|source| ThroughputError::Write { path: paper_toml.clone(), source })?;
     // Interleaved: the complete model's sweep, at boundary fidelity (its floor), and the
     // paper's, repeat by repeat.
-    let (mut runs, mut boundary_runs, mut paper_runs) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut runs, mut boundary_runs, mut paper_runs, mut parquet_runs, mut parquet_ratios) = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let out_parquet = work.join("sweep_out.parquet");
     let boundary: [&std::ffi::OsStr; 2] = ["--fidelity".as_ref(), "boundary".as_ref()];
     let paper_args: [&std::ffi::OsStr; 2] = ["--params".as_ref(), paper_toml.as_os_str()];
     for _ in 0..reps {
         runs.push(sweep_child(&exe, &big_in, &out, rows, &[])?);
         boundary_runs.push(sweep_child(&exe, &big_in, &out, rows, &boundary)?);
+        parquet_runs.push(sweep_child(&exe, &big_in, &out_parquet, rows, &boundary)?);
+        let (b, q) = (boundary_runs[boundary_runs.len() - 1].seconds, parquet_runs[parquet_runs.len() - 1].seconds);
+        parquet_ratios.push(q / b);
         paper_runs.push(sweep_child(&exe, &big_in, &out, rows, &paper_args)?);
     }
     let fastest = |runs: &[SweepRun]| {
@@ -183,6 +207,8 @@ pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str))
         SweepRun { peak_rss_mib: runs.iter().map(|r| r.peak_rss_mib).fold(0.0, f64::max), ..f }
     };
     let (sweep, boundary_sweep, paper_sweep) = (fastest(&runs), fastest(&boundary_runs), fastest(&paper_runs));
+    let (parquet_sweep, parquet_ratio) = (fastest(&parquet_runs), median(parquet_ratios));
+    let pyarrow_read = pyarrow_read(package_python, &out_parquet);
     progress("throughput: library cold evaluation per point");
     let mut paper = Params::default();
     paper.model.paper = true;
@@ -191,8 +217,8 @@ pub fn measure(quick: bool, python: &Path, work: &Path, progress: &dyn Fn(&str))
     progress("throughput: SciPy reference (model.paper)");
     // The last sweep written was the paper model's: its output is what SciPy checks.
     let scipy = scipy(python, &out, if quick { 20 } else { 300 });
-    let _ = [big_in, small_in, out, paper_toml].iter().try_for_each(std::fs::remove_file);
-    Ok(Throughput { sweep, small, model_ns, mixed_cold_ns, threads: rayon::current_num_threads(), boundary_sweep, paper_sweep, paper_model_ns, paper_mixed_cold_ns, scipy })
+    let _ = [big_in, small_in, out, paper_toml, out_parquet].iter().try_for_each(std::fs::remove_file);
+    Ok(Throughput { sweep, small, model_ns, mixed_cold_ns, threads: rayon::current_num_threads(), boundary_sweep, parquet_sweep, parquet_ratio, pyarrow_read, paper_sweep, paper_model_ns, paper_mixed_cold_ns, scipy })
 }
 
 /// The library's cold evaluation of `j`, one thread: (ns per point over the first rows of

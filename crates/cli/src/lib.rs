@@ -27,6 +27,7 @@ pub mod plot;
 pub mod error;
 pub mod common;
 pub mod output;
+pub mod columnar;
 pub mod fidelity_args;
 pub mod curves;
 // The subcommands:

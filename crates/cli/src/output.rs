@@ -91,6 +91,12 @@ fn resolve(path: &Path) -> io::Result<Target> {
 /// input files, which are never overwritten. On any error a temporary file is removed and a
 /// replaced file keeps its old content.
 pub fn write_atomic(path: &Path, inputs: &[&Path], fill: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> Result<()> {
+    write_atomic_send(path, inputs, |w| fill(w))
+}
+
+/// [`write_atomic`] for a `fill` that needs a writer it may send to another thread (the
+/// Parquet writer's bound): the same rules.
+pub fn write_atomic_send(path: &Path, inputs: &[&Path], fill: impl FnOnce(&mut (dyn Write + Send)) -> io::Result<()>) -> Result<()> {
     refuse_inputs(&[path], inputs)?;
     let werr = |source: io::Error| CliError::Write { path: path.to_path_buf(), source };
     let target = match resolve(path).map_err(werr)? {

@@ -3,7 +3,7 @@
 
 use crate::common::{lin_space, log_space, positive, rig_peak_speed, ParamsArg, RAD_S_PER_RPM, RIG_LOAD_RANGE_N};
 use crate::error::{CliError, Result};
-use crate::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_text};
+use crate::output::{inputs_of, output_dir, refuse_files, report_written, write_atomic, write_atomic_send, write_text};
 use crate::curves::{curve, points_csv};
 use clap::Args;
 use crate::plot::{heat_map, stacked_plot, Axis, Chart, Corner, HeatMap, Region, Series};
@@ -17,6 +17,7 @@ use std::path::{Path, PathBuf};
     long_about = "Evaluate the model over a grid of loads (evenly spaced) and speeds (log-spaced) and \
 write the paper's Figure 4:\n  \
 DIR/map.csv           every grid point: load [N], speed [rad/s], speed_rpm, then the result columns of `sweep`\n  \
+                      (DIR/map.parquet instead with --format parquet: the same columns, Apache Parquet)\n  \
 DIR/map_lambda.svg    (a) lambda ratio, colour map with contour lines\n  \
 DIR/map_friction.svg  (b) friction coefficient, colour map with contour lines\n  \
 DIR/map_min_lambda.svg  lambda ratio from the minimum film h_min (extension: Pan–Hamrock ratio on h_c)\n  \
@@ -54,6 +55,9 @@ pub struct MapCmd {
     /// Output directory (created if needed)
     #[arg(long, value_name = "DIR")]
     pub output: PathBuf,
+    /// The grid's table: csv (map.csv) or parquet (map.parquet, the same columns)
+    #[arg(long, value_name = "csv|parquet", default_value = "csv")]
+    pub format: String,
 }
 
 /// The loads of the paper's Table 1, in N: one curve each in map_curves.svg.
@@ -141,6 +145,12 @@ pub const MAP_FILES: &[&str] = &["map.csv", "map_lambda.svg", "map_friction.svg"
 /// `inputs`: the command's input files, never overwritten. Fails if a point cannot be
 /// evaluated or a file cannot be written.
 pub fn write_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Result<Vec<PathBuf>> {
+    write_map_as(dir, inputs, joint, g, false)
+}
+
+/// [`write_map`], the grid's table as `map.parquet` ([`crate::columnar::points_parquet`]: the
+/// same columns and numbers) instead of `map.csv` when `parquet`.
+pub fn write_map_as(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid, parquet: bool) -> Result<Vec<PathBuf>> {
     let ops = evaluate(joint, g)?;
     let lambda = map_plot(
         g,
@@ -160,8 +170,13 @@ pub fn write_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Resul
     )?;
     let curves = curves_plot(joint, g)?;
     let dir = output_dir(dir)?;
-    let paths: Vec<PathBuf> = MAP_FILES.iter().map(|f| dir.join(f)).collect();
-    write_atomic(&paths[0], inputs, |w| points_csv(w, &ops))?;
+    let mut paths: Vec<PathBuf> = MAP_FILES.iter().map(|f| dir.join(f)).collect();
+    if parquet {
+        paths[0] = dir.join("map.parquet");
+        write_atomic_send(&paths[0], inputs, |w| crate::columnar::points_parquet(w, &ops))?;
+    } else {
+        write_atomic(&paths[0], inputs, |w| points_csv(w, &ops))?;
+    }
     write_text(&paths[1], inputs, &lambda)?;
     write_text(&paths[2], inputs, &friction)?;
     write_text(&paths[3], inputs, &curves)?;
@@ -187,7 +202,13 @@ pub fn write_min_lambda_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Gri
 
 /// Runs `pinjoint map`: checks the flags, evaluates the grid and writes the map files.
 pub fn run(cmd: &MapCmd) -> Result<()> {
+    let parquet = match cmd.format.as_str() {
+        "csv" => false,
+        "parquet" => true,
+        other => return Err(CliError::Invalid(format!("--format {other} is not a format: csv or parquet"))),
+    };
     refuse_files(&cmd.output, MAP_FILES, cmd.params.params.as_ref())?;
+    refuse_files(&cmd.output, &["map.parquet"], cmd.params.params.as_ref())?;
     let joint = cmd.params.joint()?;
     let (p0, p1) = (positive("min-load", cmd.min_load, "N")?, positive("max-load", cmd.max_load, "N")?);
     let (n0, n1) = (positive("min-rpm", cmd.min_rpm, "rpm")?, positive("max-rpm", cmd.max_rpm, "rpm")?);
@@ -204,7 +225,7 @@ pub fn run(cmd: &MapCmd) -> Result<()> {
     }
     let grid = Grid { loads: lin_space(p0, p1, cmd.loads), speeds: log_space(n0 * RAD_S_PER_RPM, n1 * RAD_S_PER_RPM, cmd.speeds) };
     let inputs = inputs_of(cmd.params.params.as_ref());
-    let mut paths = write_map(&cmd.output, &inputs, &joint, &grid)?;
+    let mut paths = write_map_as(&cmd.output, &inputs, &joint, &grid, parquet)?;
     paths.push(write_min_lambda_map(&cmd.output, &inputs, &joint, &grid)?);
     report_written(&paths)
 }

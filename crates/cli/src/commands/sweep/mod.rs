@@ -12,7 +12,8 @@ use crate::common::{csv_io, ParamsArg, RESULT_COLUMNS};
 use crate::error::{CliError, Result};
 use crate::exact::push_exact;
 use crate::fidelity_args::{note_fallback, range_of, FidelityArgs};
-use crate::output::{refuse_inputs, to_stdout, write_atomic};
+use crate::columnar::{self, Values};
+use crate::output::{refuse_inputs, to_stdout, write_atomic, write_atomic_send};
 use self::input::{split, Batch, RecordReader};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -37,6 +38,10 @@ magnitude μRP_T), film_thickness (m, central h_c), lambda_ratio (-), fluid_load
 asperity_load_fraction (1/γ2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-) \
 regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c), min_lambda_ratio (-, eq. 21 with h_min) and validity (checked | extrapolation | known-wrong | outside: whether load, sliding speed and temperature are inside the paper's rig conditions, outside them, below 0 C where μ is known to be too low, or past the model's assumptions (the Hertz half-width beyond the pin radius, the grease above its upper service temperature); see docs/validity.md). Numbers are printed in full (shortest text that \
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
+PARQUET: --output FILE.parquet (or --format parquet) writes the same columns as Apache Parquet: \
+numbers as DOUBLE columns bit for bit, regime and validity as text, other input columns as text, \
+in row groups of 65536 rows. --input FILE.parquet reads the numeric columns load, speed and \
+optionally temperature (other columns are not copied).\n\n\
 A malformed row (missing field, non-numeric, non-finite, load = 0; a negative load is taken as its magnitude) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
 name beside it and renamed only on success). The input is read, evaluated and written in \
@@ -54,12 +59,18 @@ Rows outside a given envelope are answered by the full solve (said once on stand
 )]
 /// Arguments of `pinjoint sweep` (its `--help` text is the `#[command]` attribute's).
 pub struct SweepCmd {
-    /// Input CSV with columns `load` (N) and `speed` (rad/s); `-` reads standard input
-    #[arg(long, value_name = "FILE.csv")]
+    /// Input CSV with columns `load` (N) and `speed` (rad/s), or a Parquet file (`*.parquet`)
+    /// with those columns as numbers; `-` reads CSV from standard input
+    #[arg(long, value_name = "FILE.csv|FILE.parquet")]
     pub input: PathBuf,
-    /// Output CSV (written atomically); standard output when absent or `-`
-    #[arg(long, value_name = "FILE.csv")]
+    /// Output file (written atomically): CSV, or Apache Parquet when it is named `*.parquet`
+    /// (or with --format parquet); CSV on standard output when absent or `-`
+    #[arg(long, value_name = "FILE.csv|FILE.parquet")]
     pub output: Option<PathBuf>,
+    /// Output format: csv or parquet (default: parquet for an --output named *.parquet or
+    /// *.parq, else csv)
+    #[arg(long, value_name = "csv|parquet")]
+    pub format: Option<String>,
     /// --params and --temperature.
     #[command(flatten)]
     pub params: ParamsArg,
@@ -98,6 +109,13 @@ struct Columns {
     temperature: Option<usize>,
 }
 
+impl Columns {
+    /// Whether input column `k` is one of the numbers the sweep reads (load, speed, temperature).
+    fn is_number(&self, k: usize) -> bool {
+        k == self.load || k == self.speed || self.temperature == Some(k)
+    }
+}
+
 /// Fidelity levels at the temperatures of a `temperature` column, built once per distinct
 /// value ([`Evaluator::set_temperature`]: a table or boundary level is tabulated and measured
 /// again at each temperature, so its bound holds there). At most [`MAX_TEMPERATURES`] are
@@ -125,12 +143,75 @@ impl Temperatures {
     }
 }
 
-/// What one chunk gives: its output text, and the ranges of positive load and |speed|.
+/// What one chunk gives: its output text (CSV) or columns (Parquet), and the ranges of
+/// positive load and |speed|.
 #[derive(Default)]
 struct ChunkOut {
     text: Vec<u8>,
+    cols: Vec<Values>,
     loads: (f64, f64),
     speeds: (f64, f64),
+}
+
+/// The output's format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Form {
+    /// CSV text.
+    Csv,
+    /// Apache Parquet columns ([`crate::columnar`]).
+    Parquet,
+}
+
+/// One row's operating point at (`load`, `speed`, `temperature`) by `mode` (`ev`: the chunk's
+/// evaluator at a fidelity level; `at_t`: its levels at other temperatures); an error is
+/// given to `bad`, which names the row.
+fn evaluate_row(
+    mode: &Mode,
+    ev: Option<&mut Evaluator>,
+    at_t: &mut std::collections::HashMap<u64, Evaluator>,
+    (load, speed, temperature): (f64, f64, Option<f64>),
+    bad: &dyn Fn(String) -> CliError,
+) -> Result<OperatingPoint> {
+    Ok(match (mode, ev) {
+        (Mode::Scan, _) => unreachable!("a scan evaluates nothing"),
+        (Mode::Full(joint), _) => match temperature {
+            None => joint.evaluate(load, speed),
+            Some(t) => joint.at_temperature(t).map_err(|e| bad(e.to_string()))?.evaluate(load, speed),
+        }
+        .map_err(|e| bad(e.to_string()))?,
+        (Mode::Level { said, proto, by_t, .. }, Some(ev)) if temperature.is_some_and(|t| t.to_bits() != ev.temperature().to_bits()) => {
+            let t = temperature.unwrap_or_default();
+            let level = by_t.level(proto, t).map_err(|e| bad(e.to_string()))?;
+            // This chunk's own copy of the level at t (it counts its fallbacks).
+            let ev = at_t.entry(t.to_bits()).or_insert_with(|| (*level).clone());
+            let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
+            note_fallback(&e, ev, said);
+            ev.operating_point(&e)
+        }
+        (Mode::Level { said, .. }, Some(ev)) => {
+            let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
+            note_fallback(&e, ev, said);
+            ev.operating_point(&e)
+        }
+        (Mode::Level { .. }, None) => unreachable!("an evaluator is taken for every chunk at a fidelity level"),
+    })
+}
+
+/// Take an evaluator for a chunk (a fidelity level), from the pool or cloned.
+fn take_evaluator(mode: &Mode) -> Option<Evaluator> {
+    match mode {
+        Mode::Level { proto, pool, .. } => Some(pool.lock().ok().and_then(|mut p| p.pop()).unwrap_or_else(|| (*proto).clone())),
+        _ => None,
+    }
+}
+
+/// Give a chunk's evaluator back to the pool.
+fn return_evaluator(mode: &Mode, ev: Option<Evaluator>) {
+    if let (Mode::Level { pool, .. }, Some(ev)) = (mode, ev)
+        && let Ok(mut p) = pool.lock()
+    {
+        p.push(ev);
+    }
 }
 
 fn widen(r: &mut (f64, f64), v: f64) {
@@ -164,18 +245,27 @@ fn read_header<R: BufRead>(reader: &mut RecordReader<R>, file: &str) -> Result<C
     Ok(Columns { header, load, speed, temperature })
 }
 
+/// The output columns of a chunk of `rows` rows in Parquet form: each input column (a number
+/// for load, speed and temperature, text otherwise), then the result columns.
+fn parquet_columns(cols: &Columns, rows: usize) -> Vec<Values> {
+    let mut v: Vec<Values> = (0..cols.header.len())
+        .map(|k| if cols.is_number(k) { Values::Number(Vec::with_capacity(rows)) } else { Values::Text(Vec::with_capacity(rows)) })
+        .collect();
+    v.extend(columnar::result_values(rows));
+    v
+}
+
 /// Parse, check, evaluate and format the records `recs` of `batch`.
-fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mode, file: &str) -> Result<ChunkOut> {
+fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mode, file: &str, form: Form) -> Result<ChunkOut> {
     let width = cols.header.len();
     let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
     let mut rec = csv::ByteRecord::with_capacity(64, width);
-    if !matches!(mode, Mode::Scan) {
-        out.text.reserve(recs.len() * 320);
+    match (mode, form) {
+        (Mode::Scan, _) => {}
+        (_, Form::Csv) => out.text.reserve(recs.len() * 320),
+        (_, Form::Parquet) => out.cols = parquet_columns(cols, recs.len()),
     }
-    let mut ev = match mode {
-        Mode::Level { proto, pool, .. } => Some(pool.lock().ok().and_then(|mut p| p.pop()).unwrap_or_else(|| (*proto).clone())),
-        _ => None,
-    };
+    let mut ev = take_evaluator(mode);
     let mut at_t: std::collections::HashMap<u64, Evaluator> = std::collections::HashMap::new();
     for r in recs {
         let line = r.line;
@@ -212,29 +302,29 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
         let temperature = cols.temperature.map(|i| number(i, "temperature", "K")).transpose()?;
         widen(&mut out.loads, load.abs());
         widen(&mut out.speeds, speed.abs());
-        let op: OperatingPoint = match (mode, ev.as_mut()) {
-            (Mode::Scan, _) => continue,
-            (Mode::Full(joint), _) => match temperature {
-                None => joint.evaluate(load, speed),
-                Some(t) => joint.at_temperature(t).map_err(|e| bad(e.to_string()))?.evaluate(load, speed),
+        if matches!(mode, Mode::Scan) {
+            continue;
+        }
+        let op = evaluate_row(mode, ev.as_mut(), &mut at_t, (load, speed, temperature), &bad)?;
+        if form == Form::Parquet {
+            // The input columns (the numbers as evaluated, other columns as text), then the
+            // result record's.
+            for (k, c) in out.cols[..width].iter_mut().enumerate() {
+                match c {
+                    Values::Number(v) => v.push(if k == cols.load {
+                        load
+                    } else if k == cols.speed {
+                        speed
+                    } else {
+                        temperature.unwrap_or(f64::NAN)
+                    }),
+                    Values::Text(v) => v.push(text(k).to_string()),
+                    Values::Name(_) => {}
+                }
             }
-            .map_err(|e| bad(e.to_string()))?,
-            (Mode::Level { said, proto, by_t, .. }, Some(ev)) if temperature.is_some_and(|t| t.to_bits() != ev.temperature().to_bits()) => {
-                let t = temperature.unwrap_or_default();
-                let level = by_t.level(proto, t).map_err(|e| bad(e.to_string()))?;
-                // This chunk's own copy of the level at t (it counts its fallbacks).
-                let ev = at_t.entry(t.to_bits()).or_insert_with(|| (*level).clone());
-                let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
-                note_fallback(&e, ev, said);
-                ev.operating_point(&e)
-            }
-            (Mode::Level { said, .. }, Some(ev)) => {
-                let e = ev.evaluate(load, speed).map_err(|e| bad(e.to_string()))?;
-                note_fallback(&e, ev, said);
-                ev.operating_point(&e)
-            }
-            (Mode::Level { .. }, None) => unreachable!("an evaluator is taken for every chunk at a fidelity level"),
-        };
+            columnar::push_result(&mut out.cols[width..], &op);
+            continue;
+        }
         // The row, written directly (as the `csv` writer with its defaults would: fields
         // quoted only when they hold a comma, a quote or a line break; `\n` after the record):
         // the input fields as read, then the one result record's columns (pinjoint::record).
@@ -255,11 +345,7 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
         }
         text.push(b'\n');
     }
-    if let (Mode::Level { pool, .. }, Some(ev)) = (mode, ev)
-        && let Ok(mut p) = pool.lock()
-    {
-        p.push(ev);
-    }
+    return_evaluator(mode, ev);
     Ok(out)
 }
 
@@ -282,8 +368,8 @@ fn push_field(out: &mut Vec<u8>, f: &[u8]) {
 }
 
 /// Every chunk of a batch on every core; the first error in input order wins.
-fn batch_outputs(batch: &Batch, cols: &Columns, mode: &Mode, file: &str) -> Result<Vec<ChunkOut>> {
-    let outs: Vec<Result<ChunkOut>> = batch.records.par_chunks(CHUNK_ROWS).map(|recs| chunk(batch, recs, cols, mode, file)).collect();
+fn batch_outputs(batch: &Batch, cols: &Columns, mode: &Mode, file: &str, form: Form) -> Result<Vec<ChunkOut>> {
+    let outs: Vec<Result<ChunkOut>> = batch.records.par_chunks(CHUNK_ROWS).map(|recs| chunk(batch, recs, cols, mode, file, form)).collect();
     outs.into_iter().collect()
 }
 
@@ -295,6 +381,7 @@ fn stream<R: BufRead>(
     cols: &Columns,
     mode: &Mode,
     file: &str,
+    form: Form,
     bar: &ProgressBar,
     sink: &mut dyn FnMut(&[ChunkOut]) -> Result<()>,
 ) -> Result<((f64, f64), (f64, f64))> {
@@ -305,7 +392,7 @@ fn stream<R: BufRead>(
     while !current.records.is_empty() {
         bar.set_position(reader.consumed);
         let (written, read, outs) = std::thread::scope(|s| {
-            let work = s.spawn(|| batch_outputs(&current, cols, mode, file));
+            let work = s.spawn(|| batch_outputs(&current, cols, mode, file, form));
             let written = sink(&done);
             let read = if more && written.is_ok() {
                 reader.fill(&mut next, BATCH_ROWS)
@@ -393,30 +480,161 @@ fn progress(len: Option<u64>) -> ProgressBar {
     }
 }
 
+/// The rows of a Parquet input ([`columnar::ParquetRows`]) through `mode`, a batch of
+/// [`BATCH_ROWS`] at a time answered on every core and handed to `sink` in input order.
+/// Returns the ranges of positive load and |speed| seen.
+fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&[ChunkOut]) -> Result<()>) -> Result<((f64, f64), (f64, f64))> {
+    let file = path.display().to_string();
+    let mut rows = columnar::ParquetRows::open(path, BATCH_ROWS).map_err(CliError::Invalid)?;
+    let cols = parquet_input_columns(rows.has_temperature);
+    let (mut loads, mut speeds) = (EMPTY_RANGE, EMPTY_RANGE);
+    loop {
+        let first = rows.row;
+        let Some((load, speed, temperature)) = rows.next_batch().map_err(CliError::Invalid)? else { break };
+        let outs: Vec<Result<ChunkOut>> = (0..load.len())
+            .step_by(CHUNK_ROWS)
+            .collect::<Vec<_>>()
+            .into_par_iter()
+            .map(|start| {
+                let end = (start + CHUNK_ROWS).min(load.len());
+                let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
+                match (mode, form) {
+                    (Mode::Scan, _) => {}
+                    (_, Form::Csv) => out.text.reserve((end - start) * 320),
+                    (_, Form::Parquet) => out.cols = parquet_columns(&cols, end - start),
+                }
+                let mut ev = take_evaluator(mode);
+                let mut at_t = std::collections::HashMap::new();
+                for i in start..end {
+                    // Rows are numbered from 1 in the file's order (a Parquet file has no lines).
+                    let row = first + i as u64 + 1;
+                    let bad = |message: String| CliError::Input { file: format!("{file} (row {row})"), line: row, message };
+                    let (p, w, t) = (load[i], speed[i], temperature.as_ref().map(|t| t[i]));
+                    for (name, unit, v) in [("load", "N", Some(p)), ("speed", "rad/s", Some(w)), ("temperature", "K", t)] {
+                        if let Some(v) = v.filter(|v| !v.is_finite()) {
+                            return Err(bad(format!("column {name} = {v} {unit} is not a finite number")));
+                        }
+                    }
+                    if p == 0.0 {
+                        return Err(bad("column load = 0 N is invalid: the load magnitude must be > 0 N".into()));
+                    }
+                    widen(&mut out.loads, p.abs());
+                    widen(&mut out.speeds, w.abs());
+                    if matches!(mode, Mode::Scan) {
+                        continue;
+                    }
+                    let op = evaluate_row(mode, ev.as_mut(), &mut at_t, (p, w, t), &bad)?;
+                    match form {
+                        Form::Parquet => {
+                            for (c, x) in out.cols.iter_mut().zip([p, w, t.unwrap_or(f64::NAN)]) {
+                                if let Values::Number(v) = c {
+                                    v.push(x);
+                                }
+                            }
+                            columnar::push_result(&mut out.cols[cols.header.len()..], &op);
+                        }
+                        Form::Csv => {
+                            let text = &mut out.text;
+                            push_exact(text, p);
+                            text.push(b',');
+                            push_exact(text, w);
+                            if let Some(t) = t {
+                                text.push(b',');
+                                push_exact(text, t);
+                            }
+                            push_result_text(text, &op);
+                        }
+                    }
+                }
+                return_evaluator(mode, ev);
+                Ok(out)
+            })
+            .collect();
+        let outs: Vec<ChunkOut> = outs.into_iter().collect::<Result<_>>()?;
+        for o in &outs {
+            (loads.0, loads.1) = (loads.0.min(o.loads.0), loads.1.max(o.loads.1));
+            (speeds.0, speeds.1) = (speeds.0.min(o.speeds.0), speeds.1.max(o.speeds.1));
+        }
+        sink(&outs)?;
+    }
+    Ok((loads, speeds))
+}
+
+/// The input columns of a Parquet input: load, speed and, when the file has it, temperature.
+fn parquet_input_columns(has_temperature: bool) -> Columns {
+    let mut header = vec!["load".to_string(), "speed".to_string()];
+    if has_temperature {
+        header.push("temperature".to_string());
+    }
+    Columns { header, load: 0, speed: 1, temperature: has_temperature.then_some(2) }
+}
+
+/// The result columns of `op` after a row's input fields, then the line's end (CSV).
+fn push_result_text(text: &mut Vec<u8>, op: &OperatingPoint) {
+    for c in &pinjoint::record::COLUMNS {
+        text.push(b',');
+        match c.value {
+            pinjoint::record::Value::Number(f) => push_exact(text, f(op)),
+            pinjoint::record::Value::Regime => text.extend_from_slice(op.regime.as_str().as_bytes()),
+            pinjoint::record::Value::Validity => text.extend_from_slice(op.validity.as_str().as_bytes()),
+        }
+    }
+    text.push(b'\n');
+}
+
+/// The output's form: `--format`, else Parquet for an output file named `*.parquet` (or
+/// `*.parq`), else CSV.
+fn output_form(cmd: &SweepCmd) -> Result<Form> {
+    let to_file = cmd.output.as_deref().filter(|p| !is_stdio(p));
+    let form = match cmd.format.as_deref() {
+        None => {
+            if to_file.is_some_and(columnar::is_parquet_path) {
+                Form::Parquet
+            } else {
+                Form::Csv
+            }
+        }
+        Some("csv") => Form::Csv,
+        Some("parquet") => Form::Parquet,
+        Some(other) => return Err(CliError::Invalid(format!("--format {other} is not a format: csv or parquet"))),
+    };
+    if form == Form::Parquet && to_file.is_none() {
+        return Err(CliError::Invalid("Parquet output needs a file (--output FILE.parquet), not standard output".into()));
+    }
+    Ok(form)
+}
+
 /// Runs `pinjoint sweep`: evaluates every row of the input in parallel and writes the output
-/// CSV in the input's row order. Fails on an unreadable file, a bad row (with its line) or a
-/// point the model cannot evaluate.
+/// (CSV, or Parquet: [`crate::columnar`]) in the input's row order. Fails on an unreadable
+/// file, a bad row (with its line) or a point the model cannot evaluate.
 pub fn run(cmd: &SweepCmd) -> Result<()> {
     let mut inputs: Vec<&Path> = vec![cmd.input.as_path()];
     inputs.extend(cmd.params.params.as_deref());
     if let Some(out) = cmd.output.as_deref().filter(|p| !is_stdio(p)) {
         refuse_inputs(&[out], &inputs)?;
     }
+    let form = output_form(cmd)?;
+    let parquet_in = !is_stdio(&cmd.input) && columnar::is_parquet_path(&cmd.input);
     let joint = cmd.params.joint()?;
     let full = cmd.fidelity.is_full()?;
     let file = if is_stdio(&cmd.input) { "standard input".to_string() } else { cmd.input.display().to_string() };
     let needs_ranges = !full && (cmd.fidelity.envelope_load.is_none() || cmd.fidelity.envelope_speed.is_none());
-    let (mut input, len) = open(&cmd.input, needs_ranges)?;
+    let (mut input, len) = if parquet_in { (Box::new(Unseekable(io::BufReader::new(io::empty()))) as Box<dyn ReadSeek>, None) } else { open(&cmd.input, needs_ranges)? };
     let bar = progress(len);
     let level;
     let mode = if full {
         Mode::Full(&joint)
     } else {
         let (loads, speeds) = if needs_ranges {
-            let mut reader = RecordReader::new(&mut input, &file);
-            let cols = read_header(&mut reader, &file)?;
-            let (l, s) = stream(&mut reader, &cols, &Mode::Scan, &file, &ProgressBar::hidden(), &mut |_| Ok(()))?;
-            input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
+            let (l, s) = if parquet_in {
+                stream_parquet(&cmd.input, &Mode::Scan, form, &mut |_| Ok(()))?
+            } else {
+                let mut reader = RecordReader::new(&mut input, &file);
+                let cols = read_header(&mut reader, &file)?;
+                let r = stream(&mut reader, &cols, &Mode::Scan, &file, form, &ProgressBar::hidden(), &mut |_| Ok(()))?;
+                input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
+                r
+            };
             let fallback = |r: (f64, f64), f: (f64, f64)| if r.0.is_finite() { range_of([r.0, r.1].into_iter(), f) } else { f };
             (fallback(l, (1.0, 2.0)), fallback(s, (1e-3, 1.0)))
         } else {
@@ -426,39 +644,75 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         Mode::Level { proto: &level, pool: Mutex::new(Vec::new()), said: AtomicBool::new(false), by_t: Temperatures::default() }
     };
     let mut reader = RecordReader::new(&mut input, &file);
-    let cols = read_header(&mut reader, &file)?;
+    let cols = if parquet_in {
+        parquet_input_columns(columnar::ParquetRows::open(&cmd.input, 1).map_err(CliError::Invalid)?.has_temperature)
+    } else {
+        read_header(&mut reader, &file)?
+    };
     // An input or model error inside the writer is kept here and returned as itself.
     let failure: Mutex<Option<CliError>> = Mutex::new(None);
-    let fill = |w: &mut dyn Write| -> io::Result<()> {
-        let mut wtr = csv::Writer::from_writer(&mut *w);
-        wtr.write_record(cols.header.iter().map(String::as_str).chain(RESULT_COLUMNS)).map_err(csv_io)?;
-        wtr.flush()?;
-        drop(wtr);
-        let mut write_err: Option<io::Error> = None;
-        let mut sink = |outs: &[ChunkOut]| -> Result<()> {
-            for o in outs {
-                if let Err(e) = w.write_all(&o.text) {
+    let keep = |e: CliError| {
+        let msg = e.to_string();
+        *failure.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(e);
+        io::Error::other(msg)
+    };
+    let mut source = |mode: &Mode, sink: &mut dyn FnMut(&[ChunkOut]) -> Result<()>| -> Result<()> {
+        if parquet_in {
+            stream_parquet(&cmd.input, mode, form, sink).map(|_| ())
+        } else {
+            stream(&mut reader, &cols, mode, &file, form, &bar, sink).map(|_| ())
+        }
+    };
+    let written = if form == Form::Parquet {
+        let path = cmd.output.as_deref().expect("output_form: Parquet goes to a file");
+        let names: Vec<String> = cols.header.iter().cloned().chain(RESULT_COLUMNS.iter().map(|s| (*s).to_string())).collect();
+        write_atomic_send(path, &inputs, |w| {
+            let mut pq = columnar::ParquetSink::new(w, &names, &parquet_columns(&cols, 0))?;
+            let mut write_err: Option<io::Error> = None;
+            let mut sink = |outs: &[ChunkOut]| -> Result<()> {
+                let blocks: Vec<&[Values]> = outs.iter().map(|o| o.cols.as_slice()).collect();
+                pq.write(&blocks).map_err(|e| {
                     let msg = e.to_string();
                     write_err = Some(e);
-                    return Err(CliError::Invalid(msg));
-                }
+                    CliError::Invalid(msg)
+                })
+            };
+            let r = source(&mode, &mut sink);
+            bar.finish_and_clear();
+            if let Some(e) = write_err {
+                return Err(e);
             }
-            Ok(())
-        };
-        let r = stream(&mut reader, &cols, &mode, &file, &bar, &mut sink);
-        bar.finish_and_clear();
-        if let Some(e) = write_err {
-            return Err(e);
-        }
-        r.map(|_| ()).map_err(|e| {
-            let msg = e.to_string();
-            *failure.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(e);
-            io::Error::other(msg)
+            r.map_err(keep)?;
+            pq.finish()
         })
-    };
-    let written = match &cmd.output {
-        Some(path) if !is_stdio(path) => write_atomic(path, &inputs, fill),
-        _ => to_stdout(fill),
+    } else {
+        let fill = |w: &mut dyn Write| -> io::Result<()> {
+            let mut wtr = csv::Writer::from_writer(&mut *w);
+            wtr.write_record(cols.header.iter().map(String::as_str).chain(RESULT_COLUMNS)).map_err(csv_io)?;
+            wtr.flush()?;
+            drop(wtr);
+            let mut write_err: Option<io::Error> = None;
+            let mut sink = |outs: &[ChunkOut]| -> Result<()> {
+                for o in outs {
+                    if let Err(e) = w.write_all(&o.text) {
+                        let msg = e.to_string();
+                        write_err = Some(e);
+                        return Err(CliError::Invalid(msg));
+                    }
+                }
+                Ok(())
+            };
+            let r = source(&mode, &mut sink);
+            bar.finish_and_clear();
+            if let Some(e) = write_err {
+                return Err(e);
+            }
+            r.map_err(keep)
+        };
+        match &cmd.output {
+            Some(path) if !is_stdio(path) => write_atomic(path, &inputs, fill),
+            _ => to_stdout(fill),
+        }
     };
     match failure.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner) {
         Some(e) => Err(e),

@@ -1,0 +1,327 @@
+//! Apache Parquet output and input (`pinjoint sweep --output X.parquet`, `--input X.parquet`,
+//! `pinjoint map --format parquet`), through the Rust `arrow` and `parquet` crates.
+//!
+//! The columns are the CSV's: the input columns, then the result columns of
+//! `pinjoint::record::COLUMNS` in the same order. Every number is a `DOUBLE` column holding the
+//! double the CSV prints (bit for bit: the CSV's text is the shortest that reads back as it),
+//! `regime` and `validity` are `UTF8` text columns, dictionary-encoded in the file (a handful of
+//! distinct values), and an input column other than `load`, `speed` and `temperature` is text as
+//! read. Pages are uncompressed (no codec is built: the floats of a sweep compress little, and
+//! the sweep's floor is the evaluation). Rows are written in row groups of at most
+//! [`ROW_GROUP_ROWS`], so memory stays bounded whatever the number of rows.
+
+use arrow_array::builder::StringBuilder;
+use arrow_array::{ArrayRef, Float64Array, RecordBatch};
+use arrow_schema::{DataType, Field, Schema, SchemaRef};
+use parquet::arrow::ArrowWriter;
+use parquet::file::properties::{EnabledStatistics, WriterProperties};
+use parquet::schema::types::ColumnPath;
+use pinjoint::OperatingPoint;
+use std::io::{self, Write};
+use std::sync::Arc;
+
+/// Rows per Parquet row group (the writer holds one row group's columns in memory: 65536 rows
+/// of the sweep's 20 columns are about 10 MiB).
+pub const ROW_GROUP_ROWS: usize = 65_536;
+
+/// Whether `path` names a Parquet file (its extension is `.parquet` or `.parq`, any case).
+pub fn is_parquet_path(path: &std::path::Path) -> bool {
+    path.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("parquet") || e.eq_ignore_ascii_case("parq"))
+}
+
+/// One column's values for a run of rows.
+#[derive(Debug, Clone)]
+pub enum Values {
+    /// Numbers (a `DOUBLE` column).
+    Number(Vec<f64>),
+    /// Text of a fixed set (regime, validity).
+    Name(Vec<&'static str>),
+    /// Text as read (an input column copied through).
+    Text(Vec<String>),
+}
+
+impl Values {
+    fn len(&self) -> usize {
+        match self {
+            Values::Number(v) => v.len(),
+            Values::Name(v) => v.len(),
+            Values::Text(v) => v.len(),
+        }
+    }
+}
+
+/// The result columns as [`Values`] of `rows` rows each, empty.
+pub fn result_values(rows: usize) -> Vec<Values> {
+    pinjoint::record::COLUMNS
+        .iter()
+        .map(|c| match c.value {
+            pinjoint::record::Value::Number(_) => Values::Number(Vec::with_capacity(rows)),
+            _ => Values::Name(Vec::with_capacity(rows)),
+        })
+        .collect()
+}
+
+/// Append the result columns of `op` to `cols` (as [`result_values`] made them).
+#[inline]
+pub fn push_result(cols: &mut [Values], op: &OperatingPoint) {
+    for (c, v) in pinjoint::record::COLUMNS.iter().zip(cols) {
+        match (c.value, v) {
+            (pinjoint::record::Value::Number(f), Values::Number(v)) => v.push(f(op)),
+            (pinjoint::record::Value::Regime, Values::Name(v)) => v.push(op.regime.as_str()),
+            (pinjoint::record::Value::Validity, Values::Name(v)) => v.push(op.validity.as_str()),
+            _ => unreachable!("result_values makes each column of its kind"),
+        }
+    }
+}
+
+/// The schema of columns named `names` holding `kinds` (the first block's columns).
+fn schema(names: &[String], kinds: &[Values]) -> SchemaRef {
+    let fields: Vec<Field> = names
+        .iter()
+        .zip(kinds)
+        .map(|(n, k)| Field::new(n, if matches!(k, Values::Number(_)) { DataType::Float64 } else { DataType::Utf8 }, false))
+        .collect();
+    Arc::new(Schema::new(fields))
+}
+
+/// Streams blocks of rows into a Parquet file: each [`ParquetSink::write`] call appends rows
+/// (the writer closes a row group at [`ROW_GROUP_ROWS`] rows), [`ParquetSink::finish`] writes
+/// the footer.
+pub struct ParquetSink<W: Write + Send> {
+    writer: ArrowWriter<W>,
+    schema: SchemaRef,
+}
+
+impl<W: Write + Send> ParquetSink<W> {
+    /// A sink writing to `w` the columns `names`, of the kinds of `kinds` (one [`Values`] per
+    /// name, its contents ignored).
+    pub fn new(w: W, names: &[String], kinds: &[Values]) -> io::Result<Self> {
+        let schema = schema(names, kinds);
+        let mut props = WriterProperties::builder()
+            .set_max_row_group_size(ROW_GROUP_ROWS)
+            .set_dictionary_enabled(false)
+            .set_statistics_enabled(EnabledStatistics::Chunk)
+            .set_created_by(format!("pinjoint {}", env!("CARGO_PKG_VERSION")));
+        for (n, k) in names.iter().zip(kinds) {
+            if !matches!(k, Values::Number(_)) {
+                props = props.set_column_dictionary_enabled(ColumnPath::from(n.as_str()), true);
+            }
+        }
+        let writer = ArrowWriter::try_new(w, schema.clone(), Some(props.build())).map_err(to_io)?;
+        Ok(ParquetSink { writer, schema })
+    }
+
+    /// Append the rows of `blocks`, in order: each block one [`Values`] per column, every
+    /// column of a block as long.
+    pub fn write(&mut self, blocks: &[&[Values]]) -> io::Result<()> {
+        let rows: usize = blocks.iter().map(|b| b.first().map_or(0, Values::len)).sum();
+        if rows == 0 {
+            return Ok(());
+        }
+        let ncols = self.schema.fields().len();
+        let mut arrays: Vec<ArrayRef> = Vec::with_capacity(ncols);
+        for c in 0..ncols {
+            let array: ArrayRef = match blocks.first().map(|b| &b[c]) {
+                Some(Values::Number(_)) => {
+                    let mut v = Vec::with_capacity(rows);
+                    for b in blocks {
+                        if let Values::Number(x) = &b[c] {
+                            v.extend_from_slice(x);
+                        }
+                    }
+                    Arc::new(Float64Array::from(v))
+                }
+                _ => {
+                    let mut t = StringBuilder::with_capacity(rows, rows * 8);
+                    for b in blocks {
+                        for v in text_of(&b[c]) {
+                            t.append_value(v);
+                        }
+                    }
+                    Arc::new(t.finish())
+                }
+            };
+            arrays.push(array);
+        }
+        let batch = RecordBatch::try_new(self.schema.clone(), arrays).map_err(|e| io::Error::other(e.to_string()))?;
+        self.writer.write(&batch).map_err(to_io)
+    }
+
+    /// Write the footer (the file is complete only then) and flush.
+    pub fn finish(self) -> io::Result<()> {
+        let mut w = self.writer.into_inner().map_err(to_io)?;
+        w.flush()
+    }
+}
+
+/// The text values of a column (empty for a number column).
+fn text_of(v: &Values) -> Box<dyn Iterator<Item = &str> + '_> {
+    match v {
+        Values::Name(x) => Box::new(x.iter().copied()),
+        Values::Text(x) => Box::new(x.iter().map(String::as_str)),
+        Values::Number(_) => Box::new(std::iter::empty()),
+    }
+}
+
+/// A Parquet error as an io::Error (an I/O error as itself, so that its kind is kept).
+fn to_io(e: parquet::errors::ParquetError) -> io::Error {
+    match e {
+        parquet::errors::ParquetError::External(inner) => match inner.downcast::<io::Error>() {
+            Ok(io) => *io,
+            Err(other) => io::Error::other(other.to_string()),
+        },
+        other => io::Error::other(other.to_string()),
+    }
+}
+
+/// The points of `pinjoint map` (load, speed, speed_rpm, then the result columns) as one
+/// Parquet file, the same columns and numbers as its CSV ([`crate::curves::points_csv`]).
+pub fn points_parquet(w: &mut (dyn Write + Send), ops: &[OperatingPoint]) -> io::Result<()> {
+    let names: Vec<String> = ["load", "speed", "speed_rpm"].iter().map(|s| (*s).to_string()).chain(crate::common::RESULT_COLUMNS.iter().map(|s| (*s).to_string())).collect();
+    let mut sink = ParquetSink::new(w, &names, &block_kinds(3))?;
+    for part in ops.chunks(ROW_GROUP_ROWS) {
+        let mut cols: Vec<Values> = (0..3).map(|_| Values::Number(Vec::with_capacity(part.len()))).collect();
+        cols.extend(result_values(part.len()));
+        for op in part {
+            for (k, x) in [op.load, op.angular_velocity, op.angular_velocity / crate::common::RAD_S_PER_RPM].into_iter().enumerate() {
+                if let Values::Number(v) = &mut cols[k] {
+                    v.push(x);
+                }
+            }
+            push_result(&mut cols[3..], op);
+        }
+        sink.write(&[&cols])?;
+    }
+    sink.finish()
+}
+
+/// `numbers` number columns then the result columns, empty (a schema's kinds).
+fn block_kinds(numbers: usize) -> Vec<Values> {
+    let mut v: Vec<Values> = (0..numbers).map(|_| Values::Number(Vec::new())).collect();
+    v.extend(result_values(0));
+    v
+}
+
+/// One batch of a Parquet input: load (N), speed (rad/s) and temperature (K) per row.
+pub type Rows = (Vec<f64>, Vec<f64>, Option<Vec<f64>>);
+
+/// Reads `load`, `speed` and (when present) `temperature` from a Parquet file in batches.
+pub struct ParquetRows {
+    reader: parquet::arrow::arrow_reader::ParquetRecordBatchReader,
+    /// Rows read before the current batch.
+    pub row: u64,
+    /// Whether the file has a `temperature` column.
+    pub has_temperature: bool,
+    /// The file's name, for messages.
+    file: String,
+}
+
+/// Where the columns wanted are in a batch.
+const WANTED: [&str; 3] = ["load", "speed", "temperature"];
+
+impl ParquetRows {
+    /// Open `path`; the columns `load` and `speed` must be there (numbers), `temperature` may be.
+    pub fn open(path: &std::path::Path, batch_rows: usize) -> Result<Self, String> {
+        let file = path.display().to_string();
+        let f = std::fs::File::open(path).map_err(|e| format!("cannot open {file}: {e}"))?;
+        let builder = parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder::try_new(f).map_err(|e| format!("{file} is not a readable Parquet file: {e}"))?;
+        let schema = builder.schema().clone();
+        let mut roots = Vec::new();
+        let mut has_temperature = false;
+        for name in WANTED {
+            let hits: Vec<usize> = schema.fields().iter().enumerate().filter(|(_, f)| f.name() == name).map(|(i, _)| i).collect();
+            match hits.as_slice() {
+                [i] => {
+                    let t = schema.field(*i).data_type();
+                    if !is_number_type(t) {
+                        return Err(format!("{file}: column `{name}` holds {t}, not numbers"));
+                    }
+                    roots.push(*i);
+                    has_temperature |= name == "temperature";
+                }
+                [] if name == "temperature" => {}
+                [] => {
+                    let names: Vec<&str> = schema.fields().iter().map(|f| f.name().as_str()).collect();
+                    return Err(format!("{file} has no `{name}` column (it has: {})", names.join(",")));
+                }
+                _ => return Err(format!("{file} names the column `{name}` more than once")),
+            }
+        }
+        let mask = parquet::arrow::ProjectionMask::roots(builder.parquet_schema(), roots);
+        let reader = builder.with_projection(mask).with_batch_size(batch_rows).build().map_err(|e| format!("{file}: {e}"))?;
+        Ok(ParquetRows { reader, row: 0, has_temperature, file })
+    }
+
+    /// The next batch: (load, speed, temperature) per row, or None at the end. A missing
+    /// (null) value is an error naming its row (1-based, in the file's order).
+    pub fn next_batch(&mut self) -> Result<Option<Rows>, String> {
+        let Some(batch) = self.reader.next() else { return Ok(None) };
+        let batch = batch.map_err(|e| format!("{}: {e}", self.file))?;
+        let column = |name: &str| -> Result<Option<Vec<f64>>, String> {
+            let Some(a) = batch.column_by_name(name) else { return Ok(None) };
+            numbers(a.as_ref()).map(Some).map_err(|(i, what)| format!("{}: row {}: column {name} {what}", self.file, self.row + i as u64 + 1))
+        };
+        let load = column("load")?.ok_or_else(|| format!("{}: no `load` column", self.file))?;
+        let speed = column("speed")?.ok_or_else(|| format!("{}: no `speed` column", self.file))?;
+        let temperature = column("temperature")?;
+        self.row += load.len() as u64;
+        Ok(Some((load, speed, temperature)))
+    }
+}
+
+fn is_number_type(t: &DataType) -> bool {
+    matches!(t, DataType::Float64 | DataType::Float32 | DataType::Int8 | DataType::Int16 | DataType::Int32 | DataType::Int64 | DataType::UInt8 | DataType::UInt16 | DataType::UInt32 | DataType::UInt64)
+}
+
+/// A numeric Arrow array as doubles (integers and floats converted as Rust's `as` does: exact
+/// for every float and for integers up to 2^53); the index of a null and what is wrong.
+fn numbers(a: &dyn arrow_array::Array) -> Result<Vec<f64>, (usize, &'static str)> {
+    use arrow_array::cast::AsArray;
+    use arrow_array::types::{Float32Type, Float64Type, Int16Type, Int32Type, Int64Type, Int8Type, UInt16Type, UInt32Type, UInt64Type, UInt8Type};
+    if let Some(i) = (0..a.len()).find(|&i| a.is_null(i)) {
+        return Err((i, "is missing (null)"));
+    }
+    // `as`: exact for every float and small integer; 64-bit integers round to the nearest double.
+    #[allow(clippy::cast_lossless)]
+    fn cast<T: Copy + num_cast::ToDouble>(v: &[T]) -> Vec<f64> {
+        v.iter().map(|&x| x.to_double()).collect()
+    }
+    macro_rules! conv {
+        ($t:ty) => {
+            cast(a.as_primitive::<$t>().values())
+        };
+    }
+    Ok(match a.data_type() {
+        DataType::Float64 => a.as_primitive::<Float64Type>().values().to_vec(),
+        DataType::Float32 => conv!(Float32Type),
+        DataType::Int8 => conv!(Int8Type),
+        DataType::Int16 => conv!(Int16Type),
+        DataType::Int32 => conv!(Int32Type),
+        DataType::Int64 => conv!(Int64Type),
+        DataType::UInt8 => conv!(UInt8Type),
+        DataType::UInt16 => conv!(UInt16Type),
+        DataType::UInt32 => conv!(UInt32Type),
+        DataType::UInt64 => conv!(UInt64Type),
+        _ => return Err((0, "is not numbers")),
+    })
+}
+
+/// `as f64` for the numeric types of an Arrow column.
+mod num_cast {
+    /// The value as a double (Rust's `as`).
+    pub trait ToDouble {
+        /// See the trait.
+        fn to_double(self) -> f64;
+    }
+    macro_rules! impl_as {
+        ($($t:ty),*) => {
+            $(impl ToDouble for $t {
+                #[allow(clippy::cast_lossless, clippy::cast_precision_loss)]
+                fn to_double(self) -> f64 {
+                    self as f64
+                }
+            })*
+        };
+    }
+    impl_as!(f32, i8, i16, i32, i64, u8, u16, u32, u64);
+}
