@@ -166,7 +166,8 @@ pub struct OperatingPoint {
     /// λ_min = h_min/√(σ² + σ_b²), eq. 21 as printed (with h_min).
     pub min_lambda_ratio: f64,
     /// Whether the load, sliding speed and the joint's lubricant temperature are inside the
-    /// conditions the model was checked against ([`crate::validity::of_point`]).
+    /// conditions the model was checked against, or past its assumptions
+    /// ([`Joint::validity`]).
     pub validity: crate::validity::Validity,
     /// T_clearance, N·m: the torque of the lubricant in the clearance outside the contact arc,
     /// its yield part included (complete model, [`crate::composite`]; 0 for the paper's model).
@@ -241,6 +242,9 @@ pub struct Joint {
     clearance_ratio_sq: f64,
     /// The load (N) at which the rest film of eq. 19 reaches zero (see [`Joint::capacity`]).
     capacity: f64,
+    /// Where the model's assumptions end (the Hertz half-width reaching the pin's radius, the
+    /// grease's upper service temperature): [`Joint::validity`] says `outside` beyond.
+    edges: crate::validity::Edges,
     /// Converged logits over (ln P_T, ln u) of the lubricant at its reference temperature:
     /// the deterministic start of a cold solve, shared by the joints [`Joint::at_temperature`]
     /// makes (it does not depend on the temperature).
@@ -306,6 +310,7 @@ impl Joint {
             projected_area: 2.0 * g.pin_radius * g.bush_length,
             clearance_ratio_sq: (g.pin_radius / params.radial_clearance()).powi(2),
             capacity: asperity_capacity(&params.surface, &asp_unit),
+            edges: crate::validity::Edges::new(params),
             lub: *reference,
             ln_w_unit: (1.0 / (e_eff * r_red * g.bush_length)).ln(),
             ln_u_mean_unit: f64::NAN,
@@ -520,16 +525,40 @@ impl Joint {
     /// The largest load (N) the asperity model can take: at rest (1/γ2 = 1) eq. 19 gives
     /// h_c = d_d + σ_s·t with F_{3/2}(t) growing with the load, and at this load h_c reaches 0
     /// (the mean planes of the surfaces would pass through each other). Loads at or beyond it
-    /// are a [`ModelError::BeyondCapacity`]. 5.05e8 N for the paper's joint.
+    /// are a [`ModelError::BeyondCapacity`]. 5.05e8 N for the paper's joint. This is where
+    /// the equations stop giving an answer, not where they describe the joint: the declared
+    /// load capacity is [`Joint::load_edge`] (96.7 kN for the paper's joint), beyond which
+    /// the answers are flagged [`crate::Validity::Outside`].
     pub fn capacity(&self) -> f64 {
         self.capacity
     }
 
+    /// The declared load capacity (N): the load at which the Hertz half-width a of eq. 6
+    /// reaches the pin's radius, π E' B R²/(8 R') ([`crate::validity::load_edge`]; 96.7 kN for
+    /// the paper's joint). Loads above it are answered (up to [`Joint::capacity`]) with the
+    /// validity [`crate::Validity::Outside`]: beyond the model's assumptions.
+    pub fn load_edge(&self) -> f64 {
+        self.edges.load
+    }
+
+    /// Where this joint's answers leave the model's assumptions ([`crate::validity::Edges`]):
+    /// the load edge and the grease's upper service temperature.
+    pub fn edges(&self) -> crate::validity::Edges {
+        self.edges
+    }
+
     /// Whether (`load` N, `omega` rad/s) at this joint's lubricant temperature is inside the
-    /// conditions the model was checked against ([`crate::validity::of_point`] with the
-    /// sliding speed |ω|R): the `validity` of [`Joint::evaluate`]'s answer there.
+    /// conditions the model was checked against ([`crate::validity::Edges::of_point`] with
+    /// this joint's edges and the sliding speed |ω|R): the `validity` of
+    /// [`Joint::evaluate`]'s answer there.
     pub fn validity(&self, load: f64, omega: f64) -> crate::validity::Validity {
-        crate::validity::of_point(load, omega.abs() * self.params.geometry.pin_radius, self.params.lubricant.temperature, self.params.model.paper)
+        self.edges.of_point(load, omega.abs() * self.params.geometry.pin_radius, self.params.lubricant.temperature, self.params.model.paper)
+    }
+
+    /// The worst excursion of (`load`, `omega`) at this joint's temperature (as
+    /// [`Joint::validity`]), `None` when checked: what a log says.
+    pub fn excursion(&self, load: f64, omega: f64) -> Option<crate::validity::Excursion> {
+        self.edges.excursion(load, omega.abs() * self.params.geometry.pin_radius, self.params.lubricant.temperature, self.params.model.paper)
     }
 
     /// √(σ² + σ_b²), the composite roughness of λ (eq. 21), m.

@@ -87,6 +87,14 @@ pub const DEFAULT_TEMPERATURE: f64 = 293.15;
 /// mineral oils of Stachowiak & Batchelor's Table 2.3 (`tests/published_values.rs`).
 pub const DEFAULT_ROELANDS_TEMPERATURE_INDEX: f64 = 1.262;
 
+/// Default upper service temperature of the grease (K), +121 °C: the upper limit of
+/// MIL-PRF-23827 Type I (−73 °C to +121 °C), the class of the default grease (a lithium-soap
+/// grease on a diester base oil; [`crate::grease`], docs/cold-day.md). Above it a grease of
+/// this class is outside its specification (it bleeds, softens and oxidises; its dropping
+/// point is not far above): the model's grease and its supply of oil to the contact are not
+/// this joint's any more. A MIL-PRF-81322 grease (−54 °C to +177 °C) would set 450.15 K.
+pub const DEFAULT_UPPER_SERVICE_TEMPERATURE: f64 = 394.15;
+
 /// Starved-inlet correction of the central film (an extension, off by default; see
 /// [`crate::starvation`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -141,6 +149,10 @@ pub struct Grease {
     /// 1/h_oil(T_ref), reciprocal of the oil layer the grease's bleed leaves on the track at
     /// the reference temperature (1/m); 0 = no supply limit ([`crate::cold_supply`]).
     pub supply_layer_inverse: f64,
+    /// T_max, the grease's upper service temperature (K, absolute: not quoted at the
+    /// reference temperature). Above it every answer is `outside` the model's assumptions
+    /// (the validity module's `Edges`; docs/validity.md), with either model.
+    pub upper_service_temperature: f64,
 }
 
 /// The full parameter set. `Params::default()` is the paper's rig with the complete model;
@@ -226,6 +238,7 @@ impl Default for Grease {
             consistency_activation: c::DEFAULT_CONSISTENCY_ACTIVATION,
             supply_exponent: c::DEFAULT_SUPPLY_EXPONENT,
             supply_layer_inverse: c::DEFAULT_SUPPLY_LAYER_INVERSE,
+            upper_service_temperature: DEFAULT_UPPER_SERVICE_TEMPERATURE,
         }
     }
 }
@@ -363,7 +376,7 @@ macro_rules! switch {
 }
 
 /// Every parameter, in file order.
-pub static PARAMS: [ParamSpec; 35] = [
+pub static PARAMS: [ParamSpec; 36] = [
     spec!(geometry.pin_radius, "R", "m", Range::Positive, "Table 1", "Outer radius of the pin"),
     spec!(geometry.bush_radius, "R_b", "m", Range::Positive, "Table 1", "Inner radius of the bush (must exceed the pin radius; the radial clearance is R_b - R)"),
     spec!(geometry.bush_length, "B", "m", Range::Positive, "Table 1", "Length of the bush (contact length)"),
@@ -400,6 +413,7 @@ pub static PARAMS: [ParamSpec; 35] = [
     spec!(grease.consistency_activation, "E_K/R", "K", Range::NonNegative, GREASE_SOURCE, "Activation temperature of the consistency: K(T) = K exp(E_K/R (1/T - 1/T_ref))"),
     spec!(grease.supply_exponent, "m", "1", Range::Closed(0.0, 10.0), "Complete model: the grease's oil supply (docs/cold-day.md), default 1 (Darcy/capillary flow)", "Exponent of the supply layer's temperature law h_oil(T) = h_oil(T_ref) (eta_b(T_ref)/eta_b(T))^m"),
     spec!(grease.supply_layer_inverse, "1/h_oil", "1/m", Range::NonNegative, "Complete model: the grease's oil supply (docs/cold-day.md)", "Reciprocal of the oil layer the grease's bleed leaves on the track at the reference temperature; the contact is a starved inlet fed by it (h^-g = h_ff^-g + h_oil^-g, g = starvation.exponent); 0 = no supply limit"),
+    spec!(grease.upper_service_temperature, "T_max", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Grease class: MIL-PRF-23827 Type I, -73 to +121 C (default 394.15 K); MIL-PRF-81322 would be 450.15 K (+177 C)", "Upper service temperature of the grease (absolute, not re-quoted): above it every answer, of either model, has validity outside (code 3: beyond the model's assumptions) instead of extrapolation; the answer itself is unchanged"),
 ];
 
 /// Where the grease's defaults come from ([`crate::grease`]: chosen for the paper's grease class

@@ -58,7 +58,7 @@ pub const COLUMNS: [Column; 17] = [
     Column { name: "journal_weight", unit: "1", description: "weight w of the journal bearing in the composite film (0 line contact, 1 full-film journal; complete model)", value: Value::Number(|o| o.journal_weight) },
     Column { name: "eccentricity_ratio", unit: "1", description: "eccentricity ratio of the clearance 1 - h_c/c (clamped to [0, 1))", value: Value::Number(|o| o.eccentricity_ratio) },
     Column { name: "grease_yield_torque", unit: "N.m", description: "the grease's yield torque, part of the clearance torque and of the torque at rest (complete model)", value: Value::Number(|o| o.grease_yield_torque) },
-    Column { name: "validity", unit: "-", description: "checked, extrapolation or known-wrong: inside the paper's rig conditions or not (crate::validity)", value: Value::Validity },
+    Column { name: "validity", unit: "-", description: "checked, extrapolation, known-wrong or outside: inside the paper's rig conditions, outside them, or past the model's assumptions (crate::validity)", value: Value::Validity },
 ];
 
 /// The inputs of an operating point: the load magnitude and the angular velocity as given.

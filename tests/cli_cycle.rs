@@ -389,3 +389,45 @@ fn figures_cold_day_scene_has_every_temperature() {
     let series: BTreeSet<String> = rdr.records().map(|r| format!("{:+} °C", r.unwrap()[0].parse::<f64>().unwrap())).collect();
     assert_eq!(series, ran);
 }
+
+/// The cold day (issue 37, item 6): the points where `pinjoint cycle` refused with "stick/slip
+/// chattering" (−55 °C at 5 kN, 0.3 Hz and at 60 kN, 0.03 Hz; −40 °C with a grease 1.5×
+/// stiffer) run: the joint sticks at the reversals, stuck rows hold ω = 0 and a torque within
+/// the breakaway torque, slipping rows oppose the motion, and the printed average is eq. 11 of
+/// the CSV's second stroke.
+#[test]
+fn the_cold_day_runs_where_the_events_chattered() {
+    let tmp = tempfile::tempdir().unwrap();
+    let g = Params::default().grease;
+    let stiff = tmp.path().join("stiff.toml");
+    std::fs::write(&stiff, format!("[grease]\nyield_stress = {:?}\nconsistency = {:?}\n", 1.5 * g.yield_stress, 1.5 * g.consistency)).unwrap();
+    for (t, load, f, params) in [("218.15", 5e3, "0.3", None), ("218.15", 60e3, "0.03", None), ("233.15", 20e3, "1", Some(&stiff))] {
+        let dir = tmp.path().join(format!("c{t}-{load}-{f}"));
+        let d = dir.to_str().unwrap();
+        let l = load.to_string();
+        let mut args = vec!["cycle", "--temperature", t, "--load", &l, "--frequency", f, "--cycles", "2", "--samples-per-cycle", "400", "--output", d];
+        if let Some(p) = params {
+            args.extend(["--params", p.to_str().unwrap()]);
+        }
+        let o = ok(&args);
+        let mut p = Params::default();
+        p.lubricant.temperature = t.parse().unwrap();
+        if params.is_some() {
+            (p.grease.yield_stress, p.grease.consistency) = (1.5 * g.yield_stress, 1.5 * g.consistency);
+        }
+        let breakaway = Joint::new(&p).unwrap().boundary_torque(load);
+        let rows = read_cycle(&dir);
+        assert!(rows.iter().any(|r| r[9] == 1.0), "{t} K: the joint sticks at the reversals");
+        for r in &rows {
+            if r[9] == 1.0 {
+                assert!(r[3] == 0.0 && r[5].abs() <= breakaway * (1.0 + 1e-9), "{t} K: {r:?}");
+            } else if r[3].abs() > 1e-6 {
+                assert!(r[5] * r[3] < 0.0, "{t} K: {r:?}");
+            }
+        }
+        let second = &rows[400..=800];
+        let mean = second[..400].iter().map(|r| r[4].abs()).sum::<f64>() / 400.0;
+        let mu = printed(&o.stdout, "cycle-average friction coefficient");
+        assert!((mu - mean / (R * load)).abs() <= 1e-9 * mu, "{t} K: printed {mu}, CSV {}", mean / (R * load));
+    }
+}

@@ -59,8 +59,9 @@ fn serialize_round_trip_across_instances_is_bit_exact() {
     drive(a, 0, 250);
     let mut s = get_state(a);
     let bytes = serialize(a, s);
-    // 58 values of 8 bytes (version 7: version 5's 45, the complete model's eight parameters,
-    // the host inertia and the host-convention bookkeeping) and the container's header.
+    // 61 values of 8 bytes (version 9: version 5's 45, the complete model's ten parameters
+    // (grease.supply_layer_inverse and grease.upper_service_temperature among them), the host
+    // inertia, the host-convention bookkeeping and the host coupling) and the container's header.
     assert!(bytes.len() < 560, "small: {} bytes", bytes.len());
     assert_eq!(&bytes[..8], b"FMI2STAT");
     let expect = drive(a, 250, 400);
@@ -112,19 +113,19 @@ fn truncated_corrupted_and_wrong_version_states_are_rejected() {
     // magic(8) version(2) length(4) guid(1+38) state(1) times(16) length(4).
     let model_at = 8 + 2 + 4 + 1 + guid().len() + 1 + 16 + 4;
     let mut b = bytes.clone();
-    b[model_at] = 8;
+    b[model_at] = 9;
     fix_crc(&mut b);
     assert_eq!(deserialize(c, &b), Err(ERROR));
-    assert!(h.last().contains("PinJoint state version 8"), "{}", h.last());
+    assert!(h.last().contains("PinJoint state version 9"), "{}", h.last());
     // States of the previous layouts (version 4, before the presliding state; 5, before the
     // host inertia, the Model Exchange mode and the complete model's parameters; 6, either of
-    // those alone) are refused by name.
-    for old in [4u8, 5, 6] {
+    // those alone; 7 and 8, before the host coupling and the two newest parameters) are refused by name.
+    for old in [4u8, 5, 6, 7, 8] {
         let mut b = bytes.clone();
         b[model_at] = old;
         fix_crc(&mut b);
         assert_eq!(deserialize(c, &b), Err(ERROR));
-        assert!(h.last().contains(&format!("PinJoint state version {old}; this FMU reads version 7")), "{}", h.last());
+        assert!(h.last().contains(&format!("PinJoint state version {old}; this FMU reads version 9")), "{}", h.last());
     }
     // A valid checksum over an impossible value: each is checked as its setter or the
     // parameter check at initialization checks it (issue 9: these were accepted before).

@@ -200,9 +200,9 @@ fn cases() -> Vec<(At, &'static str, Call, &'static str)> {
             fix_crc(b);
         }), "input angular_velocity = NaN rad/s"),
         (Step, "deserialize a state of the layout before the presliding state", |i| damaged(i, |b| { let at = model_part(); b[at] = 4; fix_crc(b) }),
-            "PinJoint state version 4; this FMU reads version 7"),
+            "PinJoint state version 4; this FMU reads version 9"),
         (Step, "deserialize a state of the layout before the host conventions", |i| damaged(i, |b| { let at = model_part(); b[at] = 5; fix_crc(b) }),
-            "PinJoint state version 5; this FMU reads version 7"),
+            "PinJoint state version 5; this FMU reads version 9"),
         (Step, "deserialize a state holding a Model Exchange mode of 2", |i| damaged(i, |b| {
             let at = model_part() + 3 + 8 * (PARAMS.len() + 20);
             b[at..at + 8].copy_from_slice(&2.0f64.to_le_bytes());

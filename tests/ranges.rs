@@ -291,11 +291,12 @@ fn the_load_is_a_magnitude_as_the_fmu_description_says() {
         out
     };
     assert_eq!(run(-30e3), run(30e3));
-    // Unloaded: every output 0 but `validity` (last), which says the load is outside 5-60 kN.
+    // Unloaded: every output 0 but `validity` and its Integer mirror `validity_code` (the last
+    // two), which say the load is outside 5-60 kN.
     let unloaded = run(0.0);
-    let (validity, rest) = unloaded.split_last().unwrap();
+    let (rest, validity) = unloaded.split_at(unloaded.len() - 2);
+    assert!(validity.iter().all(|&x| x == 1.0), "{unloaded:?}");
     assert!(rest.iter().all(|&x| x == 0.0), "{unloaded:?}");
-    assert_eq!(*validity, 1.0);
 }
 
 /// Issue 23 item 3 through the FMU: a megabyte GUID, resource location or instance name is

@@ -212,13 +212,13 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     // A state of an earlier layout (version 2, before the temperature input) is refused by version.
     let mut old = bytes.clone();
     let model = model_part_offset(&old);
-    assert_eq!(old[model], 4, "rig state version 4");
+    assert_eq!(old[model], 5, "rig state version 5");
     old[model] = 2;
     let n = old.len();
     let crc = fmi_layer::fmi2::bytes::crc32(&old[..n - 4]);
     old[n - 4..].copy_from_slice(&crc.to_le_bytes());
     assert!(deserialize(d, &old).is_err());
-    assert!(h.last().contains("PinJointRig state version 2; this FMU reads version 4"), "{}", h.last());
+    assert!(h.last().contains("PinJointRig state version 2; this FMU reads version 6"), "{}", h.last());
     let mut s = s;
     assert_eq!(unsafe { fmi2FreeFMUstate(c, &mut s) }, OK);
     assert_eq!(unsafe { fmi2FreeFMUstate(d, &mut sd) }, OK);

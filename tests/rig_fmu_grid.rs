@@ -11,6 +11,11 @@ fn expected(s: &Sample, joint: &pinjoint::Joint, cfg: &RigConfig) -> Vec<f64> {
     let contact = s.load > 0.0;
     // h_min and λ_min from the library's joint at the sample's state (0 without contact).
     let h_min = if contact { joint.min_film(s.load, s.angular_velocity, s.film_thickness, s.fluid_load_fraction) } else { 0.0 };
+    let validity = f64::from(
+        pinjoint::validity::of_point(s.load, s.angular_velocity.abs() * cfg.model.geometry.pin_radius, cfg.model.lubricant.temperature, cfg.model.model.paper)
+            .max(pinjoint::validity::of_stroke(cfg.rig.frequency, cfg.rig.amplitude))
+            .code(),
+    );
     vec![
         s.angle,
         s.angular_velocity,
@@ -26,12 +31,10 @@ fn expected(s: &Sample, joint: &pinjoint::Joint, cfg: &RigConfig) -> Vec<f64> {
         s.kinetic_energy,
         h_min,
         h_min / joint.composite_roughness(),
-        // validity: the sample's operating point and the sine stroke (pinjoint::validity).
-        f64::from(
-            pinjoint::validity::of_point(s.load, s.angular_velocity.abs() * cfg.model.geometry.pin_radius, cfg.model.lubricant.temperature, cfg.model.model.paper)
-                .max(pinjoint::validity::of_stroke(cfg.rig.frequency, cfg.rig.amplitude))
-                .code(),
-        ),
+        // validity and its Integer mirror validity_code: the sample's operating point and the
+        // sine stroke (pinjoint::validity).
+        validity,
+        validity,
     ]
 }
 
@@ -170,5 +173,35 @@ fn dense_method_is_grid_independent_and_equals_the_library() {
     let lib = library_run(&cfg, &coarse, &load_step);
     for (k, (x, y)) in b.iter().zip(&lib).enumerate() {
         assert_eq!(bits(x), bits(y), "t = {}: {x:?} vs {y:?}", coarse[k]);
+    }
+}
+
+/// The cold day (issue 37, item 6): at −55 °C, 5 kN, 0.3 Hz (where the event logic chattered
+/// and refused before) and at −40 °C with a grease 1.5× stiffer (consistency and yield stress),
+/// the FMU steps two strokes without an error, sticks at the reversals, and equals the
+/// library's rig bit for bit.
+#[test]
+fn the_cold_day_steps_and_equals_the_library() {
+    let g = pinjoint::Params::default().grease;
+    for (temperature, load, frequency, stiffer) in [(218.15, 5e3, 0.3, 1.0), (233.15, 20e3, 1.0, 1.5), (218.15, 60e3, 1.0, 1.5)] {
+        let sets = [
+            ("temperature", temperature),
+            ("frequency", frequency),
+            ("grease.consistency", stiffer * g.consistency),
+            ("grease.yield_stress", stiffer * g.yield_stress),
+        ];
+        let mut cfg = RigConfig::default();
+        cfg.model.lubricant.temperature = temperature;
+        cfg.model.grease.consistency = stiffer * g.consistency;
+        cfg.model.grease.yield_stress = stiffer * g.yield_stress;
+        cfg.rig.frequency = frequency;
+        let times = grid(0.02, 2.0 / frequency);
+        let constant = move |_: f64| load;
+        let fmu = fmu_run(&sets, &times, &constant);
+        let lib = library_run(&cfg, &times, &constant);
+        for (k, (x, y)) in fmu.iter().zip(&lib).enumerate() {
+            assert_eq!(bits(x), bits(y), "{temperature} K, {load} N, {frequency} Hz, x{stiffer}: t = {}: {x:?} vs {y:?}", times[k]);
+        }
+        assert!(fmu.iter().any(|r| r[7] == 1.0) && fmu.iter().any(|r| r[1] > 0.1) && fmu.iter().any(|r| r[1] < -0.1), "{temperature} K: stick and both directions");
     }
 }

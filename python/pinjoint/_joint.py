@@ -58,7 +58,10 @@ class Joint:
     regime (strings), min_film_thickness (m), min_lambda_ratio (-) and validity (strings:
     "checked" inside the paper's rig conditions, 5-60 kN, |speed|*R up to the 1 Hz +-40 deg
     stroke's peak, 15-25 C; "extrapolation" outside them; "known-wrong" below 0 C, where
-    the model's mu and torque are too low: no grease yield stress). At fidelity "full" each number equals the Rust library's (and the CLI
+    the model's mu and torque are too low: no grease yield stress; "outside" past the model's
+    assumptions: |load| above `load_edge`, where the Hertz half-width of eq. 6 reaches the pin
+    radius, or the temperature above grease.upper_service_temperature, 394.15 K by default;
+    still answered, continuous across the edge). At fidelity "full" each number equals the Rust library's (and the CLI
     sweep's) bit for bit. The GIL is released and large arrays use every core (rayon; set
     RAYON_NUM_THREADS to limit it).
 
@@ -133,8 +136,16 @@ class Joint:
         return self._native.fallbacks
 
     @property
+    def load_edge(self) -> float:
+        """The declared load capacity (N): the load at which the Hertz half-width of eq. 6
+        reaches the pin radius, pi E' B R^2/(8 R') (96.7 kN for the paper's joint). Above it the
+        answers are flagged "outside" (beyond the model's assumptions), up to `capacity`."""
+        return self._native.load_edge
+
+    @property
     def capacity(self) -> float:
-        """The largest load (N) the asperity model can take for these parameters."""
+        """The largest load (N) the asperity model can take for these parameters: refused at and
+        beyond it. The declared load capacity is `load_edge` (answers above it are "outside")."""
         return self._native.capacity
 
     def evaluate(self, load: Any, speed: Any, errors: str = "raise") -> Dict[str, np.ndarray]:
@@ -158,7 +169,7 @@ class Joint:
 
         Returns a dict of arrays of the broadcast shape: load, speed, then RESULT_COLUMNS
         (float64, SI units; regime as strings "boundary", "mixed", "full-film"; validity as
-        strings "checked", "extrapolation", "known-wrong").
+        strings "checked", "extrapolation", "known-wrong", "outside").
         """
         if errors not in ("raise", "nan"):
             raise ValueError(f'errors = {errors!r} is not a choice: it must be "raise" or "nan"')

@@ -209,10 +209,16 @@ impl NativeJoint {
     fn fallbacks(&self) -> u64 {
         self.fallbacks.load(Ordering::Relaxed)
     }
-    /// The largest load the asperity model can take (N).
+    /// The largest load the asperity model can take (N): refused at and beyond it.
     #[getter]
     fn capacity(&self) -> f64 {
         self.joint.capacity()
+    }
+    /// The declared load capacity (N): where the Hertz half-width reaches the pin radius;
+    /// answered beyond it with the validity `outside` ([`pinjoint::Joint::load_edge`]).
+    #[getter]
+    fn load_edge(&self) -> f64 {
+        self.joint.load_edge()
     }
     fn __repr__(&self) -> String {
         format!("_Joint(level={}, bound={})", self.chosen.as_str(), short(self.error_bound))

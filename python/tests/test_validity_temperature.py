@@ -16,17 +16,25 @@ LOAD = (5e3, 60e3)
 U_MAX = 2.0 * math.pi * 1.0 * math.radians(40.0) * 0.028
 TEMP = (288.15, 298.15)
 COLD = 273.15
+# The model's assumptions (docs/validity.md, "Past the model's assumptions"): the load at which
+# the Hertz half-width of eq. 6 reaches the pin radius, pi E' B R^2/(8 R') for Table 1, and the
+# default grease's upper service temperature (MIL-PRF-23827 Type I, +121 C).
+E_EFF = 2.0 / ((1 - 0.28**2) / 205e9 + (1 - 0.34**2) / 117e9)
+R_RED = 0.028 * 0.028025 / 0.000025
+LOAD_EDGE = math.pi * E_EFF * 0.0594 * 0.028**2 / (8 * R_RED)
+T_MAX = 394.15
 
 
 def expected(load, speed, t, paper=False):
     """The envelope's name; below 0 C known-wrong for the paper's model only (the complete
-    model, the default, is an extrapolation there)."""
+    model, the default, is an extrapolation there); past the model's assumptions outside."""
     u = np.abs(speed) * 0.028
     load = np.abs(load)
     ok = (load >= LOAD[0]) & (load <= LOAD[1]) & (u <= U_MAX) & (t >= TEMP[0]) & (t <= TEMP[1])
     out = np.where(ok, "checked", "extrapolation").astype(object)
     if paper:
         out[np.broadcast_to(t < COLD, out.shape)] = "known-wrong"
+    out[np.broadcast_to((load > LOAD_EDGE) | (t > T_MAX), out.shape)] = "outside"
     return out
 
 
@@ -61,8 +69,10 @@ def test_every_boundary_and_both_sides():
 def test_random_points_and_temperatures(seed):
     rng = np.random.default_rng(seed)
     base = pinjoint.Joint()
-    # Inside the declared temperature range and the film-clearance bound (docs/conventions.md).
-    for t in np.concatenate([rng.uniform(250.0, 400.0, 4), [293.15, 272.0]]):
+    # Inside the declared temperature range and the film-clearance bound (docs/conventions.md);
+    # loads and temperatures on both sides of the model's assumptions (outside above 96.7 kN
+    # and 394.15 K).
+    for t in np.concatenate([rng.uniform(250.0, 400.0, 4), [293.15, 272.0, 394.15, 394.16]]):
         load = np.exp(rng.uniform(np.log(5e3), np.log(2e5), 300))
         speed = np.exp(rng.uniform(np.log(1e-4), np.log(3.0), 300)) * rng.choice([-1.0, 1.0], 300)
         moved = base.at_temperature(float(t))
@@ -114,4 +124,4 @@ def test_cold_soak_is_known_wrong_and_low_only_for_the_paper_model():
         cold = pinjoint.Joint().at_temperature(t).evaluate(20e3, 0.21)
         assert str(cold["validity"]) == "extrapolation"
         assert float(cold["friction_coefficient"]) > float(warm["friction_coefficient"])
-    assert pinjoint.VALIDITIES == ["checked", "extrapolation", "known-wrong"]
+    assert pinjoint.VALIDITIES == ["checked", "extrapolation", "known-wrong", "outside"]

@@ -13,11 +13,30 @@
 //!
 //! # Events
 //! Hybrid formulation (see [`super::dynamics`] for the phases):
-//! - Slip(s) → the speed reaches 0 (s·ω ≤ 0): if |T_a| ≤ k_b·μ_c·R·P the joint sticks,
-//!   otherwise it reverses at once into Slip(sign T_a).
-//! - Stick → |T_a| > k_b·μ_c·R·P: breakaway into Slip(sign T_a).
+//! - Slip(s) → the speed reaches 0 (s·ω ≤ 0) *and* the drive no longer exceeds the running
+//!   torque at rest, s·T_a ≤ T_f(0⁺) = μ_c·R·P + the grease's yield torque
+//!   ([`Joint::boundary_torque`], the ω → 0⁺ limit of eq. 11): if |T_a| ≤ k_b·T_f(0⁺) the
+//!   joint sticks, otherwise it reverses at once into Slip(sign T_a).
+//! - Stick → |T_a| > k_b·T_f(0⁺): breakaway into Slip(sign T_a).
 //!
 //! At each event ω is set to exactly 0 (its located value is within the event tolerance of 0).
+//!
+//! # Why the stop needs the one-sided limit (Filippov)
+//! The friction law is set-valued at rest: T_f ∈ [−T_f(0⁺), T_f(0⁺)] at ω = 0 (k_b·T_f(0⁺)
+//! once stuck) and −sign(ω)·T(|ω|) in motion. At ω = 0 in direction s the one-sided limit of
+//! the acceleration is J·ω̇(0⁺) = s·T_a − T_f(0⁺): where it is positive the trajectory leaves
+//! ω = 0 in direction s and can never return there while it stays positive, so a zero of the
+//! integrated ω is not a stop. With the grease's running torque T(ω) = T_f(0⁺) + c·ω^n, n < 1
+//! (Herschel–Bulkley), the slope at rest is infinite: just after a breakaway with
+//! s·T_a − T_f(0⁺) = ΔT the joint creeps at ω* = (ΔT/c)^{1/n}, far below the integrator's
+//! atol, with a relaxation time J·ω*/(n·ΔT) → 0. The integrated ω then dips below 0 within the
+//! tolerance; taking that as an event restarted the slip from ω = 0 at once, a thousand times
+//! in a row (the cold day's "stick/slip chattering" refusal). With the stop tested on the
+//! one-sided limit, such a dip is integrated through (for s·ω < 0 the friction is the
+//! continuous extension −s·T_f(0⁺), which pushes ω back into direction s), so the law is
+//! integrated as it is, unregularised, and the answer converges to the event-exact trajectory
+//! as the tolerance shrinks (tests/rig_cold.rs). Where the drive has fallen below T_f(0⁺) when
+//! ω reaches 0 (every genuine stop or reversal) the rule is the previous one, bit for bit.
 
 use super::config::RigConfig;
 use super::dynamics::{physical, to_state, Dynamics, Phase, State, ANGLE, DISSIPATION, SPEED, TIME, TORQUE, WORK};
@@ -615,11 +634,18 @@ impl RigSim {
         d.linear.set(self.linear);
         let y0 = to_state(&node.state, t0);
         let breakaway = |t: f64| d.load(t).map_or(0.0, |p| d.breakaway_torque(p));
+        let rest = |t: f64| d.load(t).map_or(0.0, |p| d.joint.boundary_torque(p));
         let event = |t: f64, y: &State| -> (f64, bool) {
             match phase {
                 Phase::Slip(s) => {
-                    let g = -f64::from(s) * y[SPEED];
-                    (g, g >= 0.0)
+                    let s = f64::from(s);
+                    let g = -s * y[SPEED];
+                    // The speed's zero ends the slip only where the friction law's one-sided
+                    // limit at rest lets the joint stop: s·T_a ≤ T_f(0⁺) (Filippov). Where the
+                    // drive exceeds the running torque at rest the slip accelerates away from
+                    // ω = 0, and a zero crossing is the integrator's error within its
+                    // tolerance (a creep speed below atol): no event.
+                    (g, g >= 0.0 && s * y[TORQUE] <= rest(t))
                 }
                 Phase::Stick => {
                     let g = y[TORQUE].abs() - breakaway(t);

@@ -27,7 +27,7 @@ pub mod joint;
 
 pub use error::ZeroVelocityError;
 pub use joint::PreslidingJoint;
-pub use presliding::Presliding;
+pub use presliding::{HostCoupling, Presliding};
 
 /// Which zero-velocity treatment a front end applies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -79,3 +79,5 @@ impl ZeroVelocityModel {
 mod tests;
 #[cfg(test)]
 mod host_tests;
+#[cfg(test)]
+mod coupling_tests;

@@ -48,6 +48,29 @@
 //! are real and positive (the motion decays without sign alternation) when a < 1 and
 //! a + b < 2, so c ≤ [`EXPLICIT_MARGIN`]·(J/h)·min(1, 2 − b) (0 when b ≥ 2: a body that light
 //! is outside every explicit envelope at that step).
+//!
+//! A host that couples in parallel ([`HostCoupling::Parallel`]: libcosim, Ecos and other
+//! Jacobi masters step every FMU, then exchange the values) integrates the torque the joint
+//! computed at the previous communication point: a one-step delay in the loop. In stick the
+//! body J under the spring k and damper c, stepped by symplectic Euler with that delayed
+//! torque, has the characteristic polynomial
+//!
+//! ```text
+//!   z³ − 2z² + (1 + a + b)·z − a = 0,     a = h·c/J,  b = h²·k/J
+//! ```
+//!
+//! (the sequential loop's is z² − (2 − a − b)·z + (1 − a)). By Jury's test it is stable only when
+//! a < 1 and b < a·(1 − a) ≤ 1/4, whatever the damping: a stiff presliding spring cannot be held
+//! by a light body at a large step (J = 20 kg·m², 60 kN, 10 ms is b = 0.67). Its three roots sum
+//! to 2, so they are all real and positive (no sign alternation, no chatter) only up to
+//! b = 1/27, the triple root z = 2/3 ([`PARALLEL_LOOP_GAIN`]). Under parallel coupling with the
+//! host's inertia and step known the stiffness is therefore capped at k ≤ (1/27)·J/h² (the
+//! presliding angle widened to T·h²·27/J where the cap binds) and the damping is
+//! c = 2ζ√(k·J) at that stiffness, a = 2ζ√b ≤ 0.27: at the cap the loop's spectral radius is
+//! 0.80 per step for a host integrating by symplectic Euler, 0.86 by explicit Euler, 0.84
+//! exactly with the torque held (checked in the tests); below the cap the loop is the
+//! oscillator of the sequential host, slower per step. The sequential law is unchanged bit for
+//! bit.
 
 use super::jet::Scalar;
 use super::error::ZeroVelocityError;
@@ -76,8 +99,54 @@ pub const HOST_DAMPING_RATIO: f64 = 0.7;
 /// capped at ([`Presliding::damping`]): 0.9.
 pub const EXPLICIT_MARGIN: f64 = 0.9;
 
+/// Under parallel coupling ([`HostCoupling::Parallel`]) the largest loop gain b = h²·k/J the
+/// presliding stiffness is allowed ([`Presliding::stiffness`]): 1/27, the largest at which the
+/// delayed loop's three roots are all real and positive (module doc).
+pub const PARALLEL_LOOP_GAIN: f64 = 1.0 / 27.0;
+
 /// The largest host inertia accepted (kg·m²): 1e9.
 pub const MAX_HOST_INERTIA: f64 = 1e9;
+
+/// How the host couples the joint's torque to its body: which step's torque it integrates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum HostCoupling {
+    /// The host sets the angle and speed, steps the joint, reads the torque and integrates
+    /// its body with it over the same step (fmpy loops, Simulink, Gauss–Seidel masters);
+    /// code 0, the default.
+    #[default]
+    Sequential,
+    /// The host steps the joint and its body together and exchanges the values after the
+    /// step (Jacobi masters: libcosim/OSP, Ecos, many SSP and distributed masters): the body
+    /// integrates the torque of the previous communication point; code 1.
+    Parallel,
+}
+
+impl HostCoupling {
+    /// Its code (the FMU's `zero_velocity.host_coupling`, the Python API): 0 sequential, 1 parallel.
+    pub fn code(self) -> i64 {
+        match self {
+            HostCoupling::Sequential => 0,
+            HostCoupling::Parallel => 1,
+        }
+    }
+
+    /// The coupling of `code`, if it is one.
+    pub fn from_code(code: i64) -> Option<Self> {
+        match code {
+            0 => Some(HostCoupling::Sequential),
+            1 => Some(HostCoupling::Parallel),
+            _ => None,
+        }
+    }
+
+    /// Its name: `sequential` or `parallel`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            HostCoupling::Sequential => "sequential",
+            HostCoupling::Parallel => "parallel",
+        }
+    }
+}
 
 /// The parameters of the presliding law.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -94,6 +163,10 @@ pub struct Presliding {
     /// h (s, ≥ 0): the host's step the host-inertia damping is capped for; 0 = not known (no
     /// cap). Not a parameter: the front ends set it from the host's steps.
     pub step: f64,
+    /// How the host couples ([`HostCoupling`]): under parallel coupling, with the host's
+    /// inertia and step known, the stiffness is capped for the delayed loop
+    /// ([`Presliding::stiffness`]) and the damping is not capped for the sequential one.
+    pub coupling: HostCoupling,
 }
 
 impl Default for Presliding {
@@ -104,6 +177,7 @@ impl Default for Presliding {
             damping_time: DEFAULT_DAMPING_TIME,
             host_inertia: 0.0,
             step: 0.0,
+            coupling: HostCoupling::Sequential,
         }
     }
 }
@@ -116,6 +190,8 @@ pub const ELASTIC_LIMIT_NAME: &str = "zero_velocity.elastic_limit";
 pub const DAMPING_TIME_NAME: &str = "zero_velocity.damping_time";
 /// See [`ANGLE_NAME`].
 pub const HOST_INERTIA_NAME: &str = "zero_velocity.host_inertia";
+/// See [`ANGLE_NAME`].
+pub const HOST_COUPLING_NAME: &str = "zero_velocity.host_coupling";
 
 /// Whether `x` is not > 0 (0, negative or NaN): an unloaded bound, or no elastic fraction.
 #[inline]
@@ -136,6 +212,12 @@ impl Presliding {
         let p = Presliding { host_inertia, ..self };
         p.validate()?;
         Ok(p)
+    }
+
+    /// The law under the host's coupling `coupling`.
+    #[must_use]
+    pub fn with_coupling(self, coupling: HostCoupling) -> Self {
+        Presliding { coupling, ..self }
     }
 
     /// The law with the host's step `step` (s; 0 or anything not a finite number > 0: not
@@ -169,7 +251,8 @@ impl Presliding {
     /// The presliding damping c (N·m·s/rad) at the stiffness `k`: t_d·k without the host's
     /// inertia; with it (J > 0) 2ζ√(k·J), capped at the step h when known by
     /// [`EXPLICIT_MARGIN`]·(J/h)·min(1, 2 − h²·k/J) (module doc: the explicit host's
-    /// no-sign-alternation bound).
+    /// no-sign-alternation bound) under sequential coupling; under parallel coupling not
+    /// capped (k is: [`Presliding::stiffness`]; a = h·c/J = 2ζ√b ≤ 0.27 there).
     #[inline]
     pub fn damping<S: Scalar>(&self, k: S) -> S {
         let j = self.host_inertia;
@@ -178,7 +261,7 @@ impl Presliding {
         }
         let c = S::c(2.0 * HOST_DAMPING_RATIO) * (k * S::c(j)).sqrt();
         let h = self.step;
-        if h <= 0.0 {
+        if h <= 0.0 || self.coupling == HostCoupling::Parallel {
             return c;
         }
         let room = S::c(2.0) - k * S::c(h * h / j);
@@ -187,10 +270,19 @@ impl Presliding {
         if cap.re() < c.re() { cap } else { c }
     }
 
-    /// Stiffness k = T/φ_s (N·m/rad) at the sliding torque `bound` = T.
+    /// Stiffness k = T/φ_s (N·m/rad) at the sliding torque `bound` = T; under parallel
+    /// coupling with the host's inertia J and step h known, at most
+    /// [`PARALLEL_LOOP_GAIN`]·J/h² (module doc: the delayed loop's real-root bound).
     #[inline]
     pub fn stiffness<S: Scalar>(&self, bound: S) -> S {
-        bound / S::c(self.angle)
+        let k = bound / S::c(self.angle);
+        if self.coupling == HostCoupling::Parallel && self.host_inertia > 0.0 && self.step > 0.0 {
+            let cap = PARALLEL_LOOP_GAIN * self.host_inertia / (self.step * self.step);
+            if k.re() > cap {
+                return S::c(cap);
+            }
+        }
+        k
     }
 
     /// The exact update of the presliding torque `tau` (N·m) over a deflection increment

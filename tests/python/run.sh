@@ -7,7 +7,9 @@
 # the Rust `fmi` crate importer against the packaged FMU.
 #
 # Needs: cargo, python3 with venv (Debian: python3-venv), for the fmi crate's
-# bindgen step Debian's libclang-dev, and for Ecos (ecospy) Debian's libtbb12.
+# bindgen step Debian's libclang-dev, and for Ecos (ecospy) Debian's libtbb12. libcosim
+# (libcosimpy), pythonfmu and fmu-manipulation-toolbox are pinned in requirements-test.txt
+# (tests/python/test_cosim_masters.py: about 20 s).
 # Set PINJOINT_SKIP_APT=1 to skip the apt step, PINJOINT_KEEP_FMUS=1 to keep target/fmu/*.fmu.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -29,7 +31,7 @@ fi
 cargo build --locked --release -q -p pinjoint --example reference_points --example rig_reference --example presliding_reference
 
 VENV="${PINJOINT_VENV:-$ROOT/.venv}"
-if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy, scipy" 2>/dev/null; then
+if ! "$VENV/bin/python" -c "import fmpy, numpy, pytest, ecospy, scipy, libcosimpy, pythonfmu, fmu_manipulation_toolbox" 2>/dev/null; then
     python3 -m venv "$VENV"
     "$VENV/bin/pip" install -q -r requirements-test.txt
 fi

@@ -40,7 +40,7 @@ RIG = "rig"
 STEP = [["init"]]
 # Byte offsets of values in PinJoint's serialized model state: version byte, count, then the
 # f64 values in order: the parameter-file keys, the band, angle, angular velocity, load, energy.
-N_PARAMS = 34  # pinjoint::params::PARAMS (the paper's 26 and the complete model's 8)
+N_PARAMS = 36  # pinjoint::params::PARAMS (the paper's 26, the complete model's 9, grease.upper_service_temperature)
 
 
 def at(k):

@@ -326,9 +326,9 @@ def test_a_state_of_the_previous_version_is_refused_by_name():
     state = s.fmu.getFMUState()
     data = bytearray(s.fmu.serializeFMUstate(state))
     s.fmu.freeFMUState(state)
-    n = 58  # values stored by version 7 (34 parameters + 24), before the CRC-32
+    n = 61  # values stored by version 9 (36 parameters + 25), before the CRC-32
     at = len(data) - 4 - (1 + 2 + 8 * n)
-    assert data[at] == 7 and int.from_bytes(data[at + 1:at + 3], "little") == n
+    assert data[at] == 8 and int.from_bytes(data[at + 1:at + 3], "little") == n
     # A corrupted byte (the CRC no longer matches): refused.
     flipped = bytearray(data)
     flipped[at + 100] ^= 0x40
@@ -339,7 +339,7 @@ def test_a_state_of_the_previous_version_is_refused_by_name():
     data[at] = 5
     data[-4:] = zlib.crc32(bytes(data[:-4])).to_bytes(4, "little")
     expect_error(s, lambda: s.fmu.setFMUState(s.fmu.deSerializeFMUstate(bytes(data))),
-                 "PinJoint state version 5; this FMU reads version 7")
+                 "PinJoint state version 5; this FMU reads version 9")
     s.free()
 
 

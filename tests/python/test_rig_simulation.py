@@ -120,3 +120,25 @@ def test_zero_load(rig_fmu_path):
     assert not np.any(r["stuck"][1:])
     assert r["angle"].max() > 0.6
     check_library(r)
+
+
+@pytest.mark.parametrize("temperature,load,frequency,stiffer", [(218.15, 5e3, 0.3, 1.0), (233.15, 20e3, 1.0, 1.5)])
+def test_the_cold_day_runs_and_equals_the_library(rig_fmu_path, temperature, load, frequency, stiffer):
+    """Issue 37, item 6: -55 C at 5 kN, 0.3 Hz (where the rig's event logic chattered and
+    refused) and -40 C with a grease 1.5x stiffer (consistency and yield stress, from the
+    FMU's own start values): two strokes through fmpy, sticking at the reversals, the
+    friction opposing the motion in slip, the energy balance closed, and every output the
+    library's."""
+    from fmpy import read_model_description
+    start = {v.name: float(v.start) for v in read_model_description(rig_fmu_path).modelVariables
+             if v.name in ("grease.consistency", "grease.yield_stress")}
+    grease = {k: stiffer * v for k, v in start.items()}
+    stop = 2.0 / frequency
+    r = simulate(rig_fmu_path, 0.01, stop=stop, input=None,
+                 start_values={"load": load, "temperature": temperature, "frequency": frequency, **grease})
+    check_library(r, {"frequency": frequency, "lubricant.temperature": temperature, **grease})
+    assert np.any(r["stuck"]) and not np.all(r["stuck"])
+    moving = (r["stuck"] == 0) & (np.abs(r["angular_velocity"]) > 1e-6)
+    assert np.all(r["friction_torque"][moving] * r["angular_velocity"][moving] < 0)
+    w, d, k = r["actuator_work"][-1], r["friction_dissipation"][-1], r["kinetic_energy"][-1]
+    assert d > 0 and abs(w - d - k) < 1e-6 * d

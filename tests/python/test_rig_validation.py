@@ -29,17 +29,21 @@ def test_interface(rig_model_description):
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
     assert [n for n in v if v[n].causality == "input"] == ["load", "command_angle", "temperature"]
-    assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "validity"]
+    assert [n for n in v if v[n].causality == "output"] == RIG_OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "validity", "validity_code"]
     assert v["stuck"].type == "Boolean" and v["stuck"].variability == "discrete"
     assert v["use_command_input"].type == "Boolean" and v["use_command_input"].start in ("false", False)
     # Enumerations since issue 11 (same codes as the former Integer parameters).
     assert v["rig.method"].type == "Enumeration" and v["rig.formulation"].type == "Enumeration"
+    # Their Integer mirrors (issue 38), for masters without Enumeration support.
+    for name in ("rig.method", "rig.formulation", "fidelity", "validity"):
+        assert v[name + "_code"].type == "Integer" and v[name + "_code"].causality == v[name].causality
     assert v["amplitude"].unit == "rad" and v["amplitude"].displayUnit == "deg"
     assert abs(float(v["amplitude"].start) - 0.6981317007977318) < 1e-16
     assert v["frequency"].unit == "Hz" and float(v["frequency"].start) == 1.0
     params = [n for n in v if v[n].causality == "parameter"]
     rig = [n for n in params if n.startswith("rig.")]
-    assert len(rig) == 14 and "rig.inertia" in rig and "rig.velocity_gain" in rig
+    # The 14 rig parameters and the Integer mirrors of rig.formulation and rig.method.
+    assert len(rig) == 16 and "rig.inertia" in rig and "rig.velocity_gain" in rig
     assert "rig.load" not in rig and "rig.frequency" not in rig
     model = [n for n in params if n.split(".")[0] in ("geometry", "materials", "surface", "lubricant", "friction", "starvation")]
     assert len(model) == 26 and float(v["geometry.pin_radius"].start) == 0.028

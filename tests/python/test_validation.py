@@ -24,12 +24,13 @@ def test_interface(model_description):
     assert cs.canHandleVariableCommunicationStepSize and cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
     v = {x.name: x for x in md.modelVariables}
     assert [n for n in v if v[n].causality == "input"] == ["angle", "angular_velocity", "load", "temperature"]
-    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "clearance_torque", "journal_weight", "eccentricity_ratio", "grease_yield_torque", "validity"]
+    assert [n for n in v if v[n].causality == "output"] == OUTPUTS + ["min_film_thickness", "min_lambda_ratio", "clearance_torque", "journal_weight", "eccentricity_ratio", "grease_yield_torque", "validity", "validity_code"]
     params = [n for n in v if v[n].causality == "parameter"]
     # The 26 parameter-file keys, the band, fidelity, tolerance, the 4 envelope bounds, the
     # zero-velocity model, the 3 presliding parameters, the host inertia and the complete
-    # model's eight (model.paper, grease.*).
-    assert len(params) == 46 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    # model's eight (model.paper, grease.*), the host coupling and the Integer mirrors of
+    # fidelity and zero_velocity.model.
+    assert len(params) == 49 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
     assert {"zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time",
             "zero_velocity.host_inertia", "model.paper", "grease.enabled"} <= set(params)
     assert v["zero_velocity.model"].type == "Enumeration" and int(v["zero_velocity.model"].start) == 1, "presliding by default"
@@ -55,6 +56,8 @@ def test_interface(model_description):
     assert outputs["dissipated_energy"] == []
     assert outputs["validity"] == ["angular_velocity", "load", "temperature"]
     assert v["validity"].type == "Enumeration" and v["validity"].variability == "discrete"
+    assert outputs["validity_code"] == outputs["validity"]
+    assert v["validity_code"].type == "Integer" and v["validity_code"].variability == "discrete"
 
 
 def test_documentation_lists_every_variable(fmu_path, model_description):

@@ -20,12 +20,41 @@ FMI3_RIG = TARGET / "fmu" / "fmi3" / "PinJointRig.fmu"
 U_MAX = 2.0 * math.pi * math.radians(40.0) * 0.028
 
 
+# The model's assumptions (docs/validity.md, "Past the model's assumptions"): the load at which
+# the Hertz half-width of eq. 6 reaches the pin radius (Table 1) and the default grease's upper
+# service temperature (+121 C).
+E_EFF = 2.0 / ((1 - 0.28**2) / 205e9 + (1 - 0.34**2) / 117e9)
+LOAD_EDGE = math.pi * E_EFF * 0.0594 * 0.028**2 / (8 * (0.028 * 0.028025 / 0.000025))
+T_MAX = 394.15
+
+
 def expected(load, omega, temp, paper=False):
     """The envelope's code: 0 checked, 1 extrapolation, 2 known-wrong (the paper's model only,
-    below 0 C; the complete model, the default, is an extrapolation there)."""
+    below 0 C; the complete model, the default, is an extrapolation there), 3 outside (past
+    the load edge or the upper service temperature)."""
     load, u, temp = np.abs(np.asarray(load, float)), np.abs(np.asarray(omega, float)) * 0.028, np.asarray(temp, float)
     ok = (load >= 5e3) & (load <= 60e3) & (u <= U_MAX) & (temp >= 288.15) & (temp <= 298.15)
-    return np.where((temp < 273.15) & paper, 2, np.where(ok, 0, 1))
+    level = np.where((temp < 273.15) & paper, 2, np.where(ok, 0, 1))
+    return np.where((load > LOAD_EDGE) | (temp > T_MAX), 3, level)
+
+
+@pytest.mark.parametrize("path", [FMU, FMI3], ids=["fmi2", "fmi3"])
+def test_past_the_assumptions_validity_is_3(path):
+    """Loads across the load edge (96.7 kN) and temperatures across 394.15 K: 3 exactly past
+    either, the outputs continuous across them; a lower grease.upper_service_temperature
+    moves the temperature edge."""
+    t = np.arange(0.0, 1.0 + 5e-4, 1e-3)
+    s = np.zeros(len(t), dtype=[("time", float), ("angular_velocity", float), ("load", float), ("temperature", float)])
+    s["time"], s["angular_velocity"] = t, 0.5
+    s["load"] = np.interp(t, [0.0, 0.5, 1.0], [50e3, 150e3, 50e3])
+    s["temperature"] = np.round(np.interp(t, [0.0, 0.5, 1.0], [380.0, 420.0, 380.0]), 3)
+    for start, t_max in (({}, T_MAX), ({"grease.upper_service_temperature": 400.0}, 400.0)):
+        r = run(path, s, **start)
+        v = np.asarray(r["validity"], int)
+        want = np.where((np.abs(r["load"]) > LOAD_EDGE) | (r["temperature"] > t_max), 3, 1)
+        assert np.array_equal(v, want)
+        assert 3 in v and 1 in v
+        assert np.all(np.isfinite(r["torque"]))
 
 
 def signal(seed, stop=2.0, dt=1e-3):

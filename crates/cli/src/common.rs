@@ -31,12 +31,15 @@ pub fn rig_peak_speed() -> f64 {
 
 /// A note for a figure's title when the lubricant temperature `t` (K) is outside the
 /// validity envelope's checked 15–25 °C (every point then is an extrapolation, or below 0 °C
-/// with the paper's model, `paper`, known to give too low a μ); empty inside.
-pub fn temperature_note(t: f64, paper: bool) -> String {
-    match pinjoint::validity::of_point(pinjoint::validity::LOAD.lo, 0.0, t, paper) {
+/// with the paper's model, `paper`, known to give too low a μ; above the grease's upper
+/// service temperature of `params`, outside the model's assumptions); empty inside.
+pub fn temperature_note(params: &Params) -> String {
+    let (t, paper) = (params.lubricant.temperature, params.model.paper);
+    match pinjoint::validity::Edges::new(params).of_point(pinjoint::validity::LOAD.lo, 0.0, t, paper) {
         pinjoint::Validity::Checked => String::new(),
         pinjoint::Validity::Extrapolation => format!("; T = {} K outside the checked 15-25 C: extrapolation everywhere", readable(t)),
         pinjoint::Validity::KnownWrong => format!("; T = {} K below 0 C with the paper's model: μ known to be too LOW everywhere (no grease)", readable(t)),
+        pinjoint::Validity::Outside => format!("; T = {} K above the grease's upper service temperature: outside the model's assumptions everywhere", readable(t)),
     }
 }
 

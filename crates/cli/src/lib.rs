@@ -32,7 +32,7 @@ pub mod curves;
 // The subcommands:
 pub mod commands;
 
-use commands::{calibrate, cycle, figures, map, params, point, stribeck, sweep};
+use commands::{calibrate, cycle, figures, map, params, point, ranges, stribeck, sweep};
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
@@ -56,6 +56,7 @@ Examples:
                                                     rig strokes (Figures 7, 11-13), eq. 11 average
   pinjoint calibrate --input rec.csv --output out/  fit μ_c to measured torque cycles (95 % intervals)
   pinjoint params > joint.toml                      a parameter file to edit
+  pinjoint ranges                                   the declared ranges: checked, past the assumptions, refused
 
 Run `pinjoint <command> --help` for each command's details.";
 
@@ -76,6 +77,7 @@ pub struct Cli {
 #[allow(missing_docs)]
 pub enum Command {
     Params(params::ParamsCmd),
+    Ranges(ranges::RangesCmd),
     Point(point::PointCmd),
     Sweep(sweep::SweepCmd),
     Stribeck(stribeck::StribeckCmd),
@@ -89,6 +91,7 @@ pub enum Command {
 pub fn run(cli: &Cli) -> error::Result<()> {
     match &cli.command {
         Command::Params(c) => params::run(c),
+        Command::Ranges(c) => ranges::run(c),
         Command::Point(c) => point::run(c),
         Command::Sweep(c) => sweep::run(c),
         Command::Stribeck(c) => stribeck::run(c),

@@ -14,6 +14,7 @@ fn display_unit(s: &ParamSpec) -> Option<&'static str> {
     match (s.section, s.unit) {
         // The grease's values in their SI units (an activation temperature is no temperature
         // to show in degC; its stresses are Pa, not MPa).
+        ("grease", "K") if s.key == "upper_service_temperature" => Some("degC"),
         ("grease", _) => None,
         ("geometry", "m") => Some("mm"),
         (_, "m") => Some("um"),

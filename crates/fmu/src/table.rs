@@ -3,15 +3,24 @@
 //! the XML declaration ([`Row::var`]), the get/set dispatch ([`Row::get`], [`Row::set`]),
 //! the value check with its message ([`Rule`]) and the FMU state (every row with a setter
 //! is stored, in [`Table::stored`] order). Adding a variable is adding one row.
+//!
+//! Integer mirrors ([`integer_mirrors`]): for masters without Enumeration support (libcosim,
+//! Ecos skip those variables), each Enumeration row named in a model's list gets an Integer
+//! twin generated from it: the same getter, setter and check (the same value: setting one sets
+//! the other), its range and the codes in its description taken from the enumeration's items,
+//! so a code added to an enumeration is a code of its mirror. A mirror is not stored in the
+//! state (its enumeration is).
 
 use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use fmi_layer::fmi2::variables::{Causality, EnumType, Kind, Variable};
+use std::sync::Arc;
 
-/// Reads a variable's value from the model's values `S` (Integer and Boolean as f64).
-pub type Getter<S> = Box<dyn Fn(&S) -> f64 + Send + Sync>;
+/// Reads a variable's value from the model's values `S` (Integer and Boolean as f64); shared
+/// by a row and its Integer mirror.
+pub type Getter<S> = Arc<dyn Fn(&S) -> f64 + Send + Sync>;
 /// Stores a value that passed the row's [`Rule`] into the model's values `S`.
-pub type Setter<S> = Box<dyn Fn(&mut S, f64) + Send + Sync>;
+pub type Setter<S> = Arc<dyn Fn(&mut S, f64) + Send + Sync>;
 /// A plain getter and setter of one value of `S` (what most rows are built from).
 pub type Access<S> = (fn(&S) -> f64, fn(&mut S, f64));
 
@@ -66,6 +75,25 @@ pub fn choices(t: &EnumType) -> String {
     }
 }
 
+/// The codes of an enumeration as a description lists them: `0 = full, 1 = table, 2 = auto`.
+pub fn codes(t: &EnumType) -> String {
+    t.items.iter().map(|(name, code, _)| format!("{code} = {name}")).collect::<Vec<_>>().join(", ")
+}
+
+/// `rows` with the Integer mirror of each Enumeration row named in `mirrors` ((enumeration,
+/// mirror name, value reference)) appended, in the list's order.
+///
+/// # Panics
+/// If a name in `mirrors` is not an Enumeration row of `rows` (a programming error in a table,
+/// found by every test that builds it).
+pub fn integer_mirrors<S>(mut rows: Vec<Row<S>>, mirrors: &[(&str, &str, u32)]) -> Vec<Row<S>> {
+    for &(of, name, vr) in mirrors {
+        let row = rows.iter().find(|r| r.var.name == of).and_then(|r| r.integer_mirror(name, vr));
+        rows.push(row.unwrap_or_else(|| panic!("{of} is an Enumeration row of the table")));
+    }
+    rows
+}
+
 /// The word a message puts before a variable's name: `input`, `parameter`, or nothing for
 /// an output (only checked when a state is restored) or a local variable (a continuous
 /// state, checked when the host sets it under Model Exchange).
@@ -91,22 +119,46 @@ pub struct Row<S> {
     /// Position in the serialized state, when the model's state order is not the table's
     /// (all stored rows of a table give one, or none does).
     pub slot: Option<usize>,
+    /// For an Integer mirror, the name of the Enumeration it mirrors: not stored (the
+    /// enumeration is), and a set reports the enumeration's declaration ([`Table::set`]).
+    pub mirror_of: Option<String>,
 }
 
 impl<S> Row<S> {
     /// A row read by `get`, stored by `set`, checked by `rule`.
     pub fn new(var: Variable, get: impl Fn(&S) -> f64 + Send + Sync + 'static, set: impl Fn(&mut S, f64) + Send + Sync + 'static, rule: Rule) -> Self {
-        Row { var, get: Box::new(get), set: Some(Box::new(set)), rule, slot: None }
+        Row { var, get: Arc::new(get), set: Some(Arc::new(set)), rule, slot: None, mirror_of: None }
     }
 
     /// An output computed by the model: read only, not stored.
     pub fn output(var: Variable, get: impl Fn(&S) -> f64 + Send + Sync + 'static) -> Self {
-        Row { var, get: Box::new(get), set: None, rule: Rule::Any, slot: None }
+        Row { var, get: Arc::new(get), set: None, rule: Rule::Any, slot: None, mirror_of: None }
     }
 
     /// This row at position `slot` of the serialized state.
     pub fn at_slot(self, slot: usize) -> Self {
         Row { slot: Some(slot), ..self }
+    }
+
+    /// The Integer mirror of this Enumeration row: `name` at value reference `vr`, the same
+    /// value (getter, setter, check), causality, variability, start and dependencies; its range
+    /// the enumeration's smallest and largest code, its description the codes with their
+    /// names and then the enumeration's own. `None` if this row is not an Enumeration.
+    pub fn integer_mirror(&self, name: &str, vr: u32) -> Option<Row<S>> {
+        let Kind::Enumeration(t) = self.var.kind else { return None };
+        let mut v = self.var.clone();
+        v.name = name.into();
+        v.value_reference = vr;
+        v.kind = Kind::Integer;
+        v.min = t.items.iter().map(|i| i.1).min().map(|c| c as f64);
+        v.max = t.items.iter().map(|i| i.1).max().map(|c| c as f64);
+        v.description = format!("Integer mirror of the Enumeration {} for masters without Enumeration support (libcosim, Ecos): the same value, {}. {}",
+            self.var.name, codes(t), self.var.description);
+        // An enumeration's setter checks nothing beyond its rule (Any for some, checked at
+        // exit of initialization): the mirror takes the codes' rule, so a wrong code is refused
+        // when set.
+        let rule = if self.set.is_some() { Rule::Code(t) } else { Rule::Any };
+        Some(Row { var: v, get: self.get.clone(), set: self.set.clone(), rule, slot: None, mirror_of: Some(self.var.name.clone()) })
     }
 
     /// [`Rule::broken_by`] as the error the host sees.
@@ -133,7 +185,7 @@ impl<S> Table<S> {
     /// If only some stored rows carry a slot, or the slots are not 0, 1, …, n-1 (a
     /// programming error in a table, found by every test that builds it).
     pub fn new(rows: Vec<Row<S>>) -> Self {
-        let mut stored: Vec<usize> = (0..rows.len()).filter(|&i| rows[i].set.is_some()).collect();
+        let mut stored: Vec<usize> = (0..rows.len()).filter(|&i| rows[i].set.is_some() && rows[i].mirror_of.is_none()).collect();
         if stored.iter().any(|&i| rows[i].slot.is_some()) {
             stored.sort_by_key(|&i| rows[i].slot.unwrap_or(usize::MAX));
             for (k, &i) in stored.iter().enumerate() {
@@ -175,13 +227,16 @@ impl<S> Table<S> {
 
     /// Store a checked value in row `i` (the FMI layer never sets an output: a row without
     /// a setter ignores it); returns the row's declaration (the caller drops what a changed
-    /// parameter invalidates).
+    /// parameter invalidates), for an Integer mirror that of its enumeration.
     pub fn set(&self, s: &mut S, i: usize, x: f64) -> &Variable {
         let row = &self.rows[i];
         if let Some(set) = &row.set {
             set(s, x);
         }
-        &row.var
+        match row.mirror_of.as_deref().and_then(|of| self.index(of)) {
+            Some(e) => &self.rows[e].var,
+            None => &row.var,
+        }
     }
 
     /// [`Table::check`], and for the `load` input the joint's asperity `capacity` once one
@@ -253,7 +308,7 @@ pub(crate) fn assert_round_trip<S: Default>(table: &Table<S>, model: &str, versi
     let rows = table.rows();
     let mut order = table.stored().to_vec();
     order.sort_unstable();
-    assert_eq!(order, (0..rows.len()).filter(|&i| stored(&rows[i].var)).collect::<Vec<_>>(), "the stored variables");
+    assert_eq!(order, (0..rows.len()).filter(|&i| rows[i].mirror_of.is_none() && stored(&rows[i].var)).collect::<Vec<_>>(), "the stored variables");
     let mut v = S::default();
     for (i, row) in rows.iter().enumerate() {
         assert_eq!(table.get(&v, i).to_bits(), row.var.start.unwrap_or(0.0).to_bits(), "start of {}", row.var.name);

@@ -15,6 +15,7 @@ pub static VALIDITY_TYPE: EnumType = EnumType {
         ("checked", 0, "Load 5-60 kN, sliding speed up to the 1 Hz +-40 deg stroke's peak, 15-25 C (and for the rig 0.03-1 Hz, 40 deg): checked against the paper's measurements"),
         ("extrapolation", 1, "Some input outside the checked ranges: the model's equations, unconfirmed there"),
         ("known_wrong", 2, "Below 0 C (cold soak): base-oil film only, no grease yield stress: friction coefficient and torque too LOW"),
+        ("outside", 3, "Beyond the model's assumptions: load above the one at which the Hertz half-width of eq. 6 reaches the pin radius (96.7 kN with the default parameters), or temperature above grease.upper_service_temperature (121 C by default); answered, not a model of the joint there"),
     ],
 };
 
@@ -53,6 +54,8 @@ pub fn html(rig: bool) -> String {
         .iter()
         .map(|r| format!("<tr><td><code>{}</code></td><td>{} &ndash; {} {}</td><td>{}</td></tr>\n", r.quantity, r.lo, r.hi, r.unit, r.source))
         .collect();
+    let edges = pinjoint::validity::Edges::paper();
+    let (edge_load, edge_t) = (pinjoint::fmt::Num((edges.load / 10.0).round() * 10.0), pinjoint::fmt::Num(edges.temperature));
     let codes: String = VALIDITY_TYPE.items.iter().map(|(name, code, what)| format!("<li>{code} = <code>{name}</code>: {what}</li>\n")).collect();
     format!(
         r#"<h2>Validity envelope (the <code>validity</code> output)</h2>
@@ -70,6 +73,12 @@ film only, which Roelands' temperature relation thickens without bound as it coo
 stiffer: torque and &mu; there are too <b>low</b>. The log (category logEvents) says once per excursion which quantity left which
 range: when the inputs leave the envelope, and again only after they came back and left again. <code>validity</code> is not part of the
 FMU state.</p>
+<p>Past the model's own assumptions the output is 3 (<code>outside</code>), never a plain extrapolation: a load |P| above
+&pi; E' B R<sup>2</sup>/(8 R'), where the Hertz half-width a of eq. 6 reaches the pin's radius R ({edge_load} N with the default
+parameters: a flat strip wider than the pin has no reading on this geometry), or a temperature above the parameter
+<code>grease.upper_service_temperature</code> (default {edge_t} K, +121 &deg;C: MIL-PRF-23827 Type I, the default grease's class).
+The outputs are still computed there, continuous across the edge; the FMU refuses only loads at the asperity model's limit
+and temperatures outside the declared range of the <code>temperature</code> input.</p>
 <p>Temperature: a change of the <code>temperature</code> input costs a few logarithms at fidelity full (the start table of the solve
 is the same at every temperature, read at the speed shifted by ln(&eta;<sub>0</sub>(T)/&eta;<sub>0</sub>(T<sub>ref</sub>))), and
 the outputs are bit for bit those of an instance started at that temperature; at table, boundary and auto the level is built and its

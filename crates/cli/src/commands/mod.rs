@@ -1,5 +1,5 @@
 //! The subcommands of `pinjoint`, one module each: a file for a command that fits in one
-//! ([`params`], [`point`], [`stribeck`], [`map`]), a folder for one with parts ([`sweep`],
+//! ([`params`], [`ranges`], [`point`], [`stribeck`], [`map`]), a folder for one with parts ([`sweep`],
 //! [`cycle`], [`calibrate`], [`figures`]: the command in its `mod.rs`, each part in a file
 //! beside it). Every command module holds its clap arguments (`…Cmd`, whose doc comments and
 //! `#[command]` attributes are its `--help`) and its `run`; the pieces they share (parameter
@@ -11,6 +11,7 @@
 
 // In dependency order: each module uses only those above it (tests/module_graph.py).
 pub mod params;
+pub mod ranges;
 pub mod point;
 pub mod sweep;
 pub mod stribeck;

@@ -94,7 +94,7 @@ pub const TABLE: [(&str, &str); 24] = [
     ("journal bearing weight w (complete model)", "journal_weight"),
     ("eccentricity ratio 1 - h_c/c", "eccentricity_ratio"),
     ("regime", "regime"),
-    ("validity (checked, extrapolation, known-wrong)", "validity"),
+    ("validity (checked, extrapolation, known-wrong, outside)", "validity"),
 ];
 
 /// The labels of the lubricant rows after [`TABLE`], in [`pinjoint::record::LUBRICANT`] order.

@@ -78,6 +78,8 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
     let inside_load = (RIG_LOAD_RANGE_N.0..=RIG_LOAD_RANGE_N.1).contains(&load);
     let band_label = if inside_load {
         "rig experiments, up to 41.9 rpm (validity: checked; beyond it extrapolation)"
+    } else if load.abs() > joint.load_edge() {
+        "rig experiments' speeds, up to 41.9 rpm (this load is past the Hertz contact's edge, a > R: outside)"
     } else {
         "rig experiments' speeds, up to 41.9 rpm (this load is outside 5-60 kN: extrapolation)"
     };
@@ -100,7 +102,7 @@ pub fn figure(joint: &Joint, load: f64, ops: &[OperatingPoint]) -> Result<String
         readable(load / 1e3),
         readable((p_m / 1e6 * 100.0).round() / 100.0),
         readable(s_per_rad_s),
-        crate::common::temperature_note(joint.params().lubricant.temperature, joint.params().model.paper)
+        crate::common::temperature_note(joint.params())
     );
     Ok(stacked_plot(&title, &[mu, shares, lambda], (900, 1200))?)
 }

@@ -130,6 +130,13 @@ k = {k60:.3e} N&middot;m/rad) and h = 10 ms this holds for J &ge; {jmin60:.1} kg
 A linearly implicit host using the directional derivatives is stable at any step. The presliding ring
 (frequency &radic;(k/J), damping ratio (t<sub>d</sub>/2)&radic;(k/J)) decays with time constant 2J/(t<sub>d</sub>k): for heavy bodies
 (J in the thousands of kg&middot;m&sup2;) under a sudden drive it rings for tens of seconds: give <code>zero_velocity.host_inertia</code>.</li>
+<li><b>Parallel (Jacobi) masters</b> (libcosim/OSP, Ecos) step every FMU and then exchange the values: the body integrates the torque of
+the previous communication point, a one-step delay no damping can hold a stiff spring against. Set <code>zero_velocity.host_coupling = 1</code>
+(parallel) with <code>zero_velocity.host_inertia = J</code>: the presliding stiffness is then capped at J/(27h&sup2;) (h the communication step),
+where the delayed loop's roots are real and positive, and the joint holds, breaks away and comes to rest without chatter. 0 (sequential, the
+default) is the law above, bit for bit.</li>
+<li><b>Integer mirrors.</b> For masters without Enumeration support (libcosim, Ecos) each Enumeration has an Integer twin with the same value
+and codes: <code>fidelity_code</code>, <code>zero_velocity.model_code</code> and the output <code>validity_code</code>.</li>
 </ul>
 <h3>band</h3>
 <p>The stateless law of earlier versions, bit for bit: inside the band |&omega;| &lt; &omega;<sub>b</sub> (parameter

@@ -224,9 +224,11 @@ impl Model for PinJointModel {
             ));
         }
         self.v.out = out;
-        let v = super::variables::validity(&self.v);
+        // The evaluator's joint has the parameters' edges already (no recomputation per step).
+        let edges = self.evaluator.as_ref().expect("built above").joint().edges();
         let s = &self.v;
-        let excursion = || pinjoint::validity::excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper);
+        let v = super::variables::validity_within(s, &edges);
+        let excursion = || super::variables::excursion(s);
         crate::validity::note(&mut self.validity, v, excursion, "", &mut self.message);
         Ok(())
     }
@@ -357,10 +359,10 @@ mod tests {
         let mut m = PinJointModel::new();
         let mut bytes = Vec::new();
         m.serialize(&mut bytes);
-        bytes[0] = 9;
+        bytes[0] = STATE_VERSION + 2;
         let e = m.deserialize(&bytes).unwrap_err();
         assert!(matches!(e, ModelError::RejectedState(_)));
-        assert_eq!(e.to_string(), "PinJoint state version 9; this FMU reads version 7");
+        assert_eq!(e.to_string(), format!("PinJoint state version {}; this FMU reads version {STATE_VERSION}", STATE_VERSION + 2));
         bytes[0] = STATE_VERSION;
         m.deserialize(&bytes).unwrap();
     }

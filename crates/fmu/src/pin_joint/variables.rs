@@ -4,19 +4,21 @@
 //!
 //! | value references | variables | state |
 //! |---|---|---|
-//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 35–37 |
-//! | 10–21, 22–25 | outputs (`min_film_thickness`, `min_lambda_ratio` at 20, 21; then the complete model's `clearance_torque`, `journal_weight`, `eccentricity_ratio`, `grease_yield_torque`; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 38 |
-//! | 100–133 | the 34 parameters of [`pinjoint::params::PARAMS`], `section.key` (`model.paper` and `grease.enabled` Booleans) | 0–33 |
-//! | 200 | `zero_velocity.speed_band` | 34 |
-//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 39 |
-//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 40–44 |
-//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 45 |
-//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 46–49 |
-//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 50 |
-//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 51, 52 |
-//! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature | not stored |
-//! | 205 | `zero_velocity.host_inertia` | 53 |
-//! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 54–57 |
+//! | 1–3 | inputs `angle`, `angular_velocity`, `load` | 37–39 |
+//! | 10–21, 22–25 | outputs (`min_film_thickness`, `min_lambda_ratio` at 20, 21; then the complete model's `clearance_torque`, `journal_weight`, `eccentricity_ratio`, `grease_yield_torque`; the quantities of the library's record, [`pinjoint::record`], by name) | `dissipated_energy` 40 |
+//! | 100–135 | the 36 parameters of [`pinjoint::params::PARAMS`], `section.key` (`model.paper` and `grease.enabled` Booleans) | 0–35 |
+//! | 200 | `zero_velocity.speed_band` | 36 |
+//! | 300 | `fidelity` (Enumeration: 0 full, 1 table, 2 boundary, 3 auto) | 41 |
+//! | 301–305 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` | 42–46 |
+//! | 4 | input `temperature` (K; last in the table, so every earlier value reference is unchanged) | 47 |
+//! | 201–204 | `zero_velocity.model` (Enumeration: 0 band, 1 presliding), `zero_velocity.presliding_angle`, `zero_velocity.elastic_limit`, `zero_velocity.damping_time` | 48–51 |
+//! | 40, 41 | local `presliding_torque` (the continuous state) and `der(presliding_torque)` | 52 |
+//! | 42, 43 | locals `presliding_reference_angle`, `presliding_angle_driven` (Co-Simulation bookkeeping of the state) | 53, 54 |
+//! | 30 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong, 3 outside; [`pinjoint::validity`]), after the temperature | not stored |
+//! | 205 | `zero_velocity.host_inertia` | 55 |
+//! | 44–47 | locals `presliding_mode` (Model Exchange: 0 stick, ±1 slip), `presliding_step` and `presliding_reference_speed` (Co-Simulation: the last step and ω there), `presliding_angle_pending` (no angle set since initialization yet) | 56–59 |
+//! | 206 | `zero_velocity.host_coupling` (Integer: 0 sequential, 1 parallel) | 60 |
+//! | 310, 207, 31 | Integer mirrors `fidelity_code`, `zero_velocity.model_code`, `validity_code` of the three enumerations ([`crate::table::integer_mirrors`]) | not stored |
 
 use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
@@ -28,14 +30,16 @@ use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
 use std::sync::LazyLock;
 
-/// Version of the serialized state's layout (7: version 5's values with the complete model's
+/// Version of the serialized state's layout (9: the parameters `grease.supply_layer_inverse` and
+/// `grease.upper_service_temperature` after the other parameters, then version 7's values, then
+/// `zero_velocity.host_coupling`; 7: version 5's values with the complete model's
 /// eight parameters, `model.paper` and `grease.*`, after the paper's, then the host inertia,
 /// the Model Exchange mode, the last step, ω there and whether the first angle is pending;
 /// 6 was each of those two changes alone on its branch; 5: version 4's values, then the
 /// zero-velocity model and presliding parameters and the presliding state). The state also
 /// carries its value count, so a layout with another number of values is refused whatever its
 /// version.
-pub const STATE_VERSION: u8 = 7;
+pub const STATE_VERSION: u8 = 9;
 
 /// Start value of the `load` input (N): the paper's reference load of 20 kN.
 pub const DEFAULT_LOAD: f64 = 20e3;
@@ -64,7 +68,7 @@ pub struct Outputs {
 /// Every value of a PinJoint instance a variable reads or writes.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Values {
-    /// The 34 model parameters (`lubricant.temperature` is replaced by the input).
+    /// The 35 model parameters (`lubricant.temperature` is replaced by the input).
     pub params: Params,
     /// `zero_velocity.*`: the model, the band and the presliding parameters.
     pub zv: ZeroVelocitySettings,
@@ -236,15 +240,20 @@ fn rows() -> Vec<Row<Values>> {
     rows.push(Row::new(band, |s: &Values| s.zv.band, |s, x| s.zv.band = x, Rule::Any).at_slot(p));
     rows.extend(fidelity::rows(300, Some(p + 5), DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.fidelity, |s| &mut s.fidelity));
     rows.push(crate::inputs::temperature(4,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the outputs are exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). A change costs a few logarithms at fidelity full (the outputs are bit for bit those of an FMU started at that temperature); at table, boundary and auto the level is built and measured again at the new temperature. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease); above grease.upper_service_temperature (121 C by default) outside",
         |s: &Values| s.temperature, |s, x| s.temperature = x).at_slot(p + 11));
     rows.push(crate::validity::output(30, &SPEED_LOAD, VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
     rows.extend(zero_velocity::rows(201, p + 12, |s: &Values| &s.zv, |s| &mut s.zv));
     rows.extend(presliding_rows(p + 16));
     rows.push(zero_velocity::host_inertia_row(205, p + 19, |s: &Values| &s.zv, |s| &mut s.zv));
     rows.extend(host_rows(p + 20));
-    rows
+    rows.push(zero_velocity::host_coupling_row(206, p + 24, |s: &Values| &s.zv, |s| &mut s.zv));
+    crate::table::integer_mirrors(rows, &MIRRORS)
 }
+
+/// The Integer mirrors of PinJoint's enumerations: (enumeration, mirror, value reference).
+pub const MIRRORS: [(&str, &str, u32); 3] =
+    [("fidelity", "fidelity_code", 310), ("zero_velocity.model", "zero_velocity.model_code", 207), ("validity", "validity_code", 31)];
 
 /// The host-convention bookkeeping of the presliding state (version 7): the Model Exchange
 /// mode, the last step and ω there, the pending first angle; slots from `slot`.
@@ -304,23 +313,35 @@ fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
 }
 
 /// The `validity` output's description.
-const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
+const VALIDITY_TEXT: &str = "Whether load, sliding speed |omega| R and temperature are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW), 3 outside (beyond the model's assumptions: load above the one at which the Hertz half-width of eq. 6 reaches the pin radius, pi E' B R^2/(8 R') = 96.7 kN with the default parameters, or temperature above grease.upper_service_temperature, 121 C by default; still answered, continuous across the edge). Logged once per excursion, and again when it goes outside. At zero load (unloaded) it is 1: the load is outside 5-60 kN";
 
-/// The validity of the held inputs ([`pinjoint::validity::of_point`]).
+/// The validity of the held inputs ([`pinjoint::validity::Edges::of_point`] with the
+/// parameters' edges).
 pub fn validity(s: &Values) -> pinjoint::Validity {
-    pinjoint::validity::of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
+    validity_within(s, &pinjoint::validity::Edges::new(&s.params))
+}
+
+/// [`validity`] with the parameters' `edges` given (the evaluator's joint holds them).
+pub fn validity_within(s: &Values, edges: &pinjoint::validity::Edges) -> pinjoint::Validity {
+    edges.of_point(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
+}
+
+/// The first excursion of the held inputs (as [`validity`]), for the log.
+pub fn excursion(s: &Values) -> Option<pinjoint::validity::Excursion> {
+    pinjoint::validity::Edges::new(&s.params).excursion(s.load, s.omega.abs() * s.params.geometry.pin_radius, s.temperature, s.params.model.paper)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// The state order of version 7: the parameters (the complete model's among them), then
-    /// version 5's values, then the host inertia and the host-convention bookkeeping. Version 5: version 4's (parameters, band, angle, speed, load,
+    /// The state order of version 9: the parameters (the complete model's among them), then
+    /// version 5's values, then the host inertia and the host-convention bookkeeping, then the
+    /// host coupling. Version 5: version 4's (parameters, band, angle, speed, load,
     /// energy, fidelity code, tolerance, envelope, temperature), then the zero-velocity
     /// parameters and the presliding state.
     #[test]
-    fn the_state_order_is_that_of_version_7() {
+    fn the_state_order_is_that_of_version_8() {
         let names: Vec<&str> = TABLE.stored().iter().map(|&i| TABLE.rows()[i].var.name.as_str()).collect();
         let p = PARAMS.len();
         assert_eq!(names[..p], PARAMS.iter().map(pinjoint::params::ParamSpec::name).collect::<Vec<_>>()[..]);
@@ -331,7 +352,8 @@ mod tests {
                 "envelope.load_min", "envelope.load_max", "envelope.speed_min", "envelope.speed_max", "temperature",
                 "zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time",
                 "presliding_torque", "presliding_reference_angle", "presliding_angle_driven", "zero_velocity.host_inertia",
-                "presliding_mode", "presliding_step", "presliding_reference_speed", "presliding_angle_pending"
+                "presliding_mode", "presliding_step", "presliding_reference_speed", "presliding_angle_pending",
+                "zero_velocity.host_coupling"
             ]
         );
     }
@@ -354,5 +376,37 @@ mod tests {
         assert_eq!(msg("temperature", 1e308), "input temperature = 1e308 K is out of range: it must be in [218.15, 673.15] K");
         assert_eq!(msg("fidelity", 0.5), "parameter fidelity = 0.5 is out of range: it must be 0 (full), 1 (table), 2 (boundary) or 3 (auto)");
         assert!(TABLE.check(at("load"), -1e308).is_ok());
+        assert_eq!(msg("zero_velocity.model_code", 2.0), "parameter zero_velocity.model_code = 2 is out of range: it must be 0 (band) or 1 (presliding)");
+        assert_eq!(msg("zero_velocity.host_coupling", 2.0), "parameter zero_velocity.host_coupling = 2 is out of range: it must be in [0, 1]");
+    }
+
+    /// Each Integer mirror reads and sets its enumeration's value, with the enumeration's
+    /// codes as its range, and is not stored.
+    #[test]
+    fn the_integer_mirrors_are_their_enumerations() {
+        for (of, name, _) in MIRRORS {
+            let (e, m) = (TABLE.index(of).unwrap(), TABLE.index(name).unwrap());
+            let (ev, mv) = (&TABLE.rows()[e].var, &TABLE.rows()[m].var);
+            let Kind::Enumeration(t) = ev.kind else { panic!("{of} is an Enumeration") };
+            assert_eq!(mv.kind, Kind::Integer);
+            assert_eq!((mv.causality, mv.variability, mv.start), (ev.causality, ev.variability, ev.start));
+            assert_eq!(mv.min, Some(t.items.iter().map(|i| i.1).min().unwrap() as f64));
+            assert_eq!(mv.max, Some(t.items.iter().map(|i| i.1).max().unwrap() as f64));
+            for (item, code, _) in t.items {
+                assert!(mv.description.contains(&format!("{code} = {item}")), "{name}: {}", mv.description);
+            }
+            assert!(!TABLE.stored().contains(&m), "{name} is not stored");
+            let mut v = Values::default();
+            if ev.causality == Causality::Parameter {
+                let last = t.items.last().unwrap().1 as f64;
+                assert_eq!(TABLE.set(&mut v, m, last).name, of, "a set of {name} reports {of}");
+                assert_eq!((TABLE.get(&v, e), TABLE.get(&v, m)), (last, last));
+                TABLE.set(&mut v, e, 0.0);
+                assert_eq!(TABLE.get(&v, m), 0.0);
+            } else {
+                v.load = 0.0;
+                assert_eq!(TABLE.get(&v, m), TABLE.get(&v, e));
+            }
+        }
     }
 }

@@ -19,7 +19,7 @@ use crate::table::{Row, Rule};
 use fmi_layer::fmi2::model::{ModelError, ModelResult};
 use fmi_layer::fmi2::variables::{Causality, EnumType, Kind};
 use pinjoint::zero_velocity::modes::{self, Mode};
-use pinjoint::zero_velocity::presliding::{self, Presliding};
+use pinjoint::zero_velocity::presliding::{self, HostCoupling, Presliding};
 use pinjoint::zero_velocity::{band, ZeroVelocityModel};
 
 /// The `zero_velocity.model` parameter's choices.
@@ -101,6 +101,18 @@ pub fn host_inertia_row<S: 'static>(vr: u32, slot: usize, at: fn(&S) -> &ZeroVel
     v.min = Some(0.0);
     v.max = Some(presliding::MAX_HOST_INERTIA);
     Row::new(v, move |s| at(s).law.host_inertia, move |s, x| at_mut(s).law.host_inertia = x, Rule::Any).at_slot(slot)
+}
+
+/// The `zero_velocity.host_coupling` parameter row (Integer: 0 sequential, 1 parallel) at
+/// value reference `vr`, state slot `slot`.
+pub fn host_coupling_row<S: 'static>(vr: u32, slot: usize, at: fn(&S) -> &ZeroVelocitySettings, at_mut: fn(&mut S) -> &mut ZeroVelocitySettings) -> Row<S> {
+    let mut v = declare(presliding::HOST_COUPLING_NAME, vr, Kind::Integer, Causality::Parameter, None, None,
+        "How the host couples the torque to its body: 0 = sequential (the default: the host sets angle and angular_velocity, steps the FMU and integrates its body with the torque of the same step, as fmpy loops and Simulink do), 1 = parallel (the master steps every FMU and then exchanges the values, so the body integrates the torque of the previous communication point, as libcosim/OSP and Ecos do). With 1 and zero_velocity.host_inertia = J given, the presliding stiffness is capped at J/(27 h^2) for that delayed loop (h the communication step), so a hold stays stable and free of chatter");
+    v.start = Some(0.0);
+    v.min = Some(0.0);
+    v.max = Some(1.0);
+    Row::new(v, move |s| at(s).law.coupling.code() as f64,
+        move |s, x| at_mut(s).law.coupling = HostCoupling::from_code(x as i64).unwrap_or_default(), Rule::Closed(0.0, 1.0)).at_slot(slot)
 }
 
 /// The band outputs: `sliding` = T(P, |ω|), `edge` = T(P, ω_b) (evaluated only inside the band).

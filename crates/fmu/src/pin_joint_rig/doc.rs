@@ -150,7 +150,10 @@ magic, version, length and CRC-32, holding this model's versioned part: every se
 112-byte state). A restored state continues bit for bit.</li>
 <li><code>stuck</code> is a Boolean output (variability discrete), <code>use_command_input</code> a Boolean parameter,
 <code>rig.formulation</code>, <code>rig.method</code> and <code>fidelity</code> Enumeration parameters (named choices; the codes of the
-former Integer parameters, set through fmi2SetInteger / fmi3SetInt64); everything else is Real (FMI 3.0: Float64).</li>
+former Integer parameters, set through fmi2SetInteger / fmi3SetInt64); everything else is Real (FMI 3.0: Float64).
+For masters without Enumeration support (libcosim, Ecos) each Enumeration has an Integer mirror, the same value under another name
+(<code>rig.formulation_code</code>, <code>rig.method_code</code>, <code>fidelity_code</code>, the output <code>validity_code</code>):
+setting one sets the other, with the same codes.</li>
 </ul>
 {requirements}
 
@@ -178,7 +181,7 @@ mod tests {
         for v in &info.variables {
             assert!(html.contains(&format!("<code>{}</code>", v.name)), "{}", v.name);
         }
-        assert_eq!(info.variables.iter().filter(|v| v.causality == Causality::Output).count(), 15);
+        assert_eq!(info.variables.iter().filter(|v| v.causality == Causality::Output).count(), 16);
         assert!(html.contains("Pan &amp; Hamrock") && html.contains("Roelands' temperature relation") && html.contains("Chevalier"));
         // μ_c R P = 67.2 N·m plus the grease's yield torque (0.05 N·m at 20 °C): the library's rest torque.
         assert!(html.contains("Routh") && html.contains("67.3 N&middot;m at 20 kN"), "breakaway torque from the library");

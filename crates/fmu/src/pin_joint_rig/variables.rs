@@ -13,7 +13,8 @@
 //! | 400 | Enumeration `fidelity` (0 full, 1 table, 2 boundary, 3 auto), as PinJoint's |
 //! | 401–405 | `tolerance`, `envelope.load_min`, `envelope.load_max`, `envelope.speed_min`, `envelope.speed_max` |
 //! | 3 | input `temperature` (K, display degC), last in the table so earlier entries keep their places |
-//! | 24 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong; [`pinjoint::validity`]), after the temperature; not stored |
+//! | 24 | output `validity` (Enumeration: 0 checked, 1 extrapolation, 2 known_wrong, 3 outside; [`pinjoint::validity`]), after the temperature; not stored |
+//! | 232, 233, 410, 25 | Integer mirrors `rig.formulation_code`, `rig.method_code`, `fidelity_code`, `validity_code` of the four enumerations ([`crate::table::integer_mirrors`]); not stored |
 //!
 //! The `[rig]` file keys `frequency` and `amplitude` are the stroke parameters
 //! `frequency` and `amplitude`; the key `load` is the `load` input.
@@ -31,9 +32,10 @@ use std::sync::LazyLock;
 
 pub use super::settings::rig_spec;
 
-/// Version of the serialized state's layout (4: version 3's with the complete model's eight
+/// Version of the serialized state's layout (5: version 4's with the parameter
+/// `grease.upper_service_temperature` after the other model parameters; 4: version 3's with the complete model's eight
 /// parameters, `model.paper` and `grease.*`; 3: the `temperature` input is the last setting).
-pub const STATE_VERSION: u8 = 4;
+pub const STATE_VERSION: u8 = 6;
 
 /// `[rig]` keys that are not `rig.<key>` parameters (the stroke parameters and the load input).
 pub const NOT_RIG_PARAMETERS: [&str; 3] = ["amplitude", "frequency", "load"];
@@ -256,14 +258,22 @@ fn rows() -> Vec<Row<Values>> {
     rows.extend(crate::parameters::rows(300, None, |s: &Values| &s.settings.cfg.model, |s| &mut s.settings.cfg.model));
     rows.extend(fidelity::rows(400, None, DEFAULT_FIDELITY, FIDELITY_TEXTS, |s: &Values| &s.settings.fidelity, |s| &mut s.settings.fidelity));
     rows.push(crate::inputs::temperature(3,
-        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease)",
+        "Lubricant temperature T (K; display degC). eta_0 and alpha follow Roelands' temperature relation from their values at lubricant.reference_temperature (Table 3 at 293.15 K by default: at T = T_ref the rig is exactly the paper model's). Must be in [218.15, 673.15] K (-55 to 400 C; with model.paper = true from 238.15 K, -35 C, below which the paper's film at 20 kN passes the diametral clearance at rig speeds). Held over each step; a change moves the friction model to the new temperature (a few logarithms at fidelity full; a table or boundary level is built again) and continues the integration from the current state, exactly as a rig started at that temperature and resumed from that state. Outside 15-25 C the validity output says extrapolation; below 0 C with model.paper = true known_wrong (mu too low: no grease); above grease.upper_service_temperature (121 C by default) outside",
         |s: &Values| s.settings.temperature, |s, x| s.settings.temperature = x));
     rows.push(crate::validity::output(24, &["load", "temperature"], VALIDITY_TEXT, |s: &Values| f64::from(validity(s).code())));
-    rows
+    crate::table::integer_mirrors(rows, &MIRRORS)
 }
 
+/// The Integer mirrors of PinJointRig's enumerations: (enumeration, mirror, value reference).
+pub const MIRRORS: [(&str, &str, u32); 4] = [
+    ("rig.formulation", "rig.formulation_code", 232),
+    ("rig.method", "rig.method_code", 233),
+    ("fidelity", "fidelity_code", 410),
+    ("validity", "validity_code", 25),
+];
+
 /// The `validity` output's description.
-const VALIDITY_TEXT: &str = "Whether the sample's load, sliding speed |omega| R and temperature, and (with the internal sine stroke) its frequency and amplitude, are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C, 0.03-1 Hz, 40 deg): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW). Logged once per excursion";
+const VALIDITY_TEXT: &str = "Whether the sample's load, sliding speed |omega| R and temperature, and (with the internal sine stroke) its frequency and amplitude, are inside the conditions the model was checked against (the paper's rig: 5-60 kN, |omega| up to 4.386 rad/s on its 28 mm pin, 15-25 C, 0.03-1 Hz, 40 deg): 0 checked, 1 extrapolation, 2 known_wrong (below 0 C: base-oil film only, no grease yield stress, mu and torque too LOW), 3 outside (beyond the model's assumptions: load above the one at which the Hertz half-width of eq. 6 reaches the pin radius, 96.7 kN with the default parameters, or temperature above grease.upper_service_temperature, 121 C by default). Logged once per excursion, and again when it goes outside";
 
 /// The load (N) and angular velocity (rad/s) of the last sample (the `load` input and 0
 /// before the first).
@@ -275,7 +285,8 @@ fn sampled(s: &Values) -> (f64, f64) {
 /// stroke's frequency and amplitude unless the command input drives the rig.
 pub fn validity(s: &Values) -> pinjoint::Validity {
     let (load, omega) = sampled(s);
-    let point = pinjoint::validity::of_point(load, omega.abs() * s.settings.cfg.model.geometry.pin_radius, s.settings.temperature, s.settings.cfg.model.model.paper);
+    let m = &s.settings.cfg.model;
+    let point = pinjoint::validity::Edges::new(m).of_point(load, omega.abs() * m.geometry.pin_radius, s.settings.temperature, m.model.paper);
     let r = &s.settings.cfg.rig;
     let stroke = if s.settings.use_command_input { pinjoint::Validity::Checked } else { pinjoint::validity::of_stroke(r.frequency, r.amplitude) };
     point.max(stroke)
@@ -286,7 +297,8 @@ pub fn validity(s: &Values) -> pinjoint::Validity {
 pub fn excursion(s: &Values) -> Option<pinjoint::validity::Excursion> {
     let (load, omega) = sampled(s);
     let r = &s.settings.cfg.rig;
-    let point = pinjoint::validity::excursion(load, omega.abs() * s.settings.cfg.model.geometry.pin_radius, s.settings.temperature, s.settings.cfg.model.model.paper);
+    let m = &s.settings.cfg.model;
+    let point = pinjoint::validity::Edges::new(m).excursion(load, omega.abs() * m.geometry.pin_radius, s.settings.temperature, m.model.paper);
     point.or_else(|| (!s.settings.use_command_input).then(|| pinjoint::validity::stroke_excursion(r.frequency, r.amplitude)).flatten())
 }
 

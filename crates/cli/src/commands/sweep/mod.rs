@@ -35,7 +35,7 @@ fields are ignored; blank lines and lines starting with # are skipped.\n\n\
 OUTPUT: the input columns as given, followed by friction_coefficient (-), torque (N·m, eq. 11's \
 magnitude μRP_T), film_thickness (m, central h_c), lambda_ratio (-), fluid_load_fraction (1/γ1), \
 asperity_load_fraction (1/γ2), mean_pressure (Pa), contact_half_width (m), sommerfeld_number (-) \
-regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c), min_lambda_ratio (-, eq. 21 with h_min) and validity (checked | extrapolation | known-wrong: whether load, sliding speed and temperature are inside the paper's rig conditions, outside them, or below 0 C where μ is known to be too low; see docs/validity.md). Numbers are printed in full (shortest text that \
+regime (boundary | mixed | full-film), then min_film_thickness (m, h_min: Pan–Hamrock line-contact ratio applied to h_c), min_lambda_ratio (-, eq. 21 with h_min) and validity (checked | extrapolation | known-wrong | outside: whether load, sliding speed and temperature are inside the paper's rig conditions, outside them, below 0 C where μ is known to be too low, or past the model's assumptions (the Hertz half-width beyond the pin radius, the grease above its upper service temperature); see docs/validity.md). Numbers are printed in full (shortest text that \
 reads back as the same double). Without --output the CSV goes to standard output.\n\n\
 A malformed row (missing field, non-numeric, non-finite, load = 0; a negative load is taken as its magnitude) stops the run with an \
 error naming its line; no output file is written then (the file is written to a temporary \
