@@ -362,6 +362,14 @@ VALIDITY = {
     "vr_rig": X("code('modelDescription/PinJointRig.xml', r'name=\"validity\" valueReference=\"(\\d+)\"')"),
     "rpm_max": "const('src/validity.rs', 'MAX_RIG_ANGULAR_SPEED')*60/(2*pi)",
     "max_temperatures": X("code('crates/cli/src/commands/sweep/mod.rs', r'const MAX_TEMPERATURES: usize = (\\d+);')"),
+    # past the model's assumptions
+    "capacity": "lib('joint.capacity')",
+    "t_min_C": X(f"const('src/params.rs', 'MIN_TEMPERATURE') - {C0}"),
+    "t_max_C": X(f"const('src/params.rs', 'MAX_TEMPERATURE') - {C0}"),
+    "edge_deg": "degrees(1)",
+    "a_over_R_60": "point(kN=60, w=1)['contact_half_width']/param('geometry.pin_radius')",
+    "a_at_capacity": "point(kN=60, w=1)['contact_half_width']*sqrt(lib('joint.capacity')/60e3)",
+    "class_gap": X(f"abs(-54 - (const('src/params.rs', 'MIN_TEMPERATURE') - {C0}))"),
 }
 
 RB_EPS = ["0.1", "0.2", "0.4", "0.6", "0.8", "0.9", "0.97"]
