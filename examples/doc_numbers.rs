@@ -115,7 +115,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     out.insert("journal.ld_max.S.0.1".into(), JournalTable::build(LD_MAX)?.sommerfeld(0.1));
 
     // The base oil (Roelands' temperature relation with the default lubricant).
-    for c in [40.0, 100.0, -54.0, -55.0, -73.0] {
+    for c in [20.0, 25.0, 40.0, 100.0, -54.0, -55.0, -73.0] {
         out.insert(format!("base_oil.viscosity.{c}"), base_viscosity(c));
     }
 
@@ -125,6 +125,24 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         out.insert(format!("grease.apparent_viscosity.25.{c}"), rheology(c, &keep).apparent_viscosity(25.0));
     }
     out.insert("grease.yield_stress_ratio.-54".into(), rheology(-54.0, &keep).yield_stress / rheology(20.0, &keep).yield_stress);
+    out.insert("grease.yield_stress.-54".into(), rheology(-54.0, &keep).yield_stress);
+    out.insert("grease.consistency.-54".into(), rheology(-54.0, &keep).consistency);
+    // A thickener that keeps its share of the stress: the activation that moves K (and τ_y) by
+    // the base oil's own ratio η_b(−54 °C)/η_b(20 °C) (the reference temperature's default).
+    let oil_activation = (base_viscosity(-54.0) / base_viscosity(20.0)).ln() / (1.0 / at(-54.0).lubricant.temperature - 1.0 / at(20.0).lubricant.temperature);
+    out.insert("grease.oil_activation.-54".into(), oil_activation);
+    out.insert(
+        "grease.apparent_viscosity.25.-54.k_with_oil".into(),
+        rheology(-54.0, &|p: &mut Params| p.grease.consistency_activation = oil_activation).apparent_viscosity(25.0),
+    );
+    out.insert(
+        "grease.apparent_viscosity.25.-54.both_with_oil".into(),
+        rheology(-54.0, &|p: &mut Params| {
+            p.grease.consistency_activation = oil_activation;
+            p.grease.yield_activation = oil_activation;
+        })
+        .apparent_viscosity(25.0),
+    );
     // ASTM D1478 translated: the stress at 0.2 and 2 s⁻¹ on the 6204 bearing's pitch radius
     // r = 16.75 mm and width w = 14 mm, T = τ·2π r² w.
     let (r, w) = (16.75e-3, 14e-3);
@@ -140,10 +158,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let parts = |c: f64, edit: &dyn Fn(&mut Params)| {
         clearance_torque_parts(&rheology(c, edit), 0.1, g.pin_radius, g.bush_length, clearance, 0.98, 0.1)
     };
-    for e in [2000.0, 3000.0, 4000.0] {
+    // The activations at their defaults and 1000 K either side.
+    for d in [-1000.0, 0.0, 1000.0] {
+        let e = defaults.grease.yield_activation + d;
         out.insert(format!("clearance.yield.-54.Ey.{e}"), parts(-54.0, &|p: &mut Params| p.grease.yield_activation = e).yield_part);
-    }
-    for e in [3000.0, 4000.0, 5000.0] {
+        let e = defaults.grease.consistency_activation + d;
         out.insert(format!("clearance.power.-54.EK.{e}"), parts(-54.0, &|p: &mut Params| p.grease.consistency_activation = e).power_law_part);
     }
     out.insert("clearance.base.-54".into(), parts(-54.0, &keep).newtonian_part);

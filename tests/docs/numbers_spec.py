@@ -52,18 +52,78 @@ def warming_steps(b):
 
 
 def rig_worst(b):
-    """The largest relative torque difference complete/paper over the rig's conditions at the
-    reference temperature (tests/complete.rs's grid: 25 loads 5–60 kN × 41 speeds up to the
-    stroke's peak): (difference, load, speed, paper's torque, clearance torque)."""
-    peak = b.const("src/validity.rs", "MAX_RIG_ANGULAR_SPEED")
+    """The largest relative torque difference complete/paper over the paper's room on
+    tests/one_answer.rs's grid through its corners (5 temperatures 15–25 °C × 13 loads
+    5–60 kN × 21 speeds up to 4.386 rad/s): (difference, load, speed, °C)."""
     rows = []
-    for k in range(25):
-        load = 5e3 * 12.0 ** (k / 24.0)
-        for m in range(41):
-            rows.append((load, 0.0 if m == 0 else peak * 1e-4 ** (1.0 - m / 40.0), 20.0))
+    for c in (15.0, 17.5, 20.0, 22.5, 25.0):
+        for k in range(13):
+            load = 5e3 * 12.0 ** (k / 12.0)
+            for m in range(21):
+                rows.append((load, 0.0 if m == 0 else 4.386 * 1e-4 ** (1.0 - m / 20.0), c))
     full, paper = b.sweep(rows), b.sweep(rows, p={"model.paper": True})
-    worst = max((abs(a["torque"] / p["torque"] - 1.0), a["load"], a["speed"]) for a, p in zip(full, paper))
+    worst = max((abs(a["torque"] / p["torque"] - 1.0), a["load"], a["speed"], r[2]) for a, p, r in zip(full, paper, rows))
     return worst
+
+
+def cooling_steps(b):
+    """Over warming_steps' 144 loads and speeds, from 20 down to −55 °C in steps of 2.5 K: how
+    many steps lower the torque as it cools."""
+    geo = lambda lo, hi, n: [lo * (hi / lo) ** (i / (n - 1)) for i in range(n)]
+    loads, speeds = geo(10.0, 1e6, 12), geo(1e-3, 200.0, 12)
+    temps = [20.0 - 2.5 * k for k in range(31)]
+    out = b.sweep([(load, w, c) for load in loads for w in speeds for c in temps])
+    down = 0
+    for i in range(len(loads) * len(speeds)):
+        seq = out[31 * i: 31 * (i + 1)]
+        down += sum(1 for a, c in zip(seq, seq[1:]) if c["torque"] < a["torque"])
+    return {"grid": len(loads) * len(speeds), "steps": len(loads) * len(speeds) * 30, "down": down,
+            "from": temps[0], "to": temps[-1], "step": 2.5}
+
+
+def monotone_in_load(b, w_lo, w_hi, c_lo, c_hi, n_lo, kn_hi):
+    """On a grid of 12 speeds (w_lo–w_hi rad/s) × 12 temperatures (c_lo–c_hi °C), 201 loads
+    log-spaced n_lo N–kn_hi kN each, the default grease: the largest relative fall of the
+    torque and rise of the film between neighbouring loads, and whether each lay inside the
+    journal ↔ line-contact transition (0 < w < 1 at either neighbour)."""
+    speeds = [w_lo * (w_hi / w_lo) ** (i / 11) for i in range(12)]
+    temps = [c_lo + (c_hi - c_lo) * i / 11 for i in range(12)]
+    loads = [n_lo * (kn_hi * 1e3 / n_lo) ** (k / 200) for k in range(201)]
+    out = b.sweep([(load, w, c) for w in speeds for c in temps for load in loads])
+    fall, rise, outside = 0.0, 0.0, 0.0
+    for i in range(len(speeds) * len(temps)):
+        seq = out[201 * i: 201 * (i + 1)]
+        for a, c in zip(seq, seq[1:]):
+            f = max(0.0, 1.0 - c["torque"] / a["torque"])
+            r = max(0.0, c["film_thickness"] / a["film_thickness"] - 1.0)
+            inside = 0.0 < a["journal_weight"] < 1.0 or 0.0 < c["journal_weight"] < 1.0
+            fall, rise = max(fall, f), max(rise, r)
+            if not inside:
+                outside = max(outside, f, r)
+    return {"torque": fall, "film": rise, "outside": outside, "speeds": len(speeds), "temps": len(temps), "loads": len(loads)}
+
+
+def rb_high(b, c_um, lam):
+    """Raimondi & Boyd's L/D = 1 rows at ε 0.8 and 0.9 (tests/one_answer.rs's table) on a rigid
+    wide-clearance bearing (c = c_um µm, B = 2R, the base oil alone) at 0.3–100 rad/s: the
+    largest relative deviation of μ·R/c from their (R/c)f (%) where w = 1 and λ ≥ lam."""
+    text = (b.root / "tests/one_answer.rs").read_text(encoding="utf-8")
+    m = re.search(r"const RAIMONDI_BOYD_HIGH: \[\(f64, f64, f64\); \d+\] = \[(.*?)\];", text, re.S)
+    rows = [tuple(float(x) for x in r) for r in re.findall(r"\(([\d.]+), ([\d.]+), ([\d.]+)\)", m.group(1))]
+    r = b.param("geometry.pin_radius")
+    c, eta, length = c_um * 1e-6, b.param("lubricant.viscosity"), 2 * r
+    p = {"grease.enabled": False, "geometry.bush_length": length, "geometry.bush_radius": r + c}
+    worst, checked = 0.0, 0
+    for eps, s, f in rows:
+        for w in (0.3, 1.0, 3.0, 10.0, 30.0, 100.0):
+            load = eta * w / (2 * 3.141592653589793 * s) * (r / c) ** 2 * 2 * r * length
+            op = b.point(N=load, w=w, p=p)
+            if op["journal_weight"] >= 1.0 and op["lambda_ratio"] >= lam:
+                checked += 1
+                worst = max(worst, abs(op["friction_coefficient"] * r / c / f - 1))
+    if checked == 0:
+        raise RuntimeError("no rigid full-film point")
+    return {"worst_pc": 100 * worst, "eps_lo": min(e for e, _, _ in rows), "eps_hi": max(e for e, _, _ in rows)}
 
 
 def rb_through_joint(b):
@@ -89,16 +149,44 @@ def rb_through_joint(b):
 
 def ns_extra(b):
     return {"warming_steps": lambda: warming_steps(b), "rig_worst": lambda: rig_worst(b),
-            "rb_through_joint": lambda: rb_through_joint(b)}
+            "rb_through_joint": lambda: rb_through_joint(b), "cooling_steps": lambda: cooling_steps(b),
+            "monotone_in_load": lambda *a: monotone_in_load(b, *a), "rb_high": lambda *a: rb_high(b, *a)}
 
 
 def _sensitivity():
+    """μ at 20 kN, 3 rad/s ('hi') and 200 N, 1 rad/s ('lo') for supply layers and exponents."""
     out = {}
-    for m, mk in [(0, "0"), (0.5, "05"), (1, "1"), (2, "2")]:
+    cases = [("off", {"grease.supply_layer_inverse": 0}), ("l5e3", {"grease.supply_layer_inverse": 5e3}),
+             ("l2e4", {"grease.supply_layer_inverse": 2e4}), ("l8e4", {"grease.supply_layer_inverse": 8e4}),
+             ("m05", {"grease.supply_exponent": 0.5}), ("m2", {"grease.supply_exponent": 2})]
+    for mk, over in cases:
         for c in [20, 0, -20, -40, -55]:
             for side, (load, w) in {"hi": ("kN=20", 3), "lo": ("N=200", 1)}.items():
-                out[f"sens.m{mk}.{c}.{side}"] = (
-                    f"point({load}, w={w}, C={c}, p={{'grease.supply_exponent': {m}}})['friction_coefficient']")
+                out[f"sens.{mk}.{c}.{side}"] = f"point({load}, w={w}, C={c}, p={over!r})['friction_coefficient']"
+    out["sens.l5e3.um"] = X("1e6/5e3")
+    hi = lambda over: f"point(kN=20, w=3, C=20, p={over!r})['friction_coefficient']"
+    lo = lambda over: f"point(N=200, w=1, C=20, p={over!r})['friction_coefficient']"
+    layers = [{"grease.supply_layer_inverse": x} for x in (0, 5e3, 2e4, 8e4)] + [{"grease.supply_exponent": m} for m in (0.5, 2)]
+    # the largest spread of μ at 20 kN, 3 rad/s, 20 °C over the table's layers (%), an upper bound
+    out["sens.room_pc"] = Spec("100*(max(" + ", ".join(hi(o) for o in layers) + ")/min(" + ", ".join(hi(o) for o in layers) + ") - 1)", upper=True)
+    out["sens.room_lo_pc"] = f"100*({lo(layers[3])}/{lo(layers[2])} - 1)"
+    out["sens.l8e4.um"] = X("1e6/8e4")
+    return out
+
+
+def _supply_table():
+    """20 kN, 3 rad/s against temperature: η_b, the supply layer h_oil (µm), the film, torque, μ."""
+    out = {}
+    for c in [20, 0, -20, -30, -40, -55]:
+        pt = f"point(kN=20, w=3, C={c})"
+        eta = f"{pt}['inlet_viscosity']"
+        out[f"sup.{c}.eta"] = f"{eta}*1e3" if c > -40 else eta
+        out[f"sup.{c}.hoil"] = (f"1e6/param('grease.supply_layer_inverse')*(point(kN=20, w=3, C=20)['inlet_viscosity']"
+                                f"/{eta})**param('grease.supply_exponent')")
+        out[f"sup.{c}.h"] = f"1e6*{pt}['film_thickness']"
+        out[f"sup.{c}.fluid"] = f"100*{pt}['fluid_load_fraction']"
+        out[f"sup.{c}.T"] = f"{pt}['torque']"
+        out[f"sup.{c}.mu"] = f"{pt}['friction_coefficient']"
     return out
 
 
@@ -115,11 +203,39 @@ COLD_DAY = {
     "cold_soak": X(f"const('src/validity.rs', 'COLD_SOAK') - {C0}"),
     "t_ref": X(T_REF),
     "ld": "param('geometry.bush_length')/(2*param('geometry.pin_radius'))",
-    "rho0": X("const('src/composite.rs', 'RHO_0')"),
-    "rho1": X("const('src/composite.rs', 'RHO_1')"),
-    "eps_rho0": X("1 - const('src/composite.rs', 'RHO_0')"),
-    "eps_rho1": X("1 - const('src/composite.rs', 'RHO_1')"),
-    "rig_w": X("max(point(kN=k, w=4.386)['journal_weight'] for k in (5, 20, 60))"),
+    "xi0": X("const('src/composite.rs', 'XI_0')"),
+    "xi1": X("const('src/composite.rs', 'XI_1')"),
+    "xi_ratio": X("const('src/composite.rs', 'XI_1')/const('src/composite.rs', 'XI_0')"),
+    # Moes' rigid-elastic crossing M = 1.18 as the elasticity ratio (4/3π)M²
+    "xi_moes": "4/(3*pi)*1.18**2",
+    "mono.speeds": X("monotone_in_load(0.01, 100, -55, 120, 50, 200)['speeds']"),
+    "mono.temps": X("monotone_in_load(0.01, 100, -55, 120, 50, 200)['temps']"),
+    "mono.loads": X("monotone_in_load(0.01, 100, -55, 120, 50, 200)['loads']"),
+    "mono.torque": "monotone_in_load(0.01, 100, -55, 120, 50, 200)['torque']",
+    "mono.film": "monotone_in_load(0.01, 100, -55, 120, 50, 200)['film']",
+    # the largest change in the wrong direction between neighbouring loads outside the transition
+    "mono.outside": X("monotone_in_load(0.01, 100, -55, 120, 50, 200)['outside']"),
+    "rb_high.tol": X("100*code('tests/one_answer.rs', r'assert!\\(rel\\(fv, f\\) <= ([\\d.]+)')"),
+    "rb_high.eps_lo": X("rb_high(100, 3)['eps_lo']"),
+    "rb_high.eps_hi": X("rb_high(100, 3)['eps_hi']"),
+    "rb_high.worst": Spec("rb_high(100, 3)['worst_pc']", upper=True),
+    # the grease against the base oil, 20 °C to -54 °C
+    "eta_ratio_m54": "lib('base_oil.viscosity.-54')/lib('base_oil.viscosity.20')",
+    "k_ratio_m54": "exp(param('grease.consistency_activation')*(1/(273.15+(-54)) - 1/(273.15+20)))",
+    "ty_ratio_m54": "lib('grease.yield_stress_ratio.-54')",
+    "oil_activation": Spec("lib('grease.oil_activation.-54')", sig=3),
+    "share.25": "lib('grease.apparent_viscosity.25.25')/lib('base_oil.viscosity.25')",
+    "share.m54": "lib('grease.apparent_viscosity.25.-54')/lib('base_oil.viscosity.-54')",
+    "app_visc_m54_k": Spec("lib('grease.apparent_viscosity.25.-54.k_with_oil')", sig=3),
+    "app_visc_m54_both": Spec("lib('grease.apparent_viscosity.25.-54.both_with_oil')", sig=3),
+    # the supply layer
+    "layer_inverse": X("param('grease.supply_layer_inverse')"),
+    "layer_um": X("1e6/param('grease.supply_layer_inverse')"),
+    "gamma_s": X("param('starvation.exponent')"),
+    "requote_tol": X("code('tests/one_answer.rs', r'prop_assert!\\(rel\\(y, x\\) <= ([\\de.-]+)')"),
+    "cold_day_C": X(f"code('tests/complete.rs', r'fn the_cold_day_is_stiffer_than_the_room.*?let cold = Joint::new\\(&at\\(([\\d.]+)\\)\\)') - {C0}"),
+    **_supply_table(),
+    "rig_w": X("max(point(kN=k, w=4.386, C=c)['journal_weight'] for k in (5, 20, 60) for c in (15, 20, 25))"),
     "supply_exponent": X("param('grease.supply_exponent')"),
     "yield_stress": X("param('grease.yield_stress')"),
     "consistency": X("param('grease.consistency')"),
@@ -131,10 +247,6 @@ COLD_DAY = {
     "rb_joint.eps_hi": X("rb_through_joint()['eps_hi']"),
     "rb_joint.worst": Spec("rb_through_joint()['worst_pc']", upper=True),
     **_sensitivity(),
-    # how far m moves μ at 20 kN, against the default m = 1
-    "m_spread": "100*max((max(mu) - min(mu))/mu[2] for mu in [[point(kN=20, w=3, C=c, "
-                "p={'grease.supply_exponent': m})['friction_coefficient'] for m in (0, 0.5, 1, 2)] for c in (0, -20, -40)])",
-    "eta_b_m55": "point(kN=20, w=3, C=-55)['inlet_viscosity']",
     # What it gives
     "g200w1.T": "point(N=200, w=1)['torque']",
     "g200w1.mu": "point(N=200, w=1)['friction_coefficient']",
@@ -188,14 +300,26 @@ COLD_DAY = {
     "warm.speed": "warming_steps()['speed']",
     "rig.load_lo_kN": X("code('src/validity.rs', r'pub const LOAD: Range = Range \\{.*?lo: ([^,]+),')/1e3"),
     "rig.load_hi_kN": X("code('src/validity.rs', r'pub const LOAD: Range = Range \\{.*?hi: ([^,]+),')/1e3"),
-    "rig.u_max": "code('src/validity.rs', r'pub const SLIDING_SPEED: Range = Range \\{.*?hi: ([^,]+),')",
-    "rig.tolerance_pc": X("100*code('tests/complete.rs', r'assert!\\(worst.0 <= ([\\d.]+)')"),
+    "rig.w_max": X("code('tests/one_answer.rs', r'fn the_papers_room_stays_the_papers\\(.*?omega in 0\\.0f64\\.\\.([\\d.]+)')"),
+    "rig.t_lo": X(f"code('tests/one_answer.rs', r'fn the_papers_room_stays_the_papers\\(.*?t in ([\\d.]+)f64') - {C0}"),
+    "rig.t_hi": X(f"code('tests/one_answer.rs', r'fn the_papers_room_stays_the_papers\\(.*?t in [\\d.]+f64\\.\\.([\\d.]+)\\)') - {C0}"),
+    "rig.tolerance_pc": X("100*code('tests/one_answer.rs', r'fn the_papers_room_on_a_grid_through_its_corners.*?assert!\\(worst.0 <= ([\\d.]+)')"),
     "rig.worst_pc": "100*rig_worst()[0]",
     "rig.worst_load_kN": "rig_worst()[1]/1e3",
     "rig.worst_speed": "rig_worst()[2]",
-    "rig.worst_paper_T": "point(N=rig_worst()[1], w=rig_worst()[2], paper=True)['torque']",
-    "rig.worst_clearance": "point(N=rig_worst()[1], w=rig_worst()[2])['clearance_torque']",
-    "rig.k20_pc": "100*(point(kN=5, w=4.386, p={'grease.consistency': 20})['torque']/point(kN=5, w=4.386, paper=True)['torque'] - 1)",
+    "rig.worst_C": "rig_worst()[3]",
+    "rig.worst_paper_T": "point(N=rig_worst()[1], w=rig_worst()[2], C=rig_worst()[3], paper=True)['torque']",
+    "rig.worst_clearance": "point(N=rig_worst()[1], w=rig_worst()[2], C=rig_worst()[3])['clearance_torque']",
+    # the earlier grease (K 18 Pa·s^n, τ_y 200 Pa at 20 °C, 4100 K and 3000 K) at the room's worst point
+    "rig.old_pc": "100*(point(kN=5, w=4.386, C=15, p={'grease.consistency': 18, 'grease.yield_stress': 200, "
+                  "'grease.consistency_activation': 4100, 'grease.yield_activation': 3000})['torque']"
+                  "/point(kN=5, w=4.386, C=15, paper=True)['torque'] - 1)",
+    "cool.grid": X("cooling_steps()['grid']"),
+    "cool.from": X("cooling_steps()['from']"),
+    "cool.to": X("cooling_steps()['to']"),
+    "cool.down": X("cooling_steps()['down']"),
+    "cool.steps": X("cooling_steps()['steps']"),
+    "cool.step": X("cooling_steps()['step']"),
     # The paper's model
     "fixture.rows": X("len(column('tests/fixtures/paper_model_main.csv', 'load'))"),
     "fixture.load_lo": X("min(column('tests/fixtures/paper_model_main.csv', 'load'))"),
@@ -238,6 +362,14 @@ VALIDITY = {
     "vr_rig": X("code('modelDescription/PinJointRig.xml', r'name=\"validity\" valueReference=\"(\\d+)\"')"),
     "rpm_max": "const('src/validity.rs', 'MAX_RIG_ANGULAR_SPEED')*60/(2*pi)",
     "max_temperatures": X("code('crates/cli/src/commands/sweep/mod.rs', r'const MAX_TEMPERATURES: usize = (\\d+);')"),
+    # past the model's assumptions
+    "capacity": "lib('joint.capacity')",
+    "t_min_C": X(f"const('src/params.rs', 'MIN_TEMPERATURE') - {C0}"),
+    "t_max_C": X(f"const('src/params.rs', 'MAX_TEMPERATURE') - {C0}"),
+    "edge_deg": "degrees(1)",
+    "a_over_R_60": "point(kN=60, w=1)['contact_half_width']/param('geometry.pin_radius')",
+    "a_at_capacity": "point(kN=60, w=1)['contact_half_width']*sqrt(lib('joint.capacity')/60e3)",
+    "class_gap": X(f"abs(-54 - (const('src/params.rs', 'MIN_TEMPERATURE') - {C0}))"),
 }
 
 RB_EPS = ["0.1", "0.2", "0.4", "0.6", "0.8", "0.9", "0.97"]
@@ -298,7 +430,12 @@ JOURNAL_BEARING = {
     "app_visc_20": Spec("lib('grease.apparent_viscosity.25.20')", rel=0.1),
     "app_visc_m54": COLD_DAY["app_visc_m54"],
     "rig.tolerance_pc": COLD_DAY["rig.tolerance_pc"],
-    "rig.k20_pc": COLD_DAY["rig.k20_pc"],
+    "rig.old_pc": COLD_DAY["rig.old_pc"],
+    "rig.t_lo": COLD_DAY["rig.t_lo"],
+    "ty_m54_kPa": "1e-3*lib('grease.yield_stress.-54')",
+    "k_m54_kPa": "1e-3*lib('grease.consistency.-54')",
+    **{k: COLD_DAY[k] for k in ("layer_inverse", "layer_um", "k_ratio_m54", "eta_ratio_m54", "share.25", "share.m54",
+                                "app_visc_m54_k", "app_visc_m54_both")},
     "ty_ratio": "lib('grease.yield_stress_ratio.-54')",
     "d1478.54.lo": "lib('grease.d1478_torque.-54/0.2')",
     "d1478.54.hi": "lib('grease.d1478_torque.-54/2')",
@@ -312,8 +449,8 @@ JOURNAL_BEARING = {
     "eta.100": "1e3*lib('base_oil.viscosity.100')",
     "eta.m54": "lib('base_oil.viscosity.-54')",
     "eta.m73": "1e-3*lib('base_oil.viscosity.-73')",
-    **{f"cl.y.{e}": f"lib('clearance.yield.-54.Ey.{e}')" for e in (2000, 3000, 4000)},
-    **{f"cl.p.{e}": f"lib('clearance.power.-54.EK.{e}')" for e in (3000, 4000, 5000)},
+    **{f"cl.y.{e}": f"lib('clearance.yield.-54.Ey.{e}')" for e in (2440, 3440, 4440)},
+    **{f"cl.p.{e}": f"lib('clearance.power.-54.EK.{e}')" for e in (3790, 4790, 5790)},
     "cl.b.m54": "lib('clearance.base.-54')",
     "cl.y.20": "lib('clearance.yield.20')",
     "cl.p.20": "lib('clearance.power.20')",
