@@ -200,8 +200,8 @@ pub const DEFAULT_YIELD_STRESS: f64 = 120.0;
 /// The value keeps the complete model within 3 % of the paper's over the paper's rig
 /// conditions (15–25 °C, 5–60 kN, up to 4.386 rad/s): the grease's torque in the clearance is
 /// largest against the joint's at 5 kN, the stroke's peak speed and 15 °C (where the paper's
-/// film is thickest and its torque lowest), 2.6 % with K = 8 and τ_y = 120 Pa, 4.7 % with the
-/// earlier K = 18 and τ_y = 200 Pa (`tests/one_answer.rs`). The activations below were raised
+/// film is thickest and its torque lowest), 2.86 % with K = 8 and τ_y = 120 Pa, 5.2 % with the
+/// earlier K = 18, τ_y = 200 Pa and their activations (`tests/one_answer.rs`). The activations below were raised
 /// with it so that the grease at −54 °C is the same as before (τ_y 6.3 kPa, K 2.0 kPa·sⁿ).
 pub const DEFAULT_CONSISTENCY: f64 = 8.0;
 

@@ -122,7 +122,7 @@ pub struct Model {
     /// true: the paper's model, bit for bit (the line-contact film of eq. 12 refused beyond
     /// the diametral clearance, temperatures from [`PAPER_MIN_TEMPERATURE`]); false (default):
     /// the complete model (journal bearing in full film, the grease in the clearance, the
-    /// cold supply; docs/cold-day.md).
+    /// grease's oil supply to the contact; docs/cold-day.md).
     pub paper: bool,
 }
 
@@ -131,7 +131,7 @@ pub struct Model {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Grease {
-    /// true (default): Herschel–Bulkley grease in the clearance, cold supply to the contact;
+    /// true (default): Herschel–Bulkley grease in the clearance, its oil supply to the contact;
     /// false: the base oil alone fills the clearance (Newtonian), flooded supply.
     pub enabled: bool,
     /// τ_y, yield stress at `lubricant.reference_temperature` (Pa).
@@ -404,8 +404,8 @@ pub static PARAMS: [ParamSpec; 36] = [
     spec!(lubricant.roelands_temperature_index, "S_0", "1", Range::NonNegative, "Extension: Roelands (1966); default fitted to an ISO VG 100 mineral oil", "Roelands temperature-viscosity index S_0: ln(eta_0/eta_inf) scales as (1 + (T - 273.15 K)/135 K)^-S_0"),
     spec!(starvation.inlet_layer_inverse, "1/h_oil", "1/m", Range::NonNegative, "Extension: Chevalier et al. (1998); default 0 = fully flooded (the paper's model)", "Reciprocal of the lubricant layer thickness available at the inlet (starved-inlet film correction); 0 = fully flooded"),
     spec!(starvation.exponent, "gamma_s", "1", Range::OpenClosed(0.0, 100.0), "Extension: Chevalier et al. (1998)", "Exponent of the starvation relation h = (h_ff^-g + h_oil^-g)^(-1/g)"),
-    switch!(model.paper, "Issue 28 (default false: the complete model)", "true: the paper's model, bit for bit (film refused beyond the diametral clearance, temperature from -35 C); false: the complete model (journal bearing in full film, grease in the clearance, cold supply)"),
-    switch!(grease.enabled, "Complete model (default true)", "true: Herschel-Bulkley grease in the clearance and the cold supply to the contact; false: the base oil alone fills the clearance (Newtonian), flooded supply"),
+    switch!(model.paper, "Issue 28 (default false: the complete model)", "true: the paper's model, bit for bit (film refused beyond the diametral clearance, temperature from -35 C); false: the complete model (journal bearing in full film, grease in the clearance, its oil supply to the contact)"),
+    switch!(grease.enabled, "Complete model (default true)", "true: Herschel-Bulkley grease in the clearance and its oil supply to the contact (a starved inlet); false: the base oil alone fills the clearance (Newtonian), flooded supply"),
     spec!(grease.yield_stress, "tau_y", "Pa", Range::NonNegative, GREASE_SOURCE, "Yield stress of the grease at the reference temperature (Herschel-Bulkley)"),
     spec!(grease.consistency, "K", "Pa.s^n", Range::NonNegative, GREASE_SOURCE, "Consistency of the grease at the reference temperature (Herschel-Bulkley tau = tau_y + K gamma_dot^n + eta_b gamma_dot)"),
     spec!(grease.flow_index, "n", "1", Range::OpenClosed(0.0, 1.0), GREASE_SOURCE, "Flow index of the grease (Herschel-Bulkley)"),
@@ -587,11 +587,22 @@ impl Params {
     /// temperatures, or η0 beyond a glass's viscosity there).
     pub fn requoted_at(&self, reference: f64) -> Result<Self, ParamError> {
         self.validate()?;
+        let refuse = |range: String| ParamError::OutOfRange { name: "lubricant.reference_temperature".into(), value: reference, unit: "K", range };
+        if !(MIN_TEMPERATURE..=MAX_TEMPERATURE).contains(&reference) {
+            return Err(refuse(format!("in [{MIN_TEMPERATURE}, {MAX_TEMPERATURE}] to quote the joint at it")));
+        }
         let mut q = *self;
         q.lubricant.reference_temperature = reference;
         let l = &self.lubricant;
         let at = Lubricant { temperature: reference, ..*l };
         let moved = crate::viscosity::at_temperature(&at);
+        if !(moved.viscosity.is_finite() && moved.viscosity > 0.0 && moved.viscosity <= GLASS_VISCOSITY) {
+            return Err(refuse(format!(
+                "such that eta_0 there stays a liquid's viscosity (here {:e} Pa.s; Roelands' temperature relation from {} K)",
+                moved.viscosity,
+                crate::fmt::Num(l.reference_temperature)
+            )));
+        }
         q.lubricant.viscosity = moved.viscosity;
         q.lubricant.pressure_viscosity_coefficient = moved.pressure_viscosity_coefficient;
         let g = &self.grease;

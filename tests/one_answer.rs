@@ -171,3 +171,12 @@ fn the_papers_room_on_a_grid_through_its_corners() {
     eprintln!("the paper's room: largest relative torque difference {:.4} at {} N, {} rad/s, {} K", worst.0, worst.1, worst.2, worst.3);
     assert!(worst.0 <= 0.03, "{worst:?}");
 }
+
+/// Re-quoting at a temperature the model does not take is refused by name, with its value.
+#[test]
+fn requoting_outside_the_temperatures_is_refused_by_name() {
+    for t in [100.0, -5.0, f64::NAN, 1e4] {
+        let e = Params::default().requoted_at(t).unwrap_err().to_string();
+        assert!(e.contains("lubricant.reference_temperature") && e.contains('K'), "{t}: {e}");
+    }
+}
