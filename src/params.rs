@@ -594,8 +594,10 @@ impl Params {
         let mut q = *self;
         q.lubricant.reference_temperature = reference;
         let l = &self.lubricant;
-        let at = Lubricant { temperature: reference, ..*l };
-        let moved = crate::viscosity::at_temperature(&at);
+        // Roelands' temperature relation ([`crate::viscosity::at_temperature`]) on plain numbers.
+        let viscosity = crate::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, reference, l.reference_temperature, l.roelands_temperature_index);
+        let factor = crate::roelands_temperature::factor(reference, l.reference_temperature, l.roelands_temperature_index);
+        let moved = Lubricant { viscosity, pressure_viscosity_coefficient: l.pressure_viscosity_coefficient * factor, ..*l };
         if !(moved.viscosity.is_finite() && moved.viscosity > 0.0 && moved.viscosity <= GLASS_VISCOSITY) {
             return Err(refuse(format!(
                 "such that eta_0 there stays a liquid's viscosity (here {:e} Pa.s; Roelands' temperature relation from {} K)",
