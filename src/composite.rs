@@ -52,6 +52,19 @@ pub const XI_0: f64 = 2.5e-3;
 /// 0.45, below the paper's rig conditions (ξ ≥ 0.48 there) and Moes' crossing (ξ = 0.59).
 pub const XI_1: f64 = 0.45;
 
+/// (a⁸ + b⁸)^(1/8) for a, b ≥ 0, without overflow: a smooth maximum, increasing in both.
+#[inline]
+pub fn smooth_max(a: f64, b: f64) -> f64 {
+    if b == 0.0 {
+        return a;
+    }
+    let (hi, lo) = if a >= b { (a, b) } else { (b, a) };
+    let r = lo / hi;
+    let r2 = r * r;
+    let r4 = r2 * r2;
+    hi * (1.0 + r4 * r4).powf(0.125)
+}
+
 /// The quintic smoothstep t³(10 − 15t + 6t²) on [0, 1], 0 below, 1 above: C², monotone.
 pub fn smoothstep(t: f64) -> f64 {
     if t <= 0.0 {
@@ -162,7 +175,8 @@ pub struct Parts {
     pub weight: f64,
     /// ε_g = 1 − h/c, clamped to [0, 1).
     pub eccentricity: f64,
-    /// T_clearance, N·m (its yield part included).
+    /// T_clearance, N·m (its yield part included, and the grease's excess over the line
+    /// contact within the contact arc, [`Complete::contact_torque`]).
     pub clearance_torque: f64,
     /// τ_y(T)·(2π − 2θ_c)·R²·B, N·m: the yield part of T_clearance.
     pub yield_torque: f64,
@@ -273,17 +287,30 @@ impl Complete {
 
     /// Every part at the solved load sharing `ls`, weight w, ln S at the whole load, Hertz
     /// half-width a (m), load P (N) and sliding speed u (m/s).
-    pub fn parts(&self, weight: f64, ln_sommerfeld: f64, ls: &LoadSharing, half_width: f64, load: f64, u: f64) -> Parts {
+    /// `line_contact` is the line contact's fluid torque (1 − w)·Q_H·R (eq. 3), N·m: where the
+    /// grease's flow over the contact arc exceeds it, the excess is the clearance's
+    /// ([`Complete::contact_torque`]).
+    pub fn parts(&self, weight: f64, ln_sommerfeld: f64, ls: &LoadSharing, half_width: f64, load: f64, u: f64, line_contact: f64) -> Parts {
         let poiseuille_torque = if weight > 0.0 && ls.fluid_fraction > 0.0 {
             let (e, _) = self.journal.eccentricity(ln_sommerfeld - ls.fluid_fraction.ln());
             0.5 * self.clearance * e * ls.fluid_fraction * load * self.journal.attitude_angle(e).sin()
         } else {
             0.0
         };
-        let geometry = ClearanceGeometry { radius: self.radius, length: self.length, clearance: self.clearance };
         let eps = self.eccentricity(ls.film_thickness);
-        let (outside, arc_torque) = clearance_and_arc_torque(&self.power_law, &self.rheology, &geometry, u, eps, self.contact_angle(weight, half_width));
-        Parts { weight, eccentricity: eps, clearance_torque: outside.total(), yield_torque: self.yield_torque(weight, half_width), poiseuille_torque, arc_torque }
+        let (clearance_torque, arc_torque) = self.clearance_and_arc(weight, half_width, u, ls.film_thickness, line_contact);
+        Parts { weight, eccentricity: eps, clearance_torque, yield_torque: self.yield_torque(weight, half_width), poiseuille_torque, arc_torque }
+    }
+
+    /// The clearance's torque (N·m) at weight w, Hertz half-width a, sliding speed u and film
+    /// h, with the line contact's fluid torque `line_contact` (N·m): the lubricant outside the
+    /// contact arc plus the grease's excess over the line contact within it
+    /// ([`Complete::contact_torque`] − `line_contact`, ≥ 0); and the grease's flow over the arc.
+    pub fn clearance_and_arc(&self, weight: f64, half_width: f64, u: f64, film: f64, line_contact: f64) -> (f64, f64) {
+        let geometry = ClearanceGeometry { radius: self.radius, length: self.length, clearance: self.clearance };
+        let (outside, arc) = clearance_and_arc_torque(&self.power_law, &self.rheology, &geometry, u, self.eccentricity(film), self.contact_angle(weight, half_width));
+        let excess = smooth_max(line_contact, arc) - line_contact;
+        (outside.total() + excess.max(0.0), arc)
     }
 
     /// The contact arc's fluid torque (N·m) from the line contact's (1 − w)·Q_H·R (eq. 3,
@@ -293,18 +320,10 @@ impl Complete {
     /// film is limited by the base oil's limiting shear (eq. 4) and the grease beside it is not
     /// (the cold day, fast), the arc that the contact takes from the clearance as the load
     /// grows would otherwise carry less than the grease it replaces, and the torque would fall
-    /// as the load rises.
+    /// as the load rises. The excess over `line_contact` is reported in the clearance torque.
     #[inline]
     pub fn contact_torque(line_contact: f64, parts: &Parts) -> f64 {
-        let (a, b) = (line_contact, parts.arc_torque);
-        if b == 0.0 {
-            return a;
-        }
-        let (hi, lo) = if a >= b { (a, b) } else { (b, a) };
-        let r = lo / hi;
-        let r2 = r * r;
-        let r4 = r2 * r2;
-        hi * (1.0 + r4 * r4).powf(0.125)
+        smooth_max(line_contact, parts.arc_torque)
     }
 }
 

@@ -509,7 +509,16 @@ impl Joint {
                 let w = self.journal_weight(load, omega);
                 let a = self.hertz_unit.half_width * load.abs().sqrt();
                 let u = omega.abs() * self.params.geometry.pin_radius;
-                (c.clearance_torque(w, a, u, film), w, eps, c.yield_torque(w, a))
+                // The line contact's fluid torque (eq. 3) at this film, for the grease's excess
+                // within the contact arc (crate::composite::Complete::contact_torque).
+                let load = load.abs();
+                let line = if load.is_finite() && load > 0.0 && u > 0.0 && film > 0.0 {
+                    let lt = self.load_terms_unchecked(load);
+                    (1.0 - w) * contact_friction(&lt, u, u.ln(), film.ln()) * self.params.geometry.pin_radius * load
+                } else {
+                    0.0
+                };
+                (c.clearance_and_arc(w, a, u, film, line).0, w, eps, c.yield_torque(w, a))
             }
             None => (0.0, 0.0, eps, 0.0),
         }
@@ -744,21 +753,16 @@ impl Joint {
         // Eq. 3 with eq. 4 and 5 at the Hertz mean pressure; Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m.
         // At rest (u = 0) there is no fluid shear: μ = μ_c exactly (docs/model.md, limits), whatever η.
         // The exponent ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
-        let mu_contact = if u > 0.0 {
-            let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ls.ln_film_thickness;
-            lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::fast_math::exp(ln_x)).exp_m1()
-        } else {
-            0.0
-        };
+        let mu_contact = contact_friction(lt, u, ln_u, ls.ln_film_thickness);
         // Eq. 8: Q_C = μ_c P_C = μ_c P_T/γ2.
         let mu_asperity = p.friction.boundary_friction_coefficient * ls.asperity_fraction;
         match &self.complete {
             None => (ln_u, ls, mu_contact, mu_asperity, Parts::default()),
             Some(c) => {
-                let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u);
                 let rp = p.geometry.pin_radius * lt.load;
-                let contact = Complete::contact_torque((1.0 - weight) * mu_contact * rp, &parts);
-                let mu_fluid = (contact + parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
+                let line = (1.0 - weight) * mu_contact * rp;
+                let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u, line);
+                let mu_fluid = (line + parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
                 (ln_u, ls, mu_fluid, mu_asperity, parts)
             }
         }
@@ -933,6 +937,20 @@ impl Joint {
 enum Start<'c> {
     From(Option<f64>),
     Cut(&'c mut StartCut),
+}
+
+/// Eq. 3 with eqs. 4 and 5 at the Hertz mean pressure: Q_H/P_T = τ_L(1 − e^{−ηu/(τ_L h_c)})/p_m
+/// at sliding speed `u` (m/s, its logarithm `ln_u`) and ln h_c `ln_film`. At rest (u = 0) there
+/// is no fluid shear: 0 exactly (docs/model.md, limits), whatever η. The exponent
+/// ηu/(τ_L h_c) is formed in logarithms, so η overflowing is harmless.
+#[inline]
+fn contact_friction(lt: &LoadTerms, u: f64, ln_u: f64, ln_film: f64) -> f64 {
+    if u > 0.0 {
+        let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ln_film;
+        lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::fast_math::exp(ln_x)).exp_m1()
+    } else {
+        0.0
+    }
 }
 
 /// The parts of an evaluation that depend on the load alone ([`Joint::load_terms`]).
