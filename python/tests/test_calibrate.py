@@ -181,13 +181,14 @@ def test_options_map_to_cli_flags(records, cli, tmp_path):
 
 @pytest.fixture(scope="module")
 def cold_records():
-    """Rig records at 253.15 and 293.15 K (0.5 Hz, +-40 deg, 3 cycles, 20 kN) made with the
+    """Rig records at 233.15 and 293.15 K (outside the stick-slip band of about -25 to 5 C that the
+    grease's supply layer gives the rig at 20 kN, where the quasi-static fit does not hold) (0.5 Hz, +-40 deg, 3 cycles, 20 kN) made with the
     grease's yield activation temperature 25 % above its default, 0.05 N*m of torque noise;
     each carries its temperature."""
     truth = {pinjoint.MU_C: MU, "grease.yield_activation": 1.25 * pinjoint.Params()["grease.yield_activation"]}
     rng = np.random.default_rng(2)
     out = []
-    for t in (253.15, 293.15):
+    for t in (233.15, 293.15):
         p = pinjoint.Params(dict(truth, **{"lubricant.temperature": t}))
         c = pinjoint.simulate_cycle(0.5, np.radians(40.0), 20e3, cycles=3, samples_per_cycle=600, params=p)
         torque = c["torque"] + 0.05 * rng.standard_normal(len(c["torque"]))
@@ -200,8 +201,8 @@ def test_temperature_per_record_equals_cli(cold_records, cli, tmp_path):
     a temperature column in the record gives the same fit; 2 temperatures fit what is named."""
     keys = (pinjoint.MU_C, "grease.yield_activation")
     bare = [{k: v for k, v in r.items() if k != "temperature"} for r in cold_records]
-    ours = pinjoint.calibrate(bare, fit=keys, temperature=[253.15, 293.15], resamples=0)
-    assert ours["temperatures"] == [253.15, 293.15]
+    ours = pinjoint.calibrate(bare, fit=keys, temperature=[233.15, 293.15], resamples=0)
+    assert ours["temperatures"] == [233.15, 293.15]
     assert "grease.yield_activation" in ours["parameters"]
     column = pinjoint.calibrate(cold_records, fit=keys, resamples=0)
     assert column.to_json() == ours.to_json()
@@ -213,7 +214,7 @@ def test_temperature_per_record_equals_cli(cold_records, cli, tmp_path):
     run = subprocess.run(args, check=True, capture_output=True, text=True)
     cli_json = json.loads(run.stdout)
     # The CLI's bootstrap default differs from resamples=0: compare without it.
-    again = pinjoint.calibrate(bare, fit=keys, temperature=[253.15, 293.15])
+    again = pinjoint.calibrate(bare, fit=keys, temperature=[233.15, 293.15])
     assert json.loads(again.to_json()) == cli_json
     assert pinjoint.Params.from_toml(tmp_path / "out" / "calibrated.toml") == again.params
     # Without the temperatures the records are taken at the parameters' 20 C: another fit.
