@@ -358,9 +358,20 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
         let (found, report) = LevenbergMarquardt::new().with_patience(200).minimize(Adapter { fit: &lm, beta: beta.clone() });
         if !report.termination.was_successful() {
             // A model error met on the way is the likelier cause; else LM's own reason.
-            return Err(lm.error.into_inner().unwrap_or_else(|| {
-                CalibrationError::NoConvergence(format!("{:?} after {} evaluations", report.termination, report.number_of_evaluations))
-            }));
+            // A Jacobian the model refused (at an accepted point) ended LM: that error is the
+            // cause. Otherwise LM ran out of patience or tolerance, and an error met on the way
+            // was a trial step the model refused, which LM rejected and shortened (its residual
+            // 1e3 × the largest |torque|): the fit never stands at such a value, and the report
+            // says what ended it, the refused trial step only as a note.
+            let met = lm.error.into_inner();
+            return Err(match (report.termination, met) {
+                (levenberg_marquardt::TerminationReason::User(_), Some(e)) => e,
+                (t, met) => CalibrationError::NoConvergence(format!(
+                    "{t:?} after {} evaluations{}",
+                    report.number_of_evaluations,
+                    met.map(|e| format!("; a trial step the model refused on the way was rejected ({e})")).unwrap_or_default()
+                )),
+            });
         }
         evaluations = report.number_of_evaluations;
         beta = found.beta;
