@@ -396,7 +396,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
         let which: Vec<usize> = (0..extras.len()).filter(|&k| screened.contains(&extras[k].key.name())).collect();
         let d = independence(&jac, &which);
         if let Some((i, &least)) = d.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1))
-            && !(least >= MIN_INDEPENDENCE)
+            && (least.is_nan() || least < MIN_INDEPENDENCE)
         {
             let e = &extras[which[i]];
             return Ok(Err((
