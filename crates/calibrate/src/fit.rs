@@ -107,7 +107,11 @@ pub fn calibrate_core_with(records: &[Record], options: &Options, filter_given: 
     };
     let first = loop {
         let once = match calibrate_once(records, &o, filter_given, &screened) {
-            Ok(x) => x,
+            Ok(Ok(x)) => x,
+            Ok(Err((key, why))) => {
+                drop(&mut o, &mut screened, &key, &why);
+                continue;
+            }
             // The default keys made the fit fail (no convergence, a Jacobian outside the model's
             // domain, a singular problem; a trial step outside it is only a rejected step): fitted without them, each named. An error of the
             // records themselves comes back from the fit without them.
@@ -135,7 +139,7 @@ pub fn calibrate_core_with(records: &[Record], options: &Options, filter_given: 
     while deviates.is_some() && step > 0.0 && extended < MAX_SETTLE_EXTENSIONS {
         o.exclusion.settle_time += step;
         match calibrate_once(records, &o, filter_given, &[]) {
-            Ok(c) if 2 * c.calibration.points_used >= first_used => {
+            Ok(Ok(c)) if 2 * c.calibration.points_used >= first_used => {
                 extended += 1;
                 (best, deviates) = (c.calibration, c.deviation);
             }
@@ -202,7 +206,7 @@ fn settle_deviation(points: &[Point], r: &DVector<f64>, settle: f64, inflation: 
     ((ma - mb).abs() > 3.0 * se).then_some(ma - mb)
 }
 
-fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, screened: &[String]) -> Result<Once, CalibrationError> {
+fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, screened: &[String]) -> Result<Result<Once, (String, String)>, CalibrationError> {
     if records.is_empty() {
         return Err(CalibrationError::NoRecords);
     }
@@ -354,9 +358,20 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
         let (found, report) = LevenbergMarquardt::new().with_patience(200).minimize(Adapter { fit: &lm, beta: beta.clone() });
         if !report.termination.was_successful() {
             // A model error met on the way is the likelier cause; else LM's own reason.
-            return Err(lm.error.into_inner().unwrap_or_else(|| {
-                CalibrationError::NoConvergence(format!("{:?} after {} evaluations", report.termination, report.number_of_evaluations))
-            }));
+            // A Jacobian the model refused (at an accepted point) ended LM: that error is the
+            // cause. Otherwise LM ran out of patience or tolerance, and an error met on the way
+            // was a trial step the model refused, which LM rejected and shortened (its residual
+            // 1e3 × the largest |torque|): the fit never stands at such a value, and the report
+            // says what ended it, the refused trial step only as a note.
+            let met = lm.error.into_inner();
+            return Err(match (report.termination, met) {
+                (levenberg_marquardt::TerminationReason::User(_), Some(e)) => e,
+                (t, met) => CalibrationError::NoConvergence(format!(
+                    "{t:?} after {} evaluations{}",
+                    report.number_of_evaluations,
+                    met.map(|e| format!("; a trial step the model refused on the way was rejected ({e})")).unwrap_or_default()
+                )),
+            });
         }
         evaluations = report.number_of_evaluations;
         beta = found.beta;
@@ -372,9 +387,33 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
         });
     }
     let cl: Vec<usize> = points.iter().map(|p| p.cluster).collect();
-    let mut u = analyse(&jac, &r, &cl, clusters.len(), options.resamples, options.seed).ok_or_else(|| CalibrationError::Unidentifiable {
-        what: "the fitted quantities cannot be determined from these records (singular normal matrix)".into(),
-    })?;
+    let Some(mut u) = analyse(&jac, &r, &cl, clusters.len(), options.resamples, options.seed) else {
+        // A singular normal matrix at the optimum: a screened (default) key whose column
+        // vanished or fell in with the others' on the way (a key the records hardly see drifts
+        // along its flat valley to a bound of its range, where its column is 0) is dropped by
+        // name and the fit repeated, as [`worst`] drops it after a regular fit; not every
+        // default key with it.
+        let which: Vec<usize> = (0..extras.len()).filter(|&k| screened.contains(&extras[k].key.name())).collect();
+        let d = independence(&jac, &which);
+        if let Some((i, &least)) = d.iter().enumerate().min_by(|a, b| a.1.total_cmp(b.1))
+            && (least.is_nan() || least < MIN_INDEPENDENCE)
+        {
+            let e = &extras[which[i]];
+            return Ok(Err((
+                e.key.name(),
+                format!(
+                    "at the fit's end ({} = {:.6e} {}) its Jacobian column is nearly collinear with the other fitted quantities' or \
+                     zero (the part they do not explain is {least:.2e} of it): the records hardly move the torque with it",
+                    e.key.name(),
+                    e.transform.inverse(beta[which[i]]),
+                    e.key.unit()
+                ),
+            )));
+        }
+        return Err(CalibrationError::Unidentifiable {
+            what: "the fitted quantities cannot be determined from these records (singular normal matrix)".into(),
+        });
+    };
     // Errors that repeat in every cycle (an encoder's rounding when the sampling is locked to
     // the motion, times J) cancel out of the spread from stroke to stroke: the strokes and the
     // phases of the cycle as two-way clusters see them (tests/coverage.rs).
@@ -464,7 +503,7 @@ fn calibrate_once(records: &[Record], options: &Options, filter_given: bool, scr
         settle_time: options.exclusion.settle_time,
         series,
     };
-    Ok(Once { calibration, deviation, independence, dropped: dropped_before })
+    Ok(Ok(Once { calibration, deviation, independence, dropped: dropped_before }))
 }
 
 /// The phase of each fitted point: its record, direction and place in its stroke in bins of

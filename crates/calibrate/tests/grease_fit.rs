@@ -1,11 +1,22 @@
 //! The grease's parameters fitted across temperature (issue 28 item 6) on the complete model:
 //! rig records (`pinjoint cycle`'s simulation: breakaway peaks, servo, J = 0.05 kg·m²) made
 //! with a known truth, the grease's parameters changed from their defaults (τ_y × 1.5, K × 0.7,
-//! E_y/R × 1.25, E_K/R × 0.8), at 253.15, 273.15 and 293.15 K, 10 and 40 kN, 0.5 and 1.5 Hz,
+//! E_y/R × 1.25, E_K/R × 0.8), at 233.15, 243.15 and 293.15 K, 10 and 40 kN, 0.5 and 1.5 Hz,
 //! 0.5 N·m of torque noise, a 0.3 N·m offset and a 17-bit encoder. With no key named, the
 //! calibration fits μ_c and the grease's keys the records determine, each with its interval,
 //! drops the flow index (the speeds span a factor 6, not a decade) with a warning naming it,
 //! and the calibrated parameters predict the torque between the records' temperatures.
+//!
+//! The record temperatures avoid the rig's stick-slip. With the grease's oil supply (a starved
+//! inlet fed by the bleed layer, src/cold_supply.rs) the torque falls steeply with speed
+//! between about −25 and 5 °C: the layer, thick against the film when warm and thin when cold,
+//! there lets the thickening oil lift the surfaces as the speed rises (at 40 kN, 0 °C, the
+//! truth's torque falls from 114 to 85 N·m between 0.3 and 3 rad/s; at −20 °C from 108 to 35).
+//! A falling friction–speed curve steeper than the servo's damping makes the rig stick and
+//! slip: at 40 kN the records at 253.15 and 273.15 K (and 263.15 K at 10–40 kN, 0.5 Hz) move
+//! irregularly, which the quasi-static model does not describe (the fit warns "stick-slip?").
+//! At −40 and −30 °C the layer starves the contact at every speed (the torque rises with
+//! speed, the grease's share large) and at 20 °C the slope is gentle: the fit is valid there.
 
 mod common;
 use common::*;
@@ -14,7 +25,7 @@ use pinjoint::Params;
 use pinjoint_calibrate::{calibrate, Calibration, Estimate, Options, Record, MU_C};
 
 const MU: f64 = 0.105;
-const TEMPS: [f64; 3] = [253.15, 273.15, 293.15];
+const TEMPS: [f64; 3] = [233.15, 243.15, 293.15];
 
 fn truth() -> Params {
     let mut p = Params::default();
@@ -96,7 +107,7 @@ fn three_temperatures_fit_the_grease_with_mu_c_and_predict_between_them() {
     // Between the records' temperatures, at their loads and speeds: the truth's torque within
     // the interval propagated from the fitted keys' 95 % intervals (|∂T/∂θ|·half-width summed
     // over the keys: the independent-errors bound, wider than the correlated one).
-    for &temp in &[263.15, 283.15] {
+    for &temp in &[238.15, 268.15] {
         for &(load, w) in &[(10e3, 2.0), (40e3, 1.0), (25e3, 3.0)] {
             let (want, got) = (torque(&t, load, w, temp), torque(&c.params, load, w, temp));
             let mut bound = 0.0;
@@ -169,12 +180,15 @@ fn grease_intervals_cover_the_truth_over_seeds() {
 fn strokes_a_decade_apart_in_speed_fit_the_flow_index_too() {
     // Another truth (n = 0.6, K = 30 Pa·s^n, τ_y = 150 Pa, E_K/R = 3000 K), four temperatures
     // from -40 C, one load, strokes at 0.2 and 2 Hz: the speeds span more than a decade, so
-    // every grease key is fitted, each interval holding the truth.
+    // every grease key is fitted, each interval holding the truth. The temperatures avoid the
+    // stick-slip band between about -25 and 5 C (the module's comment; at 253.15 K the 0.2 Hz
+    // strokes move irregularly): -40, -35 and -30 C, where the starved contact's torque rises
+    // with speed and the grease carries much of it, and 20 C.
     let mut truth = Params::default();
     truth.friction.boundary_friction_coefficient = 0.11;
     (truth.grease.yield_stress, truth.grease.consistency, truth.grease.flow_index, truth.grease.consistency_activation) = (150.0, 30.0, 0.6, 3000.0);
     let mut recs = Vec::new();
-    for t in [233.15, 253.15, 273.15, 293.15] {
+    for t in [233.15, 238.15, 243.15, 293.15] {
         for f in [0.2, 2.0] {
             let mut cfg = RigConfig { model: truth, ..RigConfig::default() };
             cfg.model.lubricant.temperature = t;
