@@ -514,7 +514,7 @@ impl Joint {
                 let load = load.abs();
                 let line = if load.is_finite() && load > 0.0 && u > 0.0 && film > 0.0 {
                     let lt = self.load_terms_unchecked(load);
-                    (1.0 - w) * contact_friction(&lt, u, u.ln(), film.ln()) * self.params.geometry.pin_radius * load
+                    (1.0 - w) * contact_friction(&lt, u, u.ln(), film.ln()) * (self.params.geometry.pin_radius * load)
                 } else {
                     0.0
                 };
@@ -761,7 +761,10 @@ impl Joint {
             Some(c) => {
                 let rp = p.geometry.pin_radius * lt.load;
                 let line = (1.0 - weight) * mu_contact * rp;
-                let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u, line);
+                // The excess within the contact arc from the film h_c itself, as
+                // Joint::clearance_outputs has it (the same bits on every path).
+                let line_of_film = (1.0 - weight) * contact_friction(lt, u, ln_u, ls.film_thickness.ln()) * rp;
+                let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u, line_of_film);
                 let mu_fluid = (line + parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
                 (ln_u, ls, mu_fluid, mu_asperity, parts)
             }

@@ -196,7 +196,13 @@ pub fn solve_composite(
     // s = −r/r′ is at most THIRD_ORDER_ACCEPT, Halley's step y0 + s/(1 + K s) (K = r″/2r′)
     // leaves an error C·s³ with C = K² − r‴/6r′, and the solve ends after one evaluation.
     // Otherwise Newton's iteration continues from y0, its first step Halley's.
-    let p0 = Point::at(film, asp, s, starved, journal, y0, starved.is_none() && journal.is_none(), sensitivities);
+    // r″ is analytic for the flooded line contact, and for the complete model wherever the
+    // journal's weight is 0 (the clearance's cap and the supply's starvation by the chain rule).
+    let second = match journal {
+        None => starved.is_none(),
+        Some(j) => j.weight == 0.0,
+    };
+    let p0 = Point::at(film, asp, s, starved, journal, y0, second, sensitivities);
     let step = -p0.r / p0.dr;
     let k = p0.d2r / (2.0 * p0.dr);
     let (y, ln_h, last, mut evaluations) = if p0.raw_r >= COMPRESS_FROM && step.abs() <= THIRD_ORDER_ACCEPT && (k * step).abs() <= 0.1 {
@@ -338,13 +344,15 @@ impl Point {
         let mut w = 1.0;
         let mut jp = 0.0; // the journal's ∂ln h/∂ln P_T at fixed y
         if let Some(j) = journal {
-            // The line contact's film held inside the clearance (crate::composite).
+            // The line contact's film held inside the clearance (crate::composite); its second
+            // derivative by the chain rule (d²l/dln h² = −k·w·(1 − w)).
             let (l, wc) = crate::starvation::ln_starved(ln_h, -j.ln_clearance, CLEARANCE_CAP_EXPONENT);
             ln_h = l;
+            d2ln_h = wc * d2ln_h - CLEARANCE_CAP_EXPONENT * wc * (1.0 - wc) * dln_h * dln_h;
             dln_h *= wc;
             w = wc;
-            d2ln_h = f64::NAN;
             if j.weight > 0.0 {
+                d2ln_h = f64::NAN;
                 let (ln_hj, dj) = j.ln_film(sh.ln_x1);
                 ln_h = (1.0 - j.weight) * ln_h + j.weight * ln_hj;
                 dln_h = (1.0 - j.weight) * dln_h + j.weight * sh.x2 * dj;
@@ -356,10 +364,13 @@ impl Point {
         if let Some(st) = starved {
             let (l, ws) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
             ln_h = l;
+            // The second derivative by the chain rule (d²l/dln h² = −γ·w·(1 − w)) for the
+            // complete model, whose first step may be third order; the paper's starved inlet
+            // keeps Newton's iteration (its path bit for bit).
+            d2ln_h = if journal.is_some() { ws * d2ln_h - st.gamma * ws * (1.0 - ws) * dln_h * dln_h } else { f64::NAN };
             dln_h *= ws;
             w *= ws;
             jp *= ws;
-            d2ln_h = f64::NAN;
         }
         let h = exp(ln_h);
         let t = (h - s.summit_mean_plane_offset) / s.summit_height_std;

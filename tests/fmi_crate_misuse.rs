@@ -193,7 +193,7 @@ fn cases() -> Vec<(At, &'static str, Call, &'static str)> {
         (Step, "deserialize an extended state", |i| damaged(i, |b| b.push(0)), "truncated or extended"),
         (Step, "deserialize a corrupted state", |i| damaged(i, |b| { let n = b.len() / 2; b[n] ^= 0x10 }), "CRC-32 mismatch"),
         (Step, "deserialize a state of a newer format version", |i| damaged(i, |b| { b[8] = 2; fix_crc(b) }), "format version 2"),
-        (Step, "deserialize a state of another model version", |i| damaged(i, |b| { let at = model_part(); b[at] = 9; fix_crc(b) }), "PinJoint state version 9"),
+        (Step, "deserialize a state of another model version", |i| damaged(i, |b| { let at = model_part(); b[at] = 10; fix_crc(b) }), "PinJoint state version 10"),
         (Step, "deserialize a state holding a NaN speed", |i| damaged(i, |b| {
             let at = model_part() + 3 + 8 * (PARAMS.len() + 2);
             b[at..at + 8].copy_from_slice(&f64::NAN.to_le_bytes());

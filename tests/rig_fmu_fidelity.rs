@@ -212,7 +212,7 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     // A state of an earlier layout (version 2, before the temperature input) is refused by version.
     let mut old = bytes.clone();
     let model = model_part_offset(&old);
-    assert_eq!(old[model], 5, "rig state version 5");
+    assert_eq!(old[model], 6, "rig state version 6");
     old[model] = 2;
     let n = old.len();
     let crc = fmi_layer::fmi2::bytes::crc32(&old[..n - 4]);
