@@ -290,6 +290,7 @@ impl Complete {
     /// `line_contact` is the line contact's fluid torque (1 − w)·Q_H·R (eq. 3), N·m: where the
     /// grease's flow over the contact arc exceeds it, the excess is the clearance's
     /// ([`Complete::contact_torque`]).
+    #[allow(clippy::too_many_arguments)]
     pub fn parts(&self, weight: f64, ln_sommerfeld: f64, ls: &LoadSharing, half_width: f64, load: f64, u: f64, line_contact: f64) -> Parts {
         let poiseuille_torque = if weight > 0.0 && ls.fluid_fraction > 0.0 {
             let (e, _) = self.journal.eccentricity(ln_sommerfeld - ls.fluid_fraction.ln());
