@@ -1,8 +1,9 @@
 """A cold soak through fmpy (issue 28): the temperature input ramps from 20 C to -54 C while
 the PinJoint is held and while it slides, and PinJointRig runs at 100 N (the light load the
 paper's model refused) through the same ramp. With the complete model (the default) every
-step answers; the joint stiffens as it cools (the friction coefficient at the held and at the
-sliding input never falls as the temperature falls); below 0 C `validity` says extrapolation
+step answers; the cold day is stiffer than the room (the friction coefficient at -54 C above
+its value at 20 C, held and sliding; in between it may first fall as the thicker oil lifts the
+surfaces, as in the paper's model, before the grease's supply layer thins: issue 37); below 0 C `validity` says extrapolation
 (1), never known_wrong (2), which stays the paper's model's (`model.paper = true`)."""
 
 import numpy as np
@@ -30,11 +31,12 @@ def run(sig, stop, **start):
                         output=["temperature", "torque", "friction_coefficient", "grease_yield_torque", "clearance_torque", "validity"])
 
 
-def non_increasing_as_it_warms(temp, value):
-    """`value` never falls as `temp` falls (the samples of a cooling ramp)."""
+def stiffer_cold(temp, value):
+    """`value` at the coldest sample of the ramp at least its value at the warmest (the model's
+    continuity in temperature is tested by refinement in tests/complete.rs)."""
     order = np.argsort(-np.asarray(temp))  # warm to cold
     v = np.asarray(value)[order]
-    return np.all(np.diff(v) >= -1e-12 * np.abs(v[:-1]))
+    return v[-1] >= v[0]
 
 
 def test_held_and_sliding_joint_stiffens_through_the_cold_soak(fmu_path):
@@ -42,7 +44,7 @@ def test_held_and_sliding_joint_stiffens_through_the_cold_soak(fmu_path):
     for omega, load in [(0.0, 20e3), (0.2, 20e3), (1.0, 200.0), (3.0, 20e3)]:
         r = run(ramp(stop, omega, load), stop)
         assert np.all(np.isfinite(r["torque"])) and np.all(np.isfinite(r["friction_coefficient"]))
-        assert non_increasing_as_it_warms(r["temperature"], r["friction_coefficient"]), (omega, load)
+        assert stiffer_cold(r["temperature"], r["friction_coefficient"]), (omega, load)
         # The grease's yield torque grows as it cools (Arrhenius), from 20 C to -54 C.
         y = np.asarray(r["grease_yield_torque"])
         assert y[-1] > 10 * y[0] > 0.0, (omega, load, y[0], y[-1])
