@@ -328,7 +328,7 @@ def test_a_state_of_the_previous_version_is_refused_by_name():
     s.fmu.freeFMUState(state)
     n = 61  # values stored by version 9 (36 parameters + 25), before the CRC-32
     at = len(data) - 4 - (1 + 2 + 8 * n)
-    assert data[at] == 8 and int.from_bytes(data[at + 1:at + 3], "little") == n
+    assert data[at] == 9 and int.from_bytes(data[at + 1:at + 3], "little") == n
     # A corrupted byte (the CRC no longer matches): refused.
     flipped = bytearray(data)
     flipped[at + 100] ^= 0x40

@@ -28,9 +28,10 @@ def test_interface(model_description):
     params = [n for n in v if v[n].causality == "parameter"]
     # The 26 parameter-file keys, the band, fidelity, tolerance, the 4 envelope bounds, the
     # zero-velocity model, the 3 presliding parameters, the host inertia and the complete
-    # model's eight (model.paper, grease.*), the host coupling and the Integer mirrors of
-    # fidelity and zero_velocity.model.
-    assert len(params) == 49 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
+    # model's ten (model.paper, grease.*, grease.supply_layer_inverse and
+    # grease.upper_service_temperature among them), the host coupling and the Integer mirrors
+    # of fidelity and zero_velocity.model.
+    assert len(params) == 51 and "geometry.pin_radius" in params and "zero_velocity.speed_band" in params
     assert {"zero_velocity.model", "zero_velocity.presliding_angle", "zero_velocity.elastic_limit", "zero_velocity.damping_time",
             "zero_velocity.host_inertia", "model.paper", "grease.enabled"} <= set(params)
     assert v["zero_velocity.model"].type == "Enumeration" and int(v["zero_velocity.model"].start) == 1, "presliding by default"
