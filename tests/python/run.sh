@@ -38,5 +38,10 @@ fi
 
 export PINJOINT_FMU="$ROOT/target/fmu/PinJoint.fmu"
 export PINJOINT_RIG_FMU="$ROOT/target/fmu/PinJointRig.fmu"
-"$VENV/bin/python" -m pytest -q tests/python "$@"
+# The co-simulation masters (libcosim, Ecos, the toolbox's container) load native libraries
+# into the test process: their scenes run in a pytest process of their own, so that nothing
+# they leave behind reaches the other tests (a later fmi2SetReal segfaulted in one CI run of
+# the whole directory in one process).
+"$VENV/bin/python" -m pytest -q tests/python --ignore=tests/python/test_cosim_masters.py "$@"
+"$VENV/bin/python" -m pytest -q tests/python/test_cosim_masters.py "$@"
 cargo test --locked --release -q -p pinjoint-fmu --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse
