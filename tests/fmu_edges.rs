@@ -10,18 +10,9 @@ use common::*;
 use pinjoint::{Joint, Params, Validity};
 use proptest::prelude::*;
 
-/// An instance with debug logging on (so logEvents reach the host), `sets` applied,
-/// initialized at t = 0.
+/// An instance of the joint with debug logging on, `sets` applied, initialized at t = 0.
 fn logged(h: &Host, sets: &[(&str, f64)]) -> fmi_layer::fmi2::types::Fmi2Component {
-    use fmi_layer::fmi2::api::common::*;
-    let c = h.instantiate_with("joint", 1, &h.info.guid(), Some("file:///tmp"), true);
-    assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
-    for (n, v) in sets {
-        assert_eq!(set(c, n, *v), OK, "{n}: {}", h.last());
-    }
-    assert_eq!(fmi2EnterInitializationMode(c), OK);
-    assert_eq!(fmi2ExitInitializationMode(c), OK, "{}", h.last());
-    c
+    h.logged("joint", sets)
 }
 
 fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {

@@ -87,6 +87,19 @@ impl Host {
         self.messages().last().map(|m| m.text.clone()).unwrap_or_default()
     }
 
+    /// A Co-Simulation instance named `name` with debug logging on (so logEvents reach the
+    /// host), `sets` applied, initialized at t = 0.
+    pub fn logged(&self, name: &str, sets: &[(&str, f64)]) -> Fmi2Component {
+        let c = self.instantiate_with(name, 1, &self.info.guid(), Some("file:///tmp"), true);
+        assert_eq!(fmi2SetupExperiment(c, 0, 0.0, 0.0, 0, 0.0), OK);
+        for (n, v) in sets {
+            assert_eq!(set_in(self.info, c, n, *v), OK, "{n}: {}", self.last());
+        }
+        assert_eq!(fmi2EnterInitializationMode(c), OK);
+        assert_eq!(fmi2ExitInitializationMode(c), OK, "{}", self.last());
+        c
+    }
+
     pub fn instantiate_with(&self, name: &str, fmu_type: i32, guid: &str, resources: Option<&str>, logging_on: bool) -> Fmi2Component {
         let name = CString::new(name).unwrap();
         let guid = CString::new(guid).unwrap();
