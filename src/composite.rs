@@ -38,9 +38,9 @@
 //!   At rest T = μ_c·R·P + τ_y(T)·(2π − 2a/R)·R²·B: the grease's yield torque adds to breakaway.
 
 use crate::clearance::{clearance_and_arc_torque, clearance_torque_tabulated, yield_torque, ClearanceGeometry, PowerLawTable};
-use crate::grease::{GreaseReference, GreaseRheology as Rheology};
+use crate::rheology::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
-use crate::mixed::{JournalFilm, LoadSharing, StarvedInlet};
+use crate::load_sharing::solve::{JournalFilm, LoadSharing, StarvedInlet};
 use crate::params::{ParamError, Params};
 use std::sync::Arc;
 

@@ -170,7 +170,7 @@ fn continuous_across_the_transitions_in_load_speed_and_temperature() {
 
 /// The budget of issue 28: the largest difference is at 5 kN and 4.39 rad/s (the clearance's
 /// grease on the paper's 8.39 N·m): 3.09 % with K = 20 Pa·sⁿ, 2.99 % with 19, 2.88 % with the
-/// default K = 18 (`src/grease.rs`).
+/// default K = 18 (`src/rheology/grease.rs`).
 #[test]
 fn within_three_percent_of_the_paper_at_the_rig_conditions() {
     let complete = Joint::new(&Params::default()).unwrap();

@@ -1,13 +1,13 @@
 //! The pin joint at one operating point: friction coefficient (eq. 10), torque (eq. 11),
 //! Sommerfeld number (eq. 20), λ (eq. 21) and everything the load-sharing solve gives.
 
-use crate::asperity::AsperityGroups;
+use crate::contact::asperity::AsperityGroups;
 use crate::contact::{effective_modulus, hertz, reduced_radius};
 use crate::composite::{Complete, Parts};
-use crate::mixed::{solve_composite, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
+use crate::load_sharing::solve::{solve_composite, FilmGroups, LoadSharing, THIRD_ORDER_ACCEPT};
 use crate::params::{Lubricant, ParamError, Params};
-use crate::solve_start::{StartCut, StartTable};
-use crate::viscosity::{limiting_shear_stress, ln_roelands_from};
+use crate::load_sharing::start::{StartCut, StartTable};
+use crate::rheology::viscosity::{limiting_shear_stress, ln_roelands_from};
 use serde::Serialize;
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -160,7 +160,7 @@ pub struct OperatingPoint {
     /// Lubrication regime from the fluid and asperity load shares.
     pub regime: Regime,
     /// h_min, minimum film thickness, m: h_c times Pan & Hamrock's line-contact ratio
-    /// h_min/h_c under eq. 13's substitution ([`crate::min_film`]; an extrapolation here, 0 at
+    /// h_min/h_c under eq. 13's substitution ([`crate::film::min_film`]; an extrapolation here, 0 at
     /// rest). Extension: the paper gives no h_min relation.
     pub min_film_thickness: f64,
     /// λ_min = h_min/√(σ² + σ_b²), eq. 21 as printed (with h_min).
@@ -256,7 +256,7 @@ pub struct Joint {
     /// film groups depend on η0 and u only through η0·u, so this shift makes the table's
     /// start exact in η0; only α's change with temperature is not in it.
     start_shift: f64,
-    /// The lubricant at its temperature ([`crate::viscosity::at_temperature`]; `params.lubricant`
+    /// The lubricant at its temperature ([`crate::rheology::viscosity::at_temperature`]; `params.lubricant`
     /// itself, bit for bit, at the reference temperature).
     lub: Lubricant,
     /// ln W' at P_T = 1 N and ln(η0/(2E'R')) (mean-velocity U at u = 1 m/s) and ln G, for h_min.
@@ -265,10 +265,10 @@ pub struct Joint {
     ln_g: f64,
     /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`): what the
     /// start table's nodes are solved with (it does not depend on the temperature).
-    starved: Option<crate::mixed::StarvedInlet>,
+    starved: Option<crate::load_sharing::solve::StarvedInlet>,
     /// The inlet at the temperature: the user's starved inlet and the grease's supply layer
-    /// ([`crate::cold_supply`]) together; `starved` itself for the paper's model.
-    inlet: Option<crate::mixed::StarvedInlet>,
+    /// ([`crate::film::cold_supply`]) together; `starved` itself for the paper's model.
+    inlet: Option<crate::load_sharing::solve::StarvedInlet>,
     /// ln S (eq. 20) at P = 1 N, u = 1 m/s with η0(T_ref): ln η0(T_ref) + ln(B (R/c)²/π).
     ln_sommerfeld_reference: f64,
     /// The complete model's terms at the temperature; `None` for the paper's model
@@ -290,7 +290,7 @@ impl Joint {
                 range: "> 0 when surface.bush_rms_roughness is 0 (lambda = h/sqrt(sigma^2 + sigma_b^2))".into(),
             });
         }
-        crate::gw::warm_up();
+        crate::contact::gw::warm_up();
         let g = &params.geometry;
         let (r_red, e_eff) = (reduced_radius(g), effective_modulus(&params.materials));
         let st = &params.starvation;
@@ -315,7 +315,7 @@ impl Joint {
             ln_w_unit: (1.0 / (e_eff * r_red * g.bush_length)).ln(),
             ln_u_mean_unit: f64::NAN,
             ln_g: f64::NAN,
-            starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
+            starved: (st.inlet_layer_inverse > 0.0).then(|| crate::load_sharing::solve::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
             inlet: None,
             start: Arc::new(StartTable::empty()),
             start_film: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, reference.viscosity, reference.pressure_viscosity_coefficient),
@@ -348,7 +348,7 @@ impl Joint {
     /// α(T) by Roelands' temperature relation and the groups built from them.
     fn set_temperature_terms(&mut self) -> Result<(), ParamError> {
         let params = &self.params;
-        let lub = crate::viscosity::at_temperature(&params.lubricant);
+        let lub = crate::rheology::viscosity::at_temperature(&params.lubricant);
         if !(lub.viscosity.is_finite() && lub.viscosity > 0.0 && lub.pressure_viscosity_coefficient.is_finite()) {
             return Err(ParamError::OutOfRange {
                 name: "lubricant.temperature".into(),
@@ -393,12 +393,12 @@ impl Joint {
                 }
             }
             self.complete = Some(complete);
-            // The grease's supply layer at the temperature (crate::cold_supply), starving the
+            // The grease's supply layer at the temperature (crate::film::cold_supply), starving the
             // inlet together with the user's own layer, if any.
             let (g, st) = (&params.grease, &params.starvation);
-            let grease = crate::cold_supply::ln_layer_inverse(g.enabled, g.supply_layer_inverse, g.supply_exponent, params.lubricant.viscosity.ln(), self.ln_eta0);
+            let grease = crate::film::cold_supply::ln_layer_inverse(g.enabled, g.supply_layer_inverse, g.supply_exponent, params.lubricant.viscosity.ln(), self.ln_eta0);
             let user = self.starved.map(|s| s.ln_q);
-            self.inlet = crate::cold_supply::ln_combined(user, grease, st.exponent).map(|ln_q| crate::mixed::StarvedInlet { ln_q, gamma: st.exponent });
+            self.inlet = crate::film::cold_supply::ln_combined(user, grease, st.exponent).map(|ln_q| crate::load_sharing::solve::StarvedInlet { ln_q, gamma: st.exponent });
         }
         self.lub = lub;
         Ok(())
@@ -406,7 +406,7 @@ impl Joint {
 
     /// A node of the start table: the root at (ln P_T, ln u) from `warm`, by the same (starved
     /// or flooded) solve, with its sensitivities.
-    fn start_node(&self, ln_p: f64, ln_u: f64, warm: Option<f64>) -> crate::solve_start::Node {
+    fn start_node(&self, ln_p: f64, ln_u: f64, warm: Option<f64>) -> crate::load_sharing::start::Node {
         let asp = self.asp_unit.at_load_ratio(ln_p);
         let film = self.start_film.at_ratio(ln_p, ln_u);
         // The complete model: the composite film of the flooded joint at the reference
@@ -416,7 +416,7 @@ impl Joint {
             c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s)
         });
         let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.starved, journal.as_ref(), true);
-        crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
+        crate::load_sharing::start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
     }
 
     /// The start table's value at (ln P_T, ln u) (its rows there solved first if not yet).
@@ -426,7 +426,7 @@ impl Joint {
     }
 
     /// Where a solve at (`load`, `omega`) starts without a warm start: a function of the
-    /// operating point alone ([`crate::solve_start`]); NaN at rest.
+    /// operating point alone ([`crate::load_sharing::start`]); NaN at rest.
     pub fn cold_start(&self, load: f64, omega: f64) -> f64 {
         let u = omega.abs() * self.params.geometry.pin_radius;
         if u > 0.0 { self.table_start(load.abs().ln(), u.ln()) } else { f64::NAN }
@@ -436,17 +436,17 @@ impl Joint {
     pub fn params(&self) -> &Params {
         &self.params
     }
-    /// The lubricant at its temperature: η0 and α from [`crate::viscosity::at_temperature`]
+    /// The lubricant at its temperature: η0 and α from [`crate::rheology::viscosity::at_temperature`]
     /// (exactly `params().lubricant` at the reference temperature).
     pub fn lubricant(&self) -> &Lubricant {
         &self.lub
     }
 
     /// h_min (m) for a central film `h_c` (m) at `load` (N), `omega` (rad/s) and fluid share
-    /// `fluid_fraction` (1/γ1): [`crate::min_film`]. 0 where there is no fluid film.
+    /// `fluid_fraction` (1/γ1): [`crate::film::min_film`]. 0 where there is no fluid film.
     pub fn min_film(&self, load: f64, omega: f64, film_thickness: f64, fluid_fraction: f64) -> f64 {
         let u = omega.abs() * self.params.geometry.pin_radius;
-        let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + load.ln(), self.ln_u_mean_unit + u.ln(), self.ln_g, fluid_fraction.ln());
+        let ln_r = crate::film::min_film::ln_min_to_central(self.ln_w_unit + load.ln(), self.ln_u_mean_unit + u.ln(), self.ln_g, fluid_fraction.ln());
         film_thickness * Self::min_film_ratio(ln_r, self.journal_weight(load, omega))
     }
 
@@ -889,7 +889,7 @@ impl Joint {
             grease_yield_torque: parts.yield_torque,
         };
         // h_min (as Joint::min_film, with ln P_T and ln u already at hand).
-        let ln_r = crate::min_film::ln_min_to_central(self.ln_w_unit + lt.ln_load, self.ln_u_mean_unit + ln_u, self.ln_g, op.fluid_load_fraction.ln());
+        let ln_r = crate::film::min_film::ln_min_to_central(self.ln_w_unit + lt.ln_load, self.ln_u_mean_unit + ln_u, self.ln_g, op.fluid_load_fraction.ln());
         let h_min = op.film_thickness * Self::min_film_ratio(ln_r, parts.weight);
         let op = OperatingPoint { min_film_thickness: h_min, min_lambda_ratio: h_min / self.roughness, ..op };
         check_finite(&op)?;
@@ -950,7 +950,7 @@ enum Start<'c> {
 fn contact_friction(lt: &LoadTerms, u: f64, ln_u: f64, ln_film: f64) -> f64 {
     if u > 0.0 {
         let ln_x = lt.ln_contact_viscosity + ln_u - lt.ln_limiting_shear_stress - ln_film;
-        lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::fast_math::exp(ln_x)).exp_m1()
+        lt.limiting_shear_stress / lt.hertz.mean_pressure * -(-crate::numerics::fast_math::exp(ln_x)).exp_m1()
     } else {
         0.0
     }
@@ -1001,7 +1001,7 @@ pub struct Friction {
 /// ln K = ln K₁ + (a2 − a3) ln P, increases with ln P, so the root is unique. +∞ when it
 /// lies beyond f64 loads.
 fn asperity_capacity(s: &crate::params::Surface, unit: &AsperityGroups) -> f64 {
-    let target = crate::gw::ln_f32(-s.summit_mean_plane_offset / s.summit_height_std);
+    let target = crate::contact::gw::ln_f32(-s.summit_mean_plane_offset / s.summit_height_std);
     let g = |ln_p: f64| unit.at_load_ratio(ln_p).required_ln_f32(0.0) - target;
     let (mut lo, mut hi) = (-745.0, 709.0);
     if g(hi) < 0.0 {

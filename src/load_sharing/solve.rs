@@ -21,11 +21,11 @@
 //! relative, and μ (a smooth function of them) likewise; `tests/solver.rs` checks
 //! 1e-10 against a bisection to the last bit.
 
-use crate::asperity::{AsperityGroups, A2, A3};
-use crate::fast_math::exp;
+use crate::contact::asperity::{AsperityGroups, A2, A3};
+use crate::numerics::fast_math::exp;
 use crate::film::{ln_moes_directional, ln_moes_grad, ln_moes_grad_directional, ln_scaled_moes};
-use crate::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
-use crate::newton::{newton_increasing_seeded, Seed};
+use crate::contact::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
+use crate::numerics::newton::{newton_increasing_seeded, Seed};
 use crate::params::Surface;
 
 /// The speed-dependent film groups of eq. 12, in logarithms.
@@ -449,7 +449,7 @@ fn compress(r: f64, dr: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::newton::newton_increasing;
+    use crate::numerics::newton::newton_increasing;
 
     #[test]
     fn shares_are_exact_complements() {
