@@ -22,12 +22,12 @@
 //!   (`tests/one_answer.rs`). w is a function of the operating point only (so the load-sharing residual stays
 //!   monotone in its unknown); over the paper's rig conditions (5–60 kN, up to 4.39 rad/s,
 //!   15–25 °C) ξ ≥ 0.48, so w = 0 and the paper's load sharing is untouched there.
-//! * **Composite film** in the solve ([`crate::mixed::solve_composite`]):
+//! * **Composite film** in the solve ([`crate::load_sharing::solve::solve_composite`]):
 //!   ln h(x1) = (1 − w)·ln h_c13(x1) + w·ln h_J(x1), h_J(x1) = c·(1 − ε(S/x1)), where the line
 //!   contact's film is held inside the clearance, h_c13^−4 = h_13^−4 + c^−4 (eq. 12's
 //!   parabolic gap is a conformal contact's only while the film is small against c; in the
 //!   paper's rig conditions, h_13 ≤ 4 µm against c = 25 µm, this moves the film by less than
-//!   2e-4); the grease's supply layer ([`crate::cold_supply`]) starves the composite film.
+//!   2e-4); the grease's supply layer ([`crate::film::cold_supply`]) starves the composite film.
 //! * **Torque** (magnitude): T = T_asp + (1 − w)·T_contact,fluid + T_clearance + w·T_poiseuille,
 //!   T_asp = μ_c·x2·R·P (eq. 8), T_contact,fluid = Q_H·R (eq. 3) with the composite film,
 //!   T_clearance the shear of the lubricant in the clearance outside the contact arc

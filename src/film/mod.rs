@@ -1,5 +1,5 @@
 //! The lubricant film in the contact: Moes' central film thickness of a line contact and its
-//! load-sharing form (eqs. 12–14; [`central`], re-exported here), the minimum film h_min
+//! load-sharing form (eqs. 12–14; `central.rs`, re-exported here), the minimum film h_min
 //! ([`min_film`], an extension), the starved inlet ([`starvation`], an extension) and the
 //! grease's oil supply to the inlet ([`cold_supply`], the complete model). Plain numbers and
 //! dimensionless groups: no parameter set.
@@ -11,4 +11,4 @@ pub use central::{
 };
 pub mod min_film;
 pub mod starvation;
-pub(crate) mod cold_supply;
+pub mod cold_supply;

@@ -12,7 +12,7 @@
 //! (x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), both without cancellation, so x1 + x2 = 1 to
 //! rounding), and working in logarithms keeps F_{3/2} finite in full film.
 //!
-//! Convergence: Newton's method safeguarded by a bracket ([`crate::newton`]) stops when a
+//! Convergence: Newton's method safeguarded by a bracket (`numerics::newton`) stops when a
 //! step is below `y_tol(y) = 1e-13 + 4ε|y|`. Its first evaluation also gives r″, and when that
 //! first Newton step is at most [`THIRD_ORDER_ACCEPT`] (a start from the start table,
 //! [`crate::solve_start`], in the boundary and mixed regimes) Halley's step ends the solve
