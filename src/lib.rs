@@ -12,8 +12,10 @@
 //! (`pinjoint-fmu`), the `pinjoint` command line (`pinjoint-cli`) and the Python
 //! package build on it; nothing here depends on them.
 //!
-//! The modules, by concern (each folder one concern; each module uses only those above it,
-//! checked by `tests/module_graph.py`):
+//! The modules, by concern (each folder one concern), in dependency order: each uses only
+//! those above it, but for `params` and `rheology`, which use each other's files (the
+//! parameter checks use the grease's defaults and Roelands' temperature factor; the viscosity
+//! takes the parameter set's lubricant); `tests/module_graph.py` checks it:
 //!
 //! | group | what it holds |
 //! |---|---|
