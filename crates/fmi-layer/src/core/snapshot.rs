@@ -43,7 +43,7 @@ pub struct Snapshot {
     pub time: f64,
     /// The experiment's start time (`fmi2SetupExperiment`), in s.
     pub start_time: f64,
-    /// The model's own serialized state ([`crate::fmi2::model::Model::serialize`]).
+    /// The model's own serialized state ([`crate::core::model::Model::serialize`]).
     pub model: Vec<u8>,
 }
 
