@@ -1,6 +1,7 @@
 //! One FMU instance: life-cycle state, time, logger and the model behind the
 //! [`Model`] trait. The methods here hold the standard's rules in safe Rust; the
-//! `extern "C"` functions in [`super::api`] only convert pointers and call them.
+//! `extern "C"` functions of the shims (`fmi2::api`, `fmi3::api`) only convert pointers and
+//! call them.
 //!
 //! Errors: a method returns a [`CallError`]; the caller logs it with status
 //! `fmi2Error`. Argument errors (NULL arrays, unknown value references, a set on an

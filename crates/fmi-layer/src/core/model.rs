@@ -1,4 +1,5 @@
-//! The one trait through which a model plugs into the generic FMI 2.0 layer.
+//! The one trait through which a model plugs into the generic FMI layer, for both standards
+//! (FMI 2.0 and 3.0) and both interfaces: a model implements it once.
 //!
 //! The layer owns everything the standard prescribes (state machine, argument
 //! checks, value-reference lookup, logging, FMU state format); a model only

@@ -1,4 +1,5 @@
-//! FMU states (`fmi2GetFMUstate`) and their serialized form.
+//! FMU states (`fmi2GetFMUstate`, `fmi3GetFMUState`) and their serialized form, one for both
+//! standards.
 //!
 //! A [`Snapshot`] holds the life-cycle state, the time and the model's own
 //! serialized state. `fmi2GetFMUstate`/`fmi2SetFMUstate` go through the model's

@@ -7,7 +7,7 @@
 //! adjoint derivatives, output derivatives, Float32/8-/16-bit/unsigned/String/
 //! Binary variables) are refused with a message naming why.
 
-// The functions of each interface, as in `fmi2::api`.
+// The functions of each interface, as in the FMI 2.0 shim.
 pub mod cosim;
 pub mod fmu_state;
 pub mod model_exchange;
