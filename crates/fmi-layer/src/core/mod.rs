@@ -10,14 +10,14 @@
 //! - the instance ([`Instance`]): value checks, output range checks, value-reference lookup
 //!   ([`lookup`]), the life-cycle [`state`] machine with one mask per function, the
 //!   [`Interface`] and [`Version`] it was created for;
-//! - the FMU state ([`snapshot`], [`fmu_state`]): one snapshot type, one registry of live
+//! - the FMU state ([`snapshot`], `fmu_state`): one snapshot type, one registry of live
 //!   states, one serialized format with CRC, so a state taken through one standard is read
 //!   back through the other;
 //! - logging by category with a rate limit ([`logging`]), behind the [`HostLog`] sink each
 //!   shim implements for its host callback;
 //! - the guard every export runs through ([`guard`]: NULL and dead instances, masks, error
-//!   logging, panic containment) and the bodies the shims share ([`values`],
-//!   [`instantiate`], [`model_exchange`]);
+//!   logging, panic containment) and the bodies the shims share (`values`,
+//!   `instantiate`, `model_exchange`);
 //! - the C types both standards rename ([`types`]) and the XML writer for the attributes both
 //!   modelDescriptions share ([`xml`]).
 

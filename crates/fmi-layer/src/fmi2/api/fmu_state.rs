@@ -1,5 +1,5 @@
 //! The FMU state functions of FMI 2.0 (§2.1.8): `fmi2GetFMUstate` … `fmi2DeSerializeFMUstate`.
-//! Their bodies are the core's ([`crate::core::fmu_state`]), shared with FMI 3.0: one FMU
+//! Their bodies are the core's (`core::fmu_state`), shared with FMI 3.0: one FMU
 //! state type, one serialized format, so a state serialized through FMI 2.0 reads back
 //! through FMI 3.0 for the same model and vice versa.
 

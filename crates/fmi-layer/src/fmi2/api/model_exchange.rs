@@ -9,7 +9,7 @@
 //! refused on a Co-Simulation instance (and their masks keep them out of Co-Simulation states).
 //!
 //! The bodies of the functions with an array of continuous states or event indicators are
-//! the core's ([`crate::core::model_exchange`]), shared with FMI 3.0.
+//! the core's (`core::model_exchange`), shared with FMI 3.0.
 
 #![allow(non_snake_case)]
 

@@ -5,7 +5,7 @@
 //! `fmi3CompletedIntegratorStep` and update its discrete states in
 //! `fmi3UpdateDiscreteStates`, which never asks for another iteration or a time event. The
 //! functions are refused on a Co-Simulation instance. The bodies of the functions with an
-//! array of continuous states are the core's ([`crate::core::model_exchange`]), shared with
+//! array of continuous states are the core's (`core::model_exchange`), shared with
 //! FMI 2.0.
 
 #![allow(non_snake_case)]
