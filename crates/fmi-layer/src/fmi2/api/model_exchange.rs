@@ -1,4 +1,4 @@
-//! The Model Exchange functions (FMI 2.0 §3.2, FMI 3.0 §3.2), for models with
+//! The Model Exchange functions of FMI 2.0 (§3.2), for models with
 //! `ModelInfo::model_exchange`: the host's integrator owns the model's continuous states
 //! (`ModelInfo::continuous_states`, possibly none) and sets them with
 //! `fmi2SetContinuousStates`; the outputs and state derivatives are recomputed from states,
@@ -42,6 +42,7 @@ guarded! {
     /// `fmi2EnterEventMode` (FMI 2.0 §3.2.2): Model Exchange, to event mode; `fmi2Error` on a
     /// Co-Simulation instance.
     fn fmi2EnterEventMode(c: Fmi2Component) -> Fmi2StatusC: ENTER_EVENT_MODE => Instance::enter_event_mode;
+
     /// `fmi2NewDiscreteStates` (FMI 2.0 §3.2.2): the event iteration. Checks the outputs at
     /// the current inputs (a model failure is `fmi2Error`), lets the model update its discrete
     /// states ([`Instance::update_discrete_states`]), then writes an `fmi2EventInfo`:
@@ -67,9 +68,11 @@ guarded! {
         // SAFETY: non-NULL and writable per the contract.
         unsafe { write_out(eventInfo.cast::<Fmi2EventInfo>(), none, "eventInfo") }
     };
+
     /// `fmi2EnterContinuousTimeMode` (FMI 2.0 §3.2.2): Model Exchange, from event mode to
     /// continuous-time mode; `fmi2Error` on a Co-Simulation instance.
     fn fmi2EnterContinuousTimeMode(c: Fmi2Component) -> Fmi2StatusC: ENTER_CONTINUOUS_TIME_MODE => Instance::enter_continuous_time_mode;
+
     /// `fmi2CompletedIntegratorStep` (FMI 2.0 §3.2.2): checks the outputs at the current
     /// inputs (a model failure is `fmi2Error`); `enterEventMode` is the model's step event
     /// ([`Instance::completed_integrator_step`]), `terminateSimulation` `fmi2False`.
@@ -95,10 +98,12 @@ guarded! {
         }
         Ok(Status::Ok)
     };
+
     /// `fmi2SetTime` (FMI 2.0 §3.2.1): Model Exchange, records the host's solver time `time`
     /// in s (the model's outputs and derivatives do not depend on time explicitly); `fmi2Error` for a non-finite time or on a
     /// Co-Simulation instance.
     fn fmi2SetTime(c: Fmi2Component, time: Fmi2Real) -> Fmi2StatusC: SET_TIME => |inst| inst.set_time(time);
+
     /// `fmi2SetContinuousStates` (FMI 2.0 §3.2.1): the host's state vector `x[0..nx]`
     /// (`nx` must be the number of continuous states, in the order of `<Derivatives>`). Every
     /// value is checked by the model before any is stored, so `fmi2Error` changes nothing; the
@@ -108,6 +113,7 @@ guarded! {
     /// `x` points to `nx` values.
     unsafe fn fmi2SetContinuousStates(c: Fmi2Component, x: *const Fmi2Real, nx: usize) -> Fmi2StatusC: SET_CONTINUOUS_STATES =>
         |inst| unsafe { set_states(inst, "nx", "x[]", x, nx) };
+
     /// `fmi2GetDerivatives` (FMI 2.0 §3.2.2): the derivatives of the continuous states at the
     /// current time, states and inputs (`nx` must be the number of states); a model failure
     /// computing them is `fmi2Error`.
@@ -116,9 +122,11 @@ guarded! {
     /// `derivatives` points to `nx` writable values.
     unsafe fn fmi2GetDerivatives(c: Fmi2Component, derivatives: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_DERIVATIVES =>
         |inst| unsafe { get_states(inst, "nx", "derivatives[]", derivatives, nx, Instance::get_derivatives) };
+
     /// `fmi2GetEventIndicators` (FMI 2.0 §3.2.2): this FMU has no event indicators, so `ni`
     /// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
     fn fmi2GetEventIndicators(c: Fmi2Component, _eventIndicators: *mut Fmi2Real, ni: usize) -> Fmi2StatusC: GET_DERIVATIVES => none("ni", ni);
+
     /// `fmi2GetContinuousStates` (FMI 2.0 §3.2.2): the current state vector (`nx` must be the
     /// number of states).
     ///
@@ -126,6 +134,7 @@ guarded! {
     /// `x` points to `nx` writable values.
     unsafe fn fmi2GetContinuousStates(c: Fmi2Component, x: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_CONTINUOUS_STATES =>
         |inst| unsafe { get_states(inst, "nx", "x[]", x, nx, |i: &mut Instance, o: &mut [f64]| i.get_continuous_states(o)) };
+
     /// `fmi2GetNominalsOfContinuousStates` (FMI 2.0 §3.2.2): each state's declared `nominal`,
     /// or 1.0 (`nx` must be the number of states).
     ///

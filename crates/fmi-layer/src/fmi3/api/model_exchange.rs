@@ -108,22 +108,26 @@ guarded! {
     /// `values` points to `n` values.
     unsafe fn fmi3SetContinuousStates(instance: Fmi3Instance, values: *const f64, n: usize) -> Fmi3StatusC: SET_CONTINUOUS_STATES =>
         |inst| unsafe { set_states(inst, "nContinuousStates", "continuousStates[]", values, n) };
+
     /// `fmi3GetContinuousStateDerivatives` (FMI 3.0 §3.2): as `fmi2GetDerivatives`.
     ///
     /// # Safety
     /// `values` points to `n` writable values.
     unsafe fn fmi3GetContinuousStateDerivatives(instance: Fmi3Instance, values: *mut f64, n: usize) -> Fmi3StatusC: GET_DERIVATIVES =>
         |inst| unsafe { get_states(inst, "nContinuousStates", "derivatives[]", values, n, Instance::get_derivatives) };
+
     /// `fmi3GetEventIndicators` (FMI 3.0, Model Exchange): this FMU has no event indicators,
     /// so `nEventIndicators` must be 0 (then `fmi3OK`, nothing written); `fmi3Error` otherwise
     /// or on a Co-Simulation instance.
     fn fmi3GetEventIndicators(instance: Fmi3Instance, _values: *mut f64, n: usize) -> Fmi3StatusC: GET_DERIVATIVES => none("nEventIndicators", n);
+
     /// `fmi3GetContinuousStates` (FMI 3.0 §3.2): as `fmi2GetContinuousStates`.
     ///
     /// # Safety
     /// `values` points to `n` writable values.
     unsafe fn fmi3GetContinuousStates(instance: Fmi3Instance, values: *mut f64, n: usize) -> Fmi3StatusC: GET_CONTINUOUS_STATES =>
         |inst| unsafe { get_states(inst, "nContinuousStates", "continuousStates[]", values, n, |i: &mut Instance, o: &mut [f64]| i.get_continuous_states(o)) };
+
     /// `fmi3GetNominalsOfContinuousStates` (FMI 3.0 §3.2): as
     /// `fmi2GetNominalsOfContinuousStates`.
     ///
