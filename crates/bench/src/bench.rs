@@ -1,5 +1,5 @@
 //! `pinjoint-bench --output DIR`: the work-precision report of issue 6, measured in one run on
-//! this machine: `DIR/BENCHMARKS.md` with SVG plots beside it.
+//! this machine: `DIR/BENCHMARKS.md`, its SVG plots in `DIR/benches/results/`.
 
 use super::bench_eval::{self, EvalResult};
 use super::bench_calibrate;
@@ -17,7 +17,7 @@ use std::time::Instant;
 #[derive(Parser, Debug)]
 #[command(
     about = "Measure speed against error (per evaluation, per rig cycle run, per FMU step) into DIR/BENCHMARKS.md",
-    long_about = "Measure, in one run on this machine, and write DIR/BENCHMARKS.md with SVG plots beside it:\n  \
+    long_about = "Measure, in one run on this machine, and write DIR/BENCHMARKS.md with its SVG plots in DIR/benches/results/:\n  \
 per evaluation: ns against the largest relative error in μ and torque for full (cold, warm), table at \
 several tolerances and boundary, over two envelopes spanning the regimes;\n  \
 per cycle simulation: wall time of 10 strokes of the 1 Hz rig at 20 kN against the torque error versus a \
@@ -37,7 +37,7 @@ Timings are never asserted; the machine's load shows in them (fastest and median
 Examples:\n  pinjoint-bench --output .\n  pinjoint-bench --output /tmp/b --quick"
 )]
 pub struct BenchCmd {
-    /// Output directory (BENCHMARKS.md and bench_*.svg)
+    /// Output directory (BENCHMARKS.md; its plots bench_*.svg in DIR/benches/results)
     #[arg(long, value_name = "DIR")]
     pub output: PathBuf,
     /// A few cases, few repetitions: every file, no meaningful figures (for a smoke test)
