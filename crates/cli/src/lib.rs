@@ -30,6 +30,8 @@ pub mod output;
 pub mod columnar;
 pub mod fidelity_args;
 pub mod curves;
+pub mod rig_run;
+pub mod rig_plots;
 // The subcommands:
 pub mod commands;
 

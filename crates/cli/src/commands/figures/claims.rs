@@ -7,11 +7,11 @@
 //! data are marked as such, and so are effects the model leaves out.
 
 use crate::common::{readable, RAD_S_PER_RPM};
-use crate::commands::cycle::simulation::stroke_average;
 use crate::error::Result;
 use crate::numbers::{nm, pct, sig};
 use super::rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
+use pinjoint::rig::stroke_average;
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::TAU;
 
@@ -126,7 +126,7 @@ fn monotone(joint: &Joint, load: f64, up: bool, q: impl Fn(&OperatingPoint) -> f
 /// The core's eq. 11 stroke average (μ over a sine stroke of ±`amplitude` at `f`) at every
 /// paper load and frequency: `[frequency][load]`.
 pub fn stroke_table(joint: &Joint, amplitude: f64) -> Result<Vec<Vec<f64>>> {
-    PAPER_FREQUENCIES.iter().map(|&f| PAPER_LOADS.iter().map(|&p| stroke_average(joint, p, f, amplitude)).collect()).collect()
+    PAPER_FREQUENCIES.iter().map(|&f| PAPER_LOADS.iter().map(|&p| Ok(stroke_average(joint, p, f, amplitude)?)).collect()).collect()
 }
 
 fn kn(p: f64) -> String {
@@ -590,7 +590,7 @@ pub fn html(claims: &[Claim], escape: impl Fn(&str) -> String) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::commands::figures::plots::CoreCurves;
+    use super::super::plots::CoreCurves;
 
     fn joint() -> Joint {
         Joint::new(&Params::paper()).unwrap()
