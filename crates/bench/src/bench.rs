@@ -7,8 +7,8 @@ use super::bench_batch;
 use super::bench_report::{write_calibration_only, write_report, FmuSection, Report};
 use super::bench_rig::{self, RigResult};
 use super::bench_throughput;
-use pinjoint_cli::error::{CliError, Result};
-use pinjoint_cli::output::{output_dir, report_written};
+use super::bench_error::{BenchError, Result};
+use super::bench_output::{output_dir, report_written};
 use clap::Parser;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -114,7 +114,7 @@ fn fmu_section(cmd: &BenchCmd) -> FmuSection {
 pub fn run(cmd: &BenchCmd) -> Result<()> {
     let started = Instant::now();
     let dir = output_dir(&cmd.output)?;
-    let work = tempfile::tempdir().map_err(|source| CliError::Write { path: std::env::temp_dir(), source })?;
+    let work = tempfile::tempdir().map_err(|source| BenchError::Write { path: std::env::temp_dir(), source })?;
     if cmd.only_calibration {
         let calibration = bench_calibrate::measure(cmd.quick, work.path(), &progress);
         let path = write_calibration_only(&dir, &calibration, cmd.quick, started.elapsed().as_secs_f64())?;
@@ -139,7 +139,7 @@ pub fn run(cmd: &BenchCmd) -> Result<()> {
     let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, calibration, batch, seconds: started.elapsed().as_secs_f64() };
     let paths = write_report(&dir, &report)?;
     if paths.is_empty() {
-        return Err(CliError::Invalid("bench: nothing written".into()));
+        return Err(BenchError::Invalid("bench: nothing written".into()));
     }
     report_written(&paths)
 }

@@ -6,10 +6,10 @@ use super::bench_rig::{RigResult, CYCLES};
 use super::bench_error::ThroughputError;
 use super::bench_calibrate::{CalibrationBench, INERTIA, LOAD, MU_C, RATE};
 use super::bench_throughput::Throughput;
-use pinjoint_cli::error::Result;
-use pinjoint_cli::output::{output_dir, write_text};
+use super::bench_error::Result;
+use super::bench_output::{output_dir, write_text};
 use pinjoint::fidelity::FULL_ERROR_BOUND;
-use pinjoint_cli::plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
+use pinjoint_plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -376,7 +376,7 @@ pub fn write_calibration_only(
     writeln!(md).unwrap();
     md.push_str(&body);
     let path = dir.join("BENCHMARKS_calibration.md");
-    write_text(&path, &[], &md)?;
+    write_text(&path, &md)?;
     Ok(path)
 }
 
@@ -399,7 +399,7 @@ pub fn write_batch_only(dir: &Path, b: &crate::bench_batch::BatchBench, quick: b
         (Some(a), Some(z)) if z > a => format!("{}{BEGIN}\n{body}{note}{END}{}", &old[..a], &old[z + END.len()..]),
         _ => format!("{old}{}{BEGIN}\n{body}{note}{END}\n", if old.is_empty() || old.ends_with("\n\n") { "" } else { "\n" }),
     };
-    write_text(&path, &[], &text)?;
+    write_text(&path, &text)?;
     Ok(path)
 }
 
@@ -619,9 +619,9 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     writeln!(md, "{}\n{batch_body}{}", crate::bench_batch::BEGIN, crate::bench_batch::END).unwrap();
     let results = output_dir(&dir.join(RESULTS))?;
     let paths = vec![dir.join("BENCHMARKS.md"), results.join("bench_evaluation.svg"), results.join("bench_rig.svg")];
-    write_text(&paths[1], &[], &eval_svg(r)?)?;
-    write_text(&paths[2], &[], &rig_svg(r)?)?;
-    write_text(&paths[0], &[], &md)?;
+    write_text(&paths[1], &eval_svg(r)?)?;
+    write_text(&paths[2], &rig_svg(r)?)?;
+    write_text(&paths[0], &md)?;
     Ok(paths)
 }
 

@@ -23,7 +23,8 @@
 // Shared pieces:
 pub mod exact;
 pub mod numbers;
-pub mod plot;
+/// SVG charts: the crate `pinjoint-plot` (axes, line charts, heat maps).
+pub use pinjoint_plot as plot;
 pub mod error;
 pub mod common;
 pub mod output;
