@@ -7,7 +7,7 @@
 //! - [`error`]: [`PlotError`], what plotters reports, as text;
 //! - [`axis`]: the axes ([`Axis`], linear or log, fitted or fixed), their ticks and labels,
 //!   and the chart frame both kinds of plot are drawn in;
-//! - [`line`]: [`line_plot`], one chart of several series with shaded x-ranges ([`Band`]) and
+//! - [`line`](mod@line): [`line_plot`], one chart of several series with shaded x-ranges ([`Band`]) and
 //!   markers, and [`stacked_plot`], several charts one above the other;
 //! - [`heat`]: [`heat_map`], a value over a grid of (x, y) with a colour bar, contour lines and
 //!   outlined rectangles ([`Region`]) such as an operating region.
