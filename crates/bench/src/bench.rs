@@ -1,5 +1,5 @@
 //! `pinjoint-bench --output DIR`: the work-precision report of issue 6, measured in one run on
-//! this machine: `DIR/BENCHMARKS.md` with SVG plots beside it.
+//! this machine: `DIR/BENCHMARKS.md`, its SVG plots in `DIR/benches/results/`.
 
 use super::bench_eval::{self, EvalResult};
 use super::bench_calibrate;
@@ -7,8 +7,8 @@ use super::bench_batch;
 use super::bench_report::{write_calibration_only, write_report, FmuSection, Report};
 use super::bench_rig::{self, RigResult};
 use super::bench_throughput;
-use pinjoint_cli::error::{CliError, Result};
-use pinjoint_cli::output::{output_dir, report_written};
+use super::bench_error::{BenchError, Result};
+use super::bench_output::{output_dir, report_written};
 use clap::Parser;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -17,7 +17,7 @@ use std::time::Instant;
 #[derive(Parser, Debug)]
 #[command(
     about = "Measure speed against error (per evaluation, per rig cycle run, per FMU step) into DIR/BENCHMARKS.md",
-    long_about = "Measure, in one run on this machine, and write DIR/BENCHMARKS.md with SVG plots beside it:\n  \
+    long_about = "Measure, in one run on this machine, and write DIR/BENCHMARKS.md with its SVG plots in DIR/benches/results/:\n  \
 per evaluation: ns against the largest relative error in μ and torque for full (cold, warm), table at \
 several tolerances and boundary, over two envelopes spanning the regimes;\n  \
 per cycle simulation: wall time of 10 strokes of the 1 Hz rig at 20 kN against the torque error versus a \
@@ -37,7 +37,7 @@ Timings are never asserted; the machine's load shows in them (fastest and median
 Examples:\n  pinjoint-bench --output .\n  pinjoint-bench --output /tmp/b --quick"
 )]
 pub struct BenchCmd {
-    /// Output directory (BENCHMARKS.md and bench_*.svg)
+    /// Output directory (BENCHMARKS.md; its plots bench_*.svg in DIR/benches/results)
     #[arg(long, value_name = "DIR")]
     pub output: PathBuf,
     /// A few cases, few repetitions: every file, no meaningful figures (for a smoke test)
@@ -114,7 +114,7 @@ fn fmu_section(cmd: &BenchCmd) -> FmuSection {
 pub fn run(cmd: &BenchCmd) -> Result<()> {
     let started = Instant::now();
     let dir = output_dir(&cmd.output)?;
-    let work = tempfile::tempdir().map_err(|source| CliError::Write { path: std::env::temp_dir(), source })?;
+    let work = tempfile::tempdir().map_err(|source| BenchError::Write { path: std::env::temp_dir(), source })?;
     if cmd.only_calibration {
         let calibration = bench_calibrate::measure(cmd.quick, work.path(), &progress);
         let path = write_calibration_only(&dir, &calibration, cmd.quick, started.elapsed().as_secs_f64())?;
@@ -139,7 +139,7 @@ pub fn run(cmd: &BenchCmd) -> Result<()> {
     let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, calibration, batch, seconds: started.elapsed().as_secs_f64() };
     let paths = write_report(&dir, &report)?;
     if paths.is_empty() {
-        return Err(CliError::Invalid("bench: nothing written".into()));
+        return Err(BenchError::Invalid("bench: nothing written".into()));
     }
     report_written(&paths)
 }

@@ -6,10 +6,10 @@ use super::bench_rig::{RigResult, CYCLES};
 use super::bench_error::ThroughputError;
 use super::bench_calibrate::{CalibrationBench, INERTIA, LOAD, MU_C, RATE};
 use super::bench_throughput::Throughput;
-use pinjoint_cli::error::Result;
-use pinjoint_cli::output::write_text;
+use super::bench_error::Result;
+use super::bench_output::{output_dir, write_text};
 use pinjoint::fidelity::FULL_ERROR_BOUND;
-use pinjoint_cli::plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
+use pinjoint_plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
@@ -101,7 +101,7 @@ fn rig_svg(r: &Report) -> Result<String> {
 }
 
 fn eval_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
-    writeln!(md, "## Per evaluation\n\n![work-precision per evaluation](bench_evaluation.svg)\n").unwrap();
+    writeln!(md, "## Per evaluation\n\n![work-precision per evaluation]({RESULTS}/bench_evaluation.svg)\n").unwrap();
     writeln!(md, "| model | envelope | level | ns / evaluation (median) | max rel. error μ | max rel. error torque | advertised bound | table cells (P × ω), size, build |").unwrap();
     writeln!(md, "|---|---|---|---:|---:|---:|---:|---|").unwrap();
     for x in &r.eval {
@@ -154,7 +154,7 @@ fn eval_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
 }
 
 fn rig_section(r: &Report, md: &mut String) -> String {
-    writeln!(md, "## Per cycle simulation\n\n![rig work-precision](bench_rig.svg)\n").unwrap();
+    writeln!(md, "## Per cycle simulation\n\n![rig work-precision]({RESULTS}/bench_rig.svg)\n").unwrap();
     writeln!(md, "| case | wall ms (fastest) | wall ms (median) | torque error | eq. 11 average error | steps | evaluations | friction solves | table build ms | fallbacks |").unwrap();
     writeln!(md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|").unwrap();
     for x in &r.rig {
@@ -376,7 +376,7 @@ pub fn write_calibration_only(
     writeln!(md).unwrap();
     md.push_str(&body);
     let path = dir.join("BENCHMARKS_calibration.md");
-    write_text(&path, &[], &md)?;
+    write_text(&path, &md)?;
     Ok(path)
 }
 
@@ -399,7 +399,7 @@ pub fn write_batch_only(dir: &Path, b: &crate::bench_batch::BatchBench, quick: b
         (Some(a), Some(z)) if z > a => format!("{}{BEGIN}\n{body}{note}{END}{}", &old[..a], &old[z + END.len()..]),
         _ => format!("{old}{}{BEGIN}\n{body}{note}{END}\n", if old.is_empty() || old.ends_with("\n\n") { "" } else { "\n" }),
     };
-    write_text(&path, &[], &text)?;
+    write_text(&path, &text)?;
     Ok(path)
 }
 
@@ -550,7 +550,13 @@ fn throughput_section(r: &Report, md: &mut String) -> Vec<(String, String)> {
     rows
 }
 
-/// Write `BENCHMARKS.md`, `bench_evaluation.svg` and `bench_rig.svg` into `dir`.
+/// Where the report's pictures go, relative to its directory (and how BENCHMARKS.md links them):
+/// the generated files stay out of the repository's root, beside the callgrind profiles
+/// (`benches/callgrind.sh`).
+pub const RESULTS: &str = "benches/results";
+
+/// Write `BENCHMARKS.md` into `dir`, `bench_evaluation.svg` and `bench_rig.svg` into
+/// `dir/`[`RESULTS`].
 pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     let mut md = String::new();
     writeln!(md, "# Benchmarks: speed against error\n").unwrap();
@@ -611,10 +617,11 @@ pub fn write_report(dir: &Path, r: &Report) -> Result<Vec<PathBuf>> {
     writeln!(md).unwrap();
     md.push_str(&body);
     writeln!(md, "{}\n{batch_body}{}", crate::bench_batch::BEGIN, crate::bench_batch::END).unwrap();
-    let paths = vec![dir.join("BENCHMARKS.md"), dir.join("bench_evaluation.svg"), dir.join("bench_rig.svg")];
-    write_text(&paths[1], &[], &eval_svg(r)?)?;
-    write_text(&paths[2], &[], &rig_svg(r)?)?;
-    write_text(&paths[0], &[], &md)?;
+    let results = output_dir(&dir.join(RESULTS))?;
+    let paths = vec![dir.join("BENCHMARKS.md"), results.join("bench_evaluation.svg"), results.join("bench_rig.svg")];
+    write_text(&paths[1], &eval_svg(r)?)?;
+    write_text(&paths[2], &rig_svg(r)?)?;
+    write_text(&paths[0], &md)?;
     Ok(paths)
 }
 
