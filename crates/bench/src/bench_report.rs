@@ -288,8 +288,8 @@ fn parquet_floor(t: &crate::bench_throughput::Throughput) -> String {
         ". CPU time (user + system, fastest repeats' processes): Parquet {pq:.3} s, CSV {csv:.3} s; the median of the repeats' CPU \
          ratios {:.3} ×. The floor both share: the rows' evaluation at boundary fidelity with every output column {:.3} s and \
          the input's two numbers parsed twice (the envelope's pass, then the sweep's) at least 2 × {:.3} s, on one thread in \
-         process: {shared:.3} s = {:.2} × the CSV sweep's CPU, so with a free writer the Parquet sweep would still be ≥ {:.2} × \
-         the CSV one; the CSV's own formatting and writing is the other {:.3} s",
+         process (CPU time): {shared:.3} s = {:.2} × the CSV sweep's CPU, so with a writer that cost nothing the Parquet sweep's \
+         CPU would still be ≥ {:.2} × the CSV one's; the CSV's own formatting and writing is at most the other {:.3} s",
         t.parquet_cpu_ratio,
         f.evaluate,
         f.parse,
