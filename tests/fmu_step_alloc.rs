@@ -108,7 +108,8 @@ fn instance(h: &Host, fidelity: i32, sets: &[(&str, f64)]) -> Fmi2Component {
 fn a_running_step_allocates_nothing() {
     let _g = SERIAL.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let env = [("envelope.load_min", 15e3), ("envelope.load_max", 25e3), ("envelope.speed_min", 1e-3), ("envelope.speed_max", 6.0)];
-    let cases: [(&str, i32, &[(&str, f64)], bool); 6] = [
+    type Case<'a> = (&'a str, i32, &'a [(&'a str, f64)], bool);
+    let cases: [Case; 6] = [
         ("full", 0, &[], false),
         ("table", 1, &env, false),
         ("boundary", 2, &env, false),
