@@ -104,11 +104,44 @@ fn fmu_section(cmd: &BenchCmd) -> FmuSection {
         Ok(o) if !o.status.success() => {
             FmuSection::Unavailable(format!("{} failed: {}", script.display(), String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("")))
         }
-        Ok(o) => match serde_json::from_slice(&o.stdout) {
-            Ok(v) => FmuSection::Measured(v),
+        Ok(o) => match serde_json::from_slice::<serde_json::Value>(&o.stdout) {
+            Ok(mut v) => {
+                let steps: usize = steps.parse().unwrap_or(20_000);
+                v["solve_ns"] = serde_json::json!(solve_floor_ns(steps, v["step_size"].as_f64().unwrap_or(1e-3)));
+                FmuSection::Measured(v)
+            }
             Err(e) => FmuSection::Unavailable(format!("unreadable output of {}: {e}", script.display())),
         },
     }
+}
+
+/// The complete solve a full-fidelity PinJoint step makes, in this process on one thread: ns
+/// per step, the fastest of 7 passes over the fmpy loop's inputs (benches/fmu_step.py: the
+/// 1 Hz ±40° stroke at 20 kN ± 10 %, `steps` steps of `h` s from t = 0), each a cold
+/// [`pinjoint::Joint::evaluate`] at the FMU's default parameters, as the FMU evaluates (cold
+/// every step, so that its outputs are a function of its inputs). The FMU step can cost no
+/// less than the pass-through's plus this.
+fn solve_floor_ns(steps: usize, h: f64) -> f64 {
+    use std::f64::consts::PI;
+    let Ok(joint) = pinjoint::Joint::new(&pinjoint::Params::default()) else { return f64::NAN };
+    let a = 40f64.to_radians();
+    let inputs: Vec<(f64, f64)> = (0..steps)
+        .map(|k| {
+            let t = k as f64 * h;
+            (20e3 * (1.0 + 0.1 * (0.3 * t).sin()), a * 2.0 * PI * (2.0 * PI * t).cos())
+        })
+        .collect();
+    (0..7)
+        .map(|_| {
+            let t0 = Instant::now();
+            let mut acc = 0.0;
+            for &(p, w) in &inputs {
+                acc += joint.evaluate(std::hint::black_box(p), std::hint::black_box(w)).map_or(f64::NAN, |o| o.torque);
+            }
+            std::hint::black_box(acc);
+            t0.elapsed().as_secs_f64() * 1e9 / steps as f64
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 pub fn run(cmd: &BenchCmd) -> Result<()> {
