@@ -413,7 +413,7 @@ impl Joint {
         // temperature (S with η0(T_ref)), so that the table starts the journal's region too.
         let journal = self.complete.as_ref().and_then(|c| {
             let ln_s = self.ln_sommerfeld_reference + ln_u - ln_p;
-            c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s)
+            c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s, ln_p, self.starved)
         });
         let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.starved, journal.as_ref(), true);
         crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
@@ -483,12 +483,15 @@ impl Joint {
         }
     }
 
-    /// The grease's yield torque at rest τ_y(T)·(2π − 2a/R)·R²·B (N·m) under `load` (N): what
-    /// the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
+    /// The grease's yield torque at rest τ_y(T)·2π·R²·B (N·m) under `load` (N), the same at
+    /// every load ([`crate::composite`]): what the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
     /// and for the paper's model.
     pub fn rest_yield_torque(&self, load: f64) -> f64 {
         match &self.complete {
-            Some(c) => c.yield_torque(0.0, self.hertz_unit.half_width * load.abs().sqrt()),
+            Some(c) => {
+                let _ = load;
+                c.yield_torque()
+            }
             None => 0.0,
         }
     }
@@ -496,7 +499,7 @@ impl Joint {
     /// The grease's yield torque at rest as a function of the load ([`Joint::rest_yield_torque`],
     /// for the fidelity levels' rest state).
     pub fn rest_yield(&self) -> crate::composite::RestYield {
-        crate::composite::RestYield::new(self.complete.as_ref(), self.hertz_unit.half_width)
+        crate::composite::RestYield::new(self.complete.as_ref())
     }
 
     /// The complete model's outputs that follow from the operating point and its film `film`
@@ -518,7 +521,7 @@ impl Joint {
                 } else {
                     0.0
                 };
-                (c.clearance_and_arc(w, a, u, film, line).0, w, eps, c.yield_torque(w, a))
+                (c.clearance_and_arc(a, u, film, line).0, w, eps, c.yield_torque())
             }
             None => (0.0, 0.0, eps, 0.0),
         }
@@ -722,7 +725,7 @@ impl Joint {
     /// The load-sharing solve and μ (eqs. 3, 8, 10) at the load of `lt` and speed u = |ω|R:
     /// (ln u, the solve, μ_fluid, μ_asperity, the complete model's parts). `omega` must be
     /// finite. μ_fluid is the lubricant's part of μ: Q_H/P_T (eq. 3) for the paper's model;
-    /// for the complete model ((1 − w)·Q_H·R + T_clearance + w·T_poiseuille)/(R·P)
+    /// for the complete model ((1 − w)·Q_H·R + T_clearance + T_poiseuille)/(R·P)
     /// ([`crate::composite`]), so that μ = μ_fluid + μ_asperity = T/(R·P) either way.
     fn solve_at(&self, lt: &LoadTerms, omega: f64, start: Start, sensitivities: bool) -> (f64, LoadSharing, f64, f64, Parts) {
         let p = &self.params;
@@ -737,7 +740,7 @@ impl Joint {
             }
             _ => (0.0, f64::NEG_INFINITY),
         };
-        let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s));
+        let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s, lt.ln_load, self.inlet));
         let guess = match start {
             Start::From(guess) if u > 0.0 => Some(self.start_from(guess, lt.ln_load, ln_u)),
             Start::From(guess) => guess,
@@ -765,7 +768,7 @@ impl Joint {
                 // Joint::clearance_outputs has it (the same bits on every path).
                 let line_of_film = (1.0 - weight) * contact_friction(lt, u, ln_u, ls.film_thickness.ln()) * rp;
                 let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u, line_of_film);
-                let mu_fluid = (line + parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
+                let mu_fluid = (line + parts.clearance_torque + parts.poiseuille_torque) / rp;
                 (ln_u, ls, mu_fluid, mu_asperity, parts)
             }
         }
