@@ -113,7 +113,7 @@ impl Joint {
     /// The load-sharing solve and μ (eqs. 3, 8, 10) at the load of `lt` and speed u = |ω|R:
     /// (ln u, the solve, μ_fluid, μ_asperity, the complete model's parts). `omega` must be
     /// finite. μ_fluid is the lubricant's part of μ: Q_H/P_T (eq. 3) for the paper's model;
-    /// for the complete model ((1 − w)·Q_H·R + T_clearance + w·T_poiseuille)/(R·P)
+    /// for the complete model ((1 − w)·Q_H·R + T_clearance + T_poiseuille)/(R·P)
     /// ([`crate::composite`]), so that μ = μ_fluid + μ_asperity = T/(R·P) either way.
     fn solve_at(&self, lt: &LoadTerms, omega: f64, start: Start, sensitivities: bool) -> (f64, LoadSharing, f64, f64, Parts) {
         let p = &self.params;
@@ -128,7 +128,7 @@ impl Joint {
             }
             _ => (0.0, f64::NEG_INFINITY),
         };
-        let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s));
+        let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s, lt.ln_load, self.inlet));
         let guess = match start {
             Start::From(guess) if u > 0.0 => Some(self.start_from(guess, lt.ln_load, ln_u)),
             Start::From(guess) => guess,
@@ -156,7 +156,7 @@ impl Joint {
                 // Joint::clearance_outputs has it (the same bits on every path).
                 let line_of_film = (1.0 - weight) * contact_friction(lt, u, ln_u, ls.film_thickness.ln()) * rp;
                 let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u, line_of_film);
-                let mu_fluid = (line + parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
+                let mu_fluid = (line + parts.clearance_torque + parts.poiseuille_torque) / rp;
                 (ln_u, ls, mu_fluid, mu_asperity, parts)
             }
         }

@@ -205,7 +205,7 @@ impl Joint {
         // temperature (S with η0(T_ref)), so that the table starts the journal's region too.
         let journal = self.complete.as_ref().and_then(|c| {
             let ln_s = self.ln_sommerfeld_reference + ln_u - ln_p;
-            c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s)
+            c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s, ln_p, self.starved)
         });
         let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.starved, journal.as_ref(), true);
         crate::load_sharing::start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }

@@ -42,12 +42,15 @@ impl Joint {
         }
     }
 
-    /// The grease's yield torque at rest τ_y(T)·(2π − 2a/R)·R²·B (N·m) under `load` (N): what
-    /// the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
+    /// The grease's yield torque at rest τ_y(T)·2π·R²·B (N·m) under `load` (N), the same at
+    /// every load ([`crate::composite`]): what the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
     /// and for the paper's model.
     pub fn rest_yield_torque(&self, load: f64) -> f64 {
         match &self.complete {
-            Some(c) => c.yield_torque(0.0, self.hertz_unit.half_width * load.abs().sqrt()),
+            Some(c) => {
+                let _ = load;
+                c.yield_torque()
+            }
             None => 0.0,
         }
     }
@@ -55,7 +58,7 @@ impl Joint {
     /// The grease's yield torque at rest as a function of the load ([`Joint::rest_yield_torque`],
     /// for the fidelity levels' rest state).
     pub fn rest_yield(&self) -> crate::composite::RestYield {
-        crate::composite::RestYield::new(self.complete.as_ref(), self.hertz_unit.half_width)
+        crate::composite::RestYield::new(self.complete.as_ref())
     }
 
     /// The complete model's outputs that follow from the operating point and its film `film`
@@ -77,7 +80,7 @@ impl Joint {
                 } else {
                     0.0
                 };
-                (c.clearance_and_arc(w, a, u, film, line).0, w, eps, c.yield_torque(w, a))
+                (c.clearance_and_arc(a, u, film, line).0, w, eps, c.yield_torque())
             }
             None => (0.0, 0.0, eps, 0.0),
         }

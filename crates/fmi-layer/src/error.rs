@@ -9,8 +9,8 @@
 //!   well-formed byte stream: what was being read and where.
 //! - [`XmlError`]: a model table from which no valid modelDescription.xml can be written.
 
-use crate::fmi2::interface::Interface;
-use crate::fmi2::model::ModelError;
+use crate::core::interface::Interface;
+use crate::core::model::ModelError;
 use crate::fmt::Num;
 use std::ffi::c_int;
 use std::fmt;
@@ -84,7 +84,7 @@ impl fmt::Display for StatusKindName {
 
 /// Why an FMI call failed; logged as `<function>: <message>` with status `fmi2Error`
 /// (`fmi3Error`). Argument errors leave the instance as it was; a [`CallError::Model`] from
-/// initialization or a step moves it to the `error` state (see the instance module, `fmi2::instance`).
+/// initialization or a step moves it to the `error` state (see the instance module, `core::instance`).
 #[derive(Debug, thiserror::Error)]
 pub enum CallError {
     /// An instantiation without an instance name.
@@ -479,7 +479,7 @@ pub enum StateFormatError {
 }
 
 /// A model's part of a serialized FMU state that is not well formed is the model's error
-/// (what the model's `deserialize` returns when a read of the layer's byte reader (`fmi2::bytes`) fails).
+/// (what the model's `deserialize` returns when a read of the layer's byte reader (`core::bytes`) fails).
 impl From<StateFormatError> for ModelError {
     fn from(e: StateFormatError) -> Self {
         ModelError::RejectedState(e.to_string())

@@ -2,9 +2,9 @@
 
 #![allow(non_snake_case)]
 
-use super::guard::{guarded, refuse, write_out};
+use crate::core::guard::{guarded, refuse, write_out};
 use crate::error::CallError;
-use crate::fmi2::instance::CallResult;
+use crate::core::instance::CallResult;
 use crate::fmi2::types::*;
 use std::ffi::c_int;
 

@@ -6,8 +6,8 @@
 //! generator ([`crate::fmi2::xml`], [`crate::fmi3::xml`]) arranges them in its own elements.
 
 use crate::error::XmlError;
-use crate::fmi2::logging::Category;
-use crate::fmi2::variables::{Causality, Initial, Kind, ModelInfo, UnitDef, Variability, Variable};
+use crate::core::logging::Category;
+use crate::core::variables::{Causality, Initial, Kind, ModelInfo, UnitDef, Variability, Variable};
 use std::fmt::Write;
 
 /// Escape text for an XML attribute value.

@@ -1,5 +1,5 @@
 //! The description of a model's interface: its variables and units. One table per
-//! model feeds both the modelDescription.xml generator ([`super::xml`]) and the
+//! model feeds both modelDescription.xml generators (over the shared writer [`super::xml`]) and the
 //! get/set dispatch of the instance, so the two cannot drift apart.
 
 use super::model::Model;

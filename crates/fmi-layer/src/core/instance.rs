@@ -1,6 +1,7 @@
 //! One FMU instance: life-cycle state, time, logger and the model behind the
 //! [`Model`] trait. The methods here hold the standard's rules in safe Rust; the
-//! `extern "C"` functions in [`super::api`] only convert pointers and call them.
+//! `extern "C"` functions of the shims (`fmi2::api`, `fmi3::api`) only convert pointers and
+//! call them.
 //!
 //! Errors: a method returns a [`CallError`]; the caller logs it with status
 //! `fmi2Error`. Argument errors (NULL arrays, unknown value references, a set on an
@@ -29,7 +30,7 @@ const INLINE: usize = 8;
 /// logs and returns as `fmi2Error`.
 pub type CallResult = Result<Status, CallError>;
 
-pub use super::interface::Interface;
+pub use super::interface::{Interface, Version};
 
 /// One FMU instance, the object behind an `fmi2Component`/`fmi3Instance`.
 pub struct Instance {
@@ -59,8 +60,8 @@ pub struct Instance {
     /// The variable of each value reference and the outputs (computed once: every get, set
     /// and step reads them).
     lookup: Lookup,
-    /// Instantiated through the FMI 3.0 functions (type rules and messages of FMI 3.0).
-    pub fmi3: bool,
+    /// The standard whose functions created the instance (its type rules and messages).
+    pub version: Version,
 }
 
 impl Instance {
@@ -81,13 +82,13 @@ impl Instance {
             interface: Interface::CoSimulation,
             states: info.continuous_states(),
             lookup: Lookup::new(info),
-            fmi3: false,
+            version: Version::Fmi2,
         }
     }
 
-    /// An instance of `interface` (`fmi3`: created by the FMI 3.0 functions).
-    pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, fmi3: bool) -> Self {
-        let mut inst = Instance { interface, fmi3, ..Instance::new(info, name, logger) };
+    /// An instance of `interface`, created by the functions of `version`.
+    pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, version: Version) -> Self {
+        let mut inst = Instance { interface, version, ..Instance::new(info, name, logger) };
         inst.model.set_interface(interface);
         inst
     }
@@ -142,7 +143,7 @@ impl Instance {
     fn lookup_kind(&self, vr: u32, kind: Kind) -> Result<usize, CallError> {
         let i = self.lookup(vr)?;
         let k = self.info.variables[i].kind;
-        let ok = if self.fmi3 { std::mem::discriminant(&k) == std::mem::discriminant(&kind) } else { k.fmi2_accessed_as(kind) };
+        let ok = if self.version == Version::Fmi3 { std::mem::discriminant(&k) == std::mem::discriminant(&kind) } else { k.fmi2_accessed_as(kind) };
         if !ok {
             let article = if matches!(k, Kind::Integer | Kind::Enumeration(_)) { "n" } else { "" };
             return Err(CallError::WrongType { variable: self.describe(i), article, actual: k.as_str(), requested: kind.as_str() });
@@ -507,7 +508,7 @@ impl Instance {
     /// that of `unknowns` (the callers check).
     pub fn directional_derivative(&mut self, unknowns: &[u32], knowns: &[u32], seed: &[f64], out: &mut [f64]) -> CallResult {
         if !self.info.directional_derivatives {
-            return Err(CallError::Unsupported(if self.fmi3 {
+            return Err(CallError::Unsupported(if self.version == Version::Fmi3 {
                 "directional derivatives are not provided (providesDirectionalDerivatives = false)"
             } else {
                 "directional derivatives are not provided (providesDirectionalDerivative = false)"

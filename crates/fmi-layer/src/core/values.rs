@@ -1,11 +1,11 @@
 //! The bodies of the typed getters and setters of both standards, generic over the C value
-//! type: the model holds every value as an f64 ([`crate::fmi2::variables::Kind`]), and each
+//! type: the model holds every value as an f64 ([`crate::core::variables::Kind`]), and each
 //! exported function only names its C type and the conversion.
 
 use super::guard::{slice, slice_mut};
 use crate::error::CallError;
-use crate::fmi2::instance::{CallResult, Instance};
-use crate::fmi2::variables::Kind;
+use crate::core::instance::{CallResult, Instance};
+use crate::core::variables::Kind;
 
 /// How a standard names the arrays of a get/set call in messages, and whether a function
 /// of a type without variables checks its value array too.
