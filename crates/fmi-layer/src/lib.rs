@@ -28,8 +28,8 @@
 //! or instantiation token.
 
 // Modules in dependency order, lowest first: `fmt` (numfmt, another crate); `core` (whose
-// leaves `error` uses, with the FMI 2.0 status-kind codes of `fmi2::types`, a leaf over
-// `core::types`; the rest of `core` uses `error`); `error`; the shims `fmi2` and `fmi3`.
+// leaves `error` uses; the rest of `core` uses `error`); `error`; the shims `fmi2` and `fmi3`,
+// which name the core and `error`, never each other; neither `core` nor `error` names a shim.
 pub mod core;
 pub mod error;
 pub mod fmi2;
