@@ -105,12 +105,19 @@ pub enum CallError {
         /// The models of the library with their GUIDs.
         known: String,
     },
-    /// `fmi2Instantiate` for Model Exchange of a Co-Simulation-only model.
-    #[error("fmuType = 0 (Model Exchange): {0} implements Co-Simulation (fmuType = 1) only")]
-    Fmi2CoSimulationOnly(&'static str),
-    /// `fmi3InstantiateModelExchange` of a Co-Simulation-only model.
-    #[error("{0} implements Co-Simulation only")]
-    CoSimulationOnly(&'static str),
+    /// A Model Exchange instantiation of a Co-Simulation-only model, in the words of the
+    /// standard of the instantiating function: FMI 2.0's `fmi2Instantiate` names its
+    /// `fmuType` values (`asked` = `fmuType = 0 (Model Exchange): `, `offered` =
+    /// ` (fmuType = 1)`), FMI 3.0's `fmi3InstantiateModelExchange` needs neither (both empty).
+    #[error("{asked}{model} implements Co-Simulation{offered} only")]
+    CoSimulationOnly {
+        /// The model's name.
+        model: &'static str,
+        /// What was asked for, as a prefix of the message (may be empty).
+        asked: &'static str,
+        /// How the standard names the interface the model offers (may be empty).
+        offered: &'static str,
+    },
     /// `fmi3InstantiateCoSimulation` with `eventModeUsed`.
     #[error("eventModeUsed = true, but this FMU's Co-Simulation has no event mode (hasEventMode = false)")]
     EventModeUsed,
@@ -611,6 +618,11 @@ mod tests {
             ),
             (CallError::StatusKind { kind: Err(7), prefix: "fmi2", func: "fmi2GetStatus" }, "status kind 7 (not an fmi2StatusKind) is not available through fmi2GetStatus (this FMU steps synchronously)"),
             (CallError::StatusKind { kind: Ok(StatusKind::DoStepStatus), prefix: "fmi2", func: "fmi2GetRealStatus" }, "fmi2DoStepStatus is not available through fmi2GetRealStatus (this FMU steps synchronously)"),
+            (
+                CallError::CoSimulationOnly { model: "PinJointRig", asked: "fmuType = 0 (Model Exchange): ", offered: " (fmuType = 1)" },
+                "fmuType = 0 (Model Exchange): PinJointRig implements Co-Simulation (fmuType = 1) only",
+            ),
+            (CallError::CoSimulationOnly { model: "PinJointRig", asked: "", offered: "" }, "PinJointRig implements Co-Simulation only"),
             (CallError::StateRejected(ModelError::RejectedState("bad".to_owned())), "FMU state rejected: bad"),
             (CallError::StateFormat(StateFormatError::Crc), "serialized FMU state is corrupted (CRC-32 mismatch)"),
         ];

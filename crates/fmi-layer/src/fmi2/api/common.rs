@@ -122,7 +122,7 @@ pub unsafe fn instantiate_from(
             }
             let (info, guid) = model_of(registry, guid, "fmuGUID")?;
             if fmu_type == FMI2_MODEL_EXCHANGE && !info.model_exchange {
-                return Err(CallError::Fmi2CoSimulationOnly(info.model_name));
+                return Err(CallError::CoSimulationOnly { model: info.model_name, asked: "fmuType = 0 (Model Exchange): ", offered: " (fmuType = 1)" });
             }
             Ok((name, info, guid))
         });

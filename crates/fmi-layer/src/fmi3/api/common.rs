@@ -110,7 +110,7 @@ pub unsafe fn instantiate_from(
         let checked = instance_name_checked(name).and_then(|name| {
             let (info, token) = model_of(registry, token, "instantiationToken")?;
             if interface == Interface::ModelExchange && !info.model_exchange {
-                return Err(CallError::CoSimulationOnly(info.model_name));
+                return Err(CallError::CoSimulationOnly { model: info.model_name, asked: "", offered: "" });
             }
             if event_mode_used != 0 {
                 return Err(CallError::EventModeUsed);
