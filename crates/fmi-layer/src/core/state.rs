@@ -124,7 +124,7 @@ pub const ANY_STATE: Mask = Mask::of(&[
     StartAndEnd, Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled,
     Terminated, Error, Fatal, EventMode, ContinuousTimeMode,
 ]);
-/// `GetVersion`: every state.
+/// `fmi2GetVersion` and `fmi3GetVersion`: every state.
 pub const GET_VERSION: Mask = ANY_STATE;
 /// `fmi2SetDebugLogging`: every state of a live, non-fatal instance.
 pub const SET_DEBUG_LOGGING: Mask = Mask::of(&[
