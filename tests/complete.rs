@@ -256,7 +256,7 @@ proptest! {
 
 /// The grease's supply layer only thins the film: at every temperature the film with the
 /// supply is at most the flooded one (`grease.supply_layer_inverse = 0`) and at most the
-/// layer's film scale, and the thinner the layer the thinner the film (crate::cold_supply).
+/// layer's film scale, and the thinner the layer the thinner the film (crate::film::cold_supply).
 #[test]
 fn the_supplied_film_is_never_thicker_than_the_flooded_one() {
     for t in [313.15, 293.15, 273.15, 253.15, 233.15, 218.15] {

@@ -55,9 +55,15 @@ pub struct Joint {
     pub(super) ln_w_unit: f64,
     pub(super) ln_u_mean_unit: f64,
     pub(super) ln_g: f64,
-    /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`): what the
-    /// start table's nodes are solved with (it does not depend on the temperature).
+    /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`; it does not
+    /// depend on the temperature).
     pub(super) starved: Option<crate::load_sharing::solve::StarvedInlet>,
+    /// What the start table's nodes are solved with: `starved` for the paper's model; for the
+    /// complete model the inlet at the reference temperature (the user's layer and the grease's
+    /// supply layer at T_ref, [`crate::film::cold_supply`]), so that at T_ref the table starts the
+    /// starved solve at its root (one residual evaluation in most of the boundary and mixed
+    /// regimes, against two from the flooded root); a function of the parameters alone.
+    pub(super) start_inlet: Option<crate::load_sharing::solve::StarvedInlet>,
     /// The inlet at the temperature: the user's starved inlet and the grease's supply layer
     /// ([`crate::film::cold_supply`]) together; `starved` itself for the paper's model.
     pub(super) inlet: Option<crate::load_sharing::solve::StarvedInlet>,
@@ -109,6 +115,7 @@ impl Joint {
             ln_g: f64::NAN,
             starved: (st.inlet_layer_inverse > 0.0).then(|| crate::load_sharing::solve::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
             inlet: None,
+            start_inlet: None,
             start: Arc::new(StartTable::empty()),
             start_film: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, reference.viscosity, reference.pressure_viscosity_coefficient),
             start_shift: f64::NAN,
@@ -116,6 +123,15 @@ impl Joint {
             ln_sommerfeld_reference: (reference.viscosity * g.bush_length / PI * (g.pin_radius / params.radial_clearance()).powi(2)).ln(),
         };
         joint.set_temperature_terms()?;
+        joint.start_inlet = match &joint.complete {
+            None => joint.starved,
+            Some(_) => {
+                let (g, st) = (&params.grease, &params.starvation);
+                let ln_eta_ref = params.lubricant.viscosity.ln();
+                let grease = crate::film::cold_supply::ln_layer_inverse(g.enabled, g.supply_layer_inverse, g.supply_exponent, ln_eta_ref, ln_eta_ref);
+                crate::film::cold_supply::ln_combined(joint.starved.map(|s| s.ln_q), grease, st.exponent).map(|ln_q| crate::load_sharing::solve::StarvedInlet { ln_q, gamma: st.exponent })
+            }
+        };
         joint.start = Arc::new(StartTable::new(joint.capacity));
         Ok(joint)
     }
@@ -205,9 +221,9 @@ impl Joint {
         // temperature (S with η0(T_ref)), so that the table starts the journal's region too.
         let journal = self.complete.as_ref().and_then(|c| {
             let ln_s = self.ln_sommerfeld_reference + ln_u - ln_p;
-            c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s, ln_p, self.starved)
+            c.journal_film(c.weight(ln_s, ln_p, self.start_inlet), ln_s, ln_p, self.start_inlet)
         });
-        let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.starved, journal.as_ref(), true);
+        let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.start_inlet, journal.as_ref(), true);
         crate::load_sharing::start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
     }
 

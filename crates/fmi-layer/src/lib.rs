@@ -14,8 +14,11 @@
 //!   the FMU state and its serialized format, logging, value-reference lookup, the guard every
 //!   export runs through;
 //! - [`fmi2`] and [`fmi3`]: symmetric thin shims, each with only its version's exported
-//!   functions (`api`), C types (`types`) and modelDescription.xml generator (`xml`). Neither
-//!   names the other (a test, `tests/version_shims.rs`, fails if one does).
+//!   functions (`api`), C types (`types`) and modelDescription.xml generator (`xml`), and what
+//!   its standard defines its own way: the [`Rules`](core::Rules) of its instances (which
+//!   getter reads which type, a capability's name), the state masks of its own functions, its
+//!   status names and (FMI 2.0) status-kind codes. Neither names the other, and the core
+//!   names neither (a test, `tests/version_shims.rs`, fails if one does).
 //!
 //! Errors are typed at every boundary ([`error`]): [`CallError`] for why an exported
 //! function fails (its text is what the host's logger receives), [`StateFormatError`] for a
@@ -28,8 +31,8 @@
 //! or instantiation token.
 
 // Modules in dependency order, lowest first: `fmt` (numfmt, another crate); `core` (whose
-// leaves `error` uses, with the FMI 2.0 status-kind codes of `fmi2::types`, a leaf over
-// `core::types`; the rest of `core` uses `error`); `error`; the shims `fmi2` and `fmi3`.
+// leaves `error` uses; the rest of `core` uses `error`); `error`; the shims `fmi2` and `fmi3`,
+// which name the core and `error`, never each other; neither `core` nor `error` names a shim.
 pub mod core;
 pub mod error;
 pub mod fmi2;

@@ -1,6 +1,6 @@
 //! The bodies of the FMU state functions of both standards (`fmi2GetFMUstate` …
-//! `fmi2DeSerializeFMUstate` in `fmi2::api::fmu_state`, `fmi3GetFMUState` …
-//! `fmi3DeserializeFMUState` in `fmi3::api::fmu_state`): one [`Snapshot`] type, one registry
+//! `fmi2DeSerializeFMUstate`, `fmi3GetFMUState` … `fmi3DeserializeFMUState`, each in its
+//! shim's `api::fmu_state`): one [`Snapshot`] type, one registry
 //! of live states and one serialized format, so a state taken or serialized through one
 //! standard is read back through the other for the same model. The two standards' exports
 //! differ only in name (which the messages carry) and spelling of the C types.

@@ -161,8 +161,10 @@ pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &'static str) -
 ///
 /// a `#[unsafe(no_mangle)] pub [unsafe] extern "C" fn NAME` with exactly that signature that
 /// runs `BODY` (an `FnOnce(&mut Instance) -> CallResult`, which may use the arguments) for the
-/// instance if the state mask `crate::core::state::MASK` allows its state, logging an error
-/// under the function's name. Both standards' exports are written with it, so the guard
+/// instance if the state mask `MASK` allows its state, logging an error under the function's
+/// name. `MASK` is a [`Mask`] constant in scope where the macro is used: one of the core's
+/// (`crate::core::state`, for a function both standards have) or one the shim defines for a
+/// function of its standard only. Both standards' exports are written with it, so the guard
 /// boilerplate (NULL and dead instances, masks, logging, panics) is in one place.
 macro_rules! guarded {
     () => {};
@@ -170,7 +172,7 @@ macro_rules! guarded {
         $(#[$attr])*
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
-            $crate::core::guard::call($c, stringify!($name), $crate::core::state::$mask, $body)
+            $crate::core::guard::call($c, stringify!($name), $mask, $body)
         }
         $crate::core::guard::guarded!($($rest)*);
     };
@@ -178,7 +180,7 @@ macro_rules! guarded {
         $(#[$attr])*
         #[unsafe(no_mangle)]
         pub extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
-            $crate::core::guard::call($c, stringify!($name), $crate::core::state::$mask, $body)
+            $crate::core::guard::call($c, stringify!($name), $mask, $body)
         }
         $crate::core::guard::guarded!($($rest)*);
     };

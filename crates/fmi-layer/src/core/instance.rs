@@ -1,6 +1,6 @@
 //! One FMU instance: life-cycle state, time, logger and the model behind the
 //! [`Model`] trait. The methods here hold the standard's rules in safe Rust; the
-//! `extern "C"` functions of the shims (`fmi2::api`, `fmi3::api`) only convert pointers and
+//! `extern "C"` functions of the shims (each in its `api`) only convert pointers and
 //! call them.
 //!
 //! Errors: a method returns a [`CallError`]; the caller logs it with status
@@ -30,7 +30,20 @@ const INLINE: usize = 8;
 /// logs and returns as `fmi2Error`.
 pub type CallResult = Result<Status, CallError>;
 
-pub use super::interface::{Interface, Version};
+pub use super::interface::Interface;
+
+/// What the standards define differently for an instance, given by the shim that creates it:
+/// the core names no standard, so every such difference is a value here, not a branch on a
+/// version.
+#[derive(Debug)]
+pub struct Rules {
+    /// Whether a variable of kind `variable` (the first argument) is read and written by the
+    /// getter/setter of kind `requested` (the second).
+    pub accessed_as: fn(Kind, Kind) -> bool,
+    /// Why a directional derivative is refused when the model does not provide them (the
+    /// message names the standard's capability attribute).
+    pub no_directional_derivatives: &'static str,
+}
 
 /// One FMU instance, the object behind an `fmi2Component`/`fmi3Instance`.
 pub struct Instance {
@@ -60,14 +73,15 @@ pub struct Instance {
     /// The variable of each value reference and the outputs (computed once: every get, set
     /// and step reads them).
     lookup: Lookup,
-    /// The standard whose functions created the instance (its type rules and messages).
-    pub version: Version,
+    /// The rules of the standard whose functions created the instance (its type rules and
+    /// messages).
+    pub rules: &'static Rules,
 }
 
 impl Instance {
-    /// A Co-Simulation instance of the model `info`, every variable at its start value, in the
-    /// `instantiated` state.
-    pub fn new(info: &'static ModelInfo, name: &str, logger: Logger) -> Self {
+    /// A Co-Simulation instance of the model `info` under `rules`, every variable at its start
+    /// value, in the `instantiated` state.
+    pub fn new(info: &'static ModelInfo, name: &str, logger: Logger, rules: &'static Rules) -> Self {
         Instance {
             tag: TAG,
             info,
@@ -82,13 +96,14 @@ impl Instance {
             interface: Interface::CoSimulation,
             states: info.continuous_states(),
             lookup: Lookup::new(info),
-            version: Version::Fmi2,
+            rules,
         }
     }
 
-    /// An instance of `interface`, created by the functions of `version`.
-    pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, version: Version) -> Self {
-        let mut inst = Instance { interface, version, ..Instance::new(info, name, logger) };
+    /// An instance of `interface`, created by the functions of the standard whose `rules` are
+    /// given.
+    pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, rules: &'static Rules) -> Self {
+        let mut inst = Instance { interface, ..Instance::new(info, name, logger, rules) };
         inst.model.set_interface(interface);
         inst
     }
@@ -143,8 +158,7 @@ impl Instance {
     fn lookup_kind(&self, vr: u32, kind: Kind) -> Result<usize, CallError> {
         let i = self.lookup(vr)?;
         let k = self.info.variables[i].kind;
-        let ok = if self.version == Version::Fmi3 { std::mem::discriminant(&k) == std::mem::discriminant(&kind) } else { k.fmi2_accessed_as(kind) };
-        if !ok {
+        if !(self.rules.accessed_as)(k, kind) {
             let article = if matches!(k, Kind::Integer | Kind::Enumeration(_)) { "n" } else { "" };
             return Err(CallError::WrongType { variable: self.describe(i), article, actual: k.as_str(), requested: kind.as_str() });
         }
@@ -508,11 +522,7 @@ impl Instance {
     /// that of `unknowns` (the callers check).
     pub fn directional_derivative(&mut self, unknowns: &[u32], knowns: &[u32], seed: &[f64], out: &mut [f64]) -> CallResult {
         if !self.info.directional_derivatives {
-            return Err(CallError::Unsupported(if self.version == Version::Fmi3 {
-                "directional derivatives are not provided (providesDirectionalDerivatives = false)"
-            } else {
-                "directional derivatives are not provided (providesDirectionalDerivative = false)"
-            }));
+            return Err(CallError::Unsupported(self.rules.no_directional_derivatives));
         }
         let me = self.interface == Interface::ModelExchange;
         let continuous_real = |v: &super::variables::Variable| v.kind == Kind::Real && v.variability == Variability::Continuous;

@@ -1,7 +1,7 @@
 //! The bodies of the instantiation and life-cycle functions both standards share: the
 //! checks of an instantiation's arguments (instance name, model by GUID or instantiation
 //! token, resource location), freeing an instance, and switching log categories. The
-//! version shims (`fmi2::api::common`, `fmi3::api::common`) read their own arguments and
+//! version shims (each in its `api::common`) read their own arguments and
 //! build their own logger.
 
 use super::guard::slice;

@@ -12,14 +12,3 @@ pub enum Interface {
     /// integrator owns the continuous states (FMI 2.0 §3, FMI 3.0 §3); no event indicators.
     ModelExchange,
 }
-
-/// The standard whose functions created an instance: the few behaviours the standards
-/// define differently (which C types a variable may be accessed as, a capability's name in
-/// messages) follow it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Version {
-    /// FMI 2.0 (`fmi2Instantiate`).
-    Fmi2,
-    /// FMI 3.0 (`fmi3InstantiateCoSimulation`, `fmi3InstantiateModelExchange`).
-    Fmi3,
-}

@@ -158,15 +158,16 @@ impl Category {
         }
     }
 
-    /// The `description` attribute of the category in the modelDescription.
-    pub fn description(self) -> &'static str {
+    /// The `description` attribute of the category in the modelDescription, each status
+    /// named by `status_name` (the standard's word for it, e.g. `fmi2Error`).
+    pub fn description(self, status_name: fn(Status) -> &'static str) -> String {
         match self {
-            Category::Events => "Life-cycle events: initialization, termination, reset, FMU state get/set",
-            Category::StatusWarning => "Messages returned with status fmi2Warning",
-            Category::StatusDiscard => "Messages returned with status fmi2Discard",
-            Category::StatusError => "Messages returned with status fmi2Error (on by default)",
-            Category::StatusFatal => "Messages returned with status fmi2Fatal (on by default)",
-            Category::All => "Every FMI function call with its arguments",
+            Category::Events => "Life-cycle events: initialization, termination, reset, FMU state get/set".to_owned(),
+            Category::StatusWarning => format!("Messages returned with status {}", status_name(Status::Warning)),
+            Category::StatusDiscard => format!("Messages returned with status {}", status_name(Status::Discard)),
+            Category::StatusError => format!("Messages returned with status {} (on by default)", status_name(Status::Error)),
+            Category::StatusFatal => format!("Messages returned with status {} (on by default)", status_name(Status::Fatal)),
+            Category::All => "Every FMI function call with its arguments".to_owned(),
         }
     }
 

@@ -1,15 +1,17 @@
 //! The version-neutral core of the layer: everything FMI 2.0 and FMI 3.0 share, written once,
 //! as Reference-FMUs keeps one `cosimulation.c` under `fmi2Functions.c` and
-//! `fmi3Functions.c`. The version shims ([`crate::fmi2`], [`crate::fmi3`]) only read their C
-//! arguments, spell their types and write their modelDescription.xml elements; this module
-//! names neither of them.
+//! `fmi3Functions.c`. The two version shims (the crate's FMI 2.0 and FMI 3.0 modules) only read
+//! their C arguments, spell their types, write their modelDescription.xml elements and give
+//! the few rules their standard defines its own way ([`Rules`], the masks of their own
+//! functions, the names of their status values); this module names neither of them, nothing
+//! of either standard in code (`tests/version_shims.rs` checks it).
 //!
 //! - the model side: the [`Model`] trait a model implements once (for both standards and both
 //!   interfaces), its [`ModelInfo`] variable table ([`variables`]), the byte format of its own
 //!   state ([`bytes`]);
 //! - the instance ([`Instance`]): value checks, output range checks, value-reference lookup
 //!   ([`lookup`]), the life-cycle [`state`] machine with one mask per function, the
-//!   [`Interface`] and [`Version`] it was created for;
+//!   [`Interface`] it was created for and the [`Rules`] of the standard that created it;
 //! - the FMU state ([`snapshot`], `fmu_state`): one snapshot type, one registry of live
 //!   states, one serialized format with CRC, so a state taken through one standard is read
 //!   back through the other;
@@ -40,7 +42,7 @@ pub(crate) mod fmu_state;
 pub(crate) mod model_exchange;
 pub mod xml;
 
-pub use instance::{Instance, Interface, Version};
+pub use instance::{Instance, Interface, Rules};
 pub use logging::HostLog;
 pub use model::{Model, ModelError, ModelResult};
 pub use types::Status;

@@ -1,6 +1,6 @@
 //! The bodies of the Model Exchange functions with an array of continuous states or event
 //! indicators, the same in both standards (FMI 2.0 §3.2, FMI 3.0 §3.2): the version shims
-//! (`fmi2::api::model_exchange`, `fmi3::api::model_exchange`) pass their argument names, for
+//! (each in its `api::model_exchange`) pass their argument names, for
 //! the messages, and their arrays.
 
 use super::guard::{slice, slice_mut};

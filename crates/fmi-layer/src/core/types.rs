@@ -1,6 +1,6 @@
 //! The C types both standards share under their own names: the instance and FMU state
-//! handles, value references, the status and its C code. `fmi2::types` and `fmi3::types`
-//! spell them `Fmi2Component`/`Fmi3Instance`, `Fmi2FmuState`/`Fmi3FmuState`, … as aliases of
+//! handles, value references, the status and its C code. Each shim's `types` module
+//! spells them `Fmi2Component`/`Fmi3Instance`, `Fmi2FmuState`/`Fmi3FmuState`, … as aliases of
 //! these, so the two versions cannot disagree about a type the core hands to both.
 
 use std::ffi::{c_int, c_uint, c_void};
@@ -23,17 +23,18 @@ pub type StatusC = c_int;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 #[repr(i32)]
 pub enum Status {
-    /// `fmi2OK`: all well.
+    /// OK (`fmi2OK`, `fmi3OK`): all well.
     Ok = 0,
-    /// `fmi2Warning`: done, but the host should look at the log.
+    /// Warning (`fmi2Warning`, `fmi3Warning`): done, but the host should look at the log.
     Warning = 1,
-    /// `fmi2Discard`: the step was not done (Co-Simulation).
+    /// Discard (`fmi2Discard`, `fmi3Discard`): the step was not done (Co-Simulation).
     Discard = 2,
-    /// `fmi2Error`: the call failed; the instance may still be usable where the standard allows.
+    /// Error (`fmi2Error`, `fmi3Error`): the call failed; the instance may still be usable where the standard allows.
     Error = 3,
-    /// `fmi2Fatal`: the instance is broken; only `fmi2FreeInstance` is allowed.
+    /// Fatal (`fmi2Fatal`, `fmi3Fatal`): the instance is broken; only freeing it is allowed.
     Fatal = 4,
-    /// `fmi2Pending`: an asynchronous step is running (never returned by this layer).
+    /// Pending (FMI 2.0's `fmi2Pending`): an asynchronous step is running (never returned by
+    /// this layer).
     Pending = 5,
 }
 
@@ -42,15 +43,34 @@ impl Status {
     pub fn c(self) -> StatusC {
         self as c_int
     }
-    /// The FMI 2.0 name of the status, e.g. `fmi2Error`, for log messages.
+}
+
+/// What a host may ask a Co-Simulation instance about with a `Get*Status` function (FMI 2.0
+/// §4.2.3; FMI 3.0 has no such functions). The shim that has them maps its C codes to these
+/// and names them in its own words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StatusKind {
+    /// The status of an asynchronous step.
+    DoStepStatus,
+    /// A string describing an asynchronous step in progress.
+    PendingStatus,
+    /// The end time of the last successful step.
+    LastSuccessfulTime,
+    /// Whether the slave wants the simulation to end.
+    Terminated,
+}
+
+impl StatusKind {
+    /// Every status kind, in the order of their C codes in FMI 2.0.
+    pub const ALL: [StatusKind; 4] = [StatusKind::DoStepStatus, StatusKind::PendingStatus, StatusKind::LastSuccessfulTime, StatusKind::Terminated];
+
+    /// The kind's name without the standard's prefix, e.g. `DoStepStatus`.
     pub fn name(self) -> &'static str {
         match self {
-            Status::Ok => "fmi2OK",
-            Status::Warning => "fmi2Warning",
-            Status::Discard => "fmi2Discard",
-            Status::Error => "fmi2Error",
-            Status::Fatal => "fmi2Fatal",
-            Status::Pending => "fmi2Pending",
+            StatusKind::DoStepStatus => "DoStepStatus",
+            StatusKind::PendingStatus => "PendingStatus",
+            StatusKind::LastSuccessfulTime => "LastSuccessfulTime",
+            StatusKind::Terminated => "Terminated",
         }
     }
 }

@@ -60,15 +60,6 @@ impl Kind {
             Kind::Enumeration(_) => "Enumeration",
         }
     }
-
-    /// Whether a variable of this kind is accessed by the FMI 2.0 getter/setter of
-    /// `requested` (Real, Integer or Boolean): an Enumeration goes through the Integer functions.
-    pub fn fmi2_accessed_as(self, requested: Kind) -> bool {
-        match (self, requested) {
-            (Kind::Enumeration(_), Kind::Integer) => true,
-            (a, b) => std::mem::discriminant(&a) == std::mem::discriminant(&b),
-        }
-    }
 }
 
 /// An enumeration type: named choices with their integer codes.

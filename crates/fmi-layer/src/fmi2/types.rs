@@ -8,7 +8,7 @@
 use crate::core::types::{Environment, InstanceHandle, StateHandle, StatusC, ValueReference};
 use std::ffi::{c_char, c_int, c_void};
 
-pub use crate::core::types::Status;
+pub use crate::core::types::{Status, StatusKind};
 
 /// `fmi2Component`: the instance handle the FMU returns from `fmi2Instantiate`.
 pub type Fmi2Component = InstanceHandle;
@@ -50,6 +50,30 @@ pub const FMI2_PENDING_STATUS: c_int = 1;
 pub const FMI2_LAST_SUCCESSFUL_TIME: c_int = 2;
 /// `fmi2Terminated`.
 pub const FMI2_TERMINATED: c_int = 3;
+
+/// The status kind of the `fmi2StatusKind` code `code`, or the code if it is none.
+pub fn status_kind(code: c_int) -> Result<StatusKind, c_int> {
+    match code {
+        FMI2_DO_STEP_STATUS => Ok(StatusKind::DoStepStatus),
+        FMI2_PENDING_STATUS => Ok(StatusKind::PendingStatus),
+        FMI2_LAST_SUCCESSFUL_TIME => Ok(StatusKind::LastSuccessfulTime),
+        FMI2_TERMINATED => Ok(StatusKind::Terminated),
+        other => Err(other),
+    }
+}
+
+/// The `fmi2Status` name of a status, e.g. `fmi2Error`, for messages and the
+/// modelDescription's log category descriptions.
+pub fn status_name(status: Status) -> &'static str {
+    match status {
+        Status::Ok => "fmi2OK",
+        Status::Warning => "fmi2Warning",
+        Status::Discard => "fmi2Discard",
+        Status::Error => "fmi2Error",
+        Status::Fatal => "fmi2Fatal",
+        Status::Pending => "fmi2Pending",
+    }
+}
 
 /// `fmi2CallbackLogger`: `(env, instanceName, status, category, message, ...)`.
 /// The FMU always passes the message as the argument of a `"%s"` format, so that

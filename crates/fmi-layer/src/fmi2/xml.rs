@@ -93,7 +93,7 @@ pub fn model_description(info: &ModelInfo) -> Result<String, XmlError> {
         writeln!(w, "  </TypeDefinitions>").unwrap();
     }
 
-    common::log_categories(w, "fmi2");
+    common::log_categories(w, super::types::status_name);
     common::default_experiment(w, info);
 
     writeln!(w, "  <ModelVariables>").unwrap();

@@ -9,6 +9,8 @@
 use crate::core::types::{InstanceHandle, StateHandle, StatusC, ValueReference};
 use std::ffi::{c_char, c_int, c_void};
 
+pub use crate::core::types::Status;
+
 /// `fmi3Instance` (a `void*`).
 pub type Fmi3Instance = InstanceHandle;
 /// `fmi3FMUState` (a `void*`).
@@ -32,6 +34,20 @@ pub type Fmi3Byte = u8;
 
 /// `fmi3LogMessageCallback(instanceEnvironment, status, category, message)`.
 pub type Fmi3LogMessageCallback = unsafe extern "C" fn(*mut c_void, c_int, *const c_char, *const c_char);
+
+/// The `fmi3Status` name of a status, e.g. `fmi3Error`, for messages and the
+/// modelDescription's log category descriptions. FMI 3.0 has no pending status (this layer
+/// never returns it under either standard).
+pub fn status_name(status: Status) -> &'static str {
+    match status {
+        Status::Ok => "fmi3OK",
+        Status::Warning => "fmi3Warning",
+        Status::Discard => "fmi3Discard",
+        Status::Error => "fmi3Error",
+        Status::Fatal => "fmi3Fatal",
+        Status::Pending => "status 5 (no fmi3Status)",
+    }
+}
 
 /// `fmi3DependencyKind::fmi3Dependent`.
 pub const FMI3_DEPENDENT: c_int = 5;

@@ -9,10 +9,11 @@
 #![allow(non_snake_case)]
 
 use crate::core::guard::{guarded, maybe_forced_panic, slice, slice_mut};
-use crate::core::instance::{Instance, Interface, Version};
+use crate::core::state::{Mask, State, ENTER_INITIALIZATION_MODE, EXIT_INITIALIZATION_MODE, GET_VALUE, RESET, SET_DEBUG_LOGGING, SET_VALUE, TERMINATE};
+use crate::core::instance::{Instance, Interface, Rules};
 use crate::core::instantiate::{free_instance, instance_name_checked, looks_like_uri, model_of, refuse_instance, set_debug_logging, text};
 use crate::core::logging::{c_text, Category, HostLog, Logger};
-use crate::core::values::{get_as, reject_as, set_as, FMI2};
+use crate::core::values::{get_as, reject_as, set_as, Arrays};
 use crate::core::variables::{Kind, ModelInfo};
 use crate::error::CallError;
 use crate::fmi2::types::*;
@@ -20,6 +21,36 @@ use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::ptr::null_mut;
 use std::rc::Rc;
+
+// The state masks of FMI 2.0's own functions; the functions both standards have use the
+// core's (`crate::core::state`).
+
+/// `fmi2SetupExperiment`: right after instantiation only.
+const SETUP_EXPERIMENT: Mask = Mask::of(&[State::Instantiated]);
+/// `fmi2GetDirectionalDerivative` (FMI 2.0 §3.2.3 and §4.2.4 tables): as [`GET_VALUE`]
+/// (initialization, event and continuous-time mode; stepComplete, stepFailed, stepCanceled;
+/// terminated, error).
+const GET_DIRECTIONAL_DERIVATIVE: Mask = GET_VALUE;
+
+/// FMI 2.0's names of the arrays of a get/set call (`vr[]`, `value[]`: one value per value
+/// reference); `fmi2GetString`/`fmi2SetString` check the value array too.
+const ARRAYS: Arrays = Arrays { vr: "vr[]", values: "value[]", check_unused_values: true };
+
+/// Whether a variable of kind `variable` is read and written by the FMI 2.0 getter/setter of
+/// `requested` (Real, Integer or Boolean): an Enumeration goes through the Integer functions
+/// (FMI 2.0 §2.1.7), every other kind through its own.
+pub fn accessed_as(variable: Kind, requested: Kind) -> bool {
+    match (variable, requested) {
+        (Kind::Enumeration(_), Kind::Integer) => true,
+        (a, b) => std::mem::discriminant(&a) == std::mem::discriminant(&b),
+    }
+}
+
+/// What FMI 2.0 defines its own way for an instance it creates.
+pub static RULES: Rules = Rules {
+    accessed_as,
+    no_directional_derivatives: "directional derivatives are not provided (providesDirectionalDerivative = false)",
+};
 
 /// The host's `fmi2CallbackLogger` with its `componentEnvironment`: every message goes to it
 /// with the instance name, through a `"%s"` format, `#` doubled (FMI 2.0 reads `#vr#` in a
@@ -91,7 +122,7 @@ pub unsafe fn instantiate_from(
             }
             let (info, guid) = model_of(registry, guid, "fmuGUID")?;
             if fmu_type == FMI2_MODEL_EXCHANGE && !info.model_exchange {
-                return Err(CallError::Fmi2CoSimulationOnly(info.model_name));
+                return Err(CallError::CoSimulationOnly { model: info.model_name, asked: "fmuType = 0 (Model Exchange): ", offered: " (fmuType = 1)" });
             }
             Ok((name, info, guid))
         });
@@ -111,7 +142,7 @@ pub unsafe fn instantiate_from(
             ),
             _ => {}
         }
-        let inst = Instance::with_interface(info, &name, logger, interface, Version::Fmi2);
+        let inst = Instance::with_interface(info, &name, logger, interface, &RULES);
         inst.event(&format!("instantiated {} (GUID {guid})", info.model_name));
         Box::into_raw(Box::new(inst)) as Fmi2Component
     }))
@@ -179,7 +210,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetReal(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2Real) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { get_as(inst, Kind::Real, &FMI2, vr, nvr, value, nvr, |v| v) };
+        |inst| unsafe { get_as(inst, Kind::Real, &ARRAYS, vr, nvr, value, nvr, |v| v) };
 
     /// `fmi2SetReal` (FMI 2.0 §2.1.7): sets the Real variables `vr[0..nvr]`. Every value is
     /// checked (variability and causality for the current state, the model's range check)
@@ -188,7 +219,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetReal(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2Real) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { set_as(inst, Kind::Real, &FMI2, vr, nvr, value, nvr, Ok) };
+        |inst| unsafe { set_as(inst, Kind::Real, &ARRAYS, vr, nvr, value, nvr, Ok) };
 
     /// `fmi2GetInteger` (FMI 2.0 §2.1.7): writes the values of the Integer (and Enumeration)
     /// variables `vr[0..nvr]` into `value` (the model holds them as f64; see [`Kind`]).
@@ -197,7 +228,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetInteger(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2Integer) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { get_as(inst, Kind::Integer, &FMI2, vr, nvr, value, nvr, |v| v as Fmi2Integer) };
+        |inst| unsafe { get_as(inst, Kind::Integer, &ARRAYS, vr, nvr, value, nvr, |v| v as Fmi2Integer) };
 
     /// `fmi2SetInteger` (FMI 2.0 §2.1.7): sets the Integer (and Enumeration) variables
     /// `vr[0..nvr]` (stored as f64; see [`Kind`]). Every value is checked before any is
@@ -206,7 +237,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetInteger(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2Integer) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { set_as(inst, Kind::Integer, &FMI2, vr, nvr, value, nvr, |v| Ok(f64::from(v))) };
+        |inst| unsafe { set_as(inst, Kind::Integer, &ARRAYS, vr, nvr, value, nvr, |v| Ok(f64::from(v))) };
 
     /// `fmi2GetBoolean` (FMI 2.0 §2.1.7): writes the values of the Boolean variables
     /// `vr[0..nvr]` into `value` (`fmi2True` or `fmi2False`). Returns `fmi2Error` for an
@@ -215,7 +246,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetBoolean(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2Boolean) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { get_as(inst, Kind::Boolean, &FMI2, vr, nvr, value, nvr, |v| v as Fmi2Boolean) };
+        |inst| unsafe { get_as(inst, Kind::Boolean, &ARRAYS, vr, nvr, value, nvr, |v| v as Fmi2Boolean) };
 
     /// `fmi2SetBoolean` (FMI 2.0 §2.1.7): sets the Boolean variables `vr[0..nvr]`; any
     /// non-zero `fmi2Boolean` is true. Every value is checked before any is stored, so a call
@@ -224,7 +255,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetBoolean(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2Boolean) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { set_as(inst, Kind::Boolean, &FMI2, vr, nvr, value, nvr, |v| Ok(if v != FMI2_FALSE { 1.0 } else { 0.0 })) };
+        |inst| unsafe { set_as(inst, Kind::Boolean, &ARRAYS, vr, nvr, value, nvr, |v| Ok(if v != FMI2_FALSE { 1.0 } else { 0.0 })) };
 
     /// `fmi2GetString` (FMI 2.0 §2.1.7): no model of this layer has String variables, so
     /// every value reference is rejected with `fmi2Error` (`nvr = 0` is `fmi2OK`).
@@ -232,7 +263,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetString(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2String) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { reject_as(inst, "String", &FMI2, vr, nvr, value.cast_const(), nvr) };
+        |inst| unsafe { reject_as(inst, "String", &ARRAYS, vr, nvr, value.cast_const(), nvr) };
 
     /// `fmi2SetString` (FMI 2.0 §2.1.7): no model of this layer has String variables, so
     /// every value reference is rejected with `fmi2Error` (`nvr = 0` is `fmi2OK`).
@@ -240,7 +271,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetString(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2String) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { reject_as(inst, "String", &FMI2, vr, nvr, value, nvr) };
+        |inst| unsafe { reject_as(inst, "String", &ARRAYS, vr, nvr, value, nvr) };
 
     /// `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9): `dvUnknown = J · dvKnown`, where
     /// `J[i][j]` is the partial derivative of variable `vUnknown_ref[i]` with respect to

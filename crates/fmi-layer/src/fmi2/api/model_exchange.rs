@@ -14,6 +14,7 @@
 #![allow(non_snake_case)]
 
 use crate::core::guard::{guarded, write_out};
+use crate::core::state::{COMPLETED_INTEGRATOR_STEP, ENTER_CONTINUOUS_TIME_MODE, ENTER_EVENT_MODE, GET_CONTINUOUS_STATES, GET_DERIVATIVES, NEW_DISCRETE_STATES, SET_CONTINUOUS_STATES, SET_TIME};
 use crate::core::instance::Instance;
 use crate::core::model_exchange::{get_states, none, set_states};
 use crate::error::CallError;

@@ -12,17 +12,42 @@
 
 use super::super::types::*;
 use crate::core::guard::{guarded, maybe_forced_panic, refuse, slice, slice_mut, write_out};
-use crate::core::instance::{CallResult, Instance, Interface, Version};
+use crate::core::state::{Mask, State, ENTER_INITIALIZATION_MODE, EXIT_INITIALIZATION_MODE, GET_VALUE, RESET, SET_DEBUG_LOGGING, SET_VALUE, TERMINATE};
+use crate::core::instance::{CallResult, Instance, Interface, Rules};
 use crate::core::instantiate::{free_instance, instance_name_checked, looks_like_uri, model_of, refuse_instance, set_debug_logging, text};
 use crate::core::logging::{c_text, Category, HostLog, Logger};
 use crate::core::types::Status;
-use crate::core::values::{check_n_values, get_as, reject_as, set_as, FMI3};
+use crate::core::values::{check_n_values, get_as, reject_as, set_as, Arrays};
 use crate::core::variables::{Causality, EnumType, Kind, ModelInfo};
 use crate::error::CallError;
 use std::ffi::{c_char, c_int, c_void, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::ptr::null_mut;
 use std::rc::Rc;
+
+/// `fmi3GetDirectionalDerivative`, whose states FMI 3.0 defines its own way (state machine,
+/// §3.2 and §4.2): initialization mode, event mode, continuous-time mode, step mode
+/// (`stepComplete`) and terminated. The functions both standards have use the core's masks
+/// (`crate::core::state`).
+const GET_DIRECTIONAL_DERIVATIVE: Mask =
+    Mask::of(&[State::InitializationMode, State::EventMode, State::ContinuousTimeMode, State::StepComplete, State::Terminated]);
+
+/// FMI 3.0's names of the arrays of a get/set call (`valueReferences[]`, `values[]`, with
+/// `nValues` given separately).
+const ARRAYS: Arrays = Arrays { vr: "valueReferences[]", values: "values[]", check_unused_values: false };
+
+/// Whether a variable of kind `variable` is read and written by the FMI 3.0 getter/setter of
+/// `requested`: each kind through its own functions only (Real as Float64, Integer as Int32,
+/// Enumeration as Int64, Boolean as Boolean).
+pub fn accessed_as(variable: Kind, requested: Kind) -> bool {
+    std::mem::discriminant(&variable) == std::mem::discriminant(&requested)
+}
+
+/// What FMI 3.0 defines its own way for an instance it creates.
+pub static RULES: Rules = Rules {
+    accessed_as,
+    no_directional_derivatives: "directional derivatives are not provided (providesDirectionalDerivatives = false)",
+};
 
 /// The host's `fmi3LogMessageCallback` with its `instanceEnvironment`. FMI 3.0 messages carry
 /// no instance name, so it is prefixed to each message.
@@ -85,7 +110,7 @@ pub unsafe fn instantiate_from(
         let checked = instance_name_checked(name).and_then(|name| {
             let (info, token) = model_of(registry, token, "instantiationToken")?;
             if interface == Interface::ModelExchange && !info.model_exchange {
-                return Err(CallError::CoSimulationOnly(info.model_name));
+                return Err(CallError::CoSimulationOnly { model: info.model_name, asked: "", offered: "" });
             }
             if event_mode_used != 0 {
                 return Err(CallError::EventModeUsed);
@@ -104,7 +129,7 @@ pub unsafe fn instantiate_from(
                 &format!("{func}: resourcePath '{r}' is not an absolute path; this FMU needs no resources, continuing"),
             );
         }
-        let inst = Instance::with_interface(info, &name, logger, interface, Version::Fmi3);
+        let inst = Instance::with_interface(info, &name, logger, interface, &RULES);
         inst.event(&format!("instantiated {} (FMI 3.0 {:?}, instantiationToken {token})", info.model_name, interface));
         Box::into_raw(Box::new(inst)) as Fmi3Instance
     }))
@@ -287,7 +312,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetFloat64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const f64, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Real, &FMI3, valueReferences, nValueReferences, values, nValues, Ok) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Real, &ARRAYS, valueReferences, nValueReferences, values, nValues, Ok) };
 
     /// `fmi3GetInt32` (FMI 3.0): writes the values of the Int32 (FMI 2.0 Integer) variables
     /// `valueReferences[0..nValueReferences]` into `values` (`nValues` must equal
@@ -297,7 +322,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3GetInt32(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut i32, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Integer, &FMI3, valueReferences, nValueReferences, values, nValues, |v| v as i32) };
+        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Integer, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| v as i32) };
 
     /// `fmi3SetInt32` (FMI 3.0): sets the Int32 (FMI 2.0 Integer) variables
     /// `valueReferences[0..nValueReferences]`. Every value is checked before any is stored, so
@@ -306,7 +331,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetInt32(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const i32, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Integer, &FMI3, valueReferences, nValueReferences, values, nValues, |v| Ok(f64::from(v))) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Integer, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| Ok(f64::from(v))) };
 
     /// `fmi3GetInt64` (FMI 3.0): writes the codes of the Enumeration variables (accessed as
     /// Int64) `valueReferences[0..nValueReferences]` into `values` (`nValues` must equal
@@ -316,7 +341,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3GetInt64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut i64, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &FMI3, valueReferences, nValueReferences, values, nValues, |v| v as i64) };
+        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| v as i64) };
 
     /// `fmi3SetInt64` (FMI 3.0): sets the Enumeration variables (accessed as Int64)
     /// `valueReferences[0..nValueReferences]`; a code beyond i32 is no item. Every value is
@@ -325,7 +350,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetInt64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const i64, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &FMI3, valueReferences, nValueReferences, values, nValues, enumeration_code) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &ARRAYS, valueReferences, nValueReferences, values, nValues, enumeration_code) };
 
     /// `fmi3GetBoolean` (FMI 3.0): writes the values of the Boolean variables
     /// `valueReferences[0..nValueReferences]` into `values` (1 or 0). Returns `fmi3Error` for an
@@ -334,7 +359,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3GetBoolean(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut u8, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Boolean, &FMI3, valueReferences, nValueReferences, values, nValues, |v| u8::from(v != 0.0)) };
+        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Boolean, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| u8::from(v != 0.0)) };
 
     /// `fmi3SetBoolean` (FMI 3.0): sets the Boolean variables
     /// `valueReferences[0..nValueReferences]` (any non-zero byte is true). Every value is
@@ -343,7 +368,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetBoolean(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const u8, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Boolean, &FMI3, valueReferences, nValueReferences, values, nValues, |v| Ok(if v != 0 { 1.0 } else { 0.0 })) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Boolean, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| Ok(if v != 0 { 1.0 } else { 0.0 })) };
 }
 
 /// The getters and setters of the FMI 3.0 types this layer's models have no variables of:
@@ -358,14 +383,14 @@ macro_rules! no_such_type {
                 /// # Safety
                 /// `valueReferences` points to `nValueReferences` elements.
                 unsafe fn $get(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut $t, nValues: usize) -> Fmi3StatusC:
-                    GET_VALUE => |inst| unsafe { reject_as(inst, $name, &FMI3, valueReferences, nValueReferences, values.cast_const(), nValues) };
+                    GET_VALUE => |inst| unsafe { reject_as(inst, $name, &ARRAYS, valueReferences, nValueReferences, values.cast_const(), nValues) };
                 #[doc = concat!("`", stringify!($set), "` (FMI 3.0): this FMU has no ", $name,
                     " variables; every value reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).")]
                 ///
                 /// # Safety
                 /// `valueReferences` points to `nValueReferences` elements.
                 unsafe fn $set(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const $t, nValues: usize) -> Fmi3StatusC:
-                    SET_VALUE => |inst| unsafe { reject_as(inst, $name, &FMI3, valueReferences, nValueReferences, values, nValues) };
+                    SET_VALUE => |inst| unsafe { reject_as(inst, $name, &ARRAYS, valueReferences, nValueReferences, values, nValues) };
             )*
         }
     };
@@ -389,7 +414,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` points to `nValueReferences` elements.
     unsafe fn fmi3GetBinary(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, _valueSizes: *mut usize, values: *mut *const u8, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &FMI3, valueReferences, nValueReferences, values.cast_const(), nValues) };
+        GET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &ARRAYS, valueReferences, nValueReferences, values.cast_const(), nValues) };
 
     /// `fmi3SetBinary` (FMI 3.0): this FMU has no Binary variables; every value
     /// reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).
@@ -397,7 +422,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` points to `nValueReferences` elements.
     unsafe fn fmi3SetBinary(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, _valueSizes: *const usize, values: *const *const u8, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &FMI3, valueReferences, nValueReferences, values, nValues) };
+        SET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &ARRAYS, valueReferences, nValueReferences, values, nValues) };
 
     /// `fmi3GetClock` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3GetClock(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _values: *mut u8) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
@@ -489,7 +514,7 @@ guarded! {
         nSeed: usize,
         sensitivity: *mut f64,
         nSensitivity: usize,
-    ) -> Fmi3StatusC: GET_DIRECTIONAL_DERIVATIVE_FMI3 => |inst| unsafe {
+    ) -> Fmi3StatusC: GET_DIRECTIONAL_DERIVATIVE => |inst| unsafe {
         if nSeed != nKnowns {
             return Err(CallError::ArrayLength { what: "nSeed", given: nSeed, of: "nKnowns", expected: nKnowns });
         }

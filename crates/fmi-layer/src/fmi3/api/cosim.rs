@@ -5,6 +5,11 @@
 
 use super::super::types::*;
 use crate::core::guard::{guarded, put, refuse};
+use crate::core::state::{Mask, State, DO_STEP, RESET};
+
+/// `fmi3EnterStepMode`, FMI 3.0's own (§4.2 state chart): only after event mode, which this
+/// layer's Co-Simulation never enters (`hasEventMode = false`).
+const ENTER_STEP_MODE: Mask = Mask::of(&[State::EventMode]);
 
 guarded! {
     /// `fmi3EnterStepMode` (FMI 3.0): only allowed after event mode, which this

@@ -7,6 +7,7 @@
 
 use crate::core::fmu_state::{deserialize, free_state, get_state, serialize, serialized_size, set_state};
 use crate::core::guard::guarded;
+use crate::core::state::FMU_STATE;
 use crate::fmi3::types::{Fmi3Byte, Fmi3FmuState, Fmi3Instance, Fmi3StatusC};
 
 guarded! {

@@ -12,6 +12,7 @@
 
 use super::super::types::*;
 use crate::core::guard::{guarded, put, write_out};
+use crate::core::state::{COMPLETED_INTEGRATOR_STEP, ENTER_CONTINUOUS_TIME_MODE, ENTER_EVENT_MODE, GET_CONTINUOUS_STATES, GET_DERIVATIVES, NEW_DISCRETE_STATES, RESET, SET_CONTINUOUS_STATES, SET_TIME};
 use crate::core::instance::{CallResult, Instance};
 use crate::core::model_exchange::{get_states, none, set_states};
 use crate::core::types::Status;
