@@ -4,7 +4,7 @@ are in rig_support.py).
 The FMU is target/fmu/PinJoint.fmu (or $PINJOINT_FMU), built by
 `cargo run --release -p fmu_build`; the library reference is the example binary
 target/release/examples/reference_points (`cargo build --release -p pinjoint --example
-reference_points`). tests/python/run.sh builds both.
+reference_points`). tests/fmu_harness/run.sh builds both.
 """
 
 import os
@@ -41,7 +41,7 @@ def _fmu_fixtures(prefix, locate, tmp_name):
 
     def existing():
         path = locate()
-        assert path.is_file(), f"{path} is missing: run `cargo run --release -p fmu_build` (or tests/python/run.sh)"
+        assert path.is_file(), f"{path} is missing: run `cargo run --release -p fmu_build` (or tests/fmu_harness/run.sh)"
         return str(path)
 
     def extracted(tmp_path_factory):

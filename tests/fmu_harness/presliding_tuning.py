@@ -3,7 +3,7 @@ host-inertia scenes over the envelope of issue 22 (explicit host J >= 20 kg m^2 
 h <= 10 ms, linearly implicit J >= 5 kg m^2 at 100 ms, loads 5 to 60 kN), run with the
 Python reference law (presliding_reference.py) in place of the FMU:
 
-    .venv/bin/python tests/python/presliding_tuning.py [--c0=N.m.s/rad] [phi_s beta t_d ...]
+    .venv/bin/python tests/fmu_harness/presliding_tuning.py [--c0=N.m.s/rad] [phi_s beta t_d ...]
 
 (--c0: a load-independent damping coefficient instead of c = k t_d, an alternative studied.)
 

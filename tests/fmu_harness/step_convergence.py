@@ -8,7 +8,7 @@ displacement. Hosts: explicit h = 10, 5, 2, 1, 0.5 ms; linearly implicit h = 100
 10 ms; the reference is Model Exchange with SciPy's BDF at rtol 1e-6 (Jacobian from the
 directional derivatives). Differences are to the reference.
 
-    .venv/bin/python tests/python/step_convergence.py [path/to/PinJoint.fmu] [--reference]
+    .venv/bin/python tests/fmu_harness/step_convergence.py [path/to/PinJoint.fmu] [--reference]
 
 --reference runs the Python reference law (presliding_reference.py) instead of the FMU.
 """

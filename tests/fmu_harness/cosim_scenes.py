@@ -10,7 +10,7 @@ then `rest`·T_s: the leg slows under friction, stops and rests. `measure` gives
 the hold and of the rest (rad), the sign changes of w once settled, the travel of the breakaway.
 
 Run as a script it prints the measured table of docs/fmu.md:
-    python tests/python/cosim_scenes.py target/fmu/PinJoint.fmu"""
+    python tests/fmu_harness/cosim_scenes.py target/fmu/PinJoint.fmu"""
 
 import math
 import os

@@ -7,7 +7,7 @@ the drive's is arbitrated by Model Exchange (BDF, rtol 1e-8): when the accurate 
 the host's count, the drive's count was the wrong expectation (the body's momentum carried it
 through a reverse excursion of the drive), not a failure.
 
-    .venv/bin/python tests/python/presliding_random_sweep.py [seed] [seconds] [phi_s beta t_d]
+    .venv/bin/python tests/fmu_harness/presliding_random_sweep.py [seed] [seconds] [phi_s beta t_d]
 """
 
 import math

@@ -3,7 +3,7 @@ and displacement, breakaway motion and peak error, reversal counts (drive, motio
 changes of omega, chatter) and dither walk, per host and standard (the numbers quoted in
 docs/zero-velocity.md).
 
-    .venv/bin/python tests/python/scene_report.py [path/to/PinJoint.fmu]
+    .venv/bin/python tests/fmu_harness/scene_report.py [path/to/PinJoint.fmu]
 """
 
 import sys

@@ -2,7 +2,7 @@
 (issue 5, items 2, 6): NaN/±Inf on every input, negative load, loads of 0 and 1e9 N,
 speeds of 1e6 rad/s, every parameter out of range at initialization, outputs never
 NaN after fmi2OK, parameters outside the model's range, and 8 threads bit-identical
-to serial runs. The defined behaviour of each is tabulated in tests/python/README.md."""
+to serial runs. The defined behaviour of each is tabulated in tests/fmu_harness/README.md."""
 
 import math
 import threading

@@ -3,13 +3,13 @@
 # target/fmu/fmi3/*.fmu (FMI 3.0; test_interfaces.py validates and simulates all four,
 # Co-Simulation and Model Exchange, against the library) and the library
 # reference binaries (reference_points, rig_reference),
-# installs requirements-test.txt into .venv (once), runs pytest on tests/python and
+# installs requirements-test.txt into .venv (once), runs pytest on tests/fmu_harness and
 # the Rust `fmi` crate importer against the packaged FMU.
 #
 # Needs: cargo, python3 with venv (Debian: python3-venv), for the fmi crate's
 # bindgen step Debian's libclang-dev, and for Ecos (ecospy) Debian's libtbb12. libcosim
 # (libcosimpy), pythonfmu and fmu-manipulation-toolbox are pinned in requirements-test.txt
-# (tests/python/test_cosim_masters.py: about 20 s).
+# (tests/fmu_harness/test_cosim_masters.py: about 20 s).
 # Set PINJOINT_SKIP_APT=1 to skip the apt step, PINJOINT_KEEP_FMUS=1 to keep target/fmu/*.fmu.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -42,6 +42,6 @@ export PINJOINT_RIG_FMU="$ROOT/target/fmu/PinJointRig.fmu"
 # into the test process: their scenes run in a pytest process of their own, so that nothing
 # they leave behind reaches the other tests (a later fmi2SetReal segfaulted in one CI run of
 # the whole directory in one process).
-"$VENV/bin/python" -m pytest -q tests/python --ignore=tests/python/test_cosim_masters.py "$@"
-"$VENV/bin/python" -m pytest -q tests/python/test_cosim_masters.py "$@"
+"$VENV/bin/python" -m pytest -q tests/fmu_harness --ignore=tests/fmu_harness/test_cosim_masters.py "$@"
+"$VENV/bin/python" -m pytest -q tests/fmu_harness/test_cosim_masters.py "$@"
 cargo test --locked --release -q -p pinjoint-fmu --test fmi_crate_importer --test fmi_crate_rig_importer --test fmi_crate_misuse

@@ -1,7 +1,7 @@
 """Helpers of the PinJointRig tests: the FMU's path, the library reference (the
 example binary target/release/examples/rig_reference) and a low-level slave.
 
-The FMU is target/fmu/PinJointRig.fmu (or $PINJOINT_RIG_FMU); tests/python/run.sh
+The FMU is target/fmu/PinJointRig.fmu (or $PINJOINT_RIG_FMU); tests/fmu_harness/run.sh
 builds it with `cargo run --release -p fmu_build` and the reference with
 `cargo build --release -p pinjoint --example rig_reference`."""
 
