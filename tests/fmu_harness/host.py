@@ -1,7 +1,7 @@
 """The one low-level fmpy host of the Python tests, for any model of the FMU library: an
 FMU2Slave with a recording logger, brought to a named state, with variables set by name
 through the model's own description (the PinJoint and PinJointRig tests bind it to their
-model; tests/common/mod.rs is the Rust counterpart)."""
+model; crates/test-support/src/fmi2_host.rs is the Rust counterpart)."""
 
 import pytest
 from ctypes import c_int, c_void_p

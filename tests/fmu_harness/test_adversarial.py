@@ -69,7 +69,7 @@ CASES = [
     # fails naming it (docs/conventions.md).
     # At rest under presliding (the default) the tiny load's rest state answers (the film there is the
     # asperities', not bounded by the clearance); the band's edge speed would pass the clearance
-    # (tests/fmi2_values.rs checks that one).
+    # (crates/fmu/tests/fmi2_values.rs checks that one).
     ("pj load -1e-12", PJ, STEP + [["set", "load", -1e-12], ["step", 0.0, 0.1]], [OK, OK, OK], []),
     # Huge numbers in messages are short.
     ("pj load 1e308 message", PJ, STEP + [["set", "load", 1e308]], [OK, ERROR], ["1e308"]),

@@ -57,7 +57,7 @@ def test_auto_logs_its_pick_and_the_first_fallback_once(rig_fmu_path):
     assert any("fidelity auto -> table: measured error bound" in m for m in messages), messages[:8]
     # Reversals pass below envelope.speed_min = 1e-3 rad/s, where the table's low speeds
     # answer, down to rest: no fallback is logged (a load outside the envelope is: the Rust
-    # test tests/rig_fmu_fidelity.rs).
+    # test crates/fmu/tests/rig_fmu_fidelity.rs).
     falls = [m for m in messages if "outside the envelope" in m]
     assert len(falls) == 0, falls
 
