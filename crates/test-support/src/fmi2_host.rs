@@ -3,6 +3,10 @@
 //! variable names through the model's own table (`Host::for_model`). The PinJoint
 //! tests use it directly (`Host::new()` and the free `set`/`get`); [`crate::rig_host`] binds
 //! the same functions to PinJointRig.
+// The functions take the instance handle a test got from `fmi2Instantiate` and hand it to the
+// FMU's exported functions, as a host does; the FMU checks the handle (a test of misuse passes
+// a bad one on purpose), so they stay safe to call.
+#![allow(clippy::not_unsafe_ptr_arg_deref)]
 
 use fmi_layer::fmi2::api::common::*;
 use fmi_layer::fmi2::api::cosim::fmi2DoStep;
@@ -59,6 +63,13 @@ pub struct Host {
     pub callbacks: Box<Fmi2CallbackFunctions>,
     /// The model this host instantiates.
     pub info: &'static ModelInfo,
+}
+
+impl Default for Host {
+    /// A host of PinJoint ([`Host::new`]).
+    fn default() -> Self {
+        Self::new()
+    }
 }
 
 impl Host {

@@ -1,7 +1,7 @@
 //! The FMU the importer tests load: `$<env_var>` when set (tests/fmu_harness/run.sh points it at
-//! target/fmu/…), else the cdylib of this very build packaged as an FMU. That cdylib is
-//! target/<profile>/deps/libpinjoint_fmu.so, beside the test executable; `cargo test` does not
-//! refresh the copy in target/<profile>/, which may be stale.
+//! `target/fmu/…`), else the cdylib of this very build packaged as an FMU. That cdylib is
+//! `target/<profile>/deps/libpinjoint_fmu.so`, beside the test executable; `cargo test` does not
+//! refresh the copy in `target/<profile>/`, which may be stale.
 
 use fmi_layer::fmi2::variables::ModelInfo;
 use fmi_layer::fmi2::xml::model_description;
