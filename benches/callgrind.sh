@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
 # Where the time goes: callgrind instruction counts of `pinjoint sweep` (20,000 rows, one
 # thread) and of the PinJoint FMU step (20,000 steps of the fmpy benchmark's loop, full and
-# boundary fidelity, from a plain C host), written beside BENCHMARKS.md as
-# callgrind_sweep.txt, callgrind_fmu_full.txt, callgrind_fmu_boundary.txt (the functions
-# with the most instructions, self and inclusive), and callgrind_evaluate.txt (instructions
-# per cold and warm library evaluation in the mixed regime).
+# boundary fidelity, from a plain C host), written to benches/results/ (beside the bench's
+# plots, out of the repository's root) as callgrind_sweep.txt, callgrind_fmu_full.txt,
+# callgrind_fmu_boundary.txt (the functions with the most instructions, self and inclusive),
+# and callgrind_evaluate.txt (instructions per cold and warm library evaluation in the mixed
+# regime).
 #
-#   bash benches/callgrind.sh [OUTDIR]      # default: the repository root
+#   bash benches/callgrind.sh [OUTDIR]      # default: benches/results
 #
 # (`sed -n 1,60p` rather than `head`: under pipefail, head closing the pipe early fails the script.)
 # Needs valgrind (callgrind_annotate), a C compiler, python3; builds the binaries and FMU.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
-OUT="${1:-$ROOT}"
+OUT="${1:-$ROOT/benches/results}"
+mkdir -p "$OUT"
 cargo build --locked --release -q --bin pinjoint
 cargo build --locked --release -q -p pinjoint --example icount
 cargo run --locked --release -q -p fmu_build >/dev/null

@@ -14,30 +14,54 @@
 //!   journal's weight falls to 0 by [`XI_1`] = 0.45, below that crossing, and is 1 up to
 //!   [`XI_0`] = 2.5e-3, the transition as wide in ξ as Moes' own blend of his rigid and elastic
 //!   asymptotes is in M² (M from 0.3 to 4). In between: the quintic smoothstep (C²) of ln ξ.
-//!   A narrower transition lets the film thicken and the torque fall as the load rises where
-//!   the line contact's film exceeds the journal's (both fall with load, the weight moves from
-//!   the thinner to the thicker): over −55 to +120 °C, 0.01–100 rad/s and 50 N–200 kN the
-//!   torque falls by at most 6e-4 and the film rises by at most 4e-3 (relative) between
-//!   neighbouring loads 4.2 % apart inside the transition, and never outside it
-//!   (`tests/one_answer.rs`). w is a function of the operating point only (so the load-sharing residual stays
+//!   w is a function of the operating point only (so that the load-sharing residual stays
 //!   monotone in its unknown); over the paper's rig conditions (5–60 kN, up to 4.39 rad/s,
 //!   15–25 °C) ξ ≥ 0.48, so w = 0 and the paper's load sharing is untouched there.
-//! * **Composite film** in the solve ([`crate::mixed::solve_composite`]):
-//!   ln h(x1) = (1 − w)·ln h_c13(x1) + w·ln h_J(x1), h_J(x1) = c·(1 − ε(S/x1)), where the line
-//!   contact's film is held inside the clearance, h_c13^−4 = h_13^−4 + c^−4 (eq. 12's
-//!   parabolic gap is a conformal contact's only while the film is small against c; in the
-//!   paper's rig conditions, h_13 ≤ 4 µm against c = 25 µm, this moves the film by less than
-//!   2e-4); the grease's supply layer ([`crate::cold_supply`]) starves the composite film.
-//! * **Torque** (magnitude): T = T_asp + (1 − w)·T_contact,fluid + T_clearance + w·T_poiseuille,
-//!   T_asp = μ_c·x2·R·P (eq. 8), T_contact,fluid = Q_H·R (eq. 3) with the composite film,
+//! * **Composite film** in the solve ([`crate::mixed::solve_composite`]): the smooth maximum
+//!   h = ((w·h_J)⁸ + h_c13*⁸)^(1/8) ([`SMOOTH_MAX_EXPONENT`]) of the weighted journal film
+//!   h_J(x1) = c·(1 − ε(S/x1)) and the line contact's film h_c13* at the load P* ≥ P
+//!   ([`onset_load`]: the load P₁ at which w reaches 0, [`Complete::ln_onset_load`], softened
+//!   to a C² join; P* = P from P₁ on, where h = h_c13 exactly). The line contact's film is
+//!   held inside the clearance, h_c13^−4 = h_13^−4 + c^−4 (eq. 12's parabolic gap is a
+//!   conformal contact's only while the film is small against c; in the paper's rig
+//!   conditions, h_13 ≤ 4 µm against c = 25 µm, this moves the film by less than 2e-4); the
+//!   grease's supply layer ([`crate::cold_supply`]) starves the composite film.
+//!   **Why this form**: the film must never thicken as the load rises, and the two films it
+//!   joins are both thinner at a higher load, but the line contact's is the thicker one in the
+//!   transition (its rigid limit, Martin's infinite line contact, ignores the finite bearing's
+//!   side leakage that h_J has), so no blend of the two at the same load, with a weight that
+//!   moves from the journal to the line contact as the load rises, can be monotone: it must
+//!   climb from the thinner to the thicker. The lower bound it uses instead is physical: below
+//!   the onset of elasticity the film is at least the rigid journal's at its load (deflection
+//!   only widens the gap) and at least the elastic film at the onset load P₁ (the film at a
+//!   lighter load is at least that at a heavier one). Each argument of the smooth maximum falls
+//!   with the load (w, h_J, and h_c13 at the non-decreasing P*) and the maximum increases in
+//!   both, so the fluid's film is a falling function of its load at every share, and so the
+//!   solved film falls as the load rises: **monotone by construction**. Where the two are equal
+//!   the smooth maximum exceeds both by 2^(1/8) − 1 = 9 % at most (Moes' own blend of his
+//!   rigid and elastic asymptotes, power 7/3, by 35 %); at w = 1 with h_c13* ≪ h_J (the rigid
+//!   bearings of Raimondi & Boyd's tables) it is h_J to within (h_c13*/h_J)⁸/8.
+//! * **Torque** (magnitude): T = T_asp + T_clearance + max̃(T_line, T_arc) + T_poiseuille,
+//!   T_asp = μ_c·x2·R·P (eq. 8), T_line = (1 − w)·Q_H·R (eq. 3) with the composite film,
 //!   T_clearance the shear of the lubricant in the clearance outside the contact arc
-//!   |θ| ≤ θ_c = (1 − w)·a/R over the gap h_g(θ) = c(1 − ε_g cos θ), ε_g = 1 − h/c
-//!   ([`crate::clearance::clearance_torque`]), and T_poiseuille = (c·ε_J/2)·x1·P·sin φ(ε_J),
-//!   the pressure-flow torque of the journal carrying x1·P (ε_J = 1 − h_J/c; Raimondi & Boyd's
-//!   friction variable (R/c)f = 2π²S/√(1 − ε²) + (ε/2) sin φ is the two terms at w = 1).
-//!   At rest T = μ_c·R·P + τ_y(T)·(2π − 2a/R)·R²·B: the grease's yield torque adds to breakaway.
+//!   |θ| ≤ θ_c = a/R over the gap h_g(θ) = c(1 − ε_g cos θ), ε_g = 1 − h/c
+//!   ([`crate::clearance::clearance_torque`]), with the grease's yield over the whole
+//!   circumference; T_arc the lubricant's flow over the arc, max̃ the smooth maximum
+//!   ([`Complete::contact_torque`]); and T_poiseuille = (c·ε_J/2)·x1·P·sin φ(ε_J), the
+//!   pressure-flow torque of the journal carrying x1·P (ε_J = 1 − h_J(x1)/c; Raimondi & Boyd's
+//!   friction variable (R/c)f = 2π²S/√(1 − ε²) + (ε/2) sin φ is the clearance's and this term
+//!   at w = 1). No term is weighted by w but the line contact's, which grows with the load: a
+//!   term (1 − w)·A + w·B falls somewhere in the transition whenever A < B, so the journal's
+//!   pressure-flow torque stays at every weight (it vanishes with the attitude angle as the
+//!   joint loads up: 0.23 % of the torque at 5 kN, 4.386 rad/s, 15 °C), the contact arc is
+//!   the Hertz half-width's at every weight, and the grease yields over the whole
+//!   circumference (the arc takes its flow, not its yield). Over −55…+120 °C, 0.01–100 rad/s
+//!   and 50 N–200 kN, grease on and off, the torque never falls as the load rises (measured
+//!   at 1e-12 between neighbouring loads, `tests/one_answer.rs`); unlike the film this rests
+//!   on the terms' measured growth, not on a construction.
+//!   At rest T = μ_c·R·P + τ_y(T)·2π·R²·B: the grease's yield torque adds to breakaway.
 
-use crate::clearance::{clearance_and_arc_torque, clearance_torque_tabulated, yield_torque, ClearanceGeometry, PowerLawTable};
+use crate::clearance::{clearance_and_arc_torque, yield_torque, ClearanceGeometry, PowerLawTable};
 use crate::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
 use crate::mixed::{JournalFilm, LoadSharing, StarvedInlet};
@@ -51,6 +75,27 @@ pub const XI_0: f64 = 2.5e-3;
 /// ξ = δ/h_J at and above which the journal's weight is 0 (the deflection shapes the gap):
 /// 0.45, below the paper's rig conditions (ξ ≥ 0.48 there) and Moes' crossing (ξ = 0.59).
 pub const XI_1: f64 = 0.45;
+
+/// ln P*, the load at which the line contact's film enters the composite film below the
+/// onset of elasticity ln P₁ ([`Complete::ln_onset_load`]): ln P₁ − D·tanh((ln P₁ − ln P)/D),
+/// D = [`ONSET_WIDTH`], for P < P₁, and ln P itself from P₁ on. Non-decreasing in P (its
+/// slope sech² ∈ (0, 1]), P ≤ P* ≤ P₁, C² at P₁ (tanh″(0) = 0).
+#[inline]
+pub fn onset_load(ln_onset: f64, ln_load: f64) -> f64 {
+    if ln_load >= ln_onset {
+        ln_load
+    } else {
+        ln_onset - ONSET_WIDTH * ((ln_onset - ln_load) / ONSET_WIDTH).tanh()
+    }
+}
+
+/// D of [`onset_load`]: below the onset the line contact's film is that of a load between
+/// e^−D·P₁ and P₁.
+pub const ONSET_WIDTH: f64 = 0.5;
+
+/// k of the smooth maximum (a^k + b^k)^(1/k) ([`smooth_max`], and the composite film's in
+/// [`crate::mixed::solve_composite`]).
+pub const SMOOTH_MAX_EXPONENT: f64 = 8.0;
 
 /// (a⁸ + b⁸)^(1/8) for a, b ≥ 0, without overflow: a smooth maximum, increasing in both.
 #[inline]
@@ -125,38 +170,26 @@ pub struct Complete {
     ln_flattening_unit: f64,
 }
 
-/// The grease's yield torque at rest as a function of the load alone, for the fidelity
-/// levels' rest state: τ_y(T)·(2π − 2a/R)·R²·B with a = a(1 N)·√P (eq. 6). Zero for the paper's
-/// model and without grease.
+/// The grease's yield torque at rest, for the fidelity levels' rest state: τ_y(T)·2π·R²·B (the
+/// grease yields over the whole circumference, [`crate::composite`]), the same at every load.
+/// Zero for the paper's model and without grease.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RestYield {
-    rheology: Option<Rheology>,
-    radius: f64,
-    length: f64,
-    unit_half_width: f64,
+    torque: f64,
 }
 
 impl RestYield {
-    /// The rest yield torque of `complete` (None: the paper's model) with the Hertz
-    /// half-width `unit_half_width` (m) at 1 N.
-    pub fn new(complete: Option<&Complete>, unit_half_width: f64) -> Self {
-        match complete {
-            Some(c) if c.rheology.yield_stress > 0.0 => Self { rheology: Some(c.rheology), radius: c.radius, length: c.length, unit_half_width },
-            _ => Self::default(),
-        }
+    /// The rest yield torque of `complete` (None: the paper's model).
+    pub fn new(complete: Option<&Complete>) -> Self {
+        Self { torque: complete.map_or(0.0, Complete::yield_torque) }
     }
 
-    /// The yield torque at rest under `load` (N), N·m: [`Complete::yield_torque`] at w = 0,
-    /// bit for bit.
+    /// The yield torque at rest under `load` (N), N·m: [`Complete::yield_torque`], bit for bit
+    /// (the load does not enter it).
     #[inline]
     pub fn at(&self, load: f64) -> f64 {
-        match &self.rheology {
-            Some(r) => {
-                let a = self.unit_half_width * load.abs().sqrt();
-                yield_torque(r, self.radius, self.length, ((1.0 - 0.0) * a / self.radius).min(std::f64::consts::PI))
-            }
-            None => 0.0,
-        }
+        let _ = load;
+        self.torque
     }
 }
 
@@ -178,9 +211,9 @@ pub struct Parts {
     /// T_clearance, N·m (its yield part included, and the grease's excess over the line
     /// contact within the contact arc, [`Complete::contact_torque`]).
     pub clearance_torque: f64,
-    /// τ_y(T)·(2π − 2θ_c)·R²·B, N·m: the yield part of T_clearance.
+    /// τ_y(T)·2π·R²·B, N·m: the yield part of T_clearance (over the whole circumference).
     pub yield_torque: f64,
-    /// T_poiseuille, N·m (not yet weighted by w).
+    /// T_poiseuille, N·m (at every weight; 0 at rest).
     pub poiseuille_torque: f64,
     /// The torque the clearance's lubricant would transmit over the contact arc |θ| ≤ θ_c
     /// (N·m): the least the contact's lubricant transmits there ([`Complete::contact_torque`]).
@@ -253,11 +286,54 @@ impl Complete {
         journal_weight(self.ln_elasticity_ratio(ln_sommerfeld, ln_load, inlet))
     }
 
-    /// The journal's film for the solve, with its weight (0: the line contact's film alone, capped
-    /// by the clearance; `None` only at rest).
+    /// The journal's film for the solve at ln S and ln P with the inlet `inlet`, with its weight
+    /// (0: the line contact's film alone, capped by the clearance; `None` only at rest) and,
+    /// where the weight is above 0, the line contact's load [`onset_load`] ln P* − ln P.
     #[inline]
-    pub fn journal_film(&self, weight: f64, ln_sommerfeld: f64) -> Option<JournalFilm<'_>> {
-        (ln_sommerfeld > f64::NEG_INFINITY).then_some(JournalFilm { weight, ln_sommerfeld, ln_clearance: self.ln_clearance, table: &self.journal })
+    pub fn journal_film(&self, weight: f64, ln_sommerfeld: f64, ln_load: f64, inlet: Option<StarvedInlet>) -> Option<JournalFilm<'_>> {
+        let ln_onset = if weight > 0.0 { onset_load(self.ln_onset_load(ln_sommerfeld, ln_load, inlet), ln_load) - ln_load } else { 0.0 };
+        (ln_sommerfeld > f64::NEG_INFINITY).then_some(JournalFilm { weight, ln_sommerfeld, ln_clearance: self.ln_clearance, table: &self.journal, ln_onset })
+    }
+
+    /// ln P₁, the load at which ξ reaches [`XI_1`] (the journal's weight reaches 0) at the
+    /// speed and temperature of ln S at ln P (S ∝ 1/P): the root of the increasing
+    /// ln ξ(ln P + t) = ln [`XI_1`] in t ∈ [0, ln XI_1 − ln ξ(ln P)] (ln ξ grows at least as fast as
+    /// ln P: h_J falls with the load), by Newton's iteration kept in that bracket. ln P itself
+    /// where ξ ≥ [`XI_1`].
+    pub fn ln_onset_load(&self, ln_sommerfeld: f64, ln_load: f64, inlet: Option<StarvedInlet>) -> f64 {
+        let target = XI_1.ln();
+        let f = |t: f64| {
+            let ln_s = ln_sommerfeld - t;
+            let (rho, drho) = self.journal.film_ratio(ln_s);
+            let (ln_h, dln_h) = (self.ln_clearance + rho.ln(), drho / rho);
+            let (ln_h, dln_h) = match inlet {
+                Some(st) => {
+                    let (l, w) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
+                    (l, w * dln_h)
+                }
+                None => (ln_h, dln_h),
+            };
+            // d ln ξ/dt = 1 + d ln h_J/d ln S (ln S falls by t).
+            (self.ln_flattening_unit + ln_load + t - ln_h - target, 1.0 + dln_h)
+        };
+        let (f0, _) = f(0.0);
+        if !(f0 < 0.0) {
+            return ln_load;
+        }
+        let (mut lo, mut hi) = (0.0, -f0);
+        let mut t = 0.0;
+        for _ in 0..60 {
+            let (v, d) = f(t);
+            if v < 0.0 { lo = t } else { hi = t }
+            let next = t - v / d;
+            let next = if next > lo && next < hi && next.is_finite() { next } else { 0.5 * (lo + hi) };
+            if (next - t).abs() <= 1e-12 * (1.0 + t.abs()) || hi - lo <= 1e-12 {
+                t = next;
+                break;
+            }
+            t = next;
+        }
+        ln_load + t
     }
 
     /// ε_g = 1 − h/c for the film `film` (m), clamped to [0, 1).
@@ -266,23 +342,19 @@ impl Complete {
         (1.0 - film / self.clearance).clamp(0.0, 1.0 - f64::EPSILON)
     }
 
-    /// The half-angle θ_c = (1 − w)·a/R of the contact arc left out of the clearance, rad.
+    /// The half-angle θ_c = a/R of the contact arc left out of the clearance's flow, rad
+    /// (at every weight: an arc shrinking with w would hand the clearance's flow to the line
+    /// contact faster than the line contact's torque grows).
     #[inline]
-    pub fn contact_angle(&self, weight: f64, half_width: f64) -> f64 {
-        ((1.0 - weight) * half_width / self.radius).min(std::f64::consts::PI)
+    pub fn contact_angle(&self, half_width: f64) -> f64 {
+        (half_width / self.radius).min(std::f64::consts::PI)
     }
 
-    /// The yield torque τ_y(T)·(2π − 2θ_c)·R²·B (N·m) at weight w and Hertz half-width a.
+    /// The grease's yield torque τ_y(T)·2π·R²·B (N·m): over the whole circumference, at every
+    /// load and weight (the contact arc takes the grease's flow, not its yield).
     #[inline]
-    pub fn yield_torque(&self, weight: f64, half_width: f64) -> f64 {
-        yield_torque(&self.rheology, self.radius, self.length, self.contact_angle(weight, half_width))
-    }
-
-    /// The clearance's torque (N·m) at sliding speed `u` (m/s) for the film `film` (m).
-    #[inline]
-    pub fn clearance_torque(&self, weight: f64, half_width: f64, u: f64, film: f64) -> f64 {
-        let geometry = ClearanceGeometry { radius: self.radius, length: self.length, clearance: self.clearance };
-        clearance_torque_tabulated(&self.power_law, &self.rheology, &geometry, u, self.eccentricity(film), self.contact_angle(weight, half_width)).total()
+    pub fn yield_torque(&self) -> f64 {
+        yield_torque(&self.rheology, self.radius, self.length, 0.0)
     }
 
     /// Every part at the solved load sharing `ls`, weight w, ln S at the whole load, Hertz
@@ -292,24 +364,24 @@ impl Complete {
     /// ([`Complete::contact_torque`]).
     #[allow(clippy::too_many_arguments)]
     pub fn parts(&self, weight: f64, ln_sommerfeld: f64, ls: &LoadSharing, half_width: f64, load: f64, u: f64, line_contact: f64) -> Parts {
-        let poiseuille_torque = if weight > 0.0 && ls.fluid_fraction > 0.0 {
+        let poiseuille_torque = if ln_sommerfeld.is_finite() && ls.fluid_fraction > 0.0 {
             let (e, _) = self.journal.eccentricity(ln_sommerfeld - ls.fluid_fraction.ln());
             0.5 * self.clearance * e * ls.fluid_fraction * load * self.journal.attitude_angle(e).sin()
         } else {
             0.0
         };
         let eps = self.eccentricity(ls.film_thickness);
-        let (clearance_torque, arc_torque) = self.clearance_and_arc(weight, half_width, u, ls.film_thickness, line_contact);
-        Parts { weight, eccentricity: eps, clearance_torque, yield_torque: self.yield_torque(weight, half_width), poiseuille_torque, arc_torque }
+        let (clearance_torque, arc_torque) = self.clearance_and_arc(half_width, u, ls.film_thickness, line_contact);
+        Parts { weight, eccentricity: eps, clearance_torque, yield_torque: self.yield_torque(), poiseuille_torque, arc_torque }
     }
 
     /// The clearance's torque (N·m) at weight w, Hertz half-width a, sliding speed u and film
     /// h, with the line contact's fluid torque `line_contact` (N·m): the lubricant outside the
     /// contact arc plus the grease's excess over the line contact within it
     /// ([`Complete::contact_torque`] − `line_contact`, ≥ 0); and the grease's flow over the arc.
-    pub fn clearance_and_arc(&self, weight: f64, half_width: f64, u: f64, film: f64, line_contact: f64) -> (f64, f64) {
+    pub fn clearance_and_arc(&self, half_width: f64, u: f64, film: f64, line_contact: f64) -> (f64, f64) {
         let geometry = ClearanceGeometry { radius: self.radius, length: self.length, clearance: self.clearance };
-        let (outside, arc) = clearance_and_arc_torque(&self.power_law, &self.rheology, &geometry, u, self.eccentricity(film), self.contact_angle(weight, half_width));
+        let (outside, arc) = clearance_and_arc_torque(&self.power_law, &self.rheology, &geometry, u, self.eccentricity(film), self.contact_angle(half_width));
         let excess = smooth_max(line_contact, arc) - line_contact;
         (outside.total() + excess.max(0.0), arc)
     }

@@ -263,9 +263,15 @@ pub struct Joint {
     ln_w_unit: f64,
     ln_u_mean_unit: f64,
     ln_g: f64,
-    /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`): what the
-    /// start table's nodes are solved with (it does not depend on the temperature).
+    /// The starved-inlet correction, if on (`starvation.inlet_layer_inverse > 0`; it does not
+    /// depend on the temperature).
     starved: Option<crate::mixed::StarvedInlet>,
+    /// What the start table's nodes are solved with: `starved` for the paper's model; for the
+    /// complete model the inlet at the reference temperature (the user's layer and the grease's
+    /// supply layer at T_ref, [`crate::cold_supply`]), so that at T_ref the table starts the
+    /// starved solve at its root (one residual evaluation in most of the boundary and mixed
+    /// regimes, against two from the flooded root); a function of the parameters alone.
+    start_inlet: Option<crate::mixed::StarvedInlet>,
     /// The inlet at the temperature: the user's starved inlet and the grease's supply layer
     /// ([`crate::cold_supply`]) together; `starved` itself for the paper's model.
     inlet: Option<crate::mixed::StarvedInlet>,
@@ -317,6 +323,7 @@ impl Joint {
             ln_g: f64::NAN,
             starved: (st.inlet_layer_inverse > 0.0).then(|| crate::mixed::StarvedInlet { ln_q: st.inlet_layer_inverse.ln(), gamma: st.exponent }),
             inlet: None,
+            start_inlet: None,
             start: Arc::new(StartTable::empty()),
             start_film: FilmGroups::new(1.0, r_red, e_eff, g.bush_length, 1.0, reference.viscosity, reference.pressure_viscosity_coefficient),
             start_shift: f64::NAN,
@@ -324,6 +331,15 @@ impl Joint {
             ln_sommerfeld_reference: (reference.viscosity * g.bush_length / PI * (g.pin_radius / params.radial_clearance()).powi(2)).ln(),
         };
         joint.set_temperature_terms()?;
+        joint.start_inlet = match &joint.complete {
+            None => joint.starved,
+            Some(_) => {
+                let (g, st) = (&params.grease, &params.starvation);
+                let ln_eta_ref = params.lubricant.viscosity.ln();
+                let grease = crate::cold_supply::ln_layer_inverse(g.enabled, g.supply_layer_inverse, g.supply_exponent, ln_eta_ref, ln_eta_ref);
+                crate::cold_supply::ln_combined(joint.starved.map(|s| s.ln_q), grease, st.exponent).map(|ln_q| crate::mixed::StarvedInlet { ln_q, gamma: st.exponent })
+            }
+        };
         joint.start = Arc::new(StartTable::new(joint.capacity));
         Ok(joint)
     }
@@ -413,9 +429,9 @@ impl Joint {
         // temperature (S with η0(T_ref)), so that the table starts the journal's region too.
         let journal = self.complete.as_ref().and_then(|c| {
             let ln_s = self.ln_sommerfeld_reference + ln_u - ln_p;
-            c.journal_film(c.weight(ln_s, ln_p, self.starved), ln_s)
+            c.journal_film(c.weight(ln_s, ln_p, self.start_inlet), ln_s, ln_p, self.start_inlet)
         });
-        let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.starved, journal.as_ref(), true);
+        let ls = solve_composite(Some(&film), &asp, &self.params.surface, warm, self.start_inlet, journal.as_ref(), true);
         crate::solve_start::Node { y: ls.logit, dy_dln_load: ls.dlogit_dln_load, dy_dln_speed: ls.dlogit_dln_speed }
     }
 
@@ -483,12 +499,15 @@ impl Joint {
         }
     }
 
-    /// The grease's yield torque at rest τ_y(T)·(2π − 2a/R)·R²·B (N·m) under `load` (N): what
-    /// the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
+    /// The grease's yield torque at rest τ_y(T)·2π·R²·B (N·m) under `load` (N), the same at
+    /// every load ([`crate::composite`]): what the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
     /// and for the paper's model.
     pub fn rest_yield_torque(&self, load: f64) -> f64 {
         match &self.complete {
-            Some(c) => c.yield_torque(0.0, self.hertz_unit.half_width * load.abs().sqrt()),
+            Some(c) => {
+                let _ = load;
+                c.yield_torque()
+            }
             None => 0.0,
         }
     }
@@ -496,7 +515,7 @@ impl Joint {
     /// The grease's yield torque at rest as a function of the load ([`Joint::rest_yield_torque`],
     /// for the fidelity levels' rest state).
     pub fn rest_yield(&self) -> crate::composite::RestYield {
-        crate::composite::RestYield::new(self.complete.as_ref(), self.hertz_unit.half_width)
+        crate::composite::RestYield::new(self.complete.as_ref())
     }
 
     /// The complete model's outputs that follow from the operating point and its film `film`
@@ -518,7 +537,7 @@ impl Joint {
                 } else {
                     0.0
                 };
-                (c.clearance_and_arc(w, a, u, film, line).0, w, eps, c.yield_torque(w, a))
+                (c.clearance_and_arc(a, u, film, line).0, w, eps, c.yield_torque())
             }
             None => (0.0, 0.0, eps, 0.0),
         }
@@ -722,7 +741,7 @@ impl Joint {
     /// The load-sharing solve and μ (eqs. 3, 8, 10) at the load of `lt` and speed u = |ω|R:
     /// (ln u, the solve, μ_fluid, μ_asperity, the complete model's parts). `omega` must be
     /// finite. μ_fluid is the lubricant's part of μ: Q_H/P_T (eq. 3) for the paper's model;
-    /// for the complete model ((1 − w)·Q_H·R + T_clearance + w·T_poiseuille)/(R·P)
+    /// for the complete model ((1 − w)·Q_H·R + T_clearance + T_poiseuille)/(R·P)
     /// ([`crate::composite`]), so that μ = μ_fluid + μ_asperity = T/(R·P) either way.
     fn solve_at(&self, lt: &LoadTerms, omega: f64, start: Start, sensitivities: bool) -> (f64, LoadSharing, f64, f64, Parts) {
         let p = &self.params;
@@ -737,7 +756,7 @@ impl Joint {
             }
             _ => (0.0, f64::NEG_INFINITY),
         };
-        let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s));
+        let journal = self.complete.as_ref().and_then(|c| c.journal_film(weight, ln_s, lt.ln_load, self.inlet));
         let guess = match start {
             Start::From(guess) if u > 0.0 => Some(self.start_from(guess, lt.ln_load, ln_u)),
             Start::From(guess) => guess,
@@ -765,7 +784,7 @@ impl Joint {
                 // Joint::clearance_outputs has it (the same bits on every path).
                 let line_of_film = (1.0 - weight) * contact_friction(lt, u, ln_u, ls.film_thickness.ln()) * rp;
                 let parts = c.parts(weight, ln_s, &ls, lt.hertz.half_width, lt.load, u, line_of_film);
-                let mu_fluid = (line + parts.clearance_torque + weight * parts.poiseuille_torque) / rp;
+                let mu_fluid = (line + parts.clearance_torque + parts.poiseuille_torque) / rp;
                 (ln_u, ls, mu_fluid, mu_asperity, parts)
             }
         }

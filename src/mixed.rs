@@ -167,9 +167,10 @@ pub fn solve_composite(
         // r(−∞): h_13 → ∞, h_J → c; the composite film is bounded only with w = 1, the
         // starved one by h_oil (the asperities carry everything there: ln x2 = 0).
         let ln_h = match journal {
-            Some(j) if j.weight >= 1.0 => j.ln_clearance,
-            // h_13 → ∞ capped at c, blended with h_J → c: c (to rounding).
-            Some(j) => (1.0 - j.weight) * j.ln_clearance + j.weight * j.ln_clearance,
+            // h_13 → ∞ capped at c; with the journal's h_J → c, their smooth maximum
+            // (c^8 + (w·c)^8)^(1/8).
+            Some(j) if j.weight > 0.0 => j.ln_clearance + (j.weight.powi(8)).ln_1p() / crate::composite::SMOOTH_MAX_EXPONENT,
+            Some(j) => j.ln_clearance,
             None => f64::INFINITY,
         };
         let ln_h = match starved {
@@ -304,6 +305,9 @@ pub struct JournalFilm<'a> {
     pub ln_clearance: f64,
     /// ε(S) of the joint's L/D.
     pub table: &'a crate::journal::JournalTable,
+    /// ln P* − ln P ≥ 0: the line contact's film in the composite is that at the load P*
+    /// ([`crate::composite::onset_load`]); 0 where the weight is 0.
+    pub ln_onset: f64,
 }
 
 impl JournalFilm<'_> {
@@ -325,7 +329,10 @@ impl Point {
         let sh = Shares::new(y);
         // Eq. 13 by eq. 12's substitution (film::ln_scaled_moes_grad): along y, ln x1 moves
         // by x2, and (ln M, ln L) by (1/2, 3/4) per unit ln x1.
-        let (ln_m, ln_l) = (film.ln_m + 0.5 * sh.ln_x1, film.ln_l + 0.75 * sh.ln_x1);
+        // In the complete model's transition the line contact's film is that of the load P*
+        // ≥ P (crate::composite::onset_load): ln M moves by ln P* − ln P (0.0 elsewhere, exactly).
+        let onset = journal.map_or(0.0, |j| j.ln_onset);
+        let (ln_m, ln_l) = (film.ln_m + onset + 0.5 * sh.ln_x1, film.ln_l + 0.75 * sh.ln_x1);
         // With `second`, only the derivatives along that direction (the gradient, for the
         // sensitivities, is then NaN).
         let (ln_hm, g_m, g_l, q1, d2m) = if second && gradient {
@@ -352,12 +359,18 @@ impl Point {
             dln_h *= wc;
             w = wc;
             if j.weight > 0.0 {
+                // The smooth maximum (crate::composite::smooth_max) of w·h_J and the line
+                // contact's film at P*: ln of (a⁸ + b⁸)^(1/8) = −ln of the power-law minimum of
+                // 1/a and 1/b, whose weight on a is a's share of the derivative.
                 d2ln_h = f64::NAN;
                 let (ln_hj, dj) = j.ln_film(sh.ln_x1);
-                ln_h = (1.0 - j.weight) * ln_h + j.weight * ln_hj;
-                dln_h = (1.0 - j.weight) * dln_h + j.weight * sh.x2 * dj;
-                w *= 1.0 - j.weight;
-                jp = j.weight * dj; // ln S − ln x1: ∂/∂ln P = ∂/∂ln x1
+                let (l, wj) = crate::starvation::ln_starved(-(j.weight.ln() + ln_hj), ln_h, crate::composite::SMOOTH_MAX_EXPONENT);
+                ln_h = -l;
+                dln_h = (1.0 - wj) * dln_h + wj * sh.x2 * dj;
+                // Above the onset the line contact's film no longer follows the load (P* is
+                // the onset's), nor does its part of the sensitivities.
+                w *= (1.0 - wj) * if j.ln_onset > 0.0 { 0.0 } else { 1.0 };
+                jp = wj * dj; // ln S − ln x1: ∂/∂ln P = ∂/∂ln x1
             }
         }
         // The starved inlet starves the (composite) film.

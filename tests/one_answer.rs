@@ -8,8 +8,10 @@
 //!   `model.paper = true` everywhere in the box.
 //! * Monotone in load: at fixed speed and temperature the torque never falls and the film
 //!   never thickens as the load rises (50 N to 200 kN, −55 to +120 °C, 0.01–100 rad/s, grease
-//!   on and off), strictly outside the journal ↔ line-contact transition; inside it, within
-//!   the measured bounds (not the strict property).
+//!   on and off, with and without a starved inlet), to 1e-12 between neighbouring loads,
+//!   inside the journal ↔ line-contact transition as outside it; the film also for joints of
+//!   other clearances, lengths, moduli and roughnesses (monotone by construction,
+//!   `pinjoint::composite`).
 //! * Raimondi & Boyd (1958, L/D = 1) at ε 0.8 and 0.9 on a rigid, wide-clearance bearing
 //!   (c = 100 µm) where the asperities are apart (λ ≥ 3) and the bush is rigid (w = 1):
 //!   within 5 %.
@@ -65,27 +67,44 @@ proptest! {
         prop_assert!(rel(a.torque, b.torque) <= 0.03, "{load} N {omega} rad/s {t} K: {} against the paper's {}", a.torque, b.torque);
     }
 
-    /// Torque non-decreasing and film non-increasing as the load rises, strictly wherever the
-    /// joint is a pure line contact or a pure journal (w = 0 or 1 at both neighbours). Inside
-    /// the journal ↔ line-contact transition (0 < w < 1) the strict property is NOT met:
-    /// there the steps are held to what was measured over the whole box (torque falls ≤ 7e-4,
-    /// film rises ≤ 4e-3 relative between loads 4.2 % apart; crate::composite), so that a
-    /// change making them worse fails.
+    /// Torque non-decreasing and film non-increasing as the load rises, at every weight.
     #[test]
-    fn monotone_in_load(omega in log_uniform(0.01, 100.0), t in 218.15f64..393.15, grease in prop::bool::ANY) {
+    fn monotone_in_load(omega in log_uniform(0.01, 100.0), t in 218.15f64..393.15, grease in prop::bool::ANY, starved in prop::bool::ANY) {
         let mut p = at(Params::default(), t);
         p.grease.enabled = grease;
-        let j = Joint::new(&p).unwrap();
-        let (mut t_prev, mut h_prev, mut p_prev, mut w_prev) = (0.0, f64::INFINITY, 0.0, 0.0f64);
-        for k in 0..=200 {
-            let load = 50.0 * 4000f64.powf(f64::from(k) / 200.0);
-            let op = j.evaluate(load, omega).unwrap();
-            let pure = (w_prev == 0.0 || w_prev == 1.0) && (op.journal_weight == 0.0 || op.journal_weight == 1.0);
-            let (tt, th) = if pure { (1e-12, 1e-12) } else { (7e-4, 4e-3) };
-            prop_assert!(op.torque >= t_prev * (1.0 - tt), "{omega} rad/s {t} K grease {grease}: torque {} at {load} N below {t_prev} at {p_prev} N (w {w_prev} -> {})", op.torque, op.journal_weight);
-            prop_assert!(op.film_thickness <= h_prev * (1.0 + th), "{omega} rad/s {t} K grease {grease}: film {} at {load} N above {h_prev} at {p_prev} N (w {w_prev} -> {})", op.film_thickness, op.journal_weight);
-            (t_prev, h_prev, p_prev, w_prev) = (op.torque, op.film_thickness, load, op.journal_weight);
+        if starved {
+            p.starvation.inlet_layer_inverse = 2e5; // a 5 µm layer
         }
+        let j = Joint::new(&p).unwrap();
+        assert_monotone(&j, omega, 50.0, 2e5, 200, true).map_err(TestCaseError::fail)?;
+    }
+
+    /// The composite film is monotone by construction: for other joints too (clearance,
+    /// length, modulus, roughness moved over wide ranges), the film never thickens as the load
+    /// rises. (The torque is not asserted here: where a cold, starved inlet holds the film
+    /// nearly constant, eq. 19's asperity relation, which depends on the whole load through
+    /// the Hertz area and not on the asperities' share alone, can let the asperities' torque
+    /// fall by parts per million: 4e-6 found for a joint 2.4× longer, 3.9× stiffer, 0.44×
+    /// as rough at −24 °C, 1 rad/s, 50 N.)
+    #[test]
+    fn the_film_thins_as_the_load_rises_for_any_joint(
+        omega in log_uniform(0.01, 100.0),
+        t in 218.15f64..393.15,
+        clearance in log_uniform(5e-6, 300e-6),
+        length_factor in 0.3f64..3.0,
+        modulus_factor in log_uniform(0.01, 100.0),
+        roughness_factor in log_uniform(0.2, 5.0),
+    ) {
+        let mut p = at(Params::default(), t);
+        p.geometry.bush_radius = p.geometry.pin_radius + clearance;
+        p.geometry.bush_length *= length_factor;
+        p.materials.pin_elastic_modulus *= modulus_factor;
+        p.materials.bush_elastic_modulus *= modulus_factor;
+        p.surface.summit_height_std *= roughness_factor;
+        p.surface.pin_rms_roughness *= roughness_factor;
+        p.surface.bush_rms_roughness *= roughness_factor;
+        let Ok(j) = Joint::new(&p) else { return Ok(()) };
+        assert_monotone(&j, omega, 50.0, 2e5, 120, false).map_err(TestCaseError::fail)?;
     }
 
     /// Zero yield stress and consistency, the supply limit off: the base oil alone.
@@ -100,6 +119,43 @@ proptest! {
         let (a, b) = (Joint::new(&g).unwrap().evaluate(load, omega).unwrap(), Joint::new(&off).unwrap().evaluate(load, omega).unwrap());
         for (name, x, y) in [("torque", a.torque, b.torque), ("film", a.film_thickness, b.film_thickness), ("clearance torque", a.clearance_torque, b.clearance_torque)] {
             prop_assert!(rel(x, y) <= 1e-12 || (x - y).abs() <= 1e-15, "{}: {} vs {} at {} N {} rad/s {} K", name, x, y, load, omega, t);
+        }
+    }
+}
+
+/// Walks `n + 1` loads log-spaced from `lo` to `hi` N at `omega`: the film never thickens (to
+/// 1e-12 relative) and, with `torque`, the torque never falls.
+fn assert_monotone(j: &Joint, omega: f64, lo: f64, hi: f64, n: u32, torque: bool) -> Result<(), String> {
+    let (mut t_prev, mut h_prev, mut p_prev, mut w_prev) = (0.0, f64::INFINITY, 0.0, 0.0f64);
+    for k in 0..=n {
+        let load = lo * (hi / lo).powf(f64::from(k) / f64::from(n));
+        let Ok(op) = j.evaluate(load, omega) else { continue };
+        if torque && op.torque < t_prev * (1.0 - 1e-12) {
+            return Err(format!("{omega} rad/s: torque {} at {load} N below {t_prev} at {p_prev} N (w {w_prev} -> {})", op.torque, op.journal_weight));
+        }
+        if op.film_thickness > h_prev * (1.0 + 1e-12) {
+            return Err(format!("{omega} rad/s: film {} at {load} N above {h_prev} at {p_prev} N (w {w_prev} -> {})", op.film_thickness, op.journal_weight));
+        }
+        (t_prev, h_prev, p_prev, w_prev) = (op.torque, op.film_thickness, load, op.journal_weight);
+    }
+    Ok(())
+}
+
+/// The grid, densely: 36 temperatures (−55 to +120 °C) × 17 speeds (0.01–100 rad/s) ×
+/// 401 loads (50 N to the declared load edge and on to 200 kN), grease on and off.
+#[test]
+fn monotone_in_load_on_a_dense_grid() {
+    for grease in [true, false] {
+        for it in 0..36 {
+            let mut p = at(Params::default(), 218.15 + 5.0 * f64::from(it));
+            p.grease.enabled = grease;
+            let j = Joint::new(&p).unwrap();
+            for io in 0..17 {
+                let omega = 0.01 * 10f64.powf(f64::from(io) / 4.0);
+                if let Err(e) = assert_monotone(&j, omega, 50.0, 2e5, 400, true) {
+                    panic!("{} K, grease {grease}: {e}", p.lubricant.temperature);
+                }
+            }
         }
     }
 }

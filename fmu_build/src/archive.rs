@@ -2,7 +2,7 @@
 
 use crate::error::BuildError;
 use crate::extras;
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 use std::io::Write;
 use std::path::Path;
 use zip::write::SimpleFileOptions;

@@ -184,7 +184,7 @@ pub fn model_png() -> Vec<u8> {
 
 /// A PNG of 8-bit RGB scanlines `raw` (each prefixed by its filter byte).
 fn png(w: u32, h: u32, raw: &[u8]) -> Vec<u8> {
-    use fmi_layer::fmi2::bytes::crc32;
+    use fmi_layer::core::bytes::crc32;
     let mut z = vec![0x78, 0x01];
     let blocks: Vec<&[u8]> = raw.chunks(65535).collect();
     for (i, b) in blocks.iter().enumerate() {

@@ -6,7 +6,7 @@
 
 use crate::error::BuildError;
 use crate::extras::Entry;
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 use fmi_layer::fmi3::xml::model_description;
 use std::path::{Path, PathBuf};
 

@@ -20,7 +20,7 @@ mod archive;
 mod fmi3;
 
 use error::BuildError;
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 use fmi_layer::fmi2::xml::model_description;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

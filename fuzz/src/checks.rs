@@ -341,9 +341,9 @@ pub mod fmi {
     use fmi_layer::fmi2::api::common::*;
     use pinjoint_fmu::fmi2Instantiate;
     use fmi_layer::fmi2::api::model_exchange::*;
-    use fmi_layer::fmi2::bytes::crc32;
+    use fmi_layer::core::bytes::crc32;
     use fmi_layer::fmi2::types::*;
-    use fmi_layer::fmi2::variables::{Causality, Kind, ModelInfo, Variable};
+    use fmi_layer::core::variables::{Causality, Kind, ModelInfo, Variable};
     use std::ffi::{c_char, CStr};
     use std::ptr::{null, null_mut};
 
@@ -716,7 +716,7 @@ pub mod fmi {
                         for vr in &vrs {
                             let var = info.index_of(*vr).map(|i| &info.variables[i]);
                             assert!(
-                                var.is_some_and(|v| want.is_some_and(|w| v.kind.fmi2_accessed_as(w)) && (which.is_multiple_of(2) || v.causality != Causality::Output)),
+                                var.is_some_and(|v| want.is_some_and(|w| fmi_layer::fmi2::api::common::accessed_as(v.kind, w)) && (which.is_multiple_of(2) || v.causality != Causality::Output)),
                                 "typed call {which} returned fmi2OK for value reference {vr} ({:?})",
                                 var.map(|v| (&v.name, v.kind, v.causality))
                             );

@@ -86,8 +86,13 @@ pub fn clearance_torque_tabulated(table: &PowerLawTable, rheology: &GreaseRheolo
 /// lubricant's flow (its power-law and Newtonian parts; the yield part is the rest torque's)
 /// would transmit over that arc (the whole clearance's minus the outside's, ≥ 0):
 /// (outside, arc), N·m.
+///
+/// The outside's yield part is the whole circumference's, τ_y·2π·R²·B: the contact arc takes
+/// the grease's flow from the clearance, not its yield (so that no part of the torque falls as
+/// the arc widens with the load, [`crate::composite`]).
 pub fn clearance_and_arc_torque(table: &PowerLawTable, rheology: &GreaseRheology, geometry: &ClearanceGeometry, sliding_speed: f64, eps_g: f64, theta_c: f64) -> (ClearanceTorque, f64) {
     let outside = clearance_torque_tabulated(table, rheology, geometry, sliding_speed, eps_g, theta_c);
+    let outside = ClearanceTorque { yield_part: yield_torque(rheology, geometry.radius, geometry.length, 0.0), ..outside };
     if theta_c <= 0.0 {
         return (outside, 0.0);
     }

@@ -44,7 +44,7 @@ pub mod sim;
 pub mod analysis;
 pub mod record;
 
-pub use analysis::{cycle_average_friction_coefficient, energy_residual, run_cycles};
+pub use analysis::{core_torque, cycle_average_friction_coefficient, energy_residual, run_cycles, stroke_average, time_mean};
 pub use config::RigConfig;
 pub use dynamics::Phase;
 pub use excitation::{Excitation, FnExcitation, Inputs, SineCommand, SineDrive, StepLoad};

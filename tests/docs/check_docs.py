@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Docs that cannot rot: checks README.md and docs/*.md against the repository.
+"""Docs that cannot rot: checks README.md, BENCHMARKS.md and docs/*.md against the repository.
 
     python3 tests/docs/check_docs.py            links, anchors, quoted numbers (no build needed)
     python3 tests/docs/check_docs.py --run      the same, and every example marked runnable
@@ -8,6 +8,8 @@
     python3 tests/docs/check_docs.py --update-numbers  rewrite the tied numbers from it
 
 Checks:
+- no generated file (callgrind_*, *.svg) lies at the repository's root: they go to
+  benches/results/ (BENCHMARKS.md, checked with the pages, links its pictures there);
 - every relative link and image (`[text](path#anchor)`) resolves to a file or folder of the
   repository, and its anchor to a heading of the target page (GitHub's anchor rules: lower
   case, punctuation dropped, spaces to hyphens, `-1`, `-2` for repeats); links to pages
@@ -52,9 +54,21 @@ QUOTE_END = "<!-- end of numbers from "
 
 
 def pages(root):
-    out = [root / "README.md"]
+    out = [root / "README.md", root / "BENCHMARKS.md"]
     out += sorted((root / "docs").glob("*.md"))
     return [p for p in out if p.exists()]
+
+
+# Generated files that belong in benches/results/, never at the repository's root: the
+# callgrind profiles (benches/callgrind.sh) and the pictures (pinjoint-bench's plots).
+RESULTS = "benches/results"
+ROOT_GENERATED = ("callgrind_*", "*.svg")
+
+
+def check_clean_root(root):
+    """Measurement dumps and pictures at the root: one problem each (they go to benches/results/)."""
+    found = sorted({p.name for pattern in ROOT_GENERATED for p in root.glob(pattern) if p.is_file()})
+    return [f"{name}: a generated file at the repository's root (its place is {RESULTS}/)" for name in found]
 
 
 def split_blocks(text):
@@ -393,12 +407,16 @@ def self_test():
             "<!-- runnable -->\n```sh\nexit 3\n```\n"
             "<!-- numbers from GEN.md: checked -->\n| 1.25 | 3e-5 | 7.5 |\n<!-- end of numbers from GEN.md -->\n")
         (root / "docs/a.md").write_text("# A page\n")
+        (root / "callgrind_sweep.txt").write_text("# profile\n")
+        (root / "bench_rig.svg").write_text("<svg></svg>\n")
         files = pages(root)
-        got = check_links(root, files)
+        got = check_links(root, files) + check_clean_root(root)
         blocks, marker_problems = runnable_blocks(root, files)
         got += marker_problems + run_blocks(root, blocks) + check_quoted_numbers(root, files)
         expected = ["docs/none.md does not exist", "no heading with anchor #nowhere", "points outside the repository",
-                    "is not followed by a fenced code block", "exit status 3", "7.5 is not a number of GEN.md"]
+                    "is not followed by a fenced code block", "exit status 3", "7.5 is not a number of GEN.md",
+                    "callgrind_sweep.txt: a generated file at the repository's root",
+                    "bench_rig.svg: a generated file at the repository's root"]
         missing = [e for e in expected if not any(e in g for g in got)]
         extra = [g for g in got if not any(e in g for e in expected)]
         assert not missing and len(got) == len(expected), f"self-test: missing {missing}, unexpected {extra}"
@@ -413,7 +431,7 @@ def main(argv):
         problems = check_api_docs(ROOT)
     else:
         files = pages(ROOT)
-        problems = check_links(ROOT, files) + check_quoted_numbers(ROOT, files) + check_fmu_page(ROOT)
+        problems = check_links(ROOT, files) + check_quoted_numbers(ROOT, files) + check_fmu_page(ROOT) + check_clean_root(ROOT)
         tied, counts = check_tied_numbers(ROOT, run="--run" in argv or "--numbers" in argv,
                                           update="--update-numbers" in argv)
         problems += tied

@@ -450,7 +450,7 @@ JOURNAL_BEARING = {
     "eta.m54": "lib('base_oil.viscosity.-54')",
     "eta.m73": "1e-3*lib('base_oil.viscosity.-73')",
     **{f"cl.y.{e}": f"lib('clearance.yield.-54.Ey.{e}')" for e in (2440, 3440, 4440)},
-    **{f"cl.p.{e}": f"lib('clearance.power.-54.EK.{e}')" for e in (3790, 4790, 5790)},
+    **{f"cl.p.{e}": f"lib('clearance.power.-54.EK.{e}')" for e in (3906, 4906, 5906)},
     "cl.b.m54": "lib('clearance.base.-54')",
     "cl.y.20": "lib('clearance.yield.20')",
     "cl.p.20": "lib('clearance.power.20')",

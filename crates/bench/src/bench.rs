@@ -1,5 +1,5 @@
 //! `pinjoint-bench --output DIR`: the work-precision report of issue 6, measured in one run on
-//! this machine: `DIR/BENCHMARKS.md` with SVG plots beside it.
+//! this machine: `DIR/BENCHMARKS.md`, its SVG plots in `DIR/benches/results/`.
 
 use super::bench_eval::{self, EvalResult};
 use super::bench_calibrate;
@@ -7,8 +7,8 @@ use super::bench_batch;
 use super::bench_report::{write_calibration_only, write_report, FmuSection, Report};
 use super::bench_rig::{self, RigResult};
 use super::bench_throughput;
-use pinjoint_cli::error::{CliError, Result};
-use pinjoint_cli::output::{output_dir, report_written};
+use super::bench_error::{BenchError, Result};
+use super::bench_output::{output_dir, report_written};
 use clap::Parser;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -17,7 +17,7 @@ use std::time::Instant;
 #[derive(Parser, Debug)]
 #[command(
     about = "Measure speed against error (per evaluation, per rig cycle run, per FMU step) into DIR/BENCHMARKS.md",
-    long_about = "Measure, in one run on this machine, and write DIR/BENCHMARKS.md with SVG plots beside it:\n  \
+    long_about = "Measure, in one run on this machine, and write DIR/BENCHMARKS.md with its SVG plots in DIR/benches/results/:\n  \
 per evaluation: ns against the largest relative error in μ and torque for full (cold, warm), table at \
 several tolerances and boundary, over two envelopes spanning the regimes;\n  \
 per cycle simulation: wall time of 10 strokes of the 1 Hz rig at 20 kN against the torque error versus a \
@@ -37,7 +37,7 @@ Timings are never asserted; the machine's load shows in them (fastest and median
 Examples:\n  pinjoint-bench --output .\n  pinjoint-bench --output /tmp/b --quick"
 )]
 pub struct BenchCmd {
-    /// Output directory (BENCHMARKS.md and bench_*.svg)
+    /// Output directory (BENCHMARKS.md; its plots bench_*.svg in DIR/benches/results)
     #[arg(long, value_name = "DIR")]
     pub output: PathBuf,
     /// A few cases, few repetitions: every file, no meaningful figures (for a smoke test)
@@ -104,17 +104,50 @@ fn fmu_section(cmd: &BenchCmd) -> FmuSection {
         Ok(o) if !o.status.success() => {
             FmuSection::Unavailable(format!("{} failed: {}", script.display(), String::from_utf8_lossy(&o.stderr).lines().last().unwrap_or("")))
         }
-        Ok(o) => match serde_json::from_slice(&o.stdout) {
-            Ok(v) => FmuSection::Measured(v),
+        Ok(o) => match serde_json::from_slice::<serde_json::Value>(&o.stdout) {
+            Ok(mut v) => {
+                let steps: usize = steps.parse().unwrap_or(20_000);
+                v["solve_ns"] = serde_json::json!(solve_floor_ns(steps, v["step_size"].as_f64().unwrap_or(1e-3)));
+                FmuSection::Measured(v)
+            }
             Err(e) => FmuSection::Unavailable(format!("unreadable output of {}: {e}", script.display())),
         },
     }
 }
 
+/// The complete solve a full-fidelity PinJoint step makes, in this process on one thread: ns
+/// per step, the fastest of 7 passes over the fmpy loop's inputs (benches/fmu_step.py: the
+/// 1 Hz ±40° stroke at 20 kN ± 10 %, `steps` steps of `h` s from t = 0), each a cold
+/// [`pinjoint::Joint::evaluate`] at the FMU's default parameters, as the FMU evaluates (cold
+/// every step, so that its outputs are a function of its inputs). The FMU step can cost no
+/// less than the pass-through's plus this.
+fn solve_floor_ns(steps: usize, h: f64) -> f64 {
+    use std::f64::consts::PI;
+    let Ok(joint) = pinjoint::Joint::new(&pinjoint::Params::default()) else { return f64::NAN };
+    let a = 40f64.to_radians();
+    let inputs: Vec<(f64, f64)> = (0..steps)
+        .map(|k| {
+            let t = k as f64 * h;
+            (20e3 * (1.0 + 0.1 * (0.3 * t).sin()), a * 2.0 * PI * (2.0 * PI * t).cos())
+        })
+        .collect();
+    (0..7)
+        .map(|_| {
+            let t0 = Instant::now();
+            let mut acc = 0.0;
+            for &(p, w) in &inputs {
+                acc += joint.evaluate(std::hint::black_box(p), std::hint::black_box(w)).map_or(f64::NAN, |o| o.torque);
+            }
+            std::hint::black_box(acc);
+            t0.elapsed().as_secs_f64() * 1e9 / steps as f64
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
 pub fn run(cmd: &BenchCmd) -> Result<()> {
     let started = Instant::now();
     let dir = output_dir(&cmd.output)?;
-    let work = tempfile::tempdir().map_err(|source| CliError::Write { path: std::env::temp_dir(), source })?;
+    let work = tempfile::tempdir().map_err(|source| BenchError::Write { path: std::env::temp_dir(), source })?;
     if cmd.only_calibration {
         let calibration = bench_calibrate::measure(cmd.quick, work.path(), &progress);
         let path = write_calibration_only(&dir, &calibration, cmd.quick, started.elapsed().as_secs_f64())?;
@@ -139,7 +172,7 @@ pub fn run(cmd: &BenchCmd) -> Result<()> {
     let report = Report { quick: cmd.quick, eval, rig, fmu, throughput, calibration, batch, seconds: started.elapsed().as_secs_f64() };
     let paths = write_report(&dir, &report)?;
     if paths.is_empty() {
-        return Err(CliError::Invalid("bench: nothing written".into()));
+        return Err(BenchError::Invalid("bench: nothing written".into()));
     }
     report_written(&paths)
 }

@@ -91,3 +91,36 @@ mod tests {
         assert_eq!(ThroughputError::Write { path: PathBuf::from("/t/in.csv"), source }.to_string(), expected);
     }
 }
+
+/// What ends a benchmark run ([`crate::main`] prints it as `error: ...` and exits 1); the
+/// sections that can go unmeasured say so in the report instead ([`ThroughputError`]).
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    /// An output file or directory (`path`) could not be written.
+    #[error("cannot write {}: {source}", path.display())]
+    Write {
+        /// The file or directory.
+        path: PathBuf,
+        /// The operating system's error.
+        source: std::io::Error,
+    },
+    /// Standard output could not be written (a closed pipe ends the run quietly).
+    #[error("cannot write to standard output: {0}")]
+    Stdout(#[source] std::io::Error),
+    /// A plot could not be rendered.
+    #[error(transparent)]
+    Plot(#[from] pinjoint_plot::PlotError),
+    /// Anything else, said in words.
+    #[error("{0}")]
+    Invalid(String),
+}
+
+impl BenchError {
+    /// True for a write to a closed standard output (`pinjoint-bench ... | head`).
+    pub fn is_broken_pipe(&self) -> bool {
+        matches!(self, BenchError::Stdout(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
+    }
+}
+
+/// The benchmark's result type.
+pub type Result<T> = std::result::Result<T, BenchError>;

@@ -9,7 +9,7 @@
 //! used, so every run's sample times are reference sample times. The eq. 11 cycle average is
 //! reported beside it (relative error of the mean |T| over cycles 2..10).
 
-use pinjoint_cli::error::Result;
+use super::bench_error::Result;
 use pinjoint::fidelity::Fidelity;
 use pinjoint::rig::{cycle_average_friction_coefficient, Formulation, Method, RigConfig, RigError, RigSim, Sample, Stats};
 use std::time::Instant;
@@ -163,7 +163,7 @@ pub fn reference(quick: bool) -> Result<Vec<Sample>> {
         samples_per_cycle: REFERENCE_SAMPLES,
         table: None,
     };
-    run_once(&case).map(|r| r.0).map_err(|e| pinjoint_cli::error::CliError::Invalid(format!("bench: the reference rig run failed: {e}")))
+    run_once(&case).map(|r| r.0).map_err(|e| super::bench_error::BenchError::Invalid(format!("bench: the reference rig run failed: {e}")))
 }
 
 /// (largest |ΔT| / peak |T_ref|, relative error of the eq. 11 average).

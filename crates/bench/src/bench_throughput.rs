@@ -21,6 +21,9 @@ pub struct SweepRun {
     pub seconds: f64,
     /// Peak resident memory of the process, in MiB (from `getrusage`).
     pub peak_rss_mib: f64,
+    /// CPU time of the process, user + system, in s (from `wait4`'s rusage): what the work
+    /// costs whatever else the machine runs (the wall time grows with the load, this less).
+    pub cpu_seconds: f64,
 }
 
 /// The SciPy reference on the first rows of the sweep's output.
@@ -58,6 +61,11 @@ pub struct Throughput {
     pub parquet_ratio: f64,
     /// pyarrow's `read_table` of that Parquet file (s, best of 3), or why not.
     pub pyarrow_read: Result<f64, String>,
+    /// Each repeat's Parquet / CSV CPU-time ratio at boundary fidelity, their median.
+    pub parquet_cpu_ratio: f64,
+    /// What both boundary sweeps do whatever their output, measured in this process on one
+    /// thread over the same rows: [`SharedFloor`].
+    pub shared_floor: SharedFloor,
     /// The same sweep with `[model] paper = true` (the model the SciPy reference implements),
     /// fastest of the repeats.
     pub paper_sweep: SweepRun,
@@ -67,6 +75,77 @@ pub struct Throughput {
     pub paper_mixed_cold_ns: f64,
     /// The SciPy reference on the paper model's sweep output, or why it could not run.
     pub scipy: Result<Scipy, ThroughputError>,
+}
+
+/// The part of a boundary sweep that does not depend on its output format, in CPU seconds for
+/// all the rows, one thread (its CPU time, the fastest of three passes): a lower bound of what
+/// either output's sweep costs in CPU.
+#[derive(Debug, Clone, Copy)]
+pub struct SharedFloor {
+    /// The level's answer and its operating point (every output column) per row: the boundary
+    /// level built as the sweep builds it (over the rows' own ranges), `evaluate` then
+    /// `operating_point`.
+    pub evaluate: f64,
+    /// Reading the input's two numbers per row: split at the comma and parsed (`str::parse`),
+    /// from text in memory; the sweep does it twice (a first pass finds the envelope) and
+    /// also reads the file and checks each field, so this is a lower bound of its parse.
+    pub parse: f64,
+}
+
+/// This thread's CPU time, s (`CLOCK_THREAD_CPUTIME_ID`): what its work cost, whatever else
+/// the machine runs meanwhile (compared with the sweeps' CPU time).
+fn thread_cpu() -> f64 {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    // SAFETY: clock_gettime writes the timespec it is given.
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
+}
+
+/// Measure [`SharedFloor`] over `pts` as the sweep's input holds them, in CPU time of this
+/// thread (the fastest of three passes).
+fn shared_floor(pts: &[(f64, f64)]) -> SharedFloor {
+    use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
+    let (mut lo, mut hi) = ((f64::INFINITY, f64::INFINITY), (0.0f64, 0.0f64));
+    for &(p, w) in pts {
+        (lo.0, hi.0, lo.1, hi.1) = (lo.0.min(p.abs()), hi.0.max(p.abs()), lo.1.min(w.abs()), hi.1.max(w.abs()));
+    }
+    let env = Envelope { load_min: lo.0, load_max: hi.0, speed_min: lo.1, speed_max: hi.1 };
+    let evaluate = match Evaluator::new(&Params::default(), Fidelity::Boundary, 1e-4, env) {
+        Ok(mut ev) => (0..3)
+            .map(|_| {
+                let t = thread_cpu();
+                let mut acc = 0.0;
+                for &(p, w) in pts {
+                    if let Ok(e) = ev.evaluate(black_box(p), black_box(w)) {
+                        let op = ev.operating_point(&e);
+                        acc += op.torque + op.clearance_torque + op.min_film_thickness;
+                    }
+                }
+                black_box(acc);
+                thread_cpu() - t
+            })
+            .fold(f64::INFINITY, f64::min),
+        Err(_) => f64::NAN,
+    };
+    let mut text = String::with_capacity(pts.len() * 40);
+    for (p, w) in pts {
+        text.push_str(&format!("{p:?},{w:?}\n"));
+    }
+    let parse = (0..3)
+        .map(|_| {
+            let t = thread_cpu();
+            let mut acc = 0.0;
+            for line in black_box(&text).lines() {
+                let mut f = line.split(',');
+                let p: f64 = f.next().and_then(|x| x.parse().ok()).unwrap_or(0.0);
+                let w: f64 = f.next().and_then(|x| x.parse().ok()).unwrap_or(0.0);
+                acc += p + w;
+            }
+            black_box(acc);
+            thread_cpu() - t
+        })
+        .fold(f64::INFINITY, f64::min);
+    SharedFloor { evaluate, parse }
 }
 
 /// Deterministic rows over 5–60 kN and 1e-3–100 rad/s (both signs), log-uniform.
@@ -110,7 +189,8 @@ fn sweep_child(exe: &Path, input: &Path, output: &Path, rows: usize, extra: &[&s
         return Err(ThroughputError::Sweep { rows, status });
     }
     // ru_maxrss is in KiB on Linux.
-    Ok(SweepRun { rows, seconds, peak_rss_mib: usage.ru_maxrss as f64 / 1024.0 })
+    let tv = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+    Ok(SweepRun { rows, seconds, peak_rss_mib: usage.ru_maxrss as f64 / 1024.0, cpu_seconds: tv(usage.ru_utime) + tv(usage.ru_stime) })
 }
 
 fn scipy(python: &Path, sweep_output: &Path, points: usize) -> Result<Scipy, ThroughputError> {
@@ -191,6 +271,7 @@ pub fn measure(quick: bool, python: &Path, package_python: &Path, work: &Path, p
     // Interleaved: the complete model's sweep, at boundary fidelity (its floor), and the
     // paper's, repeat by repeat.
     let (mut runs, mut boundary_runs, mut paper_runs, mut parquet_runs, mut parquet_ratios) = (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let mut parquet_cpu_ratios = Vec::new();
     let out_parquet = work.join("sweep_out.parquet");
     let boundary: [&std::ffi::OsStr; 2] = ["--fidelity".as_ref(), "boundary".as_ref()];
     let paper_args: [&std::ffi::OsStr; 2] = ["--params".as_ref(), paper_toml.as_os_str()];
@@ -200,6 +281,8 @@ pub fn measure(quick: bool, python: &Path, package_python: &Path, work: &Path, p
         parquet_runs.push(sweep_child(&exe, &big_in, &out_parquet, rows, &boundary)?);
         let (b, q) = (boundary_runs[boundary_runs.len() - 1].seconds, parquet_runs[parquet_runs.len() - 1].seconds);
         parquet_ratios.push(q / b);
+        let (b, q) = (boundary_runs[boundary_runs.len() - 1].cpu_seconds, parquet_runs[parquet_runs.len() - 1].cpu_seconds);
+        parquet_cpu_ratios.push(q / b);
         paper_runs.push(sweep_child(&exe, &big_in, &out, rows, &paper_args)?);
     }
     let fastest = |runs: &[SweepRun]| {
@@ -209,6 +292,9 @@ pub fn measure(quick: bool, python: &Path, package_python: &Path, work: &Path, p
     let (sweep, boundary_sweep, paper_sweep) = (fastest(&runs), fastest(&boundary_runs), fastest(&paper_runs));
     let (parquet_sweep, parquet_ratio) = (fastest(&parquet_runs), median(parquet_ratios));
     let pyarrow_read = pyarrow_read(package_python, &out_parquet);
+    progress("throughput: the boundary sweep's shared floor (evaluation, parse), one thread");
+    let shared_floor = shared_floor(&pts);
+    let parquet_cpu_ratio = median(parquet_cpu_ratios);
     progress("throughput: library cold evaluation per point");
     let mut paper = Params::default();
     paper.model.paper = true;
@@ -218,7 +304,7 @@ pub fn measure(quick: bool, python: &Path, package_python: &Path, work: &Path, p
     // The last sweep written was the paper model's: its output is what SciPy checks.
     let scipy = scipy(python, &out, if quick { 20 } else { 300 });
     let _ = [big_in, small_in, out, paper_toml, out_parquet].iter().try_for_each(std::fs::remove_file);
-    Ok(Throughput { sweep, small, model_ns, mixed_cold_ns, threads: rayon::current_num_threads(), boundary_sweep, parquet_sweep, parquet_ratio, pyarrow_read, paper_sweep, paper_model_ns, paper_mixed_cold_ns, scipy })
+    Ok(Throughput { sweep, small, model_ns, mixed_cold_ns, threads: rayon::current_num_threads(), boundary_sweep, parquet_sweep, parquet_ratio, pyarrow_read, parquet_cpu_ratio, shared_floor, paper_sweep, paper_model_ns, paper_mixed_cold_ns, scipy })
 }
 
 /// The library's cold evaluation of `j`, one thread: (ns per point over the first rows of

@@ -6,6 +6,7 @@
 mod alloc_count;
 mod rng;
 mod bench_error;
+mod bench_output;
 mod bench_rig;
 mod bench_throughput;
 mod bench_calibrate;

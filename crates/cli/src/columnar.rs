@@ -112,39 +112,38 @@ impl<W: Write + Send> ParquetSink<W> {
     }
 
     /// Append the rows of `blocks`, in order: each block one [`Values`] per column, every
-    /// column of a block as long.
-    pub fn write(&mut self, blocks: &[&[Values]]) -> io::Result<()> {
-        let rows: usize = blocks.iter().map(|b| b.first().map_or(0, Values::len)).sum();
-        if rows == 0 {
-            return Ok(());
-        }
+    /// column of a block as long. Each block is written as it is (its number columns move
+    /// into the file's arrays without a copy; the writer closes a row group every
+    /// [`ROW_GROUP_ROWS`] rows whatever the blocks' sizes).
+    pub fn write_owned(&mut self, blocks: impl IntoIterator<Item = Vec<Values>>) -> io::Result<()> {
         let ncols = self.schema.fields().len();
-        let mut arrays: Vec<ArrayRef> = Vec::with_capacity(ncols);
-        for c in 0..ncols {
-            let array: ArrayRef = match blocks.first().map(|b| &b[c]) {
-                Some(Values::Number(_)) => {
-                    let mut v = Vec::with_capacity(rows);
-                    for b in blocks {
-                        if let Values::Number(x) = &b[c] {
-                            v.extend_from_slice(x);
+        for block in blocks {
+            let rows = block.first().map_or(0, Values::len);
+            if rows == 0 {
+                continue;
+            }
+            if block.len() != ncols || block.iter().any(|c| c.len() != rows) {
+                return Err(io::Error::other(format!("a block of {} columns for a schema of {ncols}, or of unequal columns", block.len())));
+            }
+            let arrays: Vec<ArrayRef> = block
+                .into_iter()
+                .map(|c| -> ArrayRef {
+                    match c {
+                        Values::Number(v) => Arc::new(Float64Array::from(v)),
+                        other => {
+                            let mut t = StringBuilder::with_capacity(rows, rows * 8);
+                            for v in text_of(&other) {
+                                t.append_value(v);
+                            }
+                            Arc::new(t.finish())
                         }
                     }
-                    Arc::new(Float64Array::from(v))
-                }
-                _ => {
-                    let mut t = StringBuilder::with_capacity(rows, rows * 8);
-                    for b in blocks {
-                        for v in text_of(&b[c]) {
-                            t.append_value(v);
-                        }
-                    }
-                    Arc::new(t.finish())
-                }
-            };
-            arrays.push(array);
+                })
+                .collect();
+            let batch = RecordBatch::try_new(self.schema.clone(), arrays).map_err(|e| io::Error::other(e.to_string()))?;
+            self.writer.write(&batch).map_err(to_io)?;
         }
-        let batch = RecordBatch::try_new(self.schema.clone(), arrays).map_err(|e| io::Error::other(e.to_string()))?;
-        self.writer.write(&batch).map_err(to_io)
+        Ok(())
     }
 
     /// Write the footer (the file is complete only then) and flush.
@@ -190,7 +189,7 @@ pub fn points_parquet(w: &mut (dyn Write + Send), ops: &[OperatingPoint]) -> io:
             }
             push_result(&mut cols[3..], op);
         }
-        sink.write(&[&cols])?;
+        sink.write_owned([cols])?;
     }
     sink.finish()
 }

@@ -7,12 +7,15 @@
 //!   (`commands/point.rs`) and a folder for one with parts (`commands/figures/`,
 //!   `commands/cycle/`, `commands/sweep/`, `commands/calibrate/`, each with its command in
 //!   `mod.rs` and its parts beside it);
-//! - the pieces the commands share, at the top level: [`exact`] (round-trip numbers for CSV),
-//!   [`numbers`] (numbers for people), [`plot`] (SVG charts), [`error`] (the commands' error
-//!   type), [`common`] (the `--params` flag, speed flags, the CSV result columns, the rig's
-//!   operating region), [`output`] (the rules every output file follows), [`fidelity_args`]
-//!   (the `--fidelity` and envelope flags of `point` and `sweep`) and [`curves`] (the speed
-//!   sweeps `stribeck` and `map` share);
+//! - the pieces the commands share, at the top level (a command never imports another
+//!   command: `tests/commands_independent.rs`): [`exact`] (round-trip numbers for CSV),
+//!   [`numbers`] (numbers for people), [`plot`] (SVG charts, the crate `pinjoint-plot`),
+//!   [`error`] (the commands' error type), [`common`] (the `--params` flag, speed flags, the
+//!   CSV result columns, the rig's operating region), [`output`] (the rules every output file
+//!   follows), [`fidelity_args`] (the `--fidelity` and envelope flags of `point` and `sweep`),
+//!   [`curves`] (the speed sweeps, and the paper's Figures 3 and 4 that `stribeck`, `map` and
+//!   `figures` write), [`rig_run`] (one rig simulation of whole strokes and its averages) and
+//!   [`rig_plots`] (its charts), both used by `cycle` and `figures`;
 //! - this file: the parsed arguments ([`Cli`], [`Command`]) and the dispatch ([`run`],
 //!   [`main`]).
 //!
@@ -23,13 +26,16 @@
 // Shared pieces:
 pub mod exact;
 pub mod numbers;
-pub mod plot;
+/// SVG charts: the crate `pinjoint-plot` (axes, line charts, heat maps).
+pub use pinjoint_plot as plot;
 pub mod error;
 pub mod common;
 pub mod output;
 pub mod columnar;
 pub mod fidelity_args;
 pub mod curves;
+pub mod rig_run;
+pub mod rig_plots;
 // The subcommands:
 pub mod commands;
 

@@ -9,22 +9,9 @@ pub fn readable(v: f64) -> String {
     trimmed(v, 6, 5)
 }
 
-/// `v` with trailing zeros trimmed: in fixed notation with `digits` significant digits (at
-/// most `digits + 2` decimals) for 1e-3 ≤ |v| < 10^(digits + 1), else in scientific notation
-/// with `sci_decimals` decimals in the mantissa. [`readable`] and the plots' tick labels.
-pub fn trimmed(v: f64, digits: i32, sci_decimals: usize) -> String {
-    let a = v.abs();
-    if (1e-3..10f64.powi(digits + 1)).contains(&a) {
-        let decimals = (digits - 1 - a.log10().floor() as i32).clamp(0, digits + 2) as usize;
-        let s = format!("{v:.decimals$}");
-        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
-    } else {
-        let s = format!("{v:.sci_decimals$e}");
-        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
-        let m = if m.contains('.') { m.trim_end_matches('0').trim_end_matches('.') } else { m };
-        format!("{m}e{e}")
-    }
-}
+/// `v` with trailing zeros trimmed to `digits` significant digits ([`pinjoint::fmt::trimmed`]:
+/// [`readable`] here, the tick labels of the plots there).
+pub use pinjoint::fmt::trimmed;
 
 /// A fraction as a percentage with one decimal, e.g. `7.8 %`.
 pub fn pct(x: f64) -> String {

@@ -9,8 +9,9 @@
 //!   well-formed byte stream: what was being read and where.
 //! - [`XmlError`]: a model table from which no valid modelDescription.xml can be written.
 
-use crate::fmi2::interface::Interface;
-use crate::fmi2::model::ModelError;
+use crate::core::interface::Interface;
+use crate::core::model::ModelError;
+use crate::core::types::StatusKind;
 use crate::fmt::Num;
 use std::ffi::c_int;
 use std::fmt;
@@ -66,25 +67,26 @@ pub enum OutputBound {
     AboveMax(f64),
 }
 
-/// The name of an `fmi2StatusKind` for messages.
-struct StatusKindName(c_int);
+/// A status kind as the host passed it, for messages in the words of the standard whose
+/// C names start with `prefix`: `fmi2DoStepStatus`, or `status kind 7 (not an
+/// fmi2StatusKind)` for a code that is no status kind.
+struct StatusKindName {
+    kind: Result<StatusKind, c_int>,
+    prefix: &'static str,
+}
 
 impl fmt::Display for StatusKindName {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        use crate::fmi2::types::{FMI2_DO_STEP_STATUS, FMI2_LAST_SUCCESSFUL_TIME, FMI2_PENDING_STATUS, FMI2_TERMINATED};
-        match self.0 {
-            FMI2_DO_STEP_STATUS => f.write_str("fmi2DoStepStatus"),
-            FMI2_PENDING_STATUS => f.write_str("fmi2PendingStatus"),
-            FMI2_LAST_SUCCESSFUL_TIME => f.write_str("fmi2LastSuccessfulTime"),
-            FMI2_TERMINATED => f.write_str("fmi2Terminated"),
-            k => write!(f, "status kind {k} (not an fmi2StatusKind)"),
+        match self.kind {
+            Ok(k) => write!(f, "{}{}", self.prefix, k.name()),
+            Err(code) => write!(f, "status kind {code} (not an {}StatusKind)", self.prefix),
         }
     }
 }
 
 /// Why an FMI call failed; logged as `<function>: <message>` with status `fmi2Error`
 /// (`fmi3Error`). Argument errors leave the instance as it was; a [`CallError::Model`] from
-/// initialization or a step moves it to the `error` state (see the instance module, `fmi2::instance`).
+/// initialization or a step moves it to the `error` state (see the instance module, `core::instance`).
 #[derive(Debug, thiserror::Error)]
 pub enum CallError {
     /// An instantiation without an instance name.
@@ -103,12 +105,19 @@ pub enum CallError {
         /// The models of the library with their GUIDs.
         known: String,
     },
-    /// `fmi2Instantiate` for Model Exchange of a Co-Simulation-only model.
-    #[error("fmuType = 0 (Model Exchange): {0} implements Co-Simulation (fmuType = 1) only")]
-    Fmi2CoSimulationOnly(&'static str),
-    /// `fmi3InstantiateModelExchange` of a Co-Simulation-only model.
-    #[error("{0} implements Co-Simulation only")]
-    CoSimulationOnly(&'static str),
+    /// A Model Exchange instantiation of a Co-Simulation-only model, in the words of the
+    /// standard of the instantiating function: FMI 2.0's `fmi2Instantiate` names its
+    /// `fmuType` values (`asked` = `fmuType = 0 (Model Exchange): `, `offered` =
+    /// ` (fmuType = 1)`), FMI 3.0's `fmi3InstantiateModelExchange` needs neither (both empty).
+    #[error("{asked}{model} implements Co-Simulation{offered} only")]
+    CoSimulationOnly {
+        /// The model's name.
+        model: &'static str,
+        /// What was asked for, as a prefix of the message (may be empty).
+        asked: &'static str,
+        /// How the standard names the interface the model offers (may be empty).
+        offered: &'static str,
+    },
     /// `fmi3InstantiateCoSimulation` with `eventModeUsed`.
     #[error("eventModeUsed = true, but this FMU's Co-Simulation has no event mode (hasEventMode = false)")]
     EventModeUsed,
@@ -373,11 +382,13 @@ pub enum CallError {
     /// A part of the standard this layer does not provide (the message says which and why).
     #[error("{0}")]
     Unsupported(&'static str),
-    /// A status kind not available through an `fmi2Get*Status` function.
-    #[error("{} is not available through {func} (this FMU steps synchronously)", StatusKindName(*.kind))]
+    /// A status kind not available through a `Get*Status` function.
+    #[error("{} is not available through {func} (this FMU steps synchronously)", StatusKindName { kind: *.kind, prefix })]
     StatusKind {
-        /// The `fmi2StatusKind` the host passed.
-        kind: c_int,
+        /// The status kind the host passed, or its C code if that is no status kind.
+        kind: Result<StatusKind, c_int>,
+        /// The prefix of the standard's C names (`fmi2`), for the kind's name.
+        prefix: &'static str,
         /// The function.
         func: &'static str,
     },
@@ -479,7 +490,7 @@ pub enum StateFormatError {
 }
 
 /// A model's part of a serialized FMU state that is not well formed is the model's error
-/// (what the model's `deserialize` returns when a read of the layer's byte reader (`fmi2::bytes`) fails).
+/// (what the model's `deserialize` returns when a read of the layer's byte reader (`core::bytes`) fails).
 impl From<StateFormatError> for ModelError {
     fn from(e: StateFormatError) -> Self {
         ModelError::RejectedState(e.to_string())
@@ -605,8 +616,13 @@ mod tests {
                 CallError::OutputOutOfRange { name: "h".into(), value: -1e-9, unit: "m", bound: OutputBound::BelowMin(0.0) },
                 "the model gives output h = -1e-9 m which is below its declared minimum 0: the inputs or parameters are outside the range in which the model is defined",
             ),
-            (CallError::StatusKind { kind: 7, func: "fmi2GetStatus" }, "status kind 7 (not an fmi2StatusKind) is not available through fmi2GetStatus (this FMU steps synchronously)"),
-            (CallError::StatusKind { kind: 0, func: "fmi2GetRealStatus" }, "fmi2DoStepStatus is not available through fmi2GetRealStatus (this FMU steps synchronously)"),
+            (CallError::StatusKind { kind: Err(7), prefix: "fmi2", func: "fmi2GetStatus" }, "status kind 7 (not an fmi2StatusKind) is not available through fmi2GetStatus (this FMU steps synchronously)"),
+            (CallError::StatusKind { kind: Ok(StatusKind::DoStepStatus), prefix: "fmi2", func: "fmi2GetRealStatus" }, "fmi2DoStepStatus is not available through fmi2GetRealStatus (this FMU steps synchronously)"),
+            (
+                CallError::CoSimulationOnly { model: "PinJointRig", asked: "fmuType = 0 (Model Exchange): ", offered: " (fmuType = 1)" },
+                "fmuType = 0 (Model Exchange): PinJointRig implements Co-Simulation (fmuType = 1) only",
+            ),
+            (CallError::CoSimulationOnly { model: "PinJointRig", asked: "", offered: "" }, "PinJointRig implements Co-Simulation only"),
             (CallError::StateRejected(ModelError::RejectedState("bad".to_owned())), "FMU state rejected: bad"),
             (CallError::StateFormat(StateFormatError::Crc), "serialized FMU state is corrupted (CRC-32 mismatch)"),
         ];

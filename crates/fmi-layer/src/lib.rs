@@ -7,24 +7,35 @@
 //! modelDescription.xml generator); a model only stores values, computes its
 //! outputs and advances.
 //!
+//! Three parts, as Reference-FMUs keeps `fmi2Functions.c` and `fmi3Functions.c` over one
+//! `cosimulation.c`:
+//! - [`core`]: version-neutral, written once: the [`Model`](core::Model) trait a model
+//!   implements once for both standards, the variable table, the instance, the state machine,
+//!   the FMU state and its serialized format, logging, value-reference lookup, the guard every
+//!   export runs through;
+//! - [`fmi2`] and [`fmi3`]: symmetric thin shims, each with only its version's exported
+//!   functions (`api`), C types (`types`) and modelDescription.xml generator (`xml`), and what
+//!   its standard defines its own way: the [`Rules`](core::Rules) of its instances (which
+//!   getter reads which type, a capability's name), the state masks of its own functions, its
+//!   status names and (FMI 2.0) status-kind codes. Neither names the other, and the core
+//!   names neither (a test, `tests/version_shims.rs`, fails if one does).
+//!
 //! Errors are typed at every boundary ([`error`]): [`CallError`] for why an exported
 //! function fails (its text is what the host's logger receives), [`StateFormatError`] for a
 //! serialized FMU state that is not well formed, [`XmlError`] for a model table no valid
-//! modelDescription.xml can be written from. The parts both standards share (the instance,
-//! state machine, FMU state functions, typed get/set bodies, the XML writer for the common
-//! attributes) exist once; `fmi2` and `fmi3` only spell their own functions and elements.
+//! modelDescription.xml can be written from.
 //!
 //! This crate knows no physics. The shared library that exports the models (the
 //! `pinjoint-fmu` crate) passes its registry of models in from its own root with
-//! [`export_fmi2!`], the one entry point that must choose a model by GUID.
+//! [`export_fmi2!`] and [`export_fmi3!`], the entry points that must choose a model by GUID
+//! or instantiation token.
 
-// Modules in dependency order, lowest first; each file uses only files listed before it:
-// `fmt` (numfmt, another crate); in `fmi2`, the leaves `types`, `state`, `logging`, `interface`, `model`;
-// then `error` (which uses only those leaves); then the rest of `fmi2` (`bytes`, `snapshot`,
-// `variables`, `instance`, `api`), the shared XML writer `xml`, `fmi2::xml`, and `fmi3`.
-pub mod fmi2;
+// Modules in dependency order, lowest first: `fmt` (numfmt, another crate); `core` (whose
+// leaves `error` uses; the rest of `core` uses `error`); `error`; the shims `fmi2` and `fmi3`,
+// which name the core and `error`, never each other; neither `core` nor `error` names a shim.
+pub mod core;
 pub mod error;
-mod xml;
+pub mod fmi2;
 pub mod fmi3;
 #[cfg(test)]
 mod tests;

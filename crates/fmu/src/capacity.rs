@@ -1,8 +1,8 @@
 //! The check of a load against the joint's asperity capacity (both FMUs; the `load` row's
 //! check in [`crate::table::Table::check_input`]).
 
-use fmi_layer::fmi2::logging::show;
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
+use fmi_layer::core::logging::show;
+use fmi_layer::core::model::{ModelError, ModelResult};
 
 /// A load at or beyond the joint's asperity capacity ([`pinjoint::Joint::capacity`]) is an
 /// error naming both.

@@ -1,6 +1,6 @@
 //! The one constructor of a variable declaration for both FMUs' tables.
 
-use fmi_layer::fmi2::variables::{Causality, Initial, Kind, Variability, Variable};
+use fmi_layer::core::variables::{Causality, Initial, Kind, Variability, Variable};
 
 /// A declaration with no start value, range, nominal, dependencies or derivative: parameters are `fixed`,
 /// Boolean and Integer outputs `discrete`, everything else `continuous`; outputs are

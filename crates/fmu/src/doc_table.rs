@@ -1,8 +1,8 @@
 //! The variable tables of both FMUs' `documentation/index.html`, written from the same
 //! declarations as the modelDescription.
 
-use fmi_layer::fmi2::variables::{Causality, Kind, Variable};
-use fmi_layer::fmi2::xml::escape;
+use fmi_layer::core::variables::{Causality, Kind, Variable};
+use fmi_layer::core::xml::escape;
 use std::fmt::Write;
 
 /// Whether a table has a `type` column (the rig has Boolean and Enumeration variables

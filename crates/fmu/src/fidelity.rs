@@ -3,9 +3,9 @@
 
 use crate::declare::declare;
 use crate::table::{Row, Rule};
-use fmi_layer::fmi2::logging::show;
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
-use fmi_layer::fmi2::variables::{Causality, EnumType, Kind};
+use fmi_layer::core::logging::show;
+use fmi_layer::core::model::{ModelError, ModelResult};
+use fmi_layer::core::variables::{Causality, EnumType, Kind};
 use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
 
 /// The `fidelity` parameter's choices (both FMUs); the codes are those of the former
@@ -165,7 +165,7 @@ pub fn rows<S: 'static>(
     }
 }
 
-fn declare_start(name: &str, vr: u32, unit: Option<&'static str>, start: f64, text: &str) -> fmi_layer::fmi2::variables::Variable {
+fn declare_start(name: &str, vr: u32, unit: Option<&'static str>, start: f64, text: &str) -> fmi_layer::core::variables::Variable {
     let mut v = declare(name, vr, Kind::Real, Causality::Parameter, unit, None, text);
     v.start = Some(start);
     v

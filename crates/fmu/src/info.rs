@@ -2,8 +2,8 @@
 //! licence ([`LEGAL`]), the requirements section of its documentation page
 //! ([`requirements_html`]) and the constructor of its [`ModelInfo`] ([`model_info`]).
 
-use fmi_layer::fmi2::model::Model;
-use fmi_layer::fmi2::variables::{Legal, ModelInfo, UnitDef, Variable};
+use fmi_layer::core::model::Model;
+use fmi_layer::core::variables::{Legal, ModelInfo, UnitDef, Variable};
 
 /// Author, copyright and licence of every FMU of this library (the crates it links
 /// statically keep their own licences: `documentation/licenses/` in each FMU).

@@ -3,7 +3,7 @@
 
 use crate::declare::declare;
 use crate::table::{Row, Rule};
-use fmi_layer::fmi2::variables::{Causality, Kind};
+use fmi_layer::core::variables::{Causality, Kind};
 use pinjoint::params::{DEFAULT_TEMPERATURE, MAX_TEMPERATURE, MIN_TEMPERATURE};
 
 pub use crate::capacity::check_capacity;

@@ -1,9 +1,11 @@
 //! # pinjoint-fmu
 //!
 //! The FMU shared library: the models PinJoint and PinJointRig (and the PassThrough
-//! benchmark baseline, `pinjoint-bench`), each plugged into the generic
-//! [`fmi_layer::fmi2`] layer. The registry below is passed to that layer from this
-//! root with [`fmi_layer::export_fmi2!`]; `fmi2Instantiate` finds a model in it by GUID.
+//! benchmark baseline, `pinjoint-bench`), each implementing the version-neutral
+//! [`fmi_layer::core::Model`] trait once and served through both of the layer's shims, FMI 2.0
+//! and FMI 3.0. The registry below is passed to the layer from this root with
+//! [`fmi_layer::export_fmi2!`] and [`fmi_layer::export_fmi3!`]; `fmi2Instantiate` finds a
+//! model in it by GUID, the `fmi3Instantiate*` functions by the same token.
 //!
 //! Each model is one declarative variable table ([`table::Table`]): a row declares the
 //! variable (XML), reads and stores it, checks it and places it in the FMU state. The rows
@@ -31,7 +33,7 @@ pub mod pass_through;
 pub mod pin_joint;
 pub mod pin_joint_rig;
 
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 
 pub use info::{model_info, requirements_html, LEGAL};
 

@@ -5,7 +5,7 @@
 
 use crate::declare::declare;
 use crate::table::{Row, Rule};
-use fmi_layer::fmi2::variables::{Causality, Kind, Variable};
+use fmi_layer::core::variables::{Causality, Kind, Variable};
 use pinjoint::params::{Kind as ParamKind, ParamSpec, Range, PARAMS};
 use pinjoint::Params;
 

@@ -3,9 +3,9 @@
 //! inputs, `doStep`, get two outputs), so the ratio of the two step costs shows what the
 //! friction model adds to the host's own per-step overhead.
 
-use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
-use fmi_layer::fmi2::model::{Model, ModelResult};
-use fmi_layer::fmi2::variables::{Causality, Initial, Kind, ModelInfo, Variability, Variable};
+use fmi_layer::core::bytes::{ByteReader, ByteWriter};
+use fmi_layer::core::model::{Model, ModelResult};
+use fmi_layer::core::variables::{Causality, Initial, Kind, ModelInfo, Variability, Variable};
 use std::sync::LazyLock;
 
 fn var(name: &str, vr: u32, causality: Causality, d: &str) -> Variable {
@@ -70,7 +70,7 @@ impl Model for PassThrough {
         self.u[i % 2]
     }
     fn check_real(&self, i: usize, v: f64) -> ModelResult<()> {
-        if v.is_finite() { Ok(()) } else { Err(fmi_layer::fmi2::model::ModelError::invalid("input", format!("u{}", i + 1), v, "", "is not a finite number")) }
+        if v.is_finite() { Ok(()) } else { Err(fmi_layer::core::model::ModelError::invalid("input", format!("u{}", i + 1), v, "", "is not a finite number")) }
     }
     fn set_real(&mut self, i: usize, v: f64) {
         self.u[i] = v;

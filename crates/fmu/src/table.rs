@@ -11,9 +11,9 @@
 //! so a code added to an enumeration is a code of its mirror. A mirror is not stored in the
 //! state (its enumeration is).
 
-use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
-use fmi_layer::fmi2::variables::{Causality, EnumType, Kind, Variable};
+use fmi_layer::core::bytes::{ByteReader, ByteWriter};
+use fmi_layer::core::model::{ModelError, ModelResult};
+use fmi_layer::core::variables::{Causality, EnumType, Kind, Variable};
 use std::sync::Arc;
 
 /// Reads a variable's value from the model's values `S` (Integer and Boolean as f64); shared
@@ -200,7 +200,7 @@ impl<S> Table<S> {
         &self.rows
     }
 
-    /// The declarations, in table order (for [`fmi_layer::fmi2::variables::ModelInfo::variables`]).
+    /// The declarations, in table order (for [`fmi_layer::core::variables::ModelInfo::variables`]).
     pub fn variables(&self) -> Vec<Variable> {
         self.rows.iter().map(|r| r.var.clone()).collect()
     }

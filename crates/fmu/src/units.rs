@@ -1,6 +1,6 @@
 //! The units of both FMUs (one definition each) and the display factors they share.
 
-use fmi_layer::fmi2::variables::{DisplayUnit, UnitDef, Variable};
+use fmi_layer::core::variables::{DisplayUnit, UnitDef, Variable};
 
 /// Degrees per radian, 180/π (display units `deg`, `deg/s`).
 pub const DEG: f64 = 57.29577951308232;

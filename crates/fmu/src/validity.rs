@@ -4,7 +4,7 @@
 
 use crate::declare::declare;
 use crate::table::Row;
-use fmi_layer::fmi2::variables::{Causality, EnumType, Kind};
+use fmi_layer::core::variables::{Causality, EnumType, Kind};
 use pinjoint::validity::{Excursion, Tracker, Validity};
 
 /// The `validity` output's choices: the codes of [`Validity::code`].

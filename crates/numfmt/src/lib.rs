@@ -95,6 +95,24 @@ pub fn bounded_message(message: &str) -> String {
     format!("{} … ({} characters left out) … {}", &message[..head_end], n - head - tail, &message[tail_start..])
 }
 
+/// `v` with trailing zeros trimmed: in fixed notation with `digits` significant digits (at
+/// most `digits + 2` decimals) for 1e-3 ≤ |v| < 10^(digits + 1), else in scientific notation
+/// with `sci_decimals` decimals in the mantissa. The numbers for people of the
+/// front ends (the CLI's `readable`) and the plots' tick labels (`pinjoint-plot`).
+pub fn trimmed(v: f64, digits: i32, sci_decimals: usize) -> String {
+    let a = v.abs();
+    if (1e-3..10f64.powi(digits + 1)).contains(&a) {
+        let decimals = (digits - 1 - a.log10().floor() as i32).clamp(0, digits + 2) as usize;
+        let s = format!("{v:.decimals$}");
+        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
+    } else {
+        let s = format!("{v:.sci_decimals$e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = if m.contains('.') { m.trim_end_matches('0').trim_end_matches('.') } else { m };
+        format!("{m}e{e}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,28 +1,26 @@
-//! A generic FMI 2.0 Co-Simulation layer: C types, the exported `fmi2*` functions,
-//! the standard's state machine (one mask per function), logging by category,
-//! value-reference dispatch, FMU state get/set/serialize, and the
-//! modelDescription.xml generator.
+//! The FMI 2.0 shim over the version-neutral core ([`crate::core`]): the exported `fmi2*`
+//! functions ([`api`]), their C types ([`types`]) and the FMI 2.0 modelDescription.xml
+//! generator ([`xml`]), as Reference-FMUs keeps `fmi2Functions.c` over one
+//! `cosimulation.c`. Everything the two standards share (the instance, the model trait, the
+//! variable table, the state machine, logging, the FMU state) is the core's; this module only
+//! spells FMI 2.0's functions, types and elements, and names nothing of FMI 3.0.
 //!
-//! A model plugs in through the [`model::Model`] trait plus a [`variables::ModelInfo`]
-//! (variable table, units, default experiment). `fmi2Instantiate` finds the model
-//! by GUID among the models the library registers with [`crate::export_fmi2!`], so one
-//! shared library can serve several FMUs, each packaged with its own
-//! modelDescription.xml and a copy of the library named for its model identifier.
+//! A model plugs in through the core's [`Model`](crate::core::model::Model) trait plus a
+//! [`ModelInfo`](crate::core::variables::ModelInfo) (variable table, units, default
+//! experiment). `fmi2Instantiate` finds the model by GUID among the models the library
+//! registers with [`crate::export_fmi2!`], so one shared library can serve several FMUs, each
+//! packaged with its own modelDescription.xml and a copy of the library named for its model
+//! identifier.
 
-// Files in dependency order, lowest first (see the crate root): the leaves the error types
-// use, then the files that use `crate::error`.
 pub mod types;
-pub mod state;
-pub mod logging;
-pub mod interface;
-pub mod model;
-pub mod bytes;
-pub mod snapshot;
-pub mod variables;
-pub mod lookup;
-pub mod instance;
 pub mod api;
 pub mod xml;
+
+// The core's modules under the paths they had when they lived here, for the callers outside
+// this crate that still name them so (the root tests, the fuzz checks, fmu_build): aliases
+// only, nothing of FMI 2.0. New code names `crate::core`.
+#[doc(hidden)]
+pub use crate::core::{bytes, logging, model, variables};
 
 /// Export `fmi2Instantiate` for the models `$registry()` returns (a
 /// `fn() -> Vec<&'static ModelInfo>`), at the root of the model library. Every other

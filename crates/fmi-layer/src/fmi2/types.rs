@@ -2,18 +2,22 @@
 //!
 //! Enumerations that the host passes in (`fmi2Type`, `fmi2StatusKind`) are taken as
 //! plain `c_int` so that an out-of-range value is an error message, never undefined
-//! behaviour.
+//! behaviour. The handles, value references and the status are the core's types
+//! ([`crate::core::types`]) under their FMI 2.0 names.
 
-use std::ffi::{c_char, c_int, c_uint, c_void};
+use crate::core::types::{Environment, InstanceHandle, StateHandle, StatusC, ValueReference};
+use std::ffi::{c_char, c_int, c_void};
+
+pub use crate::core::types::{Status, StatusKind};
 
 /// `fmi2Component`: the instance handle the FMU returns from `fmi2Instantiate`.
-pub type Fmi2Component = *mut c_void;
+pub type Fmi2Component = InstanceHandle;
 /// `fmi2ComponentEnvironment`: the host's pointer, passed back to its logger.
-pub type Fmi2ComponentEnvironment = *mut c_void;
+pub type Fmi2ComponentEnvironment = Environment;
 /// `fmi2FMUstate`: a handle to a saved FMU state.
-pub type Fmi2FmuState = *mut c_void;
+pub type Fmi2FmuState = StateHandle;
 /// `fmi2ValueReference`: the number that names a variable in the modelDescription.
-pub type Fmi2ValueReference = c_uint;
+pub type Fmi2ValueReference = ValueReference;
 /// `fmi2Real`.
 pub type Fmi2Real = f64;
 /// `fmi2Integer`.
@@ -31,7 +35,7 @@ pub const FMI2_TRUE: Fmi2Boolean = 1;
 pub const FMI2_FALSE: Fmi2Boolean = 0;
 
 /// `fmi2Status` as returned through the C ABI.
-pub type Fmi2StatusC = c_int;
+pub type Fmi2StatusC = StatusC;
 
 /// `fmi2Type`: 0 = Model Exchange, 1 = Co-Simulation.
 pub const FMI2_MODEL_EXCHANGE: c_int = 0;
@@ -47,39 +51,27 @@ pub const FMI2_LAST_SUCCESSFUL_TIME: c_int = 2;
 /// `fmi2Terminated`.
 pub const FMI2_TERMINATED: c_int = 3;
 
-/// The FMI 2.0 status, ordered by severity.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-#[repr(i32)]
-pub enum Status {
-    /// `fmi2OK`: all well.
-    Ok = 0,
-    /// `fmi2Warning`: done, but the host should look at the log.
-    Warning = 1,
-    /// `fmi2Discard`: the step was not done (Co-Simulation).
-    Discard = 2,
-    /// `fmi2Error`: the call failed; the instance may still be usable where the standard allows.
-    Error = 3,
-    /// `fmi2Fatal`: the instance is broken; only `fmi2FreeInstance` is allowed.
-    Fatal = 4,
-    /// `fmi2Pending`: an asynchronous step is running (never returned by this layer).
-    Pending = 5,
+/// The status kind of the `fmi2StatusKind` code `code`, or the code if it is none.
+pub fn status_kind(code: c_int) -> Result<StatusKind, c_int> {
+    match code {
+        FMI2_DO_STEP_STATUS => Ok(StatusKind::DoStepStatus),
+        FMI2_PENDING_STATUS => Ok(StatusKind::PendingStatus),
+        FMI2_LAST_SUCCESSFUL_TIME => Ok(StatusKind::LastSuccessfulTime),
+        FMI2_TERMINATED => Ok(StatusKind::Terminated),
+        other => Err(other),
+    }
 }
 
-impl Status {
-    /// The value passed through the C ABI.
-    pub fn c(self) -> Fmi2StatusC {
-        self as c_int
-    }
-    /// The standard's name of the status, e.g. `fmi2Error`, for log messages.
-    pub fn name(self) -> &'static str {
-        match self {
-            Status::Ok => "fmi2OK",
-            Status::Warning => "fmi2Warning",
-            Status::Discard => "fmi2Discard",
-            Status::Error => "fmi2Error",
-            Status::Fatal => "fmi2Fatal",
-            Status::Pending => "fmi2Pending",
-        }
+/// The `fmi2Status` name of a status, e.g. `fmi2Error`, for messages and the
+/// modelDescription's log category descriptions.
+pub fn status_name(status: Status) -> &'static str {
+    match status {
+        Status::Ok => "fmi2OK",
+        Status::Warning => "fmi2Warning",
+        Status::Discard => "fmi2Discard",
+        Status::Error => "fmi2Error",
+        Status::Fatal => "fmi2Fatal",
+        Status::Pending => "fmi2Pending",
     }
 }
 

@@ -11,12 +11,12 @@
 //! the standard reads as "depends on every known" — exact here, since at initialization every
 //! unknown may depend on every parameter.
 
-use super::variables::{ModelInfo, Variable, CAPABILITIES, ME_CAPABILITIES};
+use crate::core::variables::{ModelInfo, Variable, CAPABILITIES, ME_CAPABILITIES};
 use crate::error::XmlError;
-use crate::xml as common;
+use crate::core::xml as common;
 use std::fmt::Write;
 
-pub use crate::xml::{escape, num};
+pub use crate::core::xml::{escape, num};
 
 /// The type element of a variable: `<Real .../>`, `<Integer .../>`, `<Boolean .../>` or
 /// `<Enumeration .../>`; a state derivative's `<Real>` names its state by 1-based index
@@ -93,7 +93,7 @@ pub fn model_description(info: &ModelInfo) -> Result<String, XmlError> {
         writeln!(w, "  </TypeDefinitions>").unwrap();
     }
 
-    common::log_categories(w, "fmi2");
+    common::log_categories(w, super::types::status_name);
     common::default_experiment(w, info);
 
     writeln!(w, "  <ModelVariables>").unwrap();

@@ -1,9 +1,11 @@
-//! A generic FMI 3.0 layer (Co-Simulation and Model Exchange) beside the FMI 2.0 one, on the
-//! same [`crate::fmi2::model::Model`] trait and [`crate::fmi2::variables::ModelInfo`] table:
-//! the exported `fmi3*` functions ([`api`]), their C types ([`types`]) and the FMI 3.0
-//! modelDescription.xml generator ([`xml`]).
+//! The FMI 3.0 shim over the version-neutral core ([`crate::core`]), Co-Simulation and Model
+//! Exchange: the exported `fmi3*` functions ([`api`]), their C types ([`types`]) and the
+//! FMI 3.0 modelDescription.xml generator ([`xml`]), as Reference-FMUs keeps
+//! `fmi3Functions.c` over one `cosimulation.c`. The models are the core's
+//! ([`Model`](crate::core::model::Model) trait, [`ModelInfo`](crate::core::variables::ModelInfo)
+//! table), the same ones the FMI 2.0 shim serves; this module names nothing of FMI 2.0.
 //!
-//! What is shared with FMI 2.0, so that both standards behave alike: the instance (value
+//! What the core gives both standards, so that they behave alike: the instance (value
 //! checks, output range checks, model messages), the state machine with one mask per function
 //! (FMI 3.0's step mode is the FMI 2.0 `stepComplete` state; event and continuous-time mode are
 //! the Model Exchange states of both), the panic containment of every export, logging by
@@ -20,7 +22,7 @@ pub mod api;
 
 /// Export `fmi3InstantiateModelExchange` and `fmi3InstantiateCoSimulation` for the models
 /// `$registry()` returns (a `fn() -> Vec<&'static ModelInfo>`), at the root of the model
-/// library, as [`crate::export_fmi2!`] does for FMI 2.0. Every other `fmi3*` function is
+/// library, as `export_fmi2!` does for FMI 2.0. Every other `fmi3*` function is
 /// exported by this crate itself.
 ///
 /// ```ignore
@@ -38,10 +40,10 @@ macro_rules! export_fmi3 {
         /// # Safety
         /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3InstantiateModelExchange(instance_name: $crate::fmi3::types::Fmi3String, instantiation_token: $crate::fmi3::types::Fmi3String, resource_path: $crate::fmi3::types::Fmi3String, _visible: $crate::fmi3::types::Fmi3Boolean, logging_on: $crate::fmi3::types::Fmi3Boolean, instance_environment: *mut ::std::ffi::c_void, log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>) -> *mut ::std::ffi::c_void {
-            let interface = $crate::fmi2::instance::Interface::ModelExchange;
+        pub unsafe extern "C" fn fmi3InstantiateModelExchange(instance_name: $crate::fmi3::types::Fmi3String, instantiation_token: $crate::fmi3::types::Fmi3String, resource_path: $crate::fmi3::types::Fmi3String, _visible: $crate::fmi3::types::Fmi3Boolean, logging_on: $crate::fmi3::types::Fmi3Boolean, instance_environment: *mut ::std::ffi::c_void, log_message: ::std::option::Option<$crate::fmi3::types::Fmi3LogMessageCallback>) -> *mut ::std::ffi::c_void {
+            let interface = $crate::core::instance::Interface::ModelExchange;
             // SAFETY: forwarded from the host under the same contract.
-            unsafe { $crate::fmi3::api::instantiate_from(&$registry(), interface, instance_name, instantiation_token, resource_path, logging_on, 0, instance_environment, log_message) }
+            unsafe { $crate::fmi3::api::common::instantiate_from(&$registry(), interface, instance_name, instantiation_token, resource_path, logging_on, 0, instance_environment, log_message) }
         }
 
         /// `fmi3InstantiateCoSimulation` (FMI 3.0) for the models of this library: finds the
@@ -54,10 +56,10 @@ macro_rules! export_fmi3 {
         /// # Safety
         /// Pointers as in the FMI 3.0 standard; NULL is handled everywhere.
         #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn fmi3InstantiateCoSimulation(instance_name: $crate::fmi3::types::Fmi3String, instantiation_token: $crate::fmi3::types::Fmi3String, resource_path: $crate::fmi3::types::Fmi3String, _visible: $crate::fmi3::types::Fmi3Boolean, logging_on: $crate::fmi3::types::Fmi3Boolean, event_mode_used: $crate::fmi3::types::Fmi3Boolean, _early_return_allowed: $crate::fmi3::types::Fmi3Boolean, _required_intermediate_variables: *const u32, _n_required_intermediate_variables: usize, instance_environment: *mut ::std::ffi::c_void, log_message: ::std::option::Option<$crate::fmi2::logging::Fmi3LogMessageCallback>, _intermediate_update: *mut ::std::ffi::c_void) -> *mut ::std::ffi::c_void {
-            let interface = $crate::fmi2::instance::Interface::CoSimulation;
+        pub unsafe extern "C" fn fmi3InstantiateCoSimulation(instance_name: $crate::fmi3::types::Fmi3String, instantiation_token: $crate::fmi3::types::Fmi3String, resource_path: $crate::fmi3::types::Fmi3String, _visible: $crate::fmi3::types::Fmi3Boolean, logging_on: $crate::fmi3::types::Fmi3Boolean, event_mode_used: $crate::fmi3::types::Fmi3Boolean, _early_return_allowed: $crate::fmi3::types::Fmi3Boolean, _required_intermediate_variables: *const u32, _n_required_intermediate_variables: usize, instance_environment: *mut ::std::ffi::c_void, log_message: ::std::option::Option<$crate::fmi3::types::Fmi3LogMessageCallback>, _intermediate_update: *mut ::std::ffi::c_void) -> *mut ::std::ffi::c_void {
+            let interface = $crate::core::instance::Interface::CoSimulation;
             // SAFETY: forwarded from the host under the same contract.
-            unsafe { $crate::fmi3::api::instantiate_from(&$registry(), interface, instance_name, instantiation_token, resource_path, logging_on, event_mode_used, instance_environment, log_message) }
+            unsafe { $crate::fmi3::api::common::instantiate_from(&$registry(), interface, instance_name, instantiation_token, resource_path, logging_on, event_mode_used, instance_environment, log_message) }
         }
     };
 }

@@ -6,8 +6,8 @@
 //! `dependencies`: they may depend on every parameter at initialization).
 
 use crate::error::XmlError;
-use crate::fmi2::variables::{Kind, ModelInfo, Variable};
-use crate::xml::{self as common, escape};
+use crate::core::variables::{Kind, ModelInfo, Variable};
+use crate::core::xml::{self as common, escape};
 use std::fmt::Write;
 
 /// The value reference of the independent variable `time` FMI 3.0 requires (not in the
@@ -115,7 +115,7 @@ pub fn model_description(info: &ModelInfo) -> Result<String, XmlError> {
     }
     writeln!(w, "  </TypeDefinitions>").unwrap();
 
-    common::log_categories(w, "fmi3");
+    common::log_categories(w, super::types::status_name);
     common::default_experiment(w, info);
 
     writeln!(w, "  <ModelVariables>").unwrap();

@@ -3,7 +3,7 @@
 
 use super::host::Host;
 use super::linear::*;
-use crate::fmi2::interface::Interface;
+use crate::core::interface::Interface;
 use crate::fmi3::api::*;
 use std::ffi::c_void;
 use std::ptr::{null, null_mut};

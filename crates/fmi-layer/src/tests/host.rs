@@ -3,9 +3,9 @@
 
 use super::linear::registry;
 use crate::fmi2::api::common::instantiate_from;
-use crate::fmi2::interface::Interface;
+use crate::core::interface::Interface;
 use crate::fmi2::types::*;
-use crate::fmi2::variables::ModelInfo;
+use crate::core::variables::ModelInfo;
 use std::ffi::{c_char, c_int, c_void, CStr, CString};
 use std::sync::Mutex;
 

@@ -10,8 +10,8 @@
 //! derivative is NaN and a Co-Simulation step fails, so that the layer's check of the
 //! derivatives, and which error a failed step names, can be tested.
 
-use crate::fmi2::model::{Model, ModelError, ModelResult};
-use crate::fmi2::variables::{Causality, Initial, Kind, Legal, ModelInfo, Variability, Variable};
+use crate::core::model::{Model, ModelError, ModelResult};
+use crate::core::variables::{Causality, Initial, Kind, Legal, ModelInfo, Variability, Variable};
 use std::sync::LazyLock;
 
 /// Table indices.

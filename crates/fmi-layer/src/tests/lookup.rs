@@ -1,9 +1,9 @@
-//! The instance's index of the variable table ([`crate::fmi2::lookup`]) against a scan of the
+//! The instance's index of the variable table ([`crate::core::lookup`]) against a scan of the
 //! table: every value reference (present, absent, reordered) and the outputs with their bounds.
 
 use super::linear::{info_for_tests, LINEAR};
-use crate::fmi2::lookup::Lookup;
-use crate::fmi2::variables::{Causality, ModelInfo};
+use crate::core::lookup::Lookup;
+use crate::core::variables::{Causality, ModelInfo};
 
 fn agrees_with_a_scan(info: &ModelInfo) {
     let l = Lookup::new(info);

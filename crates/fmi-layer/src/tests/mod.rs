@@ -7,4 +7,5 @@ mod fmi3_states;
 mod host;
 mod linear;
 mod lookup;
+mod rules;
 mod xml_states;

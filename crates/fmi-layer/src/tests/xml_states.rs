@@ -5,7 +5,7 @@
 
 use super::linear::*;
 use crate::error::XmlError;
-use crate::fmi2::variables::{Causality, Initial, Kind, ModelInfo, Variability};
+use crate::core::variables::{Causality, Initial, Kind, ModelInfo, Variability};
 
 /// A change of a model table.
 type Edit = Box<dyn Fn(&mut ModelInfo)>;

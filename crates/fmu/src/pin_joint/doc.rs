@@ -4,7 +4,7 @@
 use pinjoint::zero_velocity::band::DEFAULT_SPEED_BAND;
 use pinjoint::zero_velocity::Presliding;
 use crate::doc_table::{head, rows, Style};
-use fmi_layer::fmi2::variables::{Causality, ModelInfo};
+use fmi_layer::core::variables::{Causality, ModelInfo};
 use pinjoint::{Joint, Params};
 use std::fmt::Write;
 

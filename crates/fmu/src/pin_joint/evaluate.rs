@@ -4,7 +4,7 @@
 
 use super::variables::{Outputs, Values};
 use super::zero_velocity::{band_friction, presliding_friction};
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
+use fmi_layer::core::model::{ModelError, ModelResult};
 use pinjoint::fidelity::Evaluator;
 use pinjoint::zero_velocity::modes::Mode;
 use pinjoint::zero_velocity::ZeroVelocityModel;

@@ -12,7 +12,7 @@ pub mod partials;
 pub mod model;
 pub mod doc;
 
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 use std::sync::LazyLock;
 
 /// The PinJoint model's description for the registry: its variable table

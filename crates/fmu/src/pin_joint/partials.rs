@@ -19,7 +19,7 @@
 
 use super::evaluate::{operating_point, outputs};
 use super::variables::{Values, TABLE};
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
+use fmi_layer::core::model::{ModelError, ModelResult};
 use pinjoint::fidelity::Evaluator;
 use pinjoint::zero_velocity::jet::{Jet, Scalar};
 use pinjoint::zero_velocity::joint::{bound_partials, tangent_held};
@@ -119,7 +119,7 @@ fn temperature_column(v: &Values, model: ZeroVelocityModel, delta: f64) -> Model
 }
 
 /// The partials of `unknowns` with respect to `knowns` (table indices) at the values `v`,
-/// row-major into `out` (see [`fmi_layer::fmi2::model::Model::jacobian`]). `delta` is the angle
+/// row-major into `out` (see [`fmi_layer::core::model::Model::jacobian`]). `delta` is the angle
 /// increment the Co-Simulation outputs deflect the state by; `me`: Model Exchange.
 pub fn jacobian(
     ev: &mut Evaluator,

@@ -24,7 +24,7 @@ use super::zero_velocity::{self, Friction, ZeroVelocitySettings};
 use crate::declare::declare;
 use crate::fidelity::{self, FidelitySettings};
 use crate::table::{Access, Row, Rule, Table};
-use fmi_layer::fmi2::variables::{Causality, Kind, UnitDef, Variable};
+use fmi_layer::core::variables::{Causality, Kind, UnitDef, Variable};
 use pinjoint::params::PARAMS;
 use pinjoint::record::{self, Value};
 use pinjoint::{OperatingPoint, Params};
@@ -297,7 +297,7 @@ fn presliding_rows(slot: usize) -> Vec<Row<Values>> {
     let mut rate = declare("der(presliding_torque)", 41, Kind::Real, Causality::Local, Some("N.m/s"), None,
         "Time derivative of presliding_torque: k omega g, with k = T/phi_s and g the elastic fraction (1 below the elastic limit, 0 at the sliding torque)");
     rate.derivative_of = Some("presliding_torque");
-    rate.initial = fmi_layer::fmi2::variables::Initial::Calculated;
+    rate.initial = fmi_layer::core::variables::Initial::Calculated;
     rate.depends_on = vec!["angular_velocity", "load", "temperature", "presliding_torque"];
     let finite = crate::inputs::FINITE;
     vec![

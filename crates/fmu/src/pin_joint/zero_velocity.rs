@@ -16,8 +16,8 @@
 
 use crate::declare::declare;
 use crate::table::{Row, Rule};
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
-use fmi_layer::fmi2::variables::{Causality, EnumType, Kind};
+use fmi_layer::core::model::{ModelError, ModelResult};
+use fmi_layer::core::variables::{Causality, EnumType, Kind};
 use pinjoint::zero_velocity::modes::{self, Mode};
 use pinjoint::zero_velocity::presliding::{self, HostCoupling, Presliding};
 use pinjoint::zero_velocity::{band, ZeroVelocityModel};

@@ -2,7 +2,7 @@
 //! variable table as the modelDescription, with numbers computed by the library.
 
 use crate::doc_table::{head, rows, Style};
-use fmi_layer::fmi2::variables::{Causality, ModelInfo};
+use fmi_layer::core::variables::{Causality, ModelInfo};
 use pinjoint::rig::RigParams;
 use pinjoint::{Joint, Params};
 
@@ -172,7 +172,7 @@ setting one sets the other, with the same codes.</li>
 
 #[cfg(test)]
 mod tests {
-    use fmi_layer::fmi2::variables::Causality;
+    use fmi_layer::core::variables::Causality;
 
     #[test]
     fn every_variable_and_output_is_documented() {

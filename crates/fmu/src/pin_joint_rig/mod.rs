@@ -13,7 +13,7 @@ pub mod state;
 pub mod model;
 pub mod doc;
 
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 use std::sync::LazyLock;
 
 /// The PinJointRig model's description for the registry: its variable table

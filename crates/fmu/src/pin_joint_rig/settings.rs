@@ -2,7 +2,7 @@
 //! checks of initialization (each value's own check is its row's, [`super::variables::TABLE`]).
 
 use crate::fidelity::FidelitySettings;
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
+use fmi_layer::core::model::{ModelError, ModelResult};
 use pinjoint::fidelity::{Envelope, Fidelity};
 use pinjoint::rig::params::{RigParamSpec, RIG_PARAMS};
 use pinjoint::rig::{Formulation, Inputs, Method, RigConfig};

@@ -1,5 +1,5 @@
 //! The PinJointRig part of the serialized FMU state (inside the generic layer's
-//! container, [`fmi_layer::fmi2::snapshot`]), little-endian, version 3:
+//! container, [`fmi_layer::core::snapshot`]), little-endian, version 3:
 //!
 //! | bytes | content |
 //! |---|---|
@@ -24,8 +24,8 @@
 use super::settings::Settings;
 use super::variables::{Values, STATE_VERSION, TABLE};
 use crate::table::rejected;
-use fmi_layer::fmi2::bytes::{ByteReader, ByteWriter};
-use fmi_layer::fmi2::model::{ModelError, ModelResult};
+use fmi_layer::core::bytes::{ByteReader, ByteWriter};
+use fmi_layer::core::model::{ModelError, ModelResult};
 use pinjoint::rig::RigState;
 
 /// Append the PinJointRig state (the layout of the module documentation) to `out`: every

@@ -25,7 +25,7 @@ use crate::fidelity::{self, FidelitySettings};
 use crate::inputs::{FINITE, LOAD_RULE};
 use crate::parameters::declared_bounds;
 use crate::table::{Access, Row, Rule, Table};
-use fmi_layer::fmi2::variables::{Causality, EnumType, Kind, UnitDef, Variable};
+use fmi_layer::core::variables::{Causality, EnumType, Kind, UnitDef, Variable};
 use pinjoint::rig::params::{RigParamSpec, RigParams, RIG_PARAMS};
 use pinjoint::rig::{RigConfig, Sample};
 use std::sync::LazyLock;

@@ -2,19 +2,16 @@
 //! 11–13): the trace as CSV, torque against time and angle as SVG, and the paper's
 //! cycle-average friction coefficient (eq. 11).
 //!
-//! This folder holds the command and its parts (in dependency order): [`simulation`], one rig
-//! simulation with its averages and CSV columns (also used by `pinjoint figures`);
-//! [`stream`], the same streamed to the CSV with bounded memory; [`plots`], the run's SVG
-//! charts. This file holds the command's arguments and [`run`].
+//! This folder holds the command and its part [`stream`], a rig simulation streamed to the CSV
+//! with bounded memory. One rig simulation with its averages and CSV columns
+//! ([`crate::rig_run`]) and its SVG charts ([`crate::rig_plots`]) are the crate's, shared with
+//! `pinjoint figures`. This file holds the command's arguments and [`run`].
 
-// In dependency order: each module uses only those above it (tests/module_graph.py).
-pub mod simulation;
 pub mod stream;
-pub mod plots;
 
 use crate::common::{load_rig_config, positive, readable, RAD_S_PER_RPM};
-use self::plots::{torque_angle_svg, torque_time_svg};
-use self::simulation::{default_skip, CycleRun};
+use crate::rig_plots::{torque_angle_svg, torque_time_svg};
+use crate::rig_run::{default_skip, CycleRun};
 use self::stream::stream_cycles;
 use crate::error::{CliError, Result};
 use crate::fidelity_args::{describe, FidelityArgs};

@@ -8,7 +8,7 @@
 //! bit: the averages are the same trapezoidal sums in the same order.
 
 use crate::common::csv_io;
-use super::simulation::{sample_fields, CycleRun, CYCLE_COLUMNS};
+use crate::rig_run::{sample_fields, CycleRun, CYCLE_COLUMNS};
 use crate::error::{CliError, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::rig::{RigConfig, RigSim, Sample};

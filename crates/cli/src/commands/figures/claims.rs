@@ -7,11 +7,11 @@
 //! data are marked as such, and so are effects the model leaves out.
 
 use crate::common::{readable, RAD_S_PER_RPM};
-use crate::commands::cycle::simulation::stroke_average;
 use crate::error::Result;
 use crate::numbers::{nm, pct, sig};
 use super::rig::{at_frequency, find, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
+use pinjoint::rig::stroke_average;
 use pinjoint::{Joint, OperatingPoint, Params};
 use std::f64::consts::TAU;
 
@@ -126,7 +126,7 @@ fn monotone(joint: &Joint, load: f64, up: bool, q: impl Fn(&OperatingPoint) -> f
 /// The core's eq. 11 stroke average (μ over a sine stroke of ±`amplitude` at `f`) at every
 /// paper load and frequency: `[frequency][load]`.
 pub fn stroke_table(joint: &Joint, amplitude: f64) -> Result<Vec<Vec<f64>>> {
-    PAPER_FREQUENCIES.iter().map(|&f| PAPER_LOADS.iter().map(|&p| stroke_average(joint, p, f, amplitude)).collect()).collect()
+    PAPER_FREQUENCIES.iter().map(|&f| PAPER_LOADS.iter().map(|&p| Ok(stroke_average(joint, p, f, amplitude)?)).collect()).collect()
 }
 
 fn kn(p: f64) -> String {
@@ -590,54 +590,10 @@ pub fn html(claims: &[Claim], escape: impl Fn(&str) -> String) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::commands::figures::plots::CoreCurves;
+    use super::super::plots::CoreCurves;
 
     fn joint() -> Joint {
         Joint::new(&Params::paper()).unwrap()
-    }
-
-    /// Adaptive Simpson quadrature of `f` over [a, b] to `tol` (an independent rule: the
-    /// project's stroke average is a fixed midpoint rule in phase).
-    fn simpson(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
-        #[allow(clippy::too_many_arguments)]
-        fn step(f: &dyn Fn(f64) -> f64, a: f64, b: f64, fa: f64, fm: f64, fb: f64, whole: f64, tol: f64, depth: u32) -> f64 {
-            let m = 0.5 * (a + b);
-            let (lm, rm) = (0.5 * (a + m), 0.5 * (m + b));
-            let (flm, frm) = (f(lm), f(rm));
-            let left = (m - a) / 6.0 * (fa + 4.0 * flm + fm);
-            let right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
-            if depth == 0 || (left + right - whole).abs() <= 15.0 * tol {
-                return left + right + (left + right - whole) / 15.0;
-            }
-            step(f, a, m, fa, flm, fm, left, tol / 2.0, depth - 1) + step(f, m, b, fm, frm, fb, right, tol / 2.0, depth - 1)
-        }
-        let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
-        step(f, a, b, fa, fm, fb, (b - a) / 6.0 * (fa + 4.0 * fm + fb), tol, 40)
-    }
-
-    #[test]
-    fn stroke_average_is_eq11_over_the_sine_stroke_by_an_independent_quadrature() {
-        // Over a sine stroke |ω(t)| = ω_pk·|cos 2πft|, and by symmetry the time mean is the mean
-        // over a quarter period: (2/π)∫_0^{π/2} μ(P, ω_pk·cos φ) dφ.
-        let j = joint();
-        let a = 40f64.to_radians();
-        for (p, f) in [(5e3, 1.0), (20e3, 0.3), (60e3, 0.03), (5e3, 3.0)] {
-            let peak = TAU * f * a;
-            let mu = |phi: f64| j.evaluate(p, peak * phi.cos()).unwrap().friction_coefficient;
-            let reference = 2.0 / std::f64::consts::PI * simpson(&mu, 0.0, std::f64::consts::FRAC_PI_2, 1e-12);
-            let ours = stroke_average(&j, p, f, a).unwrap();
-            // The 512-point midpoint rule converges only algebraically: μ(ω) is not smooth at ω = 0
-            // (the reversals). Measured: 3e-6 relative at 5 kN, 1 Hz; 2.6e-5 at 5 kN, 3 Hz (the end of
-            // Figure 8's curves), far below what a plot shows. A finer midpoint sum must come closer.
-            assert!((ours / reference - 1.0).abs() < 1e-4, "{p} N, {f} Hz: {ours} vs {reference}");
-            let fine = (0..8192).map(|k| mu(TAU * (f64::from(k) + 0.5) / 8192.0)).sum::<f64>() / 8192.0;
-            assert!((fine - reference).abs() <= (ours - reference).abs() + 1e-12, "{p} N, {f} Hz: {fine} vs {ours} vs {reference}");
-            // And it is mean|T| / (R·P) of the core's torque over the stroke (eq. 11 read backwards).
-            let torque = |phi: f64| j.evaluate(p, peak * phi.cos()).unwrap().torque;
-            let t_mean = 2.0 / std::f64::consts::PI * simpson(&torque, 0.0, std::f64::consts::FRAC_PI_2, 1e-9);
-            let r = j.params().geometry.pin_radius;
-            assert!((t_mean / (r * p) - reference).abs() < 1e-9, "{p} N, {f} Hz");
-        }
     }
 
     #[test]

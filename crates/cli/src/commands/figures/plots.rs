@@ -3,11 +3,11 @@
 //! Figures 11–13 (torque against time at 0.03, 0.3 and 1 Hz).
 
 use crate::common::{lin_space, log_space, readable};
-use crate::commands::cycle::simulation::stroke_average;
-use crate::commands::cycle::plots::{overview_svg, run_label, torque_time_chart, RECORDED};
+use crate::rig_plots::{overview_svg, run_label, torque_time_chart, RECORDED};
 use crate::error::Result;
 use super::rig::{at_frequency, RigResult, PAPER_FREQUENCIES};
 use pinjoint::paper::LOADS as PAPER_LOADS;
+use pinjoint::rig::stroke_average;
 use crate::plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
 use pinjoint::Joint;
 use rayon::prelude::*;
@@ -63,11 +63,11 @@ impl CoreCurves {
         let loads = lin_space(PAPER_LOADS[0], PAPER_LOADS[PAPER_LOADS.len() - 1], points.max(12));
         let stroke_averages = PAPER_FREQUENCIES
             .iter()
-            .map(|&f| loads.par_iter().map(|&p| stroke_average(joint, p, f, amplitude)).collect::<Result<Vec<_>>>())
+            .map(|&f| loads.par_iter().map(|&p| Ok(stroke_average(joint, p, f, amplitude)?)).collect::<Result<Vec<_>>>())
             .collect::<Result<Vec<_>>>()?;
         let at_paper = PAPER_FREQUENCIES
             .iter()
-            .map(|&f| PAPER_LOADS.iter().map(|&p| stroke_average(joint, p, f, amplitude)).collect::<Result<Vec<_>>>())
+            .map(|&f| PAPER_LOADS.iter().map(|&p| Ok(stroke_average(joint, p, f, amplitude)?)).collect::<Result<Vec<_>>>())
             .collect::<Result<Vec<_>>>()?;
         let s_per_rad_s = PAPER_LOADS.iter().map(|&p| Ok(joint.evaluate(p, 1.0)?.sommerfeld_number)).collect::<Result<Vec<_>>>()?;
         let load_s_per_rad_s = loads.iter().map(|&p| Ok(joint.evaluate(p, 1.0)?.sommerfeld_number)).collect::<Result<Vec<_>>>()?;

@@ -4,7 +4,8 @@
 //! slow stroke, mid-stroke dip, servo oscillation).
 
 use crate::common::{csv_table, exact};
-use crate::commands::cycle::simulation::{core_torque, CycleRun, CYCLE_COLUMNS};
+use crate::rig_run::{sample_fields, CycleRun, CYCLE_COLUMNS};
+use pinjoint::rig::core_torque;
 use crate::error::Result;
 use pinjoint::paper::LOADS as PAPER_LOADS;
 use indicatif::ProgressBar;
@@ -233,7 +234,7 @@ pub fn averages_csv(w: &mut dyn std::io::Write, results: &[RigResult]) -> std::i
 pub fn traces_csv(w: &mut dyn std::io::Write, runs: &[&CycleRun]) -> std::io::Result<()> {
     let rows = runs.iter().flat_map(|run| {
         let t0 = run.skip as f64 * run.period();
-        run.window().iter().map(move |s| [exact(run.load()), exact(s.time - t0)].into_iter().chain(crate::commands::cycle::simulation::sample_fields(s)))
+        run.window().iter().map(move |s| [exact(run.load()), exact(s.time - t0)].into_iter().chain(sample_fields(s)))
     });
     csv_table(w, ["load", "cycle_time"].into_iter().chain(CYCLE_COLUMNS), rows)
 }

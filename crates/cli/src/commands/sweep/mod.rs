@@ -383,7 +383,7 @@ fn stream<R: BufRead>(
     file: &str,
     form: Form,
     bar: &ProgressBar,
-    sink: &mut dyn FnMut(&[ChunkOut]) -> Result<()>,
+    sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>,
 ) -> Result<((f64, f64), (f64, f64))> {
     let (mut loads, mut speeds) = (EMPTY_RANGE, EMPTY_RANGE);
     let (mut current, mut next) = (Batch::default(), Batch::default());
@@ -393,7 +393,7 @@ fn stream<R: BufRead>(
         bar.set_position(reader.consumed);
         let (written, read, outs) = std::thread::scope(|s| {
             let work = s.spawn(|| batch_outputs(&current, cols, mode, file, form));
-            let written = sink(&done);
+            let written = sink(&mut done);
             let read = if more && written.is_ok() {
                 reader.fill(&mut next, BATCH_ROWS)
             } else {
@@ -412,7 +412,7 @@ fn stream<R: BufRead>(
         more = read?;
         std::mem::swap(&mut current, &mut next);
     }
-    sink(&done)?;
+    sink(&mut done)?;
     Ok((loads, speeds))
 }
 
@@ -483,7 +483,7 @@ fn progress(len: Option<u64>) -> ProgressBar {
 /// The rows of a Parquet input ([`columnar::ParquetRows`]) through `mode`, a batch of
 /// [`BATCH_ROWS`] at a time answered on every core and handed to `sink` in input order.
 /// Returns the ranges of positive load and |speed| seen.
-fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&[ChunkOut]) -> Result<()>) -> Result<((f64, f64), (f64, f64))> {
+fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>) -> Result<((f64, f64), (f64, f64))> {
     let file = path.display().to_string();
     let mut rows = columnar::ParquetRows::open(path, BATCH_ROWS).map_err(CliError::Invalid)?;
     let cols = parquet_input_columns(rows.has_temperature);
@@ -550,12 +550,12 @@ fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&[C
                 Ok(out)
             })
             .collect();
-        let outs: Vec<ChunkOut> = outs.into_iter().collect::<Result<_>>()?;
+        let mut outs: Vec<ChunkOut> = outs.into_iter().collect::<Result<_>>()?;
         for o in &outs {
             (loads.0, loads.1) = (loads.0.min(o.loads.0), loads.1.max(o.loads.1));
             (speeds.0, speeds.1) = (speeds.0.min(o.speeds.0), speeds.1.max(o.speeds.1));
         }
-        sink(&outs)?;
+        sink(&mut outs)?;
     }
     Ok((loads, speeds))
 }
@@ -627,11 +627,11 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     } else {
         let (loads, speeds) = if needs_ranges {
             let (l, s) = if parquet_in {
-                stream_parquet(&cmd.input, &Mode::Scan, form, &mut |_| Ok(()))?
+                stream_parquet(&cmd.input, &Mode::Scan, form, &mut |_: &mut [ChunkOut]| Ok(()))?
             } else {
                 let mut reader = RecordReader::new(&mut input, &file);
                 let cols = read_header(&mut reader, &file)?;
-                let r = stream(&mut reader, &cols, &Mode::Scan, &file, form, &ProgressBar::hidden(), &mut |_| Ok(()))?;
+                let r = stream(&mut reader, &cols, &Mode::Scan, &file, form, &ProgressBar::hidden(), &mut |_: &mut [ChunkOut]| Ok(()))?;
                 input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
                 r
             };
@@ -656,7 +656,7 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         *failure.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(e);
         io::Error::other(msg)
     };
-    let mut source = |mode: &Mode, sink: &mut dyn FnMut(&[ChunkOut]) -> Result<()>| -> Result<()> {
+    let mut source = |mode: &Mode, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>| -> Result<()> {
         if parquet_in {
             stream_parquet(&cmd.input, mode, form, sink).map(|_| ())
         } else {
@@ -669,9 +669,10 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         write_atomic_send(path, &inputs, |w| {
             let mut pq = columnar::ParquetSink::new(w, &names, &parquet_columns(&cols, 0))?;
             let mut write_err: Option<io::Error> = None;
-            let mut sink = |outs: &[ChunkOut]| -> Result<()> {
-                let blocks: Vec<&[Values]> = outs.iter().map(|o| o.cols.as_slice()).collect();
-                pq.write(&blocks).map_err(|e| {
+            let mut sink = |outs: &mut [ChunkOut]| -> Result<()> {
+                // Each chunk's columns move into the file's arrays (no copy of the numbers).
+                let blocks = outs.iter_mut().map(|o| std::mem::take(&mut o.cols));
+                pq.write_owned(blocks).map_err(|e| {
                     let msg = e.to_string();
                     write_err = Some(e);
                     CliError::Invalid(msg)
@@ -692,8 +693,8 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
             wtr.flush()?;
             drop(wtr);
             let mut write_err: Option<io::Error> = None;
-            let mut sink = |outs: &[ChunkOut]| -> Result<()> {
-                for o in outs {
+            let mut sink = |outs: &mut [ChunkOut]| -> Result<()> {
+                for o in outs.iter() {
                     if let Err(e) = w.write_all(&o.text) {
                         let msg = e.to_string();
                         write_err = Some(e);

@@ -8,25 +8,68 @@
 
 #![allow(non_snake_case)]
 
-use super::guard::{guarded, maybe_forced_panic, slice, slice_mut};
-use super::values::{get_as, reject_as, set_as, FMI2};
+use crate::core::guard::{guarded, maybe_forced_panic, slice, slice_mut};
+use crate::core::state::{Mask, State, ENTER_INITIALIZATION_MODE, EXIT_INITIALIZATION_MODE, GET_VALUE, RESET, SET_DEBUG_LOGGING, SET_VALUE, TERMINATE};
+use crate::core::instance::{Instance, Interface, Rules};
+use crate::core::instantiate::{free_instance, instance_name_checked, looks_like_uri, model_of, refuse_instance, set_debug_logging, text};
+use crate::core::logging::{c_text, Category, HostLog, Logger};
+use crate::core::values::{get_as, reject_as, set_as, Arrays};
+use crate::core::variables::{Kind, ModelInfo};
 use crate::error::CallError;
-use crate::fmi2::instance::{CallResult, Instance, Interface};
-use crate::fmi2::logging::{Category, Logger};
 use crate::fmi2::types::*;
-use crate::fmi2::variables::{Kind, ModelInfo};
 use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::ptr::null_mut;
+use std::rc::Rc;
 
-/// A C string from the host as an owned Rust string (invalid UTF-8 replaced), or `None`
-/// for NULL.
-///
-/// # Safety
-/// `p` is NULL or a NUL-terminated string.
-pub(crate) unsafe fn text(p: *const c_char) -> Option<String> {
-    // SAFETY: per the contract.
-    (!p.is_null()).then(|| unsafe { CStr::from_ptr(p) }.to_string_lossy().into_owned())
+// The state masks of FMI 2.0's own functions; the functions both standards have use the
+// core's (`crate::core::state`).
+
+/// `fmi2SetupExperiment`: right after instantiation only.
+const SETUP_EXPERIMENT: Mask = Mask::of(&[State::Instantiated]);
+/// `fmi2GetDirectionalDerivative` (FMI 2.0 §3.2.3 and §4.2.4 tables): as [`GET_VALUE`]
+/// (initialization, event and continuous-time mode; stepComplete, stepFailed, stepCanceled;
+/// terminated, error).
+const GET_DIRECTIONAL_DERIVATIVE: Mask = GET_VALUE;
+
+/// FMI 2.0's names of the arrays of a get/set call (`vr[]`, `value[]`: one value per value
+/// reference); `fmi2GetString`/`fmi2SetString` check the value array too.
+const ARRAYS: Arrays = Arrays { vr: "vr[]", values: "value[]", check_unused_values: true };
+
+/// Whether a variable of kind `variable` is read and written by the FMI 2.0 getter/setter of
+/// `requested` (Real, Integer or Boolean): an Enumeration goes through the Integer functions
+/// (FMI 2.0 §2.1.7), every other kind through its own.
+pub fn accessed_as(variable: Kind, requested: Kind) -> bool {
+    match (variable, requested) {
+        (Kind::Enumeration(_), Kind::Integer) => true,
+        (a, b) => std::mem::discriminant(&a) == std::mem::discriminant(&b),
+    }
+}
+
+/// What FMI 2.0 defines its own way for an instance it creates.
+pub static RULES: Rules = Rules {
+    accessed_as,
+    no_directional_derivatives: "directional derivatives are not provided (providesDirectionalDerivative = false)",
+};
+
+/// The host's `fmi2CallbackLogger` with its `componentEnvironment`: every message goes to it
+/// with the instance name, through a `"%s"` format, `#` doubled (FMI 2.0 reads `#vr#` in a
+/// message as a value-reference reference; `##` is a literal `#`).
+#[derive(Debug)]
+struct Fmi2Log {
+    callback: Fmi2CallbackLogger,
+    env: Fmi2ComponentEnvironment,
+}
+
+impl HostLog for Fmi2Log {
+    fn emit(&self, instance_name: &CStr, status: Status, category: &CStr, message: &str) {
+        let msg = c_text(&message.replace('#', "##"));
+        // SAFETY: the callback was checked non-NULL at instantiation; all strings are
+        // NUL-terminated and outlive the call; the message goes through "%s".
+        unsafe {
+            (self.callback)(self.env, instance_name.as_ptr(), status.c(), category.as_ptr(), c"%s".as_ptr(), msg.as_ptr());
+        }
+    }
 }
 
 /// `fmi2GetTypesPlatform` (FMI 2.0 §2.1.4): returns the static string `"default"`
@@ -70,7 +113,8 @@ pub unsafe fn instantiate_from(
         };
         // SAFETY: strings from the host are NULL or NUL-terminated.
         let (name, guid, resources) = unsafe { (text(instance_name), text(guid), text(resource_location)) };
-        let logger = Logger::new(cb, f.component_environment, name.as_deref().unwrap_or("(NULL)"), logging_on != FMI2_FALSE);
+        let sink: Rc<dyn HostLog> = Rc::new(Fmi2Log { callback: cb, env: f.component_environment });
+        let logger = Logger::new(Some(sink), name.as_deref().unwrap_or("(NULL)"), logging_on != FMI2_FALSE);
         maybe_forced_panic("fmi2Instantiate");
         let checked = instance_name_checked(name).and_then(|name| {
             if fmu_type != FMI2_CO_SIMULATION && fmu_type != FMI2_MODEL_EXCHANGE {
@@ -78,7 +122,7 @@ pub unsafe fn instantiate_from(
             }
             let (info, guid) = model_of(registry, guid, "fmuGUID")?;
             if fmu_type == FMI2_MODEL_EXCHANGE && !info.model_exchange {
-                return Err(CallError::Fmi2CoSimulationOnly(info.model_name));
+                return Err(CallError::CoSimulationOnly { model: info.model_name, asked: "fmuType = 0 (Model Exchange): ", offered: " (fmuType = 1)" });
             }
             Ok((name, info, guid))
         });
@@ -98,48 +142,11 @@ pub unsafe fn instantiate_from(
             ),
             _ => {}
         }
-        let inst = Instance::with_interface(info, &name, logger, interface, false);
+        let inst = Instance::with_interface(info, &name, logger, interface, &RULES);
         inst.event(&format!("instantiated {} (GUID {guid})", info.model_name));
         Box::into_raw(Box::new(inst)) as Fmi2Component
     }))
     .unwrap_or(null_mut())
-}
-
-/// The instance name of an instantiation, which must be a non-empty string.
-pub(crate) fn instance_name_checked(name: Option<String>) -> Result<String, CallError> {
-    name.filter(|n| !n.is_empty()).ok_or(CallError::EmptyInstanceName)
-}
-
-/// The model of `registry` whose GUID is `token` (the argument `arg`: `fmuGUID` or
-/// `instantiationToken`), with the token.
-pub(crate) fn model_of(registry: &[&'static ModelInfo], token: Option<String>, arg: &'static str) -> Result<(&'static ModelInfo, String), CallError> {
-    let token = token.ok_or(CallError::Null(arg))?;
-    match registry.iter().copied().find(|m| m.guid() == token) {
-        Some(info) => Ok((info, token)),
-        None => {
-            let known: Vec<String> = registry.iter().map(|m| format!("{} {}", m.model_name, m.guid())).collect();
-            Err(CallError::UnknownToken { arg, token, known: known.join(", ") })
-        }
-    }
-}
-
-/// Log why the instantiation function `func` refuses, and return its NULL instance.
-pub(crate) fn refuse_instance(logger: &Logger, func: &str, e: &CallError) -> Fmi2Component {
-    logger.log(Status::Error, Category::StatusError, &format!("{func}: {e}"));
-    null_mut()
-}
-
-/// RFC 3986: `scheme ":" ...` with scheme = ALPHA *( ALPHA / DIGIT / "+" / "-" / "." ).
-pub(crate) fn looks_like_uri(s: &str) -> bool {
-    match s.split_once(':') {
-        Some((scheme, _)) => {
-            let mut ch = scheme.chars();
-            ch.next().is_some_and(|c| c.is_ascii_alphabetic())
-                && ch.all(|c| c.is_ascii_alphanumeric() || "+-.".contains(c))
-                && scheme.len() > 1 // not a Windows drive letter
-        }
-        None => false,
-    }
 }
 
 /// `fmi2FreeInstance` (FMI 2.0 §2.1.5): frees the instance in any state (the `fatal` one
@@ -150,46 +157,8 @@ pub(crate) fn looks_like_uri(s: &str) -> bool {
 /// `c` is NULL or a component from `fmi2Instantiate` not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi2FreeInstance(c: Fmi2Component) {
-    if c.is_null() {
-        return;
-    }
-    let _ = catch_unwind(AssertUnwindSafe(|| {
-        let ptr = c as *mut Instance;
-        // SAFETY: per the contract; the tag check skips freed or foreign memory.
-        let inst = unsafe { &mut *ptr };
-        if !inst.is_live() {
-            return;
-        }
-        inst.event("freeing the instance");
-        inst.kill();
-        // SAFETY: the pointer came from Box::into_raw in fmi2Instantiate.
-        drop(unsafe { Box::from_raw(ptr) });
-    }));
-}
-
-/// The body of `fmi2SetDebugLogging` and `fmi3SetDebugLogging`: switch the named
-/// categories (all of them for none) on or off; nothing changes if a name is NULL or unknown.
-///
-/// # Safety
-/// `categories` points to `n` strings when `n > 0`.
-pub(crate) unsafe fn set_debug_logging(inst: &mut Instance, on: bool, categories: *const Fmi2String, n: usize) -> CallResult {
-    // SAFETY: per the contract.
-    let cats = unsafe { slice(categories, n, "categories[]") }?;
-    let mut parsed = Vec::with_capacity(cats.len());
-    for &p in cats {
-        // SAFETY: each entry is NULL or a NUL-terminated string.
-        let name = unsafe { text(p) }.ok_or(CallError::Null("a category name"))?;
-        let known: Vec<&str> = Category::ALL.iter().map(|c| c.name()).collect();
-        parsed.push(Category::from_name(&name).ok_or_else(|| CallError::UnknownCategory { name, known: known.join(", ") })?);
-    }
-    if parsed.is_empty() {
-        inst.logger.set_all(on);
-    } else {
-        for cat in parsed {
-            inst.logger.set(cat, on);
-        }
-    }
-    Ok(Status::Ok)
+    // SAFETY: forwarded under the same contract.
+    unsafe { free_instance(c) }
 }
 
 guarded! {
@@ -219,7 +188,7 @@ guarded! {
     fn fmi2EnterInitializationMode(c: Fmi2Component) -> Fmi2StatusC: ENTER_INITIALIZATION_MODE => Instance::enter_initialization_mode;
 
     /// `fmi2ExitInitializationMode` (FMI 2.0 §2.1.6): lets the model validate its parameters
-    /// ([`crate::fmi2::model::Model::exit_initialization`]) and compute its first outputs, then
+    /// ([`crate::core::model::Model::exit_initialization`]) and compute its first outputs, then
     /// enters step mode (Co-Simulation) or event mode (Model Exchange). A parameter the model
     /// rejects, or an output out of its range, is `fmi2Error` and puts the instance in the
     /// `error` state.
@@ -241,7 +210,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetReal(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2Real) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { get_as(inst, Kind::Real, &FMI2, vr, nvr, value, nvr, |v| v) };
+        |inst| unsafe { get_as(inst, Kind::Real, &ARRAYS, vr, nvr, value, nvr, |v| v) };
 
     /// `fmi2SetReal` (FMI 2.0 §2.1.7): sets the Real variables `vr[0..nvr]`. Every value is
     /// checked (variability and causality for the current state, the model's range check)
@@ -250,7 +219,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetReal(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2Real) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { set_as(inst, Kind::Real, &FMI2, vr, nvr, value, nvr, Ok) };
+        |inst| unsafe { set_as(inst, Kind::Real, &ARRAYS, vr, nvr, value, nvr, Ok) };
 
     /// `fmi2GetInteger` (FMI 2.0 §2.1.7): writes the values of the Integer (and Enumeration)
     /// variables `vr[0..nvr]` into `value` (the model holds them as f64; see [`Kind`]).
@@ -259,7 +228,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetInteger(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2Integer) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { get_as(inst, Kind::Integer, &FMI2, vr, nvr, value, nvr, |v| v as Fmi2Integer) };
+        |inst| unsafe { get_as(inst, Kind::Integer, &ARRAYS, vr, nvr, value, nvr, |v| v as Fmi2Integer) };
 
     /// `fmi2SetInteger` (FMI 2.0 §2.1.7): sets the Integer (and Enumeration) variables
     /// `vr[0..nvr]` (stored as f64; see [`Kind`]). Every value is checked before any is
@@ -268,7 +237,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetInteger(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2Integer) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { set_as(inst, Kind::Integer, &FMI2, vr, nvr, value, nvr, |v| Ok(f64::from(v))) };
+        |inst| unsafe { set_as(inst, Kind::Integer, &ARRAYS, vr, nvr, value, nvr, |v| Ok(f64::from(v))) };
 
     /// `fmi2GetBoolean` (FMI 2.0 §2.1.7): writes the values of the Boolean variables
     /// `vr[0..nvr]` into `value` (`fmi2True` or `fmi2False`). Returns `fmi2Error` for an
@@ -277,7 +246,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetBoolean(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2Boolean) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { get_as(inst, Kind::Boolean, &FMI2, vr, nvr, value, nvr, |v| v as Fmi2Boolean) };
+        |inst| unsafe { get_as(inst, Kind::Boolean, &ARRAYS, vr, nvr, value, nvr, |v| v as Fmi2Boolean) };
 
     /// `fmi2SetBoolean` (FMI 2.0 §2.1.7): sets the Boolean variables `vr[0..nvr]`; any
     /// non-zero `fmi2Boolean` is true. Every value is checked before any is stored, so a call
@@ -286,7 +255,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetBoolean(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2Boolean) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { set_as(inst, Kind::Boolean, &FMI2, vr, nvr, value, nvr, |v| Ok(if v != FMI2_FALSE { 1.0 } else { 0.0 })) };
+        |inst| unsafe { set_as(inst, Kind::Boolean, &ARRAYS, vr, nvr, value, nvr, |v| Ok(if v != FMI2_FALSE { 1.0 } else { 0.0 })) };
 
     /// `fmi2GetString` (FMI 2.0 §2.1.7): no model of this layer has String variables, so
     /// every value reference is rejected with `fmi2Error` (`nvr = 0` is `fmi2OK`).
@@ -294,7 +263,7 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2GetString(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *mut Fmi2String) -> Fmi2StatusC: GET_VALUE =>
-        |inst| unsafe { reject_as(inst, "String", &FMI2, vr, nvr, value.cast_const(), nvr) };
+        |inst| unsafe { reject_as(inst, "String", &ARRAYS, vr, nvr, value.cast_const(), nvr) };
 
     /// `fmi2SetString` (FMI 2.0 §2.1.7): no model of this layer has String variables, so
     /// every value reference is rejected with `fmi2Error` (`nvr = 0` is `fmi2OK`).
@@ -302,11 +271,11 @@ guarded! {
     /// # Safety
     /// `vr` and `value` point to `nvr` elements when `nvr > 0`.
     unsafe fn fmi2SetString(c: Fmi2Component, vr: *const Fmi2ValueReference, nvr: usize, value: *const Fmi2String) -> Fmi2StatusC: SET_VALUE =>
-        |inst| unsafe { reject_as(inst, "String", &FMI2, vr, nvr, value, nvr) };
+        |inst| unsafe { reject_as(inst, "String", &ARRAYS, vr, nvr, value, nvr) };
 
     /// `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9): `dvUnknown = J · dvKnown`, where
     /// `J[i][j]` is the partial derivative of variable `vUnknown_ref[i]` with respect to
-    /// `vKnown_ref[j]` at the current values (the model's [`crate::fmi2::model::Model::jacobian`];
+    /// `vKnown_ref[j]` at the current values (the model's [`crate::core::model::Model::jacobian`];
     /// unknowns: outputs, and under Model Exchange state derivatives; knowns: inputs, and under
     /// Model Exchange continuous states). `nUnknown` or `nKnown` = 0 is `fmi2OK` with nothing
     /// written. `fmi2Error` for a model without `providesDirectionalDerivative`, a NULL array,

@@ -2,15 +2,29 @@
 
 #![allow(non_snake_case)]
 
-use super::guard::{guarded, refuse, write_out};
+use crate::core::guard::{guarded, refuse, write_out};
+use crate::core::state::{Mask, State, DO_STEP};
 use crate::error::CallError;
-use crate::fmi2::instance::CallResult;
+use crate::core::instance::CallResult;
 use crate::fmi2::types::*;
 use std::ffi::c_int;
 
+// The state masks of FMI 2.0's own Co-Simulation functions (FMI 2.0 §4.2.4 state chart); the
+// functions both standards have use the core's (`crate::core::state`).
+
+/// `fmi2CancelStep`: only while an asynchronous step runs (never, here).
+const CANCEL_STEP: Mask = Mask::of(&[State::StepInProgress]);
+/// `fmi2SetRealInputDerivatives`.
+const SET_REAL_INPUT_DERIVATIVES: Mask = Mask::of(&[State::Instantiated, State::InitializationMode, State::StepComplete]);
+/// `fmi2GetRealOutputDerivatives`.
+const GET_REAL_OUTPUT_DERIVATIVES: Mask =
+    Mask::of(&[State::StepComplete, State::StepFailed, State::StepCanceled, State::Terminated, State::Error]);
+/// `fmi2Get*Status`.
+const GET_STATUS: Mask = Mask::of(&[State::StepComplete, State::StepInProgress, State::StepFailed, State::Terminated]);
+
 /// The error of an `fmi2Get*Status` function for a status kind it does not provide.
 fn unsupported(func: &'static str, kind: c_int) -> CallResult {
-    Err(CallError::StatusKind { kind, func })
+    Err(CallError::StatusKind { kind: status_kind(kind), prefix: "fmi2", func })
 }
 
 /// `*value = v` for the one status kind `provided` that `func` reports, an error for any

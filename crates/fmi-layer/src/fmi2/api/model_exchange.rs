@@ -1,4 +1,4 @@
-//! The Model Exchange functions (FMI 2.0 §3.2, FMI 3.0 §3.2), for models with
+//! The Model Exchange functions of FMI 2.0 (§3.2), for models with
 //! `ModelInfo::model_exchange`: the host's integrator owns the model's continuous states
 //! (`ModelInfo::continuous_states`, possibly none) and sets them with
 //! `fmi2SetContinuousStates`; the outputs and state derivatives are recomputed from states,
@@ -8,17 +8,17 @@
 //! another iteration, a change of nominals or a time event. The functions are
 //! refused on a Co-Simulation instance (and their masks keep them out of Co-Simulation states).
 //!
-//! The functions with an array of continuous states or event indicators are the same in
-//! both standards and are written here for both; [`crate::fmi3::api`] re-exports the FMI 3.0
-//! ones.
+//! The bodies of the functions with an array of continuous states or event indicators are
+//! the core's (`core::model_exchange`), shared with FMI 3.0.
 
 #![allow(non_snake_case)]
 
-use super::guard::{guarded, slice, slice_mut, write_out};
+use crate::core::guard::{guarded, write_out};
+use crate::core::state::{COMPLETED_INTEGRATOR_STEP, ENTER_CONTINUOUS_TIME_MODE, ENTER_EVENT_MODE, GET_CONTINUOUS_STATES, GET_DERIVATIVES, NEW_DISCRETE_STATES, SET_CONTINUOUS_STATES, SET_TIME};
+use crate::core::instance::Instance;
+use crate::core::model_exchange::{get_states, none, set_states};
 use crate::error::CallError;
-use crate::fmi2::instance::{CallResult, Instance};
 use crate::fmi2::types::*;
-use crate::fmi3::types::{Fmi3Instance, Fmi3StatusC};
 use std::ffi::c_void;
 
 /// `fmi2EventInfo` (FMI 2.0 `fmi2FunctionTypes.h`).
@@ -114,13 +114,7 @@ guarded! {
     /// `x` points to `nx` values.
     unsafe fn fmi2SetContinuousStates(c: Fmi2Component, x: *const Fmi2Real, nx: usize) -> Fmi2StatusC: SET_CONTINUOUS_STATES =>
         |inst| unsafe { set_states(inst, "nx", "x[]", x, nx) };
-    /// `fmi3SetContinuousStates` (FMI 3.0 §3.2): as [`fmi2SetContinuousStates`]
-    /// (`nContinuousStates` must be the number of states); `fmi3Error` on a Co-Simulation instance.
-    ///
-    /// # Safety
-    /// `values` points to `n` values.
-    unsafe fn fmi3SetContinuousStates(instance: Fmi3Instance, values: *const f64, n: usize) -> Fmi3StatusC: SET_CONTINUOUS_STATES =>
-        |inst| unsafe { set_states(inst, "nContinuousStates", "continuousStates[]", values, n) };
+
     /// `fmi2GetDerivatives` (FMI 2.0 §3.2.2): the derivatives of the continuous states at the
     /// current time, states and inputs (`nx` must be the number of states); a model failure
     /// computing them is `fmi2Error`.
@@ -129,19 +123,11 @@ guarded! {
     /// `derivatives` points to `nx` writable values.
     unsafe fn fmi2GetDerivatives(c: Fmi2Component, derivatives: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_DERIVATIVES =>
         |inst| unsafe { get_states(inst, "nx", "derivatives[]", derivatives, nx, Instance::get_derivatives) };
-    /// `fmi3GetContinuousStateDerivatives` (FMI 3.0 §3.2): as [`fmi2GetDerivatives`].
-    ///
-    /// # Safety
-    /// `values` points to `n` writable values.
-    unsafe fn fmi3GetContinuousStateDerivatives(instance: Fmi3Instance, values: *mut f64, n: usize) -> Fmi3StatusC: GET_DERIVATIVES =>
-        |inst| unsafe { get_states(inst, "nContinuousStates", "derivatives[]", values, n, Instance::get_derivatives) };
+
     /// `fmi2GetEventIndicators` (FMI 2.0 §3.2.2): this FMU has no event indicators, so `ni`
     /// must be 0 (then `fmi2OK`, nothing written); `fmi2Error` otherwise.
     fn fmi2GetEventIndicators(c: Fmi2Component, _eventIndicators: *mut Fmi2Real, ni: usize) -> Fmi2StatusC: GET_DERIVATIVES => none("ni", ni);
-    /// `fmi3GetEventIndicators` (FMI 3.0, Model Exchange): this FMU has no event indicators,
-    /// so `nEventIndicators` must be 0 (then `fmi3OK`, nothing written); `fmi3Error` otherwise
-    /// or on a Co-Simulation instance.
-    fn fmi3GetEventIndicators(instance: Fmi3Instance, _values: *mut f64, n: usize) -> Fmi3StatusC: GET_DERIVATIVES => none("nEventIndicators", n);
+
     /// `fmi2GetContinuousStates` (FMI 2.0 §3.2.2): the current state vector (`nx` must be the
     /// number of states).
     ///
@@ -149,12 +135,7 @@ guarded! {
     /// `x` points to `nx` writable values.
     unsafe fn fmi2GetContinuousStates(c: Fmi2Component, x: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_CONTINUOUS_STATES =>
         |inst| unsafe { get_states(inst, "nx", "x[]", x, nx, |i: &mut Instance, o: &mut [f64]| i.get_continuous_states(o)) };
-    /// `fmi3GetContinuousStates` (FMI 3.0 §3.2): as [`fmi2GetContinuousStates`].
-    ///
-    /// # Safety
-    /// `values` points to `n` writable values.
-    unsafe fn fmi3GetContinuousStates(instance: Fmi3Instance, values: *mut f64, n: usize) -> Fmi3StatusC: GET_CONTINUOUS_STATES =>
-        |inst| unsafe { get_states(inst, "nContinuousStates", "continuousStates[]", values, n, |i: &mut Instance, o: &mut [f64]| i.get_continuous_states(o)) };
+
     /// `fmi2GetNominalsOfContinuousStates` (FMI 2.0 §3.2.2): each state's declared `nominal`,
     /// or 1.0 (`nx` must be the number of states).
     ///
@@ -162,48 +143,4 @@ guarded! {
     /// `x_nominal` points to `nx` writable values.
     unsafe fn fmi2GetNominalsOfContinuousStates(c: Fmi2Component, x_nominal: *mut Fmi2Real, nx: usize) -> Fmi2StatusC: GET_CONTINUOUS_STATES =>
         |inst| unsafe { get_states(inst, "nx", "x_nominal[]", x_nominal, nx, |i: &mut Instance, o: &mut [f64]| i.nominals_of_continuous_states(o)) };
-    /// `fmi3GetNominalsOfContinuousStates` (FMI 3.0 §3.2): as
-    /// [`fmi2GetNominalsOfContinuousStates`].
-    ///
-    /// # Safety
-    /// `values` points to `n` writable values.
-    unsafe fn fmi3GetNominalsOfContinuousStates(instance: Fmi3Instance, values: *mut f64, n: usize) -> Fmi3StatusC: GET_CONTINUOUS_STATES =>
-        |inst| unsafe { get_states(inst, "nContinuousStates", "nominals[]", values, n, |i: &mut Instance, o: &mut [f64]| i.nominals_of_continuous_states(o)) };
-}
-
-/// The body of the Model Exchange functions with an array of event indicators (`what` =
-/// `n`), of which this layer's models have none: `n` must be 0.
-pub(crate) fn none(what: &'static str, n: usize) -> impl FnOnce(&mut Instance) -> CallResult {
-    move |inst| inst.require_none(what, n).map(|()| Status::Ok)
-}
-
-/// The body of the two SetContinuousStates functions: the count (argument `what`) and the
-/// array (`array`), then [`Instance::set_continuous_states`].
-///
-/// # Safety
-/// `x` points to `n` values.
-unsafe fn set_states(inst: &mut Instance, what: &'static str, array: &'static str, x: *const f64, n: usize) -> CallResult {
-    inst.require_state_count(what, n)?;
-    // SAFETY: per the contract.
-    let x = unsafe { slice(x, n, array)? };
-    inst.set_continuous_states(x)
-}
-
-/// The body of the functions that write one value per continuous state: the count
-/// (argument `what`) and the array (`array`), then `fill`.
-///
-/// # Safety
-/// `out` points to `n` writable values.
-unsafe fn get_states(
-    inst: &mut Instance,
-    what: &'static str,
-    array: &'static str,
-    out: *mut f64,
-    n: usize,
-    fill: impl FnOnce(&mut Instance, &mut [f64]) -> CallResult,
-) -> CallResult {
-    inst.require_state_count(what, n)?;
-    // SAFETY: per the contract.
-    let out = unsafe { slice_mut(out, n, array)? };
-    fill(inst, out)
 }

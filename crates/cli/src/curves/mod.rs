@@ -1,8 +1,14 @@
-//! Operating points along a speed sweep at one load, and their CSV: shared by `stribeck`
-//! (Figure 3) and `map` (Figure 4).
+//! The model along speed sweeps and the paper's figures drawn from them, shared by the commands
+//! `stribeck` (Figure 3), `map` (Figure 4) and `figures` (both): this file holds the operating
+//! points along a speed sweep at one load and their CSV; [`stribeck`] writes Figure 3,
+//! [`map`] Figure 4.
 
-use super::common::{csv_table, exact, result_fields, RAD_S_PER_RPM, RESULT_COLUMNS};
-use super::error::{CliError, Result};
+// In dependency order: each module uses only those above it (tests/module_graph.py).
+pub mod stribeck;
+pub mod map;
+
+use crate::common::{csv_table, exact, result_fields, RAD_S_PER_RPM, RESULT_COLUMNS};
+use crate::error::{CliError, Result};
 use pinjoint::{Joint, OperatingPoint};
 use rayon::prelude::*;
 

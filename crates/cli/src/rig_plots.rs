@@ -1,9 +1,11 @@
-//! Plots of one rig run: torque against time (the paper's Figures 11–13), torque against angle
-//! (Figure 7d) and the four panels of Figure 7.
+//! Plots of one rig run ([`crate::rig_run`]): torque against time (the paper's Figures 11–13),
+//! torque against angle (Figure 7d) and the four panels of Figure 7; drawn by `pinjoint cycle`
+//! and `pinjoint figures`.
 
 use crate::common::readable;
-use super::simulation::{core_torque, CycleRun};
+use crate::rig_run::CycleRun;
 use crate::error::Result;
+use pinjoint::rig::core_torque;
 use crate::plot::{line_plot, stacked_plot, Axis, Chart, Corner, Series, Style};
 use pinjoint::rig::Sample;
 

@@ -1,6 +1,7 @@
 //! One FMU instance: life-cycle state, time, logger and the model behind the
 //! [`Model`] trait. The methods here hold the standard's rules in safe Rust; the
-//! `extern "C"` functions in [`super::api`] only convert pointers and call them.
+//! `extern "C"` functions of the shims (each in its `api`) only convert pointers and
+//! call them.
 //!
 //! Errors: a method returns a [`CallError`]; the caller logs it with status
 //! `fmi2Error`. Argument errors (NULL arrays, unknown value references, a set on an
@@ -31,6 +32,19 @@ pub type CallResult = Result<Status, CallError>;
 
 pub use super::interface::Interface;
 
+/// What the standards define differently for an instance, given by the shim that creates it:
+/// the core names no standard, so every such difference is a value here, not a branch on a
+/// version.
+#[derive(Debug)]
+pub struct Rules {
+    /// Whether a variable of kind `variable` (the first argument) is read and written by the
+    /// getter/setter of kind `requested` (the second).
+    pub accessed_as: fn(Kind, Kind) -> bool,
+    /// Why a directional derivative is refused when the model does not provide them (the
+    /// message names the standard's capability attribute).
+    pub no_directional_derivatives: &'static str,
+}
+
 /// One FMU instance, the object behind an `fmi2Component`/`fmi3Instance`.
 pub struct Instance {
     tag: u64,
@@ -59,14 +73,15 @@ pub struct Instance {
     /// The variable of each value reference and the outputs (computed once: every get, set
     /// and step reads them).
     lookup: Lookup,
-    /// Instantiated through the FMI 3.0 functions (type rules and messages of FMI 3.0).
-    pub fmi3: bool,
+    /// The rules of the standard whose functions created the instance (its type rules and
+    /// messages).
+    pub rules: &'static Rules,
 }
 
 impl Instance {
-    /// A Co-Simulation instance of the model `info`, every variable at its start value, in the
-    /// `instantiated` state.
-    pub fn new(info: &'static ModelInfo, name: &str, logger: Logger) -> Self {
+    /// A Co-Simulation instance of the model `info` under `rules`, every variable at its start
+    /// value, in the `instantiated` state.
+    pub fn new(info: &'static ModelInfo, name: &str, logger: Logger, rules: &'static Rules) -> Self {
         Instance {
             tag: TAG,
             info,
@@ -81,13 +96,14 @@ impl Instance {
             interface: Interface::CoSimulation,
             states: info.continuous_states(),
             lookup: Lookup::new(info),
-            fmi3: false,
+            rules,
         }
     }
 
-    /// An instance of `interface` (`fmi3`: created by the FMI 3.0 functions).
-    pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, fmi3: bool) -> Self {
-        let mut inst = Instance { interface, fmi3, ..Instance::new(info, name, logger) };
+    /// An instance of `interface`, created by the functions of the standard whose `rules` are
+    /// given.
+    pub fn with_interface(info: &'static ModelInfo, name: &str, logger: Logger, interface: Interface, rules: &'static Rules) -> Self {
+        let mut inst = Instance { interface, ..Instance::new(info, name, logger, rules) };
         inst.model.set_interface(interface);
         inst
     }
@@ -142,8 +158,7 @@ impl Instance {
     fn lookup_kind(&self, vr: u32, kind: Kind) -> Result<usize, CallError> {
         let i = self.lookup(vr)?;
         let k = self.info.variables[i].kind;
-        let ok = if self.fmi3 { std::mem::discriminant(&k) == std::mem::discriminant(&kind) } else { k.fmi2_accessed_as(kind) };
-        if !ok {
+        if !(self.rules.accessed_as)(k, kind) {
             let article = if matches!(k, Kind::Integer | Kind::Enumeration(_)) { "n" } else { "" };
             return Err(CallError::WrongType { variable: self.describe(i), article, actual: k.as_str(), requested: kind.as_str() });
         }
@@ -507,11 +522,7 @@ impl Instance {
     /// that of `unknowns` (the callers check).
     pub fn directional_derivative(&mut self, unknowns: &[u32], knowns: &[u32], seed: &[f64], out: &mut [f64]) -> CallResult {
         if !self.info.directional_derivatives {
-            return Err(CallError::Unsupported(if self.fmi3 {
-                "directional derivatives are not provided (providesDirectionalDerivatives = false)"
-            } else {
-                "directional derivatives are not provided (providesDirectionalDerivative = false)"
-            }));
+            return Err(CallError::Unsupported(self.rules.no_directional_derivatives));
         }
         let me = self.interface == Interface::ModelExchange;
         let continuous_real = |v: &super::variables::Variable| v.kind == Kind::Real && v.variability == Variability::Continuous;

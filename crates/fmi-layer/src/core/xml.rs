@@ -3,11 +3,12 @@
 //! capabilities, a unit with its base and display units, the log categories, the default
 //! experiment, a variable's common attributes and its type attributes (declared type, unit,
 //! display unit, min, max, start), and the outputs' direct dependencies. Each standard's
-//! generator ([`crate::fmi2::xml`], [`crate::fmi3::xml`]) arranges them in its own elements.
+//! generator (each shim's `xml` module) arranges them in its own elements.
 
 use crate::error::XmlError;
-use crate::fmi2::logging::Category;
-use crate::fmi2::variables::{Causality, Initial, Kind, ModelInfo, UnitDef, Variability, Variable};
+use crate::core::logging::Category;
+use crate::core::types::Status;
+use crate::core::variables::{Causality, Initial, Kind, ModelInfo, UnitDef, Variability, Variable};
 use std::fmt::Write;
 
 /// Escape text for an XML attribute value.
@@ -97,11 +98,11 @@ pub(crate) fn used_units<'a>(info: &'a ModelInfo, reserved: &[&str]) -> Result<V
     Ok(used)
 }
 
-/// `<LogCategories>`, each description with `fmi2` replaced by `prefix`.
-pub(crate) fn log_categories(w: &mut String, prefix: &str) {
+/// `<LogCategories>`, each status in a description named by `status_name` (the standard's).
+pub(crate) fn log_categories(w: &mut String, status_name: fn(Status) -> &'static str) {
     writeln!(w, "  <LogCategories>").unwrap();
     for c in Category::ALL {
-        writeln!(w, r#"    <Category name="{}" description="{}"/>"#, c.name(), escape(&c.description().replace("fmi2", prefix))).unwrap();
+        writeln!(w, r#"    <Category name="{}" description="{}"/>"#, c.name(), escape(&c.description(status_name))).unwrap();
     }
     writeln!(w, "  </LogCategories>").unwrap();
 }

@@ -1,10 +1,12 @@
-//! One rig simulation as the front ends use it (`cycle`, `figures`): run whole strokes, the
+//! One rig simulation as the commands use it (`cycle`, `figures`): run whole strokes, the
 //! paper's cycle-average friction coefficient (eq. 11) and the cycle's characteristic speeds,
-//! the quasi-static core values to compare with, and the trace as CSV.
+//! the quasi-static core values to compare with, and the trace as CSV. The analysis itself
+//! (time means, the stroke average, the core's torque) is the library's ([`pinjoint::rig`]);
+//! [`crate::rig_plots`] draws a run.
 
 use crate::common::exact;
 use crate::error::Result;
-use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, RigConfig, Sample};
+use pinjoint::rig::{cycle_average_friction_coefficient, run_cycles, stroke_average, time_mean, RigConfig, Sample};
 use pinjoint::Joint;
 use std::f64::consts::TAU;
 
@@ -20,8 +22,8 @@ pub struct CycleRun {
     pub cycles: usize,
     /// Strokes left out of the averages (start-up transient).
     pub skip: usize,
-    /// Samples kept for the plots: all of them up to [`super::stream::PLOT_SAMPLES`], else
-    /// every k-th (every sample went to cycle.csv).
+    /// Samples kept for the plots: all of them, or every k-th of a long run that `pinjoint
+    /// cycle` streamed (every sample went to its cycle.csv).
     pub samples: Vec<Sample>,
     /// Eq. 11: mean |recorded torque| over cycles skip+1..=cycles, divided by R·P.
     pub average_friction_coefficient: f64,
@@ -88,42 +90,7 @@ impl CycleRun {
 
     /// What eq. 11 gives for a perfect rig: [`stroke_average`] at this run's load and stroke.
     pub fn quasi_static_average(&self, joint: &Joint) -> Result<f64> {
-        stroke_average(joint, self.load(), self.config.rig.frequency, self.config.rig.amplitude)
-    }
-}
-
-/// The core's μ(P, |θ̇_cmd(t)|) averaged over a sine stroke θ_cmd = A·sin(2πft) (midpoint
-/// rule, 512 points a stroke): the cycle-average of eq. 11 for a rig that follows its command
-/// exactly and never sticks.
-pub fn stroke_average(joint: &Joint, load: f64, frequency: f64, amplitude: f64) -> Result<f64> {
-    const N: usize = 512;
-    let peak = TAU * frequency * amplitude;
-    let mut sum = 0.0;
-    for k in 0..N {
-        let phase = TAU * (k as f64 + 0.5) / N as f64;
-        sum += joint.evaluate(load, (peak * phase.cos()).abs())?.friction_coefficient;
-    }
-    Ok(sum / N as f64)
-}
-
-/// Trapezoidal time-mean of `f` over consecutive samples (NaN if fewer than two).
-pub fn time_mean(samples: &[Sample], f: impl Fn(&Sample) -> f64) -> f64 {
-    let (mut sum, mut span) = (0.0, 0.0);
-    for p in samples.windows(2) {
-        let dt = p[1].time - p[0].time;
-        sum += 0.5 * dt * (f(&p[0]) + f(&p[1]));
-        span += dt;
-    }
-    if span > 0.0 { sum / span } else { f64::NAN }
-}
-
-/// The core's quasi-static torque at a sample's speed, signed like the recorded torque
-/// (sign ω · μ(P, |ω|) · R · P); NaN while stuck (no speed to evaluate at).
-pub fn core_torque(s: &Sample, pin_radius: f64) -> f64 {
-    if s.stuck || s.angular_velocity == 0.0 {
-        f64::NAN
-    } else {
-        s.angular_velocity.signum() * s.friction_coefficient * pin_radius * s.load
+        Ok(stroke_average(joint, self.load(), self.config.rig.frequency, self.config.rig.amplitude)?)
     }
 }
 

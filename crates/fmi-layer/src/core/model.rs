@@ -1,9 +1,10 @@
-//! The one trait through which a model plugs into the generic FMI 2.0 layer.
+//! The one trait through which a model plugs into the generic FMI layer, for both standards
+//! (FMI 2.0 and 3.0) and both interfaces: a model implements it once.
 //!
 //! The layer owns everything the standard prescribes (state machine, argument
 //! checks, value-reference lookup, logging, FMU state format); a model only
 //! stores values, computes its outputs and advances over a communication step.
-//! Variables are addressed by their index in the model's [`ModelInfo::variables`](crate::fmi2::variables::ModelInfo::variables)
+//! Variables are addressed by their index in the model's [`ModelInfo::variables`](crate::core::variables::ModelInfo::variables)
 //! table (`super::variables::ModelInfo`), never by value reference.
 
 use std::error::Error;
@@ -91,7 +92,7 @@ impl Error for ModelError {
 pub type ModelResult<T> = Result<T, ModelError>;
 
 /// A model behind the generic layer: it holds its variables (addressed by index in its
-/// [`ModelInfo::variables`](crate::fmi2::variables::ModelInfo::variables) table), computes its outputs and advances over a step; every
+/// [`ModelInfo::variables`](crate::core::variables::ModelInfo::variables) table), computes its outputs and advances over a step; every
 /// FMI rule (states, value references, C types, logging) is the layer's.
 pub trait Model {
     /// Restore every variable to its start value (called at instantiation and by `fmi2Reset`).
@@ -144,7 +145,7 @@ pub trait Model {
 
     /// Model Exchange, at `fmi2CompletedIntegratorStep` (outputs current): whether the model
     /// asks for an event (a step event: `enterEventMode`). Default: never. A model that asks
-    /// sets [`ModelInfo::step_events`](crate::fmi2::variables::ModelInfo::step_events).
+    /// sets [`ModelInfo::step_events`](crate::core::variables::ModelInfo::step_events).
     fn completed_integrator_step(&mut self) -> ModelResult<bool> {
         Ok(false)
     }
@@ -163,7 +164,7 @@ pub trait Model {
     ///
     /// The layer calls it for `fmi2GetDirectionalDerivative` (FMI 2.0 §2.1.9) and
     /// `fmi3GetDirectionalDerivative` (FMI 3.0 §2.2.12), which return `J · seed`, only when
-    /// [`ModelInfo::directional_derivatives`](crate::fmi2::variables::ModelInfo::directional_derivatives)
+    /// [`ModelInfo::directional_derivatives`](crate::core::variables::ModelInfo::directional_derivatives)
     /// is true, after it has checked the value references and brought the outputs up to date
     /// ([`Model::compute_outputs`], as for a getter). Unknowns are outputs or (Model Exchange)
     /// state derivatives; knowns are inputs or (Model Exchange) continuous states. The default

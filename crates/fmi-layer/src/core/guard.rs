@@ -4,10 +4,10 @@
 //! `fatal` state, in which only `fmi2FreeInstance` is accepted).
 
 use crate::error::CallError;
-use crate::fmi2::instance::{CallResult, Instance};
-use crate::fmi2::logging::Category;
-use crate::fmi2::state::{Mask, State};
-use crate::fmi2::types::{Fmi2Component, Fmi2StatusC, Status};
+use crate::core::instance::{CallResult, Instance};
+use crate::core::logging::Category;
+use crate::core::state::{Mask, State};
+use crate::core::types::{InstanceHandle, Status, StatusC};
 use std::cell::RefCell;
 use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -66,11 +66,11 @@ pub(crate) fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
 
 /// Run `body` for the instance `c` if `mask` allows its state.
 pub(crate) fn call(
-    c: Fmi2Component,
+    c: InstanceHandle,
     name: &'static str,
     mask: Mask,
     body: impl FnOnce(&mut Instance) -> CallResult,
-) -> Fmi2StatusC {
+) -> StatusC {
     if c.is_null() {
         return Status::Error.c();
     }
@@ -161,8 +161,10 @@ pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, what: &'static str) -
 ///
 /// a `#[unsafe(no_mangle)] pub [unsafe] extern "C" fn NAME` with exactly that signature that
 /// runs `BODY` (an `FnOnce(&mut Instance) -> CallResult`, which may use the arguments) for the
-/// instance if the state mask `crate::fmi2::state::MASK` allows its state, logging an error
-/// under the function's name. Both standards' exports are written with it, so the guard
+/// instance if the state mask `MASK` allows its state, logging an error under the function's
+/// name. `MASK` is a [`Mask`] constant in scope where the macro is used: one of the core's
+/// (`crate::core::state`, for a function both standards have) or one the shim defines for a
+/// function of its standard only. Both standards' exports are written with it, so the guard
 /// boilerplate (NULL and dead instances, masks, logging, panics) is in one place.
 macro_rules! guarded {
     () => {};
@@ -170,17 +172,17 @@ macro_rules! guarded {
         $(#[$attr])*
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
-            $crate::fmi2::api::guard::call($c, stringify!($name), $crate::fmi2::state::$mask, $body)
+            $crate::core::guard::call($c, stringify!($name), $mask, $body)
         }
-        $crate::fmi2::api::guard::guarded!($($rest)*);
+        $crate::core::guard::guarded!($($rest)*);
     };
     ($(#[$attr:meta])* fn $name:ident($c:ident: $ct:ty $(, $p:ident: $t:ty)* $(,)?) -> $ret:ty: $mask:ident => $body:expr; $($rest:tt)*) => {
         $(#[$attr])*
         #[unsafe(no_mangle)]
         pub extern "C" fn $name($c: $ct $(, $p: $t)*) -> $ret {
-            $crate::fmi2::api::guard::call($c, stringify!($name), $crate::fmi2::state::$mask, $body)
+            $crate::core::guard::call($c, stringify!($name), $mask, $body)
         }
-        $crate::fmi2::api::guard::guarded!($($rest)*);
+        $crate::core::guard::guarded!($($rest)*);
     };
 }
 pub(crate) use guarded;
@@ -201,5 +203,17 @@ pub(crate) unsafe fn write_out<T>(p: *mut T, v: T, what: &'static str) -> CallRe
     }
     // SAFETY: non-NULL and writable per the contract.
     unsafe { *p = v };
-    Ok(crate::fmi2::types::Status::Ok)
+    Ok(crate::core::types::Status::Ok)
+}
+
+/// Write `v` through the host's pointer `p` if it is not NULL (the optional flags of
+/// FMI 3.0's functions).
+///
+/// # Safety
+/// `p` is NULL or writable.
+pub(crate) unsafe fn put<T>(p: *mut T, v: T) {
+    if !p.is_null() {
+        // SAFETY: per the contract.
+        unsafe { *p = v };
+    }
 }

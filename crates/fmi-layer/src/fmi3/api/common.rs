@@ -1,7 +1,8 @@
-//! Every `fmi3*` function of the FMI 3.0 standard but the two instantiation functions that
-//! need the model registry ([`crate::export_fmi3!`]), exported with C linkage. Each goes
-//! through the same guard as the FMI 2.0 functions: NULL or dead instance, the state mask,
-//! error logging, panic containment (a panic returns `fmi3Fatal`).
+//! The FMI 3.0 functions common to Model Exchange and Co-Simulation: version, instantiation
+//! bodies, freeing, debug logging, initialization, the typed getters and setters, variable
+//! dependencies and directional derivatives. Each goes through the core's guard
+//! ([`crate::core::guard`]): NULL or dead instance, the state mask, error logging, panic
+//! containment (a panic returns `fmi3Fatal`).
 //!
 //! Unsupported parts of the standard (clocks, scheduled execution, configuration mode,
 //! adjoint derivatives, output derivatives, Float32/8-/16-bit/unsigned/String/
@@ -9,18 +10,66 @@
 
 #![allow(non_snake_case)]
 
-use super::types::*;
+use super::super::types::*;
+use crate::core::guard::{guarded, maybe_forced_panic, refuse, slice, slice_mut, write_out};
+use crate::core::state::{Mask, State, ENTER_INITIALIZATION_MODE, EXIT_INITIALIZATION_MODE, GET_VALUE, RESET, SET_DEBUG_LOGGING, SET_VALUE, TERMINATE};
+use crate::core::instance::{CallResult, Instance, Interface, Rules};
+use crate::core::instantiate::{free_instance, instance_name_checked, looks_like_uri, model_of, refuse_instance, set_debug_logging, text};
+use crate::core::logging::{c_text, Category, HostLog, Logger};
+use crate::core::types::Status;
+use crate::core::values::{check_n_values, get_as, reject_as, set_as, Arrays};
+use crate::core::variables::{Causality, EnumType, Kind, ModelInfo};
 use crate::error::CallError;
-use crate::fmi2::api::common::{instance_name_checked, looks_like_uri, model_of, refuse_instance, set_debug_logging, text};
-use crate::fmi2::api::guard::{guarded, maybe_forced_panic, refuse, slice, slice_mut, write_out};
-use crate::fmi2::api::values::{check_n_values, get_as, reject_as, set_as, FMI3};
-use crate::fmi2::instance::{CallResult, Instance, Interface};
-use crate::fmi2::logging::{Category, Fmi3LogMessageCallback, Logger};
-use crate::fmi2::types::Status;
-use crate::fmi2::variables::{Causality, EnumType, Kind, ModelInfo};
-use std::ffi::{c_char, c_int, c_void};
+use std::ffi::{c_char, c_int, c_void, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::ptr::null_mut;
+use std::rc::Rc;
+
+/// `fmi3GetDirectionalDerivative`, whose states FMI 3.0 defines its own way (state machine,
+/// §3.2 and §4.2): initialization mode, event mode, continuous-time mode, step mode
+/// (`stepComplete`) and terminated. The functions both standards have use the core's masks
+/// (`crate::core::state`).
+const GET_DIRECTIONAL_DERIVATIVE: Mask =
+    Mask::of(&[State::InitializationMode, State::EventMode, State::ContinuousTimeMode, State::StepComplete, State::Terminated]);
+
+/// FMI 3.0's names of the arrays of a get/set call (`valueReferences[]`, `values[]`, with
+/// `nValues` given separately).
+const ARRAYS: Arrays = Arrays { vr: "valueReferences[]", values: "values[]", check_unused_values: false };
+
+/// Whether a variable of kind `variable` is read and written by the FMI 3.0 getter/setter of
+/// `requested`: each kind through its own functions only (Real as Float64, Integer as Int32,
+/// Enumeration as Int64, Boolean as Boolean).
+pub fn accessed_as(variable: Kind, requested: Kind) -> bool {
+    std::mem::discriminant(&variable) == std::mem::discriminant(&requested)
+}
+
+/// What FMI 3.0 defines its own way for an instance it creates.
+pub static RULES: Rules = Rules {
+    accessed_as,
+    no_directional_derivatives: "directional derivatives are not provided (providesDirectionalDerivatives = false)",
+};
+
+/// The host's `fmi3LogMessageCallback` with its `instanceEnvironment`. FMI 3.0 messages carry
+/// no instance name, so it is prefixed to each message.
+#[derive(Debug)]
+struct Fmi3Log {
+    callback: Fmi3LogMessageCallback,
+    env: *mut c_void,
+}
+
+impl HostLog for Fmi3Log {
+    fn emit(&self, instance_name: &CStr, status: Status, category: &CStr, message: &str) {
+        let msg = c_text(&format!("[{}] {message}", crate::fmt::excerpt(&instance_name.to_string_lossy())));
+        // SAFETY: non-NULL callback from the host; the strings outlive the call.
+        unsafe { (self.callback)(self.env, status.c(), category.as_ptr(), msg.as_ptr()) }
+    }
+}
+
+/// The logger of an FMI 3.0 instance (`logMessage` may be NULL: then nothing is logged).
+fn logger(log_message: Option<Fmi3LogMessageCallback>, env: *mut c_void, instance_name: &str, logging_on: bool) -> Logger {
+    let sink = log_message.map(|callback| Rc::new(Fmi3Log { callback, env }) as Rc<dyn HostLog>);
+    Logger::new(sink, instance_name, logging_on)
+}
 
 /// Stands for "any enumeration type" when an `fmi3GetInt64`/`fmi3SetInt64` call is matched
 /// against the variable table (only the kind is compared).
@@ -52,7 +101,7 @@ pub unsafe fn instantiate_from(
     catch_unwind(AssertUnwindSafe(|| {
         // SAFETY: strings from the host are NULL or NUL-terminated.
         let (name, token, resources) = unsafe { (text(instance_name), text(token), text(resource_path)) };
-        let logger = Logger::new_fmi3(log_message, env, name.as_deref().unwrap_or("(NULL)"), logging_on != 0);
+        let logger = logger(log_message, env, name.as_deref().unwrap_or("(NULL)"), logging_on != 0);
         let func = match interface {
             Interface::CoSimulation => "fmi3InstantiateCoSimulation",
             Interface::ModelExchange => "fmi3InstantiateModelExchange",
@@ -61,7 +110,7 @@ pub unsafe fn instantiate_from(
         let checked = instance_name_checked(name).and_then(|name| {
             let (info, token) = model_of(registry, token, "instantiationToken")?;
             if interface == Interface::ModelExchange && !info.model_exchange {
-                return Err(CallError::CoSimulationOnly(info.model_name));
+                return Err(CallError::CoSimulationOnly { model: info.model_name, asked: "", offered: "" });
             }
             if event_mode_used != 0 {
                 return Err(CallError::EventModeUsed);
@@ -80,7 +129,7 @@ pub unsafe fn instantiate_from(
                 &format!("{func}: resourcePath '{r}' is not an absolute path; this FMU needs no resources, continuing"),
             );
         }
-        let inst = Instance::with_interface(info, &name, logger, interface, true);
+        let inst = Instance::with_interface(info, &name, logger, interface, &RULES);
         inst.event(&format!("instantiated {} (FMI 3.0 {:?}, instantiationToken {token})", info.model_name, interface));
         Box::into_raw(Box::new(inst)) as Fmi3Instance
     }))
@@ -109,7 +158,7 @@ pub unsafe extern "C" fn fmi3InstantiateScheduledExecution(
     let _ = catch_unwind(AssertUnwindSafe(|| {
         // SAFETY: NULL or NUL-terminated.
         let name = unsafe { text(instanceName) }.unwrap_or_else(|| "(NULL)".into());
-        Logger::new_fmi3(logMessage, instanceEnvironment, &name, false).log(
+        logger(logMessage, instanceEnvironment, &name, false).log(
             Status::Error,
             Category::StatusError,
             "fmi3InstantiateScheduledExecution: this FMU does not provide Scheduled Execution",
@@ -118,30 +167,21 @@ pub unsafe extern "C" fn fmi3InstantiateScheduledExecution(
     null_mut()
 }
 
-/// `fmi3FreeInstance` (FMI 3.0): frees the instance in any state (as
-/// [`crate::fmi2::api::common::fmi2FreeInstance`], the same instance type). NULL or an
-/// instance already freed is a no-op.
+/// `fmi3FreeInstance` (FMI 3.0): frees the instance in any state (the `fatal` one included)
+/// and everything it owns. NULL or an instance already freed is a no-op; a panic during the
+/// release is contained.
 ///
 /// # Safety
 /// `instance` is NULL or an instance of this library not yet freed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi3FreeInstance(instance: Fmi3Instance) {
-    // SAFETY: same contract as the FMI 2.0 function (the same instance type).
-    unsafe { crate::fmi2::api::common::fmi2FreeInstance(instance) }
+    // SAFETY: forwarded under the same contract.
+    unsafe { free_instance(instance) }
 }
 
 
-pub use crate::fmi2::api::model_exchange::{
-    fmi3GetContinuousStateDerivatives, fmi3GetContinuousStates, fmi3GetEventIndicators, fmi3GetNominalsOfContinuousStates,
-    fmi3SetContinuousStates,
-};
-pub use crate::fmi2::api::fmu_state::{
-    fmi3DeserializeFMUState, fmi3FreeFMUState, fmi3GetFMUState, fmi3SerializeFMUState, fmi3SerializedFMUStateSize,
-    fmi3SetFMUState,
-};
-
 /// The body of `fmi3GetFloat64`: as the other getters, but the independent variable `time`
-/// (value reference [`super::xml::TIME_VR`], not in the model's table) reads the instance's time.
+/// (value reference [`crate::fmi3::xml::TIME_VR`], not in the model's table) reads the instance's time.
 ///
 /// # Safety
 /// `vr` and `values` point to `nvr` / `n_values` elements.
@@ -149,7 +189,7 @@ unsafe fn get_float64(inst: &mut Instance, vr: *const u32, nvr: usize, values: *
     check_n_values(nvr, n_values)?;
     // SAFETY: per the contract.
     let (vrs, out) = unsafe { (slice(vr, nvr, "valueReferences[]")?, slice_mut(values, n_values, "values[]")?) };
-    let time_vr = super::xml::TIME_VR;
+    let time_vr = crate::fmi3::xml::TIME_VR;
     if !vrs.contains(&time_vr) || inst.info.index_of(time_vr).is_some() {
         return inst.get_values(Kind::Real, vrs, out);
     }
@@ -208,32 +248,6 @@ unsafe fn variable_dependencies(inst: &Instance, dependent: u32, arrays: (*mut u
     Ok(Status::Ok)
 }
 
-/// Writes `v` through `p` if `p` is not NULL.
-///
-/// # Safety
-/// `p` is NULL or writable.
-unsafe fn put<T>(p: *mut T, v: T) {
-    if !p.is_null() {
-        // SAFETY: per the contract.
-        unsafe { *p = v };
-    }
-}
-
-/// Checks the outputs at the current inputs (the Model Exchange event iteration and
-/// integrator step), then clears every flag the host passed (NULL ones are skipped).
-///
-/// # Safety
-/// Each pointer is NULL or writable.
-unsafe fn nothing_to_do(inst: &mut Instance, flags: &[*mut Fmi3Boolean]) -> CallResult {
-    inst.require_model_exchange()?;
-    inst.refresh_outputs()?;
-    for &p in flags {
-        // SAFETY: per the contract.
-        unsafe { put(p, 0) };
-    }
-    Ok(Status::Ok)
-}
-
 /// The reason of every clock function.
 const NO_CLOCKS: &str = "this FMU has no clocks";
 /// The reason of both configuration-mode functions.
@@ -271,10 +285,6 @@ guarded! {
     /// instance in the error state.
     fn fmi3ExitInitializationMode(instance: Fmi3Instance) -> Fmi3StatusC: EXIT_INITIALIZATION_MODE => Instance::exit_initialization_mode;
 
-    /// `fmi3EnterEventMode` (FMI 3.0): Model Exchange only (this Co-Simulation has no
-    /// event mode): to event mode. `fmi3Error` on a Co-Simulation instance.
-    fn fmi3EnterEventMode(instance: Fmi3Instance) -> Fmi3StatusC: ENTER_EVENT_MODE => Instance::enter_event_mode;
-
     /// `fmi3Terminate` (FMI 3.0): ends the simulation run; afterwards only getters,
     /// FMU state functions, `fmi3Reset` and `fmi3FreeInstance` are allowed.
     fn fmi3Terminate(instance: Fmi3Instance) -> Fmi3StatusC: TERMINATE => Instance::terminate;
@@ -285,7 +295,7 @@ guarded! {
 
     /// `fmi3GetFloat64` (FMI 3.0): writes the values of the Float64 variables into
     /// `values` (outputs at the current inputs, in the units of the modelDescription); the
-    /// independent variable `time` (value reference [`super::xml::TIME_VR`]) reads the instance's
+    /// independent variable `time` (value reference [`crate::fmi3::xml::TIME_VR`]) reads the instance's
     /// time in s. Returns `fmi3Error` for an unknown or non-Float64 value reference, `nValues`
     /// ≠ `nValueReferences`, or a model failure computing the outputs.
     ///
@@ -302,7 +312,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetFloat64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const f64, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Real, &FMI3, valueReferences, nValueReferences, values, nValues, Ok) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Real, &ARRAYS, valueReferences, nValueReferences, values, nValues, Ok) };
 
     /// `fmi3GetInt32` (FMI 3.0): writes the values of the Int32 (FMI 2.0 Integer) variables
     /// `valueReferences[0..nValueReferences]` into `values` (`nValues` must equal
@@ -312,7 +322,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3GetInt32(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut i32, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Integer, &FMI3, valueReferences, nValueReferences, values, nValues, |v| v as i32) };
+        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Integer, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| v as i32) };
 
     /// `fmi3SetInt32` (FMI 3.0): sets the Int32 (FMI 2.0 Integer) variables
     /// `valueReferences[0..nValueReferences]`. Every value is checked before any is stored, so
@@ -321,7 +331,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetInt32(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const i32, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Integer, &FMI3, valueReferences, nValueReferences, values, nValues, |v| Ok(f64::from(v))) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Integer, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| Ok(f64::from(v))) };
 
     /// `fmi3GetInt64` (FMI 3.0): writes the codes of the Enumeration variables (accessed as
     /// Int64) `valueReferences[0..nValueReferences]` into `values` (`nValues` must equal
@@ -331,7 +341,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3GetInt64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut i64, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &FMI3, valueReferences, nValueReferences, values, nValues, |v| v as i64) };
+        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| v as i64) };
 
     /// `fmi3SetInt64` (FMI 3.0): sets the Enumeration variables (accessed as Int64)
     /// `valueReferences[0..nValueReferences]`; a code beyond i32 is no item. Every value is
@@ -340,7 +350,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetInt64(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const i64, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &FMI3, valueReferences, nValueReferences, values, nValues, enumeration_code) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Enumeration(&ANY_ENUMERATION), &ARRAYS, valueReferences, nValueReferences, values, nValues, enumeration_code) };
 
     /// `fmi3GetBoolean` (FMI 3.0): writes the values of the Boolean variables
     /// `valueReferences[0..nValueReferences]` into `values` (1 or 0). Returns `fmi3Error` for an
@@ -349,7 +359,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3GetBoolean(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut u8, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Boolean, &FMI3, valueReferences, nValueReferences, values, nValues, |v| u8::from(v != 0.0)) };
+        GET_VALUE => |inst| unsafe { get_as(inst, Kind::Boolean, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| u8::from(v != 0.0)) };
 
     /// `fmi3SetBoolean` (FMI 3.0): sets the Boolean variables
     /// `valueReferences[0..nValueReferences]` (any non-zero byte is true). Every value is
@@ -358,7 +368,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` and `values` point to `nValueReferences` / `nValues` elements.
     unsafe fn fmi3SetBoolean(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const u8, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Boolean, &FMI3, valueReferences, nValueReferences, values, nValues, |v| Ok(if v != 0 { 1.0 } else { 0.0 })) };
+        SET_VALUE => |inst| unsafe { set_as(inst, Kind::Boolean, &ARRAYS, valueReferences, nValueReferences, values, nValues, |v| Ok(if v != 0 { 1.0 } else { 0.0 })) };
 }
 
 /// The getters and setters of the FMI 3.0 types this layer's models have no variables of:
@@ -373,14 +383,14 @@ macro_rules! no_such_type {
                 /// # Safety
                 /// `valueReferences` points to `nValueReferences` elements.
                 unsafe fn $get(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *mut $t, nValues: usize) -> Fmi3StatusC:
-                    GET_VALUE => |inst| unsafe { reject_as(inst, $name, &FMI3, valueReferences, nValueReferences, values.cast_const(), nValues) };
+                    GET_VALUE => |inst| unsafe { reject_as(inst, $name, &ARRAYS, valueReferences, nValueReferences, values.cast_const(), nValues) };
                 #[doc = concat!("`", stringify!($set), "` (FMI 3.0): this FMU has no ", $name,
                     " variables; every value reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).")]
                 ///
                 /// # Safety
                 /// `valueReferences` points to `nValueReferences` elements.
                 unsafe fn $set(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, values: *const $t, nValues: usize) -> Fmi3StatusC:
-                    SET_VALUE => |inst| unsafe { reject_as(inst, $name, &FMI3, valueReferences, nValueReferences, values, nValues) };
+                    SET_VALUE => |inst| unsafe { reject_as(inst, $name, &ARRAYS, valueReferences, nValueReferences, values, nValues) };
             )*
         }
     };
@@ -404,7 +414,7 @@ guarded! {
     /// # Safety
     /// `valueReferences` points to `nValueReferences` elements.
     unsafe fn fmi3GetBinary(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, _valueSizes: *mut usize, values: *mut *const u8, nValues: usize) -> Fmi3StatusC:
-        GET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &FMI3, valueReferences, nValueReferences, values.cast_const(), nValues) };
+        GET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &ARRAYS, valueReferences, nValueReferences, values.cast_const(), nValues) };
 
     /// `fmi3SetBinary` (FMI 3.0): this FMU has no Binary variables; every value
     /// reference is refused with `fmi3Error` (`nValueReferences = 0` is `fmi3OK`).
@@ -412,29 +422,39 @@ guarded! {
     /// # Safety
     /// `valueReferences` points to `nValueReferences` elements.
     unsafe fn fmi3SetBinary(instance: Fmi3Instance, valueReferences: *const u32, nValueReferences: usize, _valueSizes: *const usize, values: *const *const u8, nValues: usize) -> Fmi3StatusC:
-        SET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &FMI3, valueReferences, nValueReferences, values, nValues) };
+        SET_VALUE => |inst| unsafe { reject_as(inst, "Binary", &ARRAYS, valueReferences, nValueReferences, values, nValues) };
 
     /// `fmi3GetClock` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3GetClock(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _values: *mut u8) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3SetClock` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3SetClock(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _values: *const u8) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3GetIntervalDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3GetIntervalDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _intervals: *mut f64, _qualifiers: *mut c_int) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3GetIntervalFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3GetIntervalFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *mut u64, _resolutions: *mut u64, _qualifiers: *mut c_int) -> Fmi3StatusC:
         RESET => refuse(NO_CLOCKS);
+
     /// `fmi3GetShiftDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3GetShiftDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _shifts: *mut f64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3GetShiftFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3GetShiftFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *mut u64, _resolutions: *mut u64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3SetIntervalDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3SetIntervalDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _intervals: *const f64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3SetIntervalFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3SetIntervalFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *const u64, _resolutions: *const u64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3SetShiftDecimal` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3SetShiftDecimal(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _shifts: *const f64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3SetShiftFraction` (FMI 3.0): this FMU has no clocks; always `fmi3Error`.
     fn fmi3SetShiftFraction(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _counters: *const u64, _resolutions: *const u64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
+
     /// `fmi3ActivateModelPartition` (FMI 3.0): no Scheduled Execution; always `fmi3Error`.
     fn fmi3ActivateModelPartition(instance: Fmi3Instance, _clockReference: u32, _activationTime: f64) -> Fmi3StatusC: RESET => refuse(NO_CLOCKS);
 
@@ -474,7 +494,7 @@ guarded! {
 
     /// `fmi3GetDirectionalDerivative` (FMI 3.0 §2.2.12): `sensitivity = J · seed`, where
     /// `J[i][j]` is the partial derivative of variable `unknowns[i]` with respect to
-    /// `knowns[j]` at the current values (as [`crate::fmi2::api::common::fmi2GetDirectionalDerivative`]:
+    /// `knowns[j]` at the current values (as `fmi2GetDirectionalDerivative`:
     /// unknowns outputs and, under Model Exchange, state derivatives; knowns inputs and, under
     /// Model Exchange, continuous states). Every variable is a scalar, so `nSeed` must equal
     /// `nKnowns` and `nSensitivity` `nUnknowns`. `fmi3Error` for a model without
@@ -494,7 +514,7 @@ guarded! {
         nSeed: usize,
         sensitivity: *mut f64,
         nSensitivity: usize,
-    ) -> Fmi3StatusC: GET_DIRECTIONAL_DERIVATIVE_FMI3 => |inst| unsafe {
+    ) -> Fmi3StatusC: GET_DIRECTIONAL_DERIVATIVE => |inst| unsafe {
         if nSeed != nKnowns {
             return Err(CallError::ArrayLength { what: "nSeed", given: nSeed, of: "nKnowns", expected: nKnowns });
         }
@@ -517,115 +537,12 @@ guarded! {
     /// `fmi3EnterConfigurationMode` (FMI 3.0): this FMU has no structural parameters;
     /// always `fmi3Error`.
     fn fmi3EnterConfigurationMode(instance: Fmi3Instance) -> Fmi3StatusC: RESET => refuse(NO_CONFIGURATION);
+
     /// `fmi3ExitConfigurationMode` (FMI 3.0): this FMU has no structural parameters;
     /// always `fmi3Error`.
     fn fmi3ExitConfigurationMode(instance: Fmi3Instance) -> Fmi3StatusC: RESET => refuse(NO_CONFIGURATION);
+
     /// `fmi3EvaluateDiscreteStates` (FMI 3.0): not provided
     /// (`providesEvaluateDiscreteStates = false`); always `fmi3Error`.
     fn fmi3EvaluateDiscreteStates(instance: Fmi3Instance) -> Fmi3StatusC: RESET => refuse("not provided (providesEvaluateDiscreteStates = false)");
-
-    /// `fmi3UpdateDiscreteStates` (FMI 3.0): the Model Exchange event iteration.
-    /// Checks the outputs at the current inputs (a model failure is `fmi3Error`), then reports
-    /// nothing discrete to update, no termination, no time event: every non-NULL flag false.
-    ///
-    /// # Safety
-    /// Each pointer is NULL or writable.
-    unsafe fn fmi3UpdateDiscreteStates(
-        instance: Fmi3Instance,
-        discreteStatesNeedUpdate: *mut Fmi3Boolean,
-        terminateSimulation: *mut Fmi3Boolean,
-        nominalsOfContinuousStatesChanged: *mut Fmi3Boolean,
-        valuesOfContinuousStatesChanged: *mut Fmi3Boolean,
-        nextEventTimeDefined: *mut Fmi3Boolean,
-        nextEventTime: *mut f64,
-    ) -> Fmi3StatusC: NEW_DISCRETE_STATES => |inst| unsafe {
-        inst.require_model_exchange()?;
-        let changed = inst.update_discrete_states()?;
-        let flags = [discreteStatesNeedUpdate, terminateSimulation, nominalsOfContinuousStatesChanged, nextEventTimeDefined];
-        nothing_to_do(inst, &flags)?;
-        put(valuesOfContinuousStatesChanged, Fmi3Boolean::from(changed));
-        put(nextEventTime, 0.0);
-        Ok(Status::Ok)
-    };
-
-    /// `fmi3EnterContinuousTimeMode` (FMI 3.0): Model Exchange, from event mode to
-    /// continuous-time mode; `fmi3Error` on a Co-Simulation instance.
-    fn fmi3EnterContinuousTimeMode(instance: Fmi3Instance) -> Fmi3StatusC: ENTER_CONTINUOUS_TIME_MODE => Instance::enter_continuous_time_mode;
-
-    /// `fmi3CompletedIntegratorStep` (FMI 3.0): checks the outputs at the current
-    /// inputs (a model failure is `fmi3Error`); `enterEventMode` is the model's step event,
-    /// `terminateSimulation` false (where non-NULL).
-    ///
-    /// # Safety
-    /// `enterEventMode` and `terminateSimulation` are NULL or writable.
-    unsafe fn fmi3CompletedIntegratorStep(instance: Fmi3Instance, _noSetFMUStatePriorToCurrentPoint: Fmi3Boolean, enterEventMode: *mut Fmi3Boolean, terminateSimulation: *mut Fmi3Boolean) -> Fmi3StatusC:
-        COMPLETED_INTEGRATOR_STEP => |inst| unsafe {
-            inst.require_model_exchange()?;
-            let due = inst.completed_integrator_step()?;
-            nothing_to_do(inst, &[terminateSimulation])?;
-            put(enterEventMode, Fmi3Boolean::from(due));
-            Ok(Status::Ok)
-        };
-
-    /// `fmi3SetTime` (FMI 3.0): Model Exchange, records the host's solver time `time`
-    /// in s (the model's outputs and derivatives do not depend on time explicitly); `fmi3Error` for a non-finite time or on a
-    /// Co-Simulation instance.
-    fn fmi3SetTime(instance: Fmi3Instance, time: f64) -> Fmi3StatusC: SET_TIME => |inst| inst.set_time(time);
-
-    /// `fmi3GetNumberOfEventIndicators` (FMI 3.0 §3.2): writes 0 to `*nEventIndicators`
-    /// (this FMU has no event indicators); `fmi3Error` if it is NULL.
-    ///
-    /// # Safety
-    /// `nEventIndicators` is writable.
-    unsafe fn fmi3GetNumberOfEventIndicators(instance: Fmi3Instance, nEventIndicators: *mut usize) -> Fmi3StatusC: RESET =>
-        |_| unsafe { write_out(nEventIndicators, 0, "nEventIndicators") };
-
-    /// `fmi3GetNumberOfContinuousStates` (FMI 3.0 §3.2): writes the number of continuous
-    /// states (`<ContinuousStateDerivative>` elements) to `*nContinuousStates`; `fmi3Error` if
-    /// it is NULL.
-    ///
-    /// # Safety
-    /// `nContinuousStates` is writable.
-    unsafe fn fmi3GetNumberOfContinuousStates(instance: Fmi3Instance, nContinuousStates: *mut usize) -> Fmi3StatusC: RESET =>
-        |inst| unsafe { write_out(nContinuousStates, inst.number_of_continuous_states(), "nContinuousStates") };
-
-    /// `fmi3EnterStepMode` (FMI 3.0): only allowed after event mode, which this
-    /// Co-Simulation never enters (`hasEventMode = false`); always `fmi3Error`.
-    fn fmi3EnterStepMode(instance: Fmi3Instance) -> Fmi3StatusC: ENTER_STEP_MODE =>
-        refuse("this FMU's Co-Simulation has no event mode (hasEventMode = false), so there is no step mode to return to");
-
-    /// `fmi3GetOutputDerivatives` (FMI 3.0): not provided
-    /// (`maxOutputDerivativeOrder = 0`); always `fmi3Error`.
-    fn fmi3GetOutputDerivatives(instance: Fmi3Instance, _vr: *const u32, _nvr: usize, _orders: *const i32, _values: *mut f64, _nValues: usize) -> Fmi3StatusC:
-        RESET => refuse("output derivatives are not provided (maxOutputDerivativeOrder = 0)");
-
-    /// `fmi3DoStep` (FMI 3.0): one communication step from `currentCommunicationPoint`
-    /// over `communicationStepSize` (s), as [`crate::fmi2::api::cosim::fmi2DoStep`]. Never returns
-    /// early, never asks for event handling or termination; `*lastSuccessfulTime` is the end of
-    /// the step (or, after a failed step, the end of the last good one), in s. `fmi3Error` for a
-    /// step that is not positive or does not continue the last one, or that the model fails.
-    ///
-    /// # Safety
-    /// The four output pointers are NULL or writable.
-    #[allow(clippy::too_many_arguments)]
-    unsafe fn fmi3DoStep(
-        instance: Fmi3Instance,
-        currentCommunicationPoint: f64,
-        communicationStepSize: f64,
-        _noSetFMUStatePriorToCurrentPoint: Fmi3Boolean,
-        eventHandlingNeeded: *mut Fmi3Boolean,
-        terminateSimulation: *mut Fmi3Boolean,
-        earlyReturn: *mut Fmi3Boolean,
-        lastSuccessfulTime: *mut f64,
-    ) -> Fmi3StatusC: DO_STEP => |inst| {
-        let r = inst.do_step(currentCommunicationPoint, communicationStepSize);
-        // SAFETY: per the contract.
-        unsafe {
-            for p in [eventHandlingNeeded, terminateSimulation, earlyReturn] {
-                put(p, 0);
-            }
-            put(lastSuccessfulTime, inst.time);
-        }
-        r
-    };
 }

@@ -94,7 +94,8 @@ impl State {
 pub struct Mask(pub u32);
 
 impl Mask {
-    const fn of(states: &[State]) -> Mask {
+    /// The set of `states` (a shim builds the masks of its own functions with it).
+    pub const fn of(states: &[State]) -> Mask {
         let mut bits = 0;
         let mut i = 0;
         while i < states.len() {
@@ -118,13 +119,13 @@ impl Mask {
 
 use State::*;
 
-/// `fmi2GetTypesPlatform`: every state.
-pub const GET_TYPES_PLATFORM: Mask = Mask::of(&[
+/// Every state, for the functions that need no instance.
+pub const ANY_STATE: Mask = Mask::of(&[
     StartAndEnd, Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled,
     Terminated, Error, Fatal, EventMode, ContinuousTimeMode,
 ]);
-/// `fmi2GetVersion`: every state.
-pub const GET_VERSION: Mask = GET_TYPES_PLATFORM;
+/// `fmi2GetVersion` and `fmi3GetVersion`: every state.
+pub const GET_VERSION: Mask = ANY_STATE;
 /// `fmi2SetDebugLogging`: every state of a live, non-fatal instance.
 pub const SET_DEBUG_LOGGING: Mask = Mask::of(&[
     Instantiated, InitializationMode, StepComplete, StepInProgress, StepFailed, StepCanceled, Terminated, Error,
@@ -137,8 +138,6 @@ pub const FREE_INSTANCE: Mask = Mask::of(&[
     Instantiated, InitializationMode, StepComplete, StepFailed, StepCanceled, Terminated, Error, Fatal, EventMode,
     ContinuousTimeMode,
 ]);
-/// `fmi2SetupExperiment`: right after instantiation only.
-pub const SETUP_EXPERIMENT: Mask = Mask::of(&[Instantiated]);
 /// `fmi2EnterInitializationMode`: right after instantiation only.
 pub const ENTER_INITIALIZATION_MODE: Mask = Mask::of(&[Instantiated]);
 /// `fmi2ExitInitializationMode`: in initialization mode only.
@@ -158,23 +157,8 @@ pub const GET_VALUE: Mask = Mask::of(&[
 pub const SET_VALUE: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete, EventMode, ContinuousTimeMode]);
 /// The FMU state functions (`fmi2GetFMUstate` … `fmi2DeSerializeFMUstate`): as [`RESET`].
 pub const FMU_STATE: Mask = RESET;
-/// `fmi2GetDirectionalDerivative` (FMI 2.0 §3.2.3 and §4.2.4 tables): as [`GET_VALUE`]
-/// (initialization, event and continuous-time mode; stepComplete, stepFailed, stepCanceled;
-/// terminated, error).
-pub const GET_DIRECTIONAL_DERIVATIVE: Mask = GET_VALUE;
-/// `fmi3GetDirectionalDerivative` (FMI 3.0 state machine, §3.2 and §4.2): initialization
-/// mode, event mode, continuous-time mode, step mode (`stepComplete`) and terminated.
-pub const GET_DIRECTIONAL_DERIVATIVE_FMI3: Mask = Mask::of(&[InitializationMode, EventMode, ContinuousTimeMode, StepComplete, Terminated]);
-/// `fmi2SetRealInputDerivatives` (Co-Simulation).
-pub const SET_REAL_INPUT_DERIVATIVES: Mask = Mask::of(&[Instantiated, InitializationMode, StepComplete]);
-/// `fmi2GetRealOutputDerivatives` (Co-Simulation).
-pub const GET_REAL_OUTPUT_DERIVATIVES: Mask = Mask::of(&[StepComplete, StepFailed, StepCanceled, Terminated, Error]);
 /// `fmi2DoStep`: in `stepComplete` only.
 pub const DO_STEP: Mask = Mask::of(&[StepComplete]);
-/// `fmi2CancelStep`: only while an asynchronous step runs (never, here).
-pub const CANCEL_STEP: Mask = Mask::of(&[StepInProgress]);
-/// `fmi2Get*Status` (Co-Simulation).
-pub const GET_STATUS: Mask = Mask::of(&[StepComplete, StepInProgress, StepFailed, Terminated]);
 /// Model Exchange (FMI 2.0 section 3.2.3 state chart; FMI 3.0 the same modes).
 pub const ENTER_EVENT_MODE: Mask = Mask::of(&[EventMode, ContinuousTimeMode]);
 /// `fmi2NewDiscreteStates` (Model Exchange): in event mode.
@@ -192,9 +176,6 @@ pub const GET_DERIVATIVES: Mask = Mask::of(&[InitializationMode, EventMode, Cont
 /// `fmi2GetContinuousStates` and `fmi2GetNominalsOfContinuousStates` (Model Exchange).
 pub const GET_CONTINUOUS_STATES: Mask =
     Mask::of(&[Instantiated, InitializationMode, EventMode, ContinuousTimeMode, Terminated, Error]);
-/// FMI 3.0 Co-Simulation `fmi3EnterStepMode` (only after event mode, which this layer's
-/// Co-Simulation never enters: `hasEventMode = false`).
-pub const ENTER_STEP_MODE: Mask = Mask::of(&[EventMode]);
 
 #[cfg(test)]
 mod tests {

@@ -1,5 +1,5 @@
 //! The description of a model's interface: its variables and units. One table per
-//! model feeds both the modelDescription.xml generator ([`super::xml`]) and the
+//! model feeds both modelDescription.xml generators (over the shared writer [`super::xml`]) and the
 //! get/set dispatch of the instance, so the two cannot drift apart.
 
 use super::model::Model;
@@ -58,15 +58,6 @@ impl Kind {
             Kind::Integer => "Integer",
             Kind::Boolean => "Boolean",
             Kind::Enumeration(_) => "Enumeration",
-        }
-    }
-
-    /// Whether a variable of this kind is accessed by the FMI 2.0 getter/setter of
-    /// `requested` (Real, Integer or Boolean): an Enumeration goes through the Integer functions.
-    pub fn fmi2_accessed_as(self, requested: Kind) -> bool {
-        match (self, requested) {
-            (Kind::Enumeration(_), Kind::Integer) => true,
-            (a, b) => std::mem::discriminant(&a) == std::mem::discriminant(&b),
         }
     }
 }

@@ -1,4 +1,5 @@
-//! FMU states (`fmi2GetFMUstate`) and their serialized form.
+//! FMU states (`fmi2GetFMUstate`, `fmi3GetFMUState`) and their serialized form, one for both
+//! standards.
 //!
 //! A [`Snapshot`] holds the life-cycle state, the time and the model's own
 //! serialized state. `fmi2GetFMUstate`/`fmi2SetFMUstate` go through the model's
@@ -43,7 +44,7 @@ pub struct Snapshot {
     pub time: f64,
     /// The experiment's start time (`fmi2SetupExperiment`), in s.
     pub start_time: f64,
-    /// The model's own serialized state ([`crate::fmi2::model::Model::serialize`]).
+    /// The model's own serialized state ([`crate::core::model::Model::serialize`]).
     pub model: Vec<u8>,
 }
 

@@ -1,4 +1,7 @@
-//! Logging through the host's `fmi2CallbackLogger`, by category.
+//! Logging by category, through the host's log callback of either standard: the version
+//! shim wraps its callback (`fmi2CallbackLogger`, `fmi3LogMessageCallback`) in a [`HostLog`],
+//! and everything else (categories, the rate limit, number formatting, length bounds) is
+//! here, once.
 //!
 //! Categories (also listed in `<LogCategories>`):
 //! - `logEvents`: life-cycle changes (initialization, termination, reset, FMU state);
@@ -20,10 +23,12 @@
 //! apart, the rest together. Error and fatal messages are not limited: each goes with a
 //! call the host sees fail, and the message is the only place its reason is given.
 
-use super::types::{Fmi2CallbackLogger, Fmi2ComponentEnvironment, Status};
+use super::types::Status;
 use std::cell::RefCell;
 use std::collections::HashMap;
-use std::ffi::{c_char, c_int, c_void, CString};
+use std::ffi::{CStr, CString};
+use std::fmt::Debug;
+use std::rc::Rc;
 
 /// How many times one recurring message is logged before its repeats are only counted.
 pub const REPEAT_LIMIT: u64 = 10;
@@ -104,16 +109,13 @@ fn is_power_of_ten(mut n: u64) -> bool {
     n == 1
 }
 
-/// FMI 3.0 `fmi3LogMessageCallback(instanceEnvironment, status, category, message)`.
-pub type Fmi3LogMessageCallback = unsafe extern "C" fn(*mut c_void, c_int, *const c_char, *const c_char);
-
-/// Where messages go: the FMI 2.0 logger (variadic, `#vr#` references), the FMI 3.0 one
-/// (plain text), or nowhere (FMI 3.0 allows a NULL `logMessage`).
-#[derive(Debug, Clone, Copy)]
-enum Sink {
-    Fmi2(Fmi2CallbackLogger),
-    Fmi3(Fmi3LogMessageCallback),
-    None,
+/// Where messages go: the host's log callback as one standard spells it. The FMI 2.0 shim's
+/// sink passes the instance name and escapes `#` (value-reference references); the FMI 3.0
+/// one prefixes the instance name (its callback has no argument for it).
+pub trait HostLog: Debug {
+    /// Pass one message to the host: `status`, the category's name `category`, the message
+    /// `message` (already bounded and with short numbers), for the instance `instance_name`.
+    fn emit(&self, instance_name: &CStr, status: Status, category: &CStr, message: &str);
 }
 
 /// A log category of the FMU (`<LogCategories>` in the modelDescription; module doc).
@@ -156,15 +158,16 @@ impl Category {
         }
     }
 
-    /// The `description` attribute of the category in the modelDescription.
-    pub fn description(self) -> &'static str {
+    /// The `description` attribute of the category in the modelDescription, each status
+    /// named by `status_name` (the standard's word for it, e.g. `fmi2Error`).
+    pub fn description(self, status_name: fn(Status) -> &'static str) -> String {
         match self {
-            Category::Events => "Life-cycle events: initialization, termination, reset, FMU state get/set",
-            Category::StatusWarning => "Messages returned with status fmi2Warning",
-            Category::StatusDiscard => "Messages returned with status fmi2Discard",
-            Category::StatusError => "Messages returned with status fmi2Error (on by default)",
-            Category::StatusFatal => "Messages returned with status fmi2Fatal (on by default)",
-            Category::All => "Every FMI function call with its arguments",
+            Category::Events => "Life-cycle events: initialization, termination, reset, FMU state get/set".to_owned(),
+            Category::StatusWarning => format!("Messages returned with status {}", status_name(Status::Warning)),
+            Category::StatusDiscard => format!("Messages returned with status {}", status_name(Status::Discard)),
+            Category::StatusError => format!("Messages returned with status {} (on by default)", status_name(Status::Error)),
+            Category::StatusFatal => format!("Messages returned with status {} (on by default)", status_name(Status::Fatal)),
+            Category::All => "Every FMI function call with its arguments".to_owned(),
         }
     }
 
@@ -192,8 +195,8 @@ impl Category {
 /// The host's logger and which categories it wants.
 #[derive(Debug, Clone)]
 pub struct Logger {
-    callback: Sink,
-    env: Fmi2ComponentEnvironment,
+    /// The host's callback; `None` logs nothing (FMI 3.0 allows a NULL `logMessage`).
+    sink: Option<Rc<dyn HostLog>>,
     instance_name: CString,
     enabled: u8,
     /// The rate limit's counts (module doc).
@@ -201,18 +204,10 @@ pub struct Logger {
 }
 
 impl Logger {
-    /// The FMI 2.0 logger: messages go to `callback` with `env` as its first argument and
-    /// `instance_name`; `logging_on` is `loggingOn` of `fmi2Instantiate`.
-    pub fn new(callback: Fmi2CallbackLogger, env: Fmi2ComponentEnvironment, instance_name: &str, logging_on: bool) -> Self {
-        let mut l = Logger { callback: Sink::Fmi2(callback), env, instance_name: c_text(instance_name), enabled: 0, repeats: RefCell::default() };
-        l.set_all(logging_on);
-        l
-    }
-
-    /// The FMI 3.0 logger (`logMessage` may be NULL: then nothing is logged).
-    pub fn new_fmi3(callback: Option<Fmi3LogMessageCallback>, env: *mut c_void, instance_name: &str, logging_on: bool) -> Self {
-        let sink = callback.map_or(Sink::None, Sink::Fmi3);
-        let mut l = Logger { callback: sink, env, instance_name: c_text(instance_name), enabled: 0, repeats: RefCell::default() };
+    /// A logger that passes messages to `sink` (`None`: nowhere) for the instance
+    /// `instance_name`; `logging_on` is `loggingOn` of the instantiation function.
+    pub fn new(sink: Option<Rc<dyn HostLog>>, instance_name: &str, logging_on: bool) -> Self {
+        let mut l = Logger { sink, instance_name: c_text(instance_name), enabled: 0, repeats: RefCell::default() };
         l.set_all(logging_on);
         l
     }
@@ -277,23 +272,8 @@ impl Logger {
         // Numbers in the short round-trip form however the message was built (no 309 digits).
         // And at most about MESSAGE_CHARS characters, whatever input a message quoted.
         let message = crate::fmt::bounded_message(&crate::fmt::short_numbers(message));
-        match self.callback {
-            Sink::Fmi2(cb) => {
-                // '#' introduces a value-reference reference in FMI 2.0 messages; "##" is a literal '#'.
-                let msg = c_text(&message.replace('#', "##"));
-                // SAFETY: the callback was checked non-NULL at instantiation; all strings are
-                // NUL-terminated and outlive the call; the message goes through "%s".
-                unsafe {
-                    cb(self.env, self.instance_name.as_ptr(), status.c(), category.as_ptr(), c"%s".as_ptr(), msg.as_ptr());
-                }
-            }
-            Sink::Fmi3(cb) => {
-                // FMI 3.0 messages carry no instance name: it is prefixed.
-                let msg = c_text(&format!("[{}] {message}", crate::fmt::excerpt(&self.instance_name.to_string_lossy())));
-                // SAFETY: non-NULL callback from the host; the strings outlive the call.
-                unsafe { cb(self.env, status.c(), category.as_ptr(), msg.as_ptr()) }
-            }
-            Sink::None => {}
+        if let Some(sink) = &self.sink {
+            sink.emit(&self.instance_name, status, &category, &message);
         }
     }
 }

@@ -1,27 +1,23 @@
 //! The bodies of the typed getters and setters of both standards, generic over the C value
-//! type: the model holds every value as an f64 ([`crate::fmi2::variables::Kind`]), and each
+//! type: the model holds every value as an f64 ([`crate::core::variables::Kind`]), and each
 //! exported function only names its C type and the conversion.
 
 use super::guard::{slice, slice_mut};
 use crate::error::CallError;
-use crate::fmi2::instance::{CallResult, Instance};
-use crate::fmi2::variables::Kind;
+use crate::core::instance::{CallResult, Instance};
+use crate::core::variables::Kind;
 
 /// How a standard names the arrays of a get/set call in messages, and whether a function
-/// of a type without variables checks its value array too.
+/// of a type without variables checks its value array too: each shim gives its own.
 pub(crate) struct Arrays {
     /// The value references, e.g. `vr[]`.
-    vr: &'static str,
+    pub(crate) vr: &'static str,
     /// The values, e.g. `value[]`.
-    values: &'static str,
-    /// FMI 2.0 checks the value array of `fmi2GetString`/`fmi2SetString` as well.
-    check_unused_values: bool,
+    pub(crate) values: &'static str,
+    /// Whether the getter/setter of a type without variables (FMI 2.0's String functions)
+    /// checks its value array as well.
+    pub(crate) check_unused_values: bool,
 }
-
-/// FMI 2.0: `vr[]`, `value[]` (one value per value reference).
-pub(crate) const FMI2: Arrays = Arrays { vr: "vr[]", values: "value[]", check_unused_values: true };
-/// FMI 3.0: `valueReferences[]`, `values[]` (`nValues` given separately).
-pub(crate) const FMI3: Arrays = Arrays { vr: "valueReferences[]", values: "values[]", check_unused_values: false };
 
 /// All variables are scalars: one value per value reference.
 pub(crate) fn check_n_values(nvr: usize, n_values: usize) -> Result<(), CallError> {
