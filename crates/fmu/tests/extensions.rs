@@ -163,7 +163,7 @@ fn min_film_is_below_the_central_film_and_zero_at_rest() {
 
 #[test]
 fn fmu_temperature_input_and_min_film_outputs_are_the_library_values() {
-    use fmi_layer::fmi2::model::Model;
+    use fmi_layer::core::model::Model;
     use pinjoint_fmu::pin_joint::model::PinJointModel;
     use pinjoint_fmu::pin_joint::variables::TABLE;
     let index = |name: &str| TABLE.index(name).unwrap();

@@ -5,7 +5,7 @@ use test_support::fmi2_host as common;
 use common::*;
 use fmi_layer::fmi2::api::common::*;
 use fmi_layer::fmi2::api::cosim::*;
-use fmi_layer::fmi2::bytes::crc32;
+use fmi_layer::core::bytes::crc32;
 use fmi_layer::fmi2::types::*;
 use std::ptr::null_mut;
 

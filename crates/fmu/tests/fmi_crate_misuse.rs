@@ -15,7 +15,7 @@ use fmi::fmi2::import::Fmi2Import;
 use fmi::fmi2::instance::{CoSimulation, Common, InstanceCS};
 use fmi::fmi2::Fmi2Error;
 use fmi::traits::FmiStatus;
-use fmi_layer::fmi2::bytes::crc32;
+use fmi_layer::core::bytes::crc32;
 use pinjoint_fmu::pin_joint::INFO;
 use pinjoint::params::PARAMS;
 use pinjoint::{Joint, Params};
@@ -320,7 +320,7 @@ fn every_parameter_out_of_range_or_not_finite_is_refused_at_initialization_by_na
             continue;
         }
         assert!(is_error(i.exit_initialization_mode()), "{name} = {v}");
-        let shown = fmi_layer::fmi2::logging::show(*v);
+        let shown = fmi_layer::core::logging::show(*v);
         assert!(errors(&inst).iter().any(|m| m.contains(&format!("{name} = {shown}"))), "{name} = {v}: {:?}", errors(&inst));
         assert!(is_error(i.do_step(0.0, 0.1, true)), "no step in the error state");
         i.reset().unwrap();

@@ -134,7 +134,7 @@ fn fidelity_parameters_are_checked_and_readable() {
 fn outputs_read_one_at_a_time_are_those_read_all_at_once() {
     let names: Vec<String> = {
         let md = pinjoint_fmu::pin_joint::INFO.variables.iter();
-        md.filter(|v| v.causality == fmi_layer::fmi2::variables::Causality::Output && v.kind == fmi_layer::fmi2::variables::Kind::Real).map(|v| v.name.clone()).collect()
+        md.filter(|v| v.causality == fmi_layer::core::variables::Causality::Output && v.kind == fmi_layer::core::variables::Kind::Real).map(|v| v.name.clone()).collect()
     };
     let derived = pinjoint::fidelity::evaluation::DERIVED_COLUMNS;
     assert!(derived.iter().filter(|d| names.iter().any(|n| n == *d)).count() >= 8, "{names:?}");

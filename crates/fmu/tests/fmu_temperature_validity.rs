@@ -15,7 +15,7 @@ fn outputs_bits(c: fmi_layer::fmi2::types::Fmi2Component) -> Vec<u64> {
     let info = &pinjoint_fmu::pin_joint::INFO;
     info.variables
         .iter()
-        .filter(|v| v.causality == fmi_layer::fmi2::variables::Causality::Output && v.name != "dissipated_energy")
+        .filter(|v| v.causality == fmi_layer::core::variables::Causality::Output && v.name != "dissipated_energy")
         .map(|v| try_get_in(info, c, &v.name).unwrap().to_bits())
         .collect()
 }

@@ -2,7 +2,7 @@
 //! change of the variable table cannot go unnoticed. To accept a deliberate change:
 //! `UPDATE_MODEL_DESCRIPTION=1 cargo test --test model_description`.
 
-use fmi_layer::fmi2::variables::Causality;
+use fmi_layer::core::variables::Causality;
 use fmi_layer::fmi2::xml::model_description;
 use pinjoint_fmu::registry;
 
@@ -72,7 +72,7 @@ fn declared_ranges_and_types_follow_the_values_the_model_accepts() {
         }
     }
     let fid = &pj.variables[pj.index_by_name("fidelity").unwrap()];
-    assert!(matches!(fid.kind, fmi_layer::fmi2::variables::Kind::Enumeration(t) if t.item(0) == Some("full") && t.item(3) == Some("auto")));
+    assert!(matches!(fid.kind, fmi_layer::core::variables::Kind::Enumeration(t) if t.item(0) == Some("full") && t.item(3) == Some("auto")));
 }
 
 #[test]

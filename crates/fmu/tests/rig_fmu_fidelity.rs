@@ -203,7 +203,7 @@ fn state_round_trip_with_fidelity_is_bit_exact() {
     assert_eq!(old[model], 6, "rig state version 6");
     old[model] = 2;
     let n = old.len();
-    let crc = fmi_layer::fmi2::bytes::crc32(&old[..n - 4]);
+    let crc = fmi_layer::core::bytes::crc32(&old[..n - 4]);
     old[n - 4..].copy_from_slice(&crc.to_le_bytes());
     assert!(deserialize(d, &old).is_err());
     assert!(h.last().contains("PinJointRig state version 2; this FMU reads version 6"), "{}", h.last());

@@ -125,7 +125,7 @@ fn damaged_and_foreign_states_are_rejected() {
     // Phase code word of the RigState (7th f64) set to 5.0, CRC recomputed.
     let phase_at = n - 4 - 112 + 6 * 8;
     bad_phase[phase_at..phase_at + 8].copy_from_slice(&5.0f64.to_le_bytes());
-    let crc = fmi_layer::fmi2::bytes::crc32(&bad_phase[..n - 4]);
+    let crc = fmi_layer::core::bytes::crc32(&bad_phase[..n - 4]);
     bad_phase[n - 4..].copy_from_slice(&crc.to_le_bytes());
     assert!(deserialize(c, &bad_phase).is_err());
     assert!(h.last().contains("bad phase code 5"), "{}", h.last());

@@ -3,14 +3,14 @@
 //! defined units, types) and with the physical output dependencies. The committed
 //! modelDescription/PinJointRig.xml is checked by crates/fmu/tests/model_description.rs.
 
-use fmi_layer::fmi2::variables::{Causality, Kind, Variability};
+use fmi_layer::core::variables::{Causality, Kind, Variability};
 use fmi_layer::fmi2::xml::model_description;
 use pinjoint_fmu::pin_joint_rig::INFO;
 use pinjoint::rig::{RigParams, RIG_PARAMS};
 
 use test_support::model_table;
 
-fn var(name: &str) -> &'static fmi_layer::fmi2::variables::Variable {
+fn var(name: &str) -> &'static fmi_layer::core::variables::Variable {
     &INFO.variables[INFO.index_by_name(name).unwrap_or_else(|| panic!("{name} missing"))]
 }
 

@@ -11,7 +11,7 @@
 use fmi_layer::fmi2::api::common::*;
 use fmi_layer::fmi2::api::cosim::fmi2DoStep;
 use fmi_layer::fmi2::types::*;
-use fmi_layer::fmi2::variables::{Kind, ModelInfo};
+use fmi_layer::core::variables::{Kind, ModelInfo};
 use pinjoint_fmu::fmi2Instantiate;
 use std::ffi::{c_char, CStr, CString};
 use std::sync::Mutex;
@@ -245,7 +245,7 @@ pub fn try_get_in(info: &ModelInfo, c: Fmi2Component, name: &str) -> Result<f64,
 pub fn outputs_in(info: &ModelInfo, c: Fmi2Component) -> Vec<f64> {
     info.variables
         .iter()
-        .filter(|v| v.causality == fmi_layer::fmi2::variables::Causality::Output)
+        .filter(|v| v.causality == fmi_layer::core::variables::Causality::Output)
         .map(|v| try_get_in(info, c, &v.name).unwrap_or_else(|s| panic!("get({}) returned {s}", v.name)))
         .collect()
 }

@@ -1,7 +1,7 @@
 //! The consistency every model's variable table must have (model_description.rs for
 //! PinJoint, rig_model_description.rs for PinJointRig).
 
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 
 /// Value references are unique, every variable has a description and a defined unit (if
 /// any), and every defined unit is used.

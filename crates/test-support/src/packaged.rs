@@ -3,7 +3,7 @@
 //! `target/<profile>/deps/libpinjoint_fmu.so`, beside the test executable; `cargo test` does not
 //! refresh the copy in `target/<profile>/`, which may be stale.
 
-use fmi_layer::fmi2::variables::ModelInfo;
+use fmi_layer::core::variables::ModelInfo;
 use fmi_layer::fmi2::xml::model_description;
 use std::io::Write;
 use std::path::PathBuf;

@@ -7,7 +7,7 @@ use crate::fmi2_host as common;
 pub use crate::fmi2_host::{deserialize, free, get_state, serialize, Host, ERROR, OK};
 
 use fmi_layer::fmi2::types::Fmi2Component;
-use fmi_layer::fmi2::variables::{Kind, ModelInfo};
+use fmi_layer::core::variables::{Kind, ModelInfo};
 
 fn rig() -> &'static ModelInfo {
     &pinjoint_fmu::pin_joint_rig::INFO
@@ -17,7 +17,7 @@ fn rig() -> &'static ModelInfo {
 pub fn output_index(name: &str) -> usize {
     rig().variables
         .iter()
-        .filter(|v| v.causality == fmi_layer::fmi2::variables::Causality::Output)
+        .filter(|v| v.causality == fmi_layer::core::variables::Causality::Output)
         .position(|v| v.name == name)
         .unwrap_or_else(|| panic!("PinJointRig has no output {name}"))
 }
