@@ -1,5 +1,5 @@
 //! The presliding law of the core library driven through a scene, as the PinJoint FMU drives
-//! it under Co-Simulation: the reference the FMU (tests/python/test_presliding_agreement.py)
+//! it under Co-Simulation: the reference the FMU (tests/fmu_harness/test_presliding_agreement.py)
 //! and the Python package (python/tests/test_presliding.py) are held to, bit for bit.
 //!
 //! Reads CSV rows `angle,angular_velocity,load,step,sets_angle` (rad, rad/s, N, s, 0/1) from

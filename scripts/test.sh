@@ -46,7 +46,7 @@ bash tests/platforms/run.sh
 # --- the Python harness (fmpy) and the Rust `fmi` crate on those FMUs (linux64 = the
 # shipped glibc-2.17 binary; PINJOINT_KEEP_FMUS: do not rebuild them host-only)
 step "fmpy harness"
-PINJOINT_KEEP_FMUS=1 PINJOINT_SKIP_APT=1 bash tests/python/run.sh
+PINJOINT_KEEP_FMUS=1 PINJOINT_SKIP_APT=1 bash tests/fmu_harness/run.sh
 
 # --- the docs: every relative link and anchor of README.md and docs/*.md resolves, every
 # example marked <!-- runnable --> runs on what the steps above built, quoted numbers match;

@@ -93,9 +93,7 @@ pub fn onset_load(ln_onset: f64, ln_load: f64) -> f64 {
 /// e^−D·P₁ and P₁.
 pub const ONSET_WIDTH: f64 = 0.5;
 
-/// k of the smooth maximum (a^k + b^k)^(1/k) ([`smooth_max`], and the composite film's in
-/// [`crate::load_sharing::solve::solve_composite`]).
-pub const SMOOTH_MAX_EXPONENT: f64 = 8.0;
+pub use crate::load_sharing::solve::SMOOTH_MAX_EXPONENT;
 
 /// (a⁸ + b⁸)^(1/8) for a, b ≥ 0, without overflow: a smooth maximum, increasing in both.
 #[inline]
@@ -317,7 +315,7 @@ impl Complete {
             (self.ln_flattening_unit + ln_load + t - ln_h - target, 1.0 + dln_h)
         };
         let (f0, _) = f(0.0);
-        if !(f0 < 0.0) {
+        if f0.is_nan() || f0 >= 0.0 {
             return ln_load;
         }
         let (mut lo, mut hi) = (0.0, -f0);

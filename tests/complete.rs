@@ -16,16 +16,13 @@ use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
 use pinjoint::validity::{SERVICE_LOAD_MIN, SERVICE_SPEED_MAX, SERVICE_TEMPERATURE_MAX, SERVICE_TEMPERATURE_MIN};
 use pinjoint::{Joint, Params};
 use proptest::prelude::*;
+use test_support::strategies::log_uniform;
 use std::f64::consts::PI;
 
 fn at(t: f64) -> Params {
     let mut p = Params::default();
     p.lubricant.temperature = t;
     p
-}
-
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
-    (lo.ln()..hi.ln()).prop_map(f64::exp)
 }
 
 /// Loads of the box: 10 N to 1 MN (the capacity is 5.05e8 N for the paper's joint).

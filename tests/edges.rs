@@ -16,6 +16,7 @@ use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
 use pinjoint::params::{MAX_TEMPERATURE, MIN_TEMPERATURE, PAPER_MIN_TEMPERATURE};
 use pinjoint::{Joint, ModelError, Params, Validity};
 use proptest::prelude::*;
+use test_support::strategies::log_uniform;
 
 /// The checked envelope's level of a point (the paper's rig: 5–60 kN, |ω|R up to the 1 Hz
 /// ±40° stroke's peak, 15–25 °C; the paper's model below 0 °C known-wrong), written out here.
@@ -33,10 +34,6 @@ fn envelope_level(load: f64, sliding_speed: f64, t: f64, paper: bool) -> Validit
 /// The Hertz half-width of eq. 6 at `load` for `p`, from the contact module.
 fn half_width(p: &Params, load: f64) -> f64 {
     hertz(load.abs(), reduced_radius(&p.geometry), effective_modulus(&p.materials), p.geometry.bush_length).half_width
-}
-
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
-    (lo.ln()..hi.ln()).prop_map(f64::exp)
 }
 
 /// A joint around the paper's: geometry, moduli and clearance within a factor of about 2,

@@ -20,11 +20,8 @@
 
 use pinjoint::{Joint, Params};
 use proptest::prelude::*;
+use test_support::strategies::log_uniform;
 use std::f64::consts::PI;
-
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
-    (lo.ln()..hi.ln()).prop_map(f64::exp)
-}
 
 fn at(mut p: Params, t: f64) -> Params {
     p.lubricant.temperature = t;

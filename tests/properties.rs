@@ -4,6 +4,7 @@
 use pinjoint::params::PARAMS;
 use pinjoint::{Joint, Params};
 use proptest::prelude::*;
+use test_support::strategies::log10_uniform as log_uniform;
 
 /// A random valid parameter set: each value scaled by 10^[-0.5, 0.5] from its default
 /// (Poisson ratios kept below 0.5, the bush kept larger than the pin).
@@ -22,16 +23,12 @@ fn params() -> impl Strategy<Value = Params> {
         p.materials.bush_poisson_ratio = p.materials.bush_poisson_ratio.min(0.49);
         p.geometry.bush_radius = p.geometry.pin_radius * (1.0 + clearance_rel);
         // The lubricant at its reference temperature (the Table 3 values as drawn; the temperature
-        // extension has its own tests in tests/extensions.rs: scaled 10^±0.5, T and T_ref could
+        // extension has its own tests in crates/fmu/tests/extensions.rs: scaled 10^±0.5, T and T_ref could
         // leave the admissible range or overflow η0).
         p.lubricant.temperature = p.lubricant.reference_temperature.clamp(pinjoint::params::PAPER_MIN_TEMPERATURE, 400.0);
         p.lubricant.reference_temperature = p.lubricant.temperature;
         p
     })
-}
-
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
-    (lo.log10()..hi.log10()).prop_map(|e| 10f64.powf(e))
 }
 
 proptest! {

@@ -7,6 +7,7 @@ use pinjoint::fidelity::{Envelope, Evaluator, Fidelity};
 use pinjoint::validity::{self, Validity};
 use pinjoint::{Joint, OperatingPoint, Params};
 use proptest::prelude::*;
+use test_support::strategies::log10_uniform as log_uniform;
 
 fn at(t: f64) -> Params {
     let mut p = Params::paper();
@@ -30,10 +31,6 @@ fn same(a: &OperatingPoint, b: &OperatingPoint) -> Result<(), String> {
     } else {
         Err(format!("{a:?}\n!=\n{b:?}"))
     }
-}
-
-fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
-    (lo.log10()..hi.log10()).prop_map(|e| 10f64.powf(e))
 }
 
 /// A temperature anywhere in the admissible range (138.15, 673.15] K, denser near the
@@ -200,7 +197,7 @@ fn every_boundary_and_both_sides() {
         (5e3, 1.0, 238.15, KnownWrong),
     ];
     // Up to 1 rad/s: in the cold the film passes the clearance above a few rad/s at 5 kN
-    // (tests/ranges.rs); faster points fall back to the full solve, which answers them.
+    // (crates/fmu/tests/ranges.rs); faster points fall back to the full solve, which answers them.
     let env = Envelope::new(5e3, 60e3, 0.01, 1.0).unwrap();
     for (load, w, t, expect) in cases {
         let j = Joint::new(&at(t)).unwrap();

@@ -4,7 +4,7 @@
     python examples/gear_leg/run.py ssp   # writes out/gear_leg/GearLeg.ssp (SSP 1.0) and runs it in libcosim
 
 Both put PinJoint.fmu (FMI 2.0, target/fmu; build it with `cargo run --release -p fmu_build`)
-and Leg.fmu (tests/python/cosim/leg.py, built here by pythonfmu) beside the description in
+and Leg.fmu (tests/fmu_harness/cosim/leg.py, built here by pythonfmu) beside the description in
 out/gear_leg/, run 8 s at 10 ms and print the leg's hold, breakaway and rest. Needs
 libcosimpy and pythonfmu (pinned in requirements-test.txt)."""
 

@@ -1,5 +1,5 @@
 //! The checking functions of the fuzz targets, shared with the regression test
-//! `tests/fuzz_regressions.rs` (which includes this file by path), so that a plain
+//! `crates/fmu/tests/fuzz_regressions.rs` (which includes this file by path), so that a plain
 //! `cargo test` replays `fuzz/regressions/` through exactly the same checks without
 //! libFuzzer.
 //!

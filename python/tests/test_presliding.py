@@ -1,6 +1,6 @@
 """pinjoint.Presliding: the PinJoint FMU's presliding law as a Python object. Held bit for
 bit to the core library (examples/presliding_reference.rs, which the FMU is held to in
-tests/python/test_presliding_agreement.py), and checked for the law's properties."""
+tests/fmu_harness/test_presliding_agreement.py), and checked for the law's properties."""
 
 from __future__ import annotations
 

@@ -169,7 +169,7 @@ pub fn solve_composite(
         let ln_h = match journal {
             // h_13 → ∞ capped at c; with the journal's h_J → c, their smooth maximum
             // (c^8 + (w·c)^8)^(1/8).
-            Some(j) if j.weight > 0.0 => j.ln_clearance + (j.weight.powi(8)).ln_1p() / crate::composite::SMOOTH_MAX_EXPONENT,
+            Some(j) if j.weight > 0.0 => j.ln_clearance + j.weight.powf(SMOOTH_MAX_EXPONENT).ln_1p() / SMOOTH_MAX_EXPONENT,
             Some(j) => j.ln_clearance,
             None => f64::INFINITY,
         };
@@ -289,6 +289,11 @@ struct Point {
     kj: f64,
 }
 
+/// k of the smooth maximum (a^k + b^k)^(1/k) of the complete model's composite film (the
+/// weighted journal film and the line contact's, [`crate::composite`]), and of the contact arc's
+/// torque ([`crate::composite::smooth_max`]).
+pub const SMOOTH_MAX_EXPONENT: f64 = 8.0;
+
 /// The exponent k of the cap that holds the complete model's line-contact film inside the
 /// clearance, h^−k = h_13^−k + c^−k ([`crate::composite`]).
 pub const CLEARANCE_CAP_EXPONENT: f64 = 4.0;
@@ -364,7 +369,7 @@ impl Point {
                 // 1/a and 1/b, whose weight on a is a's share of the derivative.
                 d2ln_h = f64::NAN;
                 let (ln_hj, dj) = j.ln_film(sh.ln_x1);
-                let (l, wj) = crate::starvation::ln_starved(-(j.weight.ln() + ln_hj), ln_h, crate::composite::SMOOTH_MAX_EXPONENT);
+                let (l, wj) = crate::starvation::ln_starved(-(j.weight.ln() + ln_hj), ln_h, SMOOTH_MAX_EXPONENT);
                 ln_h = -l;
                 dln_h = (1.0 - wj) * dln_h + wj * sh.x2 * dj;
                 // Above the onset the line contact's film no longer follows the load (P* is

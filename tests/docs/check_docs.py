@@ -19,7 +19,7 @@ Checks:
   `target/release` and the package's virtualenv first on the PATH and `target` linked into
   the directory; `python` blocks with the package's virtualenv (`.venv-python` or
   $PINJOINT_PY_VENV, as python/run_tests.sh) when they import `pinjoint`, with the FMU
-  harness's (`.venv` or $PINJOINT_VENV, as tests/python/run.sh) when they import `fmpy`;
+  harness's (`.venv` or $PINJOINT_VENV, as tests/fmu_harness/run.sh) when they import `fmpy`;
 - every number in a block between `<!-- numbers from FILE: ... -->` and
   `<!-- end of numbers from FILE -->` is a number that FILE (a generated file, e.g.
   BENCHMARKS.md) contains;
@@ -196,7 +196,7 @@ def python_for(code, root):
     if re.search(r"^\s*(import|from)\s+pinjoint\b|import .*\bpinjoint\b", code, re.M):
         return package_python(root)
     if re.search(r"^\s*(import|from)\s+fmpy\b", code, re.M):
-        venv = os.environ.get("PINJOINT_VENV", str(root / ".venv"))  # tests/python/run.sh's
+        venv = os.environ.get("PINJOINT_VENV", str(root / ".venv"))  # tests/fmu_harness/run.sh's
         return os.environ.get("PINJOINT_DOCS_FMPY_PYTHON", str(Path(venv) / "bin/python"))
     return sys.executable
 

@@ -16,12 +16,6 @@ pub mod types;
 pub mod api;
 pub mod xml;
 
-// The core's modules under the paths they had when they lived here, for the callers outside
-// this crate that still name them so (the root tests, the fuzz checks, fmu_build): aliases
-// only, nothing of FMI 2.0. New code names `crate::core`.
-#[doc(hidden)]
-pub use crate::core::{bytes, logging, model, variables};
-
 /// Export `fmi2Instantiate` for the models `$registry()` returns (a
 /// `fn() -> Vec<&'static ModelInfo>`), at the root of the model library. Every other
 /// `fmi2*` function is exported by this crate itself; this is the one entry point that
