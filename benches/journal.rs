@@ -3,7 +3,7 @@
 //! without grease; beside them one warm model evaluation (mixed regime), for the ratio.
 use criterion::{criterion_group, criterion_main, Criterion};
 use pinjoint::clearance::clearance_torque;
-use pinjoint::grease::{GreaseReference, GreaseRheology};
+use pinjoint::rheology::grease::{GreaseReference, GreaseRheology};
 use pinjoint::journal::JournalTable;
 use pinjoint::{Joint, Params};
 use std::hint::black_box;

@@ -29,12 +29,12 @@ fn at(celsius: f64) -> Params {
 /// η_b(T): the base oil's viscosity at `celsius` (Roelands' temperature relation; not limited to
 /// the model's declared temperature range).
 fn base_viscosity(celsius: f64) -> f64 {
-    pinjoint::viscosity::at_temperature(&at(celsius).lubricant).viscosity
+    pinjoint::rheology::viscosity::at_temperature(&at(celsius).lubricant).viscosity
 }
 
 /// The model's clearance rheology (grease and base oil) at `celsius`, with `edit` applied to
 /// the parameters first.
-fn rheology(celsius: f64, edit: &dyn Fn(&mut Params)) -> pinjoint::grease::GreaseRheology {
+fn rheology(celsius: f64, edit: &dyn Fn(&mut Params)) -> pinjoint::rheology::grease::GreaseRheology {
     let mut p = at(celsius);
     edit(&mut p);
     pinjoint::composite::rheology(&p, base_viscosity(celsius))

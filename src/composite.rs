@@ -17,7 +17,7 @@
 //!   w is a function of the operating point only (so that the load-sharing residual stays
 //!   monotone in its unknown); over the paper's rig conditions (5–60 kN, up to 4.39 rad/s,
 //!   15–25 °C) ξ ≥ 0.48, so w = 0 and the paper's load sharing is untouched there.
-//! * **Composite film** in the solve ([`crate::mixed::solve_composite`]): the smooth maximum
+//! * **Composite film** in the solve ([`crate::load_sharing::solve::solve_composite`]): the smooth maximum
 //!   h = ((w·h_J)⁸ + h_c13*⁸)^(1/8) ([`SMOOTH_MAX_EXPONENT`]) of the weighted journal film
 //!   h_J(x1) = c·(1 − ε(S/x1)) and the line contact's film h_c13* at the load P* ≥ P
 //!   ([`onset_load`]: the load P₁ at which w reaches 0, [`Complete::ln_onset_load`], softened
@@ -25,7 +25,7 @@
 //!   held inside the clearance, h_c13^−4 = h_13^−4 + c^−4 (eq. 12's parabolic gap is a
 //!   conformal contact's only while the film is small against c; in the paper's rig
 //!   conditions, h_13 ≤ 4 µm against c = 25 µm, this moves the film by less than 2e-4); the
-//!   grease's supply layer ([`crate::cold_supply`]) starves the composite film.
+//!   grease's supply layer ([`crate::film::cold_supply`]) starves the composite film.
 //!   **Why this form**: the film must never thicken as the load rises, and the two films it
 //!   joins are both thinner at a higher load, but the line contact's is the thicker one in the
 //!   transition (its rigid limit, Martin's infinite line contact, ignores the finite bearing's
@@ -62,9 +62,9 @@
 //!   At rest T = μ_c·R·P + τ_y(T)·2π·R²·B: the grease's yield torque adds to breakaway.
 
 use crate::clearance::{clearance_and_arc_torque, yield_torque, ClearanceGeometry, PowerLawTable};
-use crate::grease::{GreaseReference, GreaseRheology as Rheology};
+use crate::rheology::grease::{GreaseReference, GreaseRheology as Rheology};
 use crate::journal::JournalTable;
-use crate::mixed::{JournalFilm, LoadSharing, StarvedInlet};
+use crate::load_sharing::solve::{JournalFilm, LoadSharing, StarvedInlet};
 use crate::params::{ParamError, Params};
 use std::sync::Arc;
 
@@ -93,7 +93,7 @@ pub fn onset_load(ln_onset: f64, ln_load: f64) -> f64 {
 /// e^−D·P₁ and P₁.
 pub const ONSET_WIDTH: f64 = 0.5;
 
-pub use crate::mixed::SMOOTH_MAX_EXPONENT;
+pub use crate::load_sharing::solve::SMOOTH_MAX_EXPONENT;
 
 /// (a⁸ + b⁸)^(1/8) for a, b ≥ 0, without overflow: a smooth maximum, increasing in both.
 #[inline]

@@ -71,11 +71,11 @@ pub struct Lubricant {
     /// β0, slope of the limiting shear stress against pressure (-).
     pub limiting_shear_stress_slope: f64,
     /// T, lubricant (bulk/inlet) temperature (K). Not in the paper (room temperature); see
-    /// [`crate::viscosity::at_temperature`].
+    /// [`crate::rheology::viscosity::at_temperature`].
     pub temperature: f64,
     /// T_ref, the temperature at which η0 and α above hold (K).
     pub reference_temperature: f64,
-    /// S0, Roelands' temperature–viscosity index (-), see [`crate::viscosity::at_temperature`].
+    /// S0, Roelands' temperature–viscosity index (-), see [`crate::rheology::viscosity::at_temperature`].
     pub roelands_temperature_index: f64,
 }
 
@@ -83,20 +83,20 @@ pub struct Lubricant {
 /// temperature" (section 4.3), an assumption: the paper gives no number.
 pub const DEFAULT_TEMPERATURE: f64 = 293.15;
 /// Default Roelands temperature–viscosity index S0 for a mineral base oil of class ISO VG 100
-/// (see [`crate::viscosity::DEFAULT_S0_SOURCE`]); inside the 1.04–1.57 fitted to the 13
+/// (see [`crate::rheology::viscosity::DEFAULT_S0_SOURCE`]); inside the 1.04–1.57 fitted to the 13
 /// mineral oils of Stachowiak & Batchelor's Table 2.3 (`tests/published_values.rs`).
 pub const DEFAULT_ROELANDS_TEMPERATURE_INDEX: f64 = 1.262;
 
 /// Default upper service temperature of the grease (K), +121 °C: the upper limit of
 /// MIL-PRF-23827 Type I (−73 °C to +121 °C), the class of the default grease (a lithium-soap
-/// grease on a diester base oil; [`crate::grease`], docs/cold-day.md). Above it a grease of
+/// grease on a diester base oil; [`crate::rheology::grease`], docs/cold-day.md). Above it a grease of
 /// this class is outside its specification (it bleeds, softens and oxidises; its dropping
 /// point is not far above): the model's grease and its supply of oil to the contact are not
 /// this joint's any more. A MIL-PRF-81322 grease (−54 °C to +177 °C) would set 450.15 K.
 pub const DEFAULT_UPPER_SERVICE_TEMPERATURE: f64 = 394.15;
 
 /// Starved-inlet correction of the central film (an extension, off by default; see
-/// [`crate::starvation`]).
+/// [`crate::film::starvation`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Starvation {
@@ -127,7 +127,7 @@ pub struct Model {
 }
 
 /// The grease in the clearance and its supply to the contact (complete model only; see
-/// [`crate::grease`] for the rheology and the sources of the defaults).
+/// [`crate::rheology::grease`] for the rheology and the sources of the defaults).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Grease {
@@ -147,7 +147,7 @@ pub struct Grease {
     /// m, exponent of the supply layer's temperature law h_oil(T) = h_oil(T_ref)·(η_b(T_ref)/η_b(T))^m (-).
     pub supply_exponent: f64,
     /// 1/h_oil(T_ref), reciprocal of the oil layer the grease's bleed leaves on the track at
-    /// the reference temperature (1/m); 0 = no supply limit ([`crate::cold_supply`]).
+    /// the reference temperature (1/m); 0 = no supply limit ([`crate::film::cold_supply`]).
     pub supply_layer_inverse: f64,
     /// T_max, the grease's upper service temperature (K, absolute: not quoted at the
     /// reference temperature). Above it every answer is `outside` the model's assumptions
@@ -223,12 +223,12 @@ impl Default for Lubricant {
 }
 impl Default for Starvation {
     fn default() -> Self {
-        Self { inlet_layer_inverse: 0.0, exponent: crate::starvation::DEFAULT_EXPONENT }
+        Self { inlet_layer_inverse: 0.0, exponent: crate::film::starvation::DEFAULT_EXPONENT }
     }
 }
 impl Default for Grease {
     fn default() -> Self {
-        use crate::grease as c;
+        use crate::rheology::grease as c;
         Self {
             enabled: true,
             yield_stress: c::DEFAULT_YIELD_STRESS,
@@ -416,9 +416,9 @@ pub static PARAMS: [ParamSpec; 36] = [
     spec!(grease.upper_service_temperature, "T_max", "K", Range::Closed(MIN_TEMPERATURE, MAX_TEMPERATURE), "Grease class: MIL-PRF-23827 Type I, -73 to +121 C (default 394.15 K); MIL-PRF-81322 would be 450.15 K (+177 C)", "Upper service temperature of the grease (absolute, not re-quoted): above it every answer, of either model, has validity outside (code 3: beyond the model's assumptions) instead of extrapolation; the answer itself is unchanged"),
 ];
 
-/// Where the grease's defaults come from ([`crate::grease`]: chosen for the paper's grease class
+/// Where the grease's defaults come from ([`crate::rheology::grease`]: chosen for the paper's grease class
 /// where no published value was found; docs/cold-day.md).
-const GREASE_SOURCE: &str = "Complete model: lithium-complex grease to MIL-PRF-23827 Type I, chosen within published ranges (crate::grease, docs/cold-day.md)";
+const GREASE_SOURCE: &str = "Complete model: lithium-complex grease to MIL-PRF-23827 Type I, chosen within published ranges (crate::rheology::grease, docs/cold-day.md)";
 
 /// Lowest admissible temperature (K) of the paper's model (`model.paper = true`), −35 °C. Roelands' temperature term (1 + θ/135 °C)
 /// has its pole at θ = −135 °C, where η0 → ∞ (at 145 K the film of the Table 3 oil was
@@ -557,7 +557,7 @@ impl Params {
         }
         // η0 at the lubricant temperature (Roelands' temperature relation) must stay a liquid's.
         let l = &self.lubricant;
-        let eta = crate::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, l.temperature, l.reference_temperature, l.roelands_temperature_index);
+        let eta = crate::rheology::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, l.temperature, l.reference_temperature, l.roelands_temperature_index);
         if !(eta.is_finite() && eta > 0.0 && eta <= GLASS_VISCOSITY) {
             let l = &self.lubricant;
             return Err(ParamError::OutOfRange {
@@ -579,9 +579,9 @@ impl Params {
     /// The same joint quoted at another reference temperature `reference` (K): every
     /// temperature-quoted parameter moved there by its own law, so that every property, at
     /// every temperature, is unchanged (to rounding) and so is every answer. η0 by Roelands'
-    /// temperature relation and α by its factor ([`crate::viscosity::at_temperature`]), τ_y and
-    /// K by their Arrhenius laws ([`crate::grease::arrhenius`]), the grease's supply layer by its
-    /// law h_oil ∝ η_b^−m ([`crate::cold_supply`]); `lubricant.reference_temperature` set to
+    /// temperature relation and α by its factor ([`crate::rheology::viscosity::at_temperature`]), τ_y and
+    /// K by their Arrhenius laws ([`crate::rheology::grease::arrhenius`]), the grease's supply layer by its
+    /// law h_oil ∝ η_b^−m ([`crate::film::cold_supply`]); `lubricant.reference_temperature` set to
     /// `reference`. The operating temperature `lubricant.temperature` is kept. Errors as
     /// [`Params::validate`]'s for the result (for example a reference outside the admissible
     /// temperatures, or η0 beyond a glass's viscosity there).
@@ -594,9 +594,9 @@ impl Params {
         let mut q = *self;
         q.lubricant.reference_temperature = reference;
         let l = &self.lubricant;
-        // Roelands' temperature relation ([`crate::viscosity::at_temperature`]) on plain numbers.
-        let viscosity = crate::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, reference, l.reference_temperature, l.roelands_temperature_index);
-        let factor = crate::roelands_temperature::factor(reference, l.reference_temperature, l.roelands_temperature_index);
+        // Roelands' temperature relation ([`crate::rheology::viscosity::at_temperature`]) on plain numbers.
+        let viscosity = crate::rheology::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, reference, l.reference_temperature, l.roelands_temperature_index);
+        let factor = crate::rheology::roelands_temperature::factor(reference, l.reference_temperature, l.roelands_temperature_index);
         let moved = Lubricant { viscosity, pressure_viscosity_coefficient: l.pressure_viscosity_coefficient * factor, ..*l };
         if !(moved.viscosity.is_finite() && moved.viscosity > 0.0 && moved.viscosity <= GLASS_VISCOSITY) {
             return Err(refuse(format!(
@@ -608,8 +608,8 @@ impl Params {
         q.lubricant.viscosity = moved.viscosity;
         q.lubricant.pressure_viscosity_coefficient = moved.pressure_viscosity_coefficient;
         let g = &self.grease;
-        q.grease.yield_stress = crate::grease::arrhenius(g.yield_stress, g.yield_activation, reference, l.reference_temperature);
-        q.grease.consistency = crate::grease::arrhenius(g.consistency, g.consistency_activation, reference, l.reference_temperature);
+        q.grease.yield_stress = crate::rheology::grease::arrhenius(g.yield_stress, g.yield_activation, reference, l.reference_temperature);
+        q.grease.consistency = crate::rheology::grease::arrhenius(g.consistency, g.consistency_activation, reference, l.reference_temperature);
         if g.supply_layer_inverse > 0.0 {
             q.grease.supply_layer_inverse = g.supply_layer_inverse * (moved.viscosity / l.viscosity).powf(g.supply_exponent);
         }

@@ -167,7 +167,7 @@ fn continuous_across_the_transitions_in_load_speed_and_temperature() {
 
 /// The budget of issue 28: the largest difference is at 5 kN and 4.39 rad/s (the clearance's
 /// grease on the paper's 8.39 N·m): 3.09 % with K = 20 Pa·sⁿ, 2.99 % with 19, 2.88 % with the
-/// default K = 18 (`src/grease.rs`).
+/// default K = 18 (`src/rheology/grease.rs`).
 #[test]
 fn within_three_percent_of_the_paper_at_the_rig_conditions() {
     let complete = Joint::new(&Params::default()).unwrap();
@@ -253,7 +253,7 @@ proptest! {
 
 /// The grease's supply layer only thins the film: at every temperature the film with the
 /// supply is at most the flooded one (`grease.supply_layer_inverse = 0`) and at most the
-/// layer's film scale, and the thinner the layer the thinner the film (crate::cold_supply).
+/// layer's film scale, and the thinner the layer the thinner the film (crate::film::cold_supply).
 #[test]
 fn the_supplied_film_is_never_thicker_than_the_flooded_one() {
     for t in [313.15, 293.15, 273.15, 253.15, 233.15, 218.15] {

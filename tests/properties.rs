@@ -104,8 +104,8 @@ proptest! {
     /// parameter set: to 1e-12 + 1e-13·|y| in the logit, and the asperity share accordingly.
     #[test]
     fn cold_root_is_newtons_root(p in params(), load in log_uniform(1.0, 1e6), omega in log_uniform(1e-9, 1e4)) {
-        use pinjoint::asperity::AsperityGroups;
-        use pinjoint::mixed::{solve_starved_with, FilmGroups};
+        use pinjoint::contact::asperity::AsperityGroups;
+        use pinjoint::load_sharing::solve::{solve_starved_with, FilmGroups};
         let j = Joint::new(&p).unwrap();
         prop_assume!(load < 0.5 * j.capacity() && p.starvation.inlet_layer_inverse == 0.0);
         let op = j.evaluate_unbounded(load, omega).unwrap();

@@ -24,9 +24,9 @@
 //! check values" and "starvation matches its source's published examples" stay untested here:
 //! what is tested is the printed fits, the relation's limits, and the γs sensitivity.
 
-use pinjoint::min_film::{ln_min_to_central, pan_hamrock_central, pan_hamrock_min};
+use pinjoint::film::min_film::{ln_min_to_central, pan_hamrock_central, pan_hamrock_min};
 use pinjoint::params::{Lubricant, DEFAULT_ROELANDS_TEMPERATURE_INDEX};
-use pinjoint::viscosity::{at_temperature, roelands, roelands_s0_from_two_points};
+use pinjoint::rheology::viscosity::{at_temperature, roelands, roelands_s0_from_two_points};
 use pinjoint::{Joint, Params};
 
 // ---------------------------------------------------------------------------------------------
@@ -127,7 +127,7 @@ fn pan_hamrock_central_film_is_below_moes_for_heavy_loads() {
 // ---------------------------------------------------------------------------------------------
 
 /// Stachowiak & Batchelor's form of Roelands' viscosity–pressure–temperature equation,
-/// written from the book independently of `src/viscosity.rs`:
+/// written from the book independently of `src/rheology/viscosity.rs`:
 /// `η = η0 exp{(ln η0 + 9.67)[−1 + (1 + 5.1e-9 p)^Z ((θ − 138)/(θ0 − 138))^−S0]}`,
 /// η0 in Pa·s at θ0, θ in K, p in Pa. `k0` is the temperature pole (138 K printed; Roelands'
 /// "1 + t/135" with t in °C puts it at 138.15 K).
@@ -306,13 +306,13 @@ fn default_s0_lies_among_the_s0_of_table_2_3_mineral_oils() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Starved inlet: no published values were found (see docs/extensions.md and src/starvation.rs); the
+// Starved inlet: no published values were found (see docs/extensions.md and src/film/starvation.rs); the
 // limits of the relation, and how much the unverified exponent γs matters.
 // ---------------------------------------------------------------------------------------------
 
 #[test]
 fn starvation_relation_limits_and_monotonicity() {
-    use pinjoint::starvation::starved_ratio;
+    use pinjoint::film::starvation::starved_ratio;
     // h^−γ = h_ff^−γ + h_oil^−γ: flooded for R → ∞, the layer itself for R → 0, 2^(−1/γ) at R = 1,
     // increasing in R, and thinner than both the flooded film and the layer.
     for g in [2.0, 2.8, 3.5] {
@@ -358,7 +358,7 @@ fn mu_crossing_rpm(joint: &Joint, load: f64, level: f64) -> Option<f64> {
 
 #[test]
 fn starvation_exponent_sensitivity_over_the_quoted_range() {
-    // No published value of γs for a line contact was found (see `src/starvation.rs` and
+    // No published value of γs for a line contact was found (see `src/film/starvation.rs` and
     // docs/extensions.md). A secondary source, an AI-assisted Korean summary (public GitHub notes, dated
     // 2026-03-10) of Lugt, *Grease Lubrication in Rolling Bearings* (Wiley, 2013), ch. 9,
     // gives eq. (9.73) in the same form, h_c/h_cff = r/(1 + r^γ)^(1/γ), and says γ is about 3

@@ -1,9 +1,9 @@
 //! The load-sharing solve and the operating point in every regime: convergence,
 //! limits (docs/model.md, "Limits the solver meets"), monotonicity and continuity.
 
-use pinjoint::asperity::{softplus, AsperityGroups};
-use pinjoint::gw::ln_f32;
-use pinjoint::mixed::FilmGroups;
+use pinjoint::contact::asperity::{softplus, AsperityGroups};
+use pinjoint::contact::gw::ln_f32;
+use pinjoint::load_sharing::solve::FilmGroups;
 use pinjoint::{Joint, Params, Regime};
 
 fn joint() -> Joint {
@@ -155,7 +155,7 @@ fn full_film_limit_is_the_fluid_term_alone() {
         let h = hh * r * uu.sqrt();
         assert!((op.film_thickness / h - 1.0).abs() < 1e-12, "h_c {} vs {h}", op.film_thickness);
         let pm = op.mean_pressure;
-        let eta = pinjoint::viscosity::roelands(&p.lubricant, pm);
+        let eta = pinjoint::rheology::viscosity::roelands(&p.lubricant, pm);
         let tau = p.lubricant.limiting_shear_stress + p.lubricant.limiting_shear_stress_slope * pm;
  // 1 − e^{−x} written as −expm1(−x): x is ~1e-8 at 1 N, where the plain form loses 8 digits.
         let mu = tau / pm * -(-eta * u / (tau * h)).exp_m1();
@@ -390,7 +390,7 @@ fn the_one_evaluation_solve_agrees_with_newton_to_1e_13() {
     // root of a Newton iteration from a far start (0.5 away: no third-order step) to 1e-13 in
     // the logit, and h_c to 1e-12; and in the boundary and mixed regimes, on the start table's
     // speed range, it is the common case (the table's start within THIRD_ORDER_ACCEPT of the root).
-    use pinjoint::mixed::{solve_starved_with, THIRD_ORDER_ACCEPT};
+    use pinjoint::load_sharing::solve::{solve_starved_with, THIRD_ORDER_ACCEPT};
     let j = joint();
     let p = j.params();
     let g = &p.geometry;
@@ -410,7 +410,7 @@ fn the_one_evaluation_solve_agrees_with_newton_to_1e_13() {
             let op = j.evaluate_unbounded(load, omega).unwrap();
             // (The joint scales its groups from 1 N and 1 m/s: the same solve to rounding.)
             assert!((op.logit - cold.logit).abs() <= 1e-12 + 1e-13 * cold.logit.abs(), "P={load} ω={omega}: evaluate {} vs {}", op.logit, cold.logit);
-            if cold.asperity_fraction > 0.01 && u >= pinjoint::solve_start::SPEED_RANGE.0 {
+            if cold.asperity_fraction > 0.01 && u >= pinjoint::load_sharing::start::SPEED_RANGE.0 {
                 total += 1;
                 if cold.evaluations == 1 {
                     one += 1;

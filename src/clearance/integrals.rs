@@ -49,17 +49,17 @@ pub fn power_law_integral(eps: f64, theta_c: f64, n: f64) -> f64 {
     let k2 = k * k;
     let chi_c = if t == 0.0 { 0.0 } else { 2.0 * ((0.5 * t).tan() / k).atan() };
     let half = 0.5 * (PI - chi_c);
-    let (sin_mid, cos_mid) = crate::fast_math::sin_cos(chi_c + half);
+    let (sin_mid, cos_mid) = crate::numerics::fast_math::sin_cos(chi_c + half);
     let (a0, a1) = (1.0 - e, (1.0 + e) * k2);
     let mut sum = 0.0;
     // Nodes in pairs ±x: cos(mid ± half·x) = cos(mid) cos(half·x) ∓ sin(mid) sin(half·x).
     for (x, w) in &GAUSS12[6..] {
-        let (s, c) = crate::fast_math::sin_cos(half * x);
+        let (s, c) = crate::numerics::fast_math::sin_cos(half * x);
         for cos_chi in [cos_mid * c - sin_mid * s, cos_mid * c + sin_mid * s] {
             let (p, m) = (1.0 + cos_chi, 1.0 - cos_chi);
             let inv_b = 1.0 / (p + k2 * m);
             let h = (a0 * p + a1 * m) * inv_b; // 1 − ε cos θ at the node
-            sum += w * crate::fast_math::exp(-n * ln(h)) * inv_b;
+            sum += w * crate::numerics::fast_math::exp(-n * ln(h)) * inv_b;
         }
     }
     // Both halves of the arc (symmetric about θ = π): 2 · half · Σ w g, g = 2k(A/B)^−n/B.

@@ -5,7 +5,7 @@
 //! loaded journal is the separate term (c ε/2) W sin φ of [`crate::journal`]). Over the arc
 //! θ_c ≤ θ ≤ 2π − θ_c outside the contact (θ_c = a/R, a the contact half-width) the torque is
 //!
-//! T = R² B ∫ τ(U/h_g(θ)) dθ,  τ(γ̇) = τ_y + K γ̇ⁿ + η_b γ̇  ([`crate::grease`]),
+//! T = R² B ∫ τ(U/h_g(θ)) dθ,  τ(γ̇) = τ_y + K γ̇ⁿ + η_b γ̇  ([`crate::rheology::grease`]),
 //!
 //! = R² B [ τ_y (2π − 2θ_c) + K (U/c)ⁿ Jₙ(ε, θ_c) + η_b (U/c) J₁(ε, θ_c) ],
 //!
@@ -45,7 +45,7 @@ pub use torque::{ClearanceGeometry, ClearanceTorque, clearance_and_arc_torque, c
 mod tests {
     use super::integrals::*;
     use super::torque::*;
-    use crate::grease::GreaseRheology;
+    use crate::rheology::grease::GreaseRheology;
     use std::f64::consts::PI;
     use proptest::prelude::*;
 

@@ -15,7 +15,7 @@ use std::f64::consts::PI;
 use std::sync::Arc;
 
 use super::integrals::{GAUSS12, MAX_ECCENTRICITY, ln};
-use crate::table_cache::TableCache;
+use crate::numerics::table_cache::TableCache;
 
 /// Intervals in x.
 const NX: usize = 27;
@@ -190,7 +190,7 @@ impl PowerLawTable {
         let (f0, f1) = (&self.full[i], &self.full[i + 1]);
         let f = f0[0] * hu[0] + f0[1] * hu[1] + f1[0] * hu[2] + f1[1] * hu[3];
         if t == 0.0 {
-            return crate::fast_math::exp(f);
+            return crate::numerics::fast_math::exp(f);
         }
         if t >= PI {
             return 0.0;
@@ -198,7 +198,7 @@ impl PowerLawTable {
         let w = ln((0.5 * t).tan()) + x;
         let l = if w <= -self.w_max {
             let (v, _) = self.edge(i, &hu, 0);
-            v * crate::fast_math::exp(w + self.w_max)
+            v * crate::numerics::fast_math::exp(w + self.w_max)
         } else if w >= self.w_max {
             let (v, d) = self.edge(i, &hu, NW);
             v + d * (w - self.w_max)
@@ -210,7 +210,7 @@ impl PowerLawTable {
             let corner = |nd: &[f64; 4], au: f64, bu: f64, av: f64, bv: f64| nd[0] * au * av + nd[1] * bu * av + nd[2] * au * bv + nd[3] * bu * bv;
             corner(n(i, j), hu[0], hu[1], hv[0], hv[1]) + corner(n(i, j + 1), hu[0], hu[1], hv[2], hv[3]) + corner(n(i + 1, j), hu[2], hu[3], hv[0], hv[1]) + corner(n(i + 1, j + 1), hu[2], hu[3], hv[2], hv[3])
         };
-        crate::fast_math::exp(f + l)
+        crate::numerics::fast_math::exp(f + l)
     }
 }
 

@@ -4,7 +4,7 @@ use std::f64::consts::PI;
 
 use super::integrals::{newtonian_integral, power_law_integral};
 use super::table::PowerLawTable;
-use crate::grease::GreaseRheology;
+use crate::rheology::grease::GreaseRheology;
 
 /// The clearance torque's three parts (N·m), all ≥ 0.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -168,7 +168,7 @@ pub fn provisional(joint: &Joint, e: &Evaluation) -> OperatingPoint {
 /// load, speed, film and fluid share (bit for bit what [`super::Evaluator::evaluate_complete`] gives).
 pub fn derive(joint: &Joint, op: &mut OperatingPoint) {
     let q = joint.load_speed(op.load, op.angular_velocity);
-    // h_min from h_c and the fluid share exactly as the core does it (crate::min_film).
+    // h_min from h_c and the fluid share exactly as the core does it (crate::film::min_film).
     let h_min = joint.min_film(op.load, op.angular_velocity, op.film_thickness, op.fluid_load_fraction);
     let (clearance_torque, journal_weight, eccentricity_ratio, grease_yield_torque) = joint.clearance_outputs(op.load, op.angular_velocity, op.film_thickness);
     op.mean_pressure = q.hertz.mean_pressure;

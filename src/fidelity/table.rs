@@ -565,8 +565,8 @@ impl StribeckTable {
     /// The cell holding (load, |ω|) and the local coordinates in it.
     #[inline(always)]
     fn locate(&self, load: f64, omega: f64) -> (usize, f64, f64) {
-        let fx = (crate::fast_ln::ln_normal(load) - self.x0) * self.inv_hx;
-        let fz = (crate::fast_ln::ln_normal(omega.abs()) - self.z0) * self.inv_hz;
+        let fx = (crate::numerics::fast_ln::ln_normal(load) - self.x0) * self.inv_hx;
+        let fz = (crate::numerics::fast_ln::ln_normal(omega.abs()) - self.z0) * self.inv_hz;
         // The cell index ⌊f⌋ within 0 ..= n − 1 (a rounding to just below 0 gives cell 0, NaN
         // too: `max` answers 0 for NaN), bounded as a float first.
         let (i, j) = (fx.max(0.0).min(self.last_x), fz.max(0.0).min(self.last_z));

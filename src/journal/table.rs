@@ -24,7 +24,7 @@ use std::sync::Arc;
 use super::error::JournalError;
 use super::interp::Monotone;
 use super::reynolds::{Grid, solve};
-use crate::table_cache::TableCache;
+use crate::numerics::table_cache::TableCache;
 
 /// Number of tabulated eccentricity ratios.
 pub const NODES: usize = 25;

@@ -8,7 +8,7 @@
 //! and the calibrated parameters predict the torque between the records' temperatures.
 //!
 //! The record temperatures avoid the rig's stick-slip. With the grease's oil supply (a starved
-//! inlet fed by the bleed layer, src/cold_supply.rs) the torque falls steeply with speed
+//! inlet fed by the bleed layer, src/film/cold_supply.rs) the torque falls steeply with speed
 //! between about −25 and 5 °C: the layer, thick against the film when warm and thin when cold,
 //! there lets the thickening oil lift the surfaces as the speed rises (at 40 kN, 0 °C, the
 //! truth's torque falls from 114 to 85 N·m between 0.3 and 3 rad/s; at −20 °C from 108 to 35).

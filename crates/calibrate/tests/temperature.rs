@@ -57,7 +57,7 @@ fn three_temperatures_fit_the_temperature_relation_with_mu_c_and_drop_what_they_
     let temps = [293.15, 313.15, 333.15];
     let records: Vec<Record> = temps.iter().enumerate().map(|(i, &t)| rig_at(t, 0.5, 11 + i as u64)).collect();
     // S_0, and a key the records cannot tell anything of: the grease's supply layer
-    // h_oil(T) = h_oil(T_ref)·(η_b(T_ref)/η_b(T))^m (src/cold_supply.rs) is at or above its
+    // h_oil(T) = h_oil(T_ref)·(η_b(T_ref)/η_b(T))^m (src/film/cold_supply.rs) is at or above its
     // 50 µm at T_ref at every record's temperature (20 to 60 °C, the oil thinner), tens of times
     // the film, so the contact is flooded and the exponent m moves the torque by less than
     // 1e-4 N·m per unit ln m: its standard error would be many times its value.

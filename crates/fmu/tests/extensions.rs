@@ -62,7 +62,7 @@ fn cold_soak_and_hot_apron_viscosities() {
     // −55 °C and +70 °C with the defaults: the numbers the README and FMU pages quote. (−55 °C
     // is below the model's declared temperature range, −35 °C, where the film would pass the
     // clearance at rig speeds: the viscosity relation itself is evaluated there.)
-    let cold = |t: f64| pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: t, ..Params::paper().lubricant }).viscosity;
+    let cold = |t: f64| pinjoint::rheology::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: t, ..Params::paper().lubricant }).viscosity;
     let (c, h) = (cold(218.15), at(343.15).lubricant().viscosity);
     assert!((c / 12.25 - 1.0).abs() < 0.01, "{c}");
     assert!((h / 2.59e-3 - 1.0).abs() < 0.01, "{h}");
@@ -125,7 +125,7 @@ fn starved_film_obeys_its_relation_where_the_fluid_carries_everything() {
     for (r, g) in [(1.0, 2.8), (0.5, 2.8), (2.0, 3.5)] {
         let h_oil = r * hff.film_thickness;
         let s = starved(h_oil, g).evaluate_unbounded(load, w).unwrap();
-        let want = hff.film_thickness * pinjoint::starvation::starved_ratio(r, g);
+        let want = hff.film_thickness * pinjoint::film::starvation::starved_ratio(r, g);
         if s.asperity_load_fraction < 1e-9 {
             assert!((s.film_thickness / want - 1.0).abs() < 1e-6, "R = {r}: {} vs {want}", s.film_thickness);
         }

@@ -235,7 +235,7 @@ fn the_reported_cold_point_is_refused_or_bounded() {
     let op = j.evaluate(20e3, 8.0).unwrap();
     assert!(op.film_thickness <= j.max_film_thickness() && op.film_thickness > 0.8 * j.max_film_thickness(), "{}", op.film_thickness);
     // (5 K colder is outside the range: the same oil given as its values there, at T = T_ref.)
-    let colder = pinjoint::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: PAPER_MIN_TEMPERATURE - 5.0, ..p.lubricant });
+    let colder = pinjoint::rheology::viscosity::at_temperature(&pinjoint::params::Lubricant { temperature: PAPER_MIN_TEMPERATURE - 5.0, ..p.lubricant });
     let mut q = Params::paper();
     q.lubricant.viscosity = colder.viscosity;
     q.lubricant.pressure_viscosity_coefficient = colder.pressure_viscosity_coefficient;

@@ -134,7 +134,7 @@ pub fn write_map_as(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid, parqu
     Ok(paths)
 }
 
-/// The map of λ from the minimum film (an extension, [`pinjoint::min_film`]) into `dir`:
+/// The map of λ from the minimum film (an extension, [`pinjoint::film::min_film`]) into `dir`:
 /// written by the `map` command beside the paper's Figure 4 files.
 pub fn write_min_lambda_map(dir: &Path, inputs: &[&Path], joint: &Joint, g: &Grid) -> Result<PathBuf> {
     let ops = evaluate(joint, g)?;

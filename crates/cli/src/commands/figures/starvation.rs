@@ -1,5 +1,5 @@
 //! The starved-inlet extension in figures (issue 13 item 5): how a finite lubricant layer at
-//! the inlet ([`pinjoint::starvation`], `[starvation] inlet_layer_inverse`) moves the Stribeck
+//! the inlet ([`pinjoint::film::starvation`], `[starvation] inlet_layer_inverse`) moves the Stribeck
 //! curve and the 1 Hz torque cycle, and what it does to the paper's statements that the
 //! flooded model does not reproduce.
 //!

@@ -12,7 +12,7 @@
 //! (x1 = 1/(1+e^{−y}), x2 = 1/(1+e^{y}), both without cancellation, so x1 + x2 = 1 to
 //! rounding), and working in logarithms keeps F_{3/2} finite in full film.
 //!
-//! Convergence: Newton's method safeguarded by a bracket ([`crate::newton`]) stops when a
+//! Convergence: Newton's method safeguarded by a bracket (`numerics::newton`) stops when a
 //! step is below `y_tol(y) = 1e-13 + 4ε|y|`. Its first evaluation also gives r″, and when that
 //! first Newton step is at most [`THIRD_ORDER_ACCEPT`] (a start from the start table,
 //! [`crate::solve_start`], in the boundary and mixed regimes) Halley's step ends the solve
@@ -21,11 +21,11 @@
 //! relative, and μ (a smooth function of them) likewise; `tests/solver.rs` checks
 //! 1e-10 against a bisection to the last bit.
 
-use crate::asperity::{AsperityGroups, A2, A3};
-use crate::fast_math::exp;
+use crate::contact::asperity::{AsperityGroups, A2, A3};
+use crate::numerics::fast_math::exp;
 use crate::film::{ln_moes_directional, ln_moes_grad, ln_moes_grad_directional, ln_scaled_moes};
-use crate::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
-use crate::newton::{newton_increasing_seeded, Seed};
+use crate::contact::gw::{inverse_ln_f32, ln_f32_slope, ln_f32_slope2};
+use crate::numerics::newton::{newton_increasing_seeded, Seed};
 use crate::params::Surface;
 
 /// The speed-dependent film groups of eq. 12, in logarithms.
@@ -467,7 +467,7 @@ fn compress(r: f64, dr: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::newton::newton_increasing;
+    use crate::numerics::newton::newton_increasing;
 
     #[test]
     fn shares_are_exact_complements() {

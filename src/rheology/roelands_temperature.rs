@@ -1,6 +1,6 @@
 //! Roelands' temperature–viscosity relation on plain numbers (the relation is documented at
-//! [`crate::viscosity::at_temperature`]): a leaf module, so that the parameter checks
-//! ([`crate::params`]) and the rheology ([`crate::viscosity`]) share one formula without
+//! [`crate::rheology::viscosity::at_temperature`]): a leaf module, so that the parameter checks
+//! ([`crate::params`]) and the rheology ([`crate::rheology::viscosity`]) share one formula without
 //! depending on each other.
 
 /// f = [(135 + θ)/(135 + θ_ref)]^−S0, θ and θ_ref the temperature and the reference

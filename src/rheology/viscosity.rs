@@ -88,7 +88,7 @@ pub fn at_temperature(l: &Lubricant) -> Lubricant {
     }
     let f = temperature_factor(l);
     Lubricant {
-        viscosity: crate::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, l.temperature, l.reference_temperature, l.roelands_temperature_index),
+        viscosity: crate::rheology::roelands_temperature::viscosity(l.viscosity, l.roelands_viscosity_limit, l.temperature, l.reference_temperature, l.roelands_temperature_index),
         pressure_viscosity_coefficient: l.pressure_viscosity_coefficient * f,
         ..*l
     }
@@ -96,7 +96,7 @@ pub fn at_temperature(l: &Lubricant) -> Lubricant {
 
 /// f = [(135 + θ)/(135 + θ_ref)]^−S0 of [`at_temperature`] (1 at T = T_ref).
 pub fn temperature_factor(l: &Lubricant) -> f64 {
-    crate::roelands_temperature::factor(l.temperature, l.reference_temperature, l.roelands_temperature_index)
+    crate::rheology::roelands_temperature::factor(l.temperature, l.reference_temperature, l.roelands_temperature_index)
 }
 
 #[cfg(test)]

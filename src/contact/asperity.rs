@@ -28,8 +28,8 @@ pub fn softplus(x: f64) -> f64 {
 
 /// `ln(1 + eˣ)` and its derivative `1/(1 + e^{−x})`, from one exponential.
 pub fn softplus_sigmoid(x: f64) -> (f64, f64) {
-    let e = crate::fast_math::exp(-x.abs());
-    let l = crate::fast_math::ln_1p_unit(e);
+    let e = crate::numerics::fast_math::exp(-x.abs());
+    let l = crate::numerics::fast_math::ln_1p_unit(e);
     if x > 0.0 { (x + l, 1.0 / (1.0 + e)) } else { (l, e / (1.0 + e)) }
 }
 
@@ -103,7 +103,7 @@ impl AsperityGroups {
 /// Greenwood–Williamson central asperity pressure of eq. 17 (Pa) at separation `h` (m).
 pub fn gw_pressure(s: &Surface, e_eff: f64, h: f64) -> f64 {
     2.0 / 3.0 * s.asperity_density * s.asperity_radius.sqrt() * s.summit_height_std.powf(1.5) * e_eff
-        * crate::gw::f32((h - s.summit_mean_plane_offset) / s.summit_height_std)
+        * crate::contact::gw::f32((h - s.summit_mean_plane_offset) / s.summit_height_std)
 }
 
 /// Gelinck–Schipper's fit of the central asperity pressure, eq. 18 (Pa), for the whole load.
@@ -153,7 +153,7 @@ mod tests {
         for gamma2 in [1.0, 1.3, 2.0, 10.0, 1e4] {
             let g = AsperityGroups::new(&s, p, r, e, b);
             let ln_f = g.required_ln_f32(-f64::ln(gamma2));
-            let t = crate::gw::inverse_ln_f32(ln_f);
+            let t = crate::contact::gw::inverse_ln_f32(ln_f);
             let h = s.summit_mean_plane_offset + t * s.summit_height_std;
             let s_sub = Surface { asperity_density: s.asperity_density * gamma2, ..s };
             let lhs = gw_pressure(&s_sub, e / gamma2, h);

@@ -14,7 +14,7 @@
 //! Darcy/capillary flow), h_oil(T_ref) = 1/`grease.supply_layer_inverse`.
 //!
 //! The contact is fed by that layer as any starved EHL contact is (Chevalier, Lubrecht, Cann,
-//! Colin & Dalmaz, 1998, ASME J. Tribol. 120, 126–133; [`crate::starvation`]):
+//! Colin & Dalmaz, 1998, ASME J. Tribol. 120, 126–133; [`crate::film::starvation`]):
 //! `h^−γs = h_ff^−γs + h_oil^−γs`, with h_ff the flooded film and γs `starvation.exponent`.
 //! Where the user's own starved inlet (`starvation.inlet_layer_inverse`) is on as well, the
 //! two layers add as reciprocals to the power γs: `q^γs = q_user^γs + q_grease^γs`, q = 1/h.

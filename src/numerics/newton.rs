@@ -1,5 +1,5 @@
-//! The root finder of the load-sharing solve (`crate::mixed`) and of the GW inverse
-//! (`crate::gw::inverse_ln_f32`): Newton's method on a strictly increasing function,
+//! The root finder of the load-sharing solve (`crate::load_sharing::solve`) and of the GW inverse
+//! (`crate::contact::gw::inverse_ln_f32`): Newton's method on a strictly increasing function,
 //! safeguarded by a bracket that every evaluation narrows.
 
 /// Root of a strictly increasing function f (given with its derivative) that changes sign

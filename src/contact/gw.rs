@@ -19,7 +19,7 @@
 //! not used. Accuracy of the fast path against the reference: see the tests (≤ 2e-14
 //! relative in F over [−12, 40]).
 
-use crate::newton::newton_increasing;
+use crate::numerics::newton::newton_increasing;
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 

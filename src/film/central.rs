@@ -20,7 +20,7 @@ pub fn log_add_exp(a: f64, b: f64) -> f64 {
     hi + (lo - hi).exp().ln_1p()
 }
 
-use crate::fast_math::exp;
+use crate::numerics::fast_math::exp;
 
 const LN_3: f64 = 1.098_612_288_668_109_8; // ln 3
 const C_EI: f64 = 2.621;
@@ -78,7 +78,7 @@ pub fn ln_moes_grad(ln_m: f64, ln_l: f64) -> (f64, f64, f64, f64) {
 /// ln M = ln M₀ + dm·τ, ln L = ln L₀ + dl·τ. The chain rule through the same log-sum-exp
 /// weights (for ln(eᵃ + eᵇ) with weights w, 1 − w: the first derivative is w a′ + (1 − w) b′,
 /// the second w a″ + (1 − w) b″ + w(1 − w)(a′ − b′)²) and through s of eq. 14; the curvature
-/// of the load-sharing residual's film term ([`crate::mixed`]'s third-order first step).
+/// of the load-sharing residual's film term ([`crate::load_sharing::solve`]'s third-order first step).
 /// Not guarded for infinite intermediate values (the caller checks the result is finite).
 pub fn ln_moes_directional(ln_m: f64, ln_l: f64, dm: f64, dl: f64) -> (f64, f64, f64) {
     let (ln_h, _, _, d1, d2) = moes_second::<false>(ln_m, ln_l, dm, dl);
@@ -153,9 +153,9 @@ fn log_add_exp_weight(a: f64, b: f64) -> (f64, f64) {
     }
     let e = exp(lo - hi); // ≤ 1
     let w_hi = 1.0 / (1.0 + e);
-    // ln(1 + e) to an absolute error of ε (crate::fast_math::ln_1p_unit): an absolute error of ε
+    // ln(1 + e) to an absolute error of ε (crate::numerics::fast_math::ln_1p_unit): an absolute error of ε
     // in a logarithm is a relative error of ε in the quantity.
-    (hi + crate::fast_math::ln_1p_unit(e), if a_hi { w_hi } else { e * w_hi })
+    (hi + crate::numerics::fast_math::ln_1p_unit(e), if a_hi { w_hi } else { e * w_hi })
 }
 
 /// Unscaled Moes central film H_C (eq. 12) and its exponent s.

@@ -29,7 +29,7 @@
 //!
 //! with the activation temperatures E/R in kelvin ([`arrhenius`]); n is held constant. The
 //! base oil's η_b(T) is the model's Roelands relation (the paper's eq. 5 temperature form,
-//! `crate::roelands_temperature`), passed in by the caller.
+//! `crate::rheology::roelands_temperature`), passed in by the caller.
 //!
 //! # The base oil
 //! With the paper's values (η0 = 12.45 mPa·s at 20 °C, η∞ = 6.31e-5 Pa·s, S0 = 1.262) the
@@ -305,7 +305,7 @@ mod tests {
         r.validate().unwrap();
         let t_ref = 293.15;
         let t = 219.15;
-        let eta_b = crate::roelands_temperature::viscosity(12.45e-3, 6.31e-5, t, t_ref, 1.262);
+        let eta_b = crate::rheology::roelands_temperature::viscosity(12.45e-3, 6.31e-5, t, t_ref, 1.262);
         assert!((eta_b / 10.2 - 1.0).abs() < 0.02, "{eta_b}");
         let cold = r.at(t, t_ref, eta_b);
         let app = cold.apparent_viscosity(25.0);

@@ -1,9 +1,9 @@
 //! The deterministic starting point of the load-sharing solve (eqs. 9, 13, 19).
 //!
-//! The root y* = ln(x1/x2) of [`crate::mixed::solve`] is a smooth function of ln P_T and
+//! The root y* = ln(x1/x2) of [`crate::load_sharing::solve::solve`] is a smooth function of ln P_T and
 //! ln u (it depends on nothing else once the parameters are fixed). [`StartTable`] holds y*
 //! and its two partial derivatives (the implicit function theorem at each converged node:
-//! [`crate::mixed::LoadSharing::dlogit_dln_load`], [`crate::mixed::LoadSharing::dlogit_dln_speed`])
+//! [`crate::load_sharing::solve::LoadSharing::dlogit_dln_load`], [`crate::load_sharing::solve::LoadSharing::dlogit_dln_speed`])
 //! on a grid in (ln P_T, ln u), 8 nodes a decade, one row of speeds per load, each row solved
 //! the first time a start is asked for at a load next to it (so [`crate::Joint::new`] solves
 //! nothing, and a host that stays in 5–60 kN solves the 11 rows there); a cold evaluation
@@ -11,7 +11,7 @@
 //! (P_T, u) alone. The answer is then still the root to the solver's own stopping rule (only
 //! the number of iterations changes), and it is bit-identical whatever was evaluated before:
 //! a host that rolls back or re-steps gets the same numbers. The start is within 1e-6 of the
-//! root at 20 kN, 6 rad/s and within [`crate::mixed::THIRD_ORDER_ACCEPT`] over most of the
+//! root at 20 kN, 6 rad/s and within [`crate::load_sharing::solve::THIRD_ORDER_ACCEPT`] over most of the
 //! boundary and mixed regimes, where the solve then takes one residual evaluation.
 //!
 //! Interpolation: bicubic Hermite (tensor product of cubic Hermite in ln u and in ln P_T), the
