@@ -33,7 +33,7 @@
 //! γs (`starvation.exponent`, a parameter-file key like the layer) is as uncertain as the
 //! layer itself. The
 //! tests check the form's limits and identities (`tests/published_values.rs`,
-//! `tests/extensions.rs`) and that sensitivity, not published numbers.
+//! `crates/fmu/tests/extensions.rs`) and that sensitivity, not published numbers.
 //!
 //! Here it is applied to the film of eq. 13 (the fluid's share of the load, E'/γ1, P/γ1), so
 //! the load sharing is solved with the starved film: `h_c(x1)^−γs = h_13(x1)^−γs + h_oil^−γs`.

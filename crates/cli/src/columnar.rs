@@ -84,7 +84,7 @@ fn schema(names: &[String], kinds: &[Values]) -> SchemaRef {
     Arc::new(Schema::new(fields))
 }
 
-/// Streams blocks of rows into a Parquet file: each [`ParquetSink::write`] call appends rows
+/// Streams blocks of rows into a Parquet file: each [`ParquetSink::write_owned`] call appends rows
 /// (the writer closes a row group at [`ROW_GROUP_ROWS`] rows), [`ParquetSink::finish`] writes
 /// the footer.
 pub struct ParquetSink<W: Write + Send> {

@@ -165,7 +165,7 @@ but the energy is 0). Other values are rejected by fmi2SetReal with a message na
 Parameters are checked at fmi2ExitInitializationMode against the ranges below; an invalid one is named in the error message.
 A step whose outputs would not be finite, or would leave their declared min/max (a negative film_thickness: with the
 default parameters at rest above 5.05e8 N, where the asperity model's mean planes would interpenetrate), fails with
-fmi2Error naming the output, instead of returning NaN or an impossible value. tests/python/README.md tabulates the
+fmi2Error naming the output, instead of returning NaN or an impossible value. tests/fmu_harness/README.md tabulates the
 defined behaviour of every bad input.</li>
 </ul>
 
