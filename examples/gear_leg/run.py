@@ -37,7 +37,7 @@ def fmus():
         sys.exit(f"{PIN} is missing: cargo run --release -p fmu_build")
     os.makedirs(OUT, exist_ok=True)
     shutil.copy(PIN, os.path.join(OUT, "PinJoint.fmu"))
-    subprocess.run([sys.executable, "-m", "pythonfmu", "build", "-f", os.path.join(ROOT, "tests", "python", "cosim", "leg.py"), "-d", OUT],
+    subprocess.run([sys.executable, "-m", "pythonfmu", "build", "-f", os.path.join(ROOT, "tests", "fmu_harness", "cosim", "leg.py"), "-d", OUT],
                    check=True, capture_output=True)
 
 
