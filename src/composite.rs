@@ -182,11 +182,10 @@ impl RestYield {
         Self { torque: complete.map_or(0.0, Complete::yield_torque) }
     }
 
-    /// The yield torque at rest under `load` (N), N·m: [`Complete::yield_torque`], bit for bit
-    /// (the load does not enter it).
+    /// The yield torque at rest under any load (N), N·m: [`Complete::yield_torque`], bit for
+    /// bit (the load does not enter it; the argument keeps the rest state's call shape).
     #[inline]
-    pub fn at(&self, load: f64) -> f64 {
-        let _ = load;
+    pub fn at(&self, _load: f64) -> f64 {
         self.torque
     }
 }

@@ -46,17 +46,11 @@ impl Joint {
     /// every load ([`crate::composite`]): what the grease adds to the breakaway torque ([`Joint::boundary_torque`]); 0 without grease
     /// and for the paper's model.
     pub fn rest_yield_torque(&self, load: f64) -> f64 {
-        match &self.complete {
-            Some(c) => {
-                let _ = load;
-                c.yield_torque()
-            }
-            None => 0.0,
-        }
+        self.rest_yield().at(load)
     }
 
-    /// The grease's yield torque at rest as a function of the load ([`Joint::rest_yield_torque`],
-    /// for the fidelity levels' rest state).
+    /// The grease's yield torque at rest ([`Joint::rest_yield_torque`], the same at every load),
+    /// for the fidelity levels' rest state.
     pub fn rest_yield(&self) -> crate::composite::RestYield {
         crate::composite::RestYield::new(self.complete.as_ref())
     }
