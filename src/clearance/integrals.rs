@@ -15,6 +15,22 @@ pub fn newtonian_integral(eps: f64, theta_c: f64) -> f64 {
     if t == 0.0 {
         return 2.0 * PI / root;
     }
+    newtonian_outside(e, t, root)
+}
+
+/// (J₁(ε, 0), J₁(ε, θ_c)): the whole clearance's and the outside's, bit for bit two calls of
+/// [`newtonian_integral`] sharing √(1 − ε²).
+pub fn newtonian_integral_pair(eps: f64, theta_c: f64) -> (f64, f64) {
+    let e = eps.clamp(0.0, MAX_ECCENTRICITY);
+    let t = theta_c.clamp(0.0, PI);
+    let root = ((1.0 - e) * (1.0 + e)).sqrt();
+    let whole = 2.0 * PI / root;
+    (whole, if t == 0.0 { whole } else { newtonian_outside(e, t, root) })
+}
+
+/// J₁ outside the arc |θ| ≤ t > 0 at the clamped ε `e`, root = √(1 − ε²).
+#[inline]
+fn newtonian_outside(e: f64, t: f64, root: f64) -> f64 {
     let x = ((1.0 + e) / (1.0 - e)).sqrt() * (0.5 * t).tan();
     // π/2 − atan x = atan2(1, x) for x ≥ 0 (x = +∞ at θ_c = π gives 0).
     4.0 / root * 1.0f64.atan2(x)

@@ -37,7 +37,7 @@ pub mod integrals;
 pub mod table;
 pub mod torque;
 
-pub use integrals::{MAX_ECCENTRICITY, newtonian_integral, power_law_integral};
+pub use integrals::{MAX_ECCENTRICITY, newtonian_integral, newtonian_integral_pair, power_law_integral};
 pub use table::{FlowIndexError, PowerLawTable};
 pub use torque::{ClearanceGeometry, ClearanceTorque, clearance_and_arc_torque, clearance_torque, clearance_torque_parts, clearance_torque_tabulated, yield_torque};
 
@@ -285,6 +285,46 @@ mod tests {
             let scaled = clearance_torque(&g, u, 0.028, 2.0 * 0.0594, 25e-6, eps, t);
             prop_assert!((scaled / p.total() - 2.0).abs() < 1e-12);
             prop_assert!((clearance_torque(&g, -u, 0.028, 0.0594, 25e-6, eps, t) - p.total()).abs() == 0.0);
+        }
+    }
+
+    proptest! {
+        /// The shared route of `clearance_and_arc_torque` (one power of the rate, one
+        /// eccentricity interpolation for the whole clearance and the outside) gives the bits of
+        /// the two separate `clearance_torque_tabulated` calls it replaces, and the pair lookups
+        /// the bits of two single ones: fails if any operation's order differs.
+        #[test]
+        fn arc_torque_pair_is_two_calls_bit_for_bit(
+            eps in prop_oneof![Just(0.0), 0.0f64..1.0, Just(0.999_999_9)],
+            theta_c in prop_oneof![Just(0.0), 0.0f64..0.5, 0.0f64..4.0, Just(PI)],
+            speed in prop_oneof![Just(0.0), 1e-9f64..100.0, -100.0f64..-1e-9],
+            n in prop_oneof![Just(0.4), Just(1.0), 0.1f64..1.0],
+            consistency in prop_oneof![Just(0.0), 0.1f64..5e4],
+            yield_stress in 0.0f64..2e3,
+            base_viscosity in 1e-4f64..50.0,
+            clearance in 5e-6f64..3e-4,
+        ) {
+            let table = super::table::PowerLawTable::shared(0.4).unwrap();
+            let rheology = GreaseRheology { yield_stress, consistency, flow_index: n, base_viscosity };
+            let geometry = ClearanceGeometry { radius: 0.0175, length: 0.035, clearance };
+            let (outside, arc) = clearance_and_arc_torque(&table, &rheology, &geometry, speed, eps, theta_c);
+            // The definition: two calls, the outside's yield over the whole circumference.
+            let o = clearance_torque_tabulated(&table, &rheology, &geometry, speed, eps, theta_c);
+            let o = ClearanceTorque { yield_part: yield_torque(&rheology, 0.0175, 0.035, 0.0), ..o };
+            let reference_arc = if theta_c <= 0.0 {
+                0.0
+            } else {
+                let w = clearance_torque_tabulated(&table, &rheology, &geometry, speed, eps, 0.0);
+                ((w.power_law_part + w.newtonian_part) - (o.power_law_part + o.newtonian_part)).max(0.0)
+            };
+            prop_assert_eq!(outside.yield_part.to_bits(), o.yield_part.to_bits());
+            prop_assert_eq!(outside.power_law_part.to_bits(), o.power_law_part.to_bits());
+            prop_assert_eq!(outside.newtonian_part.to_bits(), o.newtonian_part.to_bits());
+            prop_assert_eq!(arc.to_bits(), reference_arc.to_bits());
+            let (w, out) = table.integral_pair(eps, theta_c);
+            prop_assert_eq!((w.to_bits(), out.to_bits()), (table.integral(eps, 0.0).to_bits(), table.integral(eps, theta_c).to_bits()));
+            let (w, out) = newtonian_integral_pair(eps, theta_c);
+            prop_assert_eq!((w.to_bits(), out.to_bits()), (newtonian_integral(eps, 0.0).to_bits(), newtonian_integral(eps, theta_c).to_bits()));
         }
     }
 }

@@ -181,26 +181,49 @@ impl PowerLawTable {
     /// Jₙ(ε, θ_c) = ∫_{θ_c}^{2π−θ_c} (1 − ε cos θ)^−n dθ by the table (ε clamped to
     /// [0, [`super::MAX_ECCENTRICITY`]], θ_c to [0, π]).
     pub fn integral(&self, eps: f64, theta_c: f64) -> f64 {
-        let e = eps.clamp(0.0, MAX_ECCENTRICITY);
+        let (x, i, hu, f) = self.whole_of(eps);
         let t = theta_c.clamp(0.0, PI);
+        if t == 0.0 {
+            return crate::numerics::fast_math::exp(f);
+        }
+        self.outside_of(x, i, &hu, f, t)
+    }
+
+    /// (Jₙ(ε, 0), Jₙ(ε, θ_c)): the whole clearance's integral and the one outside the arc,
+    /// bit for bit two calls of [`PowerLawTable::integral`], sharing the eccentricity's
+    /// interpolation (the complete model needs both at every evaluation).
+    pub fn integral_pair(&self, eps: f64, theta_c: f64) -> (f64, f64) {
+        let (x, i, hu, f) = self.whole_of(eps);
+        let t = theta_c.clamp(0.0, PI);
+        let whole = crate::numerics::fast_math::exp(f);
+        (whole, if t == 0.0 { whole } else { self.outside_of(x, i, &hu, f, t) })
+    }
+
+    /// x = ¼ ln((1 + ε)/(1 − ε)), its cell, the cell's Hermite weights and ln Jₙ(ε, 0).
+    #[inline]
+    fn whole_of(&self, eps: f64) -> (f64, usize, [f64; 4], f64) {
+        let e = eps.clamp(0.0, MAX_ECCENTRICITY);
         let x = -0.25 * ln((1.0 - e) / (1.0 + e));
         let gx = (x / self.dx).clamp(0.0, NX as f64);
         let i = (gx as usize).min(NX - 1);
         let hu = hermite(gx - i as f64);
         let (f0, f1) = (&self.full[i], &self.full[i + 1]);
         let f = f0[0] * hu[0] + f0[1] * hu[1] + f1[0] * hu[2] + f1[1] * hu[3];
-        if t == 0.0 {
-            return crate::numerics::fast_math::exp(f);
-        }
+        (x, i, hu, f)
+    }
+
+    /// Jₙ outside the arc |θ| ≤ `t` (0 < t, clamped to ≤ π) from [`PowerLawTable::whole_of`].
+    #[inline]
+    fn outside_of(&self, x: f64, i: usize, hu: &[f64; 4], f: f64, t: f64) -> f64 {
         if t >= PI {
             return 0.0;
         }
         let w = ln((0.5 * t).tan()) + x;
         let l = if w <= -self.w_max {
-            let (v, _) = self.edge(i, &hu, 0);
+            let (v, _) = self.edge(i, hu, 0);
             v * crate::numerics::fast_math::exp(w + self.w_max)
         } else if w >= self.w_max {
-            let (v, d) = self.edge(i, &hu, NW);
+            let (v, d) = self.edge(i, hu, NW);
             v + d * (w - self.w_max)
         } else {
             let gw = ((w + self.w_max) / self.dw).clamp(0.0, NW as f64);

@@ -2,7 +2,7 @@
 
 use std::f64::consts::PI;
 
-use super::integrals::{newtonian_integral, power_law_integral};
+use super::integrals::{newtonian_integral, newtonian_integral_pair, power_law_integral};
 use super::table::PowerLawTable;
 use crate::rheology::grease::GreaseRheology;
 
@@ -71,10 +71,9 @@ pub fn clearance_torque_tabulated(table: &PowerLawTable, rheology: &GreaseRheolo
     if n != table.flow_index() || n == 1.0 || rheology.consistency <= 0.0 || sliding_speed == 0.0 {
         return clearance_torque_parts(rheology, sliding_speed, radius, length, clearance, eps_g, theta_c);
     }
-    let u = sliding_speed.abs();
     let r2b = radius * radius * length;
     let t = theta_c.clamp(0.0, PI);
-    let rate = u / clearance;
+    let rate = u_rate(sliding_speed, clearance);
     ClearanceTorque {
         yield_part: rheology.yield_stress * (2.0 * PI - 2.0 * t) * r2b,
         power_law_part: rheology.consistency * rate.powf(n) * table.integral(eps_g, t) * r2b,
@@ -91,6 +90,27 @@ pub fn clearance_torque_tabulated(table: &PowerLawTable, rheology: &GreaseRheolo
 /// the grease's flow from the clearance, not its yield (so that no part of the torque falls as
 /// the arc widens with the load, [`crate::composite`]).
 pub fn clearance_and_arc_torque(table: &PowerLawTable, rheology: &GreaseRheology, geometry: &ClearanceGeometry, sliding_speed: f64, eps_g: f64, theta_c: f64) -> (ClearanceTorque, f64) {
+    let n = rheology.flow_index;
+    if theta_c > 0.0 && !(n != table.flow_index() || n == 1.0 || rheology.consistency <= 0.0 || sliding_speed == 0.0) {
+        // The tabulated route of both calls below, sharing the rate's power and the
+        // eccentricity's terms: the same numbers, bit for bit (test
+        // `arc_torque_pair_is_two_calls_bit_for_bit`).
+        let ClearanceGeometry { radius, length, clearance } = *geometry;
+        let r2b = radius * radius * length;
+        let t = theta_c.clamp(0.0, PI);
+        let rate = u_rate(sliding_speed, clearance);
+        let k_rate = rheology.consistency * rate.powf(n);
+        let eta_rate = rheology.base_viscosity * rate;
+        let (jn_whole, jn_outside) = table.integral_pair(eps_g, t);
+        let (j1_whole, j1_outside) = newtonian_integral_pair(eps_g, t);
+        let outside = ClearanceTorque {
+            yield_part: yield_torque(rheology, radius, length, 0.0),
+            power_law_part: k_rate * jn_outside * r2b,
+            newtonian_part: eta_rate * j1_outside * r2b,
+        };
+        let whole_flow = k_rate * jn_whole * r2b + eta_rate * j1_whole * r2b;
+        return (outside, (whole_flow - (outside.power_law_part + outside.newtonian_part)).max(0.0));
+    }
     let outside = clearance_torque_tabulated(table, rheology, geometry, sliding_speed, eps_g, theta_c);
     let outside = ClearanceTorque { yield_part: yield_torque(rheology, geometry.radius, geometry.length, 0.0), ..outside };
     if theta_c <= 0.0 {
@@ -99,6 +119,12 @@ pub fn clearance_and_arc_torque(table: &PowerLawTable, rheology: &GreaseRheology
     let whole = clearance_torque_tabulated(table, rheology, geometry, sliding_speed, eps_g, 0.0);
     let flow = |t: &ClearanceTorque| t.power_law_part + t.newtonian_part;
     (outside, (flow(&whole) - flow(&outside)).max(0.0))
+}
+
+/// The shear rate U/c of the sliding speed's magnitude (1/s).
+#[inline]
+fn u_rate(sliding_speed: f64, clearance: f64) -> f64 {
+    sliding_speed.abs() / clearance
 }
 
 /// The clearance torque (N·m): the sum of [`clearance_torque_parts`].
