@@ -26,10 +26,10 @@ pub struct Settings {
 }
 
 impl Default for Settings {
-    /// Full fidelity; tolerance 1e-4 and the envelope 5–60 kN, 0.01–10 rad/s (the PinJoint
-    /// FMU's and the Python package's defaults) for the other levels.
+    /// Full fidelity; tolerance 1e-4 and the envelope [`Envelope::SERVICE`] (1–100 kN,
+    /// 0.01–100 rad/s and down to rest: the Python package's default) for the other levels.
     fn default() -> Self {
-        Settings { fidelity: Fidelity::Full, tolerance: 1e-4, envelope: Envelope { load_min: 5e3, load_max: 60e3, speed_min: 0.01, speed_max: 10.0 } }
+        Settings { fidelity: Fidelity::Full, tolerance: 1e-4, envelope: Envelope::SERVICE }
     }
 }
 
