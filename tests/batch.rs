@@ -396,12 +396,69 @@ fn models_are_shared_and_released() {
     // Back to 293.15 K: the retained model, no new one.
     b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: None }, &mut out).unwrap();
     assert_eq!(b.models_held(), 3);
-    // Many temperatures one after another: at most RETAINED kept beside the one in use.
+    // Many temperatures one after another: at most RETAINED kept beside the one in use, and
+    // no more than LEVELS_MAX tables held.
     for k in 0..10 {
         let t = vec![300.0 + f64::from(k); n];
         b.step(&Inputs { angle: &a, angular_velocity: &w, load: &l, temperature: Some(&t) }, &mut out).unwrap();
+        assert!(b.tables_held() <= pinjoint::batch::cache::LEVELS_MAX, "{}", b.tables_held());
     }
-    assert_eq!(b.models_held(), 1 + pinjoint::batch::cache::RETAINED);
+    assert_eq!(b.models_held(), (1 + pinjoint::batch::cache::RETAINED).min(pinjoint::batch::cache::LEVELS_MAX));
+}
+
+/// Joints at temperatures (or with parameter sets) of their own at a level: at most
+/// LEVELS_MAX tables are built and held whatever their number (before, 40 temperatures held 40
+/// tables: 1 GB and 6 s a step); the first keys (lowest joint index) are the level's answer,
+/// bit for bit the scalar evaluator's at their temperature, the others the complete solve's,
+/// bit for bit `Joint::evaluate`'s; every torque within the level's tolerance of the complete
+/// solve. Moving every temperature each step keeps the bound.
+#[test]
+fn levels_are_bounded_whatever_the_temperatures_and_sets() {
+    use pinjoint::batch::cache::LEVELS_MAX;
+    let n = 24;
+    let env = Envelope::new(5e3, 60e3, 0.01, 10.0).unwrap();
+    let settings = Settings { fidelity: Fidelity::Table, tolerance: 1e-4, envelope: env };
+    let t: Vec<f64> = (0..n).map(|i| 260.0 + 3.0 * i as f64).collect();
+    let (load, omega) = (vec![2e4; n], vec![0.7; n]);
+    let mut b = PreslidingBatch::new(n, BatchParams::Shared(Params::default()), Presliding::default(), settings).unwrap();
+    let mut out = vec![0.0; n];
+    b.sliding_torque(&load, &omega, Some(&t), &mut out).unwrap();
+    assert_eq!(b.tables_held(), LEVELS_MAX);
+    assert!(b.models_held() <= n + pinjoint::batch::cache::RETAINED);
+    for i in 0..n {
+        let mut p = Params::default();
+        p.lubricant.temperature = t[i];
+        let full = Joint::new(&p).unwrap().evaluate(2e4, 0.7).unwrap().torque;
+        if i < LEVELS_MAX {
+            let ev = Evaluator::new(&p, Fidelity::Table, 1e-4, env).unwrap();
+            assert_eq!(out[i].to_bits(), ev.torque_inside(2e4, 0.7).unwrap().to_bits(), "joint {i}: the table's");
+            assert!(((out[i] - full) / full).abs() <= 1e-4, "joint {i}");
+        } else {
+            assert_eq!(out[i].to_bits(), full.to_bits(), "joint {i}: the complete solve's");
+        }
+    }
+    // Every temperature moves at every step: still at most LEVELS_MAX tables.
+    let a = vec![0.0; n];
+    for k in 1..6 {
+        let tk: Vec<f64> = t.iter().map(|x| x + 0.1 * f64::from(k)).collect();
+        b.step(&Inputs { angle: &a, angular_velocity: &omega, load: &load, temperature: Some(&tk) }, &mut out).unwrap();
+        assert!(b.tables_held() <= LEVELS_MAX, "step {k}: {}", b.tables_held());
+        assert!(out.iter().all(|x| x.is_finite()));
+    }
+    // Parameter sets of their own (a Monte Carlo of μ_c): the same bound.
+    let sets: Vec<Params> = (0..n)
+        .map(|i| {
+            let mut p = Params::default();
+            p.friction.boundary_friction_coefficient = 0.10 + 0.001 * i as f64;
+            p
+        })
+        .collect();
+    let mut b = PreslidingBatch::new(n, BatchParams::PerJoint(sets.clone()), Presliding::default(), settings).unwrap();
+    b.sliding_torque(&load, &omega, None, &mut out).unwrap();
+    assert_eq!(b.tables_held(), LEVELS_MAX);
+    for (i, p) in sets.iter().enumerate().skip(LEVELS_MAX) {
+        assert_eq!(out[i].to_bits(), Joint::new(p).unwrap().evaluate(2e4, 0.7).unwrap().torque.to_bits(), "set {i}");
+    }
 }
 
 /// A level that cannot be built for one joint's parameters names that joint, and changes

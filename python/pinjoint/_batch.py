@@ -258,6 +258,14 @@ class PreslidingBatch:
         return self._native.models_held
 
     @property
+    def tables_held(self) -> int:
+        """Models holding a table now: at most 4 at the table and auto levels. Joints beyond
+        four parameter sets or temperatures at once (sets or temperatures of their own) are
+        answered by the complete solve (as at fidelity "full"), so memory and a step's time stay
+        bounded whatever their number."""
+        return self._native.tables_held
+
+    @property
     def last_step(self) -> Tuple[np.ndarray, np.ndarray]:
         """(the host's step of each joint's last commit in s, 0 before one or when not given;
         the angular velocity there in rad/s): angular_velocity*step is what the next angle is

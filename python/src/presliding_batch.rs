@@ -245,6 +245,12 @@ impl NativePreslidingBatch {
         self.batch.models_held()
     }
 
+    /// Models holding a table now (at most `pinjoint::batch::cache::LEVELS_MAX`).
+    #[getter]
+    fn tables_held(&self) -> usize {
+        self.batch.tables_held()
+    }
+
     /// The number of joints.
     fn __len__(&self) -> usize {
         self.batch.len()

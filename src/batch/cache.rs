@@ -10,6 +10,17 @@
 //! parameter sets have a model per joint: when more than [`RETAINED`] joints leave a
 //! temperature in one call and come back to it in the next, their models are built again
 //! (measured in `tests/batch_independent.rs`: allocation-free with a shared set).
+//!
+//! Tables are bounded: at the table and auto levels, in each call the joints of the first
+//! [`LEVELS_MAX`] distinct (parameter set, temperature) keys, in the order of the lowest joint
+//! index asking, are the level's; the joints of any further key are answered by the complete
+//! solve, exactly as at `full` (their key carries [`FULL_BIT`]: a model without a table, a few
+//! logarithms to build). A boundary level holds no table and is not limited. So at most
+//! [`LEVELS_MAX`] tables are in use, and with the retired ones at most [`LEVELS_MAX`] held
+//! after a call (the oldest retired tables go first), whatever the number of parameter sets
+//! and temperatures (before: 40 joints at 40 temperatures held 40 tables, 1 GB, and took 6 s a
+//! step; a table of the default envelope is ~13 MiB and ~0.2 s to build). Which joints are the
+//! table's depends on the call's keys alone, not on earlier calls.
 
 use super::error::BatchError;
 use super::model::{Model, Settings};
@@ -19,6 +30,14 @@ use std::collections::HashMap;
 
 /// Models no joint uses that are kept for reuse.
 pub const RETAINED: usize = 4;
+
+/// The most (parameter set, temperature) keys whose joints a table answers in one call, and
+/// the most tables held after it (module doc).
+pub const LEVELS_MAX: usize = 4;
+
+/// The bit of a key's parameter-set index marking a key beyond [`LEVELS_MAX`] in its call:
+/// its model has no table (the complete solve answers).
+pub const FULL_BIT: u32 = 1 << 31;
 
 /// (parameter set, temperature's bits).
 pub type Key = (u32, u64);
@@ -74,6 +93,11 @@ impl Models {
         self.slots.iter().filter(|s| s.is_some()).count()
     }
 
+    /// Models held now with a table (at most [`LEVELS_MAX`] after a call).
+    pub fn tables_held(&self) -> usize {
+        self.slots.iter().flatten().filter(|(_, m)| m.has_table()).count()
+    }
+
     /// The key of parameter set `set` at temperature `t` (K; None: the set's own).
     #[inline]
     pub fn key_of(&self, set: u32, t: Option<f64>) -> Key {
@@ -81,12 +105,36 @@ impl Models {
         (set, t.to_bits())
     }
 
-    /// The model of `key`, built from its base.
+    /// The model of `key`, built from its base: without a table for a key with [`FULL_BIT`].
     fn build(&self, key: Key) -> Result<Model, BatchError> {
-        let base = &self.bases[key.0 as usize];
+        let base = &self.bases[(key.0 & !FULL_BIT) as usize];
         let t = f64::from_bits(key.1);
         let joint = if key.1 == base.params().lubricant.temperature.to_bits() { base.clone() } else { base.at_temperature(t).map_err(|source| BatchError::Temperature { index: 0, source })? };
+        if key.0 & FULL_BIT != 0 {
+            return Ok(Model::full(joint));
+        }
         Model::build(joint, &self.settings).map_err(|source| BatchError::Level { index: 0, source })
+    }
+
+    /// Mark with [`FULL_BIT`] the keys of `keys` (one per joint) beyond the first [`LEVELS_MAX`]
+    /// distinct ones in joint order, at the table and auto levels (module doc). No allocation.
+    pub fn budget(&self, keys: &mut [Key]) {
+        if !matches!(self.settings.fidelity, crate::fidelity::Fidelity::Table | crate::fidelity::Fidelity::Auto) {
+            return;
+        }
+        let mut top = [(0u32, 0u64); LEVELS_MAX];
+        let mut len = 0;
+        for k in keys.iter_mut() {
+            if top[..len].contains(k) {
+                continue;
+            }
+            if len < LEVELS_MAX {
+                top[len] = *k;
+                len += 1;
+            } else {
+                k.0 |= FULL_BIT;
+            }
+        }
     }
 
     /// Make every joint's slot hold the model of its key: `wanted(i)` is joint i's key,
@@ -172,9 +220,14 @@ impl Models {
                 self.retired.push_back(s);
             }
         }
-        while self.retired.len() > RETAINED {
-            let s = self.retired.pop_front().expect("longer than RETAINED");
-            if let Some((k, _)) = self.slots[s as usize].take() {
+        // The oldest retired models go: beyond RETAINED, and while more than LEVELS_MAX tables
+        // are held (those in use are at most LEVELS_MAX by `budget`).
+        let mut levels = self.tables_held();
+        while self.retired.len() > RETAINED || (levels > LEVELS_MAX && self.retired.iter().any(|&s| self.get(s).has_table())) {
+            let pos = if self.retired.len() > RETAINED { 0 } else { self.retired.iter().position(|&s| self.get(s).has_table()).expect("checked above") };
+            let s = self.retired.remove(pos).expect("a retired slot");
+            if let Some((k, m)) = self.slots[s as usize].take() {
+                levels -= usize::from(m.has_table());
                 self.index.remove(&k);
             }
             self.free.push(s);

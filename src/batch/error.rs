@@ -51,6 +51,9 @@ pub enum BatchError {
     /// A batch of no joints.
     #[error("a batch needs at least one joint (n = 0)")]
     Empty,
+    /// More joints than a batch indexes (n ≥ 2³¹).
+    #[error("a batch holds fewer than 2^31 joints (n = {0}): split it")]
+    TooMany(usize),
     /// Per-joint parameters whose count is not the joint count.
     #[error("{got} parameter sets were given for {expected} joints: give one shared set or one per joint")]
     ParamCount {

@@ -99,6 +99,9 @@ impl PreslidingBatch {
         if n == 0 {
             return Err(BatchError::Empty);
         }
+        if n >= cache::FULL_BIT as usize {
+            return Err(BatchError::TooMany(n));
+        }
         law.validate().map_err(BatchError::Law)?;
         settings.validate()?;
         if matches!(settings.fidelity, crate::fidelity::Fidelity::Table | crate::fidelity::Fidelity::Auto) && settings.tolerance < crate::fidelity::FULL_ERROR_BOUND {
@@ -157,6 +160,13 @@ impl PreslidingBatch {
     /// [`cache::RETAINED`] no joint uses any more (kept for reuse).
     pub fn models_held(&self) -> usize {
         self.models.held()
+    }
+
+    /// The models held now with a table: at most [`cache::LEVELS_MAX`] (at the table and auto
+    /// levels, joints beyond that many parameter sets and temperatures at once are answered by
+    /// the complete solve, [`cache`]).
+    pub fn tables_held(&self) -> usize {
+        self.models.tables_held()
     }
 
     /// The host inertia per joint (kg·m²), when set.
@@ -276,6 +286,8 @@ impl PreslidingBatch {
         for (i, k) in keys.iter_mut().enumerate() {
             *k = models.key_of(if *per_joint { i as u32 } else { 0 }, temperature.map(|t| t[i]));
         }
+        // The table for the first LEVELS_MAX keys of this call, the complete solve beyond.
+        models.budget(keys);
         // In parallel for a batch stepped in parallel, or from a thread already in a rayon
         // pool; a small batch's call from any other thread stays on it (no pool is woken,
         // and none is used: a process forked from one that used a pool has none of its

@@ -60,6 +60,19 @@ impl Model {
         Ok(Model { joint, level })
     }
 
+    /// `joint` at the full level (the complete solve: a few logarithms to build), whatever
+    /// the settings ask: for keys beyond the batch's budget of tables
+    /// ([`super::cache::LEVELS_MAX`]).
+    pub fn full(joint: Joint) -> Self {
+        Model { joint, level: None }
+    }
+
+    /// Whether a table answers (the table level, or `auto`'s choice of it): what the batch's
+    /// budget [`super::cache::LEVELS_MAX`] counts (a boundary level is a few numbers).
+    pub fn has_table(&self) -> bool {
+        self.level.as_ref().is_some_and(|ev| ev.chosen() == Level::Table)
+    }
+
     /// The joint (its parameters, capacity and temperature).
     pub fn joint(&self) -> &Joint {
         &self.joint
