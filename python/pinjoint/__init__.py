@@ -34,7 +34,7 @@ RESULT_COLUMNS, CYCLE_COLUMNS, REGIMES, VALIDITIES, MU_C
 """
 
 from ._native import CYCLE_COLUMNS, MU_C, REGIMES, RESULT_COLUMNS, VALIDITIES, Params, param_table, rig_param_table
-from ._joint import DEFAULT_ENVELOPE, Joint, default_params
+from ._joint import DEFAULT_ENVELOPE, PAPER_ENVELOPE, Joint, default_envelope, default_params
 from ._cycle import simulate_cycle
 from ._presliding import DEFAULT_PRESLIDING, Presliding
 from ._batch import PreslidingBatch
@@ -45,9 +45,11 @@ __all__ = [
     "Calibration",
     "MU_C",
     "DEFAULT_ENVELOPE",
+    "PAPER_ENVELOPE",
     "DEFAULT_PRESLIDING",
     "Joint",
     "Params",
+    "default_envelope",
     "Presliding",
     "PreslidingBatch",
     "calibrate",

@@ -8,7 +8,7 @@ from typing import Any, Mapping, Optional, Sequence, Tuple
 import numpy as np
 
 from ._coerce import ParamsLike, as_float_array, as_params, short
-from ._joint import DEFAULT_ENVELOPE
+from ._joint import PAPER_ENVELOPE, default_envelope
 from ._native import Params, _PreslidingBatch
 from ._presliding import DEFAULT_PRESLIDING
 
@@ -124,8 +124,8 @@ class PreslidingBatch:
             raise TypeError(f"params must be a parameter set or a sequence of n of them, not {type(params).__name__}")
         if not isinstance(fidelity, str):
             raise TypeError(f"fidelity must be a string (full, table, boundary or auto), not {type(fidelity).__name__}")
-        env = DEFAULT_ENVELOPE if envelope is None else tuple(float(x) for x in envelope)
-        if len(env) != 4:
+        env = None if envelope is None else tuple(float(x) for x in envelope)
+        if env is not None and len(env) != 4:
             raise ValueError(f"envelope must be (load_min N, load_max N, speed_min rad/s, speed_max rad/s), got {short(envelope)}")
         keys, values = [], None
         if per_joint:
@@ -146,6 +146,10 @@ class PreslidingBatch:
                     raise ValueError(f"per_joint[{k!r}] = {col[bad[0]]!r} at index {bad[0]} is not a switch's value: it must be True or False (1 or 0)")
                 cols.append(col)
             values = np.ascontiguousarray(np.stack(cols, axis=1))
+        if env is None:
+            # The paper's model in any set (or switched on per joint) takes its rig region.
+            paper = "model.paper" in keys and bool(np.any(values[:, keys.index("model.paper")] != 0.0))
+            env = PAPER_ENVELOPE if paper else default_envelope(*sets)
         law = (float(presliding_angle), float(elastic_limit), float(damping_time))
         self._native = _PreslidingBatch(n, sets, keys, values, law, fidelity, float(tolerance), env)
         self._n = n

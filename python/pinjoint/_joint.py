@@ -8,6 +8,7 @@ import numpy as np
 
 from ._coerce import ParamsLike, as_float_array, as_params, short
 from ._native import DEFAULT_ENVELOPE as _SERVICE_ENVELOPE
+from ._native import PAPER_ENVELOPE as _PAPER_ENVELOPE
 from ._native import REGIMES, VALIDITIES, Params, _Joint
 
 #: Default envelope of the table/boundary/auto levels (Joint and PreslidingBatch): loads
@@ -16,6 +17,17 @@ from ._native import REGIMES, VALIDITIES, Params, _Joint
 #: Its table at the paper's joint: ~13 MiB, built in ~0.2 s at 20-120 C. The PinJoint FMU's
 #: default envelope parameters are narrower (5-60 kN, 0.01-10 rad/s).
 DEFAULT_ENVELOPE: Tuple[float, float, float, float] = tuple(_SERVICE_ENVELOPE)
+
+#: Default envelope for the paper's model (``model.paper``): the paper's rig region, 5-60 kN
+#: and 0.01-10 rad/s (its line-contact film passes the clearance at light loads and high
+#: speeds, at 1 kN and 26 rad/s already, where no table could be built).
+PAPER_ENVELOPE: Tuple[float, float, float, float] = tuple(_PAPER_ENVELOPE)
+
+
+def default_envelope(*params: Params) -> Tuple[float, float, float, float]:
+    """The default envelope for these parameter sets: PAPER_ENVELOPE if any is the paper's
+    model, else DEFAULT_ENVELOPE (the library's Envelope::default_for_all)."""
+    return PAPER_ENVELOPE if any(p["model.paper"] != 0.0 for p in params) else DEFAULT_ENVELOPE
 
 _REGIME_NAMES = np.array(REGIMES)
 _VALIDITY_NAMES = np.array(VALIDITIES)
@@ -43,7 +55,8 @@ class Joint:
                load shares) for table, boundary and auto; dimensionless, > 0.
     envelope   (load_min, load_max, speed_min, speed_max) in N and rad/s: where the table
                and boundary levels answer. Default DEFAULT_ENVELOPE (1-100 kN,
-               0.01-100 rad/s). Points outside it are answered by the complete solve,
+               0.01-100 rad/s; PAPER_ENVELOPE, 5-60 kN and 0.01-10 rad/s, for the
+               paper's model). Points outside it are answered by the complete solve,
                as at "full" (counted in `fallbacks`).
 
     The model: Greenwood-Williamson asperity contact, Moes' central film thickness scaled
@@ -95,7 +108,7 @@ class Joint:
         p = as_params(params)
         if not isinstance(fidelity, str):
             raise TypeError(f"fidelity must be a string (full, table, boundary or auto), not {type(fidelity).__name__}")
-        env = DEFAULT_ENVELOPE if envelope is None else tuple(float(x) for x in envelope)
+        env = default_envelope(p) if envelope is None else tuple(float(x) for x in envelope)
         if len(env) != 4:
             raise ValueError(f"envelope must be (load_min N, load_max N, speed_min rad/s, speed_max rad/s), got {short(envelope)}")
         self._native = _Joint(p, fidelity, float(tolerance), env)

@@ -41,6 +41,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(params::rig_param_table, m)?)?;
     let e = pinjoint::fidelity::Envelope::SERVICE;
     m.add("DEFAULT_ENVELOPE", (e.load_min, e.load_max, e.speed_min, e.speed_max))?;
+    let e = pinjoint::fidelity::Envelope::PAPER_RIG;
+    m.add("PAPER_ENVELOPE", (e.load_min, e.load_max, e.speed_min, e.speed_max))?;
     m.add("RESULT_COLUMNS", pinjoint::record::NAMES.to_vec())?;
     m.add("CYCLE_COLUMNS", cycle::CYCLE_COLUMNS.to_vec())?;
     m.add("REGIMES", pinjoint::record::REGIMES.iter().map(|r| r.as_str()).collect::<Vec<_>>())?;

@@ -27,7 +27,10 @@ pub struct Settings {
 
 impl Default for Settings {
     /// Full fidelity; tolerance 1e-4 and the envelope [`Envelope::SERVICE`] (1–100 kN,
-    /// 0.01–100 rad/s and down to rest: the Python package's default) for the other levels.
+    /// 0.01–100 rad/s and down to rest: the Python package's default for the complete model)
+    /// for the other levels. For the paper's model take [`Envelope::default_for_all`] of the
+    /// batch's parameter sets ([`Envelope::PAPER_RIG`]): its film passes the clearance at light
+    /// loads and high speeds, where no table can be built.
     fn default() -> Self {
         Settings { fidelity: Fidelity::Full, tolerance: 1e-4, envelope: Envelope::SERVICE }
     }

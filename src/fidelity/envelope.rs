@@ -31,7 +31,8 @@ pub struct Envelope {
 
 impl Envelope {
     /// The default envelope of the library's batch ([`crate::batch::Settings::default`]) and of
-    /// the Python package's table, boundary and auto levels: loads 1–100 kN (light loads to
+    /// the Python package's table, boundary and auto levels for the complete model (the paper's
+    /// model: [`Envelope::PAPER_RIG`], [`Envelope::default_for`]): loads 1–100 kN (light loads to
     /// beyond the paper's 60 kN, up to the paper's joint's load edge of 96.7 kN where the
     /// Hertz half-width reaches the pin's radius), speed magnitudes 0.01–100 rad/s (the rig's
     /// strokes peak at 4.4 rad/s); the table level also covers the speeds below, down to rest.
@@ -41,6 +42,24 @@ impl Envelope {
     /// default parameters (5–60 kN, 0.01–10 rad/s: a live temperature input rebuilds the table
     /// at each new temperature there, so it is kept small).
     pub const SERVICE: Envelope = Envelope { load_min: 1e3, load_max: 1e5, speed_min: 0.01, speed_max: 100.0 };
+
+    /// The paper's rig region, 5–60 kN and 0.01–10 rad/s: the default envelope for the paper's
+    /// model (`model.paper`), whose line-contact film passes the clearance at light loads and
+    /// high speeds (at 1 kN and 26 rad/s already), where a table over [`Envelope::SERVICE`]
+    /// could not be built; the PinJoint FMU's default envelope parameters.
+    pub const PAPER_RIG: Envelope = Envelope { load_min: 5e3, load_max: 60e3, speed_min: 0.01, speed_max: 10.0 };
+
+    /// The default envelope of a joint with `params`: [`Envelope::SERVICE`] for the complete
+    /// model, [`Envelope::PAPER_RIG`] for the paper's.
+    pub fn default_for(params: &crate::Params) -> Envelope {
+        if params.model.paper { Envelope::PAPER_RIG } else { Envelope::SERVICE }
+    }
+
+    /// The default envelope of a batch of parameter sets: [`Envelope::PAPER_RIG`] if any is the
+    /// paper's model (one envelope serves the batch), else [`Envelope::SERVICE`].
+    pub fn default_for_all<'a>(params: impl IntoIterator<Item = &'a crate::Params>) -> Envelope {
+        if params.into_iter().any(|p| p.model.paper) { Envelope::PAPER_RIG } else { Envelope::SERVICE }
+    }
 
     /// A validated envelope: loads in N, speed magnitudes in rad/s.
     pub fn new(load_min: f64, load_max: f64, speed_min: f64, speed_max: f64) -> Result<Self, FidelityError> {
@@ -98,6 +117,25 @@ pub(crate) fn lerp_log(lo: f64, hi: f64, a: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
+
+    /// The paper's model takes its rig region (its film passes the clearance at light loads
+    /// and high speeds, so no table could be built over the service envelope); the complete
+    /// model the service envelope; both valid and nested.
+    #[test]
+    fn default_envelopes_follow_the_model() {
+        use crate::fidelity::{Evaluator, Fidelity};
+        use crate::Params;
+        let (s, p) = (Envelope::SERVICE, Envelope::PAPER_RIG);
+        assert!(s.validate().is_ok() && p.validate().is_ok());
+        assert!(s.load_min <= p.load_min && p.load_max <= s.load_max && s.speed_min <= p.speed_min && p.speed_max <= s.speed_max);
+        assert_eq!(Envelope::default_for(&Params::default()), s);
+        assert_eq!(Envelope::default_for(&Params::paper()), p);
+        assert_eq!(Envelope::default_for_all([&Params::default(), &Params::paper()]), p);
+        assert_eq!(Envelope::default_for_all([&Params::default()]), s);
+        assert!(Evaluator::new(&Params::paper(), Fidelity::Table, 1e-4, Envelope::default_for(&Params::paper())).is_ok());
+        // Why: over the service envelope the paper's model has no answer at its light, fast corner.
+        assert!(Evaluator::new(&Params::paper(), Fidelity::Table, 1e-4, s).is_err());
+    }
     use super::*;
 
     #[test]
