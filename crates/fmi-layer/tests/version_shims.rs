@@ -414,3 +414,41 @@ fn the_mask_rule_flags_a_one_sided_mask() {
     let fmi2_both = ["fn a() -> S: DO_STEP => b; fn c() -> S: ENTER_STEP_MODE => d;".to_owned()];
     assert!(one_sided_masks(state, &fmi2_both, &fmi3).is_empty());
 }
+
+/// The lines of `text` before its `#[cfg(test)]` whose string literals name one standard's
+/// function (`"… fmi2Terminate …"`): a message the core sends reaches hosts of both versions,
+/// so it names a call by its common part (`Terminate`), never by one version's name.
+fn version_named_in_messages(text: &str) -> Vec<(usize, String)> {
+    let shipped = text.split("#[cfg(test)]").next().unwrap_or("");
+    let mut found = Vec::new();
+    for (n, line) in shipped.lines().enumerate() {
+        let trimmed = line.trim_start();
+        if trimmed.starts_with("//") {
+            continue;
+        }
+        // The literals of the line: the text between its unescaped double quotes.
+        for (k, part) in line.split('"').enumerate() {
+            if k % 2 == 1 {
+                for v in ["fmi2", "fmi3"] {
+                    if part.match_indices(v).any(|(i, _)| part[i + 4..].starts_with(|c: char| c.is_ascii_uppercase())) {
+                        found.push((n + 1, line.trim().to_string()));
+                    }
+                }
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_cores_messages_name_no_versions_function() {
+    let mut bad = Vec::new();
+    for f in rust_files(&src().join("core")) {
+        let text = std::fs::read_to_string(&f).unwrap();
+        bad.extend(version_named_in_messages(&text).into_iter().map(|(n, l)| format!("{}:{n}: {l}", f.display())));
+    }
+    assert!(bad.is_empty(), "the core's messages name one version's function:\n{}", bad.join("\n"));
+    // The check itself finds one.
+    let probe = "fn f() { log(\"summary at fmi2Terminate\"); }\n#[cfg(test)]\nmod tests { const X: &str = \"fmi3DoStep\"; }";
+    assert_eq!(version_named_in_messages(probe).len(), 1);
+}

@@ -249,7 +249,7 @@ impl Logger {
             Verdict::Log => self.emit(status, c, message),
             Verdict::LogThenNote(n) => {
                 self.emit(status, c, message);
-                self.emit(status, c, &format!("(the message above was logged {n} times; its further repeats, numbers aside, are counted, not logged: a summary at 100, 1000, ... repeats and at fmi2Terminate or fmi2Reset)"));
+                self.emit(status, c, &format!("(the message above was logged {n} times; its further repeats, numbers aside, are counted, not logged: a summary at 100, 1000, ... repeats and at Terminate or Reset)"));
             }
             Verdict::Summary(n) => self.emit(status, c, &format!("(repeated {n} times so far, the last:) {}", crate::fmt::excerpt(message))),
             Verdict::Quiet => {}
