@@ -83,13 +83,18 @@ fn outside_share(frames: &[[Vec<f64>; 3]], envelope: &Envelope) -> f64 {
 
 /// The kinds of host-driven scenes ([`scene`]): joints under a drive torque D = r·T_s (T_s
 /// each joint's sliding torque at rest, its breakaway), integrated by the host.
-pub const SCENES: [(&str, &str); 5] = [
+pub const SCENES: [(&str, &str); 6] = [
     ("held", "constant drive 0.3–0.8 × T_s: the joints stick (presliding, ω → 0)"),
     ("creeping", "constant drive 0.8–0.99 × T_s: presliding near breakaway, creeping"),
     ("reversing", "drive 1.2–3 × T_s · sin(2π f t), f 0.5–2 Hz: sticking, breaking away and reversing twice a cycle"),
     ("sliding", "constant drive 1.6–3 × T_s: sliding at 0.3–5 rad/s after breakaway"),
     ("mixed", "drive 0.3–3 × T_s (log-uniform), half constant, half reversing at 0.5–2 Hz: most joints held"),
+    ("service", "as `mixed`, loads 1–100 kN, over the default envelope (Envelope::SERVICE, no envelope given)"),
 ];
+
+/// The scene kind run over the batch's default envelope ([`Settings::default`]) instead of
+/// [`ENVELOPE`], with loads of 1–100 kN.
+const SERVICE_SCENE: usize = 5;
 
 /// Host inertia of the scenes (kg·m²) and their host's viscous damping, as a speed: a joint
 /// driven at r·T_s slides at most at (r − 1)·[`SCENE_SPEED`] (rad/s) once broken away.
@@ -102,7 +107,7 @@ fn scene_joints(kind: usize, n: usize) -> Vec<(f64, f64, f64, f64)> {
     let mut u = crate::rng::uniform(0x7363_656e_6500 + kind as u64);
     (0..n)
         .map(|_| {
-            let p = 5e3 * 10f64.powf(u());
+            let p = if kind == SERVICE_SCENE { 1e3 * 10f64.powf(2.0 * u()) } else { 5e3 * 10f64.powf(u()) };
             let (r, f) = match kind {
                 0 => (0.3 + 0.5 * u(), 0.0),
                 1 => (0.8 + 0.19 * u(), 0.0),
@@ -124,7 +129,8 @@ fn scene_joints(kind: usize, n: usize) -> Vec<(f64, f64, f64, f64)> {
 /// share of the timed joint-steps with 0 < |ω| < the envelope's lowest speed).
 fn scene(kind: usize, n: usize, fidelity: Fidelity, warm: usize, steps: usize) -> (f64, f64) {
     let joints = scene_joints(kind, n);
-    let mut b = batch(n, fidelity, ENVELOPE);
+    let envelope = if kind == SERVICE_SCENE { Settings::default().envelope } else { ENVELOPE };
+    let mut b = batch(n, fidelity, envelope);
     b.set_host_inertia(Some(&vec![SCENE_INERTIA; n])).expect("a valid inertia");
     let (mut theta, mut omega, mut torque) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let load: Vec<f64> = joints.iter().map(|j| j.0).collect();
@@ -137,7 +143,7 @@ fn scene(kind: usize, n: usize, fidelity: Fidelity, warm: usize, steps: usize) -
         b.step_with(&inputs, &h, &mut torque).expect("inputs inside the model's range");
         if k >= warm {
             spent += t0.elapsed().as_secs_f64();
-            slow += omega.iter().filter(|w| **w != 0.0 && w.abs() < ENVELOPE.speed_min).count();
+            slow += omega.iter().filter(|w| **w != 0.0 && w.abs() < envelope.speed_min).count();
         }
         for (i, &(_, r, f, ts)) in joints.iter().enumerate() {
             let shape = if f == 0.0 { 1.0 } else { (std::f64::consts::TAU * f * t).sin() };
@@ -251,6 +257,8 @@ pub struct BatchBench {
     pub cold_cells: (usize, usize),
     /// The host-driven scenes ([`SCENES`]) in Rust.
     pub scenes: Vec<SceneBench>,
+    /// The default envelope's table built at several temperatures: (K, s, cells, bytes).
+    pub default_builds: Vec<(f64, f64, usize, usize)>,
     /// The table's build at the batch's first step (s, the long run's table): its cells, and
     /// the speed floor below which the rest state answers (rad/s, 0: none).
     pub table_cells: (usize, usize, f64),
@@ -353,6 +361,24 @@ pub fn measure(quick: bool, python: &Path, progress: &dyn Fn(&str)) -> BatchBenc
     });
     progress("batch: host-driven scenes (held, creeping, reversing, sliding, mixed), table against full");
     let scenes = pool.install(|| scenes(quick));
+    // The default envelope's table (no envelope given), built at the cold day, the cold and
+    // warm rooms and the hot end of the service range: seconds (one build on the bench's pool),
+    // cells and size.
+    let default_builds: Vec<(f64, f64, usize, usize)> = pool.install(|| {
+        [COLD, 253.15, 293.15, 318.15, 393.15]
+            .iter()
+            .filter_map(|&t| {
+                let mut p = Params::default();
+                p.lubricant.temperature = t;
+                let t0 = Instant::now();
+                let ev = pinjoint::fidelity::Evaluator::new(&p, Fidelity::Table, Settings::default().tolerance, Settings::default().envelope).ok()?;
+                let seconds = t0.elapsed().as_secs_f64();
+                let table = ev.table()?;
+                let st = table.stats();
+                Some((t, seconds, st.load_cells * st.speed_cells, table.size_bytes()))
+            })
+            .collect()
+    });
     let table_cells = match pinjoint::fidelity::Evaluator::new(&Params::default(), Fidelity::Table, Settings::default().tolerance, ENVELOPE) {
         Ok(ev) => ev.table().map_or((0, 0, 0.0), |t| {
             let s = t.stats();
@@ -362,7 +388,7 @@ pub fn measure(quick: bool, python: &Path, progress: &dyn Fn(&str)) -> BatchBenc
     };
     progress("batch: Python (PreslidingBatch, Joint.evaluate, Presliding loop)");
     let python = python_part(python, quick);
-    BatchBench { joints, steps, threads, table_seconds, table_build_seconds, full_ns, table_ns, table_0_01_ns, table_default_ns, ratios, reps, outside, cold_ns: (cold_full, cold_table), cold_cells, peak_bytes_table: peak_table, peak_bytes_full: peak_full, scenes, table_cells, python }
+    BatchBench { joints, steps, threads, table_seconds, table_build_seconds, full_ns, table_ns, table_0_01_ns, table_default_ns, ratios, reps, outside, cold_ns: (cold_full, cold_table), cold_cells, peak_bytes_table: peak_table, peak_bytes_full: peak_full, scenes, table_cells, default_builds, python }
 }
 
 fn met(ok: bool) -> &'static str {
@@ -406,7 +432,7 @@ pub fn section(b: &BatchBench) -> (Vec<(String, String)>, String) {
     for sc in &b.scenes {
         t.push((
             format!("a `{}` scene at table ≤ 0.1 × full, per joint-step (Rust, {} joints)", sc.name, if b.joints >= 10_000 { 2_000 } else { 1_000 }),
-            format!("{} — {:.3} × (fastest repeats: table {:.1} ns, full {:.0} ns a joint-step; {:.1} % of the joint-steps moving below 1e-3 rad/s)", met(sc.ratio <= 0.1), sc.ratio, sc.table_ns, sc.full_ns, 100.0 * sc.slow),
+            format!("{} — {:.3} × (fastest repeats: table {:.1} ns, full {:.0} ns a joint-step; {:.1} % of the joint-steps moving below the envelope's lowest speed)", met(sc.ratio <= 0.1), sc.ratio, sc.table_ns, sc.full_ns, 100.0 * sc.slow),
         ));
     }
     t.push((
@@ -420,6 +446,14 @@ pub fn section(b: &BatchBench) -> (Vec<(String, String)>, String) {
             b.table_cells.2,
             100.0 * b.table_build_seconds / b.table_seconds
         ),
+    ));
+    t.push((
+        "the default envelope's table (no envelope given: 1–100 kN, 0.01–100 rad/s and down to rest), its build by temperature".into(),
+        b.default_builds
+            .iter()
+            .map(|(k, s, cells, bytes)| format!("{:.0} °C: {:.3} s, {} cells, {:.1} MiB", k - 273.15, s, cells, *bytes as f64 / 1048576.0))
+            .collect::<Vec<_>>()
+            .join("; "),
     ));
     let (cf, ct) = b.cold_ns;
     t.push((
