@@ -10,12 +10,12 @@
 //! the sweep's floor is the evaluation). Rows are written in row groups of at most
 //! [`ROW_GROUP_ROWS`], so memory stays bounded whatever the number of rows.
 
-use arrow_array::builder::StringBuilder;
-use arrow_array::{ArrayRef, Float64Array, RecordBatch};
-use arrow_schema::{DataType, Field, Schema, SchemaRef};
-use parquet::arrow::ArrowWriter;
+use arrow_schema::DataType;
+use parquet::basic::{ConvertedType, LogicalType, Repetition, Type as PhysicalType};
+use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
 use parquet::file::properties::{EnabledStatistics, WriterProperties};
-use parquet::schema::types::ColumnPath;
+use parquet::file::writer::SerializedFileWriter;
+use parquet::schema::types::{ColumnPath, Type, TypePtr};
 use pinjoint::OperatingPoint;
 use std::io::{self, Write};
 use std::sync::Arc;
@@ -48,6 +48,15 @@ impl Values {
             Values::Text(v) => v.len(),
         }
     }
+
+    /// The values from `at` on, removed from `self` (as `Vec::split_off`).
+    fn split_off(&mut self, at: usize) -> Values {
+        match self {
+            Values::Number(v) => Values::Number(v.split_off(at)),
+            Values::Name(v) => Values::Name(v.split_off(at)),
+            Values::Text(v) => Values::Text(v.split_off(at)),
+        }
+    }
 }
 
 /// The result columns as [`Values`] of `rows` rows each, empty.
@@ -74,91 +83,145 @@ pub fn push_result(cols: &mut [Values], op: &OperatingPoint) {
     }
 }
 
-/// The schema of columns named `names` holding `kinds` (the first block's columns).
-fn schema(names: &[String], kinds: &[Values]) -> SchemaRef {
-    let fields: Vec<Field> = names
+/// The Parquet schema of columns named `names` holding `kinds` (the first block's columns):
+/// `required double` for numbers, `required binary (STRING)` for text.
+fn schema(names: &[String], kinds: &[Values]) -> io::Result<TypePtr> {
+    let fields = names
         .iter()
         .zip(kinds)
-        .map(|(n, k)| Field::new(n, if matches!(k, Values::Number(_)) { DataType::Float64 } else { DataType::Utf8 }, false))
-        .collect();
-    Arc::new(Schema::new(fields))
+        .map(|(n, k)| {
+            let t = if matches!(k, Values::Number(_)) {
+                Type::primitive_type_builder(n, PhysicalType::DOUBLE)
+            } else {
+                Type::primitive_type_builder(n, PhysicalType::BYTE_ARRAY).with_logical_type(Some(LogicalType::String)).with_converted_type(ConvertedType::UTF8)
+            };
+            t.with_repetition(Repetition::REQUIRED).build().map(Arc::new)
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(to_io)?;
+    Type::group_type_builder("schema").with_fields(fields).build().map(Arc::new).map_err(to_io)
 }
 
 /// Streams blocks of rows into a Parquet file: each [`ParquetSink::write_owned`] call appends rows
-/// (the writer closes a row group at [`ROW_GROUP_ROWS`] rows), [`ParquetSink::finish`] writes
-/// the footer.
+/// (a row group is written every [`ROW_GROUP_ROWS`] rows), [`ParquetSink::finish`] writes the
+/// rest and the footer.
+///
+/// The file is written through the `parquet` crate's column writers, without Arrow arrays: a
+/// row group's blocks are kept as they came (no copy) and each column is handed to its
+/// writer block by block. Numbers are `PLAIN` pages without statistics (a copy of the bytes;
+/// no dictionary, whose hashing the floats of a sweep would not repay), text is
+/// dictionary-encoded with chunk statistics (regime and validity: a handful of values).
 pub struct ParquetSink<W: Write + Send> {
-    writer: ArrowWriter<W>,
-    schema: SchemaRef,
+    writer: SerializedFileWriter<W>,
+    /// Whether each column holds numbers.
+    numeric: Vec<bool>,
+    /// The blocks of the row group being gathered, and their rows.
+    pending: Vec<Vec<Values>>,
+    rows: usize,
+    /// The text of each name met (regime, validity), shared by its values (no copy per row).
+    names: Vec<(&'static str, ByteArray)>,
+}
+
+/// The bytes of the name `s`, shared through `names` (a handful of names: a linear search).
+fn name_bytes(names: &mut Vec<(&'static str, ByteArray)>, s: &'static str) -> ByteArray {
+    if let Some((_, b)) = names.iter().find(|(n, _)| *n == s) {
+        return b.clone();
+    }
+    let b = ByteArray::from(s);
+    names.push((s, b.clone()));
+    b
 }
 
 impl<W: Write + Send> ParquetSink<W> {
     /// A sink writing to `w` the columns `names`, of the kinds of `kinds` (one [`Values`] per
     /// name, its contents ignored).
     pub fn new(w: W, names: &[String], kinds: &[Values]) -> io::Result<Self> {
-        let schema = schema(names, kinds);
+        let schema = schema(names, kinds)?;
         let mut props = WriterProperties::builder()
             .set_max_row_group_size(ROW_GROUP_ROWS)
+            .set_write_batch_size(8192)
             .set_dictionary_enabled(false)
-            .set_statistics_enabled(EnabledStatistics::Chunk)
+            .set_statistics_enabled(EnabledStatistics::None)
             .set_created_by(format!("pinjoint {}", env!("CARGO_PKG_VERSION")));
         for (n, k) in names.iter().zip(kinds) {
             if !matches!(k, Values::Number(_)) {
-                props = props.set_column_dictionary_enabled(ColumnPath::from(n.as_str()), true);
+                let col = ColumnPath::from(n.as_str());
+                props = props.set_column_dictionary_enabled(col, true);
             }
         }
-        let writer = ArrowWriter::try_new(w, schema.clone(), Some(props.build())).map_err(to_io)?;
-        Ok(ParquetSink { writer, schema })
+        let writer = SerializedFileWriter::new(w, schema, Arc::new(props.build())).map_err(to_io)?;
+        Ok(ParquetSink { writer, numeric: kinds.iter().map(|k| matches!(k, Values::Number(_))).collect(), pending: Vec::new(), rows: 0, names: Vec::new() })
     }
 
     /// Append the rows of `blocks`, in order: each block one [`Values`] per column, every
-    /// column of a block as long. Each block is written as it is (its number columns move
-    /// into the file's arrays without a copy; the writer closes a row group every
-    /// [`ROW_GROUP_ROWS`] rows whatever the blocks' sizes).
+    /// column of a block as long. The blocks are kept as they are (moved, not copied) until a
+    /// row group of [`ROW_GROUP_ROWS`] rows is complete, which is then written.
     pub fn write_owned(&mut self, blocks: impl IntoIterator<Item = Vec<Values>>) -> io::Result<()> {
-        let ncols = self.schema.fields().len();
-        for block in blocks {
+        let ncols = self.numeric.len();
+        for mut block in blocks {
             let rows = block.first().map_or(0, Values::len);
             if rows == 0 {
                 continue;
             }
-            if block.len() != ncols || block.iter().any(|c| c.len() != rows) {
-                return Err(io::Error::other(format!("a block of {} columns for a schema of {ncols}, or of unequal columns", block.len())));
+            let kinds_match = block.iter().zip(&self.numeric).all(|(c, &n)| matches!(c, Values::Number(_)) == n);
+            if block.len() != ncols || !kinds_match || block.iter().any(|c| c.len() != rows) {
+                return Err(io::Error::other(format!("a block of {} columns for a schema of {ncols}, or of unequal columns or other kinds", block.len())));
             }
-            let arrays: Vec<ArrayRef> = block
-                .into_iter()
-                .map(|c| -> ArrayRef {
-                    match c {
-                        Values::Number(v) => Arc::new(Float64Array::from(v)),
-                        other => {
-                            let mut t = StringBuilder::with_capacity(rows, rows * 8);
-                            for v in text_of(&other) {
-                                t.append_value(v);
-                            }
-                            Arc::new(t.finish())
-                        }
-                    }
-                })
-                .collect();
-            let batch = RecordBatch::try_new(self.schema.clone(), arrays).map_err(|e| io::Error::other(e.to_string()))?;
-            self.writer.write(&batch).map_err(to_io)?;
+            let room = ROW_GROUP_ROWS - self.rows;
+            if rows > room {
+                // The rows past the row group's end start the next one.
+                let rest: Vec<Values> = block.iter_mut().map(|c| c.split_off(room)).collect();
+                self.pending.push(block);
+                self.rows += room;
+                self.write_row_group()?;
+                self.write_owned([rest])?;
+                continue;
+            }
+            self.pending.push(block);
+            self.rows += rows;
+            if self.rows == ROW_GROUP_ROWS {
+                self.write_row_group()?;
+            }
         }
         Ok(())
     }
 
-    /// Write the footer (the file is complete only then) and flush.
-    pub fn finish(self) -> io::Result<()> {
+    /// Write the pending blocks as one row group, column after column.
+    fn write_row_group(&mut self) -> io::Result<()> {
+        if self.rows == 0 {
+            return Ok(());
+        }
+        let mut group = self.writer.next_row_group().map_err(to_io)?;
+        for k in 0..self.numeric.len() {
+            let mut col = group.next_column().map_err(to_io)?.ok_or_else(|| io::Error::other("fewer columns in the schema than in the blocks"))?;
+            for block in &self.pending {
+                match &block[k] {
+                    Values::Number(v) => {
+                        col.typed::<DoubleType>().write_batch(v, None, None).map_err(to_io)?;
+                    }
+                    other => {
+                        let text: Vec<ByteArray> = match other {
+                            Values::Name(v) => v.iter().map(|s| name_bytes(&mut self.names, s)).collect(),
+                            Values::Text(v) => v.iter().map(|s| ByteArray::from(s.as_str())).collect(),
+                            Values::Number(_) => unreachable!("matched above"),
+                        };
+                        col.typed::<ByteArrayType>().write_batch(&text, None, None).map_err(to_io)?;
+                    }
+                }
+            }
+            col.close().map_err(to_io)?;
+        }
+        group.close().map_err(to_io)?;
+        self.pending.clear();
+        self.rows = 0;
+        Ok(())
+    }
+
+    /// Write the last row group and the footer (the file is complete only then) and flush.
+    pub fn finish(mut self) -> io::Result<()> {
+        self.write_row_group()?;
         let mut w = self.writer.into_inner().map_err(to_io)?;
         w.flush()
-    }
-}
-
-/// The text values of a column (empty for a number column).
-fn text_of(v: &Values) -> Box<dyn Iterator<Item = &str> + '_> {
-    match v {
-        Values::Name(x) => Box::new(x.iter().copied()),
-        Values::Text(x) => Box::new(x.iter().map(String::as_str)),
-        Values::Number(_) => Box::new(std::iter::empty()),
     }
 }
 

@@ -22,7 +22,7 @@ use pinjoint::{Joint, OperatingPoint};
 use rayon::prelude::*;
 use std::io::{self, BufRead, Seek, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::AtomicBool;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 
 #[derive(Args, Debug)]
@@ -81,6 +81,9 @@ pub struct SweepCmd {
 
 /// Rows read, evaluated and written together: bounds the memory (a few MiB of text).
 pub const BATCH_ROWS: usize = 16_384;
+/// Batches of Parquet columns queued for the writer thread at most (each about
+/// [`BATCH_ROWS`] × 8 bytes × the columns).
+const WRITE_QUEUE: usize = 2;
 /// Rows one task parses, evaluates and formats.
 const CHUNK_ROWS: usize = 512;
 
@@ -667,24 +670,38 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         let path = cmd.output.as_deref().expect("output_form: Parquet goes to a file");
         let names: Vec<String> = cols.header.iter().cloned().chain(RESULT_COLUMNS.iter().map(|s| (*s).to_string())).collect();
         write_atomic_send(path, &inputs, |w| {
-            let mut pq = columnar::ParquetSink::new(w, &names, &parquet_columns(&cols, 0))?;
-            let mut write_err: Option<io::Error> = None;
-            let mut sink = |outs: &mut [ChunkOut]| -> Result<()> {
-                // Each chunk's columns move into the file's arrays (no copy of the numbers).
-                let blocks = outs.iter_mut().map(|o| std::mem::take(&mut o.cols));
-                pq.write_owned(blocks).map_err(|e| {
-                    let msg = e.to_string();
-                    write_err = Some(e);
-                    CliError::Invalid(msg)
-                })
-            };
-            let r = source(&mode, &mut sink);
-            bar.finish_and_clear();
-            if let Some(e) = write_err {
-                return Err(e);
-            }
-            r.map_err(keep)?;
-            pq.finish()
+            // The row groups are encoded and written on a thread of their own, fed a batch's
+            // columns at a time (at most WRITE_QUEUE batches queued: memory stays bounded), so
+            // that this thread only reads while the cores evaluate.
+            let kinds = parquet_columns(&cols, 0);
+            let failed = AtomicBool::new(false);
+            std::thread::scope(|s| {
+                let (tx, rx) = std::sync::mpsc::sync_channel::<Vec<Vec<Values>>>(WRITE_QUEUE);
+                let failed = &failed;
+                let writer = s.spawn(move || -> io::Result<()> {
+                    let mut pq = columnar::ParquetSink::new(w, &names, &kinds)?;
+                    for blocks in rx {
+                        pq.write_owned(blocks)?;
+                    }
+                    // A failed run leaves the temporary file unfinished (it is removed).
+                    if failed.load(Ordering::Relaxed) { Ok(()) } else { pq.finish() }
+                });
+                let r = {
+                    let mut sink = |outs: &mut [ChunkOut]| -> Result<()> {
+                        // Each chunk's columns move to the writer (no copy of the numbers).
+                        let blocks: Vec<Vec<Values>> = outs.iter_mut().map(|o| std::mem::take(&mut o.cols)).collect();
+                        tx.send(blocks).map_err(|_| CliError::Invalid("the Parquet writer stopped".into()))
+                    };
+                    source(&mode, &mut sink)
+                };
+                failed.store(r.is_err(), Ordering::Relaxed);
+                drop(tx);
+                bar.finish_and_clear();
+                let written = writer.join().unwrap_or_else(|_| Err(io::Error::other("the Parquet writer thread panicked")));
+                // The writer's own error first (it is why a send failed), then the input's.
+                written?;
+                r.map_err(keep)
+            })
         })
     } else {
         let fill = |w: &mut dyn Write| -> io::Result<()> {
