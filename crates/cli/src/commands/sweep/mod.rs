@@ -14,7 +14,7 @@ use crate::exact::push_exact;
 use crate::fidelity_args::{note_fallback, range_of, FidelityArgs};
 use crate::columnar::{self, Values};
 use crate::output::{refuse_inputs, to_stdout, write_atomic, write_atomic_send};
-use self::input::{split, Batch, RecordReader};
+use self::input::{Batch, Fields, RecordReader};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::fidelity::Evaluator;
@@ -262,7 +262,7 @@ fn parquet_columns(cols: &Columns, rows: usize) -> Vec<Values> {
 fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mode, file: &str, form: Form) -> Result<ChunkOut> {
     let width = cols.header.len();
     let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
-    let mut rec = csv::ByteRecord::with_capacity(64, width);
+    let mut fields = Fields::default();
     match (mode, form) {
         (Mode::Scan, _) => {}
         (_, Form::Csv) => out.text.reserve(recs.len() * 320),
@@ -273,11 +273,14 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
     for r in recs {
         let line = r.line;
         let bad = |message: String| CliError::Input { file: file.to_string(), line, message };
-        split(batch.bytes(r), &mut rec).map_err(|e| bad(e.to_string()))?;
-        if let Err(e) = std::str::from_utf8(rec.as_slice()) {
+        let rec = fields.cut(batch.bytes(r)).map_err(|e| bad(e.to_string()))?;
+        // A record of ASCII bytes is UTF-8; only another needs the check.
+        if !rec.ascii
+            && let Err(e) = std::str::from_utf8(rec.all())
+        {
             return Err(bad(format!("unreadable CSV: invalid UTF-8: {e}")));
         }
-        let text = |i: usize| std::str::from_utf8(&rec[i]).unwrap_or("");
+        let text = |i: usize| std::str::from_utf8(rec.get(i)).unwrap_or("");
         if rec.len() != width {
             let detail = if rec.len() < width {
                 format!("missing column(s) {}", cols.header[rec.len()..].join(","))
