@@ -7,6 +7,7 @@
 //! [`input`], which reads the CSV records in bounded batches.
 
 pub mod input;
+mod spill;
 
 use crate::common::{csv_io, ParamsArg, RESULT_COLUMNS};
 use crate::error::{CliError, Result};
@@ -102,6 +103,16 @@ enum Mode<'a> {
     Level { proto: &'a Evaluator, pool: Mutex<Vec<Evaluator>>, said: AtomicBool, by_t: Temperatures },
     /// Only validate and collect the load and |speed| ranges (the envelope's default).
     Scan,
+    /// As [`Mode::Scan`], and keep every row's numbers and line ([`ChunkOut::cols`] and
+    /// [`ChunkOut::lines`]) for a second pass that does not parse the text again ([`spill`]).
+    Spill,
+}
+
+impl Mode<'_> {
+    /// Whether rows are answered (not only scanned).
+    fn evaluates(&self) -> bool {
+        !matches!(self, Mode::Scan | Mode::Spill)
+    }
 }
 
 /// The header and where the load, speed and (optional) temperature columns are.
@@ -152,6 +163,8 @@ impl Temperatures {
 struct ChunkOut {
     text: Vec<u8>,
     cols: Vec<Values>,
+    /// The rows' lines ([`Mode::Spill`]).
+    lines: Vec<u64>,
     loads: (f64, f64),
     speeds: (f64, f64),
 }
@@ -176,7 +189,7 @@ fn evaluate_row(
     bad: &dyn Fn(String) -> CliError,
 ) -> Result<OperatingPoint> {
     Ok(match (mode, ev) {
-        (Mode::Scan, _) => unreachable!("a scan evaluates nothing"),
+        (Mode::Scan | Mode::Spill, _) => unreachable!("a scan evaluates nothing"),
         (Mode::Full(joint), _) => match temperature {
             None => joint.evaluate(load, speed),
             Some(t) => joint.at_temperature(t).map_err(|e| bad(e.to_string()))?.evaluate(load, speed),
@@ -265,6 +278,10 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
     let mut fields = Fields::default();
     match (mode, form) {
         (Mode::Scan, _) => {}
+        (Mode::Spill, _) => {
+            out.cols = (0..width).map(|_| Values::Number(Vec::with_capacity(recs.len()))).collect();
+            out.lines.reserve(recs.len());
+        }
         (_, Form::Csv) => out.text.reserve(recs.len() * 320),
         (_, Form::Parquet) => out.cols = parquet_columns(cols, recs.len()),
     }
@@ -308,24 +325,21 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
         let temperature = cols.temperature.map(|i| number(i, "temperature", "K")).transpose()?;
         widen(&mut out.loads, load.abs());
         widen(&mut out.speeds, speed.abs());
-        if matches!(mode, Mode::Scan) {
+        if matches!(mode, Mode::Spill) {
+            push_numbers(&mut out.cols, cols, (load, speed, temperature));
+            out.lines.push(line);
+        }
+        if !mode.evaluates() {
             continue;
         }
         let op = evaluate_row(mode, ev.as_mut(), &mut at_t, (load, speed, temperature), &bad)?;
         if form == Form::Parquet {
             // The input columns (the numbers as evaluated, other columns as text), then the
             // result record's.
+            push_numbers(&mut out.cols[..width], cols, (load, speed, temperature));
             for (k, c) in out.cols[..width].iter_mut().enumerate() {
-                match c {
-                    Values::Number(v) => v.push(if k == cols.load {
-                        load
-                    } else if k == cols.speed {
-                        speed
-                    } else {
-                        temperature.unwrap_or(f64::NAN)
-                    }),
-                    Values::Text(v) => v.push(text(k).to_string()),
-                    Values::Name(_) => {}
+                if let Values::Text(v) = c {
+                    v.push(text(k).to_string());
                 }
             }
             columnar::push_result(&mut out.cols[width..], &op);
@@ -353,6 +367,21 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
     }
     return_evaluator(mode, ev);
     Ok(out)
+}
+
+/// Append a row's numbers to the number columns among `out` (the input's columns, in its order).
+fn push_numbers(out: &mut [Values], cols: &Columns, (load, speed, temperature): (f64, f64, Option<f64>)) {
+    for (k, c) in out.iter_mut().enumerate() {
+        if let Values::Number(v) = c {
+            v.push(if k == cols.load {
+                load
+            } else if k == cols.speed {
+                speed
+            } else {
+                temperature.unwrap_or(f64::NAN)
+            });
+        }
+    }
 }
 
 /// One CSV field as the `csv` crate's writer writes it by default (`QuoteStyle::Necessary`,
@@ -505,7 +534,7 @@ fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&mu
                 let end = (start + CHUNK_ROWS).min(load.len());
                 let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
                 match (mode, form) {
-                    (Mode::Scan, _) => {}
+                    (Mode::Scan | Mode::Spill, _) => {}
                     (_, Form::Csv) => out.text.reserve((end - start) * 320),
                     (_, Form::Parquet) => out.cols = parquet_columns(&cols, end - start),
                 }
@@ -526,7 +555,7 @@ fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&mu
                     }
                     widen(&mut out.loads, p.abs());
                     widen(&mut out.speeds, w.abs());
-                    if matches!(mode, Mode::Scan) {
+                    if !mode.evaluates() {
                         continue;
                     }
                     let op = evaluate_row(mode, ev.as_mut(), &mut at_t, (p, w, t), &bad)?;
@@ -628,6 +657,8 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     let (mut input, len) = if parquet_in { (Box::new(Unseekable(io::BufReader::new(io::empty()))) as Box<dyn ReadSeek>, None) } else { open(&cmd.input, needs_ranges)? };
     let bar = progress(len);
     let level;
+    // The rows' numbers kept by the first pass for the second ([`spill`]) and the input's columns.
+    let mut spilled: Option<(io::BufReader<std::fs::File>, Columns)> = None;
     let mode = if full {
         Mode::Full(&joint)
     } else {
@@ -637,9 +668,22 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
             } else {
                 let mut reader = RecordReader::new(&mut input, &file);
                 let cols = read_header(&mut reader, &file)?;
-                let r = stream(&mut reader, &cols, &Mode::Scan, &file, form, &ProgressBar::hidden(), &mut |_: &mut [ChunkOut]| Ok(()))?;
-                input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
-                r
+                if form == Form::Parquet && (0..cols.header.len()).all(|k| cols.is_number(k)) {
+                    // Parse once: the second pass answers the numbers kept by this one.
+                    let tmp_err = |e: io::Error| CliError::Invalid(format!("writing the sweep's temporary file: {e}"));
+                    let mut w = io::BufWriter::with_capacity(1 << 16, tempfile::tempfile().map_err(tmp_err)?);
+                    let r = stream(&mut reader, &cols, &Mode::Spill, &file, form, &bar, &mut |outs: &mut [ChunkOut]| {
+                        outs.iter().try_for_each(|o| spill::write(&mut w, o)).map_err(tmp_err)
+                    })?;
+                    let mut f = w.into_inner().map_err(|e| tmp_err(e.into_error()))?;
+                    f.rewind().map_err(tmp_err)?;
+                    spilled = Some((io::BufReader::with_capacity(1 << 16, f), cols));
+                    r
+                } else {
+                    let r = stream(&mut reader, &cols, &Mode::Scan, &file, form, &ProgressBar::hidden(), &mut |_: &mut [ChunkOut]| Ok(()))?;
+                    input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
+                    r
+                }
             };
             let fallback = |r: (f64, f64), f: (f64, f64)| if r.0.is_finite() { range_of([r.0, r.1].into_iter(), f) } else { f };
             (fallback(l, (1.0, 2.0)), fallback(s, (1e-3, 1.0)))
@@ -650,10 +694,10 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         Mode::Level { proto: &level, pool: Mutex::new(Vec::new()), said: AtomicBool::new(false), by_t: Temperatures::default() }
     };
     let mut reader = RecordReader::new(&mut input, &file);
-    let cols = if parquet_in {
-        parquet_input_columns(columnar::ParquetRows::open(&cmd.input, 1).map_err(CliError::Invalid)?.has_temperature)
-    } else {
-        read_header(&mut reader, &file)?
+    let (cols, mut spilled) = match spilled {
+        Some((f, cols)) => (cols, Some(f)),
+        None if parquet_in => (parquet_input_columns(columnar::ParquetRows::open(&cmd.input, 1).map_err(CliError::Invalid)?.has_temperature), None),
+        None => (read_header(&mut reader, &file)?, None),
     };
     // An input or model error inside the writer is kept here and returned as itself.
     let failure: Mutex<Option<CliError>> = Mutex::new(None);
@@ -663,7 +707,9 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         io::Error::other(msg)
     };
     let mut source = |mode: &Mode, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>| -> Result<()> {
-        if parquet_in {
+        if let Some(f) = spilled.as_mut() {
+            spill::stream(f, &cols, mode, &file, sink)
+        } else if parquet_in {
             stream_parquet(&cmd.input, mode, form, sink).map(|_| ())
         } else {
             stream(&mut reader, &cols, mode, &file, form, &bar, sink).map(|_| ())
