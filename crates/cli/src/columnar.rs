@@ -124,7 +124,8 @@ pub struct ParquetSink<W: Write + Send> {
 
 /// The bytes of the name `s`, shared through `names` (a handful of names: a linear search).
 fn name_bytes(names: &mut Vec<(&'static str, ByteArray)>, s: &'static str) -> ByteArray {
-    if let Some((_, b)) = names.iter().find(|(n, _)| *n == s) {
+    // The same name is the same static text: its address is compared first.
+    if let Some((_, b)) = names.iter().find(|(n, _)| std::ptr::eq(n.as_ptr(), s.as_ptr()) && n.len() == s.len()).or_else(|| names.iter().find(|(n, _)| *n == s)) {
         return b.clone();
     }
     let b = ByteArray::from(s);
