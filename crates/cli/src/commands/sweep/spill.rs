@@ -67,28 +67,38 @@ fn read_chunk(r: &mut impl Read, width: usize, buf: &mut Vec<u8>) -> io::Result<
     Ok(Some(Chunk { numbers, lines }))
 }
 
+/// The next batch: chunks of at least [`BATCH_ROWS`] rows in all, unless the file ends.
+fn read_batch(r: &mut impl Read, width: usize, buf: &mut Vec<u8>) -> io::Result<Vec<Chunk>> {
+    let (mut batch, mut rows) = (Vec::new(), 0);
+    while rows < BATCH_ROWS {
+        let Some(c) = read_chunk(r, width, buf)? else { break };
+        rows += c.lines.len();
+        batch.push(c);
+    }
+    Ok(batch)
+}
+
 /// The second pass: the rows kept in `spill` answered through `mode`, a batch of
-/// [`BATCH_ROWS`] at a time on every core, handed to `sink` in input order as Parquet columns.
-/// An error names the row's line in `file`, as the first pass would.
-pub(super) fn stream(spill: &mut impl Read, cols: &Columns, mode: &Mode, file: &str, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>) -> Result<()> {
+/// [`BATCH_ROWS`] at a time on every core (while this thread reads the next batch), handed to
+/// `sink` in input order as Parquet columns. An error names the row's line in `file`, as the
+/// first pass would.
+pub(super) fn stream(spill: &mut (impl Read + Send), cols: &Columns, mode: &Mode, file: &str, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>) -> Result<()> {
     let width = cols.header.len();
     let tmp_err = |e: io::Error| CliError::Invalid(format!("reading the sweep's temporary file: {e}"));
     let mut buf = Vec::new();
-    loop {
-        let mut batch = Vec::new();
-        let mut rows = 0;
-        while rows < BATCH_ROWS {
-            let Some(c) = read_chunk(spill, width, &mut buf).map_err(tmp_err)? else { break };
-            rows += c.lines.len();
-            batch.push(c);
-        }
-        if batch.is_empty() {
-            return Ok(());
-        }
-        let outs: Vec<Result<ChunkOut>> = batch.par_iter().map(|c| answer(c, cols, mode, file)).collect();
+    let mut current = read_batch(spill, width, &mut buf).map_err(tmp_err)?;
+    while !current.is_empty() {
+        let (outs, next) = std::thread::scope(|s| {
+            let work = s.spawn(|| current.par_iter().map(|c| answer(c, cols, mode, file)).collect::<Vec<Result<ChunkOut>>>());
+            let next = read_batch(spill, width, &mut buf);
+            (work.join(), next)
+        });
+        let outs = outs.unwrap_or_else(|_| vec![Err(CliError::Invalid("a worker thread panicked".into()))]);
         let mut outs: Vec<ChunkOut> = outs.into_iter().collect::<Result<_>>()?;
         sink(&mut outs)?;
+        current = next.map_err(tmp_err)?;
     }
+    Ok(())
 }
 
 /// One chunk's rows answered: the input's numbers then the result columns.
