@@ -1,5 +1,6 @@
 //! Apache Parquet output and input (`pinjoint sweep --output X.parquet`, `--input X.parquet`,
-//! `pinjoint map --format parquet`), through the Rust `arrow` and `parquet` crates.
+//! `pinjoint map --format parquet`): written through the Rust `parquet` crate's column writers
+//! ([`ParquetSink`]), read through its Arrow reader ([`ParquetRows`]).
 //!
 //! The columns are the CSV's: the input columns, then the result columns of
 //! `pinjoint::record::COLUMNS` in the same order. Every number is a `DOUBLE` column holding the
@@ -7,7 +8,7 @@
 //! `regime` and `validity` are `UTF8` text columns, dictionary-encoded in the file (a handful of
 //! distinct values), and an input column other than `load`, `speed` and `temperature` is text as
 //! read. Pages are uncompressed (no codec is built: the floats of a sweep compress little, and
-//! the sweep's floor is the evaluation). Rows are written in row groups of at most
+//! the sweep's floor is the evaluation) and carry no statistics. Rows are written in row groups of at most
 //! [`ROW_GROUP_ROWS`], so memory stays bounded whatever the number of rows.
 
 use arrow_schema::DataType;

@@ -3,8 +3,10 @@
 //! number of rows). Each batch is parsed, evaluated and formatted in chunks on every core
 //! while the previous batch is written and the next one read.
 //!
-//! This folder holds the command (arguments, evaluation and output, in this file) and
-//! [`input`], which reads the CSV records in bounded batches.
+//! This folder holds the command (arguments, evaluation and output, in this file),
+//! [`input`], which reads the CSV records in bounded batches, and `spill`, which keeps the
+//! parsed rows between the two passes of a Parquet sweep whose level is built over the
+//! input's own ranges (the input is then parsed once).
 
 pub mod input;
 mod spill;
