@@ -15,8 +15,14 @@ use arrow_schema::DataType;
 use parquet::basic::{ConvertedType, LogicalType, Repetition, Type as PhysicalType};
 use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
 use parquet::file::properties::{EnabledStatistics, WriterProperties};
-use parquet::file::writer::SerializedFileWriter;
-use parquet::schema::types::{ColumnPath, Type, TypePtr};
+use bytes::Bytes;
+use parquet::basic::{Compression, Encoding};
+use parquet::column::page::{CompressedPage, Page, PageWriter};
+use parquet::column::writer::ColumnCloseResult;
+use parquet::file::metadata::ColumnChunkMetaData;
+use parquet::file::page_index::offset_index::{OffsetIndexMetaData, PageLocation};
+use parquet::file::writer::{SerializedFileWriter, SerializedPageWriter, TrackedWrite};
+use parquet::schema::types::{ColumnDescPtr, ColumnPath, Type, TypePtr};
 use pinjoint::OperatingPoint;
 use std::io::{self, Write};
 use std::sync::Arc;
@@ -123,6 +129,97 @@ pub struct ParquetSink<W: Write + Send> {
     names: Vec<(&'static str, ByteArray)>,
 }
 
+/// Most distinct names a column chunk of [`names_chunk`] holds (its indices are bit-packed in
+/// at most 8 bits).
+const MAX_NAMES: usize = 256;
+/// Groups of 8 values in one bit-packed run (its header one byte, as the `parquet` crate's own
+/// encoder keeps it).
+const RUN_GROUPS: usize = 63;
+
+/// Column `k` of `blocks` (`rows` values) as a dictionary-encoded column chunk, when it holds
+/// names ([`Values::Name`]: regime, validity) of at most [`MAX_NAMES`] distinct texts; `None`
+/// otherwise (the column writer then writes it). The names are told apart by their static
+/// text's address first, so no value is hashed: the dictionary page holds each distinct name
+/// once (`PLAIN`), the data page their indices (`RLE_DICTIONARY`: the bit width, then
+/// bit-packed runs), as the Parquet format defines them and any reader decodes them.
+fn names_chunk(descr: ColumnDescPtr, blocks: &[Vec<Values>], k: usize, rows: usize) -> parquet::errors::Result<Option<(Bytes, ColumnCloseResult)>> {
+    let mut names: Vec<&'static str> = Vec::new();
+    let mut index: Vec<u8> = Vec::with_capacity(rows);
+    for block in blocks {
+        let Values::Name(v) = &block[k] else { return Ok(None) };
+        for s in v {
+            let i = match names.iter().position(|n| std::ptr::eq(n.as_ptr(), s.as_ptr()) && n.len() == s.len()) {
+                Some(i) => i,
+                None => match names.iter().position(|n| n == s) {
+                    Some(i) => i,
+                    None if names.len() < MAX_NAMES => {
+                        names.push(s);
+                        names.len() - 1
+                    }
+                    None => return Ok(None),
+                },
+            };
+            index.push(i as u8);
+        }
+    }
+    if index.len() != rows {
+        return Ok(None);
+    }
+    let mut dict = Vec::new();
+    for n in &names {
+        dict.extend_from_slice(&(n.len() as u32).to_le_bytes());
+        dict.extend_from_slice(n.as_bytes());
+    }
+    let width = (usize::BITS - (names.len().max(2) - 1).leading_zeros()) as usize;
+    let mut data = Vec::with_capacity(1 + rows * width / 8 + rows / (8 * RUN_GROUPS) + 16);
+    data.push(width as u8);
+    for run in index.chunks(8 * RUN_GROUPS) {
+        let groups = run.len().div_ceil(8);
+        data.push(((groups << 1) | 1) as u8);
+        for group in run.chunks(8) {
+            let mut bits = 0u64;
+            for (j, &v) in group.iter().enumerate() {
+                bits |= u64::from(v) << (j * width);
+            }
+            data.extend_from_slice(&bits.to_le_bytes()[..width]);
+        }
+    }
+    let mut sink = TrackedWrite::new(Vec::new());
+    let (dict_at, data_at) = {
+        let mut pages = SerializedPageWriter::new(&mut sink);
+        let (dict_len, data_len) = (dict.len(), data.len());
+        let d = pages.write_page(CompressedPage::new(Page::DictionaryPage { buf: dict.into(), num_values: names.len() as u32, encoding: Encoding::PLAIN, is_sorted: false }, dict_len))?;
+        let page = Page::DataPage {
+            buf: data.into(),
+            num_values: rows as u32,
+            encoding: Encoding::RLE_DICTIONARY,
+            def_level_encoding: Encoding::RLE,
+            rep_level_encoding: Encoding::RLE,
+            statistics: None,
+        };
+        let v = pages.write_page(CompressedPage::new(page, data_len))?;
+        pages.close()?;
+        (d, v)
+    };
+    let chunk = Bytes::from(sink.into_inner()?);
+    let len = chunk.len() as i64;
+    let metadata = ColumnChunkMetaData::builder(descr)
+        .set_compression(Compression::UNCOMPRESSED)
+        .set_encodings(vec![Encoding::PLAIN, Encoding::RLE, Encoding::RLE_DICTIONARY])
+        .set_total_compressed_size(len)
+        .set_total_uncompressed_size(len)
+        .set_num_values(rows as i64)
+        .set_dictionary_page_offset(Some(dict_at.offset as i64))
+        .set_data_page_offset(data_at.offset as i64)
+        .build()?;
+    let offset_index = OffsetIndexMetaData {
+        page_locations: vec![PageLocation { offset: data_at.offset as i64, compressed_page_size: data_at.compressed_size as i32, first_row_index: 0 }],
+        unencoded_byte_array_data_bytes: None,
+    };
+    let close = ColumnCloseResult { bytes_written: len as u64, rows_written: rows as u64, metadata, bloom_filter: None, column_index: None, offset_index: Some(offset_index) };
+    Ok(Some((chunk, close)))
+}
+
 /// The bytes of the name `s`, shared through `names` (a handful of names: a linear search).
 fn name_bytes(names: &mut Vec<(&'static str, ByteArray)>, s: &'static str) -> ByteArray {
     // The same name is the same static text: its address is compared first.
@@ -193,8 +290,13 @@ impl<W: Write + Send> ParquetSink<W> {
         if self.rows == 0 {
             return Ok(());
         }
+        let descrs: Vec<ColumnDescPtr> = (0..self.numeric.len()).map(|k| self.writer.schema_descr().column(k)).collect();
         let mut group = self.writer.next_row_group().map_err(to_io)?;
-        for k in 0..self.numeric.len() {
+        for (k, descr) in descrs.into_iter().enumerate() {
+            if let Some((chunk, close)) = names_chunk(descr, &self.pending, k, self.rows).map_err(to_io)? {
+                group.append_column(&chunk, close).map_err(to_io)?;
+                continue;
+            }
             let mut col = group.next_column().map_err(to_io)?.ok_or_else(|| io::Error::other("fewer columns in the schema than in the blocks"))?;
             for block in &self.pending {
                 match &block[k] {
