@@ -491,3 +491,62 @@ mod num_cast {
     }
     impl_as!(f32, i8, i16, i32, i64, u8, u16, u32, u64);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use arrow_array::cast::AsArray;
+    use arrow_array::types::Float64Type;
+
+    /// A file of a number column and a name column written by [`ParquetSink`] in blocks of
+    /// `block` rows, read back by the Arrow reader: (numbers, names).
+    fn round_trip(names: &[&'static str], block: usize) -> (Vec<f64>, Vec<String>) {
+        let cols = ["x".to_string(), "name".to_string()];
+        let mut file = Vec::new();
+        let mut sink = ParquetSink::new(&mut file, &cols, &[Values::Number(Vec::new()), Values::Name(Vec::new())]).unwrap();
+        for (b, part) in names.chunks(block).enumerate() {
+            let x = (0..part.len()).map(|i| (b * block + i) as f64 * 0.1).collect();
+            sink.write_owned([vec![Values::Number(x), Values::Name(part.to_vec())]]).unwrap();
+        }
+        sink.finish().unwrap();
+        let reader = parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder::try_new(Bytes::from(file)).unwrap();
+        assert!(reader.metadata().row_groups().iter().all(|g| g.num_rows() as usize <= ROW_GROUP_ROWS));
+        let (mut x, mut n) = (Vec::new(), Vec::new());
+        for batch in reader.build().unwrap() {
+            let batch = batch.unwrap();
+            x.extend(batch.column(0).as_primitive::<Float64Type>().values().iter());
+            n.extend(batch.column(1).as_string::<i32>().iter().map(|s| s.unwrap().to_string()));
+        }
+        (x, n)
+    }
+
+    /// Name columns read back as written: one name, a few (regime's, validity's), as many as a
+    /// byte indexes and more (then the column writer's path); row counts that are not multiples
+    /// of 8 nor of a bit-packed run, several row groups, blocks split across them; equal names
+    /// at other addresses are one name.
+    #[test]
+    fn name_columns_read_back_as_written() {
+        let many: Vec<&'static str> = (0..300).map(|i| &*Box::leak(format!("name{i}").into_boxed_str())).collect();
+        let same_text: &'static str = Box::leak(String::from("mixed").into_boxed_str());
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut pick = |n: usize| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s % n as u64) as usize
+        };
+        let few = ["boundary", "mixed", "full-film", same_text];
+        let cases: Vec<(Vec<&'static str>, usize)> = vec![
+            (vec!["checked"; 5], 512),
+            ((0..1001).map(|_| few[pick(4)]).collect(), 512),
+            ((0..ROW_GROUP_ROWS + 777).map(|_| few[pick(4)]).collect(), 1000),
+            ((0..5000).map(|_| many[pick(256)]).collect(), 333),
+            ((0..5000).map(|_| many[pick(300)]).collect(), 4096),
+        ];
+        for (names, block) in cases {
+            let (x, got) = round_trip(&names, block);
+            assert_eq!(got, names, "{} rows in blocks of {block}", names.len());
+            assert!(x.iter().enumerate().all(|(i, v)| v.to_bits() == (i as f64 * 0.1).to_bits()));
+        }
+    }
+}
