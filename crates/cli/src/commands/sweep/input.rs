@@ -272,6 +272,10 @@ impl<'a> Cut<'a> {
     pub fn is_empty(&self) -> bool {
         self.ranges.is_empty()
     }
+    /// Field `i`'s place in [`Cut::all`].
+    pub fn range(&self, i: usize) -> (usize, usize) {
+        self.ranges[i]
+    }
     /// Field `i`'s bytes, trimmed.
     pub fn get(&self, i: usize) -> &'a [u8] {
         let (a, b) = self.ranges[i];

@@ -293,13 +293,12 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
         let line = r.line;
         let bad = |message: String| CliError::Input { file: file.to_string(), line, message };
         let rec = fields.cut(batch.bytes(r)).map_err(|e| bad(e.to_string()))?;
-        // A record of ASCII bytes is UTF-8; only another needs the check.
-        if !rec.ascii
-            && let Err(e) = std::str::from_utf8(rec.all())
-        {
-            return Err(bad(format!("unreadable CSV: invalid UTF-8: {e}")));
-        }
-        let text = |i: usize| std::str::from_utf8(rec.get(i)).unwrap_or("");
+        // The record's text checked once; each field is a slice of it.
+        let whole = std::str::from_utf8(rec.all()).map_err(|e| bad(format!("unreadable CSV: invalid UTF-8: {e}")))?;
+        let text = |i: usize| {
+            let (a, b) = rec.range(i);
+            whole.get(a..b).unwrap_or("")
+        };
         if rec.len() != width {
             let detail = if rec.len() < width {
                 format!("missing column(s) {}", cols.header[rec.len()..].join(","))
