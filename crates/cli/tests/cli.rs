@@ -670,6 +670,15 @@ fn a_parquet_sweep_parsed_once_is_the_csv_sweep_and_fails_as_it() {
         let o = run_with(&["sweep", "--input", "-", "--output", pq.to_str().unwrap(), "--fidelity", fidelity], Some(&csv));
         assert_eq!(o.code, 0, "{}", o.stderr);
         parquet_is_csv(&pq, &std::fs::read_to_string(&a).unwrap(), fidelity);
+        // Where no temporary file can be made, the input is read twice: the same file.
+        std::fs::remove_file(&pq).unwrap();
+        let o = Command::new(env!("CARGO_BIN_EXE_pinjoint"))
+            .args(["sweep", "--input", input.to_str().unwrap(), "--output", pq.to_str().unwrap(), "--fidelity", fidelity])
+            .env("TMPDIR", dir.path().join("no such directory"))
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        parquet_is_csv(&pq, &std::fs::read_to_string(&a).unwrap(), fidelity);
     }
     // Malformed rows: the same error, naming the same line, for CSV and Parquet; no file left.
     let lines: Vec<&str> = csv.lines().collect();

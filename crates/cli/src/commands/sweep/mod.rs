@@ -669,10 +669,12 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
             } else {
                 let mut reader = RecordReader::new(&mut input, &file);
                 let cols = read_header(&mut reader, &file)?;
-                if form == Form::Parquet && (0..cols.header.len()).all(|k| cols.is_number(k)) {
-                    // Parse once: the second pass answers the numbers kept by this one.
+                // Parse once: the second pass answers the numbers kept by this one (where no
+                // temporary file can be made, the second pass reads the input again).
+                let keep = if form == Form::Parquet && (0..cols.header.len()).all(|k| cols.is_number(k)) { tempfile::tempfile().ok() } else { None };
+                if let Some(tmp) = keep {
                     let tmp_err = |e: io::Error| CliError::Invalid(format!("writing the sweep's temporary file: {e}"));
-                    let mut w = io::BufWriter::with_capacity(1 << 16, tempfile::tempfile().map_err(tmp_err)?);
+                    let mut w = io::BufWriter::with_capacity(1 << 16, tmp);
                     let r = stream(&mut reader, &cols, &Mode::Spill, &file, form, &bar, &mut |outs: &mut [ChunkOut]| {
                         outs.iter().try_for_each(|o| spill::write(&mut w, o)).map_err(tmp_err)
                     })?;
