@@ -117,7 +117,7 @@ fn schema(names: &[String], kinds: &[Values]) -> io::Result<TypePtr> {
 /// row group's blocks are kept as they came (no copy) and each column is handed to its
 /// writer block by block. Numbers are `PLAIN` pages (a copy of the bytes; no dictionary, whose
 /// hashing the floats of a sweep would not repay); names (regime, validity: a handful of
-/// values) are dictionary column chunks written directly ([`names_chunk`]); other text goes
+/// values) are dictionary column chunks written directly (`names_chunk`); other text goes
 /// through the column writer, dictionary-encoded. No page or chunk carries statistics.
 pub struct ParquetSink<W: Write + Send> {
     writer: SerializedFileWriter<W>,
