@@ -87,8 +87,10 @@ pub struct SharedFloor {
     /// `operating_point`.
     pub evaluate: f64,
     /// Reading the input's two numbers per row: split at the comma and parsed (`str::parse`),
-    /// from text in memory; the sweep does it twice (a first pass finds the envelope) and
-    /// also reads the file and checks each field, so this is a lower bound of its parse.
+    /// from text in memory; the sweep also reads the file and checks each field, so this is a
+    /// lower bound of its parse. The Parquet sweep parses once (its first pass, which finds
+    /// the envelope, keeps the numbers for the second); the CSV sweep twice (it copies the
+    /// input's fields as written, so its second pass reads the text again).
     pub parse: f64,
 }
 

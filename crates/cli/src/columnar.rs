@@ -1,5 +1,6 @@
 //! Apache Parquet output and input (`pinjoint sweep --output X.parquet`, `--input X.parquet`,
-//! `pinjoint map --format parquet`), through the Rust `arrow` and `parquet` crates.
+//! `pinjoint map --format parquet`): written through the Rust `parquet` crate's column writers
+//! ([`ParquetSink`]), read through its Arrow reader ([`ParquetRows`]).
 //!
 //! The columns are the CSV's: the input columns, then the result columns of
 //! `pinjoint::record::COLUMNS` in the same order. Every number is a `DOUBLE` column holding the
@@ -7,15 +8,21 @@
 //! `regime` and `validity` are `UTF8` text columns, dictionary-encoded in the file (a handful of
 //! distinct values), and an input column other than `load`, `speed` and `temperature` is text as
 //! read. Pages are uncompressed (no codec is built: the floats of a sweep compress little, and
-//! the sweep's floor is the evaluation). Rows are written in row groups of at most
+//! the sweep's floor is the evaluation) and carry no statistics. Rows are written in row groups of at most
 //! [`ROW_GROUP_ROWS`], so memory stays bounded whatever the number of rows.
 
-use arrow_array::builder::StringBuilder;
-use arrow_array::{ArrayRef, Float64Array, RecordBatch};
-use arrow_schema::{DataType, Field, Schema, SchemaRef};
-use parquet::arrow::ArrowWriter;
+use arrow_schema::DataType;
+use parquet::basic::{ConvertedType, LogicalType, Repetition, Type as PhysicalType};
+use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
 use parquet::file::properties::{EnabledStatistics, WriterProperties};
-use parquet::schema::types::ColumnPath;
+use bytes::Bytes;
+use parquet::basic::{Compression, Encoding};
+use parquet::column::page::{CompressedPage, Page, PageWriter};
+use parquet::column::writer::ColumnCloseResult;
+use parquet::file::metadata::ColumnChunkMetaData;
+use parquet::file::page_index::offset_index::{OffsetIndexMetaData, PageLocation};
+use parquet::file::writer::{SerializedFileWriter, SerializedPageWriter, TrackedWrite};
+use parquet::schema::types::{ColumnDescPtr, ColumnPath, Type, TypePtr};
 use pinjoint::OperatingPoint;
 use std::io::{self, Write};
 use std::sync::Arc;
@@ -48,6 +55,15 @@ impl Values {
             Values::Text(v) => v.len(),
         }
     }
+
+    /// The values from `at` on, removed from `self` (as `Vec::split_off`).
+    fn split_off(&mut self, at: usize) -> Values {
+        match self {
+            Values::Number(v) => Values::Number(v.split_off(at)),
+            Values::Name(v) => Values::Name(v.split_off(at)),
+            Values::Text(v) => Values::Text(v.split_off(at)),
+        }
+    }
 }
 
 /// The result columns as [`Values`] of `rows` rows each, empty.
@@ -74,91 +90,243 @@ pub fn push_result(cols: &mut [Values], op: &OperatingPoint) {
     }
 }
 
-/// The schema of columns named `names` holding `kinds` (the first block's columns).
-fn schema(names: &[String], kinds: &[Values]) -> SchemaRef {
-    let fields: Vec<Field> = names
+/// The Parquet schema of columns named `names` holding `kinds` (the first block's columns):
+/// `required double` for numbers, `required binary (STRING)` for text.
+fn schema(names: &[String], kinds: &[Values]) -> io::Result<TypePtr> {
+    let fields = names
         .iter()
         .zip(kinds)
-        .map(|(n, k)| Field::new(n, if matches!(k, Values::Number(_)) { DataType::Float64 } else { DataType::Utf8 }, false))
-        .collect();
-    Arc::new(Schema::new(fields))
+        .map(|(n, k)| {
+            let t = if matches!(k, Values::Number(_)) {
+                Type::primitive_type_builder(n, PhysicalType::DOUBLE)
+            } else {
+                Type::primitive_type_builder(n, PhysicalType::BYTE_ARRAY).with_logical_type(Some(LogicalType::String)).with_converted_type(ConvertedType::UTF8)
+            };
+            t.with_repetition(Repetition::REQUIRED).build().map(Arc::new)
+        })
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(to_io)?;
+    Type::group_type_builder("schema").with_fields(fields).build().map(Arc::new).map_err(to_io)
 }
 
 /// Streams blocks of rows into a Parquet file: each [`ParquetSink::write_owned`] call appends rows
-/// (the writer closes a row group at [`ROW_GROUP_ROWS`] rows), [`ParquetSink::finish`] writes
-/// the footer.
+/// (a row group is written every [`ROW_GROUP_ROWS`] rows), [`ParquetSink::finish`] writes the
+/// rest and the footer.
+///
+/// The file is written through the `parquet` crate's column writers, without Arrow arrays: a
+/// row group's blocks are kept as they came (no copy) and each column is handed to its
+/// writer block by block. Numbers are `PLAIN` pages (a copy of the bytes; no dictionary, whose
+/// hashing the floats of a sweep would not repay); names (regime, validity: a handful of
+/// values) are dictionary column chunks written directly (`names_chunk`); other text goes
+/// through the column writer, dictionary-encoded. No page or chunk carries statistics.
 pub struct ParquetSink<W: Write + Send> {
-    writer: ArrowWriter<W>,
-    schema: SchemaRef,
+    writer: SerializedFileWriter<W>,
+    /// Whether each column holds numbers.
+    numeric: Vec<bool>,
+    /// The blocks of the row group being gathered, and their rows.
+    pending: Vec<Vec<Values>>,
+    rows: usize,
+    /// The text of each name met (regime, validity), shared by its values (no copy per row).
+    names: Vec<(&'static str, ByteArray)>,
+}
+
+/// Most distinct names a column chunk of [`names_chunk`] holds (its indices are bit-packed in
+/// at most 8 bits).
+const MAX_NAMES: usize = 256;
+/// Groups of 8 values in one bit-packed run (its header one byte, as the `parquet` crate's own
+/// encoder keeps it).
+const RUN_GROUPS: usize = 63;
+
+/// Column `k` of `blocks` (`rows` values) as a dictionary-encoded column chunk, when it holds
+/// names ([`Values::Name`]: regime, validity) of at most [`MAX_NAMES`] distinct texts; `None`
+/// otherwise (the column writer then writes it). The names are told apart by their static
+/// text's address first, so no value is hashed: the dictionary page holds each distinct name
+/// once (`PLAIN`), the data page their indices (`RLE_DICTIONARY`: the bit width, then
+/// bit-packed runs), as the Parquet format defines them and any reader decodes them.
+fn names_chunk(descr: ColumnDescPtr, blocks: &[Vec<Values>], k: usize, rows: usize) -> parquet::errors::Result<Option<(Bytes, ColumnCloseResult)>> {
+    let mut names: Vec<&'static str> = Vec::new();
+    let mut index: Vec<u8> = Vec::with_capacity(rows);
+    for block in blocks {
+        let Values::Name(v) = &block[k] else { return Ok(None) };
+        for s in v {
+            let i = match names.iter().position(|n| std::ptr::eq(n.as_ptr(), s.as_ptr()) && n.len() == s.len()) {
+                Some(i) => i,
+                None => match names.iter().position(|n| n == s) {
+                    Some(i) => i,
+                    None if names.len() < MAX_NAMES => {
+                        names.push(s);
+                        names.len() - 1
+                    }
+                    None => return Ok(None),
+                },
+            };
+            index.push(i as u8);
+        }
+    }
+    if index.len() != rows {
+        return Ok(None);
+    }
+    let mut dict = Vec::new();
+    for n in &names {
+        dict.extend_from_slice(&(n.len() as u32).to_le_bytes());
+        dict.extend_from_slice(n.as_bytes());
+    }
+    let width = (usize::BITS - (names.len().max(2) - 1).leading_zeros()) as usize;
+    let mut data = Vec::with_capacity(1 + rows * width / 8 + rows / (8 * RUN_GROUPS) + 16);
+    data.push(width as u8);
+    for run in index.chunks(8 * RUN_GROUPS) {
+        let groups = run.len().div_ceil(8);
+        data.push(((groups << 1) | 1) as u8);
+        for group in run.chunks(8) {
+            let mut bits = 0u64;
+            for (j, &v) in group.iter().enumerate() {
+                bits |= u64::from(v) << (j * width);
+            }
+            data.extend_from_slice(&bits.to_le_bytes()[..width]);
+        }
+    }
+    let mut sink = TrackedWrite::new(Vec::new());
+    let (dict_at, data_at) = {
+        let mut pages = SerializedPageWriter::new(&mut sink);
+        let (dict_len, data_len) = (dict.len(), data.len());
+        let d = pages.write_page(CompressedPage::new(Page::DictionaryPage { buf: dict.into(), num_values: names.len() as u32, encoding: Encoding::PLAIN, is_sorted: false }, dict_len))?;
+        let page = Page::DataPage {
+            buf: data.into(),
+            num_values: rows as u32,
+            encoding: Encoding::RLE_DICTIONARY,
+            def_level_encoding: Encoding::RLE,
+            rep_level_encoding: Encoding::RLE,
+            statistics: None,
+        };
+        let v = pages.write_page(CompressedPage::new(page, data_len))?;
+        pages.close()?;
+        (d, v)
+    };
+    let chunk = Bytes::from(sink.into_inner()?);
+    let len = chunk.len() as i64;
+    let metadata = ColumnChunkMetaData::builder(descr)
+        .set_compression(Compression::UNCOMPRESSED)
+        .set_encodings(vec![Encoding::PLAIN, Encoding::RLE, Encoding::RLE_DICTIONARY])
+        .set_total_compressed_size(len)
+        .set_total_uncompressed_size(len)
+        .set_num_values(rows as i64)
+        .set_dictionary_page_offset(Some(dict_at.offset as i64))
+        .set_data_page_offset(data_at.offset as i64)
+        .build()?;
+    let offset_index = OffsetIndexMetaData {
+        page_locations: vec![PageLocation { offset: data_at.offset as i64, compressed_page_size: data_at.compressed_size as i32, first_row_index: 0 }],
+        unencoded_byte_array_data_bytes: None,
+    };
+    let close = ColumnCloseResult { bytes_written: len as u64, rows_written: rows as u64, metadata, bloom_filter: None, column_index: None, offset_index: Some(offset_index) };
+    Ok(Some((chunk, close)))
+}
+
+/// The bytes of the name `s`, shared through `names` (a handful of names: a linear search).
+fn name_bytes(names: &mut Vec<(&'static str, ByteArray)>, s: &'static str) -> ByteArray {
+    // The same name is the same static text: its address is compared first.
+    if let Some((_, b)) = names.iter().find(|(n, _)| std::ptr::eq(n.as_ptr(), s.as_ptr()) && n.len() == s.len()).or_else(|| names.iter().find(|(n, _)| *n == s)) {
+        return b.clone();
+    }
+    let b = ByteArray::from(s);
+    names.push((s, b.clone()));
+    b
 }
 
 impl<W: Write + Send> ParquetSink<W> {
     /// A sink writing to `w` the columns `names`, of the kinds of `kinds` (one [`Values`] per
     /// name, its contents ignored).
     pub fn new(w: W, names: &[String], kinds: &[Values]) -> io::Result<Self> {
-        let schema = schema(names, kinds);
+        let schema = schema(names, kinds)?;
         let mut props = WriterProperties::builder()
             .set_max_row_group_size(ROW_GROUP_ROWS)
+            .set_write_batch_size(8192)
             .set_dictionary_enabled(false)
-            .set_statistics_enabled(EnabledStatistics::Chunk)
+            .set_statistics_enabled(EnabledStatistics::None)
             .set_created_by(format!("pinjoint {}", env!("CARGO_PKG_VERSION")));
         for (n, k) in names.iter().zip(kinds) {
             if !matches!(k, Values::Number(_)) {
-                props = props.set_column_dictionary_enabled(ColumnPath::from(n.as_str()), true);
+                let col = ColumnPath::from(n.as_str());
+                props = props.set_column_dictionary_enabled(col, true);
             }
         }
-        let writer = ArrowWriter::try_new(w, schema.clone(), Some(props.build())).map_err(to_io)?;
-        Ok(ParquetSink { writer, schema })
+        let writer = SerializedFileWriter::new(w, schema, Arc::new(props.build())).map_err(to_io)?;
+        Ok(ParquetSink { writer, numeric: kinds.iter().map(|k| matches!(k, Values::Number(_))).collect(), pending: Vec::new(), rows: 0, names: Vec::new() })
     }
 
     /// Append the rows of `blocks`, in order: each block one [`Values`] per column, every
-    /// column of a block as long. Each block is written as it is (its number columns move
-    /// into the file's arrays without a copy; the writer closes a row group every
-    /// [`ROW_GROUP_ROWS`] rows whatever the blocks' sizes).
+    /// column of a block as long. The blocks are kept as they are (moved, not copied) until a
+    /// row group of [`ROW_GROUP_ROWS`] rows is complete, which is then written.
     pub fn write_owned(&mut self, blocks: impl IntoIterator<Item = Vec<Values>>) -> io::Result<()> {
-        let ncols = self.schema.fields().len();
-        for block in blocks {
+        let ncols = self.numeric.len();
+        for mut block in blocks {
             let rows = block.first().map_or(0, Values::len);
             if rows == 0 {
                 continue;
             }
-            if block.len() != ncols || block.iter().any(|c| c.len() != rows) {
-                return Err(io::Error::other(format!("a block of {} columns for a schema of {ncols}, or of unequal columns", block.len())));
+            let kinds_match = block.iter().zip(&self.numeric).all(|(c, &n)| matches!(c, Values::Number(_)) == n);
+            if block.len() != ncols || !kinds_match || block.iter().any(|c| c.len() != rows) {
+                return Err(io::Error::other(format!("a block of {} columns for a schema of {ncols}, or of unequal columns or other kinds", block.len())));
             }
-            let arrays: Vec<ArrayRef> = block
-                .into_iter()
-                .map(|c| -> ArrayRef {
-                    match c {
-                        Values::Number(v) => Arc::new(Float64Array::from(v)),
-                        other => {
-                            let mut t = StringBuilder::with_capacity(rows, rows * 8);
-                            for v in text_of(&other) {
-                                t.append_value(v);
-                            }
-                            Arc::new(t.finish())
-                        }
-                    }
-                })
-                .collect();
-            let batch = RecordBatch::try_new(self.schema.clone(), arrays).map_err(|e| io::Error::other(e.to_string()))?;
-            self.writer.write(&batch).map_err(to_io)?;
+            let room = ROW_GROUP_ROWS - self.rows;
+            if rows > room {
+                // The rows past the row group's end start the next one.
+                let rest: Vec<Values> = block.iter_mut().map(|c| c.split_off(room)).collect();
+                self.pending.push(block);
+                self.rows += room;
+                self.write_row_group()?;
+                self.write_owned([rest])?;
+                continue;
+            }
+            self.pending.push(block);
+            self.rows += rows;
+            if self.rows == ROW_GROUP_ROWS {
+                self.write_row_group()?;
+            }
         }
         Ok(())
     }
 
-    /// Write the footer (the file is complete only then) and flush.
-    pub fn finish(self) -> io::Result<()> {
+    /// Write the pending blocks as one row group, column after column.
+    fn write_row_group(&mut self) -> io::Result<()> {
+        if self.rows == 0 {
+            return Ok(());
+        }
+        let descrs: Vec<ColumnDescPtr> = (0..self.numeric.len()).map(|k| self.writer.schema_descr().column(k)).collect();
+        let mut group = self.writer.next_row_group().map_err(to_io)?;
+        for (k, descr) in descrs.into_iter().enumerate() {
+            if let Some((chunk, close)) = names_chunk(descr, &self.pending, k, self.rows).map_err(to_io)? {
+                group.append_column(&chunk, close).map_err(to_io)?;
+                continue;
+            }
+            let mut col = group.next_column().map_err(to_io)?.ok_or_else(|| io::Error::other("fewer columns in the schema than in the blocks"))?;
+            for block in &self.pending {
+                match &block[k] {
+                    Values::Number(v) => {
+                        col.typed::<DoubleType>().write_batch(v, None, None).map_err(to_io)?;
+                    }
+                    other => {
+                        let text: Vec<ByteArray> = match other {
+                            Values::Name(v) => v.iter().map(|s| name_bytes(&mut self.names, s)).collect(),
+                            Values::Text(v) => v.iter().map(|s| ByteArray::from(s.as_str())).collect(),
+                            Values::Number(_) => unreachable!("matched above"),
+                        };
+                        col.typed::<ByteArrayType>().write_batch(&text, None, None).map_err(to_io)?;
+                    }
+                }
+            }
+            col.close().map_err(to_io)?;
+        }
+        group.close().map_err(to_io)?;
+        self.pending.clear();
+        self.rows = 0;
+        Ok(())
+    }
+
+    /// Write the last row group and the footer (the file is complete only then) and flush.
+    pub fn finish(mut self) -> io::Result<()> {
+        self.write_row_group()?;
         let mut w = self.writer.into_inner().map_err(to_io)?;
         w.flush()
-    }
-}
-
-/// The text values of a column (empty for a number column).
-fn text_of(v: &Values) -> Box<dyn Iterator<Item = &str> + '_> {
-    match v {
-        Values::Name(x) => Box::new(x.iter().copied()),
-        Values::Text(x) => Box::new(x.iter().map(String::as_str)),
-        Values::Number(_) => Box::new(std::iter::empty()),
     }
 }
 
@@ -323,4 +491,63 @@ mod num_cast {
         };
     }
     impl_as!(f32, i8, i16, i32, i64, u8, u16, u32, u64);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use arrow_array::cast::AsArray;
+    use arrow_array::types::Float64Type;
+
+    /// A file of a number column and a name column written by [`ParquetSink`] in blocks of
+    /// `block` rows, read back by the Arrow reader: (numbers, names).
+    fn round_trip(names: &[&'static str], block: usize) -> (Vec<f64>, Vec<String>) {
+        let cols = ["x".to_string(), "name".to_string()];
+        let mut file = Vec::new();
+        let mut sink = ParquetSink::new(&mut file, &cols, &[Values::Number(Vec::new()), Values::Name(Vec::new())]).unwrap();
+        for (b, part) in names.chunks(block).enumerate() {
+            let x = (0..part.len()).map(|i| (b * block + i) as f64 * 0.1).collect();
+            sink.write_owned([vec![Values::Number(x), Values::Name(part.to_vec())]]).unwrap();
+        }
+        sink.finish().unwrap();
+        let reader = parquet::arrow::arrow_reader::ParquetRecordBatchReaderBuilder::try_new(Bytes::from(file)).unwrap();
+        assert!(reader.metadata().row_groups().iter().all(|g| g.num_rows() as usize <= ROW_GROUP_ROWS));
+        let (mut x, mut n) = (Vec::new(), Vec::new());
+        for batch in reader.build().unwrap() {
+            let batch = batch.unwrap();
+            x.extend(batch.column(0).as_primitive::<Float64Type>().values().iter());
+            n.extend(batch.column(1).as_string::<i32>().iter().map(|s| s.unwrap().to_string()));
+        }
+        (x, n)
+    }
+
+    /// Name columns read back as written: one name, a few (regime's, validity's), as many as a
+    /// byte indexes and more (then the column writer's path); row counts that are not multiples
+    /// of 8 nor of a bit-packed run, several row groups, blocks split across them; equal names
+    /// at other addresses are one name.
+    #[test]
+    fn name_columns_read_back_as_written() {
+        let many: Vec<&'static str> = (0..300).map(|i| &*Box::leak(format!("name{i}").into_boxed_str())).collect();
+        let same_text: &'static str = Box::leak(String::from("mixed").into_boxed_str());
+        let mut s = 0x2545_f491_4f6c_dd1du64;
+        let mut pick = |n: usize| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s % n as u64) as usize
+        };
+        let few = ["boundary", "mixed", "full-film", same_text];
+        let cases: Vec<(Vec<&'static str>, usize)> = vec![
+            (vec!["checked"; 5], 512),
+            ((0..1001).map(|_| few[pick(4)]).collect(), 512),
+            ((0..ROW_GROUP_ROWS + 777).map(|_| few[pick(4)]).collect(), 1000),
+            ((0..5000).map(|_| many[pick(256)]).collect(), 333),
+            ((0..5000).map(|_| many[pick(300)]).collect(), 4096),
+        ];
+        for (names, block) in cases {
+            let (x, got) = round_trip(&names, block);
+            assert_eq!(got, names, "{} rows in blocks of {block}", names.len());
+            assert!(x.iter().enumerate().all(|(i, v)| v.to_bits() == (i as f64 * 0.1).to_bits()));
+        }
+    }
 }

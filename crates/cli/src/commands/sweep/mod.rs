@@ -3,10 +3,13 @@
 //! number of rows). Each batch is parsed, evaluated and formatted in chunks on every core
 //! while the previous batch is written and the next one read.
 //!
-//! This folder holds the command (arguments, evaluation and output, in this file) and
-//! [`input`], which reads the CSV records in bounded batches.
+//! This folder holds the command (arguments, evaluation and output, in this file),
+//! [`input`], which reads the CSV records in bounded batches, and `spill`, which keeps the
+//! parsed rows between the two passes of a Parquet sweep whose level is built over the
+//! input's own ranges (the input is then parsed once).
 
 pub mod input;
+mod spill;
 
 use crate::common::{csv_io, ParamsArg, RESULT_COLUMNS};
 use crate::error::{CliError, Result};
@@ -14,7 +17,7 @@ use crate::exact::push_exact;
 use crate::fidelity_args::{note_fallback, range_of, FidelityArgs};
 use crate::columnar::{self, Values};
 use crate::output::{refuse_inputs, to_stdout, write_atomic, write_atomic_send};
-use self::input::{split, Batch, RecordReader};
+use self::input::{Batch, Fields, RecordReader};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use pinjoint::fidelity::Evaluator;
@@ -22,7 +25,7 @@ use pinjoint::{Joint, OperatingPoint};
 use rayon::prelude::*;
 use std::io::{self, BufRead, Seek, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::AtomicBool;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
 
 #[derive(Args, Debug)]
@@ -81,6 +84,9 @@ pub struct SweepCmd {
 
 /// Rows read, evaluated and written together: bounds the memory (a few MiB of text).
 pub const BATCH_ROWS: usize = 16_384;
+/// Batches of Parquet columns queued for the writer thread at most (each about
+/// [`BATCH_ROWS`] × 8 bytes × the columns).
+const WRITE_QUEUE: usize = 2;
 /// Rows one task parses, evaluates and formats.
 const CHUNK_ROWS: usize = 512;
 
@@ -99,6 +105,16 @@ enum Mode<'a> {
     Level { proto: &'a Evaluator, pool: Mutex<Vec<Evaluator>>, said: AtomicBool, by_t: Temperatures },
     /// Only validate and collect the load and |speed| ranges (the envelope's default).
     Scan,
+    /// As [`Mode::Scan`], and keep every row's numbers and line ([`ChunkOut::cols`] and
+    /// [`ChunkOut::lines`]) for a second pass that does not parse the text again ([`spill`]).
+    Spill,
+}
+
+impl Mode<'_> {
+    /// Whether rows are answered (not only scanned).
+    fn evaluates(&self) -> bool {
+        !matches!(self, Mode::Scan | Mode::Spill)
+    }
 }
 
 /// The header and where the load, speed and (optional) temperature columns are.
@@ -149,6 +165,8 @@ impl Temperatures {
 struct ChunkOut {
     text: Vec<u8>,
     cols: Vec<Values>,
+    /// The rows' lines ([`Mode::Spill`]).
+    lines: Vec<u64>,
     loads: (f64, f64),
     speeds: (f64, f64),
 }
@@ -173,7 +191,7 @@ fn evaluate_row(
     bad: &dyn Fn(String) -> CliError,
 ) -> Result<OperatingPoint> {
     Ok(match (mode, ev) {
-        (Mode::Scan, _) => unreachable!("a scan evaluates nothing"),
+        (Mode::Scan | Mode::Spill, _) => unreachable!("a scan evaluates nothing"),
         (Mode::Full(joint), _) => match temperature {
             None => joint.evaluate(load, speed),
             Some(t) => joint.at_temperature(t).map_err(|e| bad(e.to_string()))?.evaluate(load, speed),
@@ -259,9 +277,13 @@ fn parquet_columns(cols: &Columns, rows: usize) -> Vec<Values> {
 fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mode, file: &str, form: Form) -> Result<ChunkOut> {
     let width = cols.header.len();
     let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
-    let mut rec = csv::ByteRecord::with_capacity(64, width);
+    let mut fields = Fields::default();
     match (mode, form) {
         (Mode::Scan, _) => {}
+        (Mode::Spill, _) => {
+            out.cols = (0..width).map(|_| Values::Number(Vec::with_capacity(recs.len()))).collect();
+            out.lines.reserve(recs.len());
+        }
         (_, Form::Csv) => out.text.reserve(recs.len() * 320),
         (_, Form::Parquet) => out.cols = parquet_columns(cols, recs.len()),
     }
@@ -270,11 +292,13 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
     for r in recs {
         let line = r.line;
         let bad = |message: String| CliError::Input { file: file.to_string(), line, message };
-        split(batch.bytes(r), &mut rec).map_err(|e| bad(e.to_string()))?;
-        if let Err(e) = std::str::from_utf8(rec.as_slice()) {
-            return Err(bad(format!("unreadable CSV: invalid UTF-8: {e}")));
-        }
-        let text = |i: usize| std::str::from_utf8(&rec[i]).unwrap_or("");
+        let rec = fields.cut(batch.bytes(r)).map_err(|e| bad(e.to_string()))?;
+        // The record's text checked once; each field is a slice of it.
+        let whole = std::str::from_utf8(rec.all()).map_err(|e| bad(format!("unreadable CSV: invalid UTF-8: {e}")))?;
+        let text = |i: usize| {
+            let (a, b) = rec.range(i);
+            whole.get(a..b).unwrap_or("")
+        };
         if rec.len() != width {
             let detail = if rec.len() < width {
                 format!("missing column(s) {}", cols.header[rec.len()..].join(","))
@@ -302,24 +326,21 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
         let temperature = cols.temperature.map(|i| number(i, "temperature", "K")).transpose()?;
         widen(&mut out.loads, load.abs());
         widen(&mut out.speeds, speed.abs());
-        if matches!(mode, Mode::Scan) {
+        if matches!(mode, Mode::Spill) {
+            push_numbers(&mut out.cols, cols, (load, speed, temperature));
+            out.lines.push(line);
+        }
+        if !mode.evaluates() {
             continue;
         }
         let op = evaluate_row(mode, ev.as_mut(), &mut at_t, (load, speed, temperature), &bad)?;
         if form == Form::Parquet {
             // The input columns (the numbers as evaluated, other columns as text), then the
             // result record's.
+            push_numbers(&mut out.cols[..width], cols, (load, speed, temperature));
             for (k, c) in out.cols[..width].iter_mut().enumerate() {
-                match c {
-                    Values::Number(v) => v.push(if k == cols.load {
-                        load
-                    } else if k == cols.speed {
-                        speed
-                    } else {
-                        temperature.unwrap_or(f64::NAN)
-                    }),
-                    Values::Text(v) => v.push(text(k).to_string()),
-                    Values::Name(_) => {}
+                if let Values::Text(v) = c {
+                    v.push(text(k).to_string());
                 }
             }
             columnar::push_result(&mut out.cols[width..], &op);
@@ -347,6 +368,21 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
     }
     return_evaluator(mode, ev);
     Ok(out)
+}
+
+/// Append a row's numbers to the number columns among `out` (the input's columns, in its order).
+fn push_numbers(out: &mut [Values], cols: &Columns, (load, speed, temperature): (f64, f64, Option<f64>)) {
+    for (k, c) in out.iter_mut().enumerate() {
+        if let Values::Number(v) = c {
+            v.push(if k == cols.load {
+                load
+            } else if k == cols.speed {
+                speed
+            } else {
+                temperature.unwrap_or(f64::NAN)
+            });
+        }
+    }
 }
 
 /// One CSV field as the `csv` crate's writer writes it by default (`QuoteStyle::Necessary`,
@@ -499,7 +535,7 @@ fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&mu
                 let end = (start + CHUNK_ROWS).min(load.len());
                 let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
                 match (mode, form) {
-                    (Mode::Scan, _) => {}
+                    (Mode::Scan | Mode::Spill, _) => {}
                     (_, Form::Csv) => out.text.reserve((end - start) * 320),
                     (_, Form::Parquet) => out.cols = parquet_columns(&cols, end - start),
                 }
@@ -520,7 +556,7 @@ fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&mu
                     }
                     widen(&mut out.loads, p.abs());
                     widen(&mut out.speeds, w.abs());
-                    if matches!(mode, Mode::Scan) {
+                    if !mode.evaluates() {
                         continue;
                     }
                     let op = evaluate_row(mode, ev.as_mut(), &mut at_t, (p, w, t), &bad)?;
@@ -622,6 +658,8 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     let (mut input, len) = if parquet_in { (Box::new(Unseekable(io::BufReader::new(io::empty()))) as Box<dyn ReadSeek>, None) } else { open(&cmd.input, needs_ranges)? };
     let bar = progress(len);
     let level;
+    // The rows' numbers kept by the first pass for the second ([`spill`]) and the input's columns.
+    let mut spilled: Option<(io::BufReader<std::fs::File>, Columns)> = None;
     let mode = if full {
         Mode::Full(&joint)
     } else {
@@ -631,9 +669,24 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
             } else {
                 let mut reader = RecordReader::new(&mut input, &file);
                 let cols = read_header(&mut reader, &file)?;
-                let r = stream(&mut reader, &cols, &Mode::Scan, &file, form, &ProgressBar::hidden(), &mut |_: &mut [ChunkOut]| Ok(()))?;
-                input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
-                r
+                // Parse once: the second pass answers the numbers kept by this one (where no
+                // temporary file can be made, the second pass reads the input again).
+                let keep = if form == Form::Parquet && (0..cols.header.len()).all(|k| cols.is_number(k)) { tempfile::tempfile().ok() } else { None };
+                if let Some(tmp) = keep {
+                    let tmp_err = |e: io::Error| CliError::Invalid(format!("writing the sweep's temporary file: {e}"));
+                    let mut w = io::BufWriter::with_capacity(1 << 16, tmp);
+                    let r = stream(&mut reader, &cols, &Mode::Spill, &file, form, &bar, &mut |outs: &mut [ChunkOut]| {
+                        outs.iter().try_for_each(|o| spill::write(&mut w, o)).map_err(tmp_err)
+                    })?;
+                    let mut f = w.into_inner().map_err(|e| tmp_err(e.into_error()))?;
+                    f.rewind().map_err(tmp_err)?;
+                    spilled = Some((io::BufReader::with_capacity(1 << 16, f), cols));
+                    r
+                } else {
+                    let r = stream(&mut reader, &cols, &Mode::Scan, &file, form, &ProgressBar::hidden(), &mut |_: &mut [ChunkOut]| Ok(()))?;
+                    input.rewind_input().map_err(|source| CliError::Read { path: cmd.input.clone(), source })?;
+                    r
+                }
             };
             let fallback = |r: (f64, f64), f: (f64, f64)| if r.0.is_finite() { range_of([r.0, r.1].into_iter(), f) } else { f };
             (fallback(l, (1.0, 2.0)), fallback(s, (1e-3, 1.0)))
@@ -644,10 +697,10 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         Mode::Level { proto: &level, pool: Mutex::new(Vec::new()), said: AtomicBool::new(false), by_t: Temperatures::default() }
     };
     let mut reader = RecordReader::new(&mut input, &file);
-    let cols = if parquet_in {
-        parquet_input_columns(columnar::ParquetRows::open(&cmd.input, 1).map_err(CliError::Invalid)?.has_temperature)
-    } else {
-        read_header(&mut reader, &file)?
+    let (cols, mut spilled) = match spilled {
+        Some((f, cols)) => (cols, Some(f)),
+        None if parquet_in => (parquet_input_columns(columnar::ParquetRows::open(&cmd.input, 1).map_err(CliError::Invalid)?.has_temperature), None),
+        None => (read_header(&mut reader, &file)?, None),
     };
     // An input or model error inside the writer is kept here and returned as itself.
     let failure: Mutex<Option<CliError>> = Mutex::new(None);
@@ -657,7 +710,9 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         io::Error::other(msg)
     };
     let mut source = |mode: &Mode, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>| -> Result<()> {
-        if parquet_in {
+        if let Some(f) = spilled.as_mut() {
+            spill::stream(f, &cols, mode, &file, sink)
+        } else if parquet_in {
             stream_parquet(&cmd.input, mode, form, sink).map(|_| ())
         } else {
             stream(&mut reader, &cols, mode, &file, form, &bar, sink).map(|_| ())
@@ -667,24 +722,38 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         let path = cmd.output.as_deref().expect("output_form: Parquet goes to a file");
         let names: Vec<String> = cols.header.iter().cloned().chain(RESULT_COLUMNS.iter().map(|s| (*s).to_string())).collect();
         write_atomic_send(path, &inputs, |w| {
-            let mut pq = columnar::ParquetSink::new(w, &names, &parquet_columns(&cols, 0))?;
-            let mut write_err: Option<io::Error> = None;
-            let mut sink = |outs: &mut [ChunkOut]| -> Result<()> {
-                // Each chunk's columns move into the file's arrays (no copy of the numbers).
-                let blocks = outs.iter_mut().map(|o| std::mem::take(&mut o.cols));
-                pq.write_owned(blocks).map_err(|e| {
-                    let msg = e.to_string();
-                    write_err = Some(e);
-                    CliError::Invalid(msg)
-                })
-            };
-            let r = source(&mode, &mut sink);
-            bar.finish_and_clear();
-            if let Some(e) = write_err {
-                return Err(e);
-            }
-            r.map_err(keep)?;
-            pq.finish()
+            // The row groups are encoded and written on a thread of their own, fed a batch's
+            // columns at a time (at most WRITE_QUEUE batches queued: memory stays bounded), so
+            // that this thread only reads while the cores evaluate.
+            let kinds = parquet_columns(&cols, 0);
+            let failed = AtomicBool::new(false);
+            std::thread::scope(|s| {
+                let (tx, rx) = std::sync::mpsc::sync_channel::<Vec<Vec<Values>>>(WRITE_QUEUE);
+                let failed = &failed;
+                let writer = s.spawn(move || -> io::Result<()> {
+                    let mut pq = columnar::ParquetSink::new(w, &names, &kinds)?;
+                    for blocks in rx {
+                        pq.write_owned(blocks)?;
+                    }
+                    // A failed run leaves the temporary file unfinished (it is removed).
+                    if failed.load(Ordering::Relaxed) { Ok(()) } else { pq.finish() }
+                });
+                let r = {
+                    let mut sink = |outs: &mut [ChunkOut]| -> Result<()> {
+                        // Each chunk's columns move to the writer (no copy of the numbers).
+                        let blocks: Vec<Vec<Values>> = outs.iter_mut().map(|o| std::mem::take(&mut o.cols)).collect();
+                        tx.send(blocks).map_err(|_| CliError::Invalid("the Parquet writer stopped".into()))
+                    };
+                    source(&mode, &mut sink)
+                };
+                failed.store(r.is_err(), Ordering::Relaxed);
+                drop(tx);
+                bar.finish_and_clear();
+                let written = writer.join().unwrap_or_else(|_| Err(io::Error::other("the Parquet writer thread panicked")));
+                // The writer's own error first (it is why a send failed), then the input's.
+                written?;
+                r.map_err(keep)
+            })
         })
     } else {
         let fill = |w: &mut dyn Write| -> io::Result<()> {
