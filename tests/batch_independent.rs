@@ -597,7 +597,8 @@ fn auto_fidelity_random_scenes() {
     assert!(st.good >= 20, "{st:?}");
 }
 
-/// Around the chunking threshold (2·512) and beyond: the parallel path gives the scalar numbers.
+/// Around the chunking thresholds (2·512 at full, 8·512 at the other levels) and beyond: the
+/// parallel path gives the scalar numbers.
 #[test]
 fn joint_counts_around_the_chunking_threshold() {
     let _serial = serial();
@@ -607,8 +608,10 @@ fn joint_counts_around_the_chunking_threshold() {
         eprintln!("n = {n}: {st:?}");
         assert!(st.good >= 2, "n = {n}: {st:?}");
     }
-    let sc = Scene { n: 1025, fidelity: Fidelity::Boundary, per_joint: false, steps: 5, cold: Some(COLDEST), host: true, unreferenced: false, paper: false };
-    run_scene(5100, &sc);
+    for (k, n) in [1025usize, 4095, 4096, 4200].into_iter().enumerate() {
+        let sc = Scene { n, fidelity: Fidelity::Boundary, per_joint: false, steps: 4, cold: Some(COLDEST), host: true, unreferenced: false, paper: false };
+        run_scene(5100 + k as u64, &sc);
+    }
 }
 
 /// The paper's model beside the complete one: temperatures below its range are refused
@@ -875,7 +878,7 @@ fn rayon_allocations(passes: usize) -> usize {
 /// temperatures as before, or none given) and its joints' loads have been seen, torque,
 /// commit, step, step_with, commit_step and sliding_torque allocate nothing on the calling
 /// thread (n < 2·512), at every level, shared or per-joint sets, with inputs that change
-/// every call (new solves). On rayon's threads (n ≥ 2·512) the batch's code allocates
+/// every call (new solves). On rayon's threads (n ≥ 2·512 at full) the batch's code allocates
 /// nothing either: the count is at most rayon's own over as many parallel passes (two a
 /// call) and one more.
 #[test]

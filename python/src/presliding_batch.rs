@@ -293,6 +293,10 @@ impl NativePreslidingBatch {
         }
         let (with_t, with_h) = (sources[3].is_some(), sources[4].is_some());
         let mut out = if what == 1 { Vec::new() } else { vec![0.0; n] };
+        // A batch the library steps in parallel (two chunks or more at full, eight at the
+        // other levels): the copy and the step on the pool ([`crate::pool::install`]); a
+        // smaller one on this thread, as the library does.
+        let large = pinjoint::batch::step::parallel(n, self.batch.settings().fidelity);
         let Self { batch, buf } = self;
         let mut work = |parallel: bool| {
             for (b, src) in buf.iter_mut().zip(&sources) {
@@ -315,9 +319,6 @@ impl NativePreslidingBatch {
                 _ => batch.sliding_torque(inputs.load, inputs.angular_velocity, inputs.temperature, &mut out),
             }
         };
-        // A batch the library steps in parallel (two chunks or more): the copy and the step on
-        // the pool ([`crate::pool::install`]); a smaller one on this thread, as the library does.
-        let large = pinjoint::batch::step::parallel(n);
         let res = py.detach(|| crate::pool::run(large, || work(large)));
         res.map_err(batch_err)?;
         Ok((what != 1).then(|| out.into_pyarray(py)))

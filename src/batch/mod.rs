@@ -292,7 +292,7 @@ impl PreslidingBatch {
         // pool; a small batch's call from any other thread stays on it (no pool is woken,
         // and none is used: a process forked from one that used a pool has none of its
         // threads).
-        let parallel = step::parallel(n) || rayon::current_thread_index().is_some();
+        let parallel = step::parallel(n, models.settings().fidelity) || rayon::current_thread_index().is_some();
         models.assign(slots, |i| keys[i], parallel)?;
         self.own_temperatures = temperature.is_none();
         Ok(())
@@ -308,7 +308,7 @@ impl PreslidingBatch {
         }
         self.assign(inputs.temperature)?;
         let PreslidingBatch { joints, bounds, slots, models, .. } = self;
-        if !step::parallel(joints.len()) {
+        if !step::parallel(joints.len(), models.settings().fidelity) {
             // On the calling thread (no pool).
             return step::run(joints, bounds, slots, models, inputs, steps, action, out);
         }

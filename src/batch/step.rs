@@ -19,11 +19,16 @@ use rayon::prelude::*;
 /// three runs of four, equal in the fourth).
 pub const CHUNK: usize = 512;
 
-/// Whether a batch of `n` joints is stepped in parallel (two chunks or more), else on the
-/// calling thread.
+/// Whether a batch of `n` joints at `fidelity` is stepped in parallel, else on the calling
+/// thread: at full from two chunks on; at the other levels (a table answers in ~40 ns a
+/// joint) from eight, below which handing the call to the pool and joining its threads costs
+/// more than the second core gives. Measured on 2 cores, a reversing scene at the table level
+/// (examples of the bench's scenes): 2000 joints 42 ns a joint-step on the calling thread
+/// against 56 ns in parallel, 4000 joints 45 against 43, 8000 joints 41 against 34; at full,
+/// 2000 joints 917 against 520.
 #[inline]
-pub fn parallel(n: usize) -> bool {
-    n >= 2 * CHUNK
+pub fn parallel(n: usize, fidelity: crate::fidelity::Fidelity) -> bool {
+    n >= if fidelity == crate::fidelity::Fidelity::Full { 2 * CHUNK } else { 8 * CHUNK }
 }
 
 /// Each joint's last sliding torque and the inputs it was computed at, apart from the joints'
@@ -267,7 +272,8 @@ fn law_with(mut c: Chunk, bounds: &[f64], out: &mut [f64], inp: &Inputs, steps: 
 pub fn run(joints: &mut Joints, bounds: &mut Bounds, slots: &[u32], models: &Models, inp: &Inputs, steps: Option<&[f64]>, action: Action, out: &mut [f64]) -> Result<(), BatchError> {
     let n = joints.len();
     let angle = action != Action::Bound;
-    let err = if !parallel(n) {
+    let par = parallel(n, models.settings().fidelity);
+    let err = if !par {
         bounds_chunk(&mut bounds.keys, &mut bounds.values, slots, models, inp, steps, 0, angle)
     } else {
         bounds
@@ -287,7 +293,7 @@ pub fn run(joints: &mut Joints, bounds: &mut Bounds, slots: &[u32], models: &Mod
     let out_len = if action == Action::Commit { 0 } else { n };
     let out = &mut out[..out_len];
     let (law, states, unreferenced, inertia) = joints.parts_mut();
-    if !parallel(n) {
+    if !par {
         law_chunk(Chunk { law, states, unreferenced, inertia }, bounds, out, inp, steps, 0, action);
     } else {
         let inertia_of = |c: usize| inertia.map(|v| &v[c * CHUNK..((c + 1) * CHUNK).min(n)]);
