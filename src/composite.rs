@@ -105,7 +105,9 @@ pub fn smooth_max(a: f64, b: f64) -> f64 {
     let r = lo / hi;
     let r2 = r * r;
     let r4 = r2 * r2;
-    hi * (1.0 + r4 * r4).powf(0.125)
+    // The eighth root as three square roots (each correctly rounded and monotone): a tenth of
+    // powf's cost, within 2 ulp of it.
+    hi * (1.0 + r4 * r4).sqrt().sqrt().sqrt()
 }
 
 /// The quintic smoothstep t³(10 − 15t + 6t²) on [0, 1], 0 below, 1 above: C², monotone.
@@ -362,8 +364,8 @@ impl Complete {
     #[allow(clippy::too_many_arguments)]
     pub fn parts(&self, weight: f64, ln_sommerfeld: f64, ls: &LoadSharing, half_width: f64, load: f64, u: f64, line_contact: f64) -> Parts {
         let poiseuille_torque = if ln_sommerfeld.is_finite() && ls.fluid_fraction > 0.0 {
-            let (e, _) = self.journal.eccentricity(ln_sommerfeld - ls.fluid_fraction.ln());
-            0.5 * self.clearance * e * ls.fluid_fraction * load * self.journal.attitude_angle(e).sin()
+            let (e, phi) = self.journal.eccentricity_and_attitude(ln_sommerfeld - ls.fluid_fraction.ln());
+            0.5 * self.clearance * e * ls.fluid_fraction * load * phi.sin()
         } else {
             0.0
         };

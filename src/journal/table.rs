@@ -168,7 +168,27 @@ impl JournalTable {
     /// line of centres; φ → its ε = 0 limit below the first node (held), φ → 0 as ε → 1
     /// (exponential in logit ε beyond the last node, C¹ there).
     pub fn attitude_angle(&self, eps: f64) -> f64 {
-        let y = logit(eps.clamp(0.0, 1.0));
+        self.attitude_at_logit(logit(eps.clamp(0.0, 1.0)))
+    }
+
+    /// ε and φ(ε) at S = e^`ln_s`: [`JournalTable::eccentricity`] and
+    /// [`JournalTable::attitude_angle`] of it, φ read at the table's logit of ε directly (not
+    /// at the logit of ε formed again: equal to rounding), for the pressure-flow torque of
+    /// every evaluation.
+    #[inline]
+    pub fn eccentricity_and_attitude(&self, ln_s: f64) -> (f64, f64) {
+        let (_, x_max) = self.logit_of_ln_s.range();
+        let y = if ln_s > x_max { f64::NAN } else { self.logit_of_ln_s.eval(ln_s).0 };
+        if y.is_nan() {
+            let (e, _) = self.eccentricity(ln_s);
+            return (e, self.attitude_angle(e));
+        }
+        (logistic(y), self.attitude_at_logit(y))
+    }
+
+    /// φ at the logit y of ε (module doc of [`JournalTable::attitude_angle`]).
+    #[inline]
+    fn attitude_at_logit(&self, y: f64) -> f64 {
         let (lo, hi) = self.attitude_of_logit.range();
         let (first, (last, slope)) = self.attitude_of_logit.ends();
         if y <= lo {
@@ -423,6 +443,26 @@ mod tests {
     proptest! {
         /// ε(S) strictly decreasing, in (0, 1), its derivative matching a finite difference,
         /// and S(ε) its inverse.
+        #[test]
+        fn eccentricity_and_attitude_are_the_two_lookups(ln_s in prop_oneof![-40.0f64..40.0, Just(f64::NEG_INFINITY), Just(f64::INFINITY)]) {
+            let t = JournalTable::shared(1.0606).unwrap();
+            let (e, phi) = t.eccentricity_and_attitude(ln_s);
+            let (e0, _) = t.eccentricity(ln_s);
+            prop_assert_eq!(e.to_bits(), e0.to_bits());
+            // φ read at the table's logit: the logit of ε formed again without cancellation
+            // (1 − ε from film_ratio) gives it to rounding; formed from ε itself
+            // (attitude_angle), it loses ~1e-16/(1 − ε) near ε = 1.
+            let (rho, _) = t.film_ratio(ln_s);
+            let phi0 = if e0 > 0.0 && rho > 0.0 { t.attitude_at_logit(e0.ln() - rho.ln()) } else { t.attitude_angle(e0) };
+            prop_assert!((phi - phi0).abs() <= 1e-12 * phi0.abs() + 1e-300, "{} {} at {}", phi, phi0, ln_s);
+            let loose = t.attitude_angle(e0);
+            // (Where ε rounds to 1 the logit of ε is +∞ and that φ is 0: nothing to compare.)
+            if e0 < 1.0 {
+                let cancellation = if rho > 0.0 { 1e-15 / rho } else { 0.0 };
+                prop_assert!((phi - loose).abs() <= (1e-12 + cancellation) * loose.abs() + 1e-300, "{} {} at {}", phi, loose, ln_s);
+            }
+        }
+
         #[test]
         fn eccentricity_lookup_properties(ln_s in -30.0f64..30.0) {
             let t = JournalTable::shared(1.0606).unwrap();
