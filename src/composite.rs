@@ -269,7 +269,7 @@ impl Complete {
         let (rho, _) = self.journal.film_ratio(ln_sommerfeld);
         let ln_h = self.ln_clearance + rho.ln();
         let ln_h = match inlet {
-            Some(st) => crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma).0,
+            Some(st) => crate::film::starvation::ln_starved(ln_h, st.ln_q, st.gamma).0,
             None => ln_h,
         };
         self.ln_flattening_unit + ln_load - ln_h
@@ -307,7 +307,7 @@ impl Complete {
             let (ln_h, dln_h) = (self.ln_clearance + rho.ln(), drho / rho);
             let (ln_h, dln_h) = match inlet {
                 Some(st) => {
-                    let (l, w) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
+                    let (l, w) = crate::film::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
                     (l, w * dln_h)
                 }
                 None => (ln_h, dln_h),
@@ -442,7 +442,7 @@ mod tests {
     #[test]
     fn the_elasticity_ratio_is_the_flattening_over_the_rigid_film() {
         let p = Params::default();
-        let eta = crate::viscosity::at_temperature(&p.lubricant).viscosity;
+        let eta = crate::rheology::viscosity::at_temperature(&p.lubricant).viscosity;
         let c = Complete::new(&p, eta).unwrap();
         let (r_red, e_eff) = (crate::contact::reduced_radius(&p.geometry), crate::contact::effective_modulus(&p.materials));
         for (load, ln_s) in [(50.0, 0.5), (2e3, -3.0), (20e3, -8.0)] {

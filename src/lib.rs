@@ -68,18 +68,6 @@ pub mod batch;
 // Scenes that put the joint in a mechanism:
 pub mod scene;
 
-// The modules' old paths, kept inside the crate for the files being edited in parallel that
-// name them in function bodies (`crate::starvation::ln_starved` in `composite.rs` and
-// `load_sharing/solve.rs`, `crate::fast_math::sin_cos` and `crate::solve_start::StartCut` in
-// `rig/`): internal aliases, to be replaced by the group paths once those edits are merged.
-pub(crate) use film::starvation;
-pub(crate) use load_sharing::start as solve_start;
-pub(crate) use numerics::fast_math;
-#[cfg(test)]
-pub(crate) use numerics::newton;
-#[cfg(test)]
-pub(crate) use rheology::viscosity;
-
 /// Numbers in messages in the short round-trip form (the `pinjoint-numfmt` crate).
 pub use numfmt as fmt;
 pub use joint::{Joint, ModelError, OperatingPoint, Regime};

@@ -15,7 +15,7 @@
 //! Convergence: Newton's method safeguarded by a bracket (`numerics::newton`) stops when a
 //! step is below `y_tol(y) = 1e-13 + 4ε|y|`. Its first evaluation also gives r″, and when that
 //! first Newton step is at most [`THIRD_ORDER_ACCEPT`] (a start from the start table,
-//! [`crate::solve_start`], in the boundary and mixed regimes) Halley's step ends the solve
+//! [`crate::load_sharing::start`], in the boundary and mixed regimes) Halley's step ends the solve
 //! after that one evaluation with an error below 1e-14. Since ∂ln x1/∂y = x2 ≤ 1, ∂ln x2/∂y = −x1 and
 //! |∂ln h_c/∂y| ≤ 1/2 + 3/4·... is O(1), the shares and h_c are then exact to ~1e-12
 //! relative, and μ (a smooth function of them) likewise; `tests/solver.rs` checks
@@ -101,7 +101,7 @@ pub fn solve(film: Option<&FilmGroups>, asp: &AsperityGroups, s: &Surface, guess
 }
 
 /// Starved-inlet correction for [`solve_starved`]: `ln_q = ln(1/h_oil)` and the exponent γs
-/// of [`crate::starvation::ln_starved`].
+/// of [`crate::film::starvation::ln_starved`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StarvedInlet {
     /// ln(1/h_oil), h_oil being the oil-supply film thickness (m).
@@ -111,7 +111,7 @@ pub struct StarvedInlet {
 }
 
 /// [`solve`] with the film of eq. 13 replaced by its starved form
-/// `h^−γs = h_13^−γs + h_oil^−γs` when `starved` is given (an extension, [`crate::starvation`]).
+/// `h^−γs = h_13^−γs + h_oil^−γs` when `starved` is given (an extension, [`crate::film::starvation`]).
 /// `None` is exactly [`solve`]'s path.
 ///
 /// The residual stays strictly increasing in y (the starved film is an increasing function of
@@ -174,7 +174,7 @@ pub fn solve_composite(
             None => f64::INFINITY,
         };
         let ln_h = match starved {
-            Some(st) => crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma).0,
+            Some(st) => crate::film::starvation::ln_starved(ln_h, st.ln_q, st.gamma).0,
             None => ln_h,
         };
         if ln_h.is_finite() {
@@ -358,7 +358,7 @@ impl Point {
         if let Some(j) = journal {
             // The line contact's film held inside the clearance (crate::composite); its second
             // derivative by the chain rule (d²l/dln h² = −k·w·(1 − w)).
-            let (l, wc) = crate::starvation::ln_starved(ln_h, -j.ln_clearance, CLEARANCE_CAP_EXPONENT);
+            let (l, wc) = crate::film::starvation::ln_starved(ln_h, -j.ln_clearance, CLEARANCE_CAP_EXPONENT);
             ln_h = l;
             d2ln_h = wc * d2ln_h - CLEARANCE_CAP_EXPONENT * wc * (1.0 - wc) * dln_h * dln_h;
             dln_h *= wc;
@@ -369,7 +369,7 @@ impl Point {
                 // 1/a and 1/b, whose weight on a is a's share of the derivative.
                 d2ln_h = f64::NAN;
                 let (ln_hj, dj) = j.ln_film(sh.ln_x1);
-                let (l, wj) = crate::starvation::ln_starved(-(j.weight.ln() + ln_hj), ln_h, SMOOTH_MAX_EXPONENT);
+                let (l, wj) = crate::film::starvation::ln_starved(-(j.weight.ln() + ln_hj), ln_h, SMOOTH_MAX_EXPONENT);
                 ln_h = -l;
                 dln_h = (1.0 - wj) * dln_h + wj * sh.x2 * dj;
                 // Above the onset the line contact's film no longer follows the load (P* is
@@ -380,7 +380,7 @@ impl Point {
         }
         // The starved inlet starves the (composite) film.
         if let Some(st) = starved {
-            let (l, ws) = crate::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
+            let (l, ws) = crate::film::starvation::ln_starved(ln_h, st.ln_q, st.gamma);
             ln_h = l;
             // The second derivative by the chain rule (d²l/dln h² = −γ·w·(1 − w)) for the
             // complete model, whose first step may be third order; the paper's starved inlet
@@ -443,7 +443,7 @@ struct Shares {
 impl Shares {
     fn new(y: f64) -> Self {
         let e = exp(-y.abs());
-        let l = crate::fast_math::ln_1p_unit(e); // absolute accuracy ε suffices for logarithms (see film.rs)
+        let l = crate::numerics::fast_math::ln_1p_unit(e); // absolute accuracy ε suffices for logarithms (see film.rs)
         let (big, small) = (1.0 / (1.0 + e), e / (1.0 + e));
         if y >= 0.0 {
             Shares { x1: big, x2: small, ln_x1: -l, ln_x2: -y - l }
@@ -504,13 +504,13 @@ mod tests {
         for d in [3e-1, 3e-2, -1e-2, 1e-3, -1e-4] {
             let x0 = root + d;
             let (r, dr) = f(x0);
-            let seed = crate::newton::Seed { value: r, slope: dr, curvature: x0.exp() / (2.0 * dr) };
+            let seed = crate::numerics::newton::Seed { value: r, slope: dr, curvature: x0.exp() / (2.0 * dr) };
             let (with, n_with) = newton_increasing_seeded(f, x0, Some(seed), y_tol);
             let (without, n_without) = newton_increasing(f, x0, y_tol);
             assert!((with - root).abs() < 1e-14 && (without - root).abs() < 1e-14, "{d}: {with} {without} vs {root}");
             assert!(n_with <= n_without, "{d}: {n_with} vs {n_without} evaluations");
             // Without a curvature the seeded iteration is newton_increasing's, bit for bit.
-            let plain = crate::newton::Seed { curvature: f64::NAN, ..seed };
+            let plain = crate::numerics::newton::Seed { curvature: f64::NAN, ..seed };
             let (same, n_same) = newton_increasing_seeded(f, x0, Some(plain), y_tol);
             assert_eq!((same.to_bits(), n_same), (without.to_bits(), n_without));
         }

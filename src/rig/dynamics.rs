@@ -26,7 +26,7 @@ use super::excitation::Excitation;
 use super::params::RigParams;
 use crate::fidelity::{Evaluation, Evaluator, Source};
 use crate::joint::{Joint, LoadTerms, ModelError};
-use crate::solve_start::StartCut;
+use crate::load_sharing::start::StartCut;
 use super::linear_loop::Loop;
 use serde::{Deserialize, Serialize};
 use std::cell::{Cell, RefCell};

@@ -38,7 +38,7 @@ impl SineCommand {
     /// The commanded angle (rad) and angular velocity (rad/s) at time `t` (s).
     pub fn at(&self, t: f64) -> (f64, f64) {
         let w = TAU * self.frequency;
-        let (s, c) = crate::fast_math::sin_cos(w * t);
+        let (s, c) = crate::numerics::fast_math::sin_cos(w * t);
         (self.amplitude * s, self.amplitude * w * c)
     }
 }

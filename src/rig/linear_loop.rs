@@ -134,11 +134,11 @@ impl Propagator {
     #[inline]
     pub fn modal(&self, tau: f64) -> Modal {
         self.per_mode(|l| {
-            let m = crate::fast_math::exp(l.re * tau);
+            let m = crate::numerics::fast_math::exp(l.re * tau);
             if l.im == 0.0 {
                 Complex::new(m, 0.0)
             } else {
-                let (s, c) = crate::fast_math::sin_cos(l.im * tau);
+                let (s, c) = crate::numerics::fast_math::sin_cos(l.im * tau);
                 Complex::new(m * c, m * s)
             }
         }, |x| x.conj())

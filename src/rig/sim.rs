@@ -46,7 +46,7 @@ use super::params::Formulation;
 use super::RigError;
 use crate::fidelity::{Envelope, Evaluator, Fidelity, Level};
 use crate::joint::Joint;
-use crate::solve_start::StartCut;
+use crate::load_sharing::start::StartCut;
 use super::linear_loop::Loop;
 use std::cell::RefCell;
 use crate::fmt::Num;

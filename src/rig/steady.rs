@@ -107,7 +107,7 @@ impl Steady {
     /// way), so the right-hand side needs one sin/cos an evaluation instead of two.
     pub fn at_with_command(&self, t: f64) -> (State, State, (f64, f64)) {
         let w = self.omega;
-        let (s, c) = crate::fast_math::sin_cos(w * t);
+        let (s, c) = crate::numerics::fast_math::sin_cos(w * t);
         let a = self.command_amplitude;
         let command = (a * s, a * w * c);
         // Im((iΩ)^k·(ar + i ai)·e^{iΩt}) for k = 0..3.
