@@ -261,3 +261,31 @@ pub fn refuse_files(dir: &Path, names: &[&str], input: Option<&PathBuf>) -> Resu
     let outs: Vec<&Path> = outs.iter().map(PathBuf::as_path).collect();
     refuse_inputs(&outs, &inputs_of(input))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every byte reaches the file in order through [`EarlyWriteback`], whatever the sizes of
+    /// the writes against its period; the helper starts once the period is passed (not before)
+    /// and `finish` waits for it.
+    #[test]
+    fn early_writeback_keeps_every_byte() {
+        for (every, piece, pieces) in [(1000u64, 7usize, 3usize), (1000, 100, 50), (1000, 1000, 4), (64, 5000, 3), (1 << 20, 100, 20)] {
+            let mut file = tempfile::tempfile().unwrap();
+            let want: Vec<u8> = (0..piece * pieces).map(|i| (i * 31 % 251) as u8).collect();
+            let mut early = EarlyWriteback::new(&mut file, every);
+            for p in want.chunks(piece) {
+                early.write_all(p).unwrap();
+            }
+            let started = early.helper.is_some();
+            assert_eq!(started, (piece * pieces) as u64 >= every, "every {every}, {pieces} writes of {piece}");
+            early.finish().unwrap();
+            let mut got = Vec::new();
+            use std::io::{Read, Seek};
+            file.rewind().unwrap();
+            file.read_to_end(&mut got).unwrap();
+            assert_eq!(got, want);
+        }
+    }
+}
