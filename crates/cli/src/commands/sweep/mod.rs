@@ -1,7 +1,8 @@
 //! `pinjoint sweep`: evaluate every row of a CSV file, in parallel, order preserved,
 //! streaming: read, evaluate and write in bounded batches (memory independent of the
-//! number of rows). Each batch is parsed, evaluated and formatted in chunks on every core
-//! while the previous batch is written and the next one read.
+//! number of rows). The batches are parsed, evaluated and formatted in chunks on every core,
+//! the chunks of two batches queued at once (no core waits at a batch's end), while this
+//! thread writes the batch before and reads the batch after.
 //!
 //! This folder holds the command (arguments, evaluation and output, in this file),
 //! [`input`], which reads the CSV records in bounded batches, and `spill`, which keeps the
