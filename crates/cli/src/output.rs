@@ -145,7 +145,7 @@ pub fn write_atomic_send(path: &Path, inputs: &[&Path], fill: impl FnOnce(&mut (
 }
 
 /// Bytes written between two early writebacks of a large output ([`EarlyWriteback`]).
-const WRITEBACK_BYTES: u64 = 32 << 20;
+const WRITEBACK_BYTES: u64 = 8 << 20;
 
 /// A file being written that, every `every` bytes, has a helper thread push what was written
 /// so far to the disk (`fdatasync` on a duplicate of its handle) while the command goes on:
