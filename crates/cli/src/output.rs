@@ -131,13 +131,86 @@ pub fn write_atomic_send(path: &Path, inputs: &[&Path], fill: impl FnOnce(&mut (
         tmp.as_file().set_permissions(old.permissions()).map_err(werr)?;
     }
     {
-        let mut w = BufWriter::new(tmp.as_file_mut());
-        fill(&mut w).map_err(werr)?;
-        w.flush().map_err(werr)?;
+        let mut early = EarlyWriteback::new(tmp.as_file_mut(), WRITEBACK_BYTES);
+        {
+            let mut w = BufWriter::new(&mut early);
+            fill(&mut w).map_err(werr)?;
+            w.flush().map_err(werr)?;
+        }
+        early.finish().map_err(werr)?;
     }
     tmp.as_file().sync_all().map_err(werr)?;
     tmp.persist(&target).map_err(|e| werr(e.error))?;
     Ok(())
+}
+
+/// Bytes written between two early writebacks of a large output ([`EarlyWriteback`]).
+const WRITEBACK_BYTES: u64 = 8 << 20;
+
+/// A file being written that, every `every` bytes, has a helper thread push what was written
+/// so far to the disk (`fdatasync` on a duplicate of its handle) while the command goes on:
+/// the final `sync_all` of [`write_atomic`] then waits for the last few MiB only, not for a
+/// whole large output (a million-row sweep's 340 MB took 0.15-0.2 s alone). A writeback
+/// still running is not waited for: the next one is skipped. An error of the helper's is
+/// returned by [`EarlyWriteback::finish`] (it may be the only report of a failed write).
+struct EarlyWriteback<'a> {
+    file: &'a mut fs::File,
+    every: u64,
+    /// Bytes written since the last writeback was asked for.
+    since: u64,
+    helper: Option<(std::sync::mpsc::SyncSender<()>, std::thread::JoinHandle<io::Result<()>>)>,
+}
+
+impl<'a> EarlyWriteback<'a> {
+    fn new(file: &'a mut fs::File, every: u64) -> Self {
+        Self { file, every, since: 0, helper: None }
+    }
+
+    /// Ask the helper (started the first time) for a writeback, unless one is running.
+    fn ask(&mut self) {
+        if self.helper.is_none() {
+            // Without a duplicate handle or a thread, the final sync does it all (as before).
+            let Ok(dup) = self.file.try_clone() else { return };
+            let (tx, rx) = std::sync::mpsc::sync_channel::<()>(1);
+            let spawned = std::thread::Builder::new().name("writeback".into()).spawn(move || -> io::Result<()> {
+                for () in rx {
+                    dup.sync_data()?;
+                }
+                Ok(())
+            });
+            let Ok(handle) = spawned else { return };
+            self.helper = Some((tx, handle));
+        }
+        if let Some((tx, _)) = &self.helper {
+            let _ = tx.try_send(());
+        }
+    }
+
+    /// Stop the helper, waiting for its writeback; its error if it had one.
+    fn finish(mut self) -> io::Result<()> {
+        match self.helper.take() {
+            Some((tx, handle)) => {
+                drop(tx);
+                handle.join().unwrap_or_else(|_| Err(io::Error::other("the writeback thread panicked")))
+            }
+            None => Ok(()),
+        }
+    }
+}
+
+impl Write for EarlyWriteback<'_> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        let n = self.file.write(buf)?;
+        self.since += n as u64;
+        if self.since >= self.every {
+            self.since = 0;
+            self.ask();
+        }
+        Ok(n)
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        self.file.flush()
+    }
 }
 
 /// Write a whole text file by the rules of [`write_atomic`].
@@ -187,4 +260,32 @@ pub fn refuse_files(dir: &Path, names: &[&str], input: Option<&PathBuf>) -> Resu
     let outs: Vec<PathBuf> = names.iter().map(|n| dir.join(n)).collect();
     let outs: Vec<&Path> = outs.iter().map(PathBuf::as_path).collect();
     refuse_inputs(&outs, &inputs_of(input))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every byte reaches the file in order through [`EarlyWriteback`], whatever the sizes of
+    /// the writes against its period; the helper starts once the period is passed (not before)
+    /// and `finish` waits for it.
+    #[test]
+    fn early_writeback_keeps_every_byte() {
+        for (every, piece, pieces) in [(1000u64, 7usize, 3usize), (1000, 100, 50), (1000, 1000, 4), (64, 5000, 3), (1 << 20, 100, 20)] {
+            let mut file = tempfile::tempfile().unwrap();
+            let want: Vec<u8> = (0..piece * pieces).map(|i| (i * 31 % 251) as u8).collect();
+            let mut early = EarlyWriteback::new(&mut file, every);
+            for p in want.chunks(piece) {
+                early.write_all(p).unwrap();
+            }
+            let started = early.helper.is_some();
+            assert_eq!(started, (piece * pieces) as u64 >= every, "every {every}, {pieces} writes of {piece}");
+            early.finish().unwrap();
+            let mut got = Vec::new();
+            use std::io::{Read, Seek};
+            file.rewind().unwrap();
+            file.read_to_end(&mut got).unwrap();
+            assert_eq!(got, want);
+        }
+    }
 }

@@ -1,7 +1,8 @@
 //! `pinjoint sweep`: evaluate every row of a CSV file, in parallel, order preserved,
 //! streaming: read, evaluate and write in bounded batches (memory independent of the
-//! number of rows). Each batch is parsed, evaluated and formatted in chunks on every core
-//! while the previous batch is written and the next one read.
+//! number of rows). The batches are parsed, evaluated and formatted in chunks on every core,
+//! the chunks of two batches queued at once (no core waits at a batch's end), while this
+//! thread writes the batch before and reads the batch after.
 //!
 //! This folder holds the command (arguments, evaluation and output, in this file),
 //! [`input`], which reads the CSV records in bounded batches, and `spill`, which keeps the
@@ -26,7 +27,8 @@ use rayon::prelude::*;
 use std::io::{self, BufRead, Seek, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Mutex;
+use std::collections::VecDeque;
+use std::sync::{Arc, Mutex};
 
 #[derive(Args, Debug)]
 #[command(
@@ -87,6 +89,10 @@ pub const BATCH_ROWS: usize = 16_384;
 /// Batches of Parquet columns queued for the writer thread at most (each about
 /// [`BATCH_ROWS`] × 8 bytes × the columns).
 const WRITE_QUEUE: usize = 2;
+/// Bytes of CSV text reserved for a row's result columns (about 300 on average at every
+/// level, at most 331 in a million random rows at full): a chunk's text is not grown (and
+/// copied) as it is written.
+const RESULT_TEXT_BYTES: usize = 352;
 /// Rows one task parses, evaluates and formats.
 const CHUNK_ROWS: usize = 512;
 
@@ -284,7 +290,7 @@ fn chunk(batch: &Batch, recs: &[self::input::Record], cols: &Columns, mode: &Mod
             out.cols = (0..width).map(|_| Values::Number(Vec::with_capacity(recs.len()))).collect();
             out.lines.reserve(recs.len());
         }
-        (_, Form::Csv) => out.text.reserve(recs.len() * 320),
+        (_, Form::Csv) => out.text.reserve(recs.iter().map(|r| r.end - r.start + 1).sum::<usize>() + recs.len() * RESULT_TEXT_BYTES),
         (_, Form::Parquet) => out.cols = parquet_columns(cols, recs.len()),
     }
     let mut ev = take_evaluator(mode);
@@ -403,15 +409,28 @@ fn push_field(out: &mut Vec<u8>, f: &[u8]) {
     out.push(b'"');
 }
 
-/// Every chunk of a batch on every core; the first error in input order wins.
-fn batch_outputs(batch: &Batch, cols: &Columns, mode: &Mode, file: &str, form: Form) -> Result<Vec<ChunkOut>> {
-    let outs: Vec<Result<ChunkOut>> = batch.records.par_chunks(CHUNK_ROWS).map(|recs| chunk(batch, recs, cols, mode, file, form)).collect();
-    outs.into_iter().collect()
+/// Batches of the input being answered at once: while the cores finish one, the next one's
+/// chunks are already queued behind it, so no core waits at a batch's end for the slowest
+/// chunk (the full solve's cost varies from row to row), for the thread that writes the
+/// batch before or for the one that reads the batch after.
+const IN_FLIGHT: usize = 2;
+
+/// A batch whose chunks are being answered on the pool.
+struct InFlight {
+    /// The batch's records (shared with its chunks' tasks; back to this thread at the end).
+    batch: Arc<Batch>,
+    /// Each chunk's output, as its task reports it.
+    outs: Vec<Option<Result<ChunkOut>>>,
+    /// Chunks not yet reported.
+    left: usize,
 }
 
 /// Stream the input through `mode`: every batch read, answered on every core and handed to
-/// `sink` in input order; while the cores work on one batch, this thread writes the one
-/// before and reads the one after. Returns the ranges of positive load and |speed| seen.
+/// `sink` in input order. The reading and writing stay on this thread, the chunks of the
+/// batches go to the pool as one continuous queue ([`IN_FLIGHT`] batches in it at most, so
+/// memory stays bounded): while the cores answer, this thread writes the batch before and
+/// reads the batch after. The first error in input order wins. Returns the ranges of
+/// positive load and |speed| seen.
 fn stream<R: BufRead>(
     reader: &mut RecordReader<R>,
     cols: &Columns,
@@ -422,33 +441,82 @@ fn stream<R: BufRead>(
     sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>,
 ) -> Result<((f64, f64), (f64, f64))> {
     let (mut loads, mut speeds) = (EMPTY_RANGE, EMPTY_RANGE);
-    let (mut current, mut next) = (Batch::default(), Batch::default());
-    let mut more = reader.fill(&mut current, BATCH_ROWS)?;
-    let mut done: Vec<ChunkOut> = Vec::new();
-    while !current.records.is_empty() {
-        bar.set_position(reader.consumed);
-        let (written, read, outs) = std::thread::scope(|s| {
-            let work = s.spawn(|| batch_outputs(&current, cols, mode, file, form));
-            let written = sink(&mut done);
-            let read = if more && written.is_ok() {
-                reader.fill(&mut next, BATCH_ROWS)
-            } else {
-                next.clear();
-                Ok(false)
-            };
-            let outs = work.join().unwrap_or_else(|_| Err(CliError::Invalid("a worker thread panicked".into())));
-            (written, read, outs)
-        });
-        written?;
-        done = outs?;
-        for o in &done {
-            (loads.0, loads.1) = (loads.0.min(o.loads.0), loads.1.max(o.loads.1));
-            (speeds.0, speeds.1) = (speeds.0.min(o.speeds.0), speeds.1.max(o.speeds.1));
+    // Set on an error: the chunks still queued are then skipped.
+    let stop = &AtomicBool::new(false);
+    let (tx, rx) = std::sync::mpsc::channel::<(u64, usize, Result<ChunkOut>)>();
+    rayon::in_place_scope_fifo(|s| {
+        let r = (|| -> Result<()> {
+            let mut flight: VecDeque<InFlight> = VecDeque::with_capacity(IN_FLIGHT);
+            // The number of the batch at the queue's front (each chunk reports its batch's number).
+            let mut front_id: u64 = 0;
+            let mut spare = Batch::default();
+            let mut more = true;
+            // A read error waits for the batches before it: a bad row there is reported first.
+            let mut read_err = None;
+            loop {
+                if more && flight.len() < IN_FLIGHT {
+                    let mut batch = std::mem::take(&mut spare);
+                    more = match reader.fill(&mut batch, BATCH_ROWS) {
+                        Ok(more) => more,
+                        Err(e) => {
+                            read_err = Some(e);
+                            batch.clear();
+                            false
+                        }
+                    };
+                    bar.set_position(reader.consumed);
+                    if batch.records.is_empty() {
+                        continue;
+                    }
+                    let id = front_id + flight.len() as u64;
+                    let batch = Arc::new(batch);
+                    let n = batch.records.len().div_ceil(CHUNK_ROWS);
+                    for c in 0..n {
+                        let (batch, tx) = (Arc::clone(&batch), tx.clone());
+                        s.spawn_fifo(move |_| {
+                            let out = if stop.load(Ordering::Relaxed) {
+                                Err(CliError::Invalid("skipped after an error".into()))
+                            } else {
+                                let recs = &batch.records[c * CHUNK_ROWS..((c + 1) * CHUNK_ROWS).min(batch.records.len())];
+                                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| chunk(&batch, recs, cols, mode, file, form)))
+                                    .unwrap_or_else(|_| Err(CliError::Invalid("a worker thread panicked".into())))
+                            };
+                            // The batch goes back to the reading thread once every chunk is done.
+                            drop(batch);
+                            let _ = tx.send((id, c, out));
+                        });
+                    }
+                    flight.push_back(InFlight { batch, outs: (0..n).map(|_| None).collect(), left: n });
+                    continue;
+                }
+                if flight.is_empty() {
+                    return read_err.map_or(Ok(()), Err);
+                }
+                while flight[0].left > 0 {
+                    let (id, c, out) = rx.recv().map_err(|_| CliError::Invalid("the sweep's workers stopped".into()))?;
+                    let f = &mut flight[(id - front_id) as usize];
+                    f.outs[c] = Some(out);
+                    f.left -= 1;
+                }
+                let done = flight.pop_front().expect("the queue is not empty");
+                front_id += 1;
+                let mut outs: Vec<ChunkOut> = done.outs.into_iter().map(|o| o.expect("every chunk reported")).collect::<Result<_>>()?;
+                for o in &outs {
+                    (loads.0, loads.1) = (loads.0.min(o.loads.0), loads.1.max(o.loads.1));
+                    (speeds.0, speeds.1) = (speeds.0.min(o.speeds.0), speeds.1.max(o.speeds.1));
+                }
+                sink(&mut outs)?;
+                // Every task has dropped its share before reporting: the batch's memory is reused.
+                if let Ok(b) = Arc::try_unwrap(done.batch) {
+                    spare = b;
+                }
+            }
+        })();
+        if r.is_err() {
+            stop.store(true, Ordering::Relaxed);
         }
-        more = read?;
-        std::mem::swap(&mut current, &mut next);
-    }
-    sink(&mut done)?;
+        r
+    })?;
     Ok((loads, speeds))
 }
 
@@ -536,7 +604,7 @@ fn stream_parquet(path: &Path, mode: &Mode, form: Form, sink: &mut dyn FnMut(&mu
                 let mut out = ChunkOut { loads: EMPTY_RANGE, speeds: EMPTY_RANGE, ..Default::default() };
                 match (mode, form) {
                     (Mode::Scan | Mode::Spill, _) => {}
-                    (_, Form::Csv) => out.text.reserve((end - start) * 320),
+                    (_, Form::Csv) => out.text.reserve((end - start) * (3 * 25 + RESULT_TEXT_BYTES)),
                     (_, Form::Parquet) => out.cols = parquet_columns(&cols, end - start),
                 }
                 let mut ev = take_evaluator(mode);
