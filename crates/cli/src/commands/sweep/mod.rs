@@ -744,7 +744,7 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
                     let tmp_err = |e: io::Error| CliError::Invalid(format!("writing the sweep's temporary file: {e}"));
                     let mut w = io::BufWriter::with_capacity(1 << 16, tmp);
                     let r = stream(&mut reader, &cols, &Mode::Spill, &file, form, &bar, &mut |outs: &mut [ChunkOut]| {
-                        outs.iter().try_for_each(|o| spill::write(&mut w, o)).map_err(tmp_err)
+                        outs.iter().try_for_each(|o| spill::write(&mut w, &o.cols, &o.lines)).map_err(tmp_err)
                     })?;
                     let mut f = w.into_inner().map_err(|e| tmp_err(e.into_error()))?;
                     f.rewind().map_err(tmp_err)?;
@@ -779,7 +779,7 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
     };
     let mut source = |mode: &Mode, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>| -> Result<()> {
         if let Some(f) = spilled.as_mut() {
-            spill::stream(f, &cols, mode, &file, sink)
+            stream_spilled(f, &cols, mode, &file, sink)
         } else if parquet_in {
             stream_parquet(&cmd.input, mode, form, sink).map(|_| ())
         } else {
@@ -856,4 +856,44 @@ pub fn run(cmd: &SweepCmd) -> Result<()> {
         Some(e) => Err(e),
         None => written,
     }
+}
+
+/// The second pass of a spilled sweep ([`spill`]): the rows kept in `spill` answered through `mode`, a batch of
+/// [`BATCH_ROWS`] at a time on every core (while this thread reads the next batch), handed to
+/// `sink` in input order as Parquet columns. An error names the row's line in `file`, as the
+/// first pass would.
+fn stream_spilled(spill: &mut (impl io::Read + Send), cols: &Columns, mode: &Mode, file: &str, sink: &mut dyn FnMut(&mut [ChunkOut]) -> Result<()>) -> Result<()> {
+    let width = cols.header.len();
+    let tmp_err = |e: io::Error| CliError::Invalid(format!("reading the sweep's temporary file: {e}"));
+    let mut buf = Vec::new();
+    let mut current = spill::read_batch(spill, width, BATCH_ROWS, CHUNK_ROWS, &mut buf).map_err(tmp_err)?;
+    while !current.is_empty() {
+        let (outs, next) = std::thread::scope(|s| {
+            let work = s.spawn(|| current.par_iter().map(|c| answer_spilled(c, cols, mode, file)).collect::<Vec<Result<ChunkOut>>>());
+            let next = spill::read_batch(spill, width, BATCH_ROWS, CHUNK_ROWS, &mut buf);
+            (work.join(), next)
+        });
+        let outs = outs.unwrap_or_else(|_| vec![Err(CliError::Invalid("a worker thread panicked".into()))]);
+        let mut outs: Vec<ChunkOut> = outs.into_iter().collect::<Result<_>>()?;
+        sink(&mut outs)?;
+        current = next.map_err(tmp_err)?;
+    }
+    Ok(())
+}
+
+/// One chunk's rows answered: the input's numbers then the result columns.
+fn answer_spilled(c: &spill::Chunk, cols: &Columns, mode: &Mode, file: &str) -> Result<ChunkOut> {
+    let width = cols.header.len();
+    let mut out = ChunkOut { cols: parquet_columns(cols, c.lines.len()), ..Default::default() };
+    let mut ev = take_evaluator(mode);
+    let mut at_t = std::collections::HashMap::new();
+    for (i, &line) in c.lines.iter().enumerate() {
+        let bad = |message: String| CliError::Input { file: file.to_string(), line, message };
+        let row = (c.numbers[cols.load][i], c.numbers[cols.speed][i], cols.temperature.map(|k| c.numbers[k][i]));
+        let op = evaluate_row(mode, ev.as_mut(), &mut at_t, row, &bad)?;
+        push_numbers(&mut out.cols[..width], cols, row);
+        columnar::push_result(&mut out.cols[width..], &op);
+    }
+    return_evaluator(mode, ev);
+    Ok(out)
 }
