@@ -196,9 +196,7 @@ fn first_of(bytes: &[u8], newline_only: bool) -> Option<usize> {
     let mut words = bytes.chunks_exact(8);
     let mut base = 0;
     for chunk in &mut words {
-        let mut a = [0u8; 8];
-        a.copy_from_slice(chunk);
-        let w = u64::from_le_bytes(a);
+        let w = le_word(chunk);
         let hits = bytes_equal(w, b'\n') | (bytes_equal(w, b'"') & quote_mask);
         if hits != 0 {
             return Some(base + (hits.trailing_zeros() / 8) as usize);
@@ -314,6 +312,14 @@ impl Fields {
 const ONES: u64 = 0x0101_0101_0101_0101;
 const HIGH: u64 = 0x8080_8080_8080_8080;
 
+/// The eight bytes of `chunk` (of `chunks_exact(8)`) as one little-endian word.
+#[inline(always)]
+fn le_word(chunk: &[u8]) -> u64 {
+    let mut a = [0u8; 8];
+    a.copy_from_slice(chunk);
+    u64::from_le_bytes(a)
+}
+
 /// The high bit of each byte of `w` that equals `c` (exactly: no carry crosses bytes).
 #[inline(always)]
 fn bytes_equal(w: u64, c: u8) -> u64 {
@@ -330,9 +336,7 @@ impl Fields {
         let mut words = bytes.chunks_exact(8);
         let mut base = 0;
         for chunk in &mut words {
-            let mut a = [0u8; 8];
-            a.copy_from_slice(chunk);
-            let w = u64::from_le_bytes(a);
+            let w = le_word(chunk);
             if (w & HIGH) | bytes_equal(w, b'"') | bytes_equal(w, b'\r') != 0 {
                 return false;
             }
